@@ -1,0 +1,84 @@
+/**
+ * Copyright (c) 2026 the RsaML authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model;
+
+
+/**
+ * <!-- begin-user-doc -->
+ * A representation of the model object '<em><b>Inhibitor</b></em>'.
+ * <!-- end-user-doc -->
+ *
+ * <!-- begin-model-doc -->
+ * Blocks an output of another module while it is active.
+ * <!-- end-model-doc -->
+ *
+ * <p>
+ * The following features are supported:
+ * </p>
+ * <ul>
+ *   <li>{@link org.rsaml.model.Inhibitor#getModule <em>Module</em>}</li>
+ *   <li>{@link org.rsaml.model.Inhibitor#getTarget <em>Target</em>}</li>
+ * </ul>
+ *
+ * @see org.rsaml.model.RsamlPackage#getInhibitor()
+ * @model
+ * @generated
+ */
+public interface Inhibitor extends SubsumptionLink {
+	/**
+	 * Returns the value of the '<em><b>Module</b></em>' container reference.
+	 * It is bidirectional and its opposite is '{@link org.rsaml.model.Module#getInhibitors <em>Inhibitors</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The module that inhibits.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Module</em>' container reference.
+	 * @see #setModule(org.rsaml.model.Module)
+	 * @see org.rsaml.model.RsamlPackage#getInhibitor_Module()
+	 * @see org.rsaml.model.Module#getInhibitors
+	 * @model opposite="inhibitors"
+	 * @generated
+	 */
+	org.rsaml.model.Module getModule();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Inhibitor#getModule <em>Module</em>}' container reference.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Module</em>' container reference.
+	 * @see #getModule()
+	 * @generated
+	 */
+	void setModule(org.rsaml.model.Module value);
+
+	/**
+	 * Returns the value of the '<em><b>Target</b></em>' reference.
+	 * It is bidirectional and its opposite is '{@link org.rsaml.model.OutputPort#getInhibitedBy <em>Inhibited By</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The output port that is blocked.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Target</em>' reference.
+	 * @see #setTarget(OutputPort)
+	 * @see org.rsaml.model.RsamlPackage#getInhibitor_Target()
+	 * @see org.rsaml.model.OutputPort#getInhibitedBy
+	 * @model opposite="inhibitedBy" required="true"
+	 * @generated
+	 */
+	OutputPort getTarget();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Inhibitor#getTarget <em>Target</em>}' reference.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Target</em>' reference.
+	 * @see #getTarget()
+	 * @generated
+	 */
+	void setTarget(OutputPort value);
+
+} // Inhibitor

@@ -1,0 +1,112 @@
+/**
+ * Copyright (c) 2026 the RsaML authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model;
+
+
+/**
+ * <!-- begin-user-doc -->
+ * A representation of the model object '<em><b>Port</b></em>'.
+ * <!-- end-user-doc -->
+ *
+ * <!-- begin-model-doc -->
+ * A communication point of a module, through which it exchanges data of one type.
+ * <!-- end-model-doc -->
+ *
+ * <p>
+ * The following features are supported:
+ * </p>
+ * <ul>
+ *   <li>{@link org.rsaml.model.Port#getModule <em>Module</em>}</li>
+ *   <li>{@link org.rsaml.model.Port#getDataType <em>Data Type</em>}</li>
+ *   <li>{@link org.rsaml.model.Port#getMessageType <em>Message Type</em>}</li>
+ * </ul>
+ *
+ * @see org.rsaml.model.RsamlPackage#getPort()
+ * @model abstract="true"
+ * @generated
+ */
+public interface Port extends NamedElement {
+	/**
+	 * Returns the value of the '<em><b>Module</b></em>' container reference.
+	 * It is bidirectional and its opposite is '{@link org.rsaml.model.Module#getPorts <em>Ports</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The module that owns this port.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Module</em>' container reference.
+	 * @see #setModule(org.rsaml.model.Module)
+	 * @see org.rsaml.model.RsamlPackage#getPort_Module()
+	 * @see org.rsaml.model.Module#getPorts
+	 * @model opposite="ports"
+	 * @generated
+	 */
+	org.rsaml.model.Module getModule();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Port#getModule <em>Module</em>}' container reference.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Module</em>' container reference.
+	 * @see #getModule()
+	 * @generated
+	 */
+	void setModule(org.rsaml.model.Module value);
+
+	/**
+	 * Returns the value of the '<em><b>Data Type</b></em>' attribute.
+	 * The default value is <code>"numeric"</code>.
+	 * The literals are from the enumeration {@link org.rsaml.model.DataType}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The type of data the port exchanges. Two connected ports must have the same data type.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Data Type</em>' attribute.
+	 * @see org.rsaml.model.DataType
+	 * @see #setDataType(DataType)
+	 * @see org.rsaml.model.RsamlPackage#getPort_DataType()
+	 * @model default="numeric"
+	 * @generated
+	 */
+	DataType getDataType();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Port#getDataType <em>Data Type</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Data Type</em>' attribute.
+	 * @see org.rsaml.model.DataType
+	 * @see #getDataType()
+	 * @generated
+	 */
+	void setDataType(DataType value);
+
+	/**
+	 * Returns the value of the '<em><b>Message Type</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * For structured data, the name of the message type exchanged (for example geometry_msgs/msg/Twist); two connected structured ports must name the same message type.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Message Type</em>' attribute.
+	 * @see #setMessageType(String)
+	 * @see org.rsaml.model.RsamlPackage#getPort_MessageType()
+	 * @model
+	 * @generated
+	 */
+	String getMessageType();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Port#getMessageType <em>Message Type</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Message Type</em>' attribute.
+	 * @see #getMessageType()
+	 * @generated
+	 */
+	void setMessageType(String value);
+
+} // Port

@@ -1,0 +1,216 @@
+package org.rsaml.codegen;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.codegen.ecore.generator.Generator;
+import org.eclipse.emf.codegen.ecore.generator.GeneratorAdapterFactory;
+import org.eclipse.emf.codegen.ecore.genmodel.GenModel;
+import org.eclipse.emf.codegen.ecore.genmodel.GenModelFactory;
+import org.eclipse.emf.codegen.ecore.genmodel.GenModelPackage;
+import org.eclipse.emf.codegen.ecore.genmodel.generator.GenBaseGeneratorAdapter;
+import org.eclipse.emf.codegen.ecore.genmodel.generator.GenModelGeneratorAdapterFactory;
+import org.eclipse.emf.common.util.BasicMonitor;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.EcorePackage;
+import org.eclipse.emf.ecore.plugin.EcorePlugin;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.ResourceSet;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
+import org.eclipse.emf.ecore.xmi.impl.EcoreResourceFactoryImpl;
+import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
+
+/**
+ * Generates RsaML's EMF code from {@code rsaml.ecore} outside Eclipse.
+ *
+ * <p>The genmodel is rebuilt from the current .ecore on every run (keeping its settings), so that
+ * a change to the metamodel needs nothing but this command. Everything is generated into a scratch
+ * folder first; {@code write} then replaces the committed files, {@code check} only compares.
+ */
+public final class RsamlCodegen {
+
+    /** What is generated, per bundle: the folders and files the generator owns. */
+    static final Map<String, List<String>> GENERATED = new TreeMap<>(Map.of(
+            "org.rsaml.model", List.of("src-gen", "plugin.xml", "plugin.properties"),
+            "org.rsaml.model.edit", List.of("src-gen", "plugin.properties")));
+
+    static final String MODEL_DIR = "bundles/org.rsaml.model/model/";
+
+    private RsamlCodegen() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        if (args.length != 2 || !(args[0].equals("write") || args[0].equals("check"))) {
+            System.err.println("usage: RsamlCodegen write|check <repository root>");
+            System.exit(2);
+        }
+        Path root = Path.of(args[1]).toAbsolutePath().normalize();
+        if (args[0].equals("write")) {
+            write(root);
+        } else {
+            List<String> stale = check(root);
+            stale.forEach(s -> System.err.println("out of date: " + s));
+            System.exit(stale.isEmpty() ? 0 : 1);
+        }
+    }
+
+    /** Regenerates and replaces the committed generated files and the genmodel. */
+    public static void write(Path root) throws IOException {
+        Path scratch = Files.createTempDirectory("rsaml-codegen");
+        try {
+            generate(root, scratch);
+            for (Map.Entry<String, List<String>> bundle : GENERATED.entrySet()) {
+                for (String item : bundle.getValue()) {
+                    Path from = scratch.resolve(bundle.getKey()).resolve(item);
+                    Path to = root.resolve("bundles").resolve(bundle.getKey()).resolve(item);
+                    deleteTree(to);
+                    copyTree(from, to);
+                }
+            }
+            Files.copy(scratch.resolve("rsaml.genmodel"), root.resolve(MODEL_DIR + "rsaml.genmodel"),
+                    java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            System.out.println("Regenerated RsaML code from " + root.resolve(MODEL_DIR + "rsaml.ecore"));
+        } finally {
+            deleteTree(scratch);
+        }
+    }
+
+    /** Regenerates into a scratch folder and lists every committed file that differs from it. */
+    public static List<String> check(Path root) throws IOException {
+        Path scratch = Files.createTempDirectory("rsaml-codegen");
+        try {
+            generate(root, scratch);
+            List<String> stale = new ArrayList<>();
+            for (Map.Entry<String, List<String>> bundle : GENERATED.entrySet()) {
+                for (String item : bundle.getValue()) {
+                    compare(scratch.resolve(bundle.getKey()).resolve(item),
+                            root.resolve("bundles").resolve(bundle.getKey()).resolve(item),
+                            "bundles/" + bundle.getKey() + "/" + item, stale);
+                }
+            }
+            compare(scratch.resolve("rsaml.genmodel"), root.resolve(MODEL_DIR + "rsaml.genmodel"),
+                    MODEL_DIR + "rsaml.genmodel", stale);
+            return stale;
+        } finally {
+            deleteTree(scratch);
+        }
+    }
+
+    private static void generate(Path root, Path scratch) throws IOException {
+        ResourceSet resourceSet = new ResourceSetImpl();
+        resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put("ecore", new EcoreResourceFactoryImpl());
+        resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap().put("genmodel", new XMIResourceFactoryImpl());
+        resourceSet.getPackageRegistry().put(EcorePackage.eNS_URI, EcorePackage.eINSTANCE);
+        resourceSet.getPackageRegistry().put(GenModelPackage.eNS_URI, GenModelPackage.eINSTANCE);
+
+        // The genmodel names its output folders as platform:/resource/<bundle>/...; point them at the scratch folder.
+        for (String bundle : GENERATED.keySet()) {
+            EcorePlugin.getPlatformResourceMap().put(bundle, URI.createFileURI(scratch.resolve(bundle).toString() + "/"));
+        }
+        Files.copy(root.resolve(MODEL_DIR + "rsaml.ecore"), scratch.resolve("rsaml.ecore"));
+        Files.copy(root.resolve(MODEL_DIR + "rsaml.genmodel"), scratch.resolve("settings.genmodel"));
+
+        Resource ecore = resourceSet.getResource(URI.createFileURI(scratch.resolve("rsaml.ecore").toString()), true);
+        EPackage ePackage = (EPackage) ecore.getContents().get(0);
+        Resource old = resourceSet.getResource(URI.createFileURI(scratch.resolve("settings.genmodel").toString()), true);
+        GenModel settings = (GenModel) old.getContents().get(0);
+
+        GenModel genModel = GenModelFactory.eINSTANCE.createGenModel();
+        Resource genModelResource = resourceSet.createResource(URI.createFileURI(scratch.resolve("rsaml.genmodel").toString()));
+        genModelResource.getContents().add(genModel);
+        genModel.initialize(List.of(ePackage));
+        genModel.reconcile(settings);
+        genModel.getForeignModel().clear();
+        genModel.getForeignModel().add("rsaml.ecore");
+        genModel.setCanGenerate(true);
+
+        Diagnostic diagnostic = genModel.diagnose();
+        if (diagnostic.getSeverity() == Diagnostic.ERROR) {
+            throw new IllegalStateException("rsaml.genmodel is not valid: " + diagnostic);
+        }
+        genModelResource.save(Map.of());
+
+        GeneratorAdapterFactory.Descriptor.Registry.INSTANCE.addDescriptor(GenModelPackage.eNS_URI,
+                GenModelGeneratorAdapterFactory.DESCRIPTOR);
+        Generator generator = new Generator();
+        generator.setInput(genModel);
+        for (String projectType : Arrays.asList(GenBaseGeneratorAdapter.MODEL_PROJECT_TYPE,
+                GenBaseGeneratorAdapter.EDIT_PROJECT_TYPE)) {
+            Diagnostic result = generator.generate(genModel, projectType, new BasicMonitor());
+            if (result.getSeverity() == Diagnostic.ERROR) {
+                throw new IllegalStateException("EMF generation failed: " + result);
+            }
+        }
+        for (String bundle : GENERATED.keySet()) {
+            if (!Files.isDirectory(scratch.resolve(bundle).resolve("src-gen"))) {
+                throw new IllegalStateException("EMF generated nothing for " + bundle);
+            }
+            // EMF's template names a placeholder vendor; RsaML's bundles name their own.
+            Path properties = scratch.resolve(bundle).resolve("plugin.properties");
+            Files.writeString(properties, Files.readString(properties)
+                    .replace("providerName = www.example.org", "providerName = RsaML"));
+        }
+    }
+
+    private static void compare(Path generated, Path committed, String label, List<String> stale) throws IOException {
+        if (Files.isDirectory(generated) || Files.isDirectory(committed)) {
+            TreeMap<String, Boolean> names = new TreeMap<>();
+            for (Path dir : List.of(generated, committed)) {
+                if (Files.isDirectory(dir)) {
+                    try (Stream<Path> files = Files.walk(dir)) {
+                        files.filter(Files::isRegularFile).forEach(f -> names.put(dir.relativize(f).toString(), true));
+                    }
+                }
+            }
+            for (String name : names.keySet()) {
+                compare(generated.resolve(name), committed.resolve(name), label + "/" + name, stale);
+            }
+        } else if (!Files.exists(generated)) {
+            stale.add(label + " (no longer generated)");
+        } else if (!Files.exists(committed)) {
+            stale.add(label + " (missing)");
+        } else if (!Arrays.equals(Files.readAllBytes(generated), Files.readAllBytes(committed))) {
+            stale.add(label);
+        }
+    }
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path f : (Iterable<Path>) files::iterator) {
+                Path target = to.resolve(from.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.createDirectories(target.getParent());
+                    Files.copy(f, target);
+                }
+            }
+        }
+    }
+
+    private static void deleteTree(Path path) throws IOException {
+        if (!Files.exists(path)) {
+            return;
+        }
+        try (Stream<Path> files = Files.walk(path)) {
+            files.sorted(Comparator.reverseOrder()).forEach(f -> {
+                try {
+                    Files.delete(f);
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                }
+            });
+        }
+    }
+}
