@@ -27,7 +27,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getFunction()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA07_realTimeFunctionActions RSA09_uniqueNames'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA07_realTimeFunctionActions='type = ElementType::realTime implies actions-&gt;forAll(a | a.type = ElementType::realTime)' RSA09_uniqueNames='actions-&gt;isUnique(name)'"
  * @generated
  */
 public interface Function extends RealTimeElement {

@@ -26,7 +26,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getGoal()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='subGoals-&gt;isUnique(name)'"
  * @generated
  */
 public interface Goal extends NamedElement {

@@ -23,7 +23,8 @@ package org.rsaml.model;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getInhibitor()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA04_inhibitLayerBelow RSA16_triggerOfOwnModule'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA04_inhibitLayerBelow='let own : Layer = if module = null then null else module.layer endif, other : Layer = if target = null or target.module = null then null else target.module.layer endif in (own &lt;&gt; null and other &lt;&gt; null) implies other.level = own.level - 1' RSA16_triggerOfOwnModule='trigger &lt;&gt; null implies trigger.module = module'"
  * @generated
  */
 public interface Inhibitor extends SubsumptionLink {

@@ -26,7 +26,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getLayer()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames RSA13_nonNegativeTimes'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='modules-&gt;isUnique(name)' RSA13_nonNegativeTimes='maxExecTime &gt;= 0'"
  * @generated
  */
 public interface Layer extends NamedElement, TimeScaled {

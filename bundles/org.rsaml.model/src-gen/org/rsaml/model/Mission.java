@@ -25,7 +25,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getMission()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='goals-&gt;isUnique(name) and plans-&gt;isUnique(name)'"
  * @generated
  */
 public interface Mission extends NamedElement {

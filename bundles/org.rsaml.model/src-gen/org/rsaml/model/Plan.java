@@ -25,7 +25,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getPlan()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='activities-&gt;isUnique(name)'"
  * @generated
  */
 public interface Plan extends NamedElement {

@@ -25,6 +25,8 @@ package org.rsaml.model;
  *
  * @see org.rsaml.model.RsamlPackage#getPort()
  * @model abstract="true"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA18_structuredPortNamesMessageType'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA18_structuredPortNamesMessageType='dataType = DataType::structured implies (messageType &lt;&gt; null and messageType.size() &gt; 0)'"
  * @generated
  */
 public interface Port extends NamedElement {

@@ -16,7 +16,8 @@ package org.rsaml.model;
  *
  *
  * @see org.rsaml.model.RsamlPackage#getRTAction()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA15_rtActionIsRealTime'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA15_rtActionIsRealTime='type = ElementType::realTime'"
  * @generated
  */
 public interface RTAction extends Action {

@@ -10,6 +10,7 @@ import org.eclipse.emf.ecore.EEnum;
 import org.eclipse.emf.ecore.EOperation;
 import org.eclipse.emf.ecore.EPackage;
 import org.eclipse.emf.ecore.EReference;
+import org.eclipse.emf.ecore.EValidator;
 
 import org.eclipse.emf.ecore.impl.EPackageImpl;
 
@@ -48,6 +49,8 @@ import org.rsaml.model.Suppressor;
 import org.rsaml.model.SynchronisationType;
 import org.rsaml.model.TimeScaled;
 import org.rsaml.model.TimeUnit;
+
+import org.rsaml.model.util.RsamlValidator;
 
 /**
  * <!-- begin-user-doc -->
@@ -345,6 +348,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 
 		// Initialize created meta-data
 		theRsamlPackage.initializePackageContents();
+
+		// Register package validator
+		EValidator.Registry.INSTANCE.put
+			(theRsamlPackage,
+			 new EValidator.Descriptor() {
+				 @Override
+				 public EValidator getEValidator() {
+					 return RsamlValidator.INSTANCE;
+				 }
+			 });
 
 		// Mark meta-data to indicate it can't be changed
 		theRsamlPackage.freeze();
@@ -1972,6 +1985,234 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 
 		// Create resource
 		createResource(eNS_URI);
+
+		// Create annotations
+		// http://www.eclipse.org/emf/2002/Ecore
+		createEcoreAnnotations();
+		// http://www.eclipse.org/emf/2002/Ecore/OCL
+		createOCLAnnotations();
+	}
+
+	/**
+	 * Initializes the annotations for <b>http://www.eclipse.org/emf/2002/Ecore</b>.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void createEcoreAnnotations() {
+		String source = "http://www.eclipse.org/emf/2002/Ecore";
+		addAnnotation
+		  (this,
+		   source,
+		   new String[] {
+			   "invocationDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL",
+			   "settingDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL",
+			   "validationDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL"
+		   });
+		addAnnotation
+		  (realTimeElementEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA10_executionWithinPeriod RSA11_deadlineWithinPeriod RSA12_periodicHasPeriod RSA13_nonNegativeTimes RSA17_executionWithinDeadline"
+		   });
+		addAnnotation
+		  (architectureEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA01_declaredLayerCount RSA09_uniqueNames RSA14_layerLevels"
+		   });
+		addAnnotation
+		  (layerEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA09_uniqueNames RSA13_nonNegativeTimes"
+		   });
+		addAnnotation
+		  (moduleEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA05_realTimeModuleTiming RSA06_realTimeModuleFunctions RSA08_layerExecutionBudget RSA09_uniqueNames"
+		   });
+		addAnnotation
+		  (functionEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA07_realTimeFunctionActions RSA09_uniqueNames"
+		   });
+		addAnnotation
+		  (rtActionEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA15_rtActionIsRealTime"
+		   });
+		addAnnotation
+		  (portEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA18_structuredPortNamesMessageType"
+		   });
+		addAnnotation
+		  (connectionEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA02_connectedPortTypes RSA03_adjacentLayerCommunication"
+		   });
+		addAnnotation
+		  (subsumptionLinkEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA13_nonNegativeTimes"
+		   });
+		addAnnotation
+		  (inhibitorEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA04_inhibitLayerBelow RSA16_triggerOfOwnModule"
+		   });
+		addAnnotation
+		  (suppressorEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA04_suppressLayerBelow RSA16_triggerOfOwnModule"
+		   });
+		addAnnotation
+		  (missionEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA09_uniqueNames"
+		   });
+		addAnnotation
+		  (goalEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA09_uniqueNames"
+		   });
+		addAnnotation
+		  (planEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA09_uniqueNames"
+		   });
+		addAnnotation
+		  (databaseEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA09_uniqueNames"
+		   });
+	}
+
+	/**
+	 * Initializes the annotations for <b>http://www.eclipse.org/emf/2002/Ecore/OCL</b>.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void createOCLAnnotations() {
+		String source = "http://www.eclipse.org/emf/2002/Ecore/OCL";
+		addAnnotation
+		  (realTimeElementEClass,
+		   source,
+		   new String[] {
+			   "RSA10_executionWithinPeriod", "(execType = ExecutionType::periodic and period > 0) implies execDuration <= period",
+			   "RSA11_deadlineWithinPeriod", "(execType = ExecutionType::periodic and period > 0 and delay > 0) implies delay <= period",
+			   "RSA12_periodicHasPeriod", "execType = ExecutionType::periodic implies period > 0",
+			   "RSA13_nonNegativeTimes", "period >= 0 and delay >= 0 and execDuration >= 0",
+			   "RSA17_executionWithinDeadline", "(type = ElementType::realTime and delay > 0) implies execDuration <= delay"
+		   });
+		addAnnotation
+		  (architectureEClass,
+		   source,
+		   new String[] {
+			   "RSA01_declaredLayerCount", "declaredLayers = layers->size()",
+			   "RSA09_uniqueNames", "layers->isUnique(name) and sensors->isUnique(name) and actuators->isUnique(name) and missions->isUnique(name) and supervisors->isUnique(name) and orders->isUnique(name) and databases->isUnique(name)",
+			   "RSA14_layerLevels", "layers->isUnique(level) and layers->forAll(l | l.level >= 0 and l.level < layers->size())"
+		   });
+		addAnnotation
+		  (layerEClass,
+		   source,
+		   new String[] {
+			   "RSA09_uniqueNames", "modules->isUnique(name)",
+			   "RSA13_nonNegativeTimes", "maxExecTime >= 0"
+		   });
+		addAnnotation
+		  (moduleEClass,
+		   source,
+		   new String[] {
+			   "RSA05_realTimeModuleTiming", "type = ElementType::realTime implies (period > 0 and delay > 0)",
+			   "RSA06_realTimeModuleFunctions", "type = ElementType::realTime implies functions->forAll(f | f.type = ElementType::realTime)",
+			   "RSA08_layerExecutionBudget", "let budget : Real = if layer = null then 0.0 else layer.toMilliseconds(layer.maxExecTime) endif in budget > 0 implies toMilliseconds(execDuration) <= budget + 0.000000001",
+			   "RSA09_uniqueNames", "ports->isUnique(name) and functions->isUnique(name) and inhibitors->isUnique(name) and suppressors->isUnique(name)"
+		   });
+		addAnnotation
+		  (functionEClass,
+		   source,
+		   new String[] {
+			   "RSA07_realTimeFunctionActions", "type = ElementType::realTime implies actions->forAll(a | a.type = ElementType::realTime)",
+			   "RSA09_uniqueNames", "actions->isUnique(name)"
+		   });
+		addAnnotation
+		  (rtActionEClass,
+		   source,
+		   new String[] {
+			   "RSA15_rtActionIsRealTime", "type = ElementType::realTime"
+		   });
+		addAnnotation
+		  (portEClass,
+		   source,
+		   new String[] {
+			   "RSA18_structuredPortNamesMessageType", "dataType = DataType::structured implies (messageType <> null and messageType.size() > 0)"
+		   });
+		addAnnotation
+		  (connectionEClass,
+		   source,
+		   new String[] {
+			   "RSA02_connectedPortTypes", "(source <> null and target <> null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.messageType = target.messageType))",
+			   "RSA03_adjacentLayerCommunication", "let from : Layer = if source = null or source.module = null then null else source.module.layer endif, to : Layer = if target = null or target.module = null then null else target.module.layer endif in (from <> null and to <> null) implies (from.level - to.level).abs() <= 1"
+		   });
+		addAnnotation
+		  (subsumptionLinkEClass,
+		   source,
+		   new String[] {
+			   "RSA13_nonNegativeTimes", "duration >= 0"
+		   });
+		addAnnotation
+		  (inhibitorEClass,
+		   source,
+		   new String[] {
+			   "RSA04_inhibitLayerBelow", "let own : Layer = if module = null then null else module.layer endif, other : Layer = if target = null or target.module = null then null else target.module.layer endif in (own <> null and other <> null) implies other.level = own.level - 1",
+			   "RSA16_triggerOfOwnModule", "trigger <> null implies trigger.module = module"
+		   });
+		addAnnotation
+		  (suppressorEClass,
+		   source,
+		   new String[] {
+			   "RSA04_suppressLayerBelow", "let own : Layer = if module = null then null else module.layer endif, other : Layer = if target = null or target.module = null then null else target.module.layer endif in (own <> null and other <> null) implies other.level = own.level - 1",
+			   "RSA16_triggerOfOwnModule", "trigger <> null implies trigger.module = module"
+		   });
+		addAnnotation
+		  (missionEClass,
+		   source,
+		   new String[] {
+			   "RSA09_uniqueNames", "goals->isUnique(name) and plans->isUnique(name)"
+		   });
+		addAnnotation
+		  (goalEClass,
+		   source,
+		   new String[] {
+			   "RSA09_uniqueNames", "subGoals->isUnique(name)"
+		   });
+		addAnnotation
+		  (planEClass,
+		   source,
+		   new String[] {
+			   "RSA09_uniqueNames", "activities->isUnique(name)"
+		   });
+		addAnnotation
+		  (databaseEClass,
+		   source,
+		   new String[] {
+			   "RSA09_uniqueNames", "knowledge->isUnique(name)"
+		   });
 	}
 
 } //RsamlPackageImpl

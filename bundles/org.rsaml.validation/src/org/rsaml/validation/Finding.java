@@ -1,0 +1,27 @@
+package org.rsaml.validation;
+
+/**
+ * A problem found in a model, located so that a person or a tool can go straight to it.
+ *
+ * @param rule          the rule that is violated
+ * @param severity      the severity of this finding (the rule's)
+ * @param message       what is wrong, naming the elements and values involved (without the rule id)
+ * @param qualifiedName the element's path by names, e.g. {@code robot/decision/proceduralExec/e0}
+ * @param uriFragment   the element's URI fragment in its resource
+ * @param file          the model file as the user named it, or the resource URI
+ * @param line          1-based line of the element's start tag, or 0 when unknown
+ * @param column        1-based column of the element's start tag, or 0 when unknown
+ */
+public record Finding(Rule rule, Severity severity, String message, String qualifiedName, String uriFragment,
+        String file, int line, int column) {
+
+    public String ruleId() {
+        return rule.id();
+    }
+
+    /** Compiler style: {@code file:line:column: error RSA-08: message}. */
+    @Override
+    public String toString() {
+        return file + ":" + line + ":" + column + ": " + severity.label() + " " + rule.id() + ": " + message;
+    }
+}

@@ -1,0 +1,121 @@
+package org.rsaml.validation;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.BasicDiagnostic;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EStructuralFeature;
+import org.eclipse.emf.ecore.EValidator;
+import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
+import org.eclipse.emf.ecore.util.Diagnostician;
+import org.eclipse.emf.ecore.util.EObjectValidator;
+import org.rsaml.model.RsamlPackage;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.internal.RuleEValidator;
+
+/**
+ * Validates RsaML models against the OCL rules of rsaml.ecore and EMF's structural checks, and
+ * returns located findings. The same API serves the command line, the Maven plugin and Eclipse.
+ */
+public final class RsamlModelValidator {
+
+    private static final Comparator<Finding> ORDER = Comparator.comparingInt(Finding::line)
+            .thenComparingInt(Finding::column).thenComparing(Finding::ruleId);
+
+    private RsamlModelValidator() {
+    }
+
+    /** Loads and validates one file; findings sorted by position. */
+    public static List<Finding> validate(Path file, String displayName) throws ModelLoadException {
+        return validate(ModelLoader.load(file, displayName));
+    }
+
+    public static List<Finding> validate(Path file) throws ModelLoadException {
+        return validate(file, file.toString());
+    }
+
+    /** Validates a loaded model with every RsaML rule. */
+    public static List<Finding> validate(LoadedModel model) {
+        RsamlValidationSetup.init();
+        return toFindings(diagnose(model.resource().getContents(), new RuleEValidator(RsamlValidationSetup.rules())), model);
+    }
+
+    /** EMF's structural checks alone (multiplicities, proxies, references), without the OCL rules. */
+    public static List<Finding> validateStructure(LoadedModel model) {
+        return toFindings(diagnose(model.resource().getContents(), EObjectValidator.INSTANCE), model);
+    }
+
+    /** Validates elements that were not read from a file (no line and column). */
+    public static List<Finding> validate(EObject root) {
+        RsamlValidationSetup.init();
+        return toFindings(diagnose(List.of(root), new RuleEValidator(RsamlValidationSetup.rules())), null);
+    }
+
+    private static Diagnostic diagnose(List<EObject> roots, EValidator validator) {
+        EValidator.Registry registry = new EValidatorRegistryImpl(EValidator.Registry.INSTANCE);
+        registry.put(RsamlPackage.eINSTANCE, validator);
+        Diagnostician diagnostician = new Diagnostician(registry) {
+            @Override
+            public String getObjectLabel(EObject eObject) {
+                return eObject.eClass().getName() + " '" + RsamlLabels.qualifiedName(eObject) + "'";
+            }
+
+            @Override
+            public String getFeatureLabel(EStructuralFeature feature) {
+                return feature.getName();
+            }
+        };
+        Map<Object, Object> context = diagnostician.createDefaultContext();
+        BasicDiagnostic chain = new BasicDiagnostic();
+        for (EObject root : roots) {
+            diagnostician.validate(root, chain, context);
+        }
+        return chain;
+    }
+
+    private static List<Finding> toFindings(Diagnostic chain, LoadedModel model) {
+        List<Finding> findings = new ArrayList<>();
+        collect(chain, model, findings);
+        findings.sort(ORDER);
+        return findings;
+    }
+
+    private static void collect(Diagnostic diagnostic, LoadedModel model, List<Finding> out) {
+        for (Diagnostic child : diagnostic.getChildren()) {
+            if (child.getSeverity() != Diagnostic.OK && !child.getData().isEmpty() && child.getData().get(0) instanceof EObject element) {
+                Rule rule;
+                String message;
+                Severity severity;
+                if (RuleEValidator.SOURCE.equals(child.getSource()) && child.getData().size() >= 3) {
+                    rule = (Rule) child.getData().get(1);
+                    message = (String) child.getData().get(2);
+                    severity = severityOf(child.getSeverity());
+                } else {
+                    rule = Rules.STRUCTURE;
+                    message = child.getMessage();
+                    severity = severityOf(child.getSeverity());
+                }
+                int[] at = model == null ? new int[] { 0, 0 } : model.locate(element);
+                String file = model != null ? model.file()
+                        : element.eResource() == null ? "<memory>" : element.eResource().getURI().toString();
+                out.add(new Finding(rule, severity, message, RsamlLabels.qualifiedName(element),
+                        element.eResource() == null ? "" : element.eResource().getURIFragment(element), file, at[0], at[1]));
+            }
+            collect(child, model, out);
+        }
+    }
+
+    private static Severity severityOf(int diagnosticSeverity) {
+        return switch (diagnosticSeverity) {
+            case Diagnostic.ERROR, Diagnostic.CANCEL -> Severity.ERROR;
+            case Diagnostic.WARNING -> Severity.WARNING;
+            default -> Severity.INFO;
+        };
+    }
+}

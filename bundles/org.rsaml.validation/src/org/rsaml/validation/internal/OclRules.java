@@ -1,0 +1,86 @@
+package org.rsaml.validation.internal;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.emf.ecore.EAnnotation;
+import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EClassifier;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.ocl.ParserException;
+import org.eclipse.ocl.ecore.Constraint;
+import org.eclipse.ocl.ecore.OCL;
+import org.eclipse.ocl.ecore.OCLExpression;
+import org.rsaml.validation.Rule;
+import org.rsaml.validation.Rules;
+
+/**
+ * The OCL invariants of an EPackage, read from its OCLinEcore annotations, parsed once with classic
+ * OCL and evaluated on demand. Parsing everything up front makes a broken constraint fail at
+ * start-up, naming its rule, instead of on every element it applies to.
+ */
+public final class OclRules {
+
+    /** The delegate URI under which rsaml.ecore declares its invariants. */
+    public static final String OCL_URI = "http://www.eclipse.org/emf/2002/Ecore/OCL";
+
+    private final OCL ocl = OCL.newInstance();
+    private final Map<EClass, Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>>> queries = new HashMap<>();
+    private final List<String> problems = new ArrayList<>();
+
+    public OclRules(EPackage ePackage) {
+        for (EClassifier classifier : ePackage.getEClassifiers()) {
+            if (!(classifier instanceof EClass eClass)) {
+                continue;
+            }
+            EAnnotation bodies = eClass.getEAnnotation(OCL_URI);
+            for (String constraint : EcoreUtil.getConstraints(eClass)) {
+                String rule = Rules.forConstraint(constraint).map(Rule::id).orElse("unknown rule");
+                String body = bodies == null ? null : bodies.getDetails().get(constraint);
+                if (body == null) {
+                    problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") has no OCL body");
+                    continue;
+                }
+                try {
+                    OCL.Helper helper = ocl.createOCLHelper();
+                    helper.setContext(eClass);
+                    Constraint parsed = helper.createInvariant(body);
+                    OCLExpression expression = (OCLExpression) parsed.getSpecification().getBodyExpression();
+                    queries.computeIfAbsent(eClass, k -> new HashMap<>()).put(constraint, ocl.createQuery(expression));
+                } catch (ParserException | RuntimeException e) {
+                    problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") does not parse: "
+                            + e.getLocalizedMessage());
+                }
+            }
+        }
+    }
+
+    /** One line per constraint that has no body or does not parse; empty when all are usable. */
+    public List<String> problems() {
+        return List.copyOf(problems);
+    }
+
+    /** Number of parsed constraints. */
+    public int size() {
+        return queries.values().stream().mapToInt(Map::size).sum();
+    }
+
+    /**
+     * Evaluates the invariant {@code constraint} declared on {@code eClass} for {@code object}:
+     * {@link Boolean#TRUE} or {@link Boolean#FALSE}, or {@code null} when the expression is
+     * invalid for this object (for example a navigation through a missing element).
+     */
+    public synchronized Boolean check(EClass eClass, String constraint, EObject object) {
+        Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>> byName = queries.get(eClass);
+        org.eclipse.ocl.Query<EClassifier, EClass, EObject> query = byName == null ? null : byName.get(constraint);
+        if (query == null) {
+            throw new IllegalArgumentException("no OCL invariant " + constraint + " on " + eClass.getName());
+        }
+        Object result = query.evaluate(object);
+        return result instanceof Boolean b ? b : null;
+    }
+}

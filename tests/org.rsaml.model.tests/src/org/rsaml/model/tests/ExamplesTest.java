@@ -1,0 +1,113 @@
+package org.rsaml.model.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.ArchitectureCategory;
+import org.rsaml.model.Connection;
+import org.rsaml.model.DataType;
+import org.rsaml.model.ElementType;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.Suppressor;
+
+/** The example models open in Eclipse's way (content type, no explicit registration) and are what they claim. */
+class ExamplesTest {
+
+    static Path examples() {
+        return Path.of(System.getProperty("rsaml.root", "../..")).resolve("examples").toAbsolutePath().normalize();
+    }
+
+    static Stream<String> exampleFiles() throws Exception {
+        try (Stream<Path> s = Files.list(examples())) {
+            return s.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted()
+                    .collect(Collectors.toList()).stream();
+        }
+    }
+
+    static Architecture load(String name) {
+        Resource r = new ResourceSetImpl().getResource(URI.createFileURI(examples().resolve(name).toString()), true);
+        assertTrue(r.getErrors().isEmpty(), () -> name + ": " + r.getErrors());
+        EcoreUtil.resolveAll(r);
+        assertTrue(EcoreUtil.UnresolvedProxyCrossReferencer.find(r).isEmpty(), name + " has unresolved references");
+        return assertInstanceOf(Architecture.class, r.getContents().get(0));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("exampleFiles")
+    void exampleLoadsWithEveryReferenceResolved(String name) {
+        Architecture a = load(name);
+        assertFalse(a.getLayers().isEmpty(), name + " has no layer");
+    }
+
+    @Test
+    void theFiveExamplesAreThere() throws Exception {
+        assertEquals(List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "exp3-task-interpreter.rsaml",
+                "hierarchical-nasrem.rsaml", "subsumption-brooks.rsaml"), exampleFiles().collect(Collectors.toList()));
+    }
+
+    private static Module module(Architecture a, String name) {
+        return a.getLayers().stream().flatMap(l -> l.getModules().stream()).filter(m -> name.equals(m.getName()))
+                .findFirst().orElseThrow(() -> new AssertionError("no module " + name));
+    }
+
+    @Test
+    void experimentTwoCarriesThePapersFiveDefects() {
+        Architecture a = load("exp2-defects.rsaml");
+        // 1. four layers declared, three created
+        assertEquals(4, a.getDeclaredLayers());
+        assertEquals(List.of("decision", "control", "functional"), a.getLayers().stream().map(Layer::getName).toList());
+        // 2. alphanumeric entry e0_prodExec fed by numeric output s0_ressourceCheck
+        Connection c = a.getConnections().stream().filter(x -> "e0_prodExec".equals(x.getTarget().getName())).findFirst().orElseThrow();
+        assertEquals("s0_ressourceCheck", c.getSource().getName());
+        assertEquals(DataType.NUMERIC, c.getSource().getDataType());
+        assertEquals(DataType.ALPHANUMERIC, c.getTarget().getDataType());
+        // 3. proceduralExec suppresses entry e0_m01 of m01, two layers below
+        Module exec = module(a, "proceduralExec");
+        Suppressor s = exec.getSuppressors().get(0);
+        assertEquals("e0_m01", s.getTarget().getName());
+        assertEquals("m01", s.getTarget().getModule().getName());
+        assertEquals(2, exec.getLayer().getLevel() - s.getTarget().getModule().getLayer().getLevel());
+        // 4. resourceChecker takes 2.5 in a layer allowing 2.0
+        Module checker = module(a, "resourceChecker");
+        assertEquals(2.5, checker.getExecDuration());
+        assertEquals(2.0, checker.getLayer().getMaxExecTime());
+        // 5. real-time f0_m01 holds the simple action a0_f0_m01
+        Function f = module(a, "m01").getFunctions().stream().filter(x -> "f0_m01".equals(x.getName())).findFirst().orElseThrow();
+        assertEquals(ElementType.REAL_TIME, f.getType());
+        assertEquals(ElementType.SIMPLE, f.getActions().stream().filter(x -> "a0_f0_m01".equals(x.getName())).findFirst().orElseThrow().getType());
+    }
+
+    @Test
+    void experimentThreeHasSixPeriodicInstructions() {
+        Architecture a = load("exp3-task-interpreter.rsaml");
+        assertEquals(ArchitectureCategory.OTHER, a.getCategory());
+        Module controller = a.getLayers().stream().flatMap(l -> l.getModules().stream())
+                .filter(m -> m.getName().toLowerCase().contains("motion")).findFirst().orElseThrow();
+        var actions = controller.getFunctions().stream().flatMap(fn -> fn.getActions().stream()).toList();
+        assertEquals(6, actions.size());
+        for (var action : actions) {
+            assertEquals(ExecutionType.PERIODIC, action.getExecType());
+            assertEquals(20.0, action.toMilliseconds(action.getPeriod()));
+            assertEquals(1.0, action.toMilliseconds(action.getExecDuration()));
+        }
+    }
+}

@@ -1,0 +1,78 @@
+package org.rsaml.validation.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+
+import java.util.List;
+
+import org.eclipse.emf.ecore.EObject;
+import org.junit.jupiter.api.Test;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.ElementType;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.RsamlFactory;
+import org.rsaml.model.TimeUnit;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
+
+/** Findings name the element, its path and its place in the file, and time values compare across units. */
+class FindingsTest {
+
+    @Test
+    void findingLocatesItsElementByFragmentAndPosition() throws Exception {
+        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        Finding f = RsamlModelValidator.validate(model).stream().filter(x -> x.ruleId().equals("RSA-08")).findFirst().orElseThrow();
+        EObject element = model.resource().getEObject(f.uriFragment());
+        assertEquals("resourceChecker", ((Module) element).getName());
+        assertEquals("exp2.rsaml:" + f.line() + ":" + f.column() + ": error RSA-08: " + f.message(), f.toString());
+        assertSame(element, model.resource().getEObject("//@layers[name='control']/@modules[name='resourceChecker']"));
+    }
+
+    @Test
+    void budgetsCompareAcrossTimeUnits() {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Architecture a = f.createArchitecture();
+        a.setName("robot");
+        a.setDeclaredLayers(1);
+        Layer layer = f.createLayer();
+        layer.setName("control");
+        layer.setMaxExecTime(2.0);
+        layer.setTimeUnit(TimeUnit.MS);
+        a.getLayers().add(layer);
+        Module module = f.createModule();
+        module.setName("checker");
+        module.setTimeUnit(TimeUnit.US);
+        module.setExecDuration(1500);
+        layer.getModules().add(module);
+        assertEquals(List.of(), RsamlModelValidator.validate(a));
+
+        module.setExecDuration(2500);
+        List<Finding> findings = RsamlModelValidator.validate(a);
+        assertEquals(1, findings.size(), findings.toString());
+        assertEquals("Module 'checker' takes 2500.0 us but layer 'control' allows at most 2.0 ms", findings.get(0).message());
+        assertEquals("robot/control/checker", findings.get(0).qualifiedName());
+    }
+
+    @Test
+    void realTimeModuleWithoutTimingNamesWhatIsMissing() {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Architecture a = f.createArchitecture();
+        a.setName("robot");
+        a.setDeclaredLayers(1);
+        Layer layer = f.createLayer();
+        layer.setName("functional");
+        a.getLayers().add(layer);
+        Module module = f.createModule();
+        module.setName("motion");
+        module.setType(ElementType.REAL_TIME);
+        module.setPeriod(10);
+        layer.getModules().add(module);
+        List<Finding> findings = RsamlModelValidator.validate(a);
+        assertEquals(List.of("RSA-05"), findings.stream().map(Finding::ruleId).toList());
+        assertEquals("Real-time module 'motion' has no delay; a real-time module needs a non-zero period and delay",
+                findings.get(0).message());
+    }
+}

@@ -1,0 +1,81 @@
+package org.rsaml.validation.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Severity;
+
+/** The paper's experiments: experiment 2 shows exactly its five defects, the other models are clean. */
+class PaperExperimentsTest {
+
+    @Test
+    void experimentTwoYieldsExactlyThePapersFiveFindings() throws Exception {
+        Path file = Paths.example("exp2-defects.rsaml");
+        List<Finding> findings = RsamlModelValidator.validate(file, "examples/exp2-defects.rsaml");
+        String root = "hybridMobileRobotWithDefects";
+        List<String> actual = findings.stream()
+                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName())
+                .sorted().collect(Collectors.toList());
+        assertEquals(List.of(
+                "RSA-01 error " + root,
+                "RSA-02 error " + root + "/s0_ressourceCheck -> e0_prodExec",
+                "RSA-04 error " + root + "/decision/proceduralExec/overrideM01",
+                "RSA-07 error " + root + "/functional/m01/f0_m01",
+                "RSA-08 error " + root + "/control/resourceChecker"), actual);
+
+        Finding budget = findings.stream().filter(f -> f.ruleId().equals("RSA-08")).findFirst().orElseThrow();
+        assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.message());
+        assertEquals("examples/exp2-defects.rsaml", budget.file());
+
+        Finding types = findings.stream().filter(f -> f.ruleId().equals("RSA-02")).findFirst().orElseThrow();
+        assertTrue(types.message().contains("'resourceChecker.s0_ressourceCheck' (numeric)"), types.message());
+        assertTrue(types.message().contains("'proceduralExec.e0_prodExec' (alphanumeric)"), types.message());
+
+        Finding suppress = findings.stream().filter(f -> f.ruleId().equals("RSA-04")).findFirst().orElseThrow();
+        assertTrue(suppress.message().contains("'m01.e0_m01'") && suppress.message().contains("level 0"), suppress.message());
+
+        // Every finding points at the start tag of its element in the file.
+        List<String> lines = Files.readAllLines(file);
+        for (Finding f : findings) {
+            assertTrue(f.line() > 0 && f.column() > 0, "no location for " + f);
+            String rest = String.join("\n", lines.subList(f.line() - 1, lines.size())).substring(f.column() - 1);
+            String at = rest.substring(0, rest.indexOf('>') + 1);
+            assertTrue(at.startsWith("<"), "finding " + f + " does not point at a start tag: " + at);
+            String last = f.qualifiedName().substring(f.qualifiedName().lastIndexOf('/') + 1);
+            if (!last.contains("->")) {
+                assertTrue(at.contains("name=\"" + last + "\""), f + " points at " + at);
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = { "exp1-hybrid.rsaml", "exp3-task-interpreter.rsaml", "subsumption-brooks.rsaml",
+            "hierarchical-nasrem.rsaml" })
+    void cleanExamplesHaveNoFinding(String name) throws Exception {
+        List<Finding> findings = RsamlModelValidator.validate(Paths.example(name));
+        assertEquals(List.of(), findings.stream().map(Finding::toString).collect(Collectors.toList()));
+    }
+
+    @Test
+    void everyExampleIsCoveredByThisTest() throws Exception {
+        try (Stream<Path> files = Files.list(Paths.root().resolve("examples"))) {
+            List<String> names = files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted()
+                    .collect(Collectors.toList());
+            assertEquals(List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "exp3-task-interpreter.rsaml",
+                    "hierarchical-nasrem.rsaml", "subsumption-brooks.rsaml"), names,
+                    "a new example needs an expectation here");
+        }
+        assertEquals(Severity.ERROR, org.rsaml.validation.Rules.byId("RSA-08").orElseThrow().severity());
+    }
+}
