@@ -28,6 +28,16 @@ public final class RsamlModelValidator {
     private static final Comparator<Finding> ORDER = Comparator.comparingInt(Finding::line)
             .thenComparingInt(Finding::column).thenComparing(Finding::ruleId);
 
+    /** EMF's own checks; the OCL invariants are skipped, not reported as missing delegates. */
+    private static final EValidator STRUCTURE_ONLY = new EObjectValidator() {
+        @Override
+        public boolean validate(org.eclipse.emf.ecore.EClass eClass, EObject eObject,
+                org.eclipse.emf.common.util.DiagnosticChain diagnostics, Map<Object, Object> context,
+                String validationDelegate, String constraint, String expression, int severity, String source, int code) {
+            return true;
+        }
+    };
+
     private RsamlModelValidator() {
     }
 
@@ -48,7 +58,7 @@ public final class RsamlModelValidator {
 
     /** EMF's structural checks alone (multiplicities, proxies, references), without the OCL rules. */
     public static List<Finding> validateStructure(LoadedModel model) {
-        return toFindings(diagnose(model.resource().getContents(), EObjectValidator.INSTANCE), model);
+        return toFindings(diagnose(model.resource().getContents(), STRUCTURE_ONLY), model);
     }
 
     /** Validates elements that were not read from a file (no line and column). */
