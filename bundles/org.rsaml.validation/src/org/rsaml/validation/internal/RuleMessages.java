@@ -83,7 +83,7 @@ final class RuleMessages {
             }
             case "RSA04": {
                 SubsumptionLink link = (SubsumptionLink) o;
-                Module own = link instanceof Inhibitor i ? i.getModule() : ((Suppressor) link).getModule();
+                Module own = owner(link);
                 Port target = link instanceof Inhibitor i ? i.getTarget() : ((Suppressor) link).getTarget();
                 String verb = link instanceof Inhibitor ? "inhibits output " : "suppresses entry ";
                 return capitalized(element(link)) + " of module '" + name(own) + "' in " + layer(own.getLayer()) + " "
@@ -144,7 +144,7 @@ final class RuleMessages {
                 return "RTAction '" + name(o) + "' is declared simple; an RTAction is real-time";
             case "RSA16": {
                 SubsumptionLink link = (SubsumptionLink) o;
-                Module own = link instanceof Inhibitor i ? i.getModule() : ((Suppressor) link).getModule();
+                Module own = owner(link);
                 return capitalized(element(link)) + " is triggered by " + port(link.getTrigger())
                         + ", which is not an output port of its own module '" + name(own) + "'";
             }
@@ -158,6 +158,11 @@ final class RuleMessages {
             default:
                 return "The '" + constraint + "' constraint is violated on " + element(o);
         }
+    }
+
+    /** The module that owns an inhibitor or a suppressor. */
+    private static Module owner(SubsumptionLink link) {
+        return link instanceof Inhibitor i ? i.getModule() : ((Suppressor) link).getModule();
     }
 
     private static String names(List<? extends NamedElement> elements) {
