@@ -8,7 +8,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -198,11 +197,5 @@ class RoundTripTest {
             return 3;
         }
         throw new AssertionError("no sample value for " + attribute.getName() + " of type " + c);
-    }
-
-    static Set<String> names(List<? extends EObject> objects) {
-        Set<String> s = new HashSet<>();
-        objects.forEach(o -> s.add(String.valueOf(o.eGet(RsamlPackage.Literals.NAMED_ELEMENT__NAME))));
-        return s;
     }
 }
