@@ -64,7 +64,7 @@ public final class ModelLoader {
         } catch (OutOfMemoryError e) {
             resource.unload();
             throw new ModelLoadException(displayName, 0, 0, "the model is too large for the available heap ("
-                    + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB); give the JVM more memory, e.g. JAVA_OPTS=-Xmx4g", null);
+                    + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB); give the JVM more memory with -Xmx (for the rsaml command: RSAML_JAVA_OPTS=-Xmx4g)", null);
         }
         if (!resource.getErrors().isEmpty()) {
             throw describe(displayName, resource, null);
@@ -96,7 +96,8 @@ public final class ModelLoader {
         } catch (IOException e) {
             throw new ModelLoadException(file, 0, 0, "the file cannot be read: " + e.getMessage(), e);
         } catch (OutOfMemoryError e) {
-            throw new ModelLoadException(file, "the file is too large for the available heap");
+            throw new ModelLoadException(file, "the model is too large for the available heap ("
+                    + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB); give the JVM more memory with -Xmx (for the rsaml command: RSAML_JAVA_OPTS=-Xmx4g)");
         }
         if (bytes.length == 0 || new String(bytes, StandardCharsets.UTF_8).isBlank()) {
             throw new ModelLoadException(file, "the file is empty; an RsaML model is an XMI document with an rsaml:Architecture root");

@@ -1,0 +1,116 @@
+package org.rsaml.cli;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Stream;
+
+import org.rsaml.validation.ModelLoadException;
+
+/**
+ * Turns the paths a user names into model files: a file is taken as it is (whatever its extension,
+ * since the user asked for it), a directory contributes every {@code .rsaml} file below it, in a
+ * stable order. Paths keep the spelling the user gave, so reports point where the user looks.
+ */
+public final class ModelFiles {
+
+    public static final String EXTENSION = ".rsaml";
+
+    /**
+     * The inputs in the order the user named them: model files (without duplicates) and, in their
+     * place, inputs that name nothing usable (missing path, directory without models).
+     */
+    public record Selection(List<Object> entries) {
+
+        public List<Input> files() {
+            return entries.stream().filter(Input.class::isInstance).map(Input.class::cast).toList();
+        }
+
+        public List<ModelLoadException> errors() {
+            return entries.stream().filter(ModelLoadException.class::isInstance).map(ModelLoadException.class::cast).toList();
+        }
+    }
+
+    /** A model file with the name it is reported under. */
+    public record Input(Path path, String displayName) {
+    }
+
+    private ModelFiles() {
+    }
+
+    /**
+     * @param base  the directory relative paths are resolved against (the working directory)
+     * @param paths files and directories as the user named them
+     */
+    public static Selection select(Path base, List<Path> paths) {
+        List<Object> entries = new ArrayList<>();
+        List<Path> seen = new ArrayList<>();
+        for (Path named : paths) {
+            String shown = display(named);
+            Path path = base.resolve(named);
+            if (Files.isDirectory(path)) {
+                List<Path> found;
+                try {
+                    found = modelsUnder(path);
+                } catch (IOException | UncheckedIOException e) {
+                    entries.add(new ModelLoadException(shown, "cannot list the directory: " + reason(e)));
+                    continue;
+                }
+                if (found.isEmpty()) {
+                    entries.add(new ModelLoadException(shown, "no " + EXTENSION + " files in this directory or below it"));
+                }
+                for (Path file : found) {
+                    add(entries, seen, file, display(named.resolve(path.relativize(file)).normalize()));
+                }
+            } else if (Files.exists(path)) {
+                add(entries, seen, path, shown);
+            } else {
+                entries.add(new ModelLoadException(shown, "no such file or directory"));
+            }
+        }
+        return new Selection(List.copyOf(entries));
+    }
+
+    /** The {@code .rsaml} files under a directory, sorted by path; hidden folders are skipped. */
+    public static List<Path> modelsUnder(Path directory) throws IOException {
+        try (Stream<Path> walk = Files.walk(directory)) {
+            return walk.filter(p -> !hiddenBelow(directory, p))
+                    .filter(p -> p.getFileName() != null
+                            && p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(EXTENSION))
+                    .filter(Files::isRegularFile)
+                    .sorted()
+                    .toList();
+        }
+    }
+
+    private static boolean hiddenBelow(Path root, Path p) {
+        for (Path part : root.relativize(p)) {
+            if (part.toString().startsWith(".")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static void add(List<Object> entries, List<Path> seen, Path file, String shown) {
+        Path key = file.toAbsolutePath().normalize();
+        if (!seen.contains(key)) {
+            seen.add(key);
+            entries.add(new Input(file, shown));
+        }
+    }
+
+    /** Forward slashes everywhere, so reports read the same on every platform and in SARIF. */
+    static String display(Path path) {
+        return path.toString().replace('\\', '/');
+    }
+
+    private static String reason(Exception e) {
+        Throwable cause = e instanceof UncheckedIOException u ? u.getCause() : e;
+        return cause.getMessage() == null ? cause.getClass().getSimpleName() : cause.getMessage();
+    }
+}

@@ -1,0 +1,122 @@
+package org.rsaml.cli;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStreamWriter;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Properties;
+
+import org.rsaml.cli.report.ExitCodes;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.IVersionProvider;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ScopeType;
+
+/**
+ * {@code rsaml}: validates RsaML models headless, for terminals and CI pipelines.
+ * Exit codes: 0 clean, 1 findings at or above {@code --fail-on}, 2 usage or input error.
+ */
+@Command(name = "rsaml", mixinStandardHelpOptions = true, versionProvider = RsamlCli.Version.class,
+        description = "Checks robot software architectures written in RsaML (.rsaml files).",
+        subcommands = { ValidateCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = { "0:clean: no finding at or above --fail-on",
+                "1:findings at or above --fail-on",
+                "2:usage error, or an input that could not be read" },
+        footer = { "", "Example: rsaml validate --format sarif --output junit=target/rsaml.xml models/" })
+public final class RsamlCli implements Runnable {
+
+    @Option(names = "--debug", scope = ScopeType.INHERIT,
+            description = "On an unexpected failure, print the stack trace.")
+    boolean debug;
+
+    /** Where relative paths are resolved; the process's working directory unless embedded. */
+    final Path workingDirectory;
+
+    @CommandLine.Spec
+    CommandLine.Model.CommandSpec spec;
+
+    RsamlCli(Path workingDirectory) {
+        this.workingDirectory = workingDirectory;
+    }
+
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "a command is required (validate, rules, help)");
+    }
+
+    public static void main(String[] args) {
+        PrintWriter out = new PrintWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), true);
+        PrintWriter err = new PrintWriter(new OutputStreamWriter(System.err, StandardCharsets.UTF_8), true);
+        int code = run(Path.of("").toAbsolutePath(), args, out, err);
+        out.flush();
+        err.flush();
+        System.exit(code);
+    }
+
+    /** Runs {@code rsaml} in this JVM, relative paths resolved against {@code workingDirectory}. */
+    public static int run(Path workingDirectory, String[] args, PrintWriter out, PrintWriter err) {
+        RsamlCli cli = new RsamlCli(workingDirectory);
+        CommandLine commandLine = new CommandLine(cli);
+        commandLine.setOut(out);
+        commandLine.setErr(err);
+        commandLine.setCaseInsensitiveEnumValuesAllowed(true);
+        commandLine.setExitCodeExceptionMapper(e -> ExitCodes.INPUT_ERROR);
+        commandLine.setParameterExceptionHandler((e, arguments) -> {
+            CommandLine cmd = e.getCommandLine();
+            cmd.getErr().println("rsaml: " + e.getMessage());
+            cmd.getErr().println("Try '" + cmd.getCommandSpec().qualifiedName() + " --help' for more information.");
+            return ExitCodes.INPUT_ERROR;
+        });
+        commandLine.setExecutionExceptionHandler((e, cmd, parseResult) -> {
+            if (e instanceof UserException user) {
+                cmd.getErr().println("rsaml: " + user.getMessage());
+            } else {
+                cmd.getErr().println("rsaml: internal error: " + e + (cli.debug ? "" : " (run with --debug for details)"));
+            }
+            if (cli.debug) {
+                e.printStackTrace(cmd.getErr());
+            }
+            return ExitCodes.INPUT_ERROR;
+        });
+        try {
+            return commandLine.execute(args);
+        } catch (OutOfMemoryError e) {
+            err.println("rsaml: out of memory; give the JVM more heap (RSAML_JAVA_OPTS=-Xmx4g)");
+            return ExitCodes.INPUT_ERROR;
+        }
+    }
+
+    /** An error the user can fix, reported as one line without a stack trace. */
+    static final class UserException extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        UserException(String message) {
+            super(message);
+        }
+    }
+
+    /** The version written into the jar at build time. */
+    static final class Version implements IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            return new String[] { "rsaml " + version(), "Java " + System.getProperty("java.version") };
+        }
+    }
+
+    static String version() {
+        Properties properties = new Properties();
+        try (InputStream in = RsamlCli.class.getResourceAsStream("version.properties")) {
+            if (in != null) {
+                properties.load(in);
+            }
+        } catch (IOException e) {
+            // the version is informative only
+        }
+        return properties.getProperty("version", "unknown");
+    }
+}

@@ -1,0 +1,72 @@
+package org.rsaml.cli.report;
+
+import java.io.IOException;
+import java.io.Writer;
+
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.Severity;
+
+import com.google.gson.stream.JsonWriter;
+
+/** RsaML's JSON report: one object per file with its findings or its input error, and totals. */
+final class JsonReport {
+
+    private JsonReport() {
+    }
+
+    static void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+        JsonWriter json = new JsonWriter(out);
+        json.setIndent("  ");
+        json.setHtmlSafe(false);
+        json.beginObject();
+        json.name("tool").beginObject().name("name").value("rsaml").name("version").value(options.toolVersion()).endObject();
+        json.name("files").beginArray();
+        for (FileResult result : report.results()) {
+            json.beginObject();
+            json.name("file").value(result.file());
+            if (result.readable()) {
+                json.name("status").value(result.findings().isEmpty() ? "clean" : "findings");
+                json.name("findings").beginArray();
+                for (Finding f : result.findings()) {
+                    json.beginObject();
+                    json.name("ruleId").value(f.ruleId());
+                    json.name("rule").value(f.rule().name());
+                    json.name("severity").value(f.severity().label());
+                    json.name("message").value(f.message());
+                    json.name("element").value(f.qualifiedName());
+                    json.name("uriFragment").value(f.uriFragment());
+                    json.name("line").value(f.line());
+                    json.name("column").value(f.column());
+                    json.name("fails").value(report.fails(f));
+                    json.endObject();
+                }
+                json.endArray();
+            } else {
+                json.name("status").value("unreadable");
+                json.name("error").beginObject();
+                json.name("message").value(result.error().getMessage());
+                if (result.error().line() > 0) {
+                    json.name("line").value(result.error().line());
+                }
+                if (result.error().column() > 0) {
+                    json.name("column").value(result.error().column());
+                }
+                json.endObject();
+            }
+            json.endObject();
+        }
+        json.endArray();
+        json.name("summary").beginObject();
+        json.name("files").value(report.files());
+        json.name("errors").value(report.count(Severity.ERROR));
+        json.name("warnings").value(report.count(Severity.WARNING));
+        json.name("infos").value(report.count(Severity.INFO));
+        json.name("unreadable").value(report.unreadable());
+        json.name("failOn").value(report.failOn() == null ? "never" : report.failOn().label());
+        json.name("exitCode").value(report.exitCode());
+        json.endObject();
+        json.endObject();
+        json.flush();
+        out.write('\n');
+    }
+}

@@ -1,0 +1,64 @@
+package org.rsaml.cli.report;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.util.Locale;
+
+/** The formats a validation report is written in. */
+public enum ReportFormat {
+    /** Compiler style, one finding a line, then a summary line. */
+    TEXT("txt") {
+        @Override
+        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+            TextReport.write(report, out, options);
+        }
+    },
+    /** RsaML's own JSON document: files, findings, input errors, summary. */
+    JSON("json") {
+        @Override
+        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+            JsonReport.write(report, out, options);
+        }
+    },
+    /** SARIF 2.1.0, read by GitHub code scanning and most static-analysis dashboards. */
+    SARIF("sarif") {
+        @Override
+        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+            SarifReport.write(report, out, options);
+        }
+    },
+    /** JUnit XML, read by the test reporters of Jenkins, GitLab and GitHub Actions. */
+    JUNIT("xml") {
+        @Override
+        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+            JUnitReport.write(report, out, options);
+        }
+    };
+
+    private final String extension;
+
+    ReportFormat(String extension) {
+        this.extension = extension;
+    }
+
+    public abstract void write(ValidationReport report, Writer out, ReportOptions options) throws IOException;
+
+    /** The usual file extension of this format, without the dot. */
+    public String extension() {
+        return extension;
+    }
+
+    /** The name users type: {@code text}, {@code json}, {@code sarif}, {@code junit}. */
+    public String id() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    public static ReportFormat parse(String name) {
+        for (ReportFormat format : values()) {
+            if (format.id().equalsIgnoreCase(name.trim())) {
+                return format;
+            }
+        }
+        throw new IllegalArgumentException("unknown report format '" + name + "' (expected text, json, sarif or junit)");
+    }
+}

@@ -1,0 +1,13 @@
+package org.rsaml.cli.report;
+
+import java.nio.file.Path;
+
+/**
+ * What a report needs besides the findings.
+ *
+ * @param toolVersion the version of RsaML that produced the report
+ * @param baseDir     the directory relative file names are resolved against (the working directory)
+ * @param quiet       text format only: report errors only, and no summary line
+ */
+public record ReportOptions(String toolVersion, Path baseDir, boolean quiet) {
+}

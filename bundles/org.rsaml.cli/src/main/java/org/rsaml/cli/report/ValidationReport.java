@@ -1,0 +1,71 @@
+package org.rsaml.cli.report;
+
+import java.util.List;
+
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.Severity;
+
+/**
+ * The outcome of validating a set of inputs, in the order they were named: what every report
+ * format renders and what decides the exit code.
+ *
+ * @param results one entry per model file, and one per input that could not be read
+ * @param failOn  the lowest severity that fails the run, or {@code null} when findings never fail it
+ */
+public record ValidationReport(List<FileResult> results, Severity failOn) {
+
+    public ValidationReport {
+        results = List.copyOf(results);
+    }
+
+    public long count(Severity severity) {
+        return results.stream().mapToLong(r -> r.count(severity)).sum();
+    }
+
+    public long unreadable() {
+        return results.stream().filter(r -> !r.readable()).count();
+    }
+
+    /** The model files that were read and checked. */
+    public long files() {
+        return results.size() - unreadable();
+    }
+
+    /** Whether a finding is serious enough to fail the run. */
+    public boolean fails(Finding finding) {
+        return failOn != null && finding.severity().atLeast(failOn);
+    }
+
+    public boolean hasFailingFindings() {
+        return results.stream().flatMap(r -> r.findings().stream()).anyMatch(this::fails);
+    }
+
+    /** 0 clean, 1 findings at or above the threshold, 2 an input could not be read. */
+    public int exitCode() {
+        if (unreadable() > 0) {
+            return ExitCodes.INPUT_ERROR;
+        }
+        return hasFailingFindings() ? ExitCodes.FINDINGS : ExitCodes.OK;
+    }
+
+    /** One line: {@code 3 files checked: 5 errors, 1 warning; 1 file could not be read}. */
+    public String summary() {
+        StringBuilder s = new StringBuilder();
+        s.append(plural(files(), "file")).append(" checked: ")
+                .append(plural(count(Severity.ERROR), "error")).append(", ")
+                .append(plural(count(Severity.WARNING), "warning"));
+        long infos = count(Severity.INFO);
+        if (infos > 0) {
+            s.append(", ").append(plural(infos, "info"));
+        }
+        long unreadable = unreadable();
+        if (unreadable > 0) {
+            s.append("; ").append(plural(unreadable, "input")).append(" could not be read");
+        }
+        return s.toString();
+    }
+
+    private static String plural(long n, String word) {
+        return n + " " + word + (n == 1 ? "" : "s");
+    }
+}

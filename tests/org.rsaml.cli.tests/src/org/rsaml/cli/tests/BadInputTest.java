@@ -1,0 +1,102 @@
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * Every kind of unfit input gives one line naming the file (and the line and column where there is
+ * one) and what is wrong, exit code 2, no stack trace, and the other inputs are still validated.
+ */
+class BadInputTest {
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+            "missing.rsaml          | missing.rsaml: error: no such file or directory",
+            "no-models              | no-models: error: no .rsaml files in this directory or below it",
+            "empty.rsaml            | empty.rsaml: error: the file is empty",
+            "binary.rsaml           | binary.rsaml: error: the file is binary, not an XML model",
+            "malformed.rsaml        | malformed.rsaml:6:5: error: malformed XML: The element type \"modules\" must be terminated",
+            "foreign-namespace.rsaml| foreign-namespace.rsaml:2:128: error: namespace 'http://www.eclipse.org/uml2/5.0.0/UML' is not RsaML's",
+            "dangling-reference.rsaml| dangling-reference.rsaml:10:91: error: reference target points to '//@layers[name='functional']/@modules[name='planner']/@ports[name='pose']', which does not exist",
+            "xxe.rsaml              | xxe.rsaml:2:10: error: DOCTYPE declarations are not allowed",
+            "entity-bomb.rsaml      | entity-bomb.rsaml:2:10: error: DOCTYPE declarations are not allowed" })
+    void oneClearLineAndTheOtherFilesStillValidated(String input, String expected) {
+        Path exp2 = Cli.ROOT.resolve("examples/exp2-defects.rsaml");
+        Cli.Result r = Cli.runIn(Cli.INPUTS, "validate", input, exp2.toString());
+        assertEquals(2, r.code(), r::toString);
+        List<String> lines = r.outLines();
+        List<String> about = lines.stream().filter(l -> l.startsWith(input)).toList();
+        assertEquals(1, about.size(), r::toString);
+        assertTrue(about.get(0).startsWith(expected), () -> "expected " + expected + "\n" + r);
+        assertEquals(ValidateCommandTest.EXP2_FINDINGS.size(), lines.stream().filter(l -> l.startsWith(exp2.toString())).count(), r::toString);
+        assertEquals("1 file checked: 5 errors, 0 warnings; 1 input could not be read", lines.get(lines.size() - 1));
+        assertNoStackTrace(r);
+    }
+
+    @Test
+    void externalEntitiesAreNeverResolved(@TempDir Path dir) throws Exception {
+        Path secret = dir.resolve("secret.txt");
+        Files.writeString(secret, "TOP-SECRET-ROBOT-KEY");
+        Path model = dir.resolve("steal.rsaml");
+        Files.writeString(model, Files.readString(Cli.INPUTS.resolve("xxe.rsaml")).replace("file:///etc/passwd", secret.toUri().toString()));
+        for (String format : List.of("text", "json", "sarif", "junit")) {
+            Cli.Result r = Cli.runIn(dir, "validate", "--format", format, "steal.rsaml");
+            assertEquals(2, r.code(), r::toString);
+            assertFalse(r.out().contains("TOP-SECRET") || r.err().contains("TOP-SECRET"), r::toString);
+        }
+    }
+
+    @Test
+    void debugShowsTheCause() {
+        Cli.Result plain = Cli.runIn(Cli.INPUTS, "validate", "malformed.rsaml");
+        assertNoStackTrace(plain);
+        Cli.Result debug = Cli.runIn(Cli.INPUTS, "--debug", "validate", "malformed.rsaml");
+        assertEquals(2, debug.code());
+        assertTrue(debug.err().contains("malformed.rsaml: cause of the error above:"), debug::toString);
+        assertTrue(debug.err().contains("\tat "), debug::toString);
+    }
+
+    @Test
+    void structuredFormatsAlsoTellAPersonOnStandardError() {
+        Cli.Result r = Cli.runIn(Cli.INPUTS, "validate", "--format", "json", "empty.rsaml");
+        assertEquals(2, r.code());
+        assertTrue(r.err().startsWith("empty.rsaml: error: the file is empty"), r::toString);
+        assertTrue(r.out().startsWith("{"), r::toString);
+    }
+
+    @Test
+    void aModelTooLargeForTheHeapIsReportedNotThrown(@TempDir Path dir) throws Exception {
+        // About 60 MB of modules: far more than the 48 MB heap the process is given.
+        Path big = dir.resolve("huge.rsaml");
+        try (var out = Files.newBufferedWriter(big)) {
+            out.write("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rsaml:Architecture xmi:version=\"2.0\" "
+                    + "xmlns:xmi=\"http://www.omg.org/XMI\" xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"robot\" declaredLayers=\"1\">\n"
+                    + "  <layers name=\"functional\" level=\"0\">\n");
+            for (int i = 0; i < 400_000; i++) {
+                out.write("    <modules name=\"module" + i + "\" description=\"a module that exists to fill the heap\"/>\n");
+            }
+            out.write("  </layers>\n</rsaml:Architecture>\n");
+        }
+        Files.copy(Cli.INPUTS.resolve("clean.rsaml"), dir.resolve("small.rsaml"));
+        Cli.Result r = Cli.process(dir, Cli.java(List.of("-Xmx48m", "-XX:+UseSerialGC"), "validate", "huge.rsaml", "small.rsaml"));
+        assertEquals(2, r.code(), r::toString);
+        assertTrue(r.out().contains("huge.rsaml: error: the model is too large for the available heap"), r::toString);
+        assertTrue(r.out().contains("1 file checked: 0 errors, 0 warnings; 1 input could not be read"), r::toString);
+        assertNoStackTrace(r);
+    }
+
+    static void assertNoStackTrace(Cli.Result r) {
+        assertFalse(r.out().contains("\tat ") || r.err().contains("\tat "), r::toString);
+        assertFalse(r.out().contains("Exception") || r.err().contains("Exception"), r::toString);
+    }
+}

@@ -1,0 +1,73 @@
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Severity;
+
+/**
+ * The validation API outside OSGi, on a plain class path: the same rules from rsaml.ecore give the
+ * same findings as inside OSGi (tests/org.rsaml.validation.tests runs the same models there).
+ */
+class PlainJvmValidationTest {
+
+    private static final Path RULE_MODELS = Cli.ROOT.resolve("tests/org.rsaml.validation.tests/resources/rules");
+    private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d) (error|warning|info) (.+?) -->");
+
+    @Test
+    void runsOnAPlainClassPath() {
+        assertFalse(RsamlModelValidator.class.getClassLoader().getClass().getName().contains("osgi"),
+                "this test must run outside OSGi");
+    }
+
+    @Test
+    void experimentTwoGivesThePapersFiveFindings() throws Exception {
+        List<Finding> findings = RsamlModelValidator.validate(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), "exp2-defects.rsaml");
+        List<String> got = findings.stream()
+                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName() + " @" + f.line() + ":" + f.column()).toList();
+        assertEquals(List.of(
+                "RSA-01 error hybridMobileRobotWithDefects @13:1",
+                "RSA-04 error hybridMobileRobotWithDefects/decision/proceduralExec/overrideM01 @30:7",
+                "RSA-08 error hybridMobileRobotWithDefects/control/resourceChecker @50:5",
+                "RSA-07 error hybridMobileRobotWithDefects/functional/m01/f0_m01 @70:7",
+                "RSA-02 error hybridMobileRobotWithDefects/s0_ressourceCheck -> e0_prodExec @96:3"), got);
+        assertEquals(Severity.ERROR, findings.get(2).severity());
+        assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", findings.get(2).message());
+    }
+
+    static Stream<Path> ruleModels() throws IOException {
+        try (Stream<Path> files = Files.list(RULE_MODELS)) {
+            return files.filter(p -> p.toString().endsWith(".rsaml")).sorted().toList().stream();
+        }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("ruleModels")
+    void ruleModelGivesTheFindingsItStates(Path model) throws Exception {
+        String text = Files.readString(model);
+        List<String> expected = new ArrayList<>();
+        Matcher m = EXPECT.matcher(text);
+        while (m.find()) {
+            expected.add(m.group(1) + " " + m.group(2) + " " + m.group(3));
+        }
+        List<String> actual = new ArrayList<>(RsamlModelValidator.validate(model).stream()
+                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName()).toList());
+        expected.sort(null);
+        actual.sort(null);
+        assertEquals(expected, actual, model.getFileName().toString());
+    }
+}

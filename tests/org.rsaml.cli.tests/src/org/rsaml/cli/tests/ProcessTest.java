@@ -1,0 +1,47 @@
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+/** The runnable jar and the ./rsaml launcher, as separate processes, the way CI and people call them. */
+class ProcessTest {
+
+    @Test
+    void runnableJarValidatesTheExamples() throws Exception {
+        Cli.Result r = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/"));
+        assertEquals(1, r.code(), r::toString);
+        List<String> lines = r.outLines();
+        assertEquals(ValidateCommandTest.EXP2_FINDINGS, lines.subList(0, lines.size() - 1), r::toString);
+        assertEquals("", r.err());
+    }
+
+    @Test
+    void runnableJarExitCodes() throws Exception {
+        assertEquals(0, Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/exp1-hybrid.rsaml")).code());
+        Cli.Result usage = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "--format"));
+        assertEquals(2, usage.code(), usage::toString);
+        Cli.Result missing = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "nowhere.rsaml"));
+        assertEquals(2, missing.code(), missing::toString);
+        assertEquals("nowhere.rsaml: error: no such file or directory", missing.outLines().get(0));
+        BadInputTest.assertNoStackTrace(missing);
+    }
+
+    @Test
+    void launcherAtTheRepositoryRoot() throws Exception {
+        assertTrue(Files.isExecutable(Cli.ROOT.resolve("rsaml")), "./rsaml is executable");
+        Cli.Result r = Cli.process(Cli.ROOT, List.of("./rsaml", "validate", "examples/"));
+        assertEquals(1, r.code(), r::toString);
+        assertTrue(r.out().contains("examples/exp2-defects.rsaml:50:5: error RSA-08"), r::toString);
+        assertTrue(r.out().endsWith("5 files checked: 5 errors, 0 warnings\n"), r::toString);
+        // A second run uses the class-data archive the first one left; the result is the same.
+        Cli.Result again = Cli.process(Cli.ROOT, List.of("./rsaml", "validate", "--format", "json", "examples/exp2-defects.rsaml"));
+        assertEquals(1, again.code(), again::toString);
+        assertEquals("", again.err(), "nothing but the report, no JVM warnings");
+        assertTrue(again.out().contains("\"ruleId\": \"RSA-08\""), again::toString);
+    }
+}

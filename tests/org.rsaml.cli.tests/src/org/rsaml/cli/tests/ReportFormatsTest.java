@@ -1,0 +1,223 @@
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.StringReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+
+import org.apache.maven.plugin.surefire.log.api.NullConsoleLogger;
+import org.apache.maven.plugins.surefire.report.ReportTestCase;
+import org.apache.maven.plugins.surefire.report.ReportTestSuite;
+import org.apache.maven.plugins.surefire.report.TestSuiteXmlParser;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import com.networknt.schema.JsonSchema;
+import com.networknt.schema.JsonSchemaFactory;
+import com.networknt.schema.SpecVersion;
+import com.networknt.schema.ValidationMessage;
+
+/** JSON, SARIF and JUnit XML reports, on standard output and in files, read back as their consumers read them. */
+class ReportFormatsTest {
+
+    private static JsonSchema sarifSchema;
+
+    @BeforeAll
+    static void loadSarifSchema() throws Exception {
+        try (InputStream in = Files.newInputStream(Cli.ROOT.resolve("tests/org.rsaml.cli.tests/resources/sarif/sarif-2.1.0-rtm.5.json"))) {
+            sarifSchema = JsonSchemaFactory.getInstance(SpecVersion.VersionFlag.V4).getSchema(in);
+        }
+    }
+
+    static Set<ValidationMessage> sarifProblems(String sarif) throws Exception {
+        return sarifSchema.validate(new ObjectMapper().readTree(sarif));
+    }
+
+    @Test
+    void jsonListsEveryFileWithFindingsAndTotals() {
+        Cli.Result r = Cli.run("validate", "--format", "json", "examples", "tests/org.rsaml.cli.tests/resources/inputs/empty.rsaml");
+        assertEquals(2, r.code(), r::toString);
+        JsonObject doc = JsonParser.parseString(r.out()).getAsJsonObject();
+        assertEquals(System.getProperty("rsaml.version"), doc.getAsJsonObject("tool").get("version").getAsString());
+        JsonArray files = doc.getAsJsonArray("files");
+        assertEquals(6, files.size());
+        JsonObject exp2 = find(files, "examples/exp2-defects.rsaml");
+        assertEquals("findings", exp2.get("status").getAsString());
+        JsonArray findings = exp2.getAsJsonArray("findings");
+        assertEquals(5, findings.size());
+        JsonObject budget = findings.get(2).getAsJsonObject();
+        assertEquals("RSA-08", budget.get("ruleId").getAsString());
+        assertEquals("error", budget.get("severity").getAsString());
+        assertEquals("hybridMobileRobotWithDefects/control/resourceChecker", budget.get("element").getAsString());
+        assertEquals(50, budget.get("line").getAsInt());
+        assertEquals(5, budget.get("column").getAsInt());
+        assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.get("message").getAsString());
+        assertTrue(budget.get("uriFragment").getAsString().contains("resourceChecker"));
+        assertEquals("clean", find(files, "examples/exp1-hybrid.rsaml").get("status").getAsString());
+        JsonObject empty = find(files, "tests/org.rsaml.cli.tests/resources/inputs/empty.rsaml");
+        assertEquals("unreadable", empty.get("status").getAsString());
+        assertTrue(empty.getAsJsonObject("error").get("message").getAsString().startsWith("the file is empty"));
+        JsonObject summary = doc.getAsJsonObject("summary");
+        assertEquals(5, summary.get("files").getAsInt());
+        assertEquals(5, summary.get("errors").getAsInt());
+        assertEquals(1, summary.get("unreadable").getAsInt());
+        assertEquals(2, summary.get("exitCode").getAsInt());
+    }
+
+    @Test
+    void sarifConformsToTheSchemaAndLocatesEveryFinding() throws Exception {
+        Cli.Result r = Cli.run("validate", "--format", "sarif", "examples", "tests/org.rsaml.cli.tests/resources/inputs/malformed.rsaml");
+        assertEquals(2, r.code(), r::toString);
+        assertEquals(Set.of(), sarifProblems(r.out()));
+        JsonObject run = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject();
+        JsonObject driver = run.getAsJsonObject("tool").getAsJsonObject("driver");
+        assertEquals("rsaml", driver.get("name").getAsString());
+        JsonArray rules = driver.getAsJsonArray("rules");
+        assertEquals(19, rules.size());
+        JsonObject rule8 = rules.get(8).getAsJsonObject();
+        assertEquals("RSA-08", rule8.get("id").getAsString());
+        assertFalse(rule8.getAsJsonObject("help").get("text").getAsString().isBlank());
+        assertEquals("error", rule8.getAsJsonObject("defaultConfiguration").get("level").getAsString());
+
+        JsonArray results = run.getAsJsonArray("results");
+        assertEquals(5, results.size());
+        List<String> seen = new ArrayList<>();
+        for (var element : results) {
+            JsonObject result = element.getAsJsonObject();
+            String ruleId = result.get("ruleId").getAsString();
+            assertEquals(ruleId, rules.get(result.get("ruleIndex").getAsInt()).getAsJsonObject().get("id").getAsString());
+            JsonObject location = result.getAsJsonArray("locations").get(0).getAsJsonObject().getAsJsonObject("physicalLocation");
+            assertEquals("examples/exp2-defects.rsaml", location.getAsJsonObject("artifactLocation").get("uri").getAsString());
+            assertEquals("%SRCROOT%", location.getAsJsonObject("artifactLocation").get("uriBaseId").getAsString());
+            seen.add(ruleId + "@" + location.getAsJsonObject("region").get("startLine").getAsInt()
+                    + ":" + location.getAsJsonObject("region").get("startColumn").getAsInt());
+        }
+        assertEquals(List.of("RSA-01@13:1", "RSA-04@30:7", "RSA-08@50:5", "RSA-07@70:7", "RSA-02@96:3"), seen);
+
+        JsonObject invocation = run.getAsJsonArray("invocations").get(0).getAsJsonObject();
+        assertFalse(invocation.get("executionSuccessful").getAsBoolean());
+        JsonObject notification = invocation.getAsJsonArray("toolExecutionNotifications").get(0).getAsJsonObject();
+        assertTrue(notification.getAsJsonObject("message").get("text").getAsString().startsWith("malformed XML"));
+        assertEquals(6, notification.getAsJsonArray("locations").get(0).getAsJsonObject().getAsJsonObject("physicalLocation")
+                .getAsJsonObject("region").get("startLine").getAsInt());
+    }
+
+    @Test
+    void theSchemaCheckCatchesANonConformingDocument() throws Exception {
+        Cli.Result r = Cli.run("validate", "--format", "sarif", "examples/exp2-defects.rsaml");
+        String broken = r.out().replace("\"level\": \"error\"", "\"level\": \"fatal\"");
+        assertFalse(sarifProblems(broken).isEmpty(), "an unknown level must violate the schema");
+        assertFalse(sarifProblems(r.out().replace("\"version\": \"2.1.0\"", "\"version\": \"2.0\"")).isEmpty());
+    }
+
+    @Test
+    void sarifNamesFilesWithSpacesAsUris() throws Exception {
+        Cli.Result r = Cli.runIn(Cli.INPUTS, "validate", "--format", "sarif", "--fail-on", "never", "dir with space", "warnings-only.rsaml");
+        assertEquals(0, r.code(), r::toString);
+        assertEquals(Set.of(), sarifProblems(r.out()));
+        JsonObject result = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
+                .getAsJsonArray("results").get(0).getAsJsonObject();
+        assertEquals("warning", result.get("level").getAsString());
+        assertEquals("RSA-11", result.get("ruleId").getAsString());
+        assertTrue(r.out().contains(Cli.INPUTS.toUri().toString().replace("%20", "%20")), "the base URI is the working directory");
+    }
+
+    @Test
+    void junitIsReadByATestReportParser(@TempDir Path dir) throws Exception {
+        Path report = dir.resolve("rsaml.xml");
+        Cli.Result r = Cli.run("validate", "--output", "junit=" + report, "examples", "tests/org.rsaml.cli.tests/resources/inputs/binary.rsaml");
+        assertEquals(2, r.code(), r::toString);
+        List<ReportTestSuite> suites;
+        try (InputStreamReader in = new InputStreamReader(Files.newInputStream(report), StandardCharsets.UTF_8)) {
+            suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(in);
+        }
+        assertEquals(6, suites.size());
+        ReportTestSuite exp2 = suites.stream().filter(s -> s.getFullClassName().equals("examples/exp2-defects.rsaml")
+                || s.getName().contains("exp2-defects")).findFirst().orElseThrow(() -> new AssertionError(suites));
+        assertEquals(19, exp2.getNumberOfTests());
+        assertEquals(5, exp2.getNumberOfFailures());
+        List<ReportTestCase> failed = exp2.getTestCases().stream().filter(ReportTestCase::hasFailure).toList();
+        assertEquals(List.of("RSA-01", "RSA-02", "RSA-04", "RSA-07", "RSA-08"),
+                failed.stream().map(ReportTestCase::getFailureType).sorted().toList());
+        ReportTestCase budget = failed.stream().filter(c -> c.getFailureType().equals("RSA-08")).findFirst().orElseThrow();
+        assertEquals("RSA-08 layer-execution-budget (hybridMobileRobotWithDefects/control/resourceChecker)", budget.getName());
+        assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.getFailureMessage());
+        assertTrue(budget.getFailureDetail().startsWith("examples/exp2-defects.rsaml:50:5: error RSA-08"), budget.getFailureDetail());
+
+        ReportTestSuite binary = suites.stream().filter(s -> s.getNumberOfErrors() == 1).findFirst().orElseThrow();
+        assertEquals(1, binary.getNumberOfTests());
+        assertTrue(binary.getTestCases().get(0).hasError());
+        long cleanSuites = suites.stream().filter(s -> s.getNumberOfFailures() == 0 && s.getNumberOfErrors() == 0).count();
+        assertEquals(4, cleanSuites);
+    }
+
+    @Test
+    void warningsBelowTheThresholdPassButStayVisibleInJunit(@TempDir Path dir) throws Exception {
+        Path lenient = dir.resolve("lenient.xml");
+        Path strict = dir.resolve("strict.xml");
+        String model = Cli.INPUTS.resolve("warnings-only.rsaml").toString();
+        assertEquals(0, Cli.run("validate", "--output", "junit=" + lenient, model).code());
+        assertEquals(1, Cli.run("validate", "--fail-on", "warning", "--output", "junit=" + strict, model).code());
+        String lenientXml = Files.readString(lenient);
+        assertTrue(lenientXml.contains("failures=\"0\""), lenientXml);
+        assertTrue(lenientXml.contains("<system-out>") && lenientXml.contains("warning RSA-11"), lenientXml);
+        String strictXml = Files.readString(strict);
+        assertTrue(strictXml.contains("<failure type=\"RSA-11\""), strictXml);
+    }
+
+    @Test
+    void severalReportsInOneRun(@TempDir Path dir) throws Exception {
+        Cli.Result r = Cli.runIn(dir, "validate", "--format", "text",
+                "--output", "sarif=reports/rsaml.sarif", "--output", "reports/rsaml.json", "-o", "reports/TEST-rsaml.xml",
+                Cli.ROOT.resolve("examples").toString());
+        assertEquals(1, r.code(), r::toString);
+        assertTrue(r.out().contains("error RSA-08"), r::toString);
+        assertEquals(Set.of(), sarifProblems(Files.readString(dir.resolve("reports/rsaml.sarif"))));
+        assertEquals(5, JsonParser.parseString(Files.readString(dir.resolve("reports/rsaml.json"))).getAsJsonObject()
+                .getAsJsonObject("summary").get("errors").getAsInt());
+        assertTrue(Files.readString(dir.resolve("reports/TEST-rsaml.xml")).startsWith("<?xml"));
+        try (var listing = Files.list(dir.resolve("reports"))) {
+            assertEquals(3, listing.count(), "no temporary file is left behind");
+        }
+    }
+
+    @Test
+    void aReportThatCannotBeWrittenFailsTheRunAndLeavesNothing(@TempDir Path dir) throws Exception {
+        Files.createDirectories(dir.resolve("taken.sarif"));
+        Files.writeString(dir.resolve("previous.json"), "previous report");
+        Files.writeString(dir.resolve("blocker"), "a file where a folder should be");
+        Cli.Result r = Cli.runIn(dir, "validate", "-o", "sarif=taken.sarif", "-o", "json=blocker/r.json",
+                Cli.ROOT.resolve("examples/exp1-hybrid.rsaml").toString());
+        assertEquals(2, r.code(), r::toString);
+        assertTrue(r.err().contains("taken.sarif: error: cannot write the sarif report"), r::toString);
+        assertTrue(r.err().contains("r.json: error: cannot write the json report"), r::toString);
+        BadInputTest.assertNoStackTrace(r);
+        try (var listing = Files.list(dir)) {
+            assertEquals(3, listing.count(), "no temporary or partial file is left behind");
+        }
+        assertTrue(Files.isDirectory(dir.resolve("taken.sarif")));
+    }
+
+    private static JsonObject find(JsonArray files, String name) {
+        for (var f : files) {
+            if (f.getAsJsonObject().get("file").getAsString().equals(name)) {
+                return f.getAsJsonObject();
+            }
+        }
+        throw new AssertionError(name + " not in " + files);
+    }
+}

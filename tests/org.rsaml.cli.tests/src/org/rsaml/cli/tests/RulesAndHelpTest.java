@@ -1,0 +1,69 @@
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.rsaml.validation.Rule;
+import org.rsaml.validation.Rules;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonParser;
+
+/** {@code rsaml rules}, {@code --version} and {@code --help}. */
+class RulesAndHelpTest {
+
+    @Test
+    void rulesListsEveryRuleWithSeverityAndDescription() {
+        Cli.Result r = Cli.run("rules");
+        assertEquals(0, r.code(), r::toString);
+        List<String> lines = r.outLines();
+        assertEquals(Rules.all().size(), lines.size(), r::toString);
+        assertTrue(lines.get(8).matches("RSA-08 +error +layer-execution-budget +Every module's execution duration stays within .*"), lines.get(8));
+        assertTrue(lines.get(11).matches("RSA-11 +warning +deadline-within-period +.*"), lines.get(11));
+
+        Cli.Result verbose = Cli.run("rules", "--verbose");
+        assertTrue(verbose.out().contains("fix: Shorten the module's execution duration"), verbose::toString);
+    }
+
+    @Test
+    void rulesAsJson() {
+        Cli.Result r = Cli.run("rules", "--format", "json");
+        assertEquals(0, r.code());
+        JsonArray rules = JsonParser.parseString(r.out()).getAsJsonArray();
+        assertEquals(Rules.all().size(), rules.size());
+        for (int i = 0; i < rules.size(); i++) {
+            Rule rule = Rules.all().get(i);
+            assertEquals(rule.id(), rules.get(i).getAsJsonObject().get("id").getAsString());
+            assertEquals(rule.severity().label(), rules.get(i).getAsJsonObject().get("severity").getAsString());
+            assertEquals(rule.help(), rules.get(i).getAsJsonObject().get("help").getAsString());
+        }
+    }
+
+    @Test
+    void versionIsTheBuiltOne() {
+        Cli.Result r = Cli.run("--version");
+        assertEquals(0, r.code());
+        assertEquals("rsaml " + System.getProperty("rsaml.version"), r.outLines().get(0));
+    }
+
+    @Test
+    void helpOnEveryCommand() {
+        Cli.Result top = Cli.run("--help");
+        assertEquals(0, top.code());
+        for (String expected : List.of("Usage: rsaml", "validate", "rules", "--version", "Exit codes:", "2   usage error")) {
+            assertTrue(top.out().contains(expected), () -> expected + " missing:\n" + top.out());
+        }
+        Cli.Result validate = Cli.run("validate", "--help");
+        assertEquals(0, validate.code());
+        for (String expected : List.of("Usage: rsaml validate", "--format", "--output", "--fail-on", "--quiet", "--debug")) {
+            assertTrue(validate.out().contains(expected), () -> expected + " missing:\n" + validate.out());
+        }
+        assertEquals(validate.out(), Cli.run("help", "validate").out());
+        Cli.Result rules = Cli.run("rules", "--help");
+        assertEquals(0, rules.code());
+        assertTrue(rules.out().contains("Usage: rsaml rules"), rules::toString);
+    }
+}

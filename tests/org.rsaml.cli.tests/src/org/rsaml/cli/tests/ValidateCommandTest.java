@@ -1,0 +1,98 @@
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+/** {@code rsaml validate} in text format: findings, summary, thresholds and exit codes. */
+class ValidateCommandTest {
+
+    static final List<String> EXP2_FINDINGS = List.of(
+            "examples/exp2-defects.rsaml:13:1: error RSA-01: Architecture 'hybridMobileRobotWithDefects' declares 4 layers but contains 3 (decision, control, functional); set declaredLayers to 3 or add the missing layers",
+            "examples/exp2-defects.rsaml:30:7: error RSA-04: Suppressor 'overrideM01' of module 'proceduralExec' in layer 'decision' (level 2) suppresses entry 'm01.e0_m01' in layer 'functional' (level 0); a module may only suppress inputs of the layer immediately below (level 1)",
+            "examples/exp2-defects.rsaml:50:5: error RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms",
+            "examples/exp2-defects.rsaml:70:7: error RSA-07: Real-time function 'f0_m01' contains non-real-time action(s) 'a0_f0_m01'",
+            "examples/exp2-defects.rsaml:96:3: error RSA-02: Connection from output port 'resourceChecker.s0_ressourceCheck' (numeric) to entry port 'proceduralExec.e0_prodExec' (alphanumeric) joins different data types");
+
+    @Test
+    void examplesDirectoryGivesThePaperFindingsAndFails() {
+        Cli.Result r = Cli.run("validate", "examples/");
+        assertEquals(1, r.code(), r::toString);
+        List<String> lines = r.outLines();
+        assertEquals(EXP2_FINDINGS, lines.subList(0, lines.size() - 1), r::toString);
+        assertEquals("5 files checked: 5 errors, 0 warnings", lines.get(lines.size() - 1));
+        assertEquals("", r.err());
+    }
+
+    @Test
+    void cleanModelExitsZero() {
+        Cli.Result r = Cli.run("validate", "examples/exp1-hybrid.rsaml", "examples/exp3-task-interpreter.rsaml");
+        assertEquals(0, r.code(), r::toString);
+        assertEquals(List.of("2 files checked: 0 errors, 0 warnings"), r.outLines());
+    }
+
+    @Test
+    void warningsFailOnlyWhenAskedTo() {
+        String model = Cli.INPUTS.resolve("warnings-only.rsaml").toString();
+        Cli.Result byDefault = Cli.run("validate", model);
+        assertEquals(0, byDefault.code(), byDefault::toString);
+        assertTrue(byDefault.out().contains(":6:5: warning RSA-11: Module 'odometry' has a delay of 15.0 ms"), byDefault::toString);
+        assertTrue(byDefault.out().endsWith("1 file checked: 0 errors, 1 warning\n"), byDefault::toString);
+
+        Cli.Result strict = Cli.run("validate", "--fail-on", "warning", model);
+        assertEquals(1, strict.code(), strict::toString);
+
+        Cli.Result never = Cli.run("validate", "--fail-on", "never", "examples/exp2-defects.rsaml");
+        assertEquals(0, never.code(), never::toString);
+        assertEquals(EXP2_FINDINGS.size() + 1, never.outLines().size(), never::toString);
+    }
+
+    @Test
+    void quietPrintsErrorsOnlyWithoutSummary() {
+        Cli.Result warnings = Cli.run("validate", "--quiet", Cli.INPUTS.resolve("warnings-only.rsaml").toString());
+        assertEquals(0, warnings.code());
+        assertEquals("", warnings.out(), warnings::toString);
+
+        Cli.Result errors = Cli.run("validate", "-q", "examples/exp2-defects.rsaml");
+        assertEquals(1, errors.code());
+        assertEquals(EXP2_FINDINGS, errors.outLines());
+    }
+
+    @Test
+    void relativeNamesAreKeptAsTheUserWroteThem() {
+        Cli.Result r = Cli.runIn(Cli.ROOT.resolve("examples"), "validate", ".");
+        assertEquals(1, r.code(), r::toString);
+        assertTrue(r.out().startsWith("exp2-defects.rsaml:13:1: error RSA-01"), r::toString);
+
+        Cli.Result spaced = Cli.runIn(Cli.INPUTS, "validate", "dir with space");
+        assertEquals(0, spaced.code(), spaced::toString);
+        assertEquals(List.of("1 file checked: 0 errors, 0 warnings"), spaced.outLines());
+    }
+
+    @Test
+    void aFileNamedTwiceIsValidatedOnce() {
+        Cli.Result r = Cli.run("validate", "examples/exp2-defects.rsaml", "examples", "./examples/exp2-defects.rsaml");
+        assertEquals(1, r.code());
+        assertEquals(EXP2_FINDINGS.size() + 1, r.outLines().size(), r::toString);
+        assertTrue(r.out().contains("5 files checked"), r::toString);
+    }
+
+    @Test
+    void usageErrorsExitTwoWithAHint() {
+        for (String[] args : List.of(new String[] { "validate" }, new String[] { "validate", "--format", "pdf", "examples" },
+                new String[] { "validate", "--fail-on", "sometimes", "examples" }, new String[] { "frobnicate" },
+                new String[] { "validate", "--no-such-option", "examples" }, new String[] {},
+                new String[] { "validate", "--output", "report.unknown", "examples" })) {
+            Cli.Result r = Cli.run(args);
+            assertEquals(2, r.code(), () -> String.join(" ", args) + "\n" + r);
+            assertTrue(r.err().startsWith("rsaml: "), () -> String.join(" ", args) + "\n" + r);
+            assertTrue(r.err().contains("--help"), () -> String.join(" ", args) + "\n" + r);
+            assertFalse(r.err().contains("\tat "), r::toString);
+            assertEquals("", r.out(), r::toString);
+        }
+    }
+}
