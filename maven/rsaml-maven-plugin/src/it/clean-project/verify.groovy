@@ -1,0 +1,13 @@
+// A clean project passes, reports are written, the excluded draft is not read.
+def log = new File(basedir, 'build.log').text
+assert log.contains('BUILD SUCCESS')
+assert log.contains('RsaML: 1 file checked: 0 errors, 0 warnings; reports in target')
+assert !log.contains('unfinished.rsaml')
+def sarif = new groovy.json.JsonSlurper().parse(new File(basedir, 'target/rsaml/rsaml.sarif'))
+assert sarif.version == '2.1.0'
+assert sarif.runs[0].results.isEmpty()
+assert sarif.runs[0].tool.driver.rules.size() == 19
+def junit = new groovy.xml.XmlSlurper().parse(new File(basedir, 'target/rsaml/TEST-rsaml.xml'))
+assert junit.@tests.text() == '19'
+assert junit.@failures.text() == '0'
+return true

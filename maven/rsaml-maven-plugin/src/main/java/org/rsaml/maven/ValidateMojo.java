@@ -1,0 +1,186 @@
+package org.rsaml.maven;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+
+import org.apache.maven.plugin.AbstractMojo;
+import org.apache.maven.plugin.MojoExecutionException;
+import org.apache.maven.plugin.MojoFailureException;
+import org.apache.maven.plugin.logging.Log;
+import org.apache.maven.plugins.annotations.LifecyclePhase;
+import org.apache.maven.plugins.annotations.Mojo;
+import org.apache.maven.plugins.annotations.Parameter;
+import org.codehaus.plexus.util.DirectoryScanner;
+import org.rsaml.cli.Validation;
+import org.rsaml.cli.report.FileResult;
+import org.rsaml.cli.report.ReportFiles;
+import org.rsaml.cli.report.ReportFormat;
+import org.rsaml.cli.report.ReportOptions;
+import org.rsaml.cli.report.ValidationReport;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.Severity;
+
+/**
+ * Validates the project's RsaML models against every RsaML rule. Findings appear in the build log
+ * in compiler style ({@code file:line:column: error RSA-08: ...}), reports are written under
+ * {@code target/rsaml/}, and the build fails on findings at or above {@code failOn} and on models
+ * that cannot be read.
+ */
+@Mojo(name = "validate", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
+public class ValidateMojo extends AbstractMojo {
+
+    /** The directory searched for models. */
+    @Parameter(property = "rsaml.modelDirectory", defaultValue = "${project.basedir}")
+    File modelDirectory;
+
+    /** Ant-style patterns, relative to {@code modelDirectory}, of the models to validate. */
+    @Parameter
+    List<String> includes = new ArrayList<>(List.of("**/*.rsaml"));
+
+    /** Ant-style patterns of files to leave out; the build output folder is always left out. */
+    @Parameter
+    List<String> excludes = new ArrayList<>();
+
+    /** Lowest severity that fails the build: {@code error}, {@code warning} or {@code never}. */
+    @Parameter(property = "rsaml.failOn", defaultValue = "error")
+    String failOn;
+
+    /** Report files to write under {@code reportDirectory}: any of {@code sarif}, {@code junit}, {@code json}, {@code text}. */
+    @Parameter(property = "rsaml.formats", defaultValue = "sarif,junit")
+    List<String> formats;
+
+    /** Where reports are written: {@code rsaml.sarif}, {@code TEST-rsaml.xml}, {@code rsaml.json}, {@code rsaml.txt}. */
+    @Parameter(property = "rsaml.reportDirectory", defaultValue = "${project.build.directory}/rsaml")
+    File reportDirectory;
+
+    /** Skips validation. */
+    @Parameter(property = "rsaml.skip", defaultValue = "false")
+    boolean skip;
+
+    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
+    File baseDirectory;
+
+    @Parameter(defaultValue = "${project.build.directory}", readonly = true, required = true)
+    File buildDirectory;
+
+    @Parameter(defaultValue = "${plugin.version}", readonly = true)
+    String pluginVersion;
+
+    @Override
+    public void execute() throws MojoExecutionException, MojoFailureException {
+        Log log = getLog();
+        if (skip) {
+            log.info("Skipping RsaML validation (rsaml.skip)");
+            return;
+        }
+        Severity threshold = threshold();
+        List<ReportFormat> reportFormats = reportFormats();
+        if (!modelDirectory.isDirectory()) {
+            throw new MojoFailureException("RsaML model directory " + modelDirectory + " does not exist");
+        }
+        List<Path> models = scan();
+        if (models.isEmpty()) {
+            log.warn("No RsaML models in " + relative(modelDirectory.toPath()) + " matching " + includes);
+            return;
+        }
+
+        Path base = baseDirectory.toPath();
+        ValidationReport report = Validation.run(base, models, threshold);
+        for (FileResult result : report.results()) {
+            if (!result.readable()) {
+                log.error(result.error().toString());
+            }
+            for (Finding finding : result.findings()) {
+                switch (finding.severity()) {
+                    case ERROR -> log.error(finding.toString());
+                    case WARNING -> log.warn(finding.toString());
+                    case INFO -> log.info(finding.toString());
+                }
+            }
+        }
+        ReportOptions options = new ReportOptions(pluginVersion, base, false);
+        for (ReportFormat format : reportFormats) {
+            Path file = reportDirectory.toPath().resolve(fileName(format));
+            try {
+                ReportFiles.write(file, format, report, options);
+            } catch (IOException e) {
+                throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": " + e.getMessage(), e);
+            }
+        }
+        log.info("RsaML: " + report.summary() + (reportFormats.isEmpty() ? "" : "; reports in " + relative(reportDirectory.toPath())));
+
+        if (report.unreadable() > 0) {
+            throw new MojoFailureException("RsaML could not read " + report.unreadable() + " model file"
+                    + (report.unreadable() == 1 ? "" : "s") + "; see the errors above");
+        }
+        if (report.hasFailingFindings()) {
+            throw new MojoFailureException("RsaML validation failed: " + report.summary() + " (failOn: " + failOn + ")");
+        }
+    }
+
+    private List<Path> scan() {
+        DirectoryScanner scanner = new DirectoryScanner();
+        scanner.setBasedir(modelDirectory);
+        scanner.setIncludes(includes.toArray(String[]::new));
+        List<String> allExcludes = new ArrayList<>(excludes);
+        Path build = buildDirectory.toPath().toAbsolutePath().normalize();
+        Path models = modelDirectory.toPath().toAbsolutePath().normalize();
+        if (build.startsWith(models) && !build.equals(models)) {
+            allExcludes.add(models.relativize(build).toString().replace('\\', '/') + "/**");
+        }
+        scanner.setExcludes(allExcludes.toArray(String[]::new));
+        scanner.addDefaultExcludes();
+        scanner.scan();
+        String[] found = scanner.getIncludedFiles();
+        Arrays.sort(found);
+        Path base = baseDirectory.toPath().toAbsolutePath().normalize();
+        List<Path> paths = new ArrayList<>();
+        for (String file : found) {
+            Path absolute = models.resolve(file);
+            paths.add(absolute.startsWith(base) ? base.relativize(absolute) : absolute);
+        }
+        return paths;
+    }
+
+    private Severity threshold() throws MojoExecutionException {
+        return switch (failOn.trim().toLowerCase(Locale.ROOT)) {
+            case "error" -> Severity.ERROR;
+            case "warning" -> Severity.WARNING;
+            case "never" -> null;
+            default -> throw new MojoExecutionException("failOn must be error, warning or never, not '" + failOn + "'");
+        };
+    }
+
+    private List<ReportFormat> reportFormats() throws MojoExecutionException {
+        List<ReportFormat> result = new ArrayList<>();
+        for (String name : formats == null ? List.<String>of() : formats) {
+            if (name.isBlank()) {
+                continue;
+            }
+            try {
+                result.add(ReportFormat.parse(name));
+            } catch (IllegalArgumentException e) {
+                throw new MojoExecutionException("formats: " + e.getMessage());
+            }
+        }
+        return result;
+    }
+
+    static String fileName(ReportFormat format) {
+        return switch (format) {
+            case JUNIT -> "TEST-rsaml.xml";
+            default -> "rsaml." + format.extension();
+        };
+    }
+
+    private String relative(Path path) {
+        Path base = baseDirectory.toPath().toAbsolutePath().normalize();
+        Path p = path.toAbsolutePath().normalize();
+        return p.startsWith(base) && !p.equals(base) ? base.relativize(p).toString() : p.toString();
+    }
+}
