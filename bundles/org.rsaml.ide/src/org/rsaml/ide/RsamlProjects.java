@@ -1,0 +1,65 @@
+package org.rsaml.ide;
+
+import java.util.Arrays;
+import java.util.Locale;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.resources.IProjectDescription;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.core.runtime.IProgressMonitor;
+
+/**
+ * Turns RsaML workspace validation on and off for a project. A project with the RsaML nature has
+ * the RsaML builder, which validates its {@code .rsaml} files and reports findings as
+ * {@link RsamlMarkers#PROBLEM} markers.
+ */
+public final class RsamlProjects {
+
+    public static final String NATURE_ID = "org.rsaml.ide.rsamlNature";
+    public static final String BUILDER_ID = "org.rsaml.ide.rsamlBuilder";
+    public static final String FILE_EXTENSION = "rsaml";
+
+    private RsamlProjects() {
+    }
+
+    /** Whether {@code project} is open and has the RsaML nature. */
+    public static boolean hasNature(IProject project) {
+        try {
+            return project.isAccessible() && project.hasNature(NATURE_ID);
+        } catch (CoreException e) {
+            return false; // closed or deleted meanwhile: it has no nature we can use
+        }
+    }
+
+    /** Adds the RsaML nature (and so its builder) to an open project; does nothing if it is there. */
+    public static void addNature(IProject project, IProgressMonitor monitor) throws CoreException {
+        if (hasNature(project)) {
+            return;
+        }
+        IProjectDescription description = project.getDescription();
+        String[] natures = description.getNatureIds();
+        String[] more = Arrays.copyOf(natures, natures.length + 1);
+        more[natures.length] = NATURE_ID;
+        description.setNatureIds(more);
+        project.setDescription(description, monitor);
+    }
+
+    /** Removes the RsaML nature, its builder and every RsaML problem marker of the project. */
+    public static void removeNature(IProject project, IProgressMonitor monitor) throws CoreException {
+        if (!hasNature(project)) {
+            return;
+        }
+        IProjectDescription description = project.getDescription();
+        description.setNatureIds(Arrays.stream(description.getNatureIds()).filter(id -> !NATURE_ID.equals(id))
+                .toArray(String[]::new));
+        project.setDescription(description, monitor);
+    }
+
+    /** Whether {@code resource} is an RsaML model file, judged by its extension. */
+    public static boolean isModelFile(IResource resource) {
+        return resource instanceof IFile && resource.getFileExtension() != null
+                && resource.getFileExtension().toLowerCase(Locale.ROOT).equals(FILE_EXTENSION);
+    }
+}

@@ -1,0 +1,21 @@
+package org.rsaml.ide.tests;
+
+import java.nio.file.Path;
+
+/** Where the repository's files are, for tests running inside OSGi. */
+final class Paths {
+    private Paths() {
+    }
+
+    static Path root() {
+        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+    }
+
+    static Path example(String name) {
+        return root().resolve("examples").resolve(name);
+    }
+
+    static Path resource(String name) {
+        return root().resolve("tests/org.rsaml.ide.tests/resources").resolve(name);
+    }
+}

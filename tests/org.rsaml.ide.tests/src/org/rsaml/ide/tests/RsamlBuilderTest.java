@@ -1,0 +1,264 @@
+package org.rsaml.ide.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IFolder;
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.resources.IWorkspace;
+import org.eclipse.core.resources.IWorkspaceDescription;
+import org.eclipse.core.resources.IncrementalProjectBuilder;
+import org.eclipse.core.resources.ResourcesPlugin;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.core.runtime.IPath;
+import org.eclipse.emf.ecore.EObject;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestInfo;
+import org.rsaml.ide.RsamlMarkers;
+import org.rsaml.ide.RsamlProjects;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoader;
+
+/** What a user sees in the Problems view once a project has the RsaML nature, in a real workspace. */
+class RsamlBuilderTest {
+
+    private static final IWorkspace WORKSPACE = ResourcesPlugin.getWorkspace();
+
+    /** Experiment 2's five defects as (rule, line, severity). */
+    private static final List<String> EXPERIMENT_TWO = List.of("RSA-01 line 13 error", "RSA-02 line 96 error",
+            "RSA-04 line 30 error", "RSA-07 line 70 error", "RSA-08 line 50 error");
+
+    private IProject project;
+
+    @BeforeAll
+    static void buildOnlyWhenAsked() throws CoreException {
+        IWorkspaceDescription description = WORKSPACE.getDescription();
+        description.setAutoBuilding(false);
+        WORKSPACE.setDescription(description);
+    }
+
+    @AfterAll
+    static void saveWorkspace() throws CoreException {
+        WORKSPACE.save(true, null);
+    }
+
+    @BeforeEach
+    void createProject(TestInfo test) throws CoreException {
+        project = WORKSPACE.getRoot().getProject(test.getTestMethod().orElseThrow().getName());
+        project.create(null);
+        project.open(null);
+    }
+
+    @AfterEach
+    void deleteProject() throws CoreException {
+        project.delete(true, true, null);
+    }
+
+    @Test
+    void experimentTwoShowsItsFiveDefectsAndAFixedDefectDisappears() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile file = copy(Paths.example("exp2-defects.rsaml"), "models/exp2-defects.rsaml");
+        IFile other = copy(Paths.example("exp2-defects.rsaml"), "other/exp2-copy.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+
+        assertEquals(EXPERIMENT_TWO, summaries(file));
+        IMarker budget = marker(file, "RSA-08");
+        assertEquals("RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms",
+                budget.getAttribute(IMarker.MESSAGE));
+        assertEquals("hybridMobileRobotWithDefects/control/resourceChecker", budget.getAttribute(RsamlMarkers.QUALIFIED_NAME));
+        assertEquals(IMarker.SEVERITY_ERROR, budget.getAttribute(IMarker.SEVERITY, -1));
+        assertTrue(budget.isSubtypeOf(IMarker.PROBLEM) && budget.isSubtypeOf(IMarker.TEXT), "a problem marker with a line");
+
+        // Each marker leads to its element, as an EMF editor would resolve it.
+        LoadedModel model = ModelLoader.load(file.getLocation().toPath(), "exp2");
+        for (IMarker marker : markers(file)) {
+            String fragment = (String) marker.getAttribute(RsamlMarkers.URI_FRAGMENT);
+            assertTrue(fragment != null && !fragment.isEmpty(), "no uriFragment on " + marker.getAttributes());
+            assertEquals("platform:/resource/" + project.getName() + "/models/exp2-defects.rsaml#" + fragment,
+                    marker.getAttribute(RsamlMarkers.URI));
+            EObject element = model.resource().getEObject(fragment);
+            assertEquals(marker.getAttribute(RsamlMarkers.QUALIFIED_NAME), RsamlLabels.qualifiedName(element), fragment);
+        }
+
+        // Fix defect 4: resourceChecker within its layer's 2.0 ms budget.
+        List<Long> otherIds = ids(other);
+        String text = Files.readString(file.getLocation().toPath());
+        String fixed = Arrays.stream(text.split("\n", -1))
+                .map(l -> l.contains("name=\"resourceChecker\"") ? l.replace("execDuration=\"2.5\"", "execDuration=\"1.8\"") : l)
+                .collect(Collectors.joining("\n"));
+        assertNotEquals(text, fixed);
+        file.setContents(new ByteArrayInputStream(fixed.getBytes(StandardCharsets.UTF_8)), IResource.FORCE, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+
+        assertEquals(EXPERIMENT_TWO.subList(0, 4), summaries(file));
+        assertEquals(EXPERIMENT_TWO, summaries(other));
+        assertEquals(otherIds, ids(other), "an unchanged file is not validated again");
+    }
+
+    @Test
+    void aMalformedFileGetsOneErrorAtTheFaultyLineUntilItIsRepaired() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile file = copy(Paths.resource("models/malformed-unclosed-layer.rsaml"), "broken.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+
+        assertEquals(List.of("RSA-00 line 7 error"), summaries(file));
+        String message = (String) markers(file).get(0).getAttribute(IMarker.MESSAGE);
+        assertTrue(message.startsWith("RSA-00: malformed XML: ") && message.contains("layers"), message);
+
+        file.setContents(Files.newInputStream(Paths.example("exp1-hybrid.rsaml")), IResource.FORCE, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        assertEquals(List.of(), summaries(file));
+    }
+
+    @Test
+    void deletedAndRenamedModelsLoseTheirMarkers() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile deleted = copy(Paths.example("exp2-defects.rsaml"), "a.rsaml");
+        IFile renamed = copy(Paths.example("exp2-defects.rsaml"), "b.rsaml");
+        IFile kept = copy(Paths.example("exp2-defects.rsaml"), "c.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(15, markers(project).size());
+
+        deleted.delete(true, null);
+        renamed.move(IPath.fromOSString("b.txt"), true, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+
+        assertEquals(List.of(), summaries(project.getFile("b.txt")));
+        assertEquals(EXPERIMENT_TWO, summaries(kept));
+        assertEquals(5, markers(project).size());
+
+        project.getFile("b.txt").move(IPath.fromOSString("d.rsaml"), true, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        assertEquals(EXPERIMENT_TWO, summaries(project.getFile("d.rsaml")));
+    }
+
+    @Test
+    void aCleanExampleGetsNoMarker() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile clean = copy(Paths.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
+        IFile defective = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+
+        assertEquals(List.of(), summaries(clean));
+        assertEquals(EXPERIMENT_TWO, summaries(defective), "the builder ran");
+    }
+
+    @Test
+    void otherFilesAndDerivedCopiesAreIgnored() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile model = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        IFile xml = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.xml");
+        IFile text = copy(Paths.resource("models/malformed-unclosed-layer.rsaml"), "notes.txt");
+        IFolder bin = project.getFolder("bin");
+        bin.create(true, true, null);
+        bin.setDerived(true, null);
+        IFile derived = copy(Paths.example("exp2-defects.rsaml"), "bin/exp2-defects.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+
+        assertEquals(EXPERIMENT_TWO, summaries(model), "the builder ran");
+        assertEquals(List.of(), summaries(xml));
+        assertEquals(List.of(), summaries(text));
+        assertEquals(List.of(), summaries(derived));
+
+        derived.setContents(Files.newInputStream(Paths.resource("models/malformed-unclosed-layer.rsaml")), IResource.FORCE, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        assertEquals(List.of(), summaries(derived));
+    }
+
+    @Test
+    void onlyProjectsWithTheNatureAreValidated() throws Exception {
+        IFile file = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertFalse(RsamlProjects.hasNature(project));
+        assertEquals(List.of(), summaries(project));
+
+        RsamlProjects.addNature(project, null);
+        assertTrue(RsamlProjects.hasNature(project));
+        assertEquals(List.of(RsamlProjects.BUILDER_ID), builders());
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(EXPERIMENT_TWO, summaries(file));
+
+        RsamlProjects.removeNature(project, null);
+        assertFalse(RsamlProjects.hasNature(project));
+        assertEquals(List.of(), builders());
+        assertEquals(List.of(), summaries(project));
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(List.of(), summaries(project));
+    }
+
+    @Test
+    void cleaningTheProjectRemovesTheMarkersAndAFullBuildRestoresThem() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile file = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(EXPERIMENT_TWO, summaries(file));
+
+        project.build(IncrementalProjectBuilder.CLEAN_BUILD, null);
+        assertEquals(List.of(), summaries(file));
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(EXPERIMENT_TWO, summaries(file));
+    }
+
+    private IFile copy(Path source, String workspacePath) throws Exception {
+        IFile file = project.getFile(workspacePath);
+        if (file.getParent() instanceof IFolder folder && !folder.exists()) {
+            createFolders(folder);
+        }
+        file.create(Files.newInputStream(source), true, null);
+        return file;
+    }
+
+    private static void createFolders(IFolder folder) throws CoreException {
+        if (folder.getParent() instanceof IFolder parent && !parent.exists()) {
+            createFolders(parent);
+        }
+        folder.create(true, true, null);
+    }
+
+    private List<String> builders() throws CoreException {
+        return Arrays.stream(project.getDescription().getBuildSpec()).map(c -> c.getBuilderName()).collect(Collectors.toList());
+    }
+
+    private static List<IMarker> markers(IResource resource) throws CoreException {
+        return Arrays.stream(resource.findMarkers(RsamlMarkers.PROBLEM, true, IResource.DEPTH_INFINITE))
+                .sorted(Comparator.comparing(m -> m.getAttribute(RsamlMarkers.RULE_ID, ""))).collect(Collectors.toList());
+    }
+
+    private static IMarker marker(IResource resource, String ruleId) throws CoreException {
+        return markers(resource).stream().filter(m -> ruleId.equals(m.getAttribute(RsamlMarkers.RULE_ID, ""))).findFirst()
+                .orElseThrow(() -> new AssertionError("no " + ruleId + " marker on " + resource));
+    }
+
+    /** "RSA-08 line 50 error" per marker, sorted by rule id. */
+    private static List<String> summaries(IResource resource) throws CoreException {
+        Map<Integer, String> severities = Map.of(IMarker.SEVERITY_ERROR, "error", IMarker.SEVERITY_WARNING, "warning",
+                IMarker.SEVERITY_INFO, "info");
+        return markers(resource).stream().map(m -> m.getAttribute(RsamlMarkers.RULE_ID, "?") + " line "
+                + m.getAttribute(IMarker.LINE_NUMBER, -1) + " " + severities.get(m.getAttribute(IMarker.SEVERITY, -1)))
+                .collect(Collectors.toList());
+    }
+
+    private static List<Long> ids(IResource resource) throws CoreException {
+        return markers(resource).stream().map(IMarker::getId).sorted().collect(Collectors.toList());
+    }
+}
