@@ -50,7 +50,7 @@ public final class ModelLoader {
 
     /** Loads {@code path}, reporting it as {@code displayName} in messages. */
     public static LoadedModel load(Path path, String displayName) throws ModelLoadException {
-        RsamlValidationSetup.init();
+        RsamlValidationSetup.registerPackage();
         byte[] bytes = readChecked(path, displayName);
         ResourceSet resourceSet = new ResourceSetImpl();
         resourceSet.getPackageRegistry().put(RsamlPackage.eNS_URI, RsamlPackage.eINSTANCE);

@@ -25,6 +25,40 @@ public final class RsamlValidationSetup {
         rules();
     }
 
+    /**
+     * Starts {@link #init()} on a daemon thread and returns at once, so that parsing the rules
+     * overlaps with whatever the caller does next (reading models); {@link #init()} and
+     * {@link #rules()} wait for it. A broken rule is still reported by the next {@link #init()}.
+     */
+    public static void initInBackground() {
+        if (rules != null) {
+            return;
+        }
+        // EMF's package registry is not thread-safe: make every registration the parse would
+        // make here, on the caller's thread, so the parser thread only reads the registry.
+        registerPackage();
+        OclRules.registerPackages();
+        Thread thread = new Thread(() -> {
+            try {
+                init();
+            } catch (RuntimeException e) {
+                // reported again, to the caller, by the next init()
+            }
+        }, "rsaml-rules");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /** Registers the RsaML package and the {@code .rsaml} resource factory: all that reading a model needs. */
+    public static synchronized void registerPackage() {
+        if (EPackage.Registry.INSTANCE.get(RsamlPackage.eNS_URI) == RsamlPackage.eINSTANCE
+                && Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().containsKey("rsaml")) {
+            return;
+        }
+        EPackage.Registry.INSTANCE.put(RsamlPackage.eNS_URI, RsamlPackage.eINSTANCE);
+        Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("rsaml", new RsamlResourceFactoryImpl());
+    }
+
     /** The parsed invariants of rsaml.ecore. */
     public static OclRules rules() {
         OclRules r = rules;
@@ -33,8 +67,7 @@ public final class RsamlValidationSetup {
         }
         synchronized (RsamlValidationSetup.class) {
             if (rules == null) {
-                EPackage.Registry.INSTANCE.put(RsamlPackage.eNS_URI, RsamlPackage.eINSTANCE);
-                Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("rsaml", new RsamlResourceFactoryImpl());
+                registerPackage();
                 OclRules parsed = new OclRules(RsamlPackage.eINSTANCE);
                 if (!parsed.problems().isEmpty()) {
                     throw new RuleDefinitionException(parsed.problems());

@@ -59,6 +59,12 @@ public final class OclRules {
         }
     }
 
+    /** Registers classic OCL's own packages (the Ecore binding and the standard library) in EMF's registry. */
+    public static void registerPackages() {
+        org.eclipse.ocl.ecore.EcorePackage.eINSTANCE.getNsURI();
+        org.eclipse.ocl.ecore.internal.OCLStandardLibraryImpl.INSTANCE.getClass();
+    }
+
     /** One line per constraint that has no body or does not parse; empty when all are usable. */
     public List<String> problems() {
         return List.copyOf(problems);

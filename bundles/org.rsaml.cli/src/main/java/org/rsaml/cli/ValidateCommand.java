@@ -15,6 +15,7 @@ import org.rsaml.cli.report.ReportFiles;
 import org.rsaml.cli.report.ReportFormat;
 import org.rsaml.cli.report.ReportOptions;
 import org.rsaml.cli.report.ValidationReport;
+import org.rsaml.validation.RsamlValidationSetup;
 import org.rsaml.validation.Severity;
 
 import picocli.CommandLine;
@@ -66,6 +67,8 @@ final class ValidateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        // Parsing the rules takes longer than reading a few models: let the two overlap.
+        RsamlValidationSetup.initInBackground();
         Map<Path, ReportFormat> files = reportFiles();
         Severity threshold = switch (failOn) {
             case error -> Severity.ERROR;
