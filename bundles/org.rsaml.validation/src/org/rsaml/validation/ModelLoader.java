@@ -11,6 +11,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
+import java.util.List;
 import java.util.Map;
 
 import javax.xml.XMLConstants;
@@ -205,9 +206,59 @@ public final class ModelLoader {
     /** The RsaML resource, remembering where the parser met each element. */
     static final class LocatingResource extends RsamlResourceImpl {
         final Map<EObject, Long> elementPositions = new IdentityHashMap<>();
+        /**
+         * Children by their name-keyed fragment segment ({@code @modules[name='m1']}), per container:
+         * EMF resolves such a segment by scanning the siblings, which makes loading quadratic in the
+         * size of a layer. Only lookups use it; a miss falls back to EMF.
+         */
+        private final Map<EObject, Index> childrenBySegment = new IdentityHashMap<>();
+
+        /** A container's children by segment, as of when it held {@code size} children. */
+        private record Index(int size, Map<String, EObject> children) {
+        }
 
         LocatingResource(URI uri) {
             super(uri);
+        }
+
+        @Override
+        protected EObject getEObject(List<String> uriFragmentPath) {
+            int size = uriFragmentPath.size();
+            EObject eObject = getEObjectForURIFragmentRootSegment(size == 0 ? "" : uriFragmentPath.get(0));
+            for (int i = 1; i < size && eObject != null; ++i) {
+                String segment = uriFragmentPath.get(i);
+                EObject container = eObject;
+                Index index = childrenBySegment.get(container);
+                EObject child = index == null ? null : index.children().get(segment);
+                if (child == null && (index == null || index.size() != container.eContents().size())) {
+                    // Children were added since (references resolved while loading): index again.
+                    index = index(container);
+                    childrenBySegment.put(container, index);
+                    child = index.children().get(segment);
+                }
+                eObject = child != null ? child : ((InternalEObject) container).eObjectForURIFragmentSegment(segment);
+            }
+            return eObject;
+        }
+
+        private static Index index(EObject container) {
+            Map<String, EObject> children = new HashMap<>();
+            InternalEObject internal = (InternalEObject) container;
+            List<EObject> contents = container.eContents();
+            for (EObject child : contents) {
+                children.putIfAbsent(internal.eURIFragmentSegment(child.eContainingFeature(), child), child);
+            }
+            return new Index(contents.size(), children);
+        }
+
+        @Override
+        public void doLoad(java.io.InputStream inputStream, Map<?, ?> options) throws IOException {
+            try {
+                super.doLoad(inputStream, options);
+            } finally {
+                // Later edits would make the index stale; it has served its purpose.
+                childrenBySegment.clear();
+            }
         }
 
         @Override
