@@ -3,7 +3,6 @@ package org.rsaml.validation;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -67,6 +66,24 @@ public final class RsamlModelValidator {
         return toFindings(diagnose(List.of(root), new RuleEValidator(RsamlValidationSetup.rules())), null);
     }
 
+    /**
+     * The findings on an element and everything it contains, as an EMF diagnostic for Eclipse's
+     * validation UI (the tree editor's Validate action, Sirius decorations): one child per finding,
+     * whose message is {@code "RSA-08: Module 'checker' takes ..."} and whose data is the element,
+     * the {@link Rule} and the message without the rule id.
+     */
+    public static Diagnostic diagnose(EObject element) {
+        RsamlValidationSetup.init();
+        List<Raised> raised = raised(diagnose(List.of(element), new RuleEValidator(RsamlValidationSetup.rules())));
+        BasicDiagnostic result = new BasicDiagnostic(RuleEValidator.SOURCE, 0,
+                "RsaML rules on " + RsamlLabels.qualifiedName(element), new Object[] { element });
+        for (Raised r : raised) {
+            result.add(new BasicDiagnostic(r.severity().diagnosticSeverity(), RuleEValidator.SOURCE, 0,
+                    r.rule().id() + ": " + r.message(), new Object[] { r.element(), r.rule(), r.message() }));
+        }
+        return result;
+    }
+
     private static Diagnostic diagnose(List<EObject> roots, EValidator validator) {
         EValidator.Registry registry = new EValidatorRegistryImpl(EValidator.Registry.INSTANCE);
         registry.put(RsamlPackage.eINSTANCE, validator);
@@ -91,33 +108,39 @@ public final class RsamlModelValidator {
 
     private static List<Finding> toFindings(Diagnostic chain, LoadedModel model) {
         List<Finding> findings = new ArrayList<>();
-        collect(chain, model, findings);
+        for (Raised r : raised(chain)) {
+            EObject element = r.element();
+            int[] at = model == null ? new int[] { 0, 0 } : model.locate(element);
+            String file = model != null ? model.file()
+                    : element.eResource() == null ? "<memory>" : element.eResource().getURI().toString();
+            findings.add(new Finding(r.rule(), r.severity(), r.message(), RsamlLabels.qualifiedName(element),
+                    element.eResource() == null ? "" : element.eResource().getURIFragment(element), file, at[0], at[1]));
+        }
         findings.sort(ORDER);
         return findings;
     }
 
-    private static void collect(Diagnostic diagnostic, LoadedModel model, List<Finding> out) {
+    /** A problem EMF's diagnostician raised on an element, read as an RsaML rule's finding. */
+    private record Raised(EObject element, Rule rule, Severity severity, String message) {
+    }
+
+    private static List<Raised> raised(Diagnostic chain) {
+        List<Raised> out = new ArrayList<>();
+        collect(chain, out);
+        return out;
+    }
+
+    private static void collect(Diagnostic diagnostic, List<Raised> out) {
         for (Diagnostic child : diagnostic.getChildren()) {
             if (child.getSeverity() != Diagnostic.OK && !child.getData().isEmpty() && child.getData().get(0) instanceof EObject element) {
-                Rule rule;
-                String message;
-                Severity severity;
                 if (RuleEValidator.SOURCE.equals(child.getSource()) && child.getData().size() >= 3) {
-                    rule = (Rule) child.getData().get(1);
-                    message = (String) child.getData().get(2);
-                    severity = severityOf(child.getSeverity());
+                    out.add(new Raised(element, (Rule) child.getData().get(1), severityOf(child.getSeverity()),
+                            (String) child.getData().get(2)));
                 } else {
-                    rule = Rules.STRUCTURE;
-                    message = child.getMessage();
-                    severity = severityOf(child.getSeverity());
+                    out.add(new Raised(element, Rules.STRUCTURE, severityOf(child.getSeverity()), child.getMessage()));
                 }
-                int[] at = model == null ? new int[] { 0, 0 } : model.locate(element);
-                String file = model != null ? model.file()
-                        : element.eResource() == null ? "<memory>" : element.eResource().getURI().toString();
-                out.add(new Finding(rule, severity, message, RsamlLabels.qualifiedName(element),
-                        element.eResource() == null ? "" : element.eResource().getURIFragment(element), file, at[0], at[1]));
             }
-            collect(child, model, out);
+            collect(child, out);
         }
     }
 

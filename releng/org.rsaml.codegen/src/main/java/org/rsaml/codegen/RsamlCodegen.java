@@ -32,7 +32,7 @@ import org.eclipse.emf.ecore.xmi.impl.EcoreResourceFactoryImpl;
 import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
 
 /**
- * Generates RsaML's EMF code from {@code rsaml.ecore} outside Eclipse.
+ * Generates RsaML's EMF code (model, edit and editor) from {@code rsaml.ecore} outside Eclipse.
  *
  * <p>The genmodel is rebuilt from the current .ecore on every run (keeping its settings), so that
  * a change to the metamodel needs nothing but this command. Everything is generated into a scratch
@@ -40,10 +40,14 @@ import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
  */
 public final class RsamlCodegen {
 
-    /** What is generated, per bundle: the folders and files the generator owns. */
+    /**
+     * What is generated, per bundle: the folders and files the generator owns. The edit and editor
+     * bundles' plugin.xml are written by hand, to register RsaML's subclasses of generated classes.
+     */
     static final Map<String, List<String>> GENERATED = new TreeMap<>(Map.of(
             "org.rsaml.model", List.of("src-gen", "plugin.xml", "plugin.properties"),
-            "org.rsaml.model.edit", List.of("src-gen", "plugin.properties")));
+            "org.rsaml.model.edit", List.of("src-gen", "plugin.properties"),
+            "org.rsaml.model.editor", List.of("src-gen", "plugin.properties", "icons")));
 
     static final String MODEL_DIR = "bundles/org.rsaml.model/model/";
 
@@ -146,7 +150,7 @@ public final class RsamlCodegen {
         Generator generator = new Generator();
         generator.setInput(genModel);
         for (String projectType : Arrays.asList(GenBaseGeneratorAdapter.MODEL_PROJECT_TYPE,
-                GenBaseGeneratorAdapter.EDIT_PROJECT_TYPE)) {
+                GenBaseGeneratorAdapter.EDIT_PROJECT_TYPE, GenBaseGeneratorAdapter.EDITOR_PROJECT_TYPE)) {
             Diagnostic result = generator.generate(genModel, projectType, new BasicMonitor());
             if (result.getSeverity() == Diagnostic.ERROR) {
                 throw new IllegalStateException("EMF generation failed: " + result);
@@ -185,7 +189,7 @@ public final class RsamlCodegen {
         }
     }
 
-    private static void copyTree(Path from, Path to) throws IOException {
+    static void copyTree(Path from, Path to) throws IOException {
         try (Stream<Path> files = Files.walk(from)) {
             for (Path f : (Iterable<Path>) files::iterator) {
                 Path target = to.resolve(from.relativize(f).toString());

@@ -9,10 +9,11 @@ import org.junit.jupiter.api.Test;
 
 class GeneratedCodeUpToDateTest {
 
+    static final Path ROOT = Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+
     @Test
     void committedGeneratedCodeMatchesTheEcore() throws Exception {
-        Path root = Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
-        List<String> stale = RsamlCodegen.check(root);
+        List<String> stale = RsamlCodegen.check(ROOT);
         assertEquals(List.of(), stale,
                 "Generated code is out of date with rsaml.ecore. Regenerate it with "
                         + "./mvnw -Pregenerate -pl releng/org.rsaml.codegen process-classes");

@@ -1,0 +1,46 @@
+package org.rsaml.design.services;
+
+import java.util.stream.Collectors;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EObject;
+import org.rsaml.model.Connection;
+import org.rsaml.model.SubsumptionLink;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.RsamlModelValidator;
+
+/**
+ * The Java services of the RsaML viewpoint (rsaml.odesign), called from its AQL expressions:
+ * labels that speak as the tree editor does, and RsaML's findings for the validation rules.
+ */
+public class RsamlServices {
+
+    /** A diagram label: name and timing ("resourceChecker — real-time, 2.5 ms"); a connection shows its data. */
+    public String rsamlLabel(EObject self) {
+        if (self instanceof Connection connection) {
+            return connection.getSource() == null ? "" : RsamlLabels.dataType(connection.getSource());
+        }
+        if (self instanceof SubsumptionLink link && link.getDuration() > 0) {
+            return RsamlLabels.name(link) + ", " + RsamlLabels.duration(link.getDuration(), link);
+        }
+        return RsamlLabels.describe(self);
+    }
+
+    /** The errors RsaML's rules find on this element itself, one per line ("RSA-08: ..."); empty when none. */
+    public String rsamlErrors(EObject self) {
+        return findings(self, Diagnostic.ERROR);
+    }
+
+    /** The warnings RsaML's rules find on this element itself, one per line; empty when none. */
+    public String rsamlWarnings(EObject self) {
+        return findings(self, Diagnostic.WARNING);
+    }
+
+    /** The element's own findings: those on contained elements are shown on them. */
+    private static String findings(EObject self, int severity) {
+        return RsamlModelValidator.diagnose(self).getChildren().stream()
+                .filter(d -> d.getSeverity() == severity && d.getData().get(0) == self)
+                .map(Diagnostic::getMessage)
+                .collect(Collectors.joining("\n"));
+    }
+}

@@ -1,0 +1,29 @@
+package org.rsaml.model.editor.presentation.spec;
+
+import java.util.Collection;
+import java.util.List;
+
+import org.eclipse.emf.ecore.EObject;
+import org.rsaml.model.support.ArchitectureSkeleton;
+import org.rsaml.model.editor.presentation.RsamlModelWizard;
+
+/**
+ * The new-model wizard: an RsaML file always holds one architecture, and it starts as the three-layer
+ * skeleton of {@link ArchitectureSkeleton}, named after the file, so that it validates from the start.
+ */
+public class RsamlModelWizardSpec extends RsamlModelWizard {
+
+    /** The only root the language admits (ModelLoader rejects any other). */
+    @Override
+    protected Collection<String> getInitialObjectNames() {
+        if (initialObjectNames == null) {
+            initialObjectNames = List.of(rsamlPackage.getArchitecture().getName());
+        }
+        return initialObjectNames;
+    }
+
+    @Override
+    protected EObject createInitialModel() {
+        return ArchitectureSkeleton.create(getModelFile().getFullPath().removeFileExtension().lastSegment());
+    }
+}

@@ -1,0 +1,61 @@
+package org.rsaml.validation.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EObject;
+import org.junit.jupiter.api.Test;
+import org.rsaml.model.Layer;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Rule;
+
+/** What Eclipse shows for a model (the tree editor's Validate action, Sirius's decorations): RsaML's findings, rule id first. */
+class DiagnoseTest {
+
+    @Test
+    void everyFindingBecomesAChildDiagnosticNamedByItsRule() throws Exception {
+        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        Diagnostic diagnostic = RsamlModelValidator.diagnose(model.architecture());
+
+        assertEquals(Diagnostic.ERROR, diagnostic.getSeverity());
+        List<Finding> findings = RsamlModelValidator.validate(model);
+        assertEquals(findings.stream().map(f -> f.ruleId() + ": " + f.message()).sorted().collect(Collectors.toList()),
+                diagnostic.getChildren().stream().map(Diagnostic::getMessage).sorted().collect(Collectors.toList()));
+
+        Diagnostic budget = diagnostic.getChildren().stream().filter(d -> d.getMessage().startsWith("RSA-08: ")).findFirst()
+                .orElseThrow();
+        assertEquals("RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.getMessage());
+        assertSame(model.resource().getEObject("//@layers[name='control']/@modules[name='resourceChecker']"),
+                budget.getData().get(0), "the finding's element comes first, for markers and selection");
+        assertEquals("RSA-08", ((Rule) budget.getData().get(1)).id());
+    }
+
+    @Test
+    void anElementIsDiagnosedWithWhatItContainsOnly() throws Exception {
+        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        Layer control = model.architecture().getLayers().stream().filter(l -> l.getName().equals("control"))
+                .findFirst().orElseThrow();
+        List<String> messages = messages(RsamlModelValidator.diagnose(control));
+        assertEquals(List.of("RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms"),
+                messages, "RSA-01 of the architecture and the other layers' findings are not the control layer's");
+    }
+
+    @Test
+    void aCleanModelIsOk() throws Exception {
+        EObject root = ModelLoader.load(Paths.example("exp1-hybrid.rsaml"), "exp1.rsaml").architecture();
+        Diagnostic diagnostic = RsamlModelValidator.diagnose(root);
+        assertEquals(Diagnostic.OK, diagnostic.getSeverity(), messages(diagnostic).toString());
+        assertEquals(List.of(root), diagnostic.getData());
+    }
+
+    private static List<String> messages(Diagnostic diagnostic) {
+        return diagnostic.getChildren().stream().map(Diagnostic::getMessage).collect(Collectors.toList());
+    }
+}

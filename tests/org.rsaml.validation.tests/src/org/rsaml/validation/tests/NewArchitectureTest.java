@@ -1,0 +1,30 @@
+package org.rsaml.validation.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.junit.jupiter.api.Test;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.support.ArchitectureSkeleton;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+
+/** The architecture the new-model wizard creates: three layers with budgets, and not a single finding. */
+class NewArchitectureTest {
+
+    @Test
+    void newArchitectureHasThreeBudgetedLayersAndNoFinding() {
+        Architecture architecture = ArchitectureSkeleton.create("rover");
+
+        assertEquals("rover", architecture.getName());
+        assertEquals(List.of("deliberative level 2 100.0 ms", "executive level 1 10.0 ms", "functional level 0 1.0 ms"),
+                architecture.getLayers().stream()
+                        .map(l -> l.getName() + " level " + l.getLevel() + " " + l.getMaxExecTime() + " " + l.getTimeUnit())
+                        .collect(Collectors.toList()));
+        assertEquals(3, architecture.getDeclaredLayers());
+        assertEquals(List.of(), RsamlModelValidator.validate(architecture).stream().map(Finding::toString)
+                .collect(Collectors.toList()));
+    }
+}
