@@ -73,7 +73,7 @@ class Ros2Test {
         // The launch file: compiles, and starts exactly the modules, each in its layer's namespace.
         Path launch = root.resolve("launch/" + pkg + ".launch.py");
         Tools.ok(out, 60, "python3", "-m", "py_compile", launch.toString());
-        String nodes = Tools.ok(out, 60, "python3", "-c", "import importlib.util, sys\nsys.path.insert(0, sys.argv[2])\n"
+        String nodes = Tools.ok(out, 60, "python3", "-c", "import importlib.util, sys\nsys.dont_write_bytecode = True\nsys.path.insert(0, sys.argv[2])\n"
                 + "spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)\n"
                 + "for n in m.generate_launch_description().entities: print(n.package, n.executable, n.namespace, n.name)",
                 launch.toString(), Tools.resource("ros2-stubs/python").toString());
