@@ -21,8 +21,8 @@ import picocli.CommandLine.ScopeType;
  * Exit codes: 0 clean, 1 findings at or above {@code --fail-on}, 2 usage or input error.
  */
 @Command(name = "rsaml", mixinStandardHelpOptions = true, versionProvider = RsamlCli.Version.class,
-        description = "Checks robot software architectures written in RsaML (.rsaml files).",
-        subcommands = { ValidateCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
+        description = "Checks robot software architectures written in RsaML (.rsaml files) and generates their code skeletons.",
+        subcommands = { ValidateCommand.class, GenerateCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:clean: no finding at or above --fail-on",
                 "1:findings at or above --fail-on",
@@ -46,7 +46,7 @@ public final class RsamlCli implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a command is required (validate, rules, help)");
+        throw new CommandLine.ParameterException(spec.commandLine(), "a command is required (validate, generate, rules, help)");
     }
 
     public static void main(String[] args) {

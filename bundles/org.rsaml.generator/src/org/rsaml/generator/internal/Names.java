@@ -1,0 +1,228 @@
+package org.rsaml.generator.internal;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+
+/**
+ * Turns model names, which may hold any text, into names that are safe as C++ and Python
+ * identifiers, ROS names and file names: ASCII letters, digits and single underscores, never a
+ * reserved word, never a path. Uniqueness is the job of {@link NameScope}.
+ */
+public final class Names {
+
+    private Names() {
+    }
+
+    /** C++17 keywords and alternative tokens, and names the generated code or common headers take. */
+    static final Set<String> CPP_RESERVED = Set.of("alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand",
+            "bitor", "bool", "break", "case", "catch", "char", "char8_t", "char16_t", "char32_t", "class", "compl",
+            "concept", "const", "consteval", "constexpr", "constinit", "const_cast", "continue", "co_await",
+            "co_return", "co_yield", "decltype", "default", "delete", "do", "double", "dynamic_cast", "else", "enum",
+            "explicit", "export", "extern", "false", "float", "for", "friend", "goto", "if", "inline", "int", "long",
+            "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or", "or_eq",
+            "private", "protected", "public", "register", "reinterpret_cast", "requires", "return", "short",
+            "signed", "sizeof", "static", "static_assert", "static_cast", "struct", "switch", "template", "this",
+            "thread_local", "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using",
+            "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq", "final", "override", "import",
+            "module",
+            // Macros of the C library and of GCC's GNU modes, and namespaces the generated code uses.
+            "NULL", "EOF", "assert", "errno", "stdin", "stdout", "stderr", "linux", "unix", "i386", "main", "std",
+            "rsaml", "rclcpp", "msg");
+
+    /** Python keywords and soft keywords (launch files). */
+    static final Set<String> PYTHON_RESERVED = Set.of("False", "None", "True", "and", "as", "assert", "async",
+            "await", "break", "class", "continue", "def", "del", "elif", "else", "except", "finally", "for", "from",
+            "global", "if", "import", "in", "is", "lambda", "nonlocal", "not", "or", "pass", "raise", "return", "try",
+            "while", "with", "yield", "match", "case", "type");
+
+    /** Device names Windows refuses as file names, whatever the extension. */
+    private static final Set<String> WINDOWS_DEVICES = Set.of("con", "prn", "aux", "nul", "com1", "com2", "com3",
+            "com4", "com5", "com6", "com7", "com8", "com9", "lpt1", "lpt2", "lpt3", "lpt4", "lpt5", "lpt6", "lpt7",
+            "lpt8", "lpt9");
+
+    /**
+     * The name as an identifier: every character outside {@code [A-Za-z0-9_]} (path separators,
+     * dots, spaces, non-ASCII letters) becomes an underscore, runs of underscores collapse (C++
+     * reserves {@code __}), leading and trailing underscores go (C++ reserves {@code _X}), a leading
+     * digit gets an {@code n} before it, and a reserved word gets an underscore after it.
+     */
+    public static String identifier(String raw) {
+        String s = collapse(raw);
+        if (s.isEmpty()) {
+            s = "unnamed";
+        }
+        if (Character.isDigit(s.charAt(0))) {
+            s = "n" + s;
+        }
+        return reserved(s) ? s + "_" : s;
+    }
+
+    /**
+     * As {@link #identifier(String)} but keeping reserved words: for names that only ever appear
+     * after a prefix ({@code in_class}, {@code release_switch}), where they are safe, and where an
+     * added underscore would make a reserved {@code __} in composed names.
+     */
+    public static String stem(String raw) {
+        String s = collapse(raw);
+        if (s.isEmpty()) {
+            return "unnamed";
+        }
+        return Character.isDigit(s.charAt(0)) ? "n" + s : s;
+    }
+
+    /** {@code taskInterpreter} to {@code TaskInterpreter}: for class and message type names. */
+    public static String pascal(String raw) {
+        StringBuilder out = new StringBuilder();
+        for (String word : words(raw)) {
+            out.append(Character.toUpperCase(word.charAt(0))).append(word, 1, word.length());
+        }
+        String s = out.length() == 0 ? "Unnamed" : out.toString();
+        if (Character.isDigit(s.charAt(0))) {
+            s = "N" + s;
+        }
+        return reserved(s) ? s + "_" : s;
+    }
+
+    /** {@code eMoveSP} to {@code e_move_sp}: for ROS package, node, executable and topic names. */
+    public static String snake(String raw) {
+        List<String> words = words(raw);
+        String s = words.isEmpty() ? "unnamed" : String.join("_", words).toLowerCase(Locale.ROOT);
+        if (Character.isDigit(s.charAt(0))) {
+            s = "n" + s;
+        }
+        return reserved(s) ? s + "_" : s;
+    }
+
+    /** Whether a name may not be used as it is in generated code or as a file name. */
+    public static boolean reserved(String s) {
+        return CPP_RESERVED.contains(s) || PYTHON_RESERVED.contains(s)
+                || WINDOWS_DEVICES.contains(s.toLowerCase(Locale.ROOT));
+    }
+
+    /**
+     * The header name rosidl derives from a message type name: {@code Pose2D} to {@code pose2_d},
+     * {@code MotionInstruction} to {@code motion_instruction} (rosidl's own two rules).
+     */
+    public static String rosidlHeaderStem(String typeName) {
+        String s = typeName.replaceAll("(.)([A-Z][a-z]+)", "$1_$2");
+        s = s.replaceAll("([a-z0-9])([A-Z])", "$1_$2");
+        return s.toLowerCase(Locale.ROOT);
+    }
+
+    /** The words of a name, split at underscores and at lower-to-upper case changes. */
+    static List<String> words(String raw) {
+        List<String> words = new ArrayList<>();
+        for (String part : collapse(raw).split("_")) {
+            if (part.isEmpty()) {
+                continue;
+            }
+            int start = 0;
+            for (int i = 1; i < part.length(); i++) {
+                char prev = part.charAt(i - 1);
+                char c = part.charAt(i);
+                boolean lowerToUpper = (Character.isLowerCase(prev) || Character.isDigit(prev)) && Character.isUpperCase(c);
+                boolean acronymEnd = Character.isUpperCase(prev) && Character.isUpperCase(c) && i + 1 < part.length()
+                        && Character.isLowerCase(part.charAt(i + 1));
+                if (lowerToUpper || acronymEnd) {
+                    words.add(part.substring(start, i));
+                    start = i;
+                }
+            }
+            words.add(part.substring(start));
+        }
+        return words;
+    }
+
+    private static String collapse(String raw) {
+        if (raw == null) {
+            return "";
+        }
+        StringBuilder out = new StringBuilder(raw.length());
+        for (int i = 0; i < raw.length(); i++) {
+            char c = raw.charAt(i);
+            boolean ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+            if (ok) {
+                out.append(c);
+            } else if (out.length() > 0 && out.charAt(out.length() - 1) != '_') {
+                out.append('_');
+            }
+        }
+        int end = out.length();
+        while (end > 0 && out.charAt(end - 1) == '_') {
+            end--;
+        }
+        return out.substring(0, end);
+    }
+
+    /** A string literal for C++: printable ASCII as is, everything else as 3-digit octal escapes. */
+    public static String cppString(String text) {
+        StringBuilder out = new StringBuilder("\"");
+        for (byte b : (text == null ? "" : text).getBytes(java.nio.charset.StandardCharsets.UTF_8)) {
+            int c = b & 0xff;
+            if (c == '"' || c == '\\') {
+                out.append('\\').append((char) c);
+            } else if (c >= 0x20 && c < 0x7f && c != '?') {
+                out.append((char) c);
+            } else {
+                out.append('\\').append((char) ('0' + (c >> 6))).append((char) ('0' + ((c >> 3) & 7))).append((char) ('0' + (c & 7)));
+            }
+        }
+        return out.append('"').toString();
+    }
+
+    /** A string literal for Python, single-quoted, non-ASCII and control characters escaped. */
+    public static String pythonString(String text) {
+        StringBuilder out = new StringBuilder("'");
+        for (int i = 0; i < (text == null ? 0 : text.length()); i++) {
+            char c = text.charAt(i);
+            if (c == '\'' || c == '\\') {
+                out.append('\\').append(c);
+            } else if (c >= 0x20 && c < 0x7f) {
+                out.append(c);
+            } else {
+                out.append(String.format("\\u%04x", (int) c));
+            }
+        }
+        return out.append('\'').toString();
+    }
+
+    /** Text for XML content and attribute values. */
+    public static String xml(String text) {
+        StringBuilder out = new StringBuilder();
+        for (int i = 0; i < (text == null ? 0 : text.length()); i++) {
+            char c = text.charAt(i);
+            switch (c) {
+                case '&' -> out.append("&amp;");
+                case '<' -> out.append("&lt;");
+                case '>' -> out.append("&gt;");
+                case '"' -> out.append("&quot;");
+                case '\'' -> out.append("&apos;");
+                default -> out.append(c < 0x20 && c != '\n' && c != '\t' ? ' ' : c);
+            }
+        }
+        return out.toString();
+    }
+
+    /**
+     * Free text (a description) as the body of one-line comments: one line, no control characters,
+     * no trailing backslash (which would continue a C++ line comment onto the next line), and no
+     * comment terminators.
+     */
+    public static String comment(String text) {
+        if (text == null) {
+            return "";
+        }
+        StringBuilder out = new StringBuilder();
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            out.append(Character.isISOControl(c) ? ' ' : c);
+        }
+        String s = out.toString().replace("*/", "* /").replace("??", "? ?").strip();
+        while (s.endsWith("\\")) {
+            s = s.substring(0, s.length() - 1).strip();
+        }
+        return s;
+    }
+}

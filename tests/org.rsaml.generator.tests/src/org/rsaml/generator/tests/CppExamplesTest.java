@@ -1,0 +1,126 @@
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.generator.GenerationResult;
+import org.rsaml.generator.RsamlGenerator;
+import org.rsaml.generator.Target;
+import org.rsaml.model.Action;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Connection;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.RealTimeElement;
+import org.rsaml.validation.ModelLoader;
+
+/**
+ * Every example that validates without errors becomes a C++ project that builds (warnings as
+ * errors), runs for a bounded time, releases every periodic function and action about as often
+ * as its period says, and carries data along every modeled connection. Expectations come from the
+ * model, not from the generator.
+ */
+class CppExamplesTest {
+
+    static final long RUN_MS = 600;
+
+    static List<String> examples() throws Exception {
+        return Tools.cleanExamples();
+    }
+
+    @ParameterizedTest
+    @MethodSource("examples")
+    void generatedProjectBuildsAndRunsAsModeled(String example, @TempDir Path tmp) throws Exception {
+        Path out = tmp.resolve("project");
+        GenerationResult result = new RsamlGenerator().generate(Tools.example(example), Target.CPP, out, false);
+        assertTrue(result.warnings().isEmpty(), () -> "warnings: " + result.warnings());
+
+        Path exe = Tools.cmakeBuild(out, executableName(out));
+        RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS)));
+        long ranMs = trace.durationMs();
+        assertTrue(ranMs >= RUN_MS && ranMs < RUN_MS + 5000, "ran for " + ranMs + " ms");
+
+        Architecture arch = ModelLoader.load(Tools.example(example), example).architecture();
+        int periodicActions = 0;
+        for (Layer layer : arch.getLayers()) {
+            for (Module module : layer.getModules()) {
+                for (Function f : module.getFunctions()) {
+                    String fn = layer.getName() + "/" + module.getName() + "." + f.getName();
+                    if (periodic(f)) {
+                        assertPlausible(trace, "release " + fn, nanos(f, f.getPeriod()), 0, ranMs);
+                        assertActionsInOrder(trace, f, fn);
+                    }
+                    for (Action a : f.getActions()) {
+                        if (periodic(a)) {
+                            periodicActions++;
+                            long period = nanos(a, a.getPeriod());
+                            assertPlausible(trace, "action " + fn + "." + a.getName(), period, nanos(a, a.getStartDate()) % period, ranMs);
+                        }
+                    }
+                }
+            }
+        }
+        assertTrue(periodicActions > 0 || trace.matching("release ").size() > 0 || arch.getConnections().size() > 0);
+
+        for (Connection c : arch.getConnections()) {
+            String source = name(c.getSource());
+            String target = name(c.getTarget());
+            List<Long> received = trace.received(target, source, false);
+            assertFalse(received.isEmpty(), "no data flowed from " + source + " to " + target + ":\n" + Tools.last(trace.output, 4000));
+            assertTrue(received.size() <= trace.sends(source), "more received at " + target + " than " + source + " sent");
+        }
+    }
+
+    /** Releases happen at offset + k * period: over the run, about that many, at least one. */
+    static void assertPlausible(RunTrace trace, String line, long periodNs, long offsetNs, long ranMs) {
+        long expected = (ranMs * 1_000_000 - offsetNs) / periodNs + 1;
+        long actual = trace.count(line);
+        assertTrue(actual >= Math.max(1, expected / 2) && actual <= expected + 1,
+                "'" + line + "' " + actual + " times in " + ranMs + " ms, expected about " + expected);
+    }
+
+    /** The actions of a periodic function run in their modeled order at each release. */
+    static void assertActionsInOrder(RunTrace trace, Function f, String fn) {
+        List<String> inline = new ArrayList<>();
+        for (Action a : f.getActions()) {
+            if (!periodic(a) || nanos(a, a.getPeriod()) == nanos(f, f.getPeriod())) {
+                inline.add("action " + fn + "." + a.getName());
+            }
+        }
+        List<String> seen = trace.matching("action " + fn + ".").stream().filter(inline::contains).toList();
+        for (int i = 0; i < seen.size(); i++) {
+            assertEquals(inline.get(i % inline.size()), seen.get(i), "action " + (i + 1) + " of " + fn + " out of order");
+        }
+    }
+
+    static boolean periodic(RealTimeElement e) {
+        return e.getExecType() == ExecutionType.PERIODIC && e.getPeriod() > 0;
+    }
+
+    static long nanos(RealTimeElement e, double value) {
+        return Math.round(value * e.getTimeUnit().getValue());
+    }
+
+    static String name(org.rsaml.model.Port p) {
+        return p.getModule().getLayer().getName() + "/" + p.getModule().getName() + "." + p.getName();
+    }
+
+    static String executableName(Path project) throws Exception {
+        Matcher m = Pattern.compile("set\\(RSAML_TARGET (\\w+)\\)").matcher(Files.readString(project.resolve("CMakeLists.txt")));
+        assertTrue(m.find(), "CMakeLists.txt names no target");
+        return m.group(1);
+    }
+}

@@ -1,0 +1,124 @@
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Severity;
+
+/** Where the repository's files are, and how the tests run the tools a user would run. */
+final class Tools {
+    private Tools() {
+    }
+
+    static Path root() {
+        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+    }
+
+    static Path example(String name) {
+        return root().resolve("examples").resolve(name);
+    }
+
+    static Path resource(String name) {
+        return root().resolve("tests/org.rsaml.generator.tests/resources").resolve(name);
+    }
+
+    /** The example models without error findings: the ones generation accepts. */
+    static List<String> cleanExamples() throws IOException, ModelLoadException {
+        List<String> clean = new ArrayList<>();
+        try (Stream<Path> files = Files.list(root().resolve("examples"))) {
+            for (Path p : files.filter(f -> f.toString().endsWith(".rsaml")).sorted().toList()) {
+                List<Finding> findings = RsamlModelValidator.validate(p);
+                if (findings.stream().noneMatch(f -> f.severity() == Severity.ERROR)) {
+                    clean.add(p.getFileName().toString());
+                }
+            }
+        }
+        return clean;
+    }
+
+    record Result(int exit, String output) {
+    }
+
+    /** Runs a command, its output (stdout and stderr) captured, and fails the test when it hangs. */
+    static Result run(Path dir, long timeoutSeconds, String... command) throws IOException, InterruptedException {
+        Path log = Files.createTempFile("rsaml-cmd", ".log");
+        try {
+            Process p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true)
+                    .redirectOutput(log.toFile()).start();
+            if (!p.waitFor(timeoutSeconds, TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+                fail(String.join(" ", command) + " did not finish within " + timeoutSeconds + " s:\n" + tail(log));
+            }
+            return new Result(p.exitValue(), Files.readString(log, StandardCharsets.UTF_8));
+        } finally {
+            Files.deleteIfExists(log);
+        }
+    }
+
+    /** Runs a command that must succeed. */
+    static String ok(Path dir, long timeoutSeconds, String... command) throws IOException, InterruptedException {
+        Result r = run(dir, timeoutSeconds, command);
+        assertEquals(0, r.exit(), () -> String.join(" ", command) + " failed:\n" + last(r.output(), 6000));
+        return r.output();
+    }
+
+    /** Configures and builds a generated C++ project, warnings as errors; returns the executable. */
+    static Path cmakeBuild(Path project, String executable) throws IOException, InterruptedException {
+        ok(project, 300, "cmake", "-S", ".", "-B", "build", "-DCMAKE_BUILD_TYPE=Debug",
+                "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror");
+        ok(project, 600, "cmake", "--build", "build", "-j2");
+        Path exe = project.resolve("build").resolve(executable);
+        if (!Files.isExecutable(exe)) {
+            fail("the build produced no executable " + exe);
+        }
+        return exe;
+    }
+
+    /** Every file under dir, by relative path, with its bytes. */
+    static Map<String, byte[]> snapshot(Path dir) throws IOException {
+        Map<String, byte[]> files = new TreeMap<>();
+        if (!Files.exists(dir)) {
+            return files;
+        }
+        try (Stream<Path> walk = Files.walk(dir)) {
+            for (Path p : walk.filter(Files::isRegularFile).toList()) {
+                files.put(dir.relativize(p).toString().replace('\\', '/'), Files.readAllBytes(p));
+            }
+        }
+        return files;
+    }
+
+    static boolean sameFiles(Map<String, byte[]> a, Map<String, byte[]> b) {
+        if (!a.keySet().equals(b.keySet())) {
+            return false;
+        }
+        return a.entrySet().stream().allMatch(e -> Arrays.equals(e.getValue(), b.get(e.getKey())));
+    }
+
+    private static String tail(Path log) {
+        try {
+            return last(Files.readString(log, StandardCharsets.UTF_8), 3000);
+        } catch (IOException e) {
+            return "";
+        }
+    }
+
+    static String last(String s, int n) {
+        return s.length() <= n ? s : "..." + s.substring(s.length() - n);
+    }
+}
