@@ -53,7 +53,7 @@ class RulesAndHelpTest {
     void helpOnEveryCommand() {
         Cli.Result top = Cli.run("--help");
         assertEquals(0, top.code());
-        for (String expected : List.of("Usage: rsaml", "validate", "rules", "--version", "Exit codes:", "2   usage error")) {
+        for (String expected : List.of("Usage: rsaml", "validate", "generate", "rules", "--version", "Exit codes:", "2   usage error")) {
             assertTrue(top.out().contains(expected), () -> expected + " missing:\n" + top.out());
         }
         Cli.Result validate = Cli.run("validate", "--help");
