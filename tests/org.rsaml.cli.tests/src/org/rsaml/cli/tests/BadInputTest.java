@@ -28,6 +28,7 @@ class BadInputTest {
             "malformed.rsaml        | malformed.rsaml:6:5: error: malformed XML: The element type \"modules\" must be terminated",
             "foreign-namespace.rsaml| foreign-namespace.rsaml:2:128: error: namespace 'http://www.eclipse.org/uml2/5.0.0/UML' is not RsaML's",
             "dangling-reference.rsaml| dangling-reference.rsaml:10:91: error: reference target points to '//@layers[name='functional']/@modules[name='planner']/@ports[name='pose']', which does not exist",
+            "missing-file-reference.rsaml| missing-file-reference.rsaml:10:103: error: reference target points to 'file:",
             "xxe.rsaml              | xxe.rsaml:2:10: error: DOCTYPE declarations are not allowed",
             "entity-bomb.rsaml      | entity-bomb.rsaml:2:10: error: DOCTYPE declarations are not allowed" })
     void oneClearLineAndTheOtherFilesStillValidated(String input, String expected) {
