@@ -32,6 +32,15 @@ class ProcessTest {
     }
 
     @Test
+    void emfMessagesSurviveInTheRunnableJar() throws Exception {
+        // EMF reads its messages from plugin.properties at the jar's root; the runnable jar merges them.
+        Cli.Result r = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate",
+                "tests/org.rsaml.validation.tests/resources/rules/rule-RSA-00-violated.rsaml"));
+        assertEquals(1, r.code(), r::toString);
+        assertTrue(r.out().contains("error RSA-00: The required feature 'target' of 'Connection 'robot/s0 -> <none>'' must be set"), r::toString);
+    }
+
+    @Test
     void launcherAtTheRepositoryRoot() throws Exception {
         assertTrue(Files.isExecutable(Cli.ROOT.resolve("rsaml")), "./rsaml is executable");
         Cli.Result r = Cli.process(Cli.ROOT, List.of("./rsaml", "validate", "examples/"));
