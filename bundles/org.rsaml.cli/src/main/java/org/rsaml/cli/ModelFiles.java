@@ -21,22 +21,10 @@ public final class ModelFiles {
     public static final String EXTENSION = ".rsaml";
 
     /**
-     * The inputs in the order the user named them: model files (without duplicates) and, in their
-     * place, inputs that name nothing usable (missing path, directory without models).
+     * A model file with the name it is reported under, or, with {@code unusable} set, a named path
+     * that gives no model (missing path, directory without models).
      */
-    public record Selection(List<Object> entries) {
-
-        public List<Input> files() {
-            return entries.stream().filter(Input.class::isInstance).map(Input.class::cast).toList();
-        }
-
-        public List<ModelLoadException> errors() {
-            return entries.stream().filter(ModelLoadException.class::isInstance).map(ModelLoadException.class::cast).toList();
-        }
-    }
-
-    /** A model file with the name it is reported under. */
-    public record Input(Path path, String displayName) {
+    public record Input(Path path, String displayName, ModelLoadException unusable) {
     }
 
     private ModelFiles() {
@@ -45,9 +33,10 @@ public final class ModelFiles {
     /**
      * @param base  the directory relative paths are resolved against (the working directory)
      * @param paths files and directories as the user named them
+     * @return the inputs in the order the user named them, model files without duplicates
      */
-    public static Selection select(Path base, List<Path> paths) {
-        List<Object> entries = new ArrayList<>();
+    public static List<Input> select(Path base, List<Path> paths) {
+        List<Input> entries = new ArrayList<>();
         List<Path> seen = new ArrayList<>();
         for (Path named : paths) {
             String shown = display(named);
@@ -57,11 +46,11 @@ public final class ModelFiles {
                 try {
                     found = modelsUnder(path);
                 } catch (IOException | UncheckedIOException e) {
-                    entries.add(new ModelLoadException(shown, "cannot list the directory: " + reason(e)));
+                    entries.add(unusable(shown, "cannot list the directory: " + reason(e)));
                     continue;
                 }
                 if (found.isEmpty()) {
-                    entries.add(new ModelLoadException(shown, "no " + EXTENSION + " files in this directory or below it"));
+                    entries.add(unusable(shown, "no " + EXTENSION + " files in this directory or below it"));
                 }
                 for (Path file : found) {
                     add(entries, seen, file, display(named.resolve(path.relativize(file)).normalize()));
@@ -69,10 +58,10 @@ public final class ModelFiles {
             } else if (Files.exists(path)) {
                 add(entries, seen, path, shown);
             } else {
-                entries.add(new ModelLoadException(shown, "no such file or directory"));
+                entries.add(unusable(shown, "no such file or directory"));
             }
         }
-        return new Selection(List.copyOf(entries));
+        return List.copyOf(entries);
     }
 
     /** The {@code .rsaml} files under a directory, sorted by path; hidden folders are skipped. */
@@ -96,12 +85,16 @@ public final class ModelFiles {
         return false;
     }
 
-    private static void add(List<Object> entries, List<Path> seen, Path file, String shown) {
+    private static void add(List<Input> entries, List<Path> seen, Path file, String shown) {
         Path key = file.toAbsolutePath().normalize();
         if (!seen.contains(key)) {
             seen.add(key);
-            entries.add(new Input(file, shown));
+            entries.add(new Input(file, shown, null));
         }
+    }
+
+    private static Input unusable(String shown, String message) {
+        return new Input(null, shown, new ModelLoadException(shown, message));
     }
 
     /** Forward slashes everywhere, so reports read the same on every platform and in SARIF. */

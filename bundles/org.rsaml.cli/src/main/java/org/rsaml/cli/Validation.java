@@ -22,13 +22,9 @@ public final class Validation {
 
     /** Validates the named files and directories, relative ones resolved against {@code base}. */
     public static ValidationReport run(Path base, List<Path> paths, Severity failOn) {
-        return run(ModelFiles.select(base, paths), failOn);
-    }
-
-    public static ValidationReport run(ModelFiles.Selection selection, Severity failOn) {
         List<FileResult> results = new ArrayList<>();
-        for (Object entry : selection.entries()) {
-            results.add(entry instanceof ModelFiles.Input input ? validate(input) : FileResult.unreadable((ModelLoadException) entry, 0));
+        for (ModelFiles.Input input : ModelFiles.select(base, paths)) {
+            results.add(input.unusable() != null ? FileResult.unreadable(input.unusable(), 0) : validate(input));
         }
         return new ValidationReport(results, failOn);
     }

@@ -88,8 +88,6 @@ public class GenerateMojo extends AbstractMojo {
     }
 
     private String relative(Path path) {
-        Path base = baseDirectory.toPath().toAbsolutePath().normalize();
-        Path p = path.toAbsolutePath().normalize();
-        return (p.startsWith(base) && !p.equals(base) ? base.relativize(p) : p).toString().replace('\\', '/');
+        return ProjectPaths.relative(baseDirectory.toPath(), path);
     }
 }

@@ -179,8 +179,6 @@ public class ValidateMojo extends AbstractMojo {
     }
 
     private String relative(Path path) {
-        Path base = baseDirectory.toPath().toAbsolutePath().normalize();
-        Path p = path.toAbsolutePath().normalize();
-        return p.startsWith(base) && !p.equals(base) ? base.relativize(p).toString() : p.toString();
+        return ProjectPaths.relative(baseDirectory.toPath(), path);
     }
 }
