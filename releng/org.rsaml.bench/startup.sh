@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: EPL-2.0
 # Start-up benchmark of the rsaml command: whole processes, as CI runs them, timed by hyperfine
 # (Debian package hyperfine). Run from anywhere; the jar is built first if it is missing.
 # Usage: releng/org.rsaml.bench/startup.sh [runs]

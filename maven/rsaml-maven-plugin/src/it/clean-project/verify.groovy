@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // A clean project passes, reports are written, the excluded draft is not read.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD SUCCESS')

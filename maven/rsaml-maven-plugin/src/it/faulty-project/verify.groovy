@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // A faulty model fails the build; the log names the rule, the file and the line; reports are still written.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD FAILURE')

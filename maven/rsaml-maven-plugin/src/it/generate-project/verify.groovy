@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // The generate goal writes the C++ project before validation runs; the architect's files exist.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD SUCCESS')

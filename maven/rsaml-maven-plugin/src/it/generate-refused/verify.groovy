@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // A model with errors is refused: the finding is logged, the build fails, nothing is generated.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD FAILURE')

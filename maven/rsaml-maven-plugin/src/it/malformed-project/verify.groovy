@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // A model that cannot be read fails the build with the input error, located, and no stack trace.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD FAILURE')

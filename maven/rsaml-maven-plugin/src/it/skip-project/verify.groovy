@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // rsaml.skip skips validation: the faulty model does not fail the build.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD SUCCESS')

@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // In a Tycho build (eclipse-plugin packaging) the plugin runs in verify and fails on the faulty model.
 def log = new File(basedir, 'build.log').text
 assert log.contains('[ eclipse-plugin ]')

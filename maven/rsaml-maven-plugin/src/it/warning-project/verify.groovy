@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // failOn=warning turns the RSA-11 warning into a failed build; every report format is written.
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD FAILURE')

@@ -1,1 +1,2 @@
+# SPDX-License-Identifier: EPL-2.0
 """Stand-in for ROS 2's launch_ros package (see ../../README.md)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: EPL-2.0
 """Stand-in for launch_ros.actions.Node: keeps the arguments the launch file gives it."""
 
 

@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // Stand-in for std_msgs/msg/Float64 (see ../../../README.md).
 #pragma once
 

@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // Stand-in for std_msgs/msg/String (see ../../../README.md).
 #pragma once
 
