@@ -8,11 +8,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.rsaml.generator.internal.ArchitectureView;
-import org.rsaml.generator.internal.GeneratedFile;
 import org.rsaml.generator.internal.OutputWriter;
-import org.rsaml.generator.internal.cpp.CppGenerator;
-import org.rsaml.generator.internal.ros2.Ros2Generator;
+import org.rsaml.generator.plan.ExecutionPlan;
+import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.generator.spi.GeneratedProject;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
@@ -90,19 +89,17 @@ public final class RsamlGenerator {
         if (target == null || outputDir == null) {
             throw new GenerationException(model.file(), "no " + (target == null ? "target" : "output directory") + " given");
         }
-        ArchitectureView view = new ArchitectureView(model.architecture());
-        List<String> warnings = new ArrayList<>(view.warnings);
-        List<GeneratedFile> files = switch (target) {
-            case CPP -> new CppGenerator(view).files();
-            case ROS2 -> new Ros2Generator(view).files();
-        };
-        if (target == Target.ROS2) {
-            for (List<ArchitectureView.ModuleView> cycle : view.reactiveCycles()) {
-                warnings.add("modules " + String.join(" -> ", cycle.stream().map(m -> m.qualifiedName).toList())
-                        + " react to each other's data in a cycle: in ROS 2 each message goes round again; make one of them periodic or sporadic");
-            }
+        ExecutionPlan plan;
+        try {
+            plan = ExecutionPlan.of(model.architecture());
+        } catch (UnplannableException e) {
+            int[] at = e.element() == null ? new int[] { 0, 0 } : model.locate(e.element());
+            throw new GenerationException(model.file(), at[0], at[1], "no code generated: " + e.getMessage(), e);
         }
-        OutputWriter.Outcome outcome = OutputWriter.write(outputDir, files, target.id());
+        GeneratedProject project = target.generator().generate(plan);
+        List<String> warnings = new ArrayList<>(plan.warnings());
+        warnings.addAll(project.warnings());
+        OutputWriter.Outcome outcome = OutputWriter.write(outputDir, project.files(), target.id());
         warnings.addAll(outcome.warnings);
         Path dir = outputDir.toAbsolutePath().normalize();
         return new GenerationResult(target, dir, paths(outcome.written), paths(outcome.unchanged), paths(outcome.preserved),

@@ -4,26 +4,77 @@
  */
 package org.rsaml.generator;
 
-import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.Locale;
-import java.util.stream.Collectors;
+import java.util.Map;
+import java.util.regex.Pattern;
 
-/** What {@link RsamlGenerator} produces from an architecture. */
-public enum Target {
+import org.rsaml.generator.internal.cpp.CppTarget;
+import org.rsaml.generator.internal.ros2.Ros2Target;
+import org.rsaml.generator.spi.TargetGenerator;
+
+/**
+ * What {@link RsamlGenerator} produces from an architecture: {@link #CPP}, {@link #ROS2}, or a
+ * target added with {@link #register(TargetGenerator)}.
+ */
+public final class Target {
+
+    private static final Pattern ID = Pattern.compile("[a-z][a-z0-9-]*");
+    private static final Map<String, Target> REGISTRY = new LinkedHashMap<>();
+
     /** A CMake C++17 project that builds and runs on its own (threads, timers, a trace of the run). */
-    CPP("cpp"),
+    public static final Target CPP = register(new CppTarget());
     /** ament_cmake packages for ROS 2 (rclcpp): a node per module, topics, a launch file. */
-    ROS2("ros2");
+    public static final Target ROS2 = register(new Ros2Target());
 
-    private final String id;
+    private final TargetGenerator generator;
 
-    Target(String id) {
-        this.id = id;
+    private Target(TargetGenerator generator) {
+        this.generator = generator;
+    }
+
+    /**
+     * Makes a target available by its id ({@link #parse(String)}, {@link #values()}).
+     *
+     * @throws IllegalArgumentException the id is malformed or already taken
+     */
+    public static synchronized Target register(TargetGenerator generator) {
+        String id = generator.id();
+        if (id == null || !ID.matcher(id).matches()) {
+            throw new IllegalArgumentException("a target id is lower-case letters, digits and dashes, not '" + id + "'");
+        }
+        if (REGISTRY.containsKey(id)) {
+            throw new IllegalArgumentException("target '" + id + "' is already registered");
+        }
+        Target t = new Target(generator);
+        REGISTRY.put(id, t);
+        return t;
+    }
+
+    /** Removes a target added with {@link #register(TargetGenerator)}; the built-in ones stay. */
+    public static synchronized void unregister(Target target) {
+        if (target != CPP && target != ROS2) {
+            REGISTRY.remove(target.id(), target);
+        }
+    }
+
+    /** Every available target, built-in ones first. */
+    public static synchronized Target[] values() {
+        return REGISTRY.values().toArray(new Target[0]);
     }
 
     /** The name users type: {@code cpp} or {@code ros2}. */
     public String id() {
-        return id;
+        return generator.id();
+    }
+
+    /** One line saying what the target produces. */
+    public String description() {
+        return generator.description();
+    }
+
+    TargetGenerator generator() {
+        return generator;
     }
 
     /**
@@ -31,19 +82,17 @@ public enum Target {
      *
      * @throws IllegalArgumentException naming the targets there are
      */
-    public static Target parse(String name) {
+    public static synchronized Target parse(String name) {
         String wanted = name == null ? "" : name.strip().toLowerCase(Locale.ROOT);
-        for (Target t : values()) {
-            if (t.id.equals(wanted)) {
-                return t;
-            }
+        Target t = REGISTRY.get(wanted);
+        if (t == null) {
+            throw new IllegalArgumentException("unknown target '" + name + "'; the targets are " + String.join(", ", REGISTRY.keySet()));
         }
-        throw new IllegalArgumentException("unknown target '" + name + "'; the targets are "
-                + Arrays.stream(values()).map(Target::id).collect(Collectors.joining(", ")));
+        return t;
     }
 
     @Override
     public String toString() {
-        return id;
+        return id();
     }
 }

@@ -116,7 +116,7 @@ public final class Names {
     }
 
     /** The words of a name, split at underscores and at lower-to-upper case changes. */
-    static List<String> words(String raw) {
+    public static List<String> words(String raw) {
         List<String> words = new ArrayList<>();
         for (String part : collapse(raw).split("_")) {
             if (part.isEmpty()) {

@@ -18,15 +18,19 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
 
 /** The same model gives the same bytes, wherever and however often it is generated. */
 class DeterminismTest {
 
+    static Target[] targets() {
+        return new Target[] { Target.CPP, Target.ROS2 };
+    }
+
     @ParameterizedTest
-    @EnumSource(Target.class)
+    @MethodSource("targets")
     void twoRunsGiveByteIdenticalProjects(Target target, @TempDir Path tmp) throws Exception {
         Path model = Files.copy(Tools.example("subsumption-brooks.rsaml"), tmp.resolve("model.rsaml"));
         new RsamlGenerator().generate(model, target, tmp.resolve("a"), false);
@@ -43,7 +47,7 @@ class DeterminismTest {
     }
 
     @ParameterizedTest
-    @EnumSource(Target.class)
+    @MethodSource("targets")
     void regeneratingTouchesNoFile(Target target, @TempDir Path tmp) throws Exception {
         Path out = tmp.resolve("out");
         new RsamlGenerator().generate(Tools.example("hierarchical-nasrem.rsaml"), target, out, false);

@@ -1,0 +1,335 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+#include "rsaml/runtime.hpp"
+
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <pthread.h>
+#include <sched.h>
+#define RSAML_HAS_PTHREAD 1
+#endif
+
+namespace rsaml {
+
+namespace {
+
+std::mutex trace_mutex;
+std::atomic<bool> trace_enabled{true};
+Clock::time_point trace_start = Clock::now();
+thread_local Activation* current_activation = nullptr;
+volatile std::sig_atomic_t interrupted = 0;
+
+void on_signal(int) { interrupted = 1; }
+
+void usage(std::FILE* out, const char* program) {
+  std::fprintf(out,
+               "Usage: %s [--run-for-ms N] [--quiet] [--no-realtime]\n"
+               "  --run-for-ms N  stop after N milliseconds (default: run until interrupted)\n"
+               "  --quiet         no trace of releases and data flow\n"
+               "  --no-realtime   do not ask for real-time priorities\n",
+               program);
+}
+
+/** Real-time priority for a release thread where the platform allows it; false when not permitted. */
+bool apply_priority(std::thread& thread, Policy policy, int rank) {
+#ifdef RSAML_HAS_PTHREAD
+  const int posix = policy == Policy::RoundRobin ? SCHED_RR : SCHED_FIFO;
+  const int low = sched_get_priority_min(posix);
+  const int high = sched_get_priority_max(posix);
+  if (low < 0 || high < low) {
+    return false;
+  }
+  sched_param param{};
+  param.sched_priority = std::min(low + rank, high);
+  return pthread_setschedparam(thread.native_handle(), posix, &param) == 0;
+#else
+  (void)thread;
+  (void)policy;
+  (void)rank;
+  return false;
+#endif
+}
+
+}  // namespace
+
+Options parse_options(int argc, char** argv, const char* program) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--run-for-ms" && i + 1 < argc) {
+      char* end = nullptr;
+      const long long value = std::strtoll(argv[++i], &end, 10);
+      if (end == argv[i] || *end != '\0' || value < 0) {
+        std::fprintf(stderr, "%s: --run-for-ms needs a number of milliseconds, not '%s'\n", program, argv[i]);
+        options.exit = true;
+        options.status = 2;
+        return options;
+      }
+      options.run_for_ms = value;
+    } else if (arg == "--quiet") {
+      options.trace = false;
+    } else if (arg == "--no-realtime") {
+      options.realtime = false;
+    } else if (arg == "--help" || arg == "-h") {
+      usage(stdout, program);
+      options.exit = true;
+      return options;
+    } else {
+      std::fprintf(stderr, "%s: unknown argument '%s'\n", program, arg.c_str());
+      usage(stderr, program);
+      options.exit = true;
+      options.status = 2;
+      return options;
+    }
+  }
+  return options;
+}
+
+void Trace::configure(bool enabled, Clock::time_point start) {
+  std::lock_guard<std::mutex> lock(trace_mutex);
+  trace_enabled = enabled;
+  trace_start = start;
+}
+
+bool Trace::enabled() { return trace_enabled; }
+
+void Trace::line(const std::string& text) {
+  std::lock_guard<std::mutex> lock(trace_mutex);
+  if (!trace_enabled) {
+    return;
+  }
+  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - trace_start).count();
+  std::fprintf(stdout, "[%10.3f ms] %s\n", ms, text.c_str());
+}
+
+void Trace::flush() {
+  std::lock_guard<std::mutex> lock(trace_mutex);
+  std::fflush(stdout);
+}
+
+Link::Link(std::string name, Nanos duration)
+    : name_(std::move(name)), duration_(duration), until_(std::numeric_limits<Clock::rep>::min()) {}
+
+void Link::trigger() { until_.store((Clock::now() + duration_).time_since_epoch().count()); }
+
+bool Link::active() const { return Clock::now().time_since_epoch().count() < until_.load(); }
+
+Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
+    : module(module), wave(wave), timed(timed), release(release), lock(module.mutex_), previous_(current_activation) {
+  current_activation = this;
+}
+
+Activation::~Activation() { current_activation = previous_; }
+
+Activation* Activation::current() { return current_activation; }
+
+Module::Module(System& system, std::string name) : system_(system), name_(std::move(name)) {}
+
+Module::~Module() { stop_worker(); }
+
+void Module::post(std::uint64_t wave, std::function<void()> work) {
+  {
+    std::lock_guard<std::mutex> lock(mail_mutex_);
+    if (stopping_) {
+      return;
+    }
+    mail_.push_back(Mail{wave, std::move(work)});
+  }
+  mail_cv_.notify_one();
+}
+
+void Module::start_worker() {
+  if (!worker_.joinable()) {
+    worker_ = std::thread([this] { run_worker(); });
+  }
+}
+
+void Module::stop_worker() {
+  {
+    std::lock_guard<std::mutex> lock(mail_mutex_);
+    stopping_ = true;
+  }
+  mail_cv_.notify_all();
+  if (worker_.joinable()) {
+    worker_.join();
+  }
+}
+
+void Module::run_worker() {
+  for (;;) {
+    Mail mail;
+    {
+      std::unique_lock<std::mutex> lock(mail_mutex_);
+      mail_cv_.wait(lock, [this] { return stopping_ || !mail_.empty(); });
+      if (stopping_) {
+        return;
+      }
+      mail = std::move(mail_.front());
+      mail_.pop_front();
+    }
+    Activation activation(*this, mail.wave, false, Clock::now());
+    mail.work();
+  }
+}
+
+void Module::start_step(std::uint64_t wave) {
+  Activation activation(*this, wave, false, Clock::now());
+  waves_.insert(wave);
+  trace("start " + name_);
+  on_start();
+  publish_outputs();
+}
+
+void Module::timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body) {
+  Activation activation(*this, system_.new_wave(), true, release);
+  waves_.insert(activation.wave);
+  trace("release " + label);
+  body();
+}
+
+void Module::run_action(const char* label, Nanos offset, const std::function<void()>& body) {
+  Activation* activation = Activation::current();
+  if (activation && activation->timed && offset.count() > 0) {
+    // Other activations of this module may run while this one waits for the action's start date.
+    activation->lock.unlock();
+    const bool go_on = system_.sleep_until(activation->release + offset);
+    activation->lock.lock();
+    if (!go_on) {
+      return;
+    }
+  }
+  trace("action " + name_ + "." + label);
+  body();
+}
+
+bool Module::begin_reaction(Nanos min_interval) {
+  Activation* activation = Activation::current();
+  if (activation) {
+    if (!waves_.insert(activation->wave).second) {
+      return false;
+    }
+    while (waves_.size() > 1024) {
+      waves_.erase(waves_.begin());
+    }
+  }
+  const Clock::time_point now = Clock::now();
+  if (min_interval.count() > 0 && reacted_ && now - last_reaction_ < min_interval) {
+    return false;
+  }
+  reacted_ = true;
+  last_reaction_ = now;
+  trace("react " + name_);
+  return true;
+}
+
+bool Module::due(Clock::time_point& last, Nanos min_interval) {
+  const Clock::time_point now = Clock::now();
+  if (last != Clock::time_point{} && now - last < min_interval) {
+    return false;
+  }
+  last = now;
+  return true;
+}
+
+void Module::trace(const std::string& text) const {
+  if (Trace::enabled()) {
+    Trace::line(text);
+  }
+}
+
+System::System(std::string name) : name_(std::move(name)) {}
+
+System::~System() {
+  stopping_ = true;
+  stop_cv_.notify_all();
+  for (auto& release : releases_) {
+    if (release->thread.joinable()) {
+      release->thread.join();
+    }
+  }
+}
+
+void System::add(Module& module) { modules_.push_back(&module); }
+
+void System::every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
+                   std::function<void()> body) {
+  releases_.push_back(std::unique_ptr<Release>(
+      new Release{&module, std::move(label), period, offset, policy, rank, std::move(body), std::thread()}));
+}
+
+bool System::sleep_until(Clock::time_point t) {
+  std::unique_lock<std::mutex> lock(stop_mutex_);
+  return !stop_cv_.wait_until(lock, t, [this] { return stopping_.load(); });
+}
+
+void System::run_release(Release& release, Clock::time_point start) {
+  // Releases stay on the grid start + offset + k * period, however long one of them takes.
+  Clock::time_point next = start + release.offset;
+  while (sleep_until(next)) {
+    release.module->timed_release(release.label, next, release.body);
+    next += release.period;
+  }
+}
+
+int System::run(const Options& options) {
+  const Clock::time_point start = Clock::now();
+  Trace::configure(options.trace, start);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  Trace::line("run " + name_ +
+              (options.run_for_ms >= 0 ? " for " + std::to_string(options.run_for_ms) + " ms" : std::string(" until interrupted")));
+  // Every module sends its initial outputs before any reacts: the start is one wave.
+  const std::uint64_t start_wave = new_wave();
+  for (Module* module : modules_) {
+    module->start_step(start_wave);
+  }
+  for (Module* module : modules_) {
+    module->start_worker();
+  }
+  for (auto& release : releases_) {
+    Release* r = release.get();
+    r->thread = std::thread([this, r, start] { run_release(*r, start); });
+    if (options.realtime && apply_priority(r->thread, r->policy, r->rank)) {
+      Trace::line("sched " + r->label + (r->policy == Policy::RoundRobin ? " SCHED_RR" : " SCHED_FIFO") + " rank " +
+                  std::to_string(r->rank));
+    } else {
+      Trace::line("sched " + r->label + " default");
+    }
+  }
+  const Clock::time_point deadline =
+      options.run_for_ms >= 0 ? start + std::chrono::milliseconds(options.run_for_ms) : Clock::time_point::max();
+  while (!interrupted) {
+    const Clock::time_point now = Clock::now();
+    if (now >= deadline) {
+      break;
+    }
+    std::unique_lock<std::mutex> lock(stop_mutex_);
+    stop_cv_.wait_until(lock, std::min(deadline, now + std::chrono::milliseconds(20)));
+  }
+  {
+    std::lock_guard<std::mutex> lock(stop_mutex_);
+    stopping_ = true;
+  }
+  stop_cv_.notify_all();
+  for (auto& release : releases_) {
+    if (release->thread.joinable()) {
+      release->thread.join();
+    }
+  }
+  for (Module* module : modules_) {
+    module->stop_worker();
+  }
+  const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+  Trace::line("stop after " + std::to_string(ms) + " ms");
+  Trace::flush();
+  return 0;
+}
+
+}  // namespace rsaml

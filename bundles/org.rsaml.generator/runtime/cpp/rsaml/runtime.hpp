@@ -1,0 +1,319 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// RsaML's runtime for generated architectures: timed releases, data flow between modules,
+// inhibitors and suppressors, and a trace of the run on standard output.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace rsaml {
+
+using Clock = std::chrono::steady_clock;
+using Nanos = std::chrono::nanoseconds;
+
+/** The command line of a generated program. */
+struct Options {
+  long long run_for_ms = -1;  // negative: until interrupted (Ctrl-C, SIGTERM)
+  bool trace = true;
+  bool realtime = true;
+  bool exit = false;  // --help or a bad argument: exit with status
+  int status = 0;
+};
+
+Options parse_options(int argc, char** argv, const char* program);
+
+/** One line per event on standard output, after the milliseconds since the start of the run. */
+class Trace {
+ public:
+  static void configure(bool enabled, Clock::time_point start);
+  static bool enabled();
+  static void line(const std::string& text);
+  static void flush();
+};
+
+/** POSIX scheduling policy of a timed release. */
+enum class Policy { Fifo, RoundRobin };
+
+class System;
+class Module;
+
+/**
+ * An inhibitor or a suppressor: active for its duration after each message on its trigger port.
+ * Links are shared between threads, so their state is a single atomic time.
+ */
+class Link {
+ public:
+  Link(std::string name, Nanos duration);
+  const std::string& name() const { return name_; }
+  void trigger();
+  bool active() const;
+
+ private:
+  std::string name_;
+  Nanos duration_;
+  std::atomic<Clock::rep> until_;
+};
+
+/**
+ * The work a module is doing, on the current thread: the module's lock is held, and data sent
+ * belongs to the activation's wave (a timed release or the start starts a wave; data carries it on,
+ * and a module reacts at most once per wave, so cycles of reacting modules end).
+ */
+class Activation {
+ public:
+  Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release);
+  ~Activation();
+  Activation(const Activation&) = delete;
+  Activation& operator=(const Activation&) = delete;
+  static Activation* current();
+
+  Module& module;
+  const std::uint64_t wave;
+  const bool timed;
+  const Clock::time_point release;
+  std::unique_lock<std::recursive_mutex> lock;
+
+ private:
+  Activation* previous_;
+};
+
+/** The base of every generated module class. */
+class Module {
+ public:
+  Module(System& system, std::string name);
+  virtual ~Module();
+  Module(const Module&) = delete;
+  Module& operator=(const Module&) = delete;
+
+  /** layer/module, as in the model. */
+  const std::string& name() const { return name_; }
+  System& system() { return system_; }
+
+  // Used by the runtime and the generated code.
+  void post(std::uint64_t wave, std::function<void()> work);
+  void start_worker();
+  void stop_worker();
+  void start_step(std::uint64_t wave);
+  void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body);
+
+ protected:
+  /** Called once when the run starts, lowest layer first, before the outputs are first sent. */
+  virtual void on_start() {}
+  /** Sends every output port's value; called after each activation. */
+  virtual void publish_outputs() {}
+  /** Runs an action; in a timed release, first waits until the action's offset in the period. */
+  void run_action(const char* label, Nanos offset, const std::function<void()>& body);
+  /** Whether data arriving now starts a reaction: once per wave, and not sooner than min_interval. */
+  bool begin_reaction(Nanos min_interval);
+  /** Whether a sporadic function may run again (and, if so, notes that it runs now). */
+  static bool due(Clock::time_point& last, Nanos min_interval);
+  /** Adds a line to the run's trace. */
+  void trace(const std::string& text) const;
+
+ private:
+  friend class Activation;
+  struct Mail {
+    std::uint64_t wave;
+    std::function<void()> work;
+  };
+  void run_worker();
+
+  System& system_;
+  std::string name_;
+  std::recursive_mutex mutex_;
+  std::mutex mail_mutex_;
+  std::condition_variable mail_cv_;
+  std::deque<Mail> mail_;
+  bool stopping_ = false;
+  std::thread worker_;
+  std::set<std::uint64_t> waves_;
+  Clock::time_point last_reaction_{};
+  bool reacted_ = false;
+};
+
+template <class T>
+class Input;
+
+/** An output port: set value, and publish_outputs() sends it; or send() at once. */
+template <class T>
+class Output {
+ public:
+  Output(Module& owner, const std::string& port) : owner_(owner), name_(owner.name() + "." + port) {}
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+
+  /** The value publish_outputs() sends. */
+  T value{};
+
+  void send() { send(value); }
+  void send(const T& data);
+
+  const std::string& name() const { return name_; }
+  /** How many messages this port has sent (inhibited ones included). */
+  std::uint64_t sent() const { return sequence_.load(); }
+
+  // Wiring, by the generated architecture before the run starts.
+  void connect(Input<T>& target) { routes_.push_back(Route{&target, nullptr}); }
+  void inhibited_by(Link& link) { inhibitors_.push_back(&link); }
+  void triggers(Link& link) { triggers_.push_back(&link); }
+  /** A suppressor triggered by this port, whose messages replace the target's input. */
+  void triggers(Link& link, Input<T>& replaced) {
+    triggers_.push_back(&link);
+    routes_.push_back(Route{&replaced, &link});
+  }
+
+ private:
+  struct Route {
+    Input<T>* target;
+    Link* replacing;
+  };
+  Module& owner_;
+  std::string name_;
+  std::vector<Route> routes_;
+  std::vector<Link*> inhibitors_;
+  std::vector<Link*> triggers_;
+  std::atomic<std::uint64_t> sequence_{0};
+};
+
+/** An entry port: the latest value received, delivered on the owning module's thread. */
+template <class T>
+class Input {
+ public:
+  using Handler = std::function<void(const T&)>;
+  Input(Module& owner, const std::string& port, Handler handler)
+      : owner_(owner), name_(owner.name() + "." + port), handler_(std::move(handler)) {}
+  Input(const Input&) = delete;
+  Input& operator=(const Input&) = delete;
+
+  /** The latest value received (a default value before the first). */
+  const T& value() const { return value_; }
+  /** How many values have arrived. */
+  std::uint64_t received() const { return received_; }
+  const std::string& name() const { return name_; }
+
+  void suppressed_by(Link& link) { suppressors_.push_back(&link); }
+  Link* active_suppressor() const {
+    for (Link* link : suppressors_) {
+      if (link->active()) {
+        return link;
+      }
+    }
+    return nullptr;
+  }
+
+  void deliver(const T& data, const std::string* from, std::uint64_t sequence, std::uint64_t wave, Link* replacing) {
+    owner_.post(wave, [this, data, from, sequence, replacing] {
+      value_ = data;
+      ++received_;
+      if (Trace::enabled()) {
+        Trace::line("recv " + name_ + " <- " + *from + " #" + std::to_string(sequence) +
+                    (replacing ? " by " + replacing->name() : std::string()));
+      }
+      handler_(value_);
+    });
+  }
+
+ private:
+  Module& owner_;
+  std::string name_;
+  Handler handler_;
+  std::vector<Link*> suppressors_;
+  T value_{};
+  std::uint64_t received_ = 0;
+};
+
+/** The running architecture: its modules, their timed releases, the start and the stop. */
+class System {
+ public:
+  explicit System(std::string name);
+  ~System();
+  System(const System&) = delete;
+  System& operator=(const System&) = delete;
+
+  /** Registers a module; start steps run in registration order. */
+  void add(Module& module);
+  /**
+   * Releases body every period from the start of the run plus offset, on a thread of its own
+   * with the given policy and rank (1 is the lowest real-time priority).
+   */
+  void every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
+             std::function<void()> body);
+  /** Runs until options.run_for_ms have passed or the process is interrupted; returns the exit status. */
+  int run(const Options& options);
+
+  /** Sleeps until t; false when the run is stopping. */
+  bool sleep_until(Clock::time_point t);
+  bool stopping() const { return stopping_.load(); }
+  std::uint64_t new_wave() { return waves_.fetch_add(1) + 1; }
+
+ private:
+  struct Release {
+    Module* module;
+    std::string label;
+    Nanos period;
+    Nanos offset;
+    Policy policy;
+    int rank;
+    std::function<void()> body;
+    std::thread thread;
+  };
+  void run_release(Release& release, Clock::time_point start);
+
+  std::string name_;
+  std::vector<Module*> modules_;
+  std::vector<std::unique_ptr<Release>> releases_;
+  std::mutex stop_mutex_;
+  std::condition_variable stop_cv_;
+  std::atomic<bool> stopping_{false};
+  std::atomic<std::uint64_t> waves_{0};
+};
+
+template <class T>
+void Output<T>::send(const T& data) {
+  Activation* activation = Activation::current();
+  const std::uint64_t wave = activation ? activation->wave : owner_.system().new_wave();
+  const std::uint64_t sequence = ++sequence_;
+  for (Link* link : inhibitors_) {
+    if (link->active()) {
+      if (Trace::enabled()) {
+        Trace::line("inhibit " + name_ + " #" + std::to_string(sequence) + " by " + link->name());
+      }
+      return;
+    }
+  }
+  for (Link* link : triggers_) {
+    link->trigger();
+  }
+  if (Trace::enabled()) {
+    Trace::line("send " + name_ + " #" + std::to_string(sequence));
+  }
+  for (const Route& route : routes_) {
+    if (!route.replacing) {
+      if (Link* link = route.target->active_suppressor()) {
+        if (Trace::enabled()) {
+          Trace::line("suppress " + route.target->name() + " <- " + name_ + " #" + std::to_string(sequence) +
+                      " by " + link->name());
+        }
+        continue;
+      }
+    }
+    route.target->deliver(data, &name_, sequence, wave, route.replacing);
+  }
+}
+
+}  // namespace rsaml

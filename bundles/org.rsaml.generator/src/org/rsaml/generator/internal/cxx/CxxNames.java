@@ -1,0 +1,240 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.internal.cxx;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.rsaml.generator.internal.NameScope;
+import org.rsaml.generator.internal.Names;
+import org.rsaml.generator.plan.ExecutionPlan;
+import org.rsaml.generator.plan.ExecutionPlan.LinkPlan;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedAction;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedFunction;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedLayer;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.generator.plan.ExecutionPlan.Release;
+import org.rsaml.generator.plan.ExecutionPlan.ReleaseKind;
+
+/**
+ * The C++ names of a plan, for the targets that emit a class per module (C++ and ROS 2): project
+ * and layer folders, module classes, and the members of each class (methods, ports, releases),
+ * sanitised and collision-free, allocated in model order so the same model gives the same names.
+ * Used from Xtend as an extension ({@code m.className}).
+ */
+public final class CxxNames {
+
+    /**
+     * Names the module base classes take from the runtime or rclcpp::Node (its public API included):
+     * model names must not hide them.
+     */
+    private static final String[] CLASS_RESERVED = { "name", "system", "on_start", "publish_outputs", "run_action",
+            "begin_reaction", "trace", "react", "due", "Module", "Node", "get_name", "get_namespace", "get_logger", "get_clock",
+            "now", "create_publisher", "create_subscription", "create_wall_timer", "create_timer", "declare_parameter",
+            "get_parameter", "set_parameter", "shared_from_this", "get_node_options", "publish", "options" };
+
+    /** Folder names the generated projects use themselves. */
+    private static final String[] FOLDERS = { "rsaml", "msg", "gen", "src", "launch", "include", "build", "architecture",
+            "messages", "main", "user" };
+
+    private final String project;
+    private final Map<PlannedLayer, String> layerIds = new IdentityHashMap<>();
+    private final Map<PlannedModule, ModuleNames> modules = new IdentityHashMap<>();
+    private final Map<PlannedFunction, String> functionMethods = new IdentityHashMap<>();
+    private final Map<PlannedFunction, String> lastRunMembers = new IdentityHashMap<>();
+    private final Map<PlannedAction, String> actionMethods = new IdentityHashMap<>();
+    private final Map<PlannedPort, String> portStems = new IdentityHashMap<>();
+    private final Map<Release, String> releaseMethods = new IdentityHashMap<>();
+    private final Map<LinkPlan, String> linkStems = new IdentityHashMap<>();
+
+    private static final class ModuleNames {
+        String className;
+        String nodeName;
+        NameScope scope;
+        String reactMethod;
+    }
+
+    public CxxNames(ExecutionPlan plan) {
+        this.project = Names.snake(plan.architecture().getName());
+        NameScope layerScope = new NameScope(true, FOLDERS);
+        for (PlannedLayer l : plan.layers()) {
+            layerIds.put(l, layerScope.allocate(Names.snake(l.layer().getName())));
+        }
+        Map<PlannedLayer, NameScope> classes = new HashMap<>();
+        Map<PlannedLayer, NameScope> nodes = new HashMap<>();
+        for (PlannedModule m : plan.modules()) {
+            ModuleNames n = new ModuleNames();
+            n.className = classes.computeIfAbsent(m.layer(), k -> new NameScope(true))
+                    .allocate(Names.pascal(m.module().getName()), "", "", "", "Base", "", "Main");
+            n.nodeName = nodes.computeIfAbsent(m.layer(), k -> new NameScope(false)).allocate(Names.snake(m.module().getName()));
+            String[] reserved = java.util.Arrays.copyOf(CLASS_RESERVED, CLASS_RESERVED.length + 3);
+            reserved[CLASS_RESERVED.length] = n.className;
+            reserved[CLASS_RESERVED.length + 1] = n.className + "Base";
+            reserved[CLASS_RESERVED.length + 2] = n.className + "Main";
+            n.scope = new NameScope(false, reserved);
+            for (PlannedFunction f : m.functions()) {
+                functionMethods.put(f, n.scope.allocate(Names.identifier(f.function().getName())));
+            }
+            for (PlannedFunction f : m.functions()) {
+                for (PlannedAction a : f.actions()) {
+                    String preferred = Names.identifier(a.action().getName());
+                    actionMethods.put(a, n.scope.isTaken(preferred)
+                            ? n.scope.allocate(Names.identifier(f.function().getName() + "_" + a.action().getName()))
+                            : n.scope.allocate(preferred));
+                }
+            }
+            modules.put(m, n);
+        }
+        for (PlannedModule m : plan.modules()) {
+            NameScope scope = modules.get(m).scope;
+            for (PlannedPort p : m.ports()) {
+                String id = Names.stem(p.port().getName());
+                portStems.put(p, p.entry() ? scope.allocate(id, "in_", "", "on_", "", "receive_", "", "sub_", "")
+                        : scope.allocate(id, "out_", "", "pub_", ""));
+            }
+        }
+        for (PlannedModule m : plan.modules()) {
+            ModuleNames n = modules.get(m);
+            for (PlannedFunction f : m.functions()) {
+                if (f.minIntervalNs() > 0) {
+                    lastRunMembers.put(f, n.scope.allocate("last_run_" + Names.stem(f.function().getName())));
+                }
+                for (Release r : m.releases()) {
+                    if (r.function() == f) {
+                        releaseMethods.put(r, n.scope.allocate("release_" + stem(r), "", "", "timer_", ""));
+                    }
+                }
+            }
+            for (Release r : m.releases()) {
+                if (r.kind() == ReleaseKind.MODULE) {
+                    releaseMethods.put(r, n.scope.allocate("release_" + stem(r), "", "", "timer_", ""));
+                }
+            }
+            n.reactMethod = n.scope.allocate("react");
+        }
+        for (LinkPlan l : plan.links()) {
+            linkStems.put(l, modules.get(l.target().module()).scope.allocate(Names.stem(l.link().getName()), "link_", "_until", "link_", "_sub"));
+        }
+    }
+
+    private static String stem(Release r) {
+        return r.kind() == ReleaseKind.MODULE ? "module" : Names.stem(r.elementName());
+    }
+
+    /** C++ namespace, CMake project, executable and ROS package name. */
+    public String project() {
+        return project;
+    }
+
+    /** Folder and namespace of a layer. */
+    public String layerId(PlannedLayer l) {
+        return layerIds.get(l);
+    }
+
+    public String layerId(PlannedModule m) {
+        return layerIds.get(m.layer());
+    }
+
+    /** The architect's class of a module. */
+    public String className(PlannedModule m) {
+        return modules.get(m).className;
+    }
+
+    /** The generated base class the architect's class derives from. */
+    public String baseName(PlannedModule m) {
+        return className(m) + "Base";
+    }
+
+    /** The class or file holding a module's entry point, where a target needs one. */
+    public String mainName(PlannedModule m) {
+        return className(m) + "Main";
+    }
+
+    /** The module's snake-case name, unique in its layer (ROS node name). */
+    public String nodeName(PlannedModule m) {
+        return modules.get(m).nodeName;
+    }
+
+    public String method(PlannedFunction f) {
+        return functionMethods.get(f);
+    }
+
+    public String method(PlannedAction a) {
+        return actionMethods.get(a);
+    }
+
+    /** The private method that runs a timed release. */
+    public String method(Release r) {
+        return releaseMethods.get(r);
+    }
+
+    public String timerMember(Release r) {
+        return "timer_" + releaseMethods.get(r);
+    }
+
+    /** The private method that runs a reaction. */
+    public String reactMethod(PlannedModule m) {
+        return modules.get(m).reactMethod;
+    }
+
+    /** For a sporadic function run by reactions, the member that holds its last run. */
+    public String lastRunMember(PlannedFunction f) {
+        return lastRunMembers.get(f);
+    }
+
+    public String stem(PlannedPort p) {
+        return portStems.get(p);
+    }
+
+    public String inName(PlannedPort p) {
+        return "in_" + portStems.get(p);
+    }
+
+    public String onName(PlannedPort p) {
+        return "on_" + portStems.get(p);
+    }
+
+    public String receiveName(PlannedPort p) {
+        return "receive_" + portStems.get(p);
+    }
+
+    public String subName(PlannedPort p) {
+        return "sub_" + portStems.get(p);
+    }
+
+    public String outName(PlannedPort p) {
+        return "out_" + portStems.get(p);
+    }
+
+    public String pubName(PlannedPort p) {
+        return "pub_" + portStems.get(p);
+    }
+
+    /** Member stem of a link in its target module's class. */
+    public String stem(LinkPlan l) {
+        return linkStems.get(l);
+    }
+
+    /** The methods the module's own class is created with: its actions and input handlers. */
+    public List<String> stubs(PlannedModule m) {
+        List<String> stubs = new ArrayList<>();
+        m.actions().forEach(a -> stubs.add(method(a)));
+        m.inputs().forEach(p -> stubs.add(onName(p)));
+        return stubs;
+    }
+
+    /** The methods the architect implements or overrides in the module's own class. */
+    public List<String> hooks(PlannedModule m) {
+        List<String> hooks = new ArrayList<>();
+        m.functions().forEach(f -> hooks.add(method(f)));
+        m.actions().forEach(a -> hooks.add(method(a)));
+        m.inputs().forEach(p -> hooks.add(onName(p)));
+        return hooks;
+    }
+}
