@@ -96,10 +96,10 @@ public final class RsamlGenerator {
             int[] at = e.element() == null ? new int[] { 0, 0 } : model.locate(e.element());
             throw new GenerationException(model.file(), at[0], at[1], "no code generated: " + e.getMessage(), e);
         }
-        GeneratedProject project = target.generator().generate(plan);
+        GeneratedProject project = target.generator().generate(plan, OutputWriter.context(outputDir, target.id()));
         List<String> warnings = new ArrayList<>(plan.warnings());
         warnings.addAll(project.warnings());
-        OutputWriter.Outcome outcome = OutputWriter.write(outputDir, project.files(), target.id());
+        OutputWriter.Outcome outcome = OutputWriter.write(outputDir, project.files(), target.id(), project.keep());
         warnings.addAll(outcome.warnings);
         Path dir = outputDir.toAbsolutePath().normalize();
         return new GenerationResult(target, dir, paths(outcome.written), paths(outcome.unchanged), paths(outcome.preserved),

@@ -20,6 +20,7 @@ import java.util.Deque;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.TreeMap;
 import java.util.Set;
 import java.util.TreeSet;
@@ -27,6 +28,7 @@ import java.util.stream.Stream;
 
 import org.rsaml.generator.GenerationException;
 import org.rsaml.generator.spi.GeneratedFile;
+import org.rsaml.generator.spi.OutputContext;
 
 /**
  * Writes a generated project all at once or not at all, whatever its language. Every check (is the output a directory,
@@ -60,7 +62,7 @@ public final class OutputWriter {
      *
      * @param header the line that starts the manifest (names the target)
      */
-    public static Outcome write(Path out, List<GeneratedFile> files, String target) throws GenerationException {
+    public static Outcome write(Path out, List<GeneratedFile> files, String target, Map<String, String> keep) throws GenerationException {
         Path dir = out.toAbsolutePath().normalize();
         Outcome outcome = new Outcome();
         checkOutputDirectory(dir, out);
@@ -115,12 +117,12 @@ public final class OutputWriter {
         for (String path : old.generated) {
             if (!generatedPaths.contains(path)) {
                 Path p = resolveQuietly(dir, path);
-                if (p != null && Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS) && hasMarker(read(p, out, path))) {
+                if (p != null && plainFileInside(dir, p) && hasMarker(read(p, out, path))) {
                     stale.add(path);
                 }
             }
         }
-        String manifest = Manifest.render(target, generatedPaths, hooks);
+        String manifest = Manifest.render(target, generatedPaths, hooks, keep);
         byte[] manifestBytes = manifest.getBytes(StandardCharsets.UTF_8);
         Path manifestPath = dir.resolve(MANIFEST);
         if (Files.exists(manifestPath) && Arrays.equals(read(manifestPath, out, MANIFEST), manifestBytes)) {
@@ -134,6 +136,36 @@ public final class OutputWriter {
         outcome.deleted.addAll(stale);
         sort(outcome);
         return outcome;
+    }
+
+    /**
+     * What earlier runs left in the output for this target: the settings it kept in the manifest
+     * (names it must not change, such as a namespace the architect's files use; none when another
+     * target wrote the manifest), and safe reads of the architect's files.
+     */
+    public static OutputContext context(Path out, String target) {
+        Path dir = out.toAbsolutePath().normalize();
+        Manifest m = Manifest.read(dir);
+        Map<String, String> kept = target.equals(m.target) ? Map.copyOf(m.keep) : Map.of();
+        return new OutputContext() {
+            @Override
+            public Map<String, String> kept() {
+                return kept;
+            }
+
+            @Override
+            public Optional<String> userFile(String path) {
+                Path p = resolveQuietly(dir, path);
+                try {
+                    if (p == null || !plainFileInside(dir, p) || Files.size(p) > (1 << 20)) {
+                        return Optional.empty();
+                    }
+                    return Optional.of(new String(Files.readAllBytes(p), StandardCharsets.UTF_8));
+                } catch (IOException e) {
+                    return Optional.empty();
+                }
+            }
+        };
     }
 
     private static void sort(Outcome o) {
@@ -203,6 +235,30 @@ public final class OutputWriter {
         }
         Path p = dir.resolve(relative).normalize();
         return p.startsWith(dir) && !p.equals(dir) ? p : null;
+    }
+
+    /**
+     * Whether p is a regular file reached from dir without following any link: the only kind of
+     * file stale removal may delete, so a link in the output (or a crafted manifest) never leads it
+     * outside the output tree.
+     */
+    static boolean plainFileInside(Path dir, Path p) {
+        if (!p.startsWith(dir) || p.equals(dir)) {
+            return false;
+        }
+        for (Path q = p; !q.equals(dir); q = q.getParent()) {
+            if (Files.isSymbolicLink(q)) {
+                return false;
+            }
+        }
+        if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
+            return false;
+        }
+        try {
+            return p.toRealPath().startsWith(dir.toRealPath());
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     private static void checkParents(Path dir, Path file, Path out) throws GenerationException {
@@ -288,6 +344,9 @@ public final class OutputWriter {
                 Files.move(staged.resolve(rel), target, StandardCopyOption.ATOMIC_MOVE);
             }
             for (String rel : stale) {
+                if (!plainFileInside(dir, dir.resolve(rel))) {
+                    continue; // changed since it was checked: leave it alone
+                }
                 Path aside = backup.resolve(rel);
                 Files.createDirectories(aside.getParent());
                 Files.move(dir.resolve(rel), aside, StandardCopyOption.ATOMIC_MOVE);
@@ -339,6 +398,9 @@ public final class OutputWriter {
 
     private static void removeEmptyParents(Path dir, Path p) {
         for (Path q = p; q != null && q.startsWith(dir) && !q.equals(dir); q = q.getParent()) {
+            if (!Files.isDirectory(q, LinkOption.NOFOLLOW_LINKS)) {
+                return;
+            }
             try (Stream<Path> children = Files.list(q)) {
                 if (children.findAny().isPresent()) {
                     return;
@@ -365,20 +427,33 @@ public final class OutputWriter {
 
     /** The list of generated files and of the architect's methods from the last run. */
     static final class Manifest {
+        static final long MAX_MANIFEST_BYTES = 64L << 20;
+        /** What a kept setting may be: a name, nothing a path or a line could be built from. */
+        static final java.util.regex.Pattern KEEP = java.util.regex.Pattern.compile("[A-Za-z][A-Za-z0-9_.-]{0,200}");
+        final Map<String, String> keep = new TreeMap<>();
+        String target;
         final TreeSet<String> generated = new TreeSet<>();
         final Map<String, List<String>> hooks = new LinkedHashMap<>();
 
         static Manifest read(Path dir) {
             Manifest m = new Manifest();
             Path p = dir.resolve(MANIFEST);
-            if (!Files.isRegularFile(p)) {
+            if (!Files.isRegularFile(p, LinkOption.NOFOLLOW_LINKS)) {
                 return m;
             }
             try {
+                if (Files.size(p) > MAX_MANIFEST_BYTES) {
+                    return m; // not one of ours: a real manifest lists a project's files
+                }
                 for (String line : Files.readAllLines(p, StandardCharsets.UTF_8)) {
                     String[] parts = line.strip().split(" ");
                     if (parts.length >= 2 && parts[0].equals("generated")) {
                         m.generated.add(parts[1]);
+                    } else if (parts.length == 3 && parts[0].equals("keep") && KEEP.matcher(parts[1]).matches()
+                            && KEEP.matcher(parts[2]).matches()) {
+                        m.keep.put(parts[1], parts[2]);
+                    } else if (line.startsWith("# " + MARKER + " (target ")) {
+                        m.target = line.substring(("# " + MARKER + " (target ").length()).replaceAll("\\).*", "");
                     } else if (parts.length >= 2 && parts[0].equals("hooks")) {
                         m.hooks.put(parts[1], List.of(parts).subList(2, parts.length));
                     }
@@ -389,12 +464,15 @@ public final class OutputWriter {
             return m;
         }
 
-        static String render(String target, Iterable<String> generated, Map<String, List<String>> hooks) {
+        static String render(String target, Iterable<String> generated, Map<String, List<String>> hooks, Map<String, String> keep) {
             StringBuilder out = new StringBuilder();
             out.append("# ").append(MARKER).append(" (target ").append(target)
                     .append("): the files it regenerates and the methods of your classes. Do not edit.\n");
             for (String g : generated) {
                 out.append("generated ").append(g).append('\n');
+            }
+            for (Map.Entry<String, String> k : new TreeMap<>(keep).entrySet()) {
+                out.append("keep ").append(k.getKey()).append(' ').append(k.getValue()).append('\n');
             }
             for (Map.Entry<String, List<String>> h : hooks.entrySet()) {
                 out.append("hooks ").append(h.getKey());

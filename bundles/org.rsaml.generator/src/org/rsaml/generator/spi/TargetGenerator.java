@@ -23,7 +23,8 @@ public interface TargetGenerator {
     /**
      * The files of the project and what the architect should know about them.
      *
+     * @param output what earlier runs left in the output: kept settings, the architect's files
      * @throws GenerationException the plan cannot be expressed in this target
      */
-    GeneratedProject generate(ExecutionPlan plan) throws GenerationException;
+    GeneratedProject generate(ExecutionPlan plan, OutputContext output) throws GenerationException;
 }

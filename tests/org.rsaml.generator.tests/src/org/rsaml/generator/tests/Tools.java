@@ -83,8 +83,13 @@ final class Tools {
 
     /** Configures and builds a generated C++ project, warnings as errors; returns the executable. */
     static Path cmakeBuild(Path project, String executable) throws IOException, InterruptedException {
+        return cmakeBuild(project, executable, "");
+    }
+
+    /** The same, with more compiler flags (e.g. a sanitizer, which the link then needs too). */
+    static Path cmakeBuild(Path project, String executable, String flags) throws IOException, InterruptedException {
         ok(project, 300, "cmake", "-S", ".", "-B", "build", "-DCMAKE_BUILD_TYPE=Debug",
-                "-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror");
+                ("-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror " + flags).strip(), "-DCMAKE_EXE_LINKER_FLAGS=" + flags);
         ok(project, 600, "cmake", "--build", "build", "-j2");
         Path exe = project.resolve("build").resolve(executable);
         if (!Files.isExecutable(exe)) {

@@ -20,6 +20,7 @@ import org.rsaml.generator.plan.ExecutionPlan.PlannedModule
 import org.rsaml.generator.plan.ExecutionPlan.Release
 import org.rsaml.generator.spi.GeneratedFile
 import org.rsaml.generator.spi.GeneratedProject
+import org.rsaml.generator.spi.OutputContext
 import org.rsaml.generator.spi.TargetGenerator
 import org.rsaml.model.SchedulingPolicy
 
@@ -39,8 +40,10 @@ class CppTarget implements TargetGenerator {
 		"a CMake C++17 project that builds and runs on its own (threads, timers, a trace of the run)"
 	}
 
-	override generate(ExecutionPlan plan) {
-		new GeneratedProject(new CppFiles(plan).files, #[])
+	override generate(ExecutionPlan plan, OutputContext output) {
+		val warnings = <String>newArrayList
+		val project = CxxNames.stableProject(plan, output.kept, warnings, "the C++ namespace, the CMake project and the program")
+		new GeneratedProject(new CppFiles(plan, project).files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 
 	/** The fixed runtime file at runtime/cpp/PATH in this bundle. */
@@ -67,9 +70,9 @@ class CppFiles {
 	val extension CppNames cppNames
 	val String banner
 
-	new(ExecutionPlan plan) {
+	new(ExecutionPlan plan, String project) {
 		this.plan = plan
-		this.names = new CxxNames(plan)
+		this.names = new CxxNames(plan, project)
 		this.cppNames = new CppNames(plan, names)
 		this.banner = Templates.banner(plan)
 	}
@@ -121,6 +124,10 @@ class CppFiles {
 		Templates.doc(text)
 	}
 
+	def private described(String text) {
+		Templates.described(text)
+	}
+
 	def private cmake() '''
 		# «banner»
 		# Your own settings (libraries, options, more sources) go in src/user.cmake.
@@ -159,7 +166,7 @@ class CppFiles {
 
 	def private userMessage(MessageStruct t) '''
 		// Message type «doc(t.key)» of architecture '«doc(plan.name)»'.
-		// Yours: created once by RsaML, never overwritten. Add the fields your modules exchange; the
+		// «Templates.USER_OWNED» Add the fields your modules exchange; the
 		// type must stay default-constructible and copyable.
 		#pragma once
 
@@ -277,7 +284,7 @@ class CppFiles {
 		namespace «ns(m)» {
 
 		/**
-		 * Module «doc(m.qualifiedName)»«IF !doc(m.description).empty»: «doc(m.description)»«ENDIF»
+		 * Module «doc(m.qualifiedName)»«described(m.description)»
 		 * Timing: «doc(m.timing)». «activation(m)»
 		 * The generated part: «m.className» (src/«m.layerId»/«m.className».hpp, yours) derives from it.
 		 */
@@ -288,23 +295,23 @@ class CppFiles {
 
 		  	// Entry ports: value() is the latest value received.
 		  	«FOR p : m.inputs»
-		  		::rsaml::Input<«p.cppType»> «p.inName»;  // «doc(p.name)»«IF !doc(p.description).empty»: «doc(p.description)»«ENDIF»
+		  		::rsaml::Input<«p.cppType»> «p.inName»;  // «doc(p.name)»«described(p.description)»
 		  	«ENDFOR»
 		  «ENDIF»
 		  «IF !m.outputs.empty»
 
 		  	// Output ports: set value; it is sent after each activation (or call send() to send at once).
 		  	«FOR p : m.outputs»
-		  		::rsaml::Output<«p.cppType»> «p.outName»;  // «doc(p.name)»«IF !doc(p.description).empty»: «doc(p.description)»«ENDIF»
+		  		::rsaml::Output<«p.cppType»> «p.outName»;  // «doc(p.name)»«described(p.description)»
 		  	«ENDFOR»
 		  «ENDIF»
 
 		 protected:
 		  «FOR f : m.functions»
-		  	/** Function «doc(f.name)» («doc(f.timing)»)«IF !doc(f.description).empty»: «doc(f.description)»«ENDIF» */
+		  	/** Function «doc(f.name)» («doc(f.timing)»)«described(f.description)» */
 		  	virtual void «f.method»();
 		  	«FOR a : f.actions»
-		  		/** Action «doc(a.name)» («doc(a.timing)»)«IF !doc(a.description).empty»: «doc(a.description)»«ENDIF» */
+		  		/** Action «doc(a.name)» («doc(a.timing)»)«described(a.description)» */
 		  		virtual void «a.method»();
 		  	«ENDFOR»
 		  «ENDFOR»
@@ -435,8 +442,8 @@ class CppFiles {
 	}
 
 	def private userHeader(PlannedModule m) '''
-		// Module «doc(m.qualifiedName)»«IF !doc(m.description).empty»: «doc(m.description)»«ENDIF»
-		// Yours: created once by RsaML, never overwritten. The generated base class
+		// Module «doc(m.qualifiedName)»«described(m.description)»
+		// «Templates.USER_OWNED» The generated base class
 		// («m.baseName», in gen/«m.layerId»/) declares the ports and runs the functions; implement the
 		// actions and input handlers here.
 		#pragma once
@@ -468,7 +475,7 @@ class CppFiles {
 	'''
 
 	def private userSource(PlannedModule m) '''
-		// Module «doc(m.qualifiedName)». Yours: created once by RsaML, never overwritten.
+		// Module «doc(m.qualifiedName)». «Templates.USER_OWNED»
 		// Inputs: in_<port>.value() is the latest value. Outputs: set out_<port>.value; it is sent after
 		// each activation of the module (or call out_<port>.send() to send at once).
 		#include "«m.layerId»/«m.className».hpp"
@@ -476,12 +483,12 @@ class CppFiles {
 		namespace «ns(m)» {
 		«FOR a : m.actions»
 
-			// «doc(a.function.name)».«doc(a.name)»«IF !doc(a.description).empty»: «doc(a.description)»«ENDIF»
+			// «doc(a.function.name)».«doc(a.name)»«described(a.description)»
 			void «m.className»::«a.method»() {}
 		«ENDFOR»
 		«FOR p : m.inputs»
 
-			// «doc(p.name)»«IF !doc(p.description).empty»: «doc(p.description)»«ENDIF»
+			// «doc(p.name)»«described(p.description)»
 			void «m.className»::«p.onName»(const «p.cppType»& value) { (void)value; }
 		«ENDFOR»
 

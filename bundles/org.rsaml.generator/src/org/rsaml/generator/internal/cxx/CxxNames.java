@@ -60,8 +60,30 @@ public final class CxxNames {
         String reactMethod;
     }
 
-    public CxxNames(ExecutionPlan plan) {
-        this.project = Names.snake(plan.architecture().getName());
+    /** The setting under which a target keeps the project name in the output's manifest. */
+    public static final String KEPT_PROJECT = "project";
+
+    /**
+     * The project name (C++ namespace, build project, package) for this output: the one it was
+     * first generated with, so that renaming the architecture does not move the namespace the
+     * architect's files are written in; with a warning saying so when the name differs.
+     *
+     * @param what the things named after the project, for the warning
+     */
+    public static String stableProject(ExecutionPlan plan, Map<String, String> kept, List<String> warnings, String what) {
+        String fresh = Names.snake(plan.architecture().getName());
+        String old = kept.get(KEPT_PROJECT);
+        if (old == null || old.equals(fresh) || !old.matches("[a-z][a-z0-9_]*") || old.contains("__") || Names.reserved(old)) {
+            return fresh;
+        }
+        warnings.add("architecture '" + plan.name() + "' would be named " + fresh + " in code, but this output was generated as "
+                + old + ": " + what + " keep the name " + old + " so that your files keep building; to use " + fresh
+                + ", generate into a new directory and move your code there");
+        return old;
+    }
+
+    public CxxNames(ExecutionPlan plan, String project) {
+        this.project = project;
         NameScope layerScope = new NameScope(true, FOLDERS);
         for (PlannedLayer l : plan.layers()) {
             layerIds.put(l, layerScope.allocate(Names.snake(l.layer().getName())));

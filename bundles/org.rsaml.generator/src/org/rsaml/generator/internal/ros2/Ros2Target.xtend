@@ -16,6 +16,7 @@ import org.rsaml.generator.plan.ExecutionPlan.PlannedModule
 import org.rsaml.generator.plan.ExecutionPlan.Release
 import org.rsaml.generator.spi.GeneratedFile
 import org.rsaml.generator.spi.GeneratedProject
+import org.rsaml.generator.spi.OutputContext
 import org.rsaml.generator.spi.TargetGenerator
 
 /**
@@ -36,13 +37,14 @@ class Ros2Target implements TargetGenerator {
 		"ament_cmake packages for ROS 2 (rclcpp): a node per module, topics, a launch file"
 	}
 
-	override generate(ExecutionPlan plan) {
+	override generate(ExecutionPlan plan, OutputContext output) {
 		val warnings = <String>newArrayList
+		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace")
 		for (cycle : plan.reactiveCycles) {
 			warnings += "modules " + cycle.map[qualifiedName].join(" -> ")
 				+ " react to each other's data in a cycle: in ROS 2 each message goes round again; make one of them periodic or sporadic"
 		}
-		new GeneratedProject(new Ros2Files(plan).files, warnings)
+		new GeneratedProject(new Ros2Files(plan, project).files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 }
 
@@ -55,9 +57,9 @@ class Ros2Files {
 	val String banner
 	val String pkg
 
-	new(ExecutionPlan plan) {
+	new(ExecutionPlan plan, String project) {
 		this.plan = plan
-		this.names = new CxxNames(plan)
+		this.names = new CxxNames(plan, project)
 		this.rosNames = new Ros2Names(plan, names)
 		this.pkg = names.project
 		this.banner = Templates.banner(plan)
@@ -81,7 +83,7 @@ class Ros2Files {
 			for (t : generatedMessages) {
 				files += GeneratedFile.user(ipkg + "/msg/" + t.rosName + ".msg", '''
 					# Message type «Names.comment(t.key)» of architecture '«Names.comment(plan.name)»'.
-					# Yours: created once by RsaML, never overwritten. Declare its fields, for example:
+					# «Templates.USER_OWNED» Declare its fields, for example:
 					# float64 x
 				''')
 			}
@@ -111,6 +113,10 @@ class Ros2Files {
 
 	def private doc(String text) {
 		Templates.doc(text)
+	}
+
+	def private described(String text) {
+		Templates.described(text)
 	}
 
 	def private packageXml() {
@@ -273,7 +279,7 @@ class Ros2Files {
 		namespace «names.project»::«m.layerId» {
 
 		/**
-		 * Node «doc(m.nodeName)» in namespace /«m.layerId»: module «doc(m.qualifiedName)»«IF !doc(m.description).empty»: «doc(m.description)»«ENDIF»
+		 * Node «doc(m.nodeName)» in namespace /«m.layerId»: module «doc(m.qualifiedName)»«described(m.description)»
 		 * Timing: «doc(m.timing)».
 		 * The generated part: «m.className» (src/«m.layerId»/«m.className».hpp, yours) derives from it.
 		 */
@@ -457,8 +463,8 @@ class Ros2Files {
 	'''
 
 	def private userHeader(PlannedModule m) '''
-		// Node for module «doc(m.qualifiedName)»«IF !doc(m.description).empty»: «doc(m.description)»«ENDIF»
-		// Yours: created once by RsaML, never overwritten. The generated base class («m.baseName», in
+		// Node for module «doc(m.qualifiedName)»«described(m.description)»
+		// «Templates.USER_OWNED» The generated base class («m.baseName», in
 		// gen/«m.layerId»/) creates the publishers, subscriptions and timers; implement the actions and
 		// message handlers here.
 		#pragma once
@@ -490,7 +496,7 @@ class Ros2Files {
 	'''
 
 	def private userSource(PlannedModule m) '''
-		// Node for module «doc(m.qualifiedName)». Yours: created once by RsaML, never overwritten.
+		// Node for module «doc(m.qualifiedName)». «Templates.USER_OWNED»
 		// Inputs: in_<port> is the latest message. Outputs: set out_<port>; it is published after each
 		// activation of the node.
 		#include "«m.layerId»/«m.className».hpp"
@@ -498,12 +504,12 @@ class Ros2Files {
 		namespace «names.project»::«m.layerId» {
 		«FOR a : m.actions»
 
-			// «doc(a.function.name)».«doc(a.name)»«IF !doc(a.description).empty»: «doc(a.description)»«ENDIF»
+			// «doc(a.function.name)».«doc(a.name)»«described(a.description)»
 			void «m.className»::«a.method»() {}
 		«ENDFOR»
 		«FOR p : m.inputs»
 
-			// «doc(p.name)»«IF !doc(p.description).empty»: «doc(p.description)»«ENDIF»
+			// «doc(p.name)»«described(p.description)»
 			void «m.className»::«p.onName»(const «p.rosType»& message) { (void)message; }
 		«ENDFOR»
 

@@ -1,0 +1,147 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.rsaml.generator.GenerationException;
+import org.rsaml.generator.GenerationResult;
+import org.rsaml.generator.RsamlGenerator;
+import org.rsaml.generator.Target;
+
+/**
+ * Generation never dies of an internal error nor emits code that overflows, never deletes through
+ * a link or outside the output, and keeps the architect's files building when the architecture is
+ * renamed.
+ */
+class GenerationSafetyTest {
+
+    static final String FUNCTION_TIMING = "period=\"20.0\" delay=\"20.0\" execDuration=\"6.0\" execType=\"periodic\" schedPolicy=\"RM\"";
+
+    /** Times the generated code cannot count are refused with a located message, forced or not, and nothing is written. */
+    @ParameterizedTest
+    @CsvSource(delimiter = '|', value = {
+            "period=\"Infinity\"|period Infinity ms of motionControl/motionController.executeInstructions is not a finite number",
+            "period=\"1152921504607\"|period 1152921504607 ms of motionControl/motionController.executeInstructions is longer than generated code can count",
+            "period=\"1e21\"|period 1.0E21 ms of motionControl/motionController.executeInstructions is longer than generated code can count",
+            "period=\"1e-9\"|period 1.0E-9 ms of motionControl/motionController.executeInstructions is shorter than 1 ns",
+            "period=\"20.0\" delay=\"-1\" execDuration=\"6.0\"|delay -1 ms of motionControl/motionController.executeInstructions is negative" })
+    void unrepresentableTimesAreRefusedNotCrashedOn(String timing, String expected, @TempDir Path tmp) throws Exception {
+        String text = Files.readString(Tools.example("exp3-task-interpreter.rsaml"));
+        String edited = text.replace(FUNCTION_TIMING, timing.contains("delay") ? timing + " execType=\"periodic\" schedPolicy=\"RM\""
+                : FUNCTION_TIMING.replace("period=\"20.0\"", timing));
+        assertFalse(edited.equals(text), "the model edit did not apply");
+        Path model = Files.writeString(tmp.resolve("arm.rsaml"), edited);
+        Path out = tmp.resolve("out");
+        for (Target target : List.of(Target.CPP, Target.ROS2)) {
+            GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(model, target, out, true));
+            assertEquals(model.toString(), e.file());
+            assertEquals(27, e.line(), "the message points at the function's start tag");
+            if (timing.contains("Infinity") && !e.getMessage().startsWith("no code generated: ")) {
+                assertTrue(e.getMessage().contains("Infinity"), e.getMessage()); // refused when loading: also fine
+            } else {
+                assertTrue(e.getMessage().startsWith("no code generated: " + expected), e.getMessage());
+            }
+            assertFalse(Files.exists(out), "nothing may be written");
+        }
+    }
+
+    /**
+     * The longest period the generated code can count (just under 2^60 ns, as period and delay)
+     * builds under the undefined-behaviour sanitizer and runs: no overflow, no busy loop, one release.
+     */
+    @Test
+    void longestCountablePeriodBuildsAndRuns(@TempDir Path tmp) throws Exception {
+        String text = Files.readString(Tools.example("exp3-task-interpreter.rsaml"));
+        String edited = text.replace(FUNCTION_TIMING, FUNCTION_TIMING.replace("period=\"20.0\" delay=\"20.0\"",
+                "period=\"1152921504606\" delay=\"1152921504606\""));
+        assertFalse(edited.equals(text), "the model edit did not apply");
+        Path model = Files.writeString(tmp.resolve("arm.rsaml"), edited);
+        Path out = tmp.resolve("out");
+        new RsamlGenerator().generate(model, Target.CPP, out, true);
+        Path exe = Tools.cmakeBuild(out, "pick_and_place_arm", "-fsanitize=undefined -fno-sanitize-recover=all");
+        RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", "200"));
+        assertEquals(1, trace.count("release motionControl/motionController.executeInstructions"), trace.output);
+        assertFalse(trace.output.contains("runtime error"), trace.output);
+    }
+
+    /** A crafted manifest and links in the output never make stale-file removal touch anything outside it. */
+    @Test
+    void staleRemovalNeverFollowsLinksNorLeavesTheOutput(@TempDir Path tmp) throws Exception {
+        Path out = tmp.resolve("out");
+        RsamlGenerator generator = new RsamlGenerator();
+        generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.CPP, out, false);
+        Path outside = Files.createDirectories(tmp.resolve("outside"));
+        String generatedLooking = "// Generated by RsaML from architecture 'x'. Do not edit: regenerated on every run.\n";
+        Path victim = Files.writeString(outside.resolve("victim.hpp"), generatedLooking);
+        Path sibling = Files.writeString(tmp.resolve("sibling.hpp"), generatedLooking);
+        Files.createSymbolicLink(out.resolve("gen/linked"), outside);
+        Files.createSymbolicLink(out.resolve("gen/link.hpp"), victim);
+        Path manifest = out.resolve(".rsaml-generated");
+        Files.writeString(manifest, Files.readString(manifest) + "generated gen/linked/victim.hpp\ngenerated gen/link.hpp\n"
+                + "generated ../sibling.hpp\ngenerated gen/../../sibling.hpp\ngenerated " + victim + "\ngenerated gen\\..\\..\\sibling.hpp\n"
+                + "hooks ../sibling.hpp x\nkeep project ../../evil\n");
+
+        GenerationResult again = generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.CPP, out, false);
+        assertEquals(List.of(), again.deleted());
+        assertEquals(generatedLooking, Files.readString(victim));
+        assertEquals(generatedLooking, Files.readString(sibling));
+        assertTrue(Files.isSymbolicLink(out.resolve("gen/linked")) && Files.isSymbolicLink(out.resolve("gen/link.hpp")));
+        String rewritten = Files.readString(manifest);
+        assertFalse(rewritten.contains("victim") || rewritten.contains("sibling") || rewritten.contains("evil"), rewritten);
+    }
+
+    /** After a rename the project keeps its namespace, says so, and the architect's files still build and run. */
+    @Test
+    void renamedArchitectureKeepsTheArchitectsFilesBuilding(@TempDir Path tmp) throws Exception {
+        Path model = Files.copy(Tools.example("exp3-task-interpreter.rsaml"), tmp.resolve("arm.rsaml"));
+        Path out = tmp.resolve("out");
+        RsamlGenerator generator = new RsamlGenerator();
+        generator.generate(model, Target.CPP, out, false);
+        Path cpp = out.resolve("src/interpretation/TaskInterpreter.cpp");
+        Files.writeString(cpp, Files.readString(cpp).replace("void TaskInterpreter::parseTask() {}",
+                "void TaskInterpreter::parseTask() { trace(\"user: parsed\"); }"));
+
+        Files.writeString(model, Files.readString(model).replace("name=\"pickAndPlaceArm\"", "name=\"pickAndPlaceCell\""));
+        GenerationResult again = generator.generate(model, Target.CPP, out, false);
+        assertEquals(List.of("architecture 'pickAndPlaceCell' would be named pick_and_place_cell in code, but this output was generated as "
+                + "pick_and_place_arm: the C++ namespace, the CMake project and the program keep the name pick_and_place_arm so that your "
+                + "files keep building; to use pick_and_place_cell, generate into a new directory and move your code there"), again.warnings());
+        assertTrue(Files.readString(out.resolve("gen/Architecture.cpp")).contains("pickAndPlaceCell"), "the trace speaks the new name");
+        RunTrace trace = new RunTrace(Tools.ok(out, 60, Tools.cmakeBuild(out, "pick_and_place_arm").toString(), "--run-for-ms", "100"));
+        assertTrue(trace.lines.contains("run pickAndPlaceCell for 100 ms"), trace.output);
+        assertTrue(trace.count("user: parsed") >= 1, trace.output);
+
+        // A fresh output takes the new name.
+        GenerationResult fresh = generator.generate(model, Target.CPP, tmp.resolve("fresh"), false);
+        assertEquals(List.of(), fresh.warnings());
+        assertTrue(Files.readString(tmp.resolve("fresh/CMakeLists.txt")).contains("project(pick_and_place_cell "));
+    }
+
+    /** The ROS 2 package keeps its directory, so the architect's node files stay the ones built. */
+    @Test
+    void renamedArchitectureKeepsTheRosPackage(@TempDir Path tmp) throws Exception {
+        Path model = Files.copy(Tools.example("exp3-task-interpreter.rsaml"), tmp.resolve("arm.rsaml"));
+        Path out = tmp.resolve("ws");
+        new RsamlGenerator().generate(model, Target.ROS2, out, false);
+        Files.writeString(model, Files.readString(model).replace("name=\"pickAndPlaceArm\"", "name=\"pickAndPlaceCell\""));
+        GenerationResult again = new RsamlGenerator().generate(model, Target.ROS2, out, false);
+        assertTrue(again.warnings().stream().anyMatch(w -> w.contains("the ROS package, the interfaces package and the C++ namespace "
+                + "keep the name pick_and_place_arm")), again.warnings()::toString);
+        assertTrue(again.preserved().contains(Path.of("pick_and_place_arm/src/interpretation/TaskInterpreter.cpp")));
+        assertFalse(Files.exists(out.resolve("pick_and_place_cell")));
+    }
+}
