@@ -1,0 +1,147 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.OptionalLong;
+import java.util.Set;
+
+import org.rsaml.analysis.internal.Bounds;
+import org.rsaml.analysis.internal.Durations;
+import org.rsaml.analysis.internal.ProcessorDemand;
+import org.rsaml.analysis.internal.ResponseTimes;
+
+/**
+ * Schedulability of the tasks of one processor, under the processor's policy. Each verdict is sound:
+ * MEETS is a proof under the task model, MISSES comes with a witness, and whatever the analysis
+ * cannot decide is NOT_ANALYSED with the reason.
+ */
+public final class SchedulabilityAnalysis {
+
+    private SchedulabilityAnalysis() {
+    }
+
+    /**
+     * @param processor the processor's name, for the result
+     * @param policy    how it schedules
+     * @param tasks     its tasks, with distinct names
+     */
+    public static ProcessorResult analyse(String processor, SchedulingPolicy policy, List<Task> tasks) {
+        Set<String> names = new HashSet<>();
+        for (Task t : tasks) {
+            if (!names.add(t.name())) {
+                throw new IllegalArgumentException("Processor '" + processor + "': two tasks are named '" + t.name() + "'");
+            }
+        }
+        Rational u = Rational.ZERO;
+        for (Task t : tasks) {
+            u = u.plus(Rational.of(t.cost(), t.period()));
+        }
+        List<BoundCheck> bounds = Bounds.check(policy, tasks, u);
+        if (tasks.isEmpty()) {
+            return new ProcessorResult(processor, policy, List.of(), u, bounds, Verdict.MEETS, "no tasks", null);
+        }
+        return switch (policy) {
+            case FIXED_PRIORITY, FIXED_PRIORITY_NON_PREEMPTIVE -> fixedPriority(processor, policy, tasks, u, bounds);
+            case EDF -> edf(processor, tasks, u, bounds);
+            default -> unanalysed(processor, policy, tasks, u, bounds);
+        };
+    }
+
+    private static ProcessorResult fixedPriority(String processor, SchedulingPolicy policy, List<Task> tasks, Rational u,
+            List<BoundCheck> bounds) {
+        List<TaskResult> results = new ArrayList<>();
+        Verdict verdict = Verdict.MEETS;
+        for (Task t : tasks) {
+            TaskResult r = policy == SchedulingPolicy.FIXED_PRIORITY ? ResponseTimes.preemptive(tasks, t)
+                    : ResponseTimes.nonPreemptive(tasks, t);
+            results.add(r);
+            verdict = verdict.and(r.verdict());
+        }
+        long missed = results.stream().filter(r -> r.verdict() == Verdict.MISSES).count();
+        long open = results.stream().filter(r -> r.verdict() == Verdict.NOT_ANALYSED).count();
+        String method = policy == SchedulingPolicy.FIXED_PRIORITY ? "exact response-time analysis"
+                : "non-preemptive response-time analysis";
+        String explanation = switch (verdict) {
+            case MEETS -> method + ": every task meets its deadline";
+            case MISSES -> method + ": " + missed + " of " + tasks.size() + " tasks can miss their deadline";
+            default -> method + ": " + open + " of " + tasks.size() + " tasks not analysed";
+        };
+        return new ProcessorResult(processor, policy, results, u, bounds, verdict, explanation, null);
+    }
+
+    private static ProcessorResult edf(String processor, List<Task> tasks, Rational u, List<BoundCheck> bounds) {
+        ProcessorDemand.Outcome outcome = ProcessorDemand.decide(tasks, u);
+        List<TaskResult> results = new ArrayList<>();
+        if (outcome.undecided() != null) {
+            for (Task t : tasks) {
+                results.add(new TaskResult(t, OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + outcome.undecided(), null));
+            }
+            return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u, bounds, Verdict.NOT_ANALYSED,
+                    "processor-demand test not decided: " + outcome.undecided(), null);
+        }
+        if (outcome.feasible()) {
+            for (Task t : tasks) {
+                results.add(new TaskResult(t, OptionalLong.empty(), Verdict.MEETS,
+                        "meets its deadline: the processor-demand test holds (response time not computed under EDF)", null));
+            }
+            return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u, bounds, Verdict.MEETS,
+                    "processor-demand test (QPA): every interval holds its demand, so EDF meets every deadline", null);
+        }
+        DemandWitness w = outcome.witness();
+        for (Task t : tasks) {
+            if (w != null && w.jobs().containsKey(t.name())) {
+                results.add(new TaskResult(t, OptionalLong.empty(), Verdict.MISSES, "can miss its deadline: its "
+                        + w.jobs().get(t.name()) + " job(s) due within the first " + Durations.format(w.interval())
+                        + " are part of a demand of " + Durations.format(w.demand()) + " that does not fit", null));
+            } else {
+                results.add(new TaskResult(t, OptionalLong.empty(), Verdict.NOT_ANALYSED,
+                        "not analysed individually: under an EDF overload any task can be late", null));
+            }
+        }
+        return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u, bounds, Verdict.MISSES,
+                overload(u, w), w);
+    }
+
+    private static String overload(Rational u, DemandWitness w) {
+        String head = u.compareTo(Rational.ONE) > 0 ? "utilisation " + u + " exceeds 1" : "processor-demand test (QPA) fails";
+        if (w == null) {
+            return head + ": no scheduler can meet every deadline";
+        }
+        return head + ": jobs released and due within the first " + Durations.format(w.interval()) + " need "
+                + Durations.format(w.demand()) + ", so no scheduler can meet every deadline";
+    }
+
+    private static ProcessorResult unanalysed(String processor, SchedulingPolicy policy, List<Task> tasks, Rational u,
+            List<BoundCheck> bounds) {
+        // Infeasible for every scheduler is infeasible for this one: the demand test still decides misses.
+        ProcessorDemand.Outcome outcome = ProcessorDemand.decide(tasks, u);
+        List<TaskResult> results = new ArrayList<>();
+        String reason = switch (policy) {
+            case LLF -> "least laxity first: utilisation <= 1 is only necessary, and the runtime's laxity scheduling"
+                    + " (its time quantum, its ties) is not modelled";
+            case ROUND_ROBIN -> "round robin: the response time depends on the time slice and the order of the queue,"
+                    + " which the model does not give";
+            case SJF -> "shortest job first: a job can wait for ever behind shorter ones, so no bound follows from the task model";
+            default -> policy.label() + ": nothing is known of how it picks jobs";
+        };
+        if (!outcome.feasible() && outcome.undecided() == null) {
+            DemandWitness w = outcome.witness();
+            for (Task t : tasks) {
+                boolean involved = w != null && w.jobs().containsKey(t.name());
+                results.add(new TaskResult(t, OptionalLong.empty(), involved ? Verdict.MISSES : Verdict.NOT_ANALYSED,
+                        involved ? "can miss its deadline: " + overload(u, w) : "not analysed: " + reason, null));
+            }
+            return new ProcessorResult(processor, policy, results, u, bounds, Verdict.MISSES, overload(u, w), w);
+        }
+        for (Task t : tasks) {
+            results.add(new TaskResult(t, OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + reason, null));
+        }
+        return new ProcessorResult(processor, policy, results, u, bounds, Verdict.NOT_ANALYSED,
+                "not analysed: " + reason + " (the tasks pass the necessary demand test)", null);
+    }
+}

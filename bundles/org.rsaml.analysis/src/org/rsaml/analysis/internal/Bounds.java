@@ -1,0 +1,95 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis.internal;
+
+import java.math.BigInteger;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+import org.rsaml.analysis.BoundCheck;
+import org.rsaml.analysis.Rational;
+import org.rsaml.analysis.SchedulingPolicy;
+import org.rsaml.analysis.Task;
+
+/** Utilisation bounds: quick, but only sufficient (or only necessary), and stated as such. */
+public final class Bounds {
+
+    /** Above this many tasks the bounds are compared in floating point, with a safety margin. */
+    private static final int EXACT_LIMIT = 64;
+    private static final double MARGIN = 1e-12;
+
+    private Bounds() {
+    }
+
+    public static List<BoundCheck> check(SchedulingPolicy policy, List<Task> tasks, Rational u) {
+        List<BoundCheck> checks = new ArrayList<>();
+        checks.add(new BoundCheck("utilisation", false, "U <= 1", true, u.compareTo(Rational.ONE) <= 0,
+                "necessary under any scheduler"));
+        if (policy != SchedulingPolicy.FIXED_PRIORITY || tasks.isEmpty()) {
+            return checks;
+        }
+        String why = rateMonotonicImplicit(tasks);
+        int n = tasks.size();
+        double ll = n * (Math.pow(2, 1.0 / n) - 1);
+        String llLimit = String.format(Locale.ROOT, "U <= %.4f", ll);
+        if (why != null) {
+            checks.add(new BoundCheck("Liu & Layland", true, llLimit, false, false, why));
+            checks.add(new BoundCheck("hyperbolic", true, "prod(U_i + 1) <= 2", false, false, why));
+            return checks;
+        }
+        boolean llHolds;
+        boolean hypHolds;
+        String how;
+        if (n <= EXACT_LIMIT) {
+            // U <= n (2^(1/n) - 1)  <=>  (p + n q)^n <= 2 (n q)^n  with U = p / q
+            BigInteger p = u.numerator();
+            BigInteger nq = u.denominator().multiply(BigInteger.valueOf(n));
+            llHolds = p.add(nq).pow(n).compareTo(nq.pow(n).shiftLeft(1)) <= 0;
+            BigInteger product = BigInteger.ONE;
+            BigInteger periods = BigInteger.ONE;
+            for (Task t : tasks) {
+                product = product.multiply(BigInteger.valueOf(t.cost()).add(BigInteger.valueOf(t.period())));
+                periods = periods.multiply(BigInteger.valueOf(t.period()));
+            }
+            hypHolds = product.compareTo(periods.shiftLeft(1)) <= 0;
+            how = "exact";
+        } else {
+            double logProduct = 0;
+            for (Task t : tasks) {
+                logProduct += Math.log1p((double) t.cost() / t.period());
+            }
+            llHolds = u.doubleValue() <= ll - MARGIN;
+            hypHolds = logProduct <= Math.log(2) - MARGIN;
+            how = "floating point with a margin of " + MARGIN + " (more than " + EXACT_LIMIT + " tasks)";
+        }
+        checks.add(new BoundCheck("Liu & Layland", true, llLimit, true, llHolds,
+                "sufficient for rate-monotonic priorities and deadlines equal to periods; " + how));
+        checks.add(new BoundCheck("hyperbolic", true, "prod(U_i + 1) <= 2", true, hypHolds,
+                "sufficient for rate-monotonic priorities and deadlines equal to periods (Bini, Buttazzo & Buttazzo 2003); " + how));
+        return checks;
+    }
+
+    /** Null when the tasks have deadlines equal to their periods, no jitter and rate-monotonic priorities; else why not. */
+    private static String rateMonotonicImplicit(List<Task> tasks) {
+        for (Task t : tasks) {
+            if (t.deadline() != t.period()) {
+                return "not applicable: task '" + t.name() + "' has a deadline other than its period";
+            }
+            if (t.jitter() != 0) {
+                return "not applicable: task '" + t.name() + "' has release jitter";
+            }
+        }
+        for (Task a : tasks) {
+            for (Task b : tasks) {
+                if (a.period() < b.period() && a.priority() <= b.priority()) {
+                    return "not applicable: priorities are not rate monotonic ('" + a.name() + "' has the shorter period but not the higher priority than '"
+                            + b.name() + "')";
+                }
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,205 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis.internal;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.OptionalLong;
+
+import org.rsaml.analysis.Rational;
+import org.rsaml.analysis.Task;
+import org.rsaml.analysis.TaskResult;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.analysis.Witness;
+
+/**
+ * Exact response-time analysis for fixed priorities, preemptive (Joseph &amp; Pandya 1986; Audsley et
+ * al. 1993; busy-period iteration for deadlines beyond the period after Lehoczky 1990 and Tindell et
+ * al. 1994) and non-preemptive (the revised analysis of Davis, Burns, Bril &amp; Lukkien 2007, which
+ * examines every job of the level-i busy period, not only the first).
+ */
+public final class ResponseTimes {
+
+    /** A busy period with more jobs than this is not examined job by job (the verdict says so). */
+    public static final long MAX_JOBS = 1_000_000;
+    private static final long MAX_STEPS = 50_000_000;
+
+    private ResponseTimes() {
+    }
+
+    /** Tasks that can delay {@code task}: every other task of higher or equal priority. */
+    static List<Task> interfering(List<Task> tasks, Task task) {
+        List<Task> hp = new ArrayList<>();
+        for (Task t : tasks) {
+            if (t != task && t.priority() >= task.priority()) {
+                hp.add(t);
+            }
+        }
+        return hp;
+    }
+
+    static Rational utilisation(Task task, List<Task> others) {
+        Rational u = Rational.of(task.cost(), task.period());
+        for (Task t : others) {
+            u = u.plus(Rational.of(t.cost(), t.period()));
+        }
+        return u;
+    }
+
+    /** Preemptive fixed priority, constrained or arbitrary deadlines, release jitter. */
+    public static TaskResult preemptive(List<Task> tasks, Task task) {
+        List<Task> hp = interfering(tasks, task);
+        Rational level = utilisation(task, hp);
+        if (level.compareTo(Rational.ONE) > 0) {
+            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, "the tasks at or above its priority use "
+                    + level + " of the processor, more than all of it: its response time grows without bound", null);
+        }
+        try {
+            long worst = -1;
+            long worstJob = 0;
+            long steps = 0;
+            for (long q = 0;; q++) {
+                if (q >= MAX_JOBS) {
+                    return notAnalysed(task, "its busy period holds more than " + MAX_JOBS + " of its jobs");
+                }
+                long own = Arith.mul(q + 1, task.cost());
+                long w = own;
+                for (Task t : hp) {
+                    w = Arith.add(w, t.cost());
+                }
+                while (true) {
+                    if (++steps > MAX_STEPS) {
+                        return notAnalysed(task, "the response-time iteration did not settle within " + MAX_STEPS + " steps");
+                    }
+                    long next = own;
+                    for (Task t : hp) {
+                        next = Arith.add(next, Arith.mul(Arith.ceilDiv(Arith.add(w, t.jitter()), t.period()), t.cost()));
+                    }
+                    if (next == w) {
+                        break;
+                    }
+                    w = next;
+                }
+                long response = Arith.add(w - Arith.mul(q, task.period()), task.jitter());
+                if (response > worst) {
+                    worst = response;
+                    worstJob = q;
+                }
+                // the level-i busy period ends before the next job is released
+                if (Arith.add(w, task.jitter()) <= Arith.mul(q + 1, task.period())) {
+                    break;
+                }
+            }
+            return result(task, worst, worstJob, hp, null, true);
+        } catch (ArithmeticException e) {
+            return notAnalysed(task, new Arith.TooLarge().getMessage());
+        }
+    }
+
+    /**
+     * Non-preemptive fixed priority: a job, once started, runs to completion, so a lower-priority job
+     * started just before can block it. Equal priorities are served first-in first-out, which the
+     * analysis covers by counting them as interfering.
+     */
+    public static TaskResult nonPreemptive(List<Task> tasks, Task task) {
+        List<Task> hp = interfering(tasks, task);
+        Task blocker = null;
+        for (Task t : tasks) {
+            if (t.priority() < task.priority() && (blocker == null || t.cost() > blocker.cost())) {
+                blocker = t;
+            }
+        }
+        long blocking = blocker == null ? 0 : blocker.cost();
+        if (blocking == 0) {
+            blocker = null;
+        }
+        Rational level = utilisation(task, hp);
+        if (level.compareTo(Rational.ONE) > 0) {
+            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, "the tasks at or above its priority use "
+                    + level + " of the processor, more than all of it: its response time grows without bound", null);
+        }
+        if (level.equals(Rational.ONE) && blocking > 0) {
+            return notAnalysed(task, "the tasks at or above its priority use all of the processor and a lower-priority job"
+                    + " can block it, so its busy period need not end");
+        }
+        try {
+            long steps = 0;
+            // length of the level-i busy period, blocking included
+            long length = blocking + task.cost();
+            for (Task t : hp) {
+                length = Arith.add(length, t.cost());
+            }
+            while (true) {
+                if (++steps > MAX_STEPS) {
+                    return notAnalysed(task, "the busy-period iteration did not settle within " + MAX_STEPS + " steps");
+                }
+                long next = Arith.add(blocking,
+                        Arith.mul(Arith.ceilDiv(Arith.add(length, task.jitter()), task.period()), task.cost()));
+                for (Task t : hp) {
+                    next = Arith.add(next, Arith.mul(Arith.ceilDiv(Arith.add(length, t.jitter()), t.period()), t.cost()));
+                }
+                if (next == length) {
+                    break;
+                }
+                length = next;
+            }
+            long jobs = Math.max(1, Arith.ceilDiv(Arith.add(length, task.jitter()), task.period()));
+            if (jobs > MAX_JOBS) {
+                return notAnalysed(task, "its busy period holds more than " + MAX_JOBS + " of its jobs");
+            }
+            long worst = -1;
+            long worstJob = 0;
+            for (long q = 0; q < jobs; q++) {
+                long own = Arith.add(blocking, Arith.mul(q, task.cost()));
+                long w = own;
+                for (Task t : hp) {
+                    w = Arith.add(w, t.cost());
+                }
+                while (true) {
+                    if (++steps > MAX_STEPS) {
+                        return notAnalysed(task, "the response-time iteration did not settle within " + MAX_STEPS + " steps");
+                    }
+                    long next = own;
+                    for (Task t : hp) {
+                        next = Arith.add(next,
+                                Arith.mul(Math.floorDiv(Arith.add(w, t.jitter()), t.period()) + 1, t.cost()));
+                    }
+                    if (next == w) {
+                        break;
+                    }
+                    w = next;
+                }
+                long response = Arith.add(Arith.add(task.jitter(), w - Arith.mul(q, task.period())), task.cost());
+                if (response > worst) {
+                    worst = response;
+                    worstJob = q;
+                }
+            }
+            return result(task, worst, worstJob, hp, blocker, false);
+        } catch (ArithmeticException e) {
+            return notAnalysed(task, new Arith.TooLarge().getMessage());
+        }
+    }
+
+    private static TaskResult result(Task task, long worst, long job, List<Task> hp, Task blocker, boolean preemptive) {
+        String where = job == 0 ? "its first job after the critical instant"
+                : "job " + (job + 1) + " of its busy period (an earlier job delays it)";
+        if (worst <= task.deadline()) {
+            return new TaskResult(task, OptionalLong.of(worst), Verdict.MEETS,
+                    "worst-case response time " + Durations.format(worst) + " (" + where + ") within its deadline of "
+                            + Durations.format(task.deadline()),
+                    null);
+        }
+        Witness witness = CriticalInstant.schedule(task, hp, blocker, job, preemptive);
+        return new TaskResult(task, OptionalLong.of(worst), Verdict.MISSES,
+                "worst-case response time " + Durations.format(worst) + " (" + where + ") exceeds its deadline of "
+                        + Durations.format(task.deadline()) + " by " + Durations.format(worst - task.deadline()),
+                witness);
+    }
+
+    static TaskResult notAnalysed(Task task, String why) {
+        return new TaskResult(task, OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + why, null);
+    }
+}

@@ -1,0 +1,187 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+import org.rsaml.analysis.ProcessorResult;
+import org.rsaml.analysis.SchedulabilityAnalysis;
+import org.rsaml.analysis.SchedulingPolicy;
+import org.rsaml.analysis.Task;
+import org.rsaml.analysis.TaskResult;
+import org.rsaml.analysis.Verdict;
+
+/**
+ * The analysis against an independent simulation on random synchronous periodic task sets. The number
+ * of sets and the seed come from the system properties {@code rsaml.analysis.sets} (default 2000) and
+ * {@code rsaml.analysis.seed}; for a longer run:
+ * {@code ./mvnw -o -pl tests/org.rsaml.analysis.tests -am verify -Drsaml.analysis.sets=100000 -Drsaml.analysis.seed=42}.
+ */
+class RandomTaskSetsTest {
+
+    /** Periods divide 240, so a hyperperiod holds at most 240 time units. */
+    private static final long[] PERIODS = { 2, 3, 4, 5, 6, 8, 10, 12, 15, 16, 20, 24, 30, 40, 48, 60, 80, 120, 240 };
+    private static final long[] SCALES = { 1, 1_000, 1_000_000 };
+
+    private static final int SETS = Integer.getInteger("rsaml.analysis.sets", 2000);
+    private static final long SEED = Long.getLong("rsaml.analysis.seed", 20260101L);
+
+    private enum Deadlines { IMPLICIT, CONSTRAINED, ARBITRARY }
+
+    /** A random set with utilisation at most 1, distinct priorities in random order (not always monotonic). */
+    private static List<Task> randomSet(Random random, Deadlines kind) {
+        while (true) {
+            int n = 1 + random.nextInt(6);
+            long scale = SCALES[random.nextInt(SCALES.length)];
+            double target = 0.3 + 0.7 * random.nextDouble();
+            List<Integer> priorities = new ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                priorities.add(i);
+            }
+            Collections.shuffle(priorities, random);
+            boolean monotonic = random.nextBoolean();
+            List<Task> tasks = new ArrayList<>();
+            double left = target;
+            for (int i = 0; i < n; i++) {
+                long period = PERIODS[random.nextInt(PERIODS.length)];
+                double share = i == n - 1 ? left : left * random.nextDouble();
+                left -= share;
+                long cost = Math.max(1, Math.round(share * period));
+                if (cost > period) {
+                    cost = period;
+                }
+                long deadline = switch (kind) {
+                    case IMPLICIT -> period;
+                    case CONSTRAINED -> cost + (long) (random.nextDouble() * (period - cost + 1));
+                    case ARBITRARY -> cost + (long) (random.nextDouble() * (3 * period - cost + 1));
+                };
+                deadline = Math.max(deadline, 1);
+                tasks.add(new Task("t" + i, period * scale, deadline * scale, cost * scale, priorities.get(i)));
+            }
+            if (monotonic) {
+                // deadline monotonic, ties by index
+                List<Task> sorted = new ArrayList<>(tasks);
+                sorted.sort((a, b) -> Long.compare(b.deadline(), a.deadline()));
+                List<Task> ranked = new ArrayList<>();
+                for (Task t : tasks) {
+                    ranked.add(new Task(t.name(), t.period(), t.deadline(), t.cost(), sorted.indexOf(t)));
+                }
+                tasks = ranked;
+            }
+            long num = 0;
+            long h = Simulator.hyperperiod(tasks);
+            for (Task t : tasks) {
+                num += t.cost() * (h / t.period());
+            }
+            if (num <= h) {
+                return tasks;
+            }
+        }
+    }
+
+    private static void fixedPriorityAgreesWithSimulation(Deadlines kind, long seed) {
+        Random random = new Random(seed);
+        int misses = 0;
+        for (int s = 0; s < SETS; s++) {
+            List<Task> tasks = randomSet(random, kind);
+            ProcessorResult result = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, tasks);
+            long[] simulated = Simulator.worstResponses(tasks, Simulator.Mode.FIXED_PRIORITY, Simulator.hyperperiod(tasks));
+            boolean simMiss = false;
+            for (int i = 0; i < tasks.size(); i++) {
+                TaskResult r = result.tasks().get(i);
+                if (r.responseTime().isEmpty() || r.responseTime().getAsLong() != simulated[i]) {
+                    fail("set " + s + " (seed " + seed + "), " + kind + ", task " + tasks.get(i) + ": analysis " + r.responseTime()
+                            + ", simulation " + simulated[i] + "; tasks " + tasks);
+                }
+                simMiss |= simulated[i] > tasks.get(i).deadline();
+                assertEquals(simulated[i] > tasks.get(i).deadline() ? Verdict.MISSES : Verdict.MEETS, r.verdict());
+            }
+            assertEquals(simMiss ? Verdict.MISSES : Verdict.MEETS, result.verdict());
+            misses += simMiss ? 1 : 0;
+        }
+        // both outcomes must occur, or the comparison shows little
+        assertTrue(misses > SETS / 20 && misses < SETS - SETS / 20, misses + " of " + SETS + " sets miss");
+    }
+
+    @Test
+    void fixedPriorityConstrainedDeadlinesEqualSimulation() {
+        fixedPriorityAgreesWithSimulation(Deadlines.CONSTRAINED, SEED);
+    }
+
+    @Test
+    void fixedPriorityArbitraryDeadlinesEqualSimulation() {
+        fixedPriorityAgreesWithSimulation(Deadlines.ARBITRARY, SEED + 1);
+    }
+
+    @Test
+    void fixedPriorityImplicitDeadlinesEqualSimulation() {
+        fixedPriorityAgreesWithSimulation(Deadlines.IMPLICIT, SEED + 2);
+    }
+
+    @Test
+    void edfDemandTestEqualsSimulation() {
+        for (Deadlines kind : Deadlines.values()) {
+            Random random = new Random(SEED + 10 + kind.ordinal());
+            int misses = 0;
+            for (int s = 0; s < SETS; s++) {
+                List<Task> tasks = randomSet(random, kind);
+                ProcessorResult result = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.EDF, tasks);
+                long[] simulated = Simulator.worstResponses(tasks, Simulator.Mode.EDF, Simulator.hyperperiod(tasks));
+                boolean simMiss = false;
+                for (int i = 0; i < tasks.size(); i++) {
+                    simMiss |= simulated[i] > tasks.get(i).deadline();
+                }
+                misses += simMiss ? 1 : 0;
+                if ((result.verdict() == Verdict.MISSES) != simMiss || result.verdict() == Verdict.NOT_ANALYSED) {
+                    fail("set " + s + ", " + kind + ": analysis " + result.verdict() + " (" + result.explanation() + "), simulation "
+                            + (simMiss ? "misses" : "meets") + "; tasks " + tasks);
+                }
+                if (simMiss) {
+                    // the witness interval really is overloaded
+                    assertTrue(result.demand().demand() > result.demand().interval(), result.demand().toString());
+                }
+            }
+            if (kind != Deadlines.IMPLICIT) {
+                assertTrue(misses > 0, kind + ": no set misses, the comparison shows little");
+            } else {
+                assertEquals(0, misses, "EDF with deadlines equal to periods and U <= 1 never misses");
+            }
+        }
+    }
+
+    /** Non-preemptive analysis is an upper bound: no simulated response exceeds it. */
+    @Test
+    void nonPreemptiveBoundsSimulation() {
+        Random random = new Random(SEED + 20);
+        for (int s = 0; s < SETS; s++) {
+            List<Task> tasks = randomSet(random, Deadlines.ARBITRARY);
+            ProcessorResult result = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY_NON_PREEMPTIVE, tasks);
+            long[] simulated = Simulator.worstResponses(tasks, Simulator.Mode.NON_PREEMPTIVE, Simulator.hyperperiod(tasks));
+            for (int i = 0; i < tasks.size(); i++) {
+                TaskResult r = result.tasks().get(i);
+                if (r.verdict() == Verdict.NOT_ANALYSED) {
+                    continue;
+                }
+                if (r.responseTime().isPresent()) {
+                    assertTrue(simulated[i] <= r.responseTime().getAsLong(), "set " + s + " task " + tasks.get(i) + ": simulated "
+                            + simulated[i] + " > bound " + r.responseTime() + "; tasks " + tasks);
+                } else {
+                    assertEquals(Verdict.MISSES, r.verdict());
+                }
+                if (r.verdict() == Verdict.MEETS) {
+                    assertTrue(simulated[i] <= tasks.get(i).deadline());
+                }
+            }
+        }
+    }
+}

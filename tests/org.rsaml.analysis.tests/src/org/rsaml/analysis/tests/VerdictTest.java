@@ -1,0 +1,104 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import org.rsaml.analysis.ProcessorResult;
+import org.rsaml.analysis.SchedulabilityAnalysis;
+import org.rsaml.analysis.SchedulingPolicy;
+import org.rsaml.analysis.Task;
+import org.rsaml.analysis.TaskResult;
+import org.rsaml.analysis.Verdict;
+
+/** What cannot be proven is said plainly: never a silent pass. */
+class VerdictTest {
+
+    private static final long MS = 1_000_000L;
+
+    @ParameterizedTest
+    @EnumSource(value = SchedulingPolicy.class, names = { "LLF", "ROUND_ROBIN", "SJF", "OTHER" })
+    void policiesWithoutSoundAnalysisAreNotAnalysed(SchedulingPolicy policy) {
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", policy,
+                List.of(Task.implicit("a", 10 * MS, 1 * MS, 1), Task.implicit("b", 20 * MS, 2 * MS, 1)));
+        assertEquals(Verdict.NOT_ANALYSED, r.verdict());
+        assertTrue(r.explanation().startsWith("not analysed: "), r.explanation());
+        for (TaskResult t : r.tasks()) {
+            assertEquals(Verdict.NOT_ANALYSED, t.verdict());
+            assertTrue(t.explanation().length() > 40, t.explanation());
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = SchedulingPolicy.class, names = { "LLF", "ROUND_ROBIN", "SJF", "OTHER", "EDF" })
+    void overloadIsAMissUnderAnyPolicy(SchedulingPolicy policy) {
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", policy,
+                List.of(Task.implicit("a", 10 * MS, 6 * MS, 1), Task.implicit("b", 20 * MS, 9 * MS, 1)));
+        assertEquals(Verdict.MISSES, r.verdict());
+        assertEquals("1.0500", r.utilisation().toString());
+        assertTrue(r.demand().demand() > r.demand().interval(), r.demand().toString());
+        assertTrue(r.explanation().contains("no scheduler can meet every deadline"), r.explanation());
+    }
+
+    @Test
+    void llfUtilisationIsNecessaryOnly() {
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.LLF, List.of(Task.implicit("a", 10 * MS, 5 * MS, 1)));
+        assertEquals(Verdict.NOT_ANALYSED, r.verdict());
+        assertTrue(r.bounds().get(0).holds());
+        assertTrue(r.explanation().contains("least laxity first"), r.explanation());
+    }
+
+    @Test
+    void overloadedFixedPriorityTaskHasNoBoundedResponseTime() {
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY,
+                List.of(Task.implicit("a", 10 * MS, 6 * MS, 2), Task.implicit("b", 20 * MS, 9 * MS, 1)));
+        TaskResult b = r.tasks().get(1);
+        assertEquals(Verdict.MISSES, b.verdict());
+        assertTrue(b.responseTime().isEmpty());
+        assertTrue(b.explanation().contains("grows without bound"), b.explanation());
+        assertEquals(Verdict.MEETS, r.tasks().get(0).verdict());
+    }
+
+    @Test
+    void timesBeyondSixtyFourBitsAreNotAnalysed() {
+        // b's response time, 2^62 ns of work plus 1.5 * 2^62 ns of release jitter, exceeds 2^63 ns
+        long big = 1L << 62;
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY,
+                List.of(new Task("a", big, big, big / 2, 2), new Task("b", big, Long.MAX_VALUE, big / 2, 1, big + big / 2)));
+        TaskResult b = r.tasks().get(1);
+        assertEquals(Verdict.NOT_ANALYSED, b.verdict());
+        assertTrue(b.explanation().contains("2^63 ns"), b.explanation());
+    }
+
+    @Test
+    void equalPrioritiesDelayEachOther() {
+        // run first-in first-out at one priority: either can be released just after the other
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY,
+                List.of(Task.implicit("a", 10 * MS, 3 * MS, 1), Task.implicit("b", 10 * MS, 4 * MS, 1)));
+        assertEquals(7 * MS, r.tasks().get(0).responseTime().getAsLong());
+        assertEquals(7 * MS, r.tasks().get(1).responseTime().getAsLong());
+    }
+
+    @Test
+    void badTasksAreRefusedWithTheirName() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new Task("scan", 0, 1, 1, 1));
+        assertEquals("Task 'scan': the period must be positive, not 0 ns", e.getMessage());
+        IllegalArgumentException dup = assertThrows(IllegalArgumentException.class, () -> SchedulabilityAnalysis.analyse("cpu0",
+                SchedulingPolicy.EDF, List.of(Task.implicit("x", 5, 1, 1), Task.implicit("x", 6, 1, 1))));
+        assertEquals("Processor 'cpu0': two tasks are named 'x'", dup.getMessage());
+    }
+
+    @Test
+    void noTasksMeetTrivially() {
+        assertEquals(Verdict.MEETS, SchedulabilityAnalysis.analyse("idle", SchedulingPolicy.FIXED_PRIORITY, List.of()).verdict());
+    }
+}
