@@ -14,6 +14,7 @@ import org.rsaml.analysis.internal.Bounds;
 import org.rsaml.analysis.internal.Durations;
 import org.rsaml.analysis.internal.ProcessorDemand;
 import org.rsaml.analysis.internal.ResponseTimes;
+import org.rsaml.analysis.internal.Utilisation;
 
 /**
  * Schedulability of the tasks of one processor, under the processor's policy. Each verdict is sound:
@@ -37,13 +38,10 @@ public final class SchedulabilityAnalysis {
                 throw new IllegalArgumentException("Processor '" + processor + "': two tasks are named '" + t.name() + "'");
             }
         }
-        Rational u = Rational.ZERO;
-        for (Task t : tasks) {
-            u = u.plus(Rational.of(t.cost(), t.period()));
-        }
+        Utilisation u = new Utilisation(tasks);
         List<BoundCheck> bounds = Bounds.check(policy, tasks, u);
         if (tasks.isEmpty()) {
-            return new ProcessorResult(processor, policy, List.of(), u, bounds, Verdict.MEETS, "no tasks", null);
+            return new ProcessorResult(processor, policy, List.of(), 0, bounds, Verdict.MEETS, "no tasks", null);
         }
         return switch (policy) {
             case FIXED_PRIORITY, FIXED_PRIORITY_NON_PREEMPTIVE -> fixedPriority(processor, policy, tasks, u, bounds);
@@ -52,14 +50,40 @@ public final class SchedulabilityAnalysis {
         };
     }
 
-    private static ProcessorResult fixedPriority(String processor, SchedulingPolicy policy, List<Task> tasks, Rational u,
+    private static ProcessorResult fixedPriority(String processor, SchedulingPolicy policy, List<Task> tasks, Utilisation u,
             List<BoundCheck> bounds) {
-        List<TaskResult> results = new ArrayList<>();
+        TaskResult[] byIndex = new TaskResult[tasks.size()];
+        if (policy == SchedulingPolicy.FIXED_PRIORITY) {
+            // highest first, so that each task's first-job window seeds the next one's iteration
+            int[] effective = new int[tasks.size()];
+            List<Integer> order = new ArrayList<>();
+            for (int i = 0; i < tasks.size(); i++) {
+                effective[i] = ResponseTimes.effectivePriority(tasks, tasks.get(i));
+                order.add(i);
+            }
+            order.sort((a, b) -> Integer.compare(effective[b], effective[a]));
+            List<long[]> done = new ArrayList<>(); // {effective priority, first-job window}
+            long[] window = new long[1];
+            for (int i : order) {
+                Task t = tasks.get(i);
+                long seed = 0;
+                for (int k = done.size() - 1; k >= 0; k--) {
+                    if (done.get(k)[0] > t.priority()) {
+                        seed = Math.max(0, done.get(k)[1]);
+                        break;
+                    }
+                }
+                byIndex[i] = ResponseTimes.preemptive(tasks, t, effective[i], seed, window);
+                done.add(new long[] { effective[i], window[0] });
+            }
+        } else {
+            for (int i = 0; i < tasks.size(); i++) {
+                byIndex[i] = ResponseTimes.nonPreemptive(tasks, tasks.get(i));
+            }
+        }
+        List<TaskResult> results = List.of(byIndex);
         Verdict verdict = Verdict.MEETS;
-        for (Task t : tasks) {
-            TaskResult r = policy == SchedulingPolicy.FIXED_PRIORITY ? ResponseTimes.preemptive(tasks, t)
-                    : ResponseTimes.nonPreemptive(tasks, t);
-            results.add(r);
+        for (TaskResult r : results) {
             verdict = verdict.and(r.verdict());
         }
         long missed = results.stream().filter(r -> r.verdict() == Verdict.MISSES).count();
@@ -71,17 +95,17 @@ public final class SchedulabilityAnalysis {
             case MISSES -> method + ": " + missed + " of " + tasks.size() + " tasks can miss their deadline";
             default -> method + ": " + open + " of " + tasks.size() + " tasks not analysed";
         };
-        return new ProcessorResult(processor, policy, results, u, bounds, verdict, explanation, null);
+        return new ProcessorResult(processor, policy, results, u.value, bounds, verdict, explanation, null);
     }
 
-    private static ProcessorResult edf(String processor, List<Task> tasks, Rational u, List<BoundCheck> bounds) {
+    private static ProcessorResult edf(String processor, List<Task> tasks, Utilisation u, List<BoundCheck> bounds) {
         ProcessorDemand.Outcome outcome = ProcessorDemand.decide(tasks, u);
         List<TaskResult> results = new ArrayList<>();
         if (outcome.undecided() != null) {
             for (Task t : tasks) {
                 results.add(new TaskResult(t, OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + outcome.undecided(), null));
             }
-            return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u, bounds, Verdict.NOT_ANALYSED,
+            return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u.value, bounds, Verdict.NOT_ANALYSED,
                     "processor-demand test not decided: " + outcome.undecided(), null);
         }
         if (outcome.feasible()) {
@@ -89,7 +113,7 @@ public final class SchedulabilityAnalysis {
                 results.add(new TaskResult(t, OptionalLong.empty(), Verdict.MEETS,
                         "meets its deadline: the processor-demand test holds (response time not computed under EDF)", null));
             }
-            return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u, bounds, Verdict.MEETS,
+            return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u.value, bounds, Verdict.MEETS,
                     "processor-demand test (QPA): every interval holds its demand, so EDF meets every deadline", null);
         }
         DemandWitness w = outcome.witness();
@@ -103,12 +127,13 @@ public final class SchedulabilityAnalysis {
                         "not analysed individually: under an EDF overload any task can be late", null));
             }
         }
-        return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u, bounds, Verdict.MISSES,
+        return new ProcessorResult(processor, SchedulingPolicy.EDF, results, u.value, bounds, Verdict.MISSES,
                 overload(u, w), w);
     }
 
-    private static String overload(Rational u, DemandWitness w) {
-        String head = u.compareTo(Rational.ONE) > 0 ? "utilisation " + u + " exceeds 1" : "processor-demand test (QPA) fails";
+    private static String overload(Utilisation u, DemandWitness w) {
+        String head = u.versusOne() > 0 ? "utilisation " + String.format(java.util.Locale.ROOT, "%.4f", u.value) + " exceeds 1"
+                : "processor-demand test (QPA) fails";
         if (w == null) {
             return head + ": no scheduler can meet every deadline";
         }
@@ -116,7 +141,7 @@ public final class SchedulabilityAnalysis {
                 + Durations.format(w.demand()) + ", so no scheduler can meet every deadline";
     }
 
-    private static ProcessorResult unanalysed(String processor, SchedulingPolicy policy, List<Task> tasks, Rational u,
+    private static ProcessorResult unanalysed(String processor, SchedulingPolicy policy, List<Task> tasks, Utilisation u,
             List<BoundCheck> bounds) {
         // Infeasible for every scheduler is infeasible for this one: the demand test still decides misses.
         ProcessorDemand.Outcome outcome = ProcessorDemand.decide(tasks, u);
@@ -136,12 +161,12 @@ public final class SchedulabilityAnalysis {
                 results.add(new TaskResult(t, OptionalLong.empty(), involved ? Verdict.MISSES : Verdict.NOT_ANALYSED,
                         involved ? "can miss its deadline: " + overload(u, w) : "not analysed: " + reason, null));
             }
-            return new ProcessorResult(processor, policy, results, u, bounds, Verdict.MISSES, overload(u, w), w);
+            return new ProcessorResult(processor, policy, results, u.value, bounds, Verdict.MISSES, overload(u, w), w);
         }
         for (Task t : tasks) {
             results.add(new TaskResult(t, OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + reason, null));
         }
-        return new ProcessorResult(processor, policy, results, u, bounds, Verdict.NOT_ANALYSED,
+        return new ProcessorResult(processor, policy, results, u.value, bounds, Verdict.NOT_ANALYSED,
                 "not analysed: " + reason + " (the tasks pass the necessary demand test)", null);
     }
 }

@@ -18,8 +18,11 @@ package org.rsaml.analysis;
  * @param cost     C &ge; 0, the worst-case execution time
  * @param priority fixed priority under fixed-priority policies, ignored by EDF
  * @param jitter   J &ge; 0, release jitter
+ * @param group    tasks of one group exclude each other through a lock without priority inheritance
+ *                 (null: none); under preemptive fixed priorities each is analysed at the lowest
+ *                 priority of its group, with every task at or above that priority delaying it
  */
-public record Task(String name, long period, long deadline, long cost, int priority, long jitter) {
+public record Task(String name, long period, long deadline, long cost, int priority, long jitter, String group) {
 
     public Task {
         if (name == null || name.isBlank()) {
@@ -39,13 +42,18 @@ public record Task(String name, long period, long deadline, long cost, int prior
         }
     }
 
-    /** A task without release jitter. */
+    /** A task that shares no lock. */
+    public Task(String name, long period, long deadline, long cost, int priority, long jitter) {
+        this(name, period, deadline, cost, priority, jitter, null);
+    }
+
+    /** A task without release jitter that shares no lock. */
     public Task(String name, long period, long deadline, long cost, int priority) {
-        this(name, period, deadline, cost, priority, 0);
+        this(name, period, deadline, cost, priority, 0, null);
     }
 
     /** A task whose deadline is its period. */
     public static Task implicit(String name, long period, long cost, int priority) {
-        return new Task(name, period, period, cost, priority, 0);
+        return new Task(name, period, period, cost, priority, 0, null);
     }
 }

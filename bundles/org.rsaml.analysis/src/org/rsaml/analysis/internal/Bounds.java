@@ -24,9 +24,9 @@ public final class Bounds {
     private Bounds() {
     }
 
-    public static List<BoundCheck> check(SchedulingPolicy policy, List<Task> tasks, Rational u) {
+    public static List<BoundCheck> check(SchedulingPolicy policy, List<Task> tasks, Utilisation utilisation) {
         List<BoundCheck> checks = new ArrayList<>();
-        checks.add(new BoundCheck("utilisation", false, "U <= 1", true, u.compareTo(Rational.ONE) <= 0,
+        checks.add(new BoundCheck("utilisation", false, "U <= 1", true, utilisation.versusOne() <= 0,
                 "necessary under any scheduler"));
         if (policy != SchedulingPolicy.FIXED_PRIORITY || tasks.isEmpty()) {
             return checks;
@@ -45,6 +45,7 @@ public final class Bounds {
         String how;
         if (n <= EXACT_LIMIT) {
             // U <= n (2^(1/n) - 1)  <=>  (p + n q)^n <= 2 (n q)^n  with U = p / q
+            Rational u = utilisation.exact();
             BigInteger p = u.numerator();
             BigInteger nq = u.denominator().multiply(BigInteger.valueOf(n));
             llHolds = p.add(nq).pow(n).compareTo(nq.pow(n).shiftLeft(1)) <= 0;
@@ -61,7 +62,7 @@ public final class Bounds {
             for (Task t : tasks) {
                 logProduct += Math.log1p((double) t.cost() / t.period());
             }
-            llHolds = u.doubleValue() <= ll - MARGIN;
+            llHolds = utilisation.value <= ll - MARGIN;
             hypHolds = logProduct <= Math.log(2) - MARGIN;
             how = "floating point with a margin of " + MARGIN + " (more than " + EXACT_LIMIT + " tasks)";
         }
@@ -82,13 +83,27 @@ public final class Bounds {
                 return "not applicable: task '" + t.name() + "' has release jitter";
             }
         }
-        for (Task a : tasks) {
-            for (Task b : tasks) {
-                if (a.period() < b.period() && a.priority() <= b.priority()) {
-                    return "not applicable: priorities are not rate monotonic ('" + a.name() + "' has the shorter period but not the higher priority than '"
-                            + b.name() + "')";
+        // by period; every task must have a higher priority than all tasks of longer periods
+        List<Task> sorted = new ArrayList<>(tasks);
+        sorted.sort(java.util.Comparator.comparingLong(Task::period));
+        Task lowest = null; // the lowest-priority task of the shorter periods seen so far
+        int i = 0;
+        while (i < sorted.size()) {
+            int j = i;
+            while (j < sorted.size() && sorted.get(j).period() == sorted.get(i).period()) {
+                Task b = sorted.get(j);
+                if (lowest != null && lowest.priority() <= b.priority()) {
+                    return "not applicable: priorities are not rate monotonic ('" + lowest.name()
+                            + "' has the shorter period but not the higher priority than '" + b.name() + "')";
+                }
+                j++;
+            }
+            for (int k = i; k < j; k++) {
+                if (lowest == null || sorted.get(k).priority() < lowest.priority()) {
+                    lowest = sorted.get(k);
                 }
             }
+            i = j;
         }
         return null;
     }

@@ -4,13 +4,11 @@
  */
 package org.rsaml.analysis.internal;
 
-import java.math.BigInteger;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
 import org.rsaml.analysis.DemandWitness;
-import org.rsaml.analysis.Rational;
 import org.rsaml.analysis.Task;
 
 /**
@@ -68,7 +66,7 @@ public final class ProcessorDemand {
         return best;
     }
 
-    public static Outcome decide(List<Task> tasks, Rational utilisation) {
+    public static Outcome decide(List<Task> tasks, Utilisation utilisation) {
         try {
             for (Task task : tasks) {
                 long due = task.deadline() - task.jitter();
@@ -77,7 +75,7 @@ public final class ProcessorDemand {
                     return new Outcome(false, witness(tasks, t), null);
                 }
             }
-            if (utilisation.compareTo(Rational.ONE) > 0) {
+            if (utilisation.versusOne() > 0) {
                 return new Outcome(false, overloadWitness(tasks, utilisation), null);
             }
             // synchronous busy period
@@ -100,19 +98,19 @@ public final class ProcessorDemand {
                 busy = next;
             }
             long limit = busy;
-            if (utilisation.compareTo(Rational.ONE) < 0) {
-                // La (Zhang & Burns): max(D - T, sum (T - D) U / (1 - U)), D shortened by the jitter
-                Rational sum = Rational.ZERO;
+            if (utilisation.clearlyBelowOne()) {
+                // La (Zhang & Burns): max(D - T, sum (T - D) U / (1 - U)), D shortened by the jitter; any
+                // larger bound is as exact, so floating point rounded up generously is safe
+                double sum = 0;
                 long la = Long.MIN_VALUE;
                 for (Task task : tasks) {
                     long due = task.deadline() - task.jitter();
                     la = Math.max(la, due - task.period());
-                    sum = sum.plus(Rational.of(BigInteger.valueOf(task.period() - due).multiply(BigInteger.valueOf(task.cost())),
-                            BigInteger.valueOf(task.period())));
+                    sum += (double) (task.period() - due) * task.cost() / task.period();
                 }
-                BigInteger bound = sum.dividedBy(Rational.ONE.minus(utilisation)).ceiling();
-                if (bound.bitLength() < 63) {
-                    la = Math.max(la, bound.longValue());
+                double bound = Math.ceil(sum / (1 - utilisation.value) * (1 + 1e-9)) + 1;
+                if (bound < 0x1p62) {
+                    la = Math.max(la, (long) bound);
                     limit = Math.min(limit, la);
                 }
             }
@@ -144,24 +142,26 @@ public final class ProcessorDemand {
      * With U &gt; 1 the demand h(t) &gt; U t - sum C (D - J) / T, which exceeds t from
      * t = sum C (D - J) / T / (U - 1) on.
      */
-    private static DemandWitness overloadWitness(List<Task> tasks, Rational utilisation) {
-        Rational offset = Rational.ZERO;
+    private static DemandWitness overloadWitness(List<Task> tasks, Utilisation utilisation) {
+        double offset = 0;
         long start = 0;
         for (Task task : tasks) {
             long due = Math.max(0, task.deadline() - task.jitter());
-            offset = offset.plus(Rational.of(BigInteger.valueOf(task.cost()).multiply(BigInteger.valueOf(due)),
-                    BigInteger.valueOf(task.period())));
+            offset += (double) task.cost() * due / task.period();
             start = Math.max(start, due);
         }
-        BigInteger t = offset.dividedBy(utilisation.minus(Rational.ONE)).ceiling().max(BigInteger.valueOf(start));
-        if (t.bitLength() >= 62) {
-            return null;
+        double guess = Math.ceil(offset / (utilisation.value - 1) * (1 + 1e-9)) + 1;
+        long t = Math.max(start, guess >= 0x1p61 ? Long.MAX_VALUE / 4 : (long) guess);
+        // the guess comes from floating point: confirm it, doubling while not overloaded
+        for (int i = 0; i < 64 && t < Long.MAX_VALUE / 4; i++, t *= 2) {
+            long at = latestDeadlineAtMost(tasks, t);
+            if (at != Long.MIN_VALUE && demand(tasks, at) > at) {
+                return witness(tasks, at);
+            }
+            if (demand(tasks, t) > t) {
+                return witness(tasks, t);
+            }
         }
-        long at = latestDeadlineAtMost(tasks, t.longValue() + 1);
-        // the latest deadline at or before t is often overloaded already; otherwise t itself is
-        if (at != Long.MIN_VALUE && demand(tasks, at) > at) {
-            return witness(tasks, at);
-        }
-        return witness(tasks, t.longValue() + 1);
+        return null;
     }
 }

@@ -40,23 +40,93 @@ public final class ResponseTimes {
         return hp;
     }
 
-    static Rational utilisation(Task task, List<Task> others) {
-        Rational u = Rational.of(task.cost(), task.period());
-        for (Task t : others) {
-            u = u.plus(Rational.of(t.cost(), t.period()));
+    /**
+     * The lowest priority of the task's lock group: a lower-priority member holding the lock makes the
+     * task wait, and whatever preempts that member delays the task too (no priority inheritance).
+     */
+    public static int effectivePriority(List<Task> tasks, Task task) {
+        int p = task.priority();
+        if (task.group() != null) {
+            for (Task t : tasks) {
+                if (task.group().equals(t.group())) {
+                    p = Math.min(p, t.priority());
+                }
+            }
         }
-        return u;
+        return p;
+    }
+
+    /**
+     * The utilisation of the task and the others, compared with 1 (as compareTo does). In floating
+     * point when clearly away from 1; exactly (fractions whose denominators can grow large) only near it.
+     */
+    static int utilisationVersusOne(Task task, List<Task> others) {
+        double u = (double) task.cost() / task.period();
+        for (Task t : others) {
+            u += (double) t.cost() / t.period();
+        }
+        if (u > 1 + 1e-9) {
+            return 1;
+        }
+        if (u < 1 - 1e-9) {
+            return -1;
+        }
+        Rational exact = Rational.of(task.cost(), task.period());
+        for (Task t : others) {
+            exact = exact.plus(Rational.of(t.cost(), t.period()));
+        }
+        return exact.compareTo(Rational.ONE);
+    }
+
+    private static String levelOverload(Task task, List<Task> others) {
+        double u = (double) task.cost() / task.period();
+        for (Task t : others) {
+            u += (double) t.cost() / t.period();
+        }
+        return "the tasks at or above its priority use " + String.format(java.util.Locale.ROOT, "%.4f", u)
+                + " of the processor, more than all of it: its response time grows without bound";
     }
 
     /** Preemptive fixed priority, constrained or arbitrary deadlines, release jitter. */
     public static TaskResult preemptive(List<Task> tasks, Task task) {
-        List<Task> hp = interfering(tasks, task);
-        Rational level = utilisation(task, hp);
-        if (level.compareTo(Rational.ONE) > 0) {
-            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, "the tasks at or above its priority use "
-                    + level + " of the processor, more than all of it: its response time grows without bound", null);
+        return preemptive(tasks, task, effectivePriority(tasks, task), 0, null);
+    }
+
+    /**
+     * @param effective   the task's priority as analysed (see {@link #effectivePriority})
+     * @param seed        a lower bound of the window the first job needs beyond its own cost: the
+     *                    first-job window of a task p with hp(p) and p itself all delaying this task
+     *                    (the window of this task is at least its cost plus p's); 0 when none is known
+     * @param firstWindow when not null, receives this task's first-job window (or -1)
+     */
+    public static TaskResult preemptive(List<Task> tasks, Task task, int effective, long seed, long[] firstWindow) {
+        if (firstWindow != null) {
+            firstWindow[0] = -1;
+        }
+        List<Task> hp = new ArrayList<>();
+        for (Task t : tasks) {
+            if (t != task && t.priority() >= effective) {
+                hp.add(t);
+            }
+        }
+        Task analysed = effective == task.priority() ? task
+                : new Task(task.name(), task.period(), task.deadline(), task.cost(), effective, task.jitter(), task.group());
+        if (utilisationVersusOne(task, hp) > 0) {
+            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, levelOverload(task, hp), null);
         }
         try {
+            int n = hp.size();
+            long[] period = new long[n];
+            long[] cost = new long[n];
+            long[] jitter = new long[n];
+            long base = 0;
+            for (int k = 0; k < n; k++) {
+                Task t = hp.get(k);
+                period[k] = t.period();
+                cost[k] = t.cost();
+                jitter[k] = t.jitter();
+                base = Math.addExact(base, t.cost());
+            }
             long worst = -1;
             long worstJob = 0;
             long steps = 0;
@@ -64,35 +134,40 @@ public final class ResponseTimes {
                 if (q >= MAX_JOBS) {
                     return notAnalysed(task, "its busy period holds more than " + MAX_JOBS + " of its jobs");
                 }
-                long own = Arith.mul(q + 1, task.cost());
-                long w = own;
-                for (Task t : hp) {
-                    w = Arith.add(w, t.cost());
-                }
+                long own = Math.multiplyExact(q + 1, task.cost());
+                long w = Math.addExact(own, q == 0 ? Math.max(base, seed) : base);
                 while (true) {
                     if (++steps > MAX_STEPS) {
                         return notAnalysed(task, "the response-time iteration did not settle within " + MAX_STEPS + " steps");
                     }
                     long next = own;
-                    for (Task t : hp) {
-                        next = Arith.add(next, Arith.mul(Arith.ceilDiv(Arith.add(w, t.jitter()), t.period()), t.cost()));
+                    for (int k = 0; k < n; k++) {
+                        long x = Math.addExact(w, jitter[k]);
+                        long jobs = x / period[k] + (x % period[k] == 0 ? 0 : 1);
+                        next = Math.addExact(next, Math.multiplyExact(jobs, cost[k]));
                     }
                     if (next == w) {
                         break;
                     }
                     w = next;
                 }
-                long response = Arith.add(w - Arith.mul(q, task.period()), task.jitter());
+                if (q == 0 && firstWindow != null) {
+                    firstWindow[0] = w;
+                }
+                long response = Math.addExact(w - Math.multiplyExact(q, task.period()), task.jitter());
                 if (response > worst) {
                     worst = response;
                     worstJob = q;
                 }
                 // the level-i busy period ends before the next job is released
-                if (Arith.add(w, task.jitter()) <= Arith.mul(q + 1, task.period())) {
+                if (Math.addExact(w, task.jitter()) <= Math.multiplyExact(q + 1, task.period())) {
                     break;
                 }
             }
-            return result(task, worst, worstJob, hp, null, true);
+            TaskResult r = result(analysed, worst, worstJob, hp, null, true);
+            String lock = analysed == task ? ""
+                    : " (waiting for its lock group '" + task.group() + "', as if at priority " + effective + ")";
+            return new TaskResult(task, r.responseTime(), r.verdict(), r.explanation() + lock, r.witness());
         } catch (ArithmeticException e) {
             return notAnalysed(task, new Arith.TooLarge().getMessage());
         }
@@ -115,12 +190,11 @@ public final class ResponseTimes {
         if (blocking == 0) {
             blocker = null;
         }
-        Rational level = utilisation(task, hp);
-        if (level.compareTo(Rational.ONE) > 0) {
-            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, "the tasks at or above its priority use "
-                    + level + " of the processor, more than all of it: its response time grows without bound", null);
+        int level = utilisationVersusOne(task, hp);
+        if (level > 0) {
+            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, levelOverload(task, hp), null);
         }
-        if (level.equals(Rational.ONE) && blocking > 0) {
+        if (level == 0 && blocking > 0) {
             return notAnalysed(task, "the tasks at or above its priority use all of the processor and a lower-priority job"
                     + " can block it, so its busy period need not end");
         }

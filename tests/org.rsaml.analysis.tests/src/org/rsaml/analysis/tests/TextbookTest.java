@@ -118,7 +118,7 @@ class TextbookTest {
         Task[] set = { Task.implicit("tau1", 4 * MS, 1 * MS, 3), Task.implicit("tau2", 6 * MS, 2 * MS, 2),
                 Task.implicit("tau3", 8 * MS, 3 * MS, 1) };
         ProcessorResult rm = analyse(SchedulingPolicy.FIXED_PRIORITY, set);
-        assertEquals("0.9583", rm.utilisation().toString());
+        assertEquals("0.9583", rm.utilisationText());
         assertEquals(1 * MS, of(rm, "tau1").responseTime().getAsLong());
         assertEquals(3 * MS, of(rm, "tau2").responseTime().getAsLong());
         TaskResult tau3 = of(rm, "tau3");
@@ -152,7 +152,7 @@ class TextbookTest {
 
         ProcessorResult harmonic = analyse(SchedulingPolicy.FIXED_PRIORITY, Task.implicit("h1", 2 * MS, 1 * MS, 3),
                 Task.implicit("h2", 4 * MS, 1 * MS, 2), Task.implicit("h3", 8 * MS, 2 * MS, 1));
-        assertEquals("1.0000", harmonic.utilisation().toString());
+        assertEquals("1.0000", harmonic.utilisationText());
         assertFalse(bound(harmonic, "Liu & Layland").holds());
         assertFalse(bound(harmonic, "hyperbolic").holds());
         assertEquals(8 * MS, of(harmonic, "h3").responseTime().getAsLong());

@@ -44,7 +44,7 @@ class VerdictTest {
         ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", policy,
                 List.of(Task.implicit("a", 10 * MS, 6 * MS, 1), Task.implicit("b", 20 * MS, 9 * MS, 1)));
         assertEquals(Verdict.MISSES, r.verdict());
-        assertEquals("1.0500", r.utilisation().toString());
+        assertEquals("1.0500", r.utilisationText());
         assertTrue(r.demand().demand() > r.demand().interval(), r.demand().toString());
         assertTrue(r.explanation().contains("no scheduler can meet every deadline"), r.explanation());
     }
