@@ -49,6 +49,29 @@ class VerdictTest {
         assertTrue(r.explanation().contains("no scheduler can meet every deadline"), r.explanation());
     }
 
+    /**
+     * Releases of one module share the module's lock, without priority inheritance: the high-priority h
+     * waits for l holding the lock while m preempts l, so h can take 2 + 10 + 5 = 17 ms, not 2 ms.
+     */
+    @Test
+    void lockGroupDelaysItsHighPriorityMember() {
+        Task h = new Task("h", 10 * MS, 10 * MS, 2 * MS, 3, 0, "module");
+        Task m = Task.implicit("m", 20 * MS, 5 * MS, 2);
+        Task l = new Task("l", 50 * MS, 50 * MS, 10 * MS, 1, 0, "module");
+        ProcessorResult grouped = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, List.of(h, m, l));
+        TaskResult hr = grouped.tasks().get(0);
+        assertEquals(17 * MS, hr.responseTime().getAsLong());
+        assertEquals(Verdict.MISSES, hr.verdict());
+        assertTrue(hr.explanation().contains("lock group 'module'"), hr.explanation());
+        assertEquals(7 * MS, grouped.tasks().get(1).responseTime().getAsLong(), "m is not delayed by the lock");
+        assertEquals(19 * MS, grouped.tasks().get(2).responseTime().getAsLong());
+
+        ProcessorResult apart = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY,
+                List.of(Task.implicit("h", 10 * MS, 2 * MS, 3), m, Task.implicit("l", 50 * MS, 10 * MS, 1)));
+        assertEquals(2 * MS, apart.tasks().get(0).responseTime().getAsLong());
+        assertEquals(Verdict.MEETS, apart.verdict());
+    }
+
     @Test
     void llfUtilisationIsNecessaryOnly() {
         ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.LLF, List.of(Task.implicit("a", 10 * MS, 5 * MS, 1)));
