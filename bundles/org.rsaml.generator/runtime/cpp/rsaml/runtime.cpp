@@ -5,6 +5,7 @@
 #include "rsaml/runtime.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +28,10 @@ thread_local Activation* current_activation = nullptr;
 volatile std::sig_atomic_t interrupted = 0;
 
 void on_signal(int) { interrupted = 1; }
+
+// The longest run the clock arithmetic can hold without overflow: 2^60 ns (about 36 years), as
+// the generator's limit for modeled times.
+constexpr long long kMaxRunMs = (1LL << 60) / 1000000;
 
 void usage(std::FILE* out, const char* program) {
   std::fprintf(out,
@@ -65,9 +70,11 @@ Options parse_options(int argc, char** argv, const char* program) {
     const std::string arg = argv[i];
     if (arg == "--run-for-ms" && i + 1 < argc) {
       char* end = nullptr;
+      errno = 0;
       const long long value = std::strtoll(argv[++i], &end, 10);
-      if (end == argv[i] || *end != '\0' || value < 0) {
-        std::fprintf(stderr, "%s: --run-for-ms needs a number of milliseconds, not '%s'\n", program, argv[i]);
+      if (end == argv[i] || *end != '\0' || errno == ERANGE || value < 0 || value > kMaxRunMs) {
+        std::fprintf(stderr, "%s: --run-for-ms needs a number of milliseconds from 0 to %lld, not '%s'\n", program, kMaxRunMs,
+                     argv[i]);
         options.exit = true;
         options.status = 2;
         return options;

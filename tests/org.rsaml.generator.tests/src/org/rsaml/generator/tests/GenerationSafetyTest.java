@@ -61,7 +61,8 @@ class GenerationSafetyTest {
 
     /**
      * The longest period the generated code can count (just under 2^60 ns, as period and delay)
-     * builds under the undefined-behaviour sanitizer and runs: no overflow, no busy loop, one release.
+     * builds under the undefined-behaviour sanitizer and runs: no overflow, no busy loop, one release;
+     * and a run longer than the program's clock can count is refused.
      */
     @Test
     void longestCountablePeriodBuildsAndRuns(@TempDir Path tmp) throws Exception {
@@ -76,6 +77,12 @@ class GenerationSafetyTest {
         RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", "200"));
         assertEquals(1, trace.count("release motionControl/motionController.executeInstructions"), trace.output);
         assertFalse(trace.output.contains("runtime error"), trace.output);
+
+        // A run longer than the clock can count is refused, not overflowed.
+        Tools.Result tooLong = Tools.run(out, 60, exe.toString(), "--run-for-ms", "9223372036854775807");
+        assertEquals(2, tooLong.exit(), tooLong.output());
+        assertTrue(tooLong.output().contains("--run-for-ms needs a number of milliseconds from 0 to 1152921504606, not '9223372036854775807'"),
+                tooLong.output());
     }
 
     /** A crafted manifest and links in the output never make stale-file removal touch anything outside it. */
