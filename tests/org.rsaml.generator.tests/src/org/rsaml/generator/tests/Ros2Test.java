@@ -33,11 +33,12 @@ import org.rsaml.model.Module;
 import org.rsaml.validation.ModelLoader;
 
 /**
- * What can be checked of the ROS 2 target without ROS 2: package.xml parses with catkin_pkg, the
- * launch file compiles and, run against stand-in launch modules, starts one node per module in its
- * layer's namespace; every C++ file compiles (g++ -fsyntax-only) against stand-in rclcpp and message
- * headers; connected ports share a topic; every periodic function has a timer. This is not a colcon
- * build against real ROS 2.
+ * What can be checked of the ROS 2 target here: package.xml is valid against the REP 149 format 3
+ * schema and parses with catkin_pkg; every package configures, builds and installs with the real
+ * ament_cmake and rosidl (see {@link Ros2Build}), warnings as errors; the launch file compiles and,
+ * run against stand-in launch modules, starts one node per module in its layer's namespace;
+ * connected ports share a topic; every periodic function has a timer. rclcpp itself is a stand-in:
+ * the nodes are compiled and linked, not run.
  */
 class Ros2Test {
 
@@ -66,6 +67,7 @@ class Ros2Test {
             manifests = s.map(p -> p.resolve("package.xml")).filter(Files::exists).sorted().toList();
         }
         for (Path manifest : manifests) {
+            Ros2Build.validateManifest(manifest);
             String parsed = Tools.ok(out, 60, "python3", "-c", "import sys\nfrom catkin_pkg.package import parse_package\n"
                     + "p = parse_package(sys.argv[1])\nprint(p.package_format, p.name, ' '.join(sorted(d.name for d in p.build_depends)))", manifest.toString());
             assertTrue(parsed.startsWith("3 " + manifest.getParent().getFileName()), parsed);
@@ -105,17 +107,9 @@ class Ros2Test {
         }
         assertEquals(arch.getLayers().size(), new TreeSet<>(namespaceOfLayer.values()).size(), "layers share a namespace");
 
-        // Every C++ file compiles against the stand-in headers (and stand-ins for the message types used).
-        Path include = messageStubs(root, tmp.resolve("msg-stubs"));
-        List<Path> sources;
-        try (Stream<Path> s = Files.walk(root)) {
-            sources = s.filter(p -> p.toString().endsWith(".cpp")).sorted().toList();
-        }
-        assertEquals(2 * modules, sources.size());
-        for (Path source : sources) {
-            Tools.ok(root, 120, "g++", "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra", "-Wpedantic", "-Werror",
-                    "-I" + Tools.resource("ros2-stubs/include"), "-I" + include, "-Igen", "-Isrc", source.toString());
-        }
+        // Every package builds as colcon would: the real rosidl generates each .msg, and the nodes
+        // compile against those headers and the stand-in rclcpp, warnings as errors.
+        Ros2Build.buildAll(out, tmp.resolve("colcon"));
 
         // Connected ports share one topic: the source's publisher and the target's subscription.
         Map<String, String> topics = topics(root);
@@ -182,26 +176,6 @@ class Ros2Test {
             }
         }
         return topics;
-    }
-
-    /** Declarations for every message type the nodes name, other than std_msgs (which the stand-ins have). */
-    private static Path messageStubs(Path root, Path dir) throws Exception {
-        Pattern used = Pattern.compile("\\b(\\w+)::msg::(\\w+)\\b");
-        Matcher m = used.matcher(allText(root));
-        TreeSet<String> types = new TreeSet<>();
-        while (m.find()) {
-            if (!m.group(1).equals("std_msgs")) {
-                types.add(m.group(1) + " " + m.group(2));
-            }
-        }
-        for (String t : types) {
-            String[] pt = t.split(" ");
-            Path h = dir.resolve(pt[0] + "/msg/" + Names.rosidlHeaderStem(pt[1]) + ".hpp");
-            Files.createDirectories(h.getParent());
-            Files.writeString(h, "#pragma once\nnamespace " + pt[0] + "::msg {\nstruct " + pt[1] + " {};\n}\n");
-        }
-        Files.createDirectories(dir);
-        return dir;
     }
 
     private static String allText(Path dir) throws Exception {

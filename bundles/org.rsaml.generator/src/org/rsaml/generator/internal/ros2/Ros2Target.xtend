@@ -466,7 +466,8 @@ class Ros2Files {
 		// Node for module «doc(m.qualifiedName)»«described(m.description)»
 		// «Templates.USER_OWNED» The generated base class («m.baseName», in
 		// gen/«m.layerId»/) creates the publishers, subscriptions and timers; implement the actions and
-		// message handlers here.
+		// message handlers here. Each is marked override: when the model drops or renames one, the
+		// compiler says so instead of silently no longer calling it.
 		#pragma once
 
 		#include "«m.layerId»/«m.baseName».hpp"
@@ -481,13 +482,13 @@ class Ros2Files {
 		  «FOR f : m.functions.filter[!actions.empty]»
 		  	// Function «doc(f.name)»
 		  	«FOR a : f.actions»
-		  		void «a.method»();
+		  		void «a.method»() override;
 		  	«ENDFOR»
 		  «ENDFOR»
 		  «IF !m.inputs.empty»
 		  	// Entry ports
 		  	«FOR p : m.inputs»
-		  		void «p.onName»(const «p.rosType»& message);
+		  		void «p.onName»(const «p.rosType»& message) override;
 		  	«ENDFOR»
 		  «ENDIF»
 		};

@@ -1,0 +1,2 @@
+# SPDX-License-Identifier: EPL-2.0
+include("${rclcpp_components_DIR}/rclcpp_components_register_node.cmake")
