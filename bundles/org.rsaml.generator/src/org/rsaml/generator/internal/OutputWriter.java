@@ -216,10 +216,20 @@ public final class OutputWriter {
     }
 
     /** Paths are built from sanitised names; this guards the guarantee that none leaves the output. */
+    /** The longest file name (one path segment) common file systems accept, in bytes. */
+    static final int MAX_NAME_BYTES = 255;
+
     private static Path resolveInside(Path dir, String relative, Path out) throws GenerationException {
         Path p = resolveQuietly(dir, relative);
         if (p == null) {
             throw new GenerationException(display(out, relative), "refusing to write outside the output directory");
+        }
+        for (String segment : relative.split("/")) {
+            int bytes = segment.getBytes(StandardCharsets.UTF_8).length;
+            if (bytes > MAX_NAME_BYTES) {
+                throw new GenerationException(display(out, relative), "a file name made from a model name is " + bytes
+                        + " bytes long, more than the " + MAX_NAME_BYTES + " file systems allow; shorten that name (nothing was written)");
+            }
         }
         return p;
     }

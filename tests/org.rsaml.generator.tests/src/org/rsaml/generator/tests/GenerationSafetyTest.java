@@ -85,6 +85,22 @@ class GenerationSafetyTest {
                 tooLong.output());
     }
 
+    /** A model name too long for a file name is refused with the file concerned, before anything is written. */
+    @Test
+    void fileNamesTooLongForTheFileSystemAreRefused(@TempDir Path tmp) throws Exception {
+        String name = "m".repeat(300);
+        Path model = Files.writeString(tmp.resolve("arm.rsaml"),
+                Files.readString(Tools.example("exp3-task-interpreter.rsaml")).replace("taskInterpreter", name));
+        Path out = tmp.resolve("out");
+        for (Target target : List.of(Target.CPP, Target.ROS2)) {
+            GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(model, target, out, true));
+            assertTrue(e.file().startsWith(out.toString()) && e.file().contains(name.substring(1)), e.file());
+            assertTrue(e.getMessage().matches("a file name made from a model name is 30\\d bytes long, more than the 255 file systems allow; "
+                    + "shorten that name \\(nothing was written\\)"), e.getMessage());
+            assertFalse(Files.exists(out), "nothing may be written");
+        }
+    }
+
     /** A crafted manifest and links in the output never make stale-file removal touch anything outside it. */
     @Test
     void staleRemovalNeverFollowsLinksNorLeavesTheOutput(@TempDir Path tmp) throws Exception {
