@@ -1,0 +1,33 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.diagram;
+
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.stream.Collectors;
+
+/** How a diagram is written. */
+public enum DiagramFormat {
+    /** A standalone SVG image. */
+    SVG,
+    /** One self-contained HTML page: the diagram, pan and zoom, the findings and the validation summary. */
+    HTML;
+
+    /** The name used on the command line, also the file extension. */
+    public String id() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /** @throws IllegalArgumentException naming the accepted values */
+    public static DiagramFormat parse(String value) {
+        for (DiagramFormat format : values()) {
+            if (format.id().equalsIgnoreCase(value == null ? "" : value.trim())) {
+                return format;
+            }
+        }
+        throw new IllegalArgumentException("unknown format '" + value + "'; expected one of "
+                + Arrays.stream(values()).map(DiagramFormat::id).collect(Collectors.joining(", ")));
+    }
+}

@@ -1,0 +1,144 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.diagram;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.rsaml.diagram.internal.ArchitectureLayout;
+import org.rsaml.diagram.internal.Drawing;
+import org.rsaml.diagram.internal.HtmlWriter;
+import org.rsaml.diagram.internal.MissionLayout;
+import org.rsaml.diagram.internal.SvgWriter;
+import org.rsaml.model.Architecture;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
+
+/**
+ * Draws RsaML models headless: the architecture or mission view laid out by ELK, as SVG or as one
+ * self-contained HTML page with the findings of validation. The same model always gives the same
+ * bytes.
+ *
+ * <pre>
+ * Path written = new RsamlDiagrams(DiagramView.ARCHITECTURE)
+ *         .write(Path.of("robot.rsaml"), "robot.rsaml", DiagramFormat.HTML, Path.of("target/diagrams"));
+ * </pre>
+ */
+public final class RsamlDiagrams {
+
+    private final DiagramView view;
+    private final List<DiagramOverlay> overlays = new ArrayList<>();
+
+    public RsamlDiagrams(DiagramView view) {
+        this.view = view;
+    }
+
+    /** Adds an overlay (e.g. timing analysis results) drawn over the diagram. */
+    public RsamlDiagrams overlay(DiagramOverlay overlay) {
+        overlays.add(overlay);
+        return this;
+    }
+
+    /** The SVG document of an architecture, its elements decorated with the findings. */
+    public String svg(Architecture architecture, List<Finding> findings) {
+        return SvgWriter.write(draw(architecture, findings), true);
+    }
+
+    /** The HTML page of a model read from {@code file} (the name shown on the page), with its findings. */
+    public String html(Architecture architecture, String file, List<Finding> findings) {
+        return HtmlWriter.write(draw(architecture, findings), file, findings);
+    }
+
+    private Drawing draw(Architecture architecture, List<Finding> findings) {
+        DiagramOverlay.Notes notes = notes(architecture);
+        return view == DiagramView.MISSION ? MissionLayout.draw(architecture, findings, notes)
+                : ArchitectureLayout.draw(architecture, findings, notes);
+    }
+
+    private DiagramOverlay.Notes notes(Architecture architecture) {
+        if (overlays.isEmpty()) {
+            return DiagramOverlay.Notes.NONE;
+        }
+        Map<String, List<String>> lines = new LinkedHashMap<>();
+        Set<String> emphasised = new HashSet<>();
+        for (DiagramOverlay overlay : overlays) {
+            DiagramOverlay.Notes notes = overlay.notes(architecture);
+            notes.lines().forEach((k, v) -> lines.computeIfAbsent(k, x -> new ArrayList<>()).addAll(v));
+            emphasised.addAll(notes.emphasised());
+        }
+        return new DiagramOverlay.Notes(lines, emphasised);
+    }
+
+    /** The file a model's diagram is written to: {@code exp1-hybrid-architecture.svg} for {@code exp1-hybrid.rsaml}. */
+    public String fileName(Path model, DiagramFormat format) {
+        String name = model.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return (dot > 0 ? name.substring(0, dot) : name) + "-" + view.id() + "." + format.id();
+    }
+
+    /**
+     * Reads and validates a model and writes its diagram into {@code directory} (created if needed)
+     * under {@link #fileName}; the file is written whole or not at all.
+     *
+     * @param displayName the model as the user named it, shown in the page and in messages
+     * @return the file written
+     * @throws ModelLoadException when the model cannot be read
+     * @throws DiagramException   when the diagram cannot be written
+     */
+    public Path write(Path model, String displayName, DiagramFormat format, Path directory) throws ModelLoadException, DiagramException {
+        LoadedModel loaded = ModelLoader.load(model, displayName);
+        List<Finding> findings = RsamlModelValidator.validate(loaded);
+        String text = format == DiagramFormat.HTML ? html(loaded.architecture(), displayName, findings)
+                : svg(loaded.architecture(), findings);
+        Path target = directory.resolve(fileName(model, format));
+        write(target, text);
+        return target;
+    }
+
+    /** Writes {@code text} to {@code target} through a temporary file beside it, so readers never see half a file. */
+    public static void write(Path target, String text) throws DiagramException {
+        Path directory = target.toAbsolutePath().getParent();
+        Path temporary = null;
+        try {
+            Files.createDirectories(directory);
+            temporary = Files.createTempFile(directory, ".rsaml-diagram", ".tmp");
+            Files.writeString(temporary, text, StandardCharsets.UTF_8);
+            try {
+                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException e) {
+            throw new DiagramException(target + ": cannot write the diagram: " + reason(e), e);
+        } finally {
+            if (temporary != null) {
+                try {
+                    Files.deleteIfExists(temporary);
+                } catch (IOException e) {
+                    // nothing left to do: the temporary file is hidden and named as ours
+                }
+            }
+        }
+    }
+
+    private static String reason(IOException e) {
+        String message = e.getMessage();
+        return e.getClass().getSimpleName().replace("Exception", "").replaceAll("([a-z])([A-Z])", "$1 $2").toLowerCase()
+                + (message == null ? "" : " (" + message + ")");
+    }
+}

@@ -1,0 +1,497 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.diagram.internal;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.elk.core.options.CoreOptions;
+import org.eclipse.elk.core.options.Direction;
+import org.eclipse.elk.core.options.PortConstraints;
+import org.eclipse.elk.core.options.PortSide;
+import org.eclipse.elk.core.options.SizeConstraint;
+import org.eclipse.elk.core.math.KVector;
+import org.eclipse.elk.graph.ElkConnectableShape;
+import org.eclipse.elk.graph.ElkEdge;
+import org.eclipse.elk.graph.ElkNode;
+import org.eclipse.elk.graph.ElkPort;
+import org.eclipse.emf.ecore.EObject;
+import org.rsaml.diagram.DiagramOverlay;
+import org.rsaml.model.Action;
+import org.rsaml.model.Actuator;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Connection;
+import org.rsaml.model.Device;
+import org.rsaml.model.ElementType;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
+import org.rsaml.model.Inhibitor;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.Port;
+import org.rsaml.model.Sensor;
+import org.rsaml.model.SubsumptionLink;
+import org.rsaml.model.Suppressor;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.Finding;
+
+/**
+ * The architecture view: layers stacked by level (highest on top) as containers of their modules,
+ * entry ports on a module's left side and output ports on its right, connections, inhibitors and
+ * suppressors between ports, sensors below the lowest layer and actuators beside it. ELK's layered
+ * algorithm places everything; its partitions keep the layers in level order.
+ */
+public final class ArchitectureLayout extends Layout {
+
+    static final double PORT = 8;
+    static final double PORT_PITCH = 18;
+    static final double GAP = 8;
+
+    /** What a module's text looks like once measured: three columns, ports' labels outside the middle. */
+    private record ModuleText(List<Line> head, List<Item> items, double left, double middle, double right,
+            double headBadge) {
+    }
+
+    /** A function or action listed in a module. */
+    private record Item(EObject element, List<Line> lines, double badge, int depth) {
+    }
+
+    private final Map<Module, ModuleText> moduleTexts = new IdentityHashMap<>();
+    private final List<Layer> layers;
+
+    public ArchitectureLayout(Architecture architecture, List<Finding> findings, DiagramOverlay.Notes notes) {
+        super(architecture, "architecture", findings, notes);
+        layers = new ArrayList<>(architecture.getLayers());
+        layers.sort(Comparator.comparingInt(Layer::getLevel).reversed());
+    }
+
+    /** Lays out and returns the drawing. */
+    public static Drawing draw(Architecture architecture, List<Finding> findings, DiagramOverlay.Notes notes) {
+        return new ArchitectureLayout(architecture, findings, notes).run();
+    }
+
+    @Override
+    boolean draws(EObject element) {
+        return element instanceof Architecture || element instanceof Layer || element instanceof Module
+                || element instanceof Function || element instanceof Action || element instanceof Port
+                || element instanceof Connection || element instanceof SubsumptionLink || element instanceof Device;
+    }
+
+    // ------------------------------------------------------------ texts
+
+    private List<Line> architectureTitle() {
+        List<Line> lines = new ArrayList<>();
+        lines.add(new Line(RsamlLabels.name(architecture) + " (" + architecture.getCategory().getLiteral() + " architecture)",
+                TITLE + 2, true, "title"));
+        lines.add(new Line(architecture.getLayers().size() + " layers (" + architecture.getDeclaredLayers() + " declared), "
+                + count(Module.class) + " modules, " + architecture.getConnections().size() + " connections", BODY, false, "subtitle"));
+        lines.addAll(overlayLines(architecture));
+        return lines;
+    }
+
+    private long count(Class<?> type) {
+        long n = 0;
+        for (Layer layer : architecture.getLayers()) {
+            n += type == Module.class ? layer.getModules().size() : 0;
+        }
+        return n;
+    }
+
+    private List<Line> layerTitle(Layer layer) {
+        List<Line> lines = new ArrayList<>();
+        lines.add(new Line(RsamlLabels.name(layer), TITLE, true, "title"));
+        lines.add(new Line("level " + layer.getLevel() + (layer.getMaxExecTime() > 0
+                ? " \u00b7 budget " + RsamlLabels.duration(layer.getMaxExecTime(), layer) + " per module" : ""),
+                BODY, false, "timing"));
+        lines.addAll(overlayLines(layer));
+        return lines;
+    }
+
+    /** Period, delay and execution time with their unit: {@code periodic \u00b7 T 20.0 ms \u00b7 D 20.0 ms \u00b7 C 4.0 ms}. */
+    static String timing(org.rsaml.model.RealTimeElement e) {
+        List<String> parts = new ArrayList<>();
+        if (e.getType() == ElementType.REAL_TIME) {
+            parts.add("real-time");
+        }
+        if (e.getExecType() != null && e.getExecType() != ExecutionType.APERIODIC) {
+            parts.add(e.getExecType().getLiteral());
+        }
+        if (e.getPeriod() > 0) {
+            parts.add("T " + RsamlLabels.duration(e.getPeriod(), e));
+        }
+        if (e.getDelay() > 0) {
+            parts.add("D " + RsamlLabels.duration(e.getDelay(), e));
+        }
+        if (e.getExecDuration() > 0) {
+            parts.add("C " + RsamlLabels.duration(e.getExecDuration(), e));
+        }
+        if (e instanceof Action action && action.getStartDate() > 0) {
+            parts.add("at " + RsamlLabels.duration(action.getStartDate(), e));
+        }
+        if (e instanceof Function f && f.getSchedPolicy() != null && (e.getType() == ElementType.REAL_TIME || f.getExecType() == ExecutionType.PERIODIC)) {
+            parts.add(f.getSchedPolicy().getLiteral());
+        }
+        return parts.isEmpty() ? "no timing" : String.join(" \u00b7 ", parts);
+    }
+
+    private ModuleText measure(Module module) {
+        List<Line> head = new ArrayList<>();
+        double headBadge = titleWithBadge(module, new Line(RsamlLabels.name(module), BODY + 1, true, "title"), head);
+        head.add(new Line(timing(module), SMALL, false, "timing"));
+        head.addAll(overlayLines(module));
+        double middle = Math.max(head.get(0).width() + (headBadge > 0 ? headBadge + 4 : 0), width(head.subList(1, head.size())));
+        List<Item> items = new ArrayList<>();
+        for (Function function : module.getFunctions()) {
+            List<Line> lines = new ArrayList<>();
+            lines.add(new Line("\u0192 " + RsamlLabels.name(function), BODY, function.getExecType() == ExecutionType.PERIODIC,
+                    function.getExecType() == ExecutionType.PERIODIC ? "periodic" : "item"));
+            lines.add(new Line(timing(function), SMALL, false, "timing"));
+            lines.addAll(overlayLines(function));
+            double badge = badgeWidth(badgeText(function));
+            items.add(new Item(function, lines, badge, 0));
+            middle = Math.max(middle, Math.max(lines.get(0).width() + (badge > 0 ? badge + 4 : 0), width(lines.subList(1, lines.size()))) + 8);
+            for (Action action : function.getActions()) {
+                List<Line> al = new ArrayList<>();
+                al.add(new Line(RsamlLabels.name(action) + "  " + timing(action), SMALL, false, "action"));
+                al.addAll(overlayLines(action));
+                double ab = badgeWidth(badgeText(action));
+                items.add(new Item(action, al, ab, 1));
+                middle = Math.max(middle, width(al) + (ab > 0 ? ab + 4 : 0) + 24);
+            }
+        }
+        double left = 0;
+        double right = 0;
+        for (Port port : module.getPorts()) {
+            double w = TextMetrics.width(RsamlLabels.name(port), SMALL, false) + PORT / 2 + 4;
+            String badge = badgeText(port);
+            if (badge != null) {
+                w += badgeWidth(badge) + 4;
+            }
+            if (port instanceof EntryPort) {
+                left = Math.max(left, w);
+            } else {
+                right = Math.max(right, w);
+            }
+        }
+        return new ModuleText(head, items, left, middle, right, headBadge);
+    }
+
+    private static double itemsHeight(List<Item> items) {
+        double h = 0;
+        for (Item item : items) {
+            h += height(item.lines()) + 2;
+        }
+        return h;
+    }
+
+    // ------------------------------------------------------------ graph
+
+    @Override
+    void build() {
+        root.setProperty(CoreOptions.DIRECTION, Direction.DOWN);
+        root.setProperty(CoreOptions.PARTITIONING_ACTIVATE, true);
+        List<Line> title = architectureTitle();
+        padding(root, PAD * 2 + height(title), 16);
+        double titleWidth = width(title) + badgeWidth(badgeText(architecture)) + 40;
+        root.setProperty(CoreOptions.NODE_SIZE_CONSTRAINTS, SizeConstraint.minimumSize());
+        root.setProperty(CoreOptions.NODE_SIZE_MINIMUM, new KVector(titleWidth, 0));
+        map(root, architecture);
+
+        int partition = 0;
+        for (Layer layer : layers) {
+            List<Line> lines = layerTitle(layer);
+            double minWidth = width(lines) + badgeWidth(badgeText(layer)) + 3 * PAD;
+            ElkNode node = node(root, layer, minWidth, height(lines) + 2 * PAD);
+            node.setProperty(CoreOptions.PARTITIONING_PARTITION, partition++);
+            node.setProperty(CoreOptions.DIRECTION, Direction.RIGHT);
+            node.setProperty(CoreOptions.NODE_SIZE_CONSTRAINTS, SizeConstraint.minimumSize());
+            node.setProperty(CoreOptions.NODE_SIZE_MINIMUM, new KVector(Math.ceil(minWidth), Math.ceil(height(lines) + 2 * PAD + 20)));
+            padding(node, height(lines) + 2 * PAD + 6, 14);
+            spacing(node);
+            for (Module module : layer.getModules()) {
+                module(node, module);
+            }
+        }
+        int lowest = Math.max(0, partition - 1);
+        for (Actuator actuator : architecture.getActuators()) {
+            device(actuator).setProperty(CoreOptions.PARTITIONING_PARTITION, lowest);
+        }
+        for (Sensor sensor : architecture.getSensors()) {
+            device(sensor).setProperty(CoreOptions.PARTITIONING_PARTITION, partition);
+        }
+
+        for (Connection connection : architecture.getConnections()) {
+            ElkConnectableShape source = shape(connection.getSource());
+            ElkConnectableShape target = shape(connection.getTarget());
+            if (source != null && target != null) {
+                ElkEdge edge = edge(source, target);
+                map(edge, connection);
+                String badge = badgeText(connection);
+                if (badge != null) {
+                    badgeLabel(edge, badge);
+                }
+            }
+        }
+        for (Layer layer : layers) {
+            for (Module module : layer.getModules()) {
+                for (Inhibitor inhibitor : module.getInhibitors()) {
+                    subsumption(module, inhibitor, inhibitor.getTarget());
+                }
+                for (Suppressor suppressor : module.getSuppressors()) {
+                    subsumption(module, suppressor, suppressor.getTarget());
+                }
+            }
+        }
+        for (Sensor sensor : architecture.getSensors()) {
+            for (Module module : sensor.getModules()) {
+                if (shapeOf.get(module) != null) {
+                    edge((ElkConnectableShape) shapeOf.get(sensor), (ElkConnectableShape) shapeOf.get(module));
+                }
+            }
+        }
+        for (Actuator actuator : architecture.getActuators()) {
+            for (Module module : actuator.getModules()) {
+                if (shapeOf.get(module) != null) {
+                    edge((ElkConnectableShape) shapeOf.get(module), (ElkConnectableShape) shapeOf.get(actuator));
+                }
+            }
+        }
+    }
+
+    private ElkConnectableShape shape(EObject element) {
+        return element == null ? null : (ElkConnectableShape) shapeOf.get(element);
+    }
+
+    private void subsumption(Module owner, SubsumptionLink link, Port target) {
+        ElkConnectableShape source = link.getTrigger() != null && shape(link.getTrigger()) != null ? shape(link.getTrigger())
+                : shape(owner);
+        ElkConnectableShape to = shape(target);
+        if (source == null || to == null) {
+            return;
+        }
+        ElkEdge edge = edge(source, to);
+        map(edge, link);
+        String verb = link instanceof Inhibitor ? "inhibits" : "suppresses";
+        label(edge, RsamlLabels.name(link) + " " + verb + (link.getDuration() > 0 ? " " + RsamlLabels.duration(link.getDuration(), link) : ""),
+                SMALL, false);
+        String badge = badgeText(link);
+        if (badge != null) {
+            badgeLabel(edge, badge);
+        }
+    }
+
+    private void module(ElkNode layer, Module module) {
+        ModuleText text = measure(module);
+        moduleTexts.put(module, text);
+        double width = 2 * PAD + text.left() + GAP + text.middle() + GAP + text.right() + (text.left() == 0 ? PORT / 2 : 0)
+                + (text.right() == 0 ? PORT / 2 : 0);
+        int entries = 0;
+        int outputs = 0;
+        for (Port port : module.getPorts()) {
+            if (port instanceof EntryPort) {
+                entries++;
+            } else {
+                outputs++;
+            }
+        }
+        double height = Math.max(2 * PAD + height(text.head()) + (text.items().isEmpty() ? 0 : 4 + itemsHeight(text.items())),
+                (Math.max(entries, outputs) + 1) * PORT_PITCH);
+        ElkNode node = node(layer, module, width, height);
+        node.setProperty(CoreOptions.PORT_CONSTRAINTS, PortConstraints.FIXED_SIDE);
+        // Ports sit across the border, half inside: they are on the module's outline, not beside it.
+        node.setProperty(CoreOptions.PORT_BORDER_OFFSET, -PORT / 2);
+        for (Port port : module.getPorts()) {
+            ElkPort p = org.eclipse.elk.graph.util.ElkGraphUtil.createPort(node);
+            p.setDimensions(PORT, PORT);
+            p.setProperty(CoreOptions.PORT_SIDE, port instanceof EntryPort ? PortSide.WEST : PortSide.EAST);
+            p.setProperty(CoreOptions.PORT_BORDER_OFFSET, -PORT / 2);
+            map(p, port);
+        }
+    }
+
+    private ElkNode device(Device device) {
+        List<Line> lines = deviceLines(device);
+        double badge = badgeWidth(badgeText(device));
+        return node(root, device, width(lines) + (badge > 0 ? badge + 4 : 0) + 2 * PAD + 4, height(lines) + 2 * PAD);
+    }
+
+    private List<Line> deviceLines(Device device) {
+        List<Line> lines = new ArrayList<>();
+        lines.add(new Line((device instanceof Sensor ? "sensor " : "actuator ") + RsamlLabels.name(device), BODY, true, "title"));
+        List<String> facts = new ArrayList<>();
+        if (device.getKind() != null && !device.getKind().isEmpty()) {
+            facts.add(device.getKind());
+        }
+        if (device.getPeriod() > 0) {
+            facts.add("T " + RsamlLabels.duration(device.getPeriod(), device));
+        }
+        if (!facts.isEmpty()) {
+            lines.add(new Line(String.join(" \u00b7 ", facts), SMALL, false, "timing"));
+        }
+        lines.addAll(overlayLines(device));
+        return lines;
+    }
+
+    // ------------------------------------------------------------ result
+
+    @Override
+    void collect() {
+        Drawing.Shape frame = shape("architecture", root, null);
+        frame.form = "round";
+        place(frame.texts, architectureTitle(), frame.x + 16, frame.y + PAD, "start");
+        addBadge(frame, frame.x + 16 + width(architectureTitle().subList(0, 1)) + 8, frame.y + PAD);
+        List<Drawing.Shape> ports = new ArrayList<>();
+        for (Layer layer : layers) {
+            ElkNode node = (ElkNode) shapeOf.get(layer);
+            Drawing.Shape shape = shape("layer", node, frame);
+            shape.form = "round";
+            shape.classes.add("level-" + layer.getLevel());
+            List<Line> title = layerTitle(layer);
+            place(shape.texts, title, shape.x + 10, shape.y + PAD, "start");
+            addBadge(shape, shape.x + 10 + title.get(0).width() + 8, shape.y + PAD);
+            for (Module module : layer.getModules()) {
+                collectModule(module, shape, ports);
+            }
+        }
+        for (Sensor sensor : architecture.getSensors()) {
+            collectDevice(sensor, frame, "sensor");
+        }
+        for (Actuator actuator : architecture.getActuators()) {
+            collectDevice(actuator, frame, "actuator");
+        }
+        collectLinks();
+        // Ports last: drawn over the links that end on them.
+        drawing.shapes.removeAll(ports);
+        drawing.shapes.addAll(ports);
+    }
+
+    private void collectDevice(Device device, Drawing.Shape frame, String kind) {
+        Drawing.Shape shape = shape(kind, (org.eclipse.elk.graph.ElkShape) shapeOf.get(device), frame);
+        shape.form = kind.equals("sensor") ? "round" : "rect";
+        List<Line> lines = deviceLines(device);
+        place(shape.texts, lines, shape.x + PAD + 2, shape.y + PAD, "start");
+        addBadge(shape, shape.x + PAD + 2 + lines.get(0).width() + 4, shape.y + PAD);
+    }
+
+    private void collectModule(Module module, Drawing.Shape layer, List<Drawing.Shape> ports) {
+        ModuleText text = moduleTexts.get(module);
+        ElkNode node = (ElkNode) shapeOf.get(module);
+        Drawing.Shape shape = shape("module", node, layer);
+        shape.form = "round";
+        if (module.getType() == ElementType.REAL_TIME) {
+            shape.classes.add("realtime");
+        }
+        double left = shape.x + PAD + (text.left() == 0 ? PORT / 2 : text.left()) + GAP;
+        double y = place(shape.texts, text.head(), left, shape.y + PAD, "start");
+        addBadge(shape, left + text.head().get(0).width() + 4, shape.y + PAD);
+        y += 4;
+        Drawing.Shape function = null;
+        for (Item item : text.items()) {
+            double itemHeight = height(item.lines()) + 2;
+            if (item.depth() == 0) {
+                double h = itemHeight;
+                for (Item a : text.items().subList(text.items().indexOf(item) + 1, text.items().size())) {
+                    if (a.depth() == 0) {
+                        break;
+                    }
+                    h += height(a.lines()) + 2;
+                }
+                function = item(item, shape, left - 3, y, text.middle() + 6, h);
+            } else {
+                item(item, function, left + 10, y, text.middle() - 10, itemHeight);
+            }
+            y += itemHeight;
+        }
+        for (ElkPort p : node.getPorts()) {
+            Port port = (Port) elementOf.get(p);
+            Drawing.Shape ps = shape(port instanceof EntryPort ? "entry-port" : "output-port", p, shape);
+            ps.form = "port";
+            ports.add(ps);
+            boolean entry = port instanceof EntryPort;
+            double cx = ps.x + ps.width / 2;
+            double cy = ps.y + ps.height / 2;
+            List<Line> label = List.of(new Line(RsamlLabels.name(port), SMALL, false, "port-label"));
+            double lx = entry ? cx + PORT / 2 + 3 : cx - PORT / 2 - 3;
+            place(ps.texts, label, lx, cy - label.get(0).height() / 2, entry ? "start" : "end");
+            String badge = badgeText(port);
+            if (badge != null) {
+                double w = badgeWidth(badge);
+                double bx = entry ? lx + label.get(0).width() + 3 : lx - label.get(0).width() - 3 - w;
+                ps.badges.add(new Drawing.Badge(bx, cy - badgeHeight() / 2, w, badgeHeight(), badge, badgeSeverity(port)));
+            }
+        }
+    }
+
+    private Drawing.Shape item(Item item, Drawing.Shape parent, double x, double y, double width, double height) {
+        Drawing.Shape shape = new Drawing.Shape(item.depth() == 0 ? "function" : "action", item.element(), parent);
+        shape.form = "item";
+        shape.x = x;
+        shape.y = y;
+        shape.width = width;
+        shape.height = height;
+        emphasise(item.element(), shape.classes);
+        if (item.element() instanceof org.rsaml.model.RealTimeElement rt && rt.getExecType() == ExecutionType.PERIODIC) {
+            shape.classes.add("periodic");
+        }
+        place(shape.texts, item.lines(), x + 3, y + 1, "start");
+        addBadge(shape, x + 3 + item.lines().get(0).width() + 4, y + 1);
+        drawing.shapes.add(shape);
+        return shape;
+    }
+
+    private void collectLinks() {
+        for (Connection connection : architecture.getConnections()) {
+            ElkEdge edge = (ElkEdge) shapeOfEdge(connection);
+            if (edge != null) {
+                link("connection", edge, connection, connection.getSource(), connection.getTarget(), badgeText(connection));
+            }
+        }
+        for (Layer layer : layers) {
+            for (Module module : layer.getModules()) {
+                for (Inhibitor inhibitor : module.getInhibitors()) {
+                    subsumptionLink(inhibitor, module, inhibitor.getTarget(), "I");
+                }
+                for (Suppressor suppressor : module.getSuppressors()) {
+                    subsumptionLink(suppressor, module, suppressor.getTarget(), "S");
+                }
+            }
+        }
+        for (ElkEdge edge : allEdges(root)) {
+            EObject source = elementOf.get(edge.getSources().get(0));
+            EObject target = elementOf.get(edge.getTargets().get(0));
+            if (source instanceof Sensor) {
+                link("sensor-link", edge, null, source, target, null);
+            } else if (target instanceof Actuator) {
+                link("actuator-link", edge, null, source, target, null);
+            }
+        }
+    }
+
+    private void subsumptionLink(SubsumptionLink element, Module owner, Port target, String marker) {
+        ElkEdge edge = (ElkEdge) shapeOfEdge(element);
+        if (edge != null) {
+            EObject source = element.getTrigger() != null && shapeOf.get(element.getTrigger()) != null ? element.getTrigger() : owner;
+            Drawing.Link link = link(marker.equals("I") ? "inhibitor" : "suppressor", edge, element, source, target, badgeText(element));
+            link.marker = marker;
+        }
+    }
+
+    private Object shapeOfEdge(EObject element) {
+        return shapeOf.get(element);
+    }
+
+    static List<ElkEdge> allEdges(ElkNode node) {
+        List<ElkEdge> edges = new ArrayList<>(node.getContainedEdges());
+        for (ElkNode child : node.getChildren()) {
+            edges.addAll(allEdges(child));
+        }
+        return edges;
+    }
+}

@@ -1,0 +1,48 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.diagram.tests;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
+
+/** The repository's example models and their diagrams. */
+final class Examples {
+
+    private Examples() {
+    }
+
+    static Path root() {
+        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+    }
+
+    static Path example(String name) {
+        return root().resolve("examples").resolve(name);
+    }
+
+    static List<String> names() throws IOException {
+        try (Stream<Path> files = Files.list(root().resolve("examples"))) {
+            return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted().toList();
+        }
+    }
+
+    record Drawn(LoadedModel model, List<Finding> findings, String svg) {
+    }
+
+    static Drawn draw(String name, DiagramView view) throws Exception {
+        LoadedModel model = ModelLoader.load(example(name), "examples/" + name);
+        List<Finding> findings = RsamlModelValidator.validate(model);
+        return new Drawn(model, findings, new RsamlDiagrams(view).svg(model.architecture(), findings));
+    }
+}
