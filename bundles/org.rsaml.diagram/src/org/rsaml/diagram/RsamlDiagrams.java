@@ -10,12 +10,14 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.UUID;
 
 import org.rsaml.diagram.internal.ArchitectureLayout;
 import org.rsaml.diagram.internal.Drawing;
@@ -116,8 +118,9 @@ public final class RsamlDiagrams {
         Path temporary = null;
         try {
             Files.createDirectories(directory);
-            temporary = Files.createTempFile(directory, ".rsaml-diagram", ".tmp");
-            Files.writeString(temporary, text, StandardCharsets.UTF_8);
+            // Not createTempFile: its owner-only permissions would stay on the diagram; this one gets the umask's.
+            temporary = directory.resolve(".rsaml-diagram-" + UUID.randomUUID() + ".tmp");
+            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
             try {
                 Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
             } catch (AtomicMoveNotSupportedException e) {

@@ -18,6 +18,7 @@ import org.eclipse.elk.alg.layered.options.OrderingStrategy;
 import org.eclipse.elk.core.RecursiveGraphLayoutEngine;
 import org.eclipse.elk.core.data.LayoutMetaDataService;
 import org.eclipse.elk.core.math.ElkPadding;
+import org.eclipse.elk.core.math.KVector;
 import org.eclipse.elk.core.options.CoreOptions;
 import org.eclipse.elk.core.options.EdgeRouting;
 import org.eclipse.elk.core.options.HierarchyHandling;
@@ -73,7 +74,7 @@ abstract class Layout {
     /** Which ELK element stands for which model element. */
     protected final Map<ElkGraphElement, EObject> elementOf = new LinkedHashMap<>();
     protected final Map<EObject, ElkGraphElement> shapeOf = new IdentityHashMap<>();
-    private final Map<EObject, List<Finding>> decorated = new IdentityHashMap<>();
+    private final Map<EObject, List<Finding>> decorated = new LinkedHashMap<>();
 
     Layout(Architecture architecture, String view, List<Finding> findings, DiagramOverlay.Notes notes) {
         this.architecture = architecture;
@@ -119,6 +120,12 @@ abstract class Layout {
     final Drawing run() {
         build();
         new RecursiveGraphLayoutEngine().layout(root, new BasicProgressMonitor());
+        if (root.getChildren().isEmpty()) {
+            // ELK leaves an empty graph unsized: the frame still holds its title.
+            ElkPadding padding = root.getProperty(CoreOptions.PADDING);
+            KVector minimum = root.getProperty(CoreOptions.NODE_SIZE_MINIMUM);
+            root.setDimensions(Math.max(minimum.x, padding.left + padding.right), padding.top + PAD);
+        }
         drawing.width = root.getWidth();
         drawing.height = root.getHeight();
         collect();

@@ -54,7 +54,9 @@ public final class MissionLayout extends Layout {
     private List<Line> title() {
         List<Line> lines = new ArrayList<>();
         lines.add(new Line(RsamlLabels.name(architecture) + " (missions)", TITLE + 2, true, "title"));
-        lines.add(new Line(architecture.getMissions().size() + " missions, " + architecture.getSupervisors().size()
+        boolean empty = architecture.getMissions().isEmpty() && architecture.getSupervisors().isEmpty() && architecture.getOrders().isEmpty();
+        lines.add(new Line(empty ? "no missions, supervisors or orders in this model"
+                : architecture.getMissions().size() + " missions, " + architecture.getSupervisors().size()
                 + " supervisors, " + architecture.getOrders().size() + " orders", BODY, false, "subtitle"));
         lines.addAll(overlayLines(architecture));
         return lines;

@@ -8,7 +8,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
@@ -28,7 +28,8 @@ import org.rsaml.validation.Severity;
 public final class SvgWriter {
 
     private final Drawing drawing;
-    private final Map<EObject, String> ids = new IdentityHashMap<>();
+    // Insertion order, so that everything written from it comes in drawing order (EObjects compare by identity).
+    private final Map<EObject, String> ids = new LinkedHashMap<>();
     private final StringBuilder out = new StringBuilder(64 * 1024);
 
     private SvgWriter(Drawing drawing) {

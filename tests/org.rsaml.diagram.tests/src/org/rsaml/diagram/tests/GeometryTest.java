@@ -71,7 +71,10 @@ class GeometryTest {
         svg.shapes.values().forEach(s -> actual.merge(s.qname(), 1, Integer::sum));
         svg.links.stream().filter(l -> l.qname() != null).forEach(l -> actual.merge(l.qname(), 1, Integer::sum));
         assertEquals(expected, actual, "qualified names drawn, with how often");
-        assertTrue(expected.size() > 3, "the example draws something in this view");
+        Architecture architecture = drawn.model().architecture();
+        if (view == DiagramView.ARCHITECTURE || !architecture.getMissions().isEmpty()) {
+            assertTrue(expected.size() > 3, "the example draws something in this view");
+        }
     }
 
     @ParameterizedTest(name = "{0} {1}")
@@ -172,7 +175,9 @@ class GeometryTest {
         long expected = architecture.getConnections().size() + EcoreUtilCount.count(architecture, SubsumptionLink.class);
         assertEquals(expected, svg.links.stream().filter(l -> l.qname() != null).count(), "connections, inhibitors and suppressors drawn");
         for (Connection connection : architecture.getConnections()) {
-            Link link = svg.links.stream().filter(l -> RsamlLabels.qualifiedName(connection).equals(l.qname())).findFirst().orElseThrow();
+            // Connections are named after their ports, which may repeat: find each by its URI fragment.
+            String uri = connection.eResource().getURIFragment(connection);
+            Link link = svg.links.stream().filter(l -> uri.equals(l.uri())).findFirst().orElseThrow();
             assertEquals(RsamlLabels.qualifiedName(connection.getSource()), link.source());
             assertEquals(RsamlLabels.qualifiedName(connection.getTarget()), link.target());
         }

@@ -58,7 +58,7 @@ final class SvgDocument {
             List<Text> texts, List<String> badges) {
     }
 
-    record Link(String id, String kind, String qname, String source, String target, List<String> classes,
+    record Link(String id, String kind, String qname, String uri, String source, String target, List<String> classes,
             List<double[]> points, List<String> badges) {
     }
 
@@ -82,7 +82,7 @@ final class SvgDocument {
                 continue;
             }
             if (classes.contains("link")) {
-                links.add(new Link(g.getAttribute("id"), g.getAttribute("data-kind"), attr(g, "data-qname"), attr(g, "data-source"),
+                links.add(new Link(g.getAttribute("id"), g.getAttribute("data-kind"), attr(g, "data-qname"), attr(g, "data-uri"), attr(g, "data-source"),
                         attr(g, "data-target"), classes, points(child(g, "path").getAttribute("d")), badges(g)));
             } else {
                 Element shape = child(g, "rect");
