@@ -4,6 +4,8 @@
  */
 package org.rsaml.generator;
 
+import org.rsaml.model.resource.SourceLocation;
+
 /**
  * Code could not be generated: the model cannot be read, or the output cannot be written (not a
  * directory, not writable, a file of the user's where a generated file must go). The message names
@@ -12,9 +14,7 @@ package org.rsaml.generator;
 public class GenerationException extends Exception {
     private static final long serialVersionUID = 1L;
 
-    private final String file;
-    private final int line;
-    private final int column;
+    private final SourceLocation location;
 
     public GenerationException(String file, String message) {
         this(file, 0, 0, message, null);
@@ -26,29 +26,32 @@ public class GenerationException extends Exception {
 
     public GenerationException(String file, int line, int column, String message, Throwable cause) {
         super(message, cause);
-        this.file = file;
-        this.line = line;
-        this.column = column;
+        this.location = new SourceLocation(file, line, column);
+    }
+
+    /** Where the problem is: the model or a path in the output, and the line and column when known. */
+    public SourceLocation location() {
+        return location;
     }
 
     /** The file the problem is about (the model, or a path in the output). */
     public String file() {
-        return file;
+        return location.file();
     }
 
     /** 1-based line in {@link #file()}, or 0. */
     public int line() {
-        return line;
+        return location.line();
     }
 
     /** 1-based column in {@link #file()}, or 0. */
     public int column() {
-        return column;
+        return location.column();
     }
 
     /** Compiler style: {@code file[:line[:column]]: error: message}. */
     @Override
     public String toString() {
-        return file + (line > 0 ? ":" + line + (column > 0 ? ":" + column : "") : "") + ": error: " + getMessage();
+        return location.error(getMessage());
     }
 }

@@ -4,6 +4,8 @@
  */
 package org.rsaml.validation;
 
+import org.rsaml.model.resource.SourceLocation;
+
 /**
  * A model file that cannot be read as an RsaML model: missing, empty, binary, not XML, not RsaML,
  * or with references that do not resolve. Carries the location when there is one.
@@ -11,36 +13,37 @@ package org.rsaml.validation;
 public class ModelLoadException extends Exception {
     private static final long serialVersionUID = 1L;
 
-    private final String file;
-    private final int line;
-    private final int column;
+    private final SourceLocation location;
 
     public ModelLoadException(String file, int line, int column, String message, Throwable cause) {
         super(message, cause);
-        this.file = file;
-        this.line = line;
-        this.column = column;
+        this.location = new SourceLocation(file, line, column);
     }
 
     public ModelLoadException(String file, String message) {
         this(file, 0, 0, message, null);
     }
 
+    /** Where the problem is: the file as the user named it, and the line and column when known. */
+    public SourceLocation location() {
+        return location;
+    }
+
     public String file() {
-        return file;
+        return location.file();
     }
 
     public int line() {
-        return line;
+        return location.line();
     }
 
     public int column() {
-        return column;
+        return location.column();
     }
 
     /** Compiler style: {@code file:line:column: error: message}, without a location it does not have. */
     @Override
     public String toString() {
-        return file + (line > 0 ? ":" + line + (column > 0 ? ":" + column : "") : "") + ": error: " + getMessage();
+        return location.error(getMessage());
     }
 }

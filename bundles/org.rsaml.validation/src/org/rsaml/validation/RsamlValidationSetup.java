@@ -6,10 +6,8 @@ package org.rsaml.validation;
 
 import java.util.List;
 
-import org.eclipse.emf.ecore.EPackage;
-import org.eclipse.emf.ecore.resource.Resource;
 import org.rsaml.model.RsamlPackage;
-import org.rsaml.model.util.RsamlResourceFactoryImpl;
+import org.rsaml.model.resource.RsamlStandaloneSetup;
 import org.rsaml.validation.internal.OclRules;
 
 /**
@@ -54,13 +52,8 @@ public final class RsamlValidationSetup {
     }
 
     /** Registers the RsaML package and the {@code .rsaml} resource factory: all that reading a model needs. */
-    public static synchronized void registerPackage() {
-        if (EPackage.Registry.INSTANCE.get(RsamlPackage.eNS_URI) == RsamlPackage.eINSTANCE
-                && Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().containsKey("rsaml")) {
-            return;
-        }
-        EPackage.Registry.INSTANCE.put(RsamlPackage.eNS_URI, RsamlPackage.eINSTANCE);
-        Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("rsaml", new RsamlResourceFactoryImpl());
+    public static void registerPackage() {
+        RsamlStandaloneSetup.init();
     }
 
     /** The parsed invariants of rsaml.ecore. */

@@ -45,11 +45,11 @@ import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
 public final class RsamlCodegen {
 
     /**
-     * What is generated, per bundle: the folders and files the generator owns. The edit and editor
-     * bundles' plugin.xml are written by hand, to register RsaML's subclasses of generated classes.
+     * What is generated, per bundle: the folders and files the generator owns. Every bundle's
+     * plugin.xml is written by hand, to register RsaML's subclasses of generated classes.
      */
     static final Map<String, List<String>> GENERATED = new TreeMap<>(Map.of(
-            "org.rsaml.model", List.of("src-gen", "plugin.xml", "plugin.properties"),
+            "org.rsaml.model", List.of("src-gen", "plugin.properties"),
             "org.rsaml.model.edit", List.of("src-gen", "plugin.properties"),
             "org.rsaml.model.editor", List.of("src-gen", "plugin.properties", "icons")));
 

@@ -1,0 +1,340 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model.resource;
+
+import java.nio.ByteBuffer;
+import java.nio.charset.Charset;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.util.Map;
+
+import org.eclipse.emf.ecore.EAttribute;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.EStructuralFeature;
+import org.eclipse.emf.ecore.InternalEObject;
+import org.eclipse.emf.ecore.xmi.PackageNotFoundException;
+import org.eclipse.emf.ecore.xmi.XMIException;
+import org.eclipse.emf.ecore.xmi.XMLHelper;
+import org.eclipse.emf.ecore.xmi.impl.SAXXMIHandler;
+import org.xml.sax.Attributes;
+import org.xml.sax.SAXException;
+import org.xml.sax.ext.Locator2;
+
+/**
+ * EMF's XMI handler, made to read untrusted files: namespaces come only from the package registry
+ * (nothing is downloaded), references are checked before they become proxies, non-finite numbers
+ * are refused, and every error is rewritten as a sentence. It also records where each element's
+ * start tag begins, from the parser's own positions (no second reading of the file): a tag starts
+ * where the markup or text before it ended, so lines are counted exactly as the parser counts
+ * them (CR, CRLF, LF, and NEL and LS in XML 1.1), in whatever encoding it read.
+ */
+final class LocatingHandler extends SAXXMIHandler {
+
+    /** What the handler learns about the file, kept for the resource to describe errors. */
+    static final class Context {
+        final PrologRecorder prolog;
+        boolean rootSeen;
+        String encoding;
+
+        Context(PrologRecorder prolog) {
+            this.prolog = prolog;
+        }
+    }
+
+    private final RsamlResource rsamlResource;
+    private final Context context;
+    /** Where the markup last reported by the parser ended. */
+    private int lastLine = 1;
+    private int lastColumn = 1;
+    /**
+     * Where text since the last markup ends, counted through the characters the parser delivered
+     * (line ends arrive as one '\n' each, whatever they were in the file); -1 when there was none.
+     */
+    private int textLine = -1;
+    private int textColumn;
+    /** Whether the count agrees with the parser's position at each piece of text. */
+    private boolean textReliable;
+    /** Where the start tag being handled begins. */
+    private int tagLine;
+    private int tagColumn;
+    private boolean inStartTag;
+
+    LocatingHandler(RsamlResource resource, XMLHelper helper, Map<?, ?> options, Context context) {
+        super(resource, helper, options);
+        this.rsamlResource = resource;
+        this.context = context;
+    }
+
+    private void mark() {
+        textLine = -1;
+        if (locator != null) {
+            lastLine = locator.getLineNumber();
+            lastColumn = locator.getColumnNumber();
+        }
+    }
+
+    @Override
+    public void startElement(String uri, String localName, String name, Attributes attributes) throws SAXException {
+        if (!context.rootSeen) {
+            context.rootSeen = true;
+            if (locator instanceof Locator2 l) {
+                context.encoding = l.getEncoding();
+            }
+            locateRoot();
+            context.prolog.stop();
+        } else {
+            tagStartAfterText();
+        }
+        inStartTag = true;
+        try {
+            super.startElement(uri, localName, name, attributes);
+        } finally {
+            inStartTag = false;
+            mark();
+        }
+    }
+
+    /**
+     * After markup, the tag starts where the markup ended. After text, it starts where the text
+     * ends; the parser's own position there may already be past the '&lt;' (it has read it to end
+     * the text), so the delivered text is counted unless it holds references ({@code &amp;amp;}),
+     * whose characters are fewer than the file's.
+     */
+    private void tagStartAfterText() {
+        if (textLine < 0) {
+            tagLine = lastLine;
+            tagColumn = lastColumn;
+        } else if (textReliable) {
+            tagLine = textLine;
+            tagColumn = textColumn;
+        } else {
+            // References in the text: the parser's position, which has read the '<'.
+            tagLine = lastLine;
+            tagColumn = Math.max(1, lastColumn - 1);
+        }
+    }
+
+    /**
+     * The parser reports nothing for the XML declaration or for white space before the root, so
+     * the root's start tag is found in the bytes read so far, decoded and counted as the parser did.
+     */
+    private void locateRoot() {
+        tagLine = locator == null ? 0 : locator.getLineNumber();
+        tagColumn = locator == null ? 0 : locator.getColumnNumber();
+        String version = locator instanceof Locator2 l ? l.getXMLVersion() : "1.0";
+        Charset charset;
+        try {
+            charset = context.encoding == null ? StandardCharsets.UTF_8 : Charset.forName(context.encoding);
+        } catch (RuntimeException e) {
+            return;
+        }
+        String text;
+        try {
+            text = charset.newDecoder().onMalformedInput(CodingErrorAction.REPLACE)
+                    .onUnmappableCharacter(CodingErrorAction.REPLACE).decode(ByteBuffer.wrap(context.prolog.bytes())).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            return;
+        }
+        boolean xml11 = "1.1".equals(version);
+        int line = 1;
+        int column = 1;
+        int i = !text.isEmpty() && text.charAt(0) == '\uFEFF' ? 1 : 0;
+        while (i < text.length()) {
+            char c = text.charAt(i);
+            if (c == '<') {
+                String skipTo = text.startsWith("<?", i) ? "?>" : text.startsWith("<!--", i) ? "-->" : text.startsWith("<!", i) ? ">" : null;
+                if (skipTo == null) {
+                    tagLine = line;
+                    tagColumn = column;
+                    return;
+                }
+                int end = text.indexOf(skipTo, i);
+                if (end < 0) {
+                    return;
+                }
+                end += skipTo.length();
+                for (; i < end; i++) {
+                    int[] moved = advance(text, i, line, column, xml11);
+                    i = moved[0];
+                    line = moved[1];
+                    column = moved[2];
+                }
+                continue;
+            }
+            int[] moved = advance(text, i, line, column, xml11);
+            i = moved[0] + 1;
+            line = moved[1];
+            column = moved[2];
+        }
+    }
+
+    /** Moves past the character at {@code i}: {index of its last char, line, column} afterwards. */
+    private static int[] advance(String text, int i, int line, int column, boolean xml11) {
+        char c = text.charAt(i);
+        if (c == '\r') {
+            boolean pair = i + 1 < text.length() && (text.charAt(i + 1) == '\n' || xml11 && text.charAt(i + 1) == '\u0085');
+            return new int[] { pair ? i + 1 : i, line + 1, 1 };
+        }
+        if (c == '\n' || xml11 && (c == '\u0085' || c == '\u2028')) {
+            return new int[] { i, line + 1, 1 };
+        }
+        return new int[] { i, line, column + 1 };
+    }
+
+    private void countText(char[] ch, int start, int length) {
+        if (textLine < 0) {
+            textLine = lastLine;
+            textColumn = lastColumn;
+            textReliable = true;
+        }
+        for (int i = start; i < start + length; i++) {
+            if (ch[i] == '\n') {
+                textLine++;
+                textColumn = 1;
+            } else {
+                textColumn++;
+            }
+        }
+        if (locator != null) {
+            int line = locator.getLineNumber();
+            int column = locator.getColumnNumber();
+            textReliable &= line == textLine && (column == textColumn || column == textColumn + 1);
+            lastLine = line;
+            lastColumn = column;
+        }
+    }
+
+    @Override
+    public void endElement(String uri, String localName, String name) {
+        super.endElement(uri, localName, name);
+        mark();
+    }
+
+    @Override
+    public void characters(char[] ch, int start, int length) {
+        countText(ch, start, length);
+        super.characters(ch, start, length);
+    }
+
+    @Override
+    public void ignorableWhitespace(char[] ch, int start, int length) throws SAXException {
+        countText(ch, start, length);
+        super.ignorableWhitespace(ch, start, length);
+    }
+
+    @Override
+    public void processingInstruction(String target, String data) {
+        mark();
+        super.processingInstruction(target, data);
+    }
+
+    @Override
+    public void comment(char[] ch, int start, int length) {
+        mark();
+        super.comment(ch, start, length);
+    }
+
+    @Override
+    public void startCDATA() {
+        mark();
+        super.startCDATA();
+    }
+
+    @Override
+    public void endCDATA() {
+        mark();
+        super.endCDATA();
+    }
+
+    /** Errors found while a start tag is handled point at the tag's start, as findings do. */
+    @Override
+    protected int getLineNumber() {
+        return inStartTag ? tagLine : super.getLineNumber();
+    }
+
+    @Override
+    protected int getColumnNumber() {
+        return inStartTag ? tagColumn : super.getColumnNumber();
+    }
+
+    @Override
+    protected void processObject(EObject object) {
+        if (object != null) {
+            rsamlResource.recordPosition(object, tagLine, tagColumn);
+        }
+        super.processObject(object);
+    }
+
+    /** Only registered packages: an unknown namespace is an error, never a download. */
+    @Override
+    protected EPackage getPackageForURI(String uriString) {
+        if (uriString == null) {
+            return null;
+        }
+        EPackage ePackage = packageRegistry.getEPackage(uriString);
+        if (ePackage != null && ePackage.eIsProxy()) {
+            ePackage = null;
+        }
+        if (ePackage == null) {
+            ePackage = handleMissingPackage(uriString);
+        }
+        if (ePackage == null) {
+            error(new PackageNotFoundException(uriString, getLocation(), getLineNumber(), getColumnNumber()));
+        }
+        return ePackage;
+    }
+
+    @Override
+    protected void handleXSISchemaLocation(String schemaLocations) {
+        // Schema locations are addresses to fetch metamodels from: never followed.
+    }
+
+    @Override
+    protected void handleXSINoNamespaceSchemaLocation(String noNamespaceSchemaLocation) {
+        // as above
+    }
+
+    @Override
+    protected void processSchemaLocations(String prefix, String name) {
+        // as above
+    }
+
+    @Override
+    protected void handleProxy(InternalEObject proxy, String uriLiteral) {
+        if (!uriLiteral.startsWith("#")) {
+            String refusal = LoadPolicy.refuseReference(uriLiteral, resourceURI);
+            if (refusal != null) {
+                error(new LoadProblem(refusal, getLocation(), getLineNumber(), getColumnNumber()));
+                proxy.eSetProxyURI(resourceURI == null ? org.eclipse.emf.common.util.URI.createURI("#" + RsamlResource.REFUSED_FRAGMENT)
+                        : resourceURI.appendFragment(RsamlResource.REFUSED_FRAGMENT));
+                return;
+            }
+        }
+        super.handleProxy(proxy, uriLiteral);
+    }
+
+    @Override
+    protected void setFeatureValue(EObject object, EStructuralFeature feature, Object value, int position) {
+        if (value instanceof String text && feature instanceof EAttribute && LoadMessages.isFloating(feature)) {
+            String refusal = LoadMessages.nonFinite(feature, text);
+            if (refusal != null) {
+                error(new LoadProblem(refusal, getLocation(), getLineNumber(), getColumnNumber()));
+                return;
+            }
+        }
+        super.setFeatureValue(object, feature, value, position);
+    }
+
+    @Override
+    public void error(XMIException e) {
+        super.error(e instanceof LoadProblem ? e : LoadMessages.describe(e, context, getLocation(), rsamlResource));
+    }
+
+    @Override
+    public void fatalError(XMIException e) {
+        super.fatalError(e instanceof LoadProblem ? e : LoadMessages.describe(e, context, getLocation(), rsamlResource));
+    }
+}
