@@ -61,6 +61,7 @@ final class LocatingHandler extends SAXXMIHandler {
     private int tagLine;
     private int tagColumn;
     private boolean inStartTag;
+    private int depth;
 
     LocatingHandler(RsamlResource resource, XMLHelper helper, Map<?, ?> options, Context context) {
         super(resource, helper, options);
@@ -87,6 +88,12 @@ final class LocatingHandler extends SAXXMIHandler {
             context.prolog.stop();
         } else {
             tagStartAfterText();
+        }
+        if (++depth > RsamlResource.MAX_DEPTH) {
+            // EMF attaches each element by walking up to the root: deeper nesting would cost its square.
+            error(new LoadProblem("elements are nested more than " + RsamlResource.MAX_DEPTH
+                    + " levels deep here; RsaML reads models up to that depth", getLocation(), tagLine, tagColumn));
+            throw new SAXException("nested too deep");
         }
         inStartTag = true;
         try {
@@ -209,6 +216,7 @@ final class LocatingHandler extends SAXXMIHandler {
 
     @Override
     public void endElement(String uri, String localName, String name) {
+        depth--;
         super.endElement(uri, localName, name);
         mark();
     }

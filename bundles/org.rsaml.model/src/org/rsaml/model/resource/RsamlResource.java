@@ -15,6 +15,7 @@ import javax.xml.XMLConstants;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.InternalEObject;
 import org.eclipse.emf.ecore.xmi.XMLLoad;
 import org.eclipse.emf.ecore.xmi.XMLResource;
@@ -38,6 +39,9 @@ public class RsamlResource extends RsamlResourceImpl {
 
     /** Files larger than this (1 GiB) are refused unless {@link #OPTION_MAX_FILE_SIZE} says otherwise. */
     public static final long DEFAULT_MAX_FILE_SIZE = 1L << 30;
+
+    /** Elements nested deeper than this are refused (a model's natural depth is below ten). */
+    public static final int MAX_DEPTH = 1000;
 
     /** The fragment given to references that were refused: it names nothing, so nothing is ever opened for them. */
     static final String REFUSED_FRAGMENT = "rsaml-refused-reference";
@@ -196,6 +200,11 @@ public class RsamlResource extends RsamlResourceImpl {
                 eObject = ((InternalEObject) eObject).eObjectForURIFragmentSegment(segment);
                 continue;
             }
+            if (segment.indexOf('[') < 0) {
+                // Positional segments (@connections.12) are a direct list access already.
+                eObject = ((InternalEObject) eObject).eObjectForURIFragmentSegment(segment);
+                continue;
+            }
             EObject container = eObject;
             Index index = childrenBySegment.get(container);
             EObject child = index == null ? null : index.children().get(segment);
@@ -210,14 +219,19 @@ public class RsamlResource extends RsamlResourceImpl {
         return eObject;
     }
 
+    /** The children of the container's keyed lists ({@code eKeys}, such as name), by segment. */
+    @SuppressWarnings("unchecked")
     private static Index index(EObject container) {
         Map<String, EObject> children = new HashMap<>();
         InternalEObject internal = (InternalEObject) container;
-        List<EObject> contents = container.eContents();
-        for (EObject child : contents) {
-            children.putIfAbsent(internal.eURIFragmentSegment(child.eContainingFeature(), child), child);
+        for (EReference containment : container.eClass().getEAllContainments()) {
+            if (containment.isMany() && !containment.getEKeys().isEmpty()) {
+                for (EObject child : (List<EObject>) container.eGet(containment, false)) {
+                    children.putIfAbsent(internal.eURIFragmentSegment(containment, child), child);
+                }
+            }
         }
-        return new Index(contents.size(), children);
+        return new Index(container.eContents().size(), children);
     }
 
     @Override

@@ -333,6 +333,39 @@ class LoadingTest {
         assertTrue(open(binary).getErrors().get(0).getMessage().startsWith("the file is binary"));
     }
 
+    /** Goals nested {@code goals} deep under a mission: the deepest element is at depth goals + 2, on line goals + 3. */
+    static String nestedGoals(int goals) {
+        StringBuilder body = new StringBuilder("  <missions name=\"m\">\n");
+        for (int i = 0; i < goals; i++) {
+            body.append(i == 0 ? "<goals" : "<subGoals").append(" name=\"g").append(i).append("\">\n");
+        }
+        for (int i = goals - 1; i >= 0; i--) {
+            body.append(i == 0 ? "</goals>" : "</subGoals>").append('\n');
+        }
+        return model(body.append("  </missions>\n").toString());
+    }
+
+    @Test
+    void nestingIsReadUpToTheLimitAndRefusedBeyondIt() throws Exception {
+        RsamlResource deep = (RsamlResource) open(write("deep.rsaml", nestedGoals(RsamlResource.MAX_DEPTH - 2)));
+        assertEquals("", errors(deep));
+        assertEquals(RsamlResource.MAX_DEPTH, deep.locatedElementCount());
+
+        Resource tooDeep = open(write("too-deep.rsaml", nestedGoals(RsamlResource.MAX_DEPTH - 1)));
+        assertEquals((RsamlResource.MAX_DEPTH + 2) + ":1: elements are nested more than " + RsamlResource.MAX_DEPTH
+                + " levels deep here; RsaML reads models up to that depth", errors(tooDeep));
+    }
+
+    @Test
+    void deeplyNestedExtensionsAreRefusedToo() throws Exception {
+        int levels = 50_000;
+        String body = "  <xmi:Extension extender=\"x\">" + "<a>".repeat(levels) + "</a>".repeat(levels) + "</xmi:Extension>\n";
+        Resource r = open(write("extensions.rsaml", model(body)));
+        assertEquals(1, r.getErrors().size(), () -> errors(r));
+        assertTrue(errors(r).startsWith("3:"), () -> errors(r));
+        assertTrue(errors(r).contains("nested more than " + RsamlResource.MAX_DEPTH + " levels"), () -> errors(r));
+    }
+
     @Test
     void everyLoadedElementHasAPosition() throws Exception {
         Path file = write("all.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\"/>\n  </layers>\n"));
