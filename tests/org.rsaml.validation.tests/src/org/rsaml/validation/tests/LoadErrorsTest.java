@@ -142,4 +142,59 @@ class LoadErrorsTest {
         ModelLoadException e = fails("bomb.rsaml", lol.toString());
         assertTrue(e.getMessage().contains("DOCTYPE"), e.getMessage());
     }
+
+    private static final String HEAD = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rsaml:Architecture xmi:version=\"2.0\""
+            + " xmlns:xmi=\"http://www.omg.org/XMI\" xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"r\" declaredLayers=\"1\">\n";
+
+    @Test
+    void aMultiByteCharacterAcrossByte8192Loads() throws Exception {
+        String layer = "  <layers name=\"a\" description=\"";
+        int pad = 8191 - (HEAD + layer).getBytes(java.nio.charset.StandardCharsets.UTF_8).length;
+        String text = HEAD + layer + "x".repeat(pad) + "\u20AC\"/>\n</rsaml:Architecture>\n";
+        Path file = dir.resolve("straddle.rsaml");
+        Files.writeString(file, text);
+        byte[] bytes = Files.readAllBytes(file);
+        assertEquals((byte) 0xE2, bytes[8191], "the euro sign must start at byte 8191 and end after byte 8192");
+        assertTrue(ModelLoader.load(file, "straddle.rsaml").architecture().getLayers().get(0).getDescription().endsWith("\u20AC"));
+    }
+
+    @Test
+    void utf16IsTextNotBinary() throws Exception {
+        String text = "\uFEFF" + HEAD.replace("UTF-8", "UTF-16") + "  <layers name=\"a\"/>\n</rsaml:Architecture>\n";
+        Path file = dir.resolve("utf16.rsaml");
+        Files.write(file, text.getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+        var model = ModelLoader.load(file, "utf16.rsaml");
+        assertEquals("a", model.architecture().getLayers().get(0).getName());
+        assertEquals(3, model.locate(model.architecture().getLayers().get(0))[0]);
+    }
+
+    @Test
+    void invalidUtf8AfterTheFirstKilobytesIsLocatedWithoutAnAbsolutePath() throws Exception {
+        byte[] bytes = (HEAD + "  <layers name=\"" + "a".repeat(9000) + "\"/>\n  <layers name=\"b\" description=\"X\"/>\n"
+                + "</rsaml:Architecture>\n").getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        bytes[new String(bytes, java.nio.charset.StandardCharsets.ISO_8859_1).lastIndexOf('X')] = (byte) 0xC3;
+        ModelLoadException e = fails("bad.rsaml", bytes);
+        assertEquals(4, e.line(), e.toString());
+        assertTrue(e.toString().startsWith("bad.rsaml:4:"), e.toString());
+        assertTrue(e.getMessage().contains("not valid UTF-8"), e.getMessage());
+        assertTrue(!e.getMessage().contains(dir.toString()), e.getMessage());
+    }
+
+    @Test
+    void aReferencedFileWithADoctypeIsNotRead() throws Exception {
+        Files.writeString(dir.resolve("devices.rsaml"), "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"x\">]>\n"
+                + "<rsaml:Architecture xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"&s;\"><sensors name=\"s\"/></rsaml:Architecture>\n");
+        ModelLoadException e = fails("uses.rsaml", HEAD + "  <layers name=\"a\">\n    <modules name=\"m\" sensors=\"devices.rsaml#//@sensors.0\"/>\n"
+                + "  </layers>\n</rsaml:Architecture>\n");
+        assertEquals("uses.rsaml:4:5: error: reference sensors points to 'devices.rsaml#//@sensors.0', which cannot be loaded:"
+                + " devices.rsaml:2:10: DOCTYPE declarations are not allowed in .rsaml files (DTDs and external entities are never loaded)",
+                e.toString());
+    }
+
+    @Test
+    void aNetworkReferenceIsRefusedWithItsLocation() throws Exception {
+        ModelLoadException e = fails("net.rsaml", HEAD + "  <layers name=\"a\">\n    <modules name=\"m\" sensors=\"http://127.0.0.1:9/x.rsaml#//@sensors.0\"/>\n"
+                + "  </layers>\n</rsaml:Architecture>\n");
+        assertTrue(e.toString().startsWith("net.rsaml:4:5: error: reference to 'http://127.0.0.1:9/x.rsaml' refused"), e.toString());
+    }
 }
