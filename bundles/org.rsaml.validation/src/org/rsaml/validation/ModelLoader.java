@@ -40,10 +40,14 @@ public final class ModelLoader {
         resourceSet.getResources().add(resource);
         try {
             resource.load(resourceSet.getLoadOptions());
+            checkCrossReferences(displayName, uri, resource);
         } catch (IOException | WrappedException e) {
             throw describe(displayName, resource, e);
+        } catch (RuntimeException e) {
+            // Not the file's fault, but still this file's failure only.
+            throw new ModelLoadException(displayName, 0, 0, "RsaML failed on this file with an internal error ("
+                    + e.getClass().getSimpleName() + "); please report it together with the file", e);
         }
-        checkCrossReferences(displayName, uri, resource);
         return new LoadedModel(resource, displayName, path);
     }
 

@@ -5,6 +5,7 @@
 package org.rsaml.model.resource;
 
 import java.io.CharConversionException;
+import java.io.IOException;
 import java.io.UnsupportedEncodingException;
 import java.util.List;
 import java.util.regex.Matcher;
@@ -39,6 +40,10 @@ final class LoadMessages {
     private static final Pattern BAD_UTF8 = Pattern.compile("Invalid byte \\d+ of \\d+-byte UTF-8 sequence\\.?");
     private static final Pattern BAD_ENCODING = Pattern.compile(".*[Ee]ncoding[^\"]*\"([^\"]*)\".*");
 
+    /** Problems of the whole file, which no line or column would help to find. */
+    private static final String BINARY = "the file is binary";
+    private static final String EMPTY = "the file is empty";
+
     private LoadMessages() {
     }
 
@@ -71,6 +76,10 @@ final class LoadMessages {
         } else {
             message = "the file cannot be read as an RsaML model: " + e.getMessage();
         }
+        if (message.startsWith(BINARY) || message.startsWith(EMPTY)) {
+            line = 0;
+            column = 0;
+        }
         return new LoadProblem(message, e, location, line, column);
     }
 
@@ -81,7 +90,9 @@ final class LoadMessages {
             cause = cause.getCause();
         }
         if (cause instanceof SAXParseException sax) {
-            return new LoadProblem(parseError(sax.getMessage(), context), e, String.valueOf(uri), sax.getLineNumber(), sax.getColumnNumber());
+            String message = parseError(sax.getMessage(), context);
+            boolean whole = message.startsWith(BINARY) || message.startsWith(EMPTY);
+            return new LoadProblem(message, e, String.valueOf(uri), whole ? 0 : sax.getLineNumber(), whole ? 0 : sax.getColumnNumber());
         }
         if (cause instanceof UnsupportedEncodingException) {
             return new LoadProblem(unknownEncoding(cause.getMessage()), e, String.valueOf(uri), 1, 1);
@@ -89,11 +100,29 @@ final class LoadMessages {
         if (cause instanceof CharConversionException) {
             return new LoadProblem(parseError(cause.getMessage(), context), e, String.valueOf(uri), 0, 0);
         }
-        String detail = cause.getMessage() == null ? cause.getClass().getSimpleName() : cause.getMessage();
+        String detail = cause.getMessage() == null ? "" : cause.getMessage().replaceAll("\\s+", " ").strip();
         if (uri != null && uri.isFile()) {
             detail = detail.replace(uri.toFileString(), uri.lastSegment());
         }
-        return new LoadProblem("the file cannot be read as an RsaML model: " + detail, e, String.valueOf(uri), 0, 0);
+        if (cause instanceof IOException) {
+            return new LoadProblem("the file cannot be read" + (detail.isEmpty() ? "" : " (" + detail + ")"), e, String.valueOf(uri), 0, 0);
+        }
+        // A fault of RsaML or of a library, not of the file: said so, on this file only.
+        return new LoadProblem("RsaML failed on this file with an internal error (" + cause.getClass().getSimpleName()
+                + (detail.isEmpty() ? "" : ": " + detail) + "); please report it together with the file", e, String.valueOf(uri), 0, 0);
+    }
+
+    /** An element, or the type in its xsi:type, that is in no namespace. */
+    static String noNamespace(String element, String type, EStructuralFeature feature) {
+        if (type != null) {
+            List<String> kinds = feature != null && feature.getEType() instanceof EClass eClass
+                    ? concreteSubclasses(eClass).stream().map(k -> "xsi:type=\"rsaml:" + k.getName() + "\"").toList()
+                    : List.of();
+            return "xsi:type=\"" + type + "\" names a type without RsaML's namespace prefix; write "
+                    + (kinds.isEmpty() ? "xsi:type=\"rsaml:" + type + "\"" : or(kinds));
+        }
+        return "element '" + element + "' is in no namespace, so this is not an RsaML model; an RsaML model's root is"
+                + " rsaml:Architecture with xmlns:rsaml=\"" + RsamlPackage.eNS_URI + "\"";
     }
 
     private static String unknownEncoding(String name) {
@@ -110,15 +139,15 @@ final class LoadMessages {
             byte[] start = context.prolog.bytes();
             int nul = binaryAt(start);
             if (nul >= 0) {
-                return "the file is binary, not an XML model (NUL byte at offset " + nul + ")";
+                return BINARY + ", not an XML model (NUL byte at offset " + nul + ")";
             }
             if (text.startsWith("Premature end of file")) {
-                return isBlank(start) ? "the file is empty; an RsaML model is an XMI document with an rsaml:Architecture root"
+                return isBlank(start) ? EMPTY + "; an RsaML model is an XMI document with an rsaml:Architecture root"
                         : "the file ends before its root element; an RsaML model is an XMI document with an rsaml:Architecture root";
             }
         }
         if (BAD_UTF8.matcher(text).matches()) {
-            return "the file is not valid UTF-8 text here (" + text + "); save it as UTF-8, or declare its real encoding"
+            return "the file is not valid UTF-8 text here; save it as UTF-8, or declare its real encoding"
                     + " in the XML declaration (<?xml version=\"1.0\" encoding=\"...\"?>)";
         }
         Matcher encoding = BAD_ENCODING.matcher(text);
@@ -128,6 +157,9 @@ final class LoadMessages {
         if (text.contains("UTF-8") || text.contains("UTF-16") || text.startsWith("Invalid byte")) {
             return "the file is not valid text in its encoding (" + (context.encoding == null ? "UTF-8" : context.encoding)
                     + "): " + text + "; save it as UTF-8, or declare its real encoding in the XML declaration";
+        }
+        if (text.startsWith("XML document structures must start and end within the same entity")) {
+            return "the file ends before its elements are closed; it may have been cut short";
         }
         return "malformed XML: " + text;
     }

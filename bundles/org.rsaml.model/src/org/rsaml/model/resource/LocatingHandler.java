@@ -4,6 +4,10 @@
  */
 package org.rsaml.model.resource;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.lang.management.MemoryUsage;
 import java.nio.ByteBuffer;
 import java.nio.charset.Charset;
 import java.nio.charset.CodingErrorAction;
@@ -62,6 +66,11 @@ final class LocatingHandler extends SAXXMIHandler {
     private int tagColumn;
     private boolean inStartTag;
     private int depth;
+    private int elements;
+    /** The element being started, and the xsi:type being created with the feature it is for: to name them in errors. */
+    private String elementName;
+    private String typeName;
+    private EStructuralFeature typedFeature;
 
     LocatingHandler(RsamlResource resource, XMLHelper helper, Map<?, ?> options, Context context) {
         super(resource, helper, options);
@@ -95,13 +104,32 @@ final class LocatingHandler extends SAXXMIHandler {
                     + " levels deep here; RsaML reads models up to that depth", getLocation(), tagLine, tagColumn));
             throw new SAXException("nested too deep");
         }
+        if ((++elements & 0xfff) == 0 && heapNearlyExhausted()) {
+            // Give up now, as the JVM would later, instead of letting the collector thrash for minutes first.
+            throw new OutOfMemoryError("the heap is nearly full right after a collection");
+        }
         inStartTag = true;
+        elementName = name;
         try {
             super.startElement(uri, localName, name, attributes);
         } finally {
             inStartTag = false;
             mark();
         }
+    }
+
+    /** Whether a heap pool is still at least 95% full after its last collection. */
+    private static boolean heapNearlyExhausted() {
+        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (pool.getType() == MemoryType.HEAP && pool.isCollectionUsageThresholdSupported()) {
+                MemoryUsage afterCollection = pool.getCollectionUsage();
+                long max = pool.getUsage().getMax();
+                if (afterCollection != null && max > 0 && afterCollection.getUsed() > max / 20 * 19) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**
@@ -337,7 +365,25 @@ final class LocatingHandler extends SAXXMIHandler {
     }
 
     @Override
+    protected EObject createObjectFromTypeName(EObject peekObject, String typeQName, EStructuralFeature feature) {
+        typeName = typeQName;
+        typedFeature = feature;
+        try {
+            return super.createObjectFromTypeName(peekObject, typeQName, feature);
+        } finally {
+            typeName = null;
+            typedFeature = null;
+        }
+    }
+
+    @Override
     public void error(XMIException e) {
+        if (e instanceof PackageNotFoundException p && p.uri() == null) {
+            // EMF names no namespace as 'null': say which element or type lacks one.
+            super.error(new LoadProblem(LoadMessages.noNamespace(elementName, typeName, typedFeature), e, getLocation(),
+                    e.getLine(), e.getColumn()));
+            return;
+        }
         super.error(e instanceof LoadProblem ? e : LoadMessages.describe(e, context, getLocation(), rsamlResource));
     }
 

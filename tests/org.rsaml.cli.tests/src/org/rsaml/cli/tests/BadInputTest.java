@@ -30,9 +30,9 @@ class BadInputTest {
             "empty.rsaml            | empty.rsaml: error: the file is empty",
             "binary.rsaml           | binary.rsaml: error: the file is binary, not an XML model",
             "malformed.rsaml        | malformed.rsaml:6:5: error: malformed XML: The element type \"modules\" must be terminated",
-            "foreign-namespace.rsaml| foreign-namespace.rsaml:2:128: error: namespace 'http://www.eclipse.org/uml2/5.0.0/UML' is not RsaML's",
-            "dangling-reference.rsaml| dangling-reference.rsaml:10:91: error: reference target points to '//@layers[name='functional']/@modules[name='planner']/@ports[name='pose']', which does not exist",
-            "missing-file-reference.rsaml| missing-file-reference.rsaml:10:103: error: reference target points to 'file:",
+            "foreign-namespace.rsaml| foreign-namespace.rsaml:2:1: error: namespace 'http://www.eclipse.org/uml2/5.0.0/UML' is not RsaML's",
+            "dangling-reference.rsaml| dangling-reference.rsaml:9:3: error: reference target points to '//@layers[name='functional']/@modules[name='planner']/@ports[name='pose']', which does not exist",
+            "missing-file-reference.rsaml| missing-file-reference.rsaml:9:3: error: reference target points to 'planner.rsaml#//@layers[name='decision']/@modules[name='planner']/@ports[name='pose']', which cannot be loaded: planner.rsaml: no such file",
             "xxe.rsaml              | xxe.rsaml:2:10: error: DOCTYPE declarations are not allowed",
             "entity-bomb.rsaml      | entity-bomb.rsaml:2:10: error: DOCTYPE declarations are not allowed" })
     void oneClearLineAndTheOtherFilesStillValidated(String input, String expected) {

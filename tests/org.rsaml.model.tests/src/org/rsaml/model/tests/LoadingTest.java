@@ -331,6 +331,9 @@ class LoadingTest {
         Path binary = dir.resolve("image.rsaml");
         Files.write(binary, new byte[] { (byte) 0x89, 'P', 'N', 'G', 0, 0, 0, 13 });
         assertTrue(open(binary).getErrors().get(0).getMessage().startsWith("the file is binary"));
+        // About the whole file: no line or column that would send the user looking at line 1.
+        assertEquals(0, open(empty).getErrors().get(0).getLine());
+        assertEquals(0, open(binary).getErrors().get(0).getLine());
     }
 
     /** Goals nested {@code goals} deep under a mission: the deepest element is at depth goals + 2, on line goals + 3. */
@@ -364,6 +367,63 @@ class LoadingTest {
         assertEquals(1, r.getErrors().size(), () -> errors(r));
         assertTrue(errors(r).startsWith("3:"), () -> errors(r));
         assertTrue(errors(r).contains("nested more than " + RsamlResource.MAX_DEPTH + " levels"), () -> errors(r));
+    }
+
+    @Test
+    void aRootInNoNamespaceIsNamed() throws Exception {
+        Resource r = open(write("plain.rsaml", "<?xml version=\"1.0\"?>\n<Architecture name=\"r\"/>\n"));
+        assertEquals("2:1: element 'Architecture' is in no namespace, so this is not an RsaML model; an RsaML model's root is"
+                + " rsaml:Architecture with xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\"", errors(r).lines().findFirst().orElse(""));
+    }
+
+    @Test
+    void aTypeWithoutPrefixListsTheTypesOfTheMetamodel() throws Exception {
+        Path file = write("type.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n      <ports xsi:type=\"EntryPort\" name=\"p\"/>\n"
+                + "    </modules>\n  </layers>\n"));
+        Resource.Diagnostic d = open(file).getErrors().get(0);
+        assertEquals("xsi:type=\"EntryPort\" names a type without RsaML's namespace prefix; write xsi:type=\"rsaml:EntryPort\""
+                + " or xsi:type=\"rsaml:OutputPort\"", d.getMessage());
+        assertEquals("5:7", d.getLine() + ":" + d.getColumn());
+    }
+
+    @Test
+    void aFileCutShortIsSaidSo() throws Exception {
+        String whole = model("  <layers name=\"a\">\n    <modules name=\"m\"/>\n  </layers>\n");
+        Resource r = open(write("cut.rsaml", whole.substring(0, whole.indexOf("<modules"))));
+        assertEquals("the file ends before its elements are closed; it may have been cut short", r.getErrors().get(0).getMessage());
+        assertTrue(r.getErrors().get(0).getLine() >= 3, () -> errors(r));
+    }
+
+    @Test
+    void anUnexpectedExceptionIsAnErrorOfThatFileOnly() throws Exception {
+        Path file = write("faulty.rsaml", model("  <layers name=\"a\"/>\n"));
+        byte[] bytes = Files.readAllBytes(file);
+        ResourceSet set = new ResourceSetImpl();
+        set.getURIConverter().getURIHandlers().add(0, new org.eclipse.emf.ecore.resource.impl.URIHandlerImpl() {
+            @Override
+            public boolean canHandle(URI uri) {
+                return "faulty.rsaml".equals(uri.lastSegment());
+            }
+
+            @Override
+            public java.io.InputStream createInputStream(URI uri, java.util.Map<?, ?> options) {
+                return new java.io.ByteArrayInputStream(bytes, 0, bytes.length / 2) {
+                    @Override
+                    public synchronized int read(byte[] b, int off, int len) {
+                        int n = super.read(b, off, len);
+                        if (n < 0) {
+                            throw new IllegalStateException("the disk\nwent away");
+                        }
+                        return n;
+                    }
+                };
+            }
+        });
+        Resource r = open(set, file);
+        assertEquals("0:0: RsaML failed on this file with an internal error (IllegalStateException: the disk went away);"
+                + " please report it together with the file", errors(r));
+        Resource other = open(set, write("fine.rsaml", model("  <layers name=\"a\"/>\n")));
+        assertEquals("", errors(other));
     }
 
     @Test

@@ -97,6 +97,9 @@ class UntrustedFilesTest {
                     + "/x.rsaml#//@sensors.0"))), "RsaML never opens network");
             assertRefusedOnModule(openAndResolve(write("jar-ref.rsaml", referring("jar:" + base + "x.jar!/x.rsaml#//@sensors.0"))),
                     "RsaML never opens network");
+            Resource href = openAndResolve(write("href-ref.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n"
+                    + "      <sensors href=\"" + base + "x.rsaml#//@sensors.0\"/>\n    </modules>\n  </layers>\n")));
+            assertTrue(errors(href).startsWith("5:7: reference to '" + base + "x.rsaml' refused"), () -> errors(href));
             Resource namespace = openAndResolve(write("http-ns.rsaml", "<?xml version=\"1.0\"?>\n<x:Architecture xmlns:x=\""
                     + base + "x.ecore\" name=\"r\"/>\n"));
             assertTrue(namespace.getErrors().get(0).getMessage().startsWith("namespace '" + base + "x.ecore' is not RsaML's"),
