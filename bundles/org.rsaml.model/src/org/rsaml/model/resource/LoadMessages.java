@@ -7,6 +7,7 @@ package org.rsaml.model.resource;
 import java.io.CharConversionException;
 import java.io.IOException;
 import java.io.UnsupportedEncodingException;
+import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -38,11 +39,13 @@ final class LoadMessages {
 
     private static final Pattern NUMBER_WITH_UNIT = Pattern.compile("\\s*([-+]?[0-9]*\\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\\s*([A-Za-zµ]+)\\s*");
     private static final Pattern BAD_UTF8 = Pattern.compile("Invalid byte \\d+ of \\d+-byte UTF-8 sequence\\.?");
+    private static final Pattern DECLARED_ENCODING = Pattern.compile("encoding\\s*=\\s*([\"'])(.*?)\\1");
     private static final Pattern BAD_ENCODING = Pattern.compile(".*[Ee]ncoding[^\"]*\"([^\"]*)\".*");
 
     /** Problems of the whole file, which no line or column would help to find. */
     private static final String BINARY = "the file is binary";
     private static final String EMPTY = "the file is empty";
+    private static final String ENCODING = "the XML declaration names the encoding";
 
     private LoadMessages() {
     }
@@ -69,16 +72,24 @@ final class LoadMessages {
         } else if (e instanceof IllegalValueException v) {
             message = illegalValue(v);
         } else if (cause instanceof UnsupportedEncodingException) {
-            message = unknownEncoding(cause.getMessage());
+            message = unknownEncoding(cause.getMessage(), context);
         } else if (cause != null) {
             // Reported by the parser (as a SAXParseException, or the decoding exception it wraps).
             message = parseError(cause.getMessage(), context);
         } else {
             message = "the file cannot be read as an RsaML model: " + e.getMessage();
         }
+        return placed(message, e, location, line, column);
+    }
+
+    /** The problem, at the place that helps: none for the whole file, the XML declaration for its encoding. */
+    private static LoadProblem placed(String message, Exception e, String location, int line, int column) {
         if (message.startsWith(BINARY) || message.startsWith(EMPTY)) {
-            line = 0;
-            column = 0;
+            return new LoadProblem(message, e, location, 0, 0);
+        }
+        if (message.startsWith(ENCODING) && line <= 0) {
+            // The XML declaration opens the file.
+            return new LoadProblem(message, e, location, 1, 1);
         }
         return new LoadProblem(message, e, location, line, column);
     }
@@ -90,15 +101,13 @@ final class LoadMessages {
             cause = cause.getCause();
         }
         if (cause instanceof SAXParseException sax) {
-            String message = parseError(sax.getMessage(), context);
-            boolean whole = message.startsWith(BINARY) || message.startsWith(EMPTY);
-            return new LoadProblem(message, e, String.valueOf(uri), whole ? 0 : sax.getLineNumber(), whole ? 0 : sax.getColumnNumber());
+            return placed(parseError(sax.getMessage(), context), e, String.valueOf(uri), sax.getLineNumber(), sax.getColumnNumber());
         }
         if (cause instanceof UnsupportedEncodingException) {
-            return new LoadProblem(unknownEncoding(cause.getMessage()), e, String.valueOf(uri), 1, 1);
+            return placed(unknownEncoding(cause.getMessage(), context), e, String.valueOf(uri), 0, 0);
         }
         if (cause instanceof CharConversionException) {
-            return new LoadProblem(parseError(cause.getMessage(), context), e, String.valueOf(uri), 0, 0);
+            return placed(parseError(cause.getMessage(), context), e, String.valueOf(uri), 0, 0);
         }
         String detail = cause.getMessage() == null ? "" : cause.getMessage().replaceAll("\\s+", " ").strip();
         if (uri != null && uri.isFile()) {
@@ -125,13 +134,23 @@ final class LoadMessages {
                 + " rsaml:Architecture with xmlns:rsaml=\"" + RsamlPackage.eNS_URI + "\"";
     }
 
-    private static String unknownEncoding(String name) {
-        return "the XML declaration names the encoding '" + name
+    /** The parser upper-cases the name: the declaration's own spelling is shown when it can be found. */
+    private static String unknownEncoding(String parsed, LocatingHandler.Context context) {
+        String name = parsed;
+        Matcher declared = DECLARED_ENCODING.matcher(new String(context.prolog.bytes(), StandardCharsets.ISO_8859_1));
+        if (declared.find() && (parsed == null || declared.group(2).equalsIgnoreCase(parsed))) {
+            name = declared.group(2);
+        }
+        return ENCODING + " '" + name
                 + "', which is not known here; save the file as UTF-8 and declare encoding=\"UTF-8\"";
     }
 
     private static String parseError(String detail, LocatingHandler.Context context) {
-        String text = detail == null ? "" : detail.trim();
+        // One line, of a readable length: the parser quotes the file, line breaks and all.
+        String text = detail == null ? "" : detail.replaceAll("\\s+", " ").trim();
+        if (text.length() > 300) {
+            text = text.substring(0, 300) + "...";
+        }
         if (text.contains("DOCTYPE")) {
             return "DOCTYPE declarations are not allowed in .rsaml files (DTDs and external entities are never loaded)";
         }
@@ -152,7 +171,7 @@ final class LoadMessages {
         }
         Matcher encoding = BAD_ENCODING.matcher(text);
         if (encoding.matches() && !context.rootSeen) {
-            return unknownEncoding(encoding.group(1));
+            return unknownEncoding(encoding.group(1), context);
         }
         if (text.contains("UTF-8") || text.contains("UTF-16") || text.startsWith("Invalid byte")) {
             return "the file is not valid text in its encoding (" + (context.encoding == null ? "UTF-8" : context.encoding)

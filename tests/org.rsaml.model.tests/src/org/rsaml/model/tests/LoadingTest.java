@@ -260,10 +260,10 @@ class LoadingTest {
 
     @Test
     void unknownEncodingIsNamed() throws Exception {
-        Path file = write("enc.rsaml", model("").replace("UTF-8", "KLINGON-1"));
+        Path file = write("enc.rsaml", model("").replace("UTF-8", "klingon-1"));
         Resource r = open(file);
-        assertEquals("the XML declaration names the encoding 'KLINGON-1', which is not known here; save the file as UTF-8"
-                + " and declare encoding=\"UTF-8\"", r.getErrors().get(0).getMessage());
+        assertEquals("1:1: the XML declaration names the encoding 'klingon-1', which is not known here; save the file as UTF-8"
+                + " and declare encoding=\"UTF-8\"", errors(r));
     }
 
     @Test
@@ -424,6 +424,14 @@ class LoadingTest {
                 + " please report it together with the file", errors(r));
         Resource other = open(set, write("fine.rsaml", model("  <layers name=\"a\"/>\n")));
         assertEquals("", errors(other));
+    }
+
+    @Test
+    void aParserMessageQuotingSeveralLinesIsOneLine() throws Exception {
+        Resource r = open(write("version.rsaml", model("").replace("version=\"1.0\"", "version=\"1.0\n  and more\n\"")));
+        String message = r.getErrors().get(0).getMessage();
+        assertTrue(message.startsWith("malformed XML: ") && message.contains("1.0 and more"), message);
+        assertFalse(message.contains("\n"), message);
     }
 
     @Test
