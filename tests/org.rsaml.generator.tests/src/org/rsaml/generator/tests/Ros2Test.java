@@ -5,6 +5,7 @@
 package org.rsaml.generator.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -30,21 +31,27 @@ import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Function;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.Port;
 import org.rsaml.validation.ModelLoader;
 
 /**
- * What can be checked of the ROS 2 target here: package.xml is valid against the REP 149 format 3
- * schema and parses with catkin_pkg; every package configures, builds and installs with the real
- * ament_cmake and rosidl (see {@link Ros2Build}), warnings as errors; the launch file compiles and,
- * run against stand-in launch modules, starts one node per module in its layer's namespace;
- * connected ports share a topic; every periodic function has a timer. rclcpp itself is a stand-in:
- * the nodes are compiled and linked, not run.
+ * What can be checked of the ROS 2 target here, for every example and for hostile names: each
+ * package.xml is valid against the REP 149 format 3 schema and parses with catkin_pkg; every
+ * package configures, builds and installs with the real ament_cmake and rosidl (see
+ * {@link Ros2Build}) with modern CMake targets, warnings as errors; both launch files compile and,
+ * run against stand-in launch modules, start one node per module (as components of one container,
+ * or as processes), every node in the launch namespace; connected ports share a relative topic;
+ * every periodic function has a timer on the node's clock whose period is a parameter with the
+ * model's value; sensor streams use the sensor data QoS and everything else is reliable. rclcpp
+ * itself is a stand-in: the nodes are compiled and linked, not run.
  */
 class Ros2Test {
 
     static List<String> models() throws Exception {
         List<String> models = new ArrayList<>(Tools.cleanExamples());
         models.add("resources/names-hostile.rsaml");
+        models.add("resources/ros2-node-api-names.rsaml");
         return models;
     }
 
@@ -52,16 +59,34 @@ class Ros2Test {
         return name.startsWith("resources/") ? Tools.resource(name.substring(10)) : Tools.example(name);
     }
 
+    /** Runs a launch file against the stand-in launch modules and prints what it starts. */
+    private static final String LAUNCH = """
+            import importlib.util, sys
+            sys.dont_write_bytecode = True
+            sys.path.insert(0, sys.argv[2])
+            spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
+            for e in m.generate_launch_description().entities:
+                kind = type(e).__name__
+                if kind == 'DeclareLaunchArgument':
+                    print('argument', e.name, repr(e.default_value))
+                elif kind == 'ComposableNodeContainer':
+                    print('container', e.package, e.executable, repr(e.namespace), e.name)
+                    for c in e.composable_node_descriptions:
+                        print('component', c.package, c.plugin, repr(c.namespace), c.name, repr(c.parameters))
+                else:
+                    print('node', e.package, e.executable, repr(e.namespace), e.name, repr(e.parameters))
+            """;
+
     @ParameterizedTest
     @MethodSource("models")
-    void packagesAreWellFormedAndCompileAgainstRclcppDeclarations(String name, @TempDir Path tmp) throws Exception {
+    void packagesBuildWithRosidlAndStartAsComponentsOrProcesses(String name, @TempDir Path tmp) throws Exception {
         Path out = tmp.resolve("ws");
         new RsamlGenerator().generate(model(name), Target.ROS2, out, false);
         Architecture arch = ModelLoader.load(model(name), name).architecture();
         String pkg = Names.snake(arch.getName());
         Path root = out.resolve(pkg);
 
-        // package.xml (format 3), read by catkin_pkg as colcon would.
+        // package.xml: REP 149 format 3, read by catkin_pkg as colcon would.
         List<Path> manifests;
         try (Stream<Path> s = Files.list(out)) {
             manifests = s.map(p -> p.resolve("package.xml")).filter(Files::exists).sorted().toList();
@@ -69,113 +94,164 @@ class Ros2Test {
         for (Path manifest : manifests) {
             Ros2Build.validateManifest(manifest);
             String parsed = Tools.ok(out, 60, "python3", "-c", "import sys\nfrom catkin_pkg.package import parse_package\n"
-                    + "p = parse_package(sys.argv[1])\nprint(p.package_format, p.name, ' '.join(sorted(d.name for d in p.build_depends)))", manifest.toString());
+                    + "p = parse_package(sys.argv[1])\nprint(p.package_format, p.name, ' '.join(sorted(d.name for d in p.build_depends)),"
+                    + " '|', ' '.join(sorted(d.name for d in p.exec_depends)))", manifest.toString());
             assertTrue(parsed.startsWith("3 " + manifest.getParent().getFileName()), parsed);
             if (manifest.getParent().equals(root)) {
-                assertTrue(parsed.contains("rclcpp"), parsed);
+                assertTrue(parsed.contains(" rclcpp ") && parsed.contains(" rclcpp_components "), parsed);
+                assertTrue(parsed.contains(" ros2launch"), "ros2 launch needs ros2launch at run time: " + parsed);
             }
         }
 
-        // The launch file: compiles, and starts exactly the modules, each in its layer's namespace.
-        Path launch = root.resolve("launch/" + pkg + ".launch.py");
-        Tools.ok(out, 60, "python3", "-m", "py_compile", launch.toString());
-        String nodes = Tools.ok(out, 60, "python3", "-c", "import importlib.util, sys\nsys.dont_write_bytecode = True\nsys.path.insert(0, sys.argv[2])\n"
-                + "spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)\n"
-                + "for n in m.generate_launch_description().entities: print(n.package, n.executable, n.namespace, n.name)",
-                launch.toString(), Tools.resource("ros2-stubs/python").toString());
-        List<String> started = nodes.lines().toList();
-        int modules = arch.getLayers().stream().mapToInt(l -> l.getModules().size()).sum();
-        assertEquals(modules, started.size(), nodes);
+        // Modern CMake targets: ament_target_dependencies() is gone from Rolling.
         String cmake = Files.readString(root.resolve("CMakeLists.txt"));
-        for (String node : started) {
-            String[] f = node.split(" ");
-            assertEquals(pkg, f[0]);
-            assertTrue(cmake.contains("add_executable(" + f[1] + " "), "no executable " + f[1] + " in CMakeLists.txt");
-        }
-        // Each module has its node, and all modules of a layer share a namespace of their own.
-        Map<String, String[]> nodesByModule = nodes(root);
-        Map<String, String> namespaceOfLayer = new TreeMap<>();
-        for (Layer layer : arch.getLayers()) {
-            for (Module m : layer.getModules()) {
-                String[] node = nodesByModule.get(layer.getName() + "/" + m.getName());
-                assertTrue(node != null, "no node for module " + layer.getName() + "/" + m.getName());
-                assertTrue(started.contains(pkg + " " + executable(cmake, node) + " " + node[0] + " " + node[1]),
-                        "the launch file does not start " + node[0] + "/" + node[1] + ": " + started);
-                String ns = namespaceOfLayer.putIfAbsent(layer.getName(), node[0]);
-                assertTrue(ns == null || ns.equals(node[0]), "layer " + layer.getName() + " spans namespaces");
-            }
-        }
-        assertEquals(arch.getLayers().size(), new TreeSet<>(namespaceOfLayer.values()).size(), "layers share a namespace");
+        assertFalse(cmake.contains("ament_target_dependencies"), cmake);
+        assertTrue(cmake.contains("target_link_libraries(${PROJECT_NAME} PRIVATE rclcpp::rclcpp rclcpp_components::component"), cmake);
 
-        // Every package builds as colcon would: the real rosidl generates each .msg, and the nodes
-        // compile against those headers and the stand-in rclcpp, warnings as errors.
+        // Every package builds as colcon would: the real rosidl generates each .msg, the nodes
+        // compile against those headers and the stand-in rclcpp, warnings as errors, and each
+        // component's executable links only if the library registers the class it names.
         Ros2Build.buildAll(out, tmp.resolve("colcon"));
 
-        // Connected ports share one topic: the source's publisher and the target's subscription.
+        // The launch files: one container with a component per module, or a process per module.
+        int modules = arch.getLayers().stream().mapToInt(l -> l.getModules().size()).sum();
+        Map<String, String> plugins = new TreeMap<>();
+        Matcher reg = Pattern.compile("rclcpp_components_register_node\\(\\$\\{PROJECT_NAME\\} PLUGIN \"([\\w:]+)\" EXECUTABLE (\\w+)\\)").matcher(cmake);
+        while (reg.find()) {
+            plugins.put(reg.group(1), reg.group(2));
+        }
+        assertEquals(modules, plugins.size(), cmake);
+        String composed = launch(out, root.resolve("launch/" + pkg + ".launch.py"));
+        String processes = launch(out, root.resolve("launch/" + pkg + "_processes.launch.py"));
+        for (String started : List.of(composed, processes)) {
+            assertTrue(started.contains("argument namespace ''"), started);
+            assertTrue(started.contains("argument use_sim_time 'false'"), started);
+        }
+        assertTrue(composed.contains("container rclcpp_components component_container $(namespace)"), composed);
+        List<String> components = composed.lines().filter(l -> l.startsWith("component ")).toList();
+        List<String> nodes = processes.lines().filter(l -> l.startsWith("node ")).toList();
+        assertEquals(modules, components.size(), composed);
+        assertEquals(modules, nodes.size(), processes);
+        TreeSet<String> nodeNames = new TreeSet<>();
+        for (String c : components) {
+            String[] f = c.split(" ");
+            assertEquals(pkg, f[1]);
+            assertTrue(plugins.containsKey(f[2]), "component " + f[2] + " is not registered in CMakeLists.txt");
+            assertEquals("$(namespace)", f[3], c);
+            assertTrue(c.endsWith("[{'use_sim_time': $(use_sim_time)}]"), c);
+            nodeNames.add(f[4]);
+            assertTrue(nodes.stream().anyMatch(n -> n.equals("node " + pkg + " " + plugins.get(f[2]) + " $(namespace) " + f[4]
+                    + " [{'use_sim_time': $(use_sim_time)}]")), "no process for " + c + ": " + nodes);
+        }
+        assertEquals(modules, nodeNames.size(), "node names are not unique: " + components);
+
+        // Each module has its node, named as the launch files name it.
+        Map<String, String> nodesByModule = nodes(root);
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                String node = nodesByModule.get(layer.getName() + "/" + m.getName());
+                assertTrue(node != null && nodeNames.contains(node), "no node for module " + layer.getName() + "/" + m.getName());
+            }
+        }
+
+        // Connected ports share one topic, relative so that the launch namespace applies.
         Map<String, String> topics = topics(root);
+        for (String t : topics.values()) {
+            assertFalse(t.startsWith("/"), "absolute topic " + t);
+        }
         for (Connection c : arch.getConnections()) {
             String pub = topics.get(key(c.getSource().getModule()) + "/pub_" + Names.stem(c.getSource().getName()));
             String sub = topics.get(key(c.getTarget().getModule()) + "/sub_" + Names.stem(c.getTarget().getName()));
             assertTrue(pub != null && pub.equals(sub), c.getSource().getName() + " publishes on " + pub + ", "
                     + c.getTarget().getName() + " listens on " + sub);
         }
-        // A timer per periodic function, at its period.
+
+        // QoS: sensor streams best effort, the rest reliable, both overridable by parameters.
+        Map<String, String> qos = qos(root);
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                boolean perception = !m.getSensors().isEmpty() && m.getActuators().isEmpty();
+                for (Port p : m.getPorts()) {
+                    if (p instanceof OutputPort) {
+                        String q = qos.get(key(m) + "/pub_" + Names.stem(p.getName()));
+                        assertEquals(perception ? "rclcpp::SensorDataQoS()" : "rclcpp::QoS(10).reliable()", q, p.getName());
+                    }
+                }
+            }
+        }
+
+        // A timer per periodic function, on the node's clock, its period a parameter.
         String all = allText(root.resolve("gen"));
+        assertFalse(all.contains("create_wall_timer"), "a wall timer ignores use_sim_time");
+        assertFalse(all.contains("steady_clock"), "steady_clock ignores use_sim_time");
+        assertTrue(all.contains("publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();"));
         for (Layer layer : arch.getLayers()) {
             for (Module m : layer.getModules()) {
                 for (Function f : m.getFunctions()) {
                     if (f.getExecType() == ExecutionType.PERIODIC && f.getPeriod() > 0) {
                         long ns = Math.round(f.getPeriod() * f.getTimeUnit().getValue());
-                        assertTrue(all.contains("create_wall_timer(std::chrono::nanoseconds(" + ns + "), [this] { release_"
-                                + Names.stem(f.getName())), "no timer for " + f.getName());
+                        Matcher p = Pattern.compile("(timer_release_\\w+)_period_ = positive\\(\"([\\w.]+)\", this->declare_parameter<std::int64_t>\\(\"\\2\", "
+                                + ns + "\\)\\);").matcher(all);
+                        assertTrue(p.find(), "no period parameter for " + f.getName() + " (" + ns + " ns)");
+                        assertTrue(all.contains(p.group(1) + "_ = rclcpp::create_timer(this, this->get_clock(), rclcpp::Duration::from_nanoseconds("
+                                + p.group(1) + "_period_)"), "no timer on the node's clock for " + f.getName());
                     }
                 }
             }
         }
     }
 
+    private static String launch(Path dir, Path file) throws Exception {
+        Tools.ok(dir, 60, "python3", "-m", "py_compile", file.toString());
+        return Tools.ok(dir, 60, "python3", "-c", LAUNCH, file.toString(), Tools.resource("ros2-stubs/python").toString());
+    }
+
     private static String key(Module m) {
         return m.getLayer().getName() + "/" + m.getName();
     }
 
-    private static final Pattern NODE = Pattern.compile("\\* Node (\\w+) in namespace /(\\w+): module (.+?)(?:: .*)?$", Pattern.MULTILINE);
+    private static final Pattern NODE = Pattern.compile("\\* Node (\\w+): module (.+?)(?:: .*)?$", Pattern.MULTILINE);
 
-    /** Namespace and node name of each module, as its generated base class says (the model's names). */
-    private static Map<String, String[]> nodes(Path root) throws Exception {
-        Map<String, String[]> nodes = new TreeMap<>();
-        try (Stream<Path> s = Files.walk(root.resolve("gen"))) {
-            for (Path p : s.filter(f -> f.toString().endsWith("Base.hpp")).toList()) {
-                Matcher m = NODE.matcher(Files.readString(p));
-                assertTrue(m.find(), p.toString());
-                nodes.put(m.group(3), new String[] { m.group(2), m.group(1), p.getFileName().toString().replace("Base.hpp", "") });
-            }
+    /** Node name of each module (layer/module, the model's names), as its generated base class says. */
+    private static Map<String, String> nodes(Path root) throws Exception {
+        Map<String, String> nodes = new TreeMap<>();
+        for (Path p : bases(root)) {
+            Matcher m = NODE.matcher(Files.readString(p));
+            assertTrue(m.find(), p.toString());
+            nodes.put(m.group(2), m.group(1));
         }
         return nodes;
     }
 
-    /** The executable whose main file is the node's. */
-    private static String executable(String cmake, String[] node) {
-        Matcher m = Pattern.compile("add_executable\\((\\w+) gen/\\w+/" + Pattern.quote(node[2]) + "Main\\.cpp").matcher(cmake);
-        assertTrue(m.find(), "no executable for " + node[2]);
-        return m.group(1);
+    private static List<Path> bases(Path root) throws Exception {
+        try (Stream<Path> s = Files.walk(root.resolve("gen"))) {
+            return s.filter(f -> f.toString().endsWith("Base.hpp")).sorted().toList();
+        }
     }
 
     /** Topic of each publisher and subscription member, by module (layer/module, the model's names). */
     private static Map<String, String> topics(Path root) throws Exception {
-        Map<String, String> topics = new TreeMap<>();
-        Pattern member = Pattern.compile("(\\w+)_ = this->create_(?:publisher|subscription)<[^>]+>\\(\\s*\"([^\"]+)\"");
-        try (Stream<Path> s = Files.walk(root.resolve("gen"))) {
-            for (Path p : s.filter(f -> f.toString().endsWith("Base.hpp")).toList()) {
-                String text = Files.readString(p);
-                Matcher c = NODE.matcher(text);
-                assertTrue(c.find());
-                Matcher m = member.matcher(text);
-                while (m.find()) {
-                    topics.put(c.group(3) + "/" + m.group(1), m.group(2));
-                }
+        return members(root, 2);
+    }
+
+    /** QoS of each publisher and subscription member, by module. */
+    private static Map<String, String> qos(Path root) throws Exception {
+        return members(root, 3);
+    }
+
+    private static Map<String, String> members(Path root, int group) throws Exception {
+        Map<String, String> found = new TreeMap<>();
+        Pattern member = Pattern.compile("(\\w+)_ = this->create_(?:publisher|subscription)<[^>]+>\\(\\s*\"([^\"]+)\", (rclcpp::[^,]+),");
+        for (Path p : bases(root)) {
+            String text = Files.readString(p);
+            Matcher c = NODE.matcher(text);
+            assertTrue(c.find());
+            Matcher m = member.matcher(text);
+            while (m.find()) {
+                found.put(c.group(2) + "/" + m.group(1), m.group(group));
             }
         }
-        return topics;
+        return found;
     }
 
     private static String allText(Path dir) throws Exception {

@@ -31,13 +31,36 @@ import org.rsaml.generator.plan.ExecutionPlan.ReleaseKind;
 public final class CxxNames {
 
     /**
-     * Names the module base classes take from the runtime or rclcpp::Node (its public API included):
-     * model names must not hide them.
+     * Names the module base classes take from the runtime, from rclcpp::Node's public API
+     * (rclcpp/node.hpp, Humble to Rolling, and std::enable_shared_from_this) and from the ROS 2 base
+     * class itself: model names must not hide them.
      */
     private static final String[] CLASS_RESERVED = { "name", "system", "on_start", "publish_outputs", "run_action",
-            "begin_reaction", "trace", "react", "due", "Module", "Node", "get_name", "get_namespace", "get_logger", "get_clock",
-            "now", "create_publisher", "create_subscription", "create_wall_timer", "create_timer", "declare_parameter",
-            "get_parameter", "set_parameter", "shared_from_this", "get_node_options", "publish", "options" };
+            "begin_reaction", "trace", "react", "due", "Module", "Node", "options", "publish",
+            // rclcpp::Node
+            "get_name", "get_namespace", "get_fully_qualified_name", "get_logger", "create_callback_group",
+            "get_callback_groups", "for_each_callback_group", "create_publisher", "create_subscription",
+            "create_wall_timer", "create_timer", "create_client", "create_service", "create_generic_publisher",
+            "create_generic_subscription", "create_generic_client", "create_generic_service", "declare_parameter",
+            "declare_parameters", "undeclare_parameter", "has_parameter", "set_parameter", "set_parameters",
+            "set_parameters_atomically", "get_parameter", "get_parameter_or", "get_parameters", "describe_parameter",
+            "describe_parameters", "get_parameter_types", "list_parameters", "add_pre_set_parameters_callback",
+            "add_on_set_parameters_callback", "add_post_set_parameters_callback", "remove_pre_set_parameters_callback",
+            "remove_on_set_parameters_callback", "remove_post_set_parameters_callback", "get_node_names",
+            "get_topic_names_and_types", "get_service_names_and_types", "get_service_names_and_types_by_node",
+            "get_client_names_and_types_by_node", "get_publisher_names_and_types_by_node",
+            "get_subscriber_names_and_types_by_node", "count_publishers", "count_subscribers", "count_clients",
+            "count_services", "get_publishers_info_by_topic", "get_subscriptions_info_by_topic", "get_graph_event",
+            "wait_for_graph_change", "get_clock", "now", "get_node_base_interface", "get_node_clock_interface",
+            "get_node_graph_interface", "get_node_logging_interface", "get_node_timers_interface",
+            "get_node_topics_interface", "get_node_services_interface", "get_node_waitables_interface",
+            "get_node_parameters_interface", "get_node_time_source_interface", "get_node_type_descriptions_interface",
+            "get_sub_namespace", "get_effective_namespace", "create_sub_node", "get_node_options", "SharedPtr",
+            "WeakPtr", "ConstSharedPtr", "ConstWeakPtr", "UniquePtr", "OnSetParametersCallbackHandle",
+            "PreSetParametersCallbackHandle", "PostSetParametersCallbackHandle", "OnParametersSetCallbackType",
+            "PreSetParametersCallbackType", "PostSetParametersCallbackType", "shared_from_this", "weak_from_this",
+            // the ROS 2 base class
+            "positive", "active", "publisher_options", "subscription_options" };
 
     /** Folder names the generated projects use themselves. */
     private static final String[] FOLDERS = { "rsaml", "msg", "gen", "src", "launch", "include", "build", "architecture",

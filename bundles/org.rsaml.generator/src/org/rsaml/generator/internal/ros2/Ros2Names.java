@@ -4,12 +4,16 @@
  */
 package org.rsaml.generator.internal.ros2;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Deque;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -18,13 +22,16 @@ import org.rsaml.generator.internal.Names;
 import org.rsaml.generator.internal.cxx.CxxNames;
 import org.rsaml.generator.plan.ExecutionPlan;
 import org.rsaml.generator.plan.ExecutionPlan.Flow;
+import org.rsaml.generator.plan.ExecutionPlan.LinkPlan;
 import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.generator.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.generator.plan.ExecutionPlan.Release;
 
 /**
- * What only the ROS 2 target names: executables, the interfaces package and its message types,
- * the ROS types of the ports, and the topics (ports joined by connections share one topic, named
- * after their first output port).
+ * What only the ROS 2 target names and decides: node and executable names, the interfaces package
+ * and its message types, the ROS types of the ports, the topics (ports joined by connections share
+ * one topic, named after their first output port, relative so that a launch namespace moves them
+ * all), each topic's QoS, and how often a module in a reactive cycle may react.
  */
 public final class Ros2Names {
 
@@ -65,10 +72,13 @@ public final class Ros2Names {
     private final Map<PlannedModule, String> executables = new IdentityHashMap<>();
     private final Map<PlannedPort, String> topics = new IdentityHashMap<>();
     private final Map<String, RosMessage> messages = new LinkedHashMap<>();
+    private final Map<PlannedPort, Boolean> sensorTopics = new IdentityHashMap<>();
+    private final Map<PlannedModule, Long> cycleBounds = new IdentityHashMap<>();
 
     public Ros2Names(ExecutionPlan plan, CxxNames names) {
         this.interfacesPackage = names.project() + "_interfaces";
-        NameScope executableScope = new NameScope(true);
+        // The shared library of the nodes is named after the package.
+        NameScope executableScope = new NameScope(true, names.project());
         for (PlannedModule m : plan.modules()) {
             executables.put(m, executableScope.allocate(Names.stem(names.layerId(m) + "_" + names.nodeName(m))));
         }
@@ -77,6 +87,7 @@ public final class Ros2Names {
             messages.put(key, new RosMessage(interfacesPackage, key, messageScope));
         }
         assignTopics(plan, names);
+        boundCycles(plan);
     }
 
     private void assignTopics(ExecutionPlan plan, CxxNames names) {
@@ -85,7 +96,7 @@ public final class Ros2Names {
         for (PlannedModule m : plan.modules()) {
             NameScope segments = new NameScope(false);
             for (PlannedPort p : m.ports()) {
-                own.put(p, "/" + names.layerId(m) + "/" + names.nodeName(m) + "/" + segments.allocate(Names.snake(p.port().getName())));
+                own.put(p, names.layerId(m) + "/" + names.nodeName(m) + "/" + segments.allocate(Names.snake(p.port().getName())));
                 all.add(p);
             }
         }
@@ -101,13 +112,54 @@ public final class Ros2Names {
             }
         }
         Map<PlannedPort, String> topicOfRoot = new HashMap<>();
+        Map<PlannedPort, Boolean> sensorOfRoot = new HashMap<>();
         for (PlannedPort p : all) {
             if (!p.entry()) {
                 topicOfRoot.putIfAbsent(find(parent, p), own.get(p));
+                if (!p.module().module().getSensors().isEmpty() && p.module().module().getActuators().isEmpty()) {
+                    sensorOfRoot.put(find(parent, p), true);
+                }
             }
         }
         for (PlannedPort p : all) {
             topics.put(p, topicOfRoot.getOrDefault(find(parent, p), own.get(p)));
+            sensorTopics.put(p, sensorOfRoot.getOrDefault(find(parent, p), false));
+        }
+    }
+
+    /**
+     * ROS 2 messages carry no wave, so a module in a reactive cycle is held to what the wave
+     * semantics gives it: at most one reaction per wave, and waves come at most as often as the
+     * shortest period of the timed releases whose data reaches the module (of the architecture when
+     * none reaches it; never again after the first reaction when nothing is timed).
+     */
+    private void boundCycles(ExecutionPlan plan) {
+        Map<PlannedModule, List<PlannedModule>> feeders = new HashMap<>();
+        for (Flow f : plan.flows()) {
+            feeders.computeIfAbsent(f.target().module(), k -> new ArrayList<>()).add(f.source().module());
+        }
+        for (LinkPlan l : plan.links()) {
+            if (l.deliversData()) {
+                feeders.computeIfAbsent(l.target().module(), k -> new ArrayList<>()).add(l.trigger().module());
+            }
+        }
+        long shortest = plan.releases().stream().mapToLong(Release::periodNs).min().orElse(ExecutionPlan.MAX_TIME_NS);
+        for (List<PlannedModule> cycle : plan.reactiveCycles()) {
+            for (PlannedModule m : cycle) {
+                Set<PlannedModule> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+                Deque<PlannedModule> todo = new ArrayDeque<>(List.of(m));
+                long bound = Long.MAX_VALUE;
+                while (!todo.isEmpty()) {
+                    PlannedModule u = todo.pop();
+                    if (seen.add(u)) {
+                        for (Release r : u.releases()) {
+                            bound = Math.min(bound, r.periodNs());
+                        }
+                        todo.addAll(feeders.getOrDefault(u, List.of()));
+                    }
+                }
+                cycleBounds.put(m, bound == Long.MAX_VALUE ? shortest : bound);
+            }
         }
     }
 
@@ -127,8 +179,47 @@ public final class Ros2Names {
         return executables.get(m);
     }
 
+    /** The node's name: unique in the architecture, since all nodes share the launch namespace. */
+    public String rosNode(PlannedModule m) {
+        return executables.get(m);
+    }
+
+    /** The port's topic, relative (resolved in the node's namespace). */
     public String topic(PlannedPort p) {
         return topics.get(p);
+    }
+
+    /**
+     * Whether the port's topic is a sensor stream (published by a module that reads sensors and
+     * drives no actuator): best effort, few messages kept; otherwise reliable, as commands and
+     * results need.
+     */
+    public boolean sensorStream(PlannedPort p) {
+        return sensorTopics.get(p);
+    }
+
+    /** The QoS profile of the port's topic, in C++. */
+    public String qos(PlannedPort p) {
+        return sensorStream(p) ? "rclcpp::SensorDataQoS()" : "rclcpp::QoS(10).reliable()";
+    }
+
+    /** For a module in a reactive cycle, the least time between two reactions (0: not in a cycle). */
+    public long cycleBoundNs(PlannedModule m) {
+        return cycleBounds.getOrDefault(m, 0L);
+    }
+
+    /** A bound for messages: {@code 20 ms}, or {@code run} when the module reacts only once. */
+    public static String duration(long ns) {
+        if (ns >= ExecutionPlan.MAX_TIME_NS) {
+            return "run (nothing timed feeds it)";
+        }
+        java.math.BigDecimal ms = java.math.BigDecimal.valueOf(ns, 6).stripTrailingZeros();
+        return ms.toPlainString() + " ms";
+    }
+
+    /** The least time between two reactions of the module: its sporadic interval or its cycle's bound. */
+    public long reactionIntervalNs(PlannedModule m) {
+        return Math.max(m.minIntervalNs(), cycleBoundNs(m));
     }
 
     public List<RosMessage> messages() {

@@ -4,6 +4,7 @@
  */
 package org.rsaml.generator.internal.ros2
 
+import java.util.Set
 import java.util.TreeSet
 import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.Templates
@@ -20,12 +21,13 @@ import org.rsaml.generator.spi.OutputContext
 import org.rsaml.generator.spi.TargetGenerator
 
 /**
- * The ROS 2 target: an ament_cmake package with a node (rclcpp) per module, namespaced by layer,
- * a timer per timed release, a publisher per output port and a subscription per entry port
- * (connected ports share one topic), subsumption links as extra subscriptions, and a Python launch
- * file for the whole architecture; plus an interfaces package for the structured message types the
- * model names without a ROS package. Same generation gap as the C++ target: gen/ is regenerated,
- * src/ and the .msg files are the architect's.
+ * The ROS 2 target: an ament_cmake package whose nodes (one per module) are rclcpp components of
+ * one shared library, each with a publisher per output port and a subscription per entry port on
+ * relative topics (connected ports share one), a timer per timed release on the node's clock, the
+ * model's times as parameters, subsumption links as extra subscriptions, and launch files for one
+ * process or a process per node; plus an interfaces package for the structured message types the
+ * model names without a ROS package. Same generation gap as the C++ target: gen/ and the build
+ * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
  */
 class Ros2Target implements TargetGenerator {
 
@@ -34,17 +36,20 @@ class Ros2Target implements TargetGenerator {
 	}
 
 	override description() {
-		"ament_cmake packages for ROS 2 (rclcpp): a node per module, topics, a launch file"
+		"ament_cmake packages for ROS 2 (rclcpp components): a node per module, topics, launch files"
 	}
 
 	override generate(ExecutionPlan plan, OutputContext output) {
 		val warnings = <String>newArrayList
 		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace")
+		val files = new Ros2Files(plan, project, output)
 		for (cycle : plan.reactiveCycles) {
 			warnings += "modules " + cycle.map[qualifiedName].join(" -> ")
-				+ " react to each other's data in a cycle: in ROS 2 each message goes round again; make one of them periodic or sporadic"
+				+ " react to each other's data in a cycle; ROS 2 messages carry no wave, so each of them reacts at most once per "
+				+ cycle.map[files.cycleBound(it)].join(", ")
+				+ " (the shortest period that feeds the cycle; parameter reaction.min_interval_ns)"
 		}
-		new GeneratedProject(new Ros2Files(plan, project).files, warnings, #{CxxNames.KEPT_PROJECT -> project})
+		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 }
 
@@ -54,42 +59,69 @@ class Ros2Files {
 	val ExecutionPlan plan
 	val extension CxxNames names
 	val extension Ros2Names rosNames
+	val OutputContext output
 	val String banner
 	val String pkg
 
-	new(ExecutionPlan plan, String project) {
+	new(ExecutionPlan plan, String project, OutputContext output) {
 		this.plan = plan
 		this.names = new CxxNames(plan, project)
 		this.rosNames = new Ros2Names(plan, names)
+		this.output = output
 		this.pkg = names.project
 		this.banner = Templates.banner(plan)
 	}
 
+	def cycleBound(PlannedModule m) {
+		Ros2Names.duration(rosNames.cycleBoundNs(m))
+	}
+
 	def files() {
 		val files = <GeneratedFile>newArrayList
-		files += GeneratedFile.generated(pkg + "/package.xml", packageXml)
+		val manifest = manifest(pkg)
+		files += GeneratedFile.generated(pkg + "/package.xml", packageXml(manifest))
+		files += GeneratedFile.user(pkg + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(pkg))
 		files += GeneratedFile.generated(pkg + "/CMakeLists.txt", cmake)
-		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launch)
+		files += GeneratedFile.user(pkg + "/user.cmake", userCmake)
+		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launchComposed)
+		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launchProcesses)
 		for (m : plan.modules) {
 			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", base(m))
-			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.mainName + ".cpp", main(m))
+			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.className + "Component.cpp", component(m))
 			files += GeneratedFile.user(pkg + "/src/" + m.layerId + "/" + m.className + ".hpp", userHeader(m), m.hooks, m.stubs, CxxCode.IDENTIFIERS)
 			files += GeneratedFile.user(pkg + "/src/" + m.layerId + "/" + m.className + ".cpp", userSource(m))
 		}
 		if (!generatedMessages.empty) {
 			val ipkg = rosNames.interfacesPackage
-			files += GeneratedFile.generated(ipkg + "/package.xml", interfacesPackageXml)
-			files += GeneratedFile.generated(ipkg + "/CMakeLists.txt", interfacesCmake)
+			val imanifest = manifest(ipkg)
+			val deps = new TreeSet<String>
+			for (t : generatedMessages) {
+				output.userFile(ipkg + "/msg/" + t.rosName + ".msg").ifPresent[deps += Ros2Manifest.messageDependencies(it, ipkg)]
+			}
+			deps += imanifest.buildDependencies
+			deps -= ipkg
+			files += GeneratedFile.generated(ipkg + "/package.xml", interfacesPackageXml(imanifest, deps))
+			files += GeneratedFile.user(ipkg + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(ipkg))
+			files += GeneratedFile.generated(ipkg + "/CMakeLists.txt", interfacesCmake(deps))
 			for (t : generatedMessages) {
 				files += GeneratedFile.user(ipkg + "/msg/" + t.rosName + ".msg", '''
 					# Message type «Names.comment(t.key)» of architecture '«Names.comment(plan.name)»'.
 					# «Templates.USER_OWNED» Declare its fields, for example:
 					# float64 x
+					# std_msgs/Header header
+					# Types of other packages are found when you generate again, and declared as dependencies.
 				''')
 			}
 		}
 		files += GeneratedFile.user("README.md", readme)
 		files
+	}
+
+	/** The architect's package.user.xml of a package, or the defaults it starts with. */
+	def private manifest(String name) {
+		val path = name + "/" + Ros2Manifest.FILE
+		val text = output.userFile(path)
+		if (text.present) Ros2Manifest.parse(path, text.get) else Ros2Manifest.initial(name)
 	}
 
 	def private generatedMessages() {
@@ -111,6 +143,10 @@ class Ros2Files {
 		Names.cppString(text)
 	}
 
+	def private py(String text) {
+		Names.pythonString(text)
+	}
+
 	def private doc(String text) {
 		Templates.doc(text)
 	}
@@ -119,28 +155,52 @@ class Ros2Files {
 		Templates.described(text)
 	}
 
-	def private packageXml() {
+	def private people(Ros2Manifest manifest) '''
+		«FOR x : manifest.xml("maintainer")»
+			«x»
+		«ENDFOR»
+		«FOR x : manifest.xml("license")»
+			«x»
+		«ENDFOR»
+		«FOR x : manifest.xml("url")»
+			«x»
+		«ENDFOR»
+		«FOR x : manifest.xml("author")»
+			«x»
+		«ENDFOR»
+	'''
+
+	def private packageXml(Ros2Manifest manifest) {
 		val description = if (doc(plan.description).empty) "The RsaML architecture " + plan.name else plan.description
+		val depends = new TreeSet<String>(#{"rclcpp", "rclcpp_components"})
+		depends += messagePackages
+		val generated = <String>newHashSet
+		generated += "buildtool_depend ament_cmake"
+		depends.forEach[generated += "depend " + it]
+		#["launch", "launch_ros", "ros2launch"].forEach[generated += "exec_depend " + it]
 		'''
 			<?xml version="1.0"?>
 			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
 			<!-- «Names.xml(banner)» -->
+			<!-- Version, maintainers, licences, URLs, authors and further dependencies: «Ros2Manifest.FILE» (yours). -->
 			<package format="3">
 			  <name>«pkg»</name>
-			  <version>0.1.0</version>
+			  <version>«manifest.version»</version>
 			  <description>«Names.xml(doc(description))»</description>
-			  <maintainer email="maintainer@example.com">Maintainer</maintainer>
-			  <license>TODO</license>
+			  «people(manifest)»
 
 			  <buildtool_depend>ament_cmake</buildtool_depend>
 
-			  <depend>rclcpp</depend>
-			  «FOR p : messagePackages»
+			  «FOR p : depends»
 			  	<depend>«p»</depend>
 			  «ENDFOR»
 
 			  <exec_depend>launch</exec_depend>
 			  <exec_depend>launch_ros</exec_depend>
+			  <exec_depend>ros2launch</exec_depend>
+			  «FOR d : manifest.dependencies(generated)»
+			  	«d»
+			  «ENDFOR»
 
 			  <export>
 			    <build_type>ament_cmake</build_type>
@@ -149,40 +209,61 @@ class Ros2Files {
 		'''
 	}
 
-	def private interfacesPackageXml() '''
-		<?xml version="1.0"?>
-		<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
-		<!-- «Names.xml(banner)» -->
-		<package format="3">
-		  <name>«rosNames.interfacesPackage»</name>
-		  <version>0.1.0</version>
-		  <description>«Names.xml("Message types of the RsaML architecture " + doc(plan.name))»</description>
-		  <maintainer email="maintainer@example.com">Maintainer</maintainer>
-		  <license>TODO</license>
+	def private interfacesPackageXml(Ros2Manifest manifest, Set<String> deps) {
+		val generated = <String>newHashSet
+		generated += "buildtool_depend ament_cmake"
+		generated += "buildtool_depend rosidl_default_generators"
+		generated += "exec_depend rosidl_default_runtime"
+		deps.forEach[generated += "depend " + it]
+		'''
+			<?xml version="1.0"?>
+			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
+			<!-- «Names.xml(banner)» -->
+			<!-- Version, maintainers, licences, URLs, authors and further dependencies: «Ros2Manifest.FILE» (yours). -->
+			<package format="3">
+			  <name>«rosNames.interfacesPackage»</name>
+			  <version>«manifest.version»</version>
+			  <description>«Names.xml("Message types of the RsaML architecture " + doc(plan.name))»</description>
+			  «people(manifest)»
 
-		  <buildtool_depend>ament_cmake</buildtool_depend>
-		  <buildtool_depend>rosidl_default_generators</buildtool_depend>
-		  <exec_depend>rosidl_default_runtime</exec_depend>
-		  <member_of_group>rosidl_interface_packages</member_of_group>
+			  <buildtool_depend>ament_cmake</buildtool_depend>
+			  <buildtool_depend>rosidl_default_generators</buildtool_depend>
+			  «FOR d : deps»
+			  	<depend>«d»</depend>
+			  «ENDFOR»
+			  <exec_depend>rosidl_default_runtime</exec_depend>
+			  «FOR d : manifest.dependencies(generated)»
+			  	«d»
+			  «ENDFOR»
+			  <member_of_group>rosidl_interface_packages</member_of_group>
 
-		  <export>
-		    <build_type>ament_cmake</build_type>
-		  </export>
-		</package>
-	'''
+			  <export>
+			    <build_type>ament_cmake</build_type>
+			  </export>
+			</package>
+		'''
+	}
 
-	def private interfacesCmake() '''
+	def private interfacesCmake(Set<String> deps) '''
 		# «banner»
+		# Message packages your .msg files use are found when you generate again; others you need go in
+		# «Ros2Manifest.FILE» as <depend>.
 		cmake_minimum_required(VERSION 3.8)
 		project(«rosNames.interfacesPackage»)
 
 		find_package(ament_cmake REQUIRED)
 		find_package(rosidl_default_generators REQUIRED)
+		«FOR d : deps»
+			find_package(«d» REQUIRED)
+		«ENDFOR»
 
 		rosidl_generate_interfaces(${PROJECT_NAME}
 		  «FOR t : generatedMessages»
 		  	"msg/«t.rosName».msg"
 		  «ENDFOR»
+		  «IF !deps.empty»
+		  	DEPENDENCIES «deps.join(" ")»
+		  «ENDIF»
 		)
 
 		ament_export_dependencies(rosidl_default_runtime)
@@ -191,6 +272,8 @@ class Ros2Files {
 
 	def private cmake() '''
 		# «banner»
+		# Every node is an rclcpp component of the shared library ${PROJECT_NAME}, and an executable of
+		# its own. Your additions go in user.cmake, included below.
 		cmake_minimum_required(VERSION 3.8)
 		project(«pkg» LANGUAGES CXX)
 
@@ -201,39 +284,99 @@ class Ros2Files {
 
 		find_package(ament_cmake REQUIRED)
 		find_package(rclcpp REQUIRED)
+		find_package(rclcpp_components REQUIRED)
 		«FOR p : messagePackages»
 			find_package(«p» REQUIRED)
 		«ENDFOR»
 
+		add_library(${PROJECT_NAME} SHARED
+		  «FOR m : plan.modules»
+		  	gen/«m.layerId»/«m.className»Component.cpp
+		  	src/«m.layerId»/«m.className».cpp
+		  «ENDFOR»
+		)
+		target_include_directories(${PROJECT_NAME} PRIVATE gen src)
+		target_link_libraries(${PROJECT_NAME} PRIVATE rclcpp::rclcpp rclcpp_components::component«FOR p : messagePackages» ${«p»_TARGETS}«ENDFOR»)
+
 		«FOR m : plan.modules»
 			# Node «doc(m.qualifiedName)»
-			add_executable(«m.executable» gen/«m.layerId»/«m.mainName».cpp src/«m.layerId»/«m.className».cpp)
-			target_include_directories(«m.executable» PRIVATE gen src)
-			ament_target_dependencies(«m.executable» rclcpp«FOR p : messagePackages» «p»«ENDFOR»)
-
+			rclcpp_components_register_node(${PROJECT_NAME} PLUGIN "«plugin(m)»" EXECUTABLE «m.executable»)
 		«ENDFOR»
-		install(TARGETS
-		  «FOR m : plan.modules»
-		  	«m.executable»
-		  «ENDFOR»
-		  DESTINATION lib/${PROJECT_NAME})
+
+		include(user.cmake)
+
+		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
 		install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
 
 		ament_package()
 	'''
 
-	def private launch() '''
+	def private userCmake() '''
+		# «Templates.USER_OWNED» CMakeLists.txt includes it before
+		# ament_package(). The nodes are the shared library ${PROJECT_NAME}; add what they need, e.g.
+		#   find_package(tf2_ros REQUIRED)
+		#   target_link_libraries(${PROJECT_NAME} PRIVATE tf2_ros::tf2_ros)
+		# and name the package in «Ros2Manifest.FILE» (<depend>tf2_ros</depend>).
+	'''
+
+	def private plugin(PlannedModule m) {
+		names.project + "::" + m.layerId + "::" + m.className
+	}
+
+	def private launchArguments() '''
+		DeclareLaunchArgument('namespace', default_value='',
+		                      description='Namespace of every node and topic (a second robot: another namespace)'),
+		DeclareLaunchArgument('use_sim_time', default_value='false',
+		                      description='Run the nodes on the simulation clock (/clock)'),
+	'''
+
+	def private launchComposed() '''
 		# «banner»
-		# Starts every module of the architecture as a node, its layer as the namespace.
+		# Starts every module of the architecture as an rclcpp component in one process (a component
+		# container); «pkg»_processes.launch.py starts a process per node instead. Arguments:
+		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true.
 		from launch import LaunchDescription
+		from launch.actions import DeclareLaunchArgument
+		from launch.substitutions import LaunchConfiguration
+		from launch_ros.actions import ComposableNodeContainer
+		from launch_ros.descriptions import ComposableNode
+
+
+		def generate_launch_description():
+		    namespace = LaunchConfiguration('namespace')
+		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time')}]
+		    return LaunchDescription([
+		        «launchArguments»
+		        ComposableNodeContainer(
+		            name=«py(pkg + "_container")», namespace=namespace, package='rclcpp_components',
+		            executable='component_container', output='screen', parameters=parameters,
+		            composable_node_descriptions=[
+		                «FOR m : plan.modules»
+		                	ComposableNode(package=«py(pkg)», plugin=«py(plugin(m))», name=«py(m.rosNode)»,
+		                	               namespace=namespace, parameters=parameters),
+		                «ENDFOR»
+		            ]),
+		    ])
+	'''
+
+	def private launchProcesses() '''
+		# «banner»
+		# Starts every module of the architecture as a node in a process of its own. Arguments:
+		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true.
+		from launch import LaunchDescription
+		from launch.actions import DeclareLaunchArgument
+		from launch.substitutions import LaunchConfiguration
 		from launch_ros.actions import Node
 
 
 		def generate_launch_description():
+		    namespace = LaunchConfiguration('namespace')
+		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time')}]
 		    return LaunchDescription([
+		        «launchArguments»
 		        «FOR m : plan.modules»
-		        	Node(package=«Names.pythonString(pkg)», executable=«Names.pythonString(m.executable)», name=«Names.pythonString(m.nodeName)»,
-		        	     namespace=«Names.pythonString(m.layerId)», output='screen'),
+		        	Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
+		        	     namespace=namespace, parameters=parameters, output='screen'),
 		        «ENDFOR»
 		    ])
 	'''
@@ -264,12 +407,20 @@ class Ros2Files {
 		links
 	}
 
+	/** The parameter holding a release's period. */
+	def private periodParameter(Release r) {
+		r.method.replaceFirst("^release_", "") + ".period_ns"
+	}
+
 	def private base(PlannedModule m) '''
 		// «banner»
 		#pragma once
 
-		#include <chrono>
+		#include <cstdint>
 		#include <memory>
+		#include <optional>
+		#include <stdexcept>
+		#include <string>
 
 		#include <rclcpp/rclcpp.hpp>
 		«FOR h : headersOf(m)»
@@ -279,38 +430,63 @@ class Ros2Files {
 		namespace «names.project»::«m.layerId» {
 
 		/**
-		 * Node «doc(m.nodeName)» in namespace /«m.layerId»: module «doc(m.qualifiedName)»«described(m.description)»
+		 * Node «doc(m.rosNode)»: module «doc(m.qualifiedName)»«described(m.description)»
 		 * Timing: «doc(m.timing)».
 		 * The generated part: «m.className» (src/«m.layerId»/«m.className».hpp, yours) derives from it.
+		 * Topics are relative: the node's namespace (launch argument namespace) prefixes them all. The
+		 * model's times are parameters (nanoseconds, > 0) with the model's values as defaults; QoS can be
+		 * overridden with the qos_overrides.<topic> parameters; timers run on the node's clock
+		 * (use_sim_time).
 		 */
 		class «m.baseName» : public rclcpp::Node {
 		 public:
-		  explicit «m.baseName»(const rclcpp::NodeOptions& options = rclcpp::NodeOptions())
-		      : rclcpp::Node(«str(m.nodeName)», «str("/" + m.layerId)», options) {
+		  explicit «m.baseName»(const rclcpp::NodeOptions& options)
+		      : rclcpp::Node(«str(m.rosNode)», options) {
+		    «FOR r : m.releases»
+		    	«r.timerMember»_period_ = positive(«str(r.periodParameter)», this->declare_parameter<std::int64_t>(«str(r.periodParameter)», «r.periodNs»));
+		    «ENDFOR»
+		    «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
+		    	«f.lastRunMember»_interval_ = positive(«str(f.method + ".min_interval_ns")», this->declare_parameter<std::int64_t>(«str(f.method + ".min_interval_ns")», «f.minIntervalNs»));
+		    «ENDFOR»
+		    «IF m.reactive && m.reactionIntervalNs > 0»
+		    	reaction_interval_ = positive("reaction.min_interval_ns", this->declare_parameter<std::int64_t>("reaction.min_interval_ns", «m.reactionIntervalNs»));
+		    «ENDIF»
+		    «FOR l : linksOf(m)»
+		    	link_«l.stem»_duration_ = positive(«str(l.stem + ".duration_ns")», this->declare_parameter<std::int64_t>(«str(l.stem + ".duration_ns")», «l.durationNs»));
+		    «ENDFOR»
+		    rclcpp::PublisherOptions publisher_options;
+		    publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		    rclcpp::SubscriptionOptions subscription_options;
+		    subscription_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		    (void)publisher_options;
+		    (void)subscription_options;
 		    «FOR p : m.outputs»
-		    	«p.pubName»_ = this->create_publisher<«p.rosType»>(«str(p.topic)», rclcpp::QoS(10));
+		    	«p.pubName»_ = this->create_publisher<«p.rosType»>(«str(p.topic)», «p.qos», publisher_options);
 		    «ENDFOR»
 		    «FOR p : m.inputs»
 		    	«p.subName»_ = this->create_subscription<«p.rosType»>(
-		    	    «str(p.topic)», rclcpp::QoS(10),
-		    	    [this](std::shared_ptr<const «p.rosType»> message) { «p.receiveName»(*message, false); });
+		    	    «str(p.topic)», «p.qos»,
+		    	    [this](std::shared_ptr<const «p.rosType»> message) { this->«p.receiveName»(*message, false); },
+		    	    subscription_options);
 		    «ENDFOR»
 		    «FOR l : linksOf(m)»
 		    	// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «doc(l.trigger.qualifiedName)».
 		    	link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
-		    	    «str(l.trigger.topic)», rclcpp::QoS(10),
+		    	    «str(l.trigger.topic)», «l.trigger.qos»,
 		    	    [this](std::shared_ptr<const «l.trigger.rosType»> message) {
-		    	      link_«l.stem»_until_ = std::chrono::steady_clock::now() + std::chrono::nanoseconds(«l.durationNs»);
+		    	      link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
 		    	      «IF l.deliversData»
-		    	      	«l.target.receiveName»(*message, true);
+		    	      	this->«l.target.receiveName»(*message, true);
 		    	      «ELSE»
 		    	      	(void)message;
 		    	      «ENDIF»
-		    	    });
+		    	    },
+		    	    subscription_options);
 		    «ENDFOR»
 		    «FOR r : m.releases»
 		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»)
-		    	«r.timerMember»_ = this->create_wall_timer(std::chrono::nanoseconds(«r.periodNs»), [this] { «r.method»(); });
+		    	«r.timerMember»_ = rclcpp::create_timer(this, this->get_clock(), rclcpp::Duration::from_nanoseconds(«r.timerMember»_period_),
+		    	                                  [this] { this->«r.method»(); });
 		    «ENDFOR»
 		  }
 		  «IF !m.inputs.empty»
@@ -351,7 +527,7 @@ class Ros2Files {
 		    	«IF p.inhibitors.empty»
 		    		«p.pubName»_->publish(«p.outName»);
 		    	«ELSE»
-		    		if («FOR l : p.inhibitors SEPARATOR ' && '»std::chrono::steady_clock::now() >= link_«l.stem»_until_«ENDFOR») {
+		    		if («FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR») {
 		    		  «p.pubName»_->publish(«p.outName»);
 		    		}
 		    	«ENDIF»
@@ -359,16 +535,37 @@ class Ros2Files {
 		  }
 
 		 private:
+		  static std::int64_t positive(const char* parameter, std::int64_t value) {
+		    if (value <= 0) {
+		      throw std::invalid_argument(std::string("parameter ") + parameter + " must be a positive number of nanoseconds");
+		    }
+		    return value;
+		  }
+
+		  /** Whether a subsumption link is active now (on the node's clock). */
+		  bool active(const std::optional<rclcpp::Time>& until) { return until && this->now() < *until; }
+
+		  /** Whether `interval` has passed since `last` (on the node's clock); if so, `last` becomes now. */
+		  bool due(std::optional<rclcpp::Time>& last, std::int64_t interval) {
+		    const rclcpp::Time now = this->now();
+		    if (last && now - *last < rclcpp::Duration::from_nanoseconds(interval)) {
+		      return false;
+		    }
+		    last = now;
+		    return true;
+		  }
 		  «FOR r : m.releases»
+
 		  	void «r.method»() {
 		  	  «release(r)»
 		  	  publish_outputs();
 		  	}
 		  «ENDFOR»
 		  «FOR p : m.inputs»
+
 		  	void «p.receiveName»(const «p.rosType»& message, bool replacing) {
 		  	  «IF !p.suppressors.empty»
-		  	  	if (!replacing && !(«FOR l : p.suppressors SEPARATOR ' && '»std::chrono::steady_clock::now() >= link_«l.stem»_until_«ENDFOR»)) {
+		  	  	if (!replacing && («FOR l : p.suppressors SEPARATOR ' || '»active(link_«l.stem»_until_)«ENDFOR»)) {
 		  	  	  return;  // suppressed
 		  	  	}
 		  	  «ELSE»
@@ -382,14 +579,12 @@ class Ros2Files {
 		  	}
 		  «ENDFOR»
 		  «IF m.reactive»
+
 		  	void «m.reactMethod»() {
-		  	  «IF m.minIntervalNs > 0»
-		  	  	const auto now = std::chrono::steady_clock::now();
-		  	  	if (reacted_ && now - last_reaction_ < std::chrono::nanoseconds(«m.minIntervalNs»)) {
-		  	  	  return;  // sporadic: not sooner than its period
+		  	  «IF m.reactionIntervalNs > 0»
+		  	  	if (!due(last_reaction_, reaction_interval_)) {
+		  	  	  return;  // «IF m.cycleBoundNs > 0»at most once per wave of the cycle«ELSE»sporadic: not sooner than its period«ENDIF»
 		  	  	}
-		  	  	reacted_ = true;
-		  	  	last_reaction_ = now;
 		  	  «ENDIF»
 		  	  «FOR f : m.stepFunctions»
 		  	  	«callFunction(f)»
@@ -397,12 +592,17 @@ class Ros2Files {
 		  	  publish_outputs();
 		  	}
 		  «ENDIF»
-		  «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
-		  	std::chrono::steady_clock::time_point «f.lastRunMember»{};
+
+		  «FOR r : m.releases»
+		  	std::int64_t «r.timerMember»_period_;
 		  «ENDFOR»
-		  «IF m.reactive && m.minIntervalNs > 0»
-		  	bool reacted_ = false;
-		  	std::chrono::steady_clock::time_point last_reaction_{};
+		  «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
+		  	std::int64_t «f.lastRunMember»_interval_;
+		  	std::optional<rclcpp::Time> «f.lastRunMember»;
+		  «ENDFOR»
+		  «IF m.reactive && m.reactionIntervalNs > 0»
+		  	std::int64_t reaction_interval_;
+		  	std::optional<rclcpp::Time> last_reaction_;
 		  «ENDIF»
 		  «FOR p : m.outputs»
 		  	rclcpp::Publisher<«p.rosType»>::SharedPtr «p.pubName»_;
@@ -412,7 +612,8 @@ class Ros2Files {
 		  «ENDFOR»
 		  «FOR l : linksOf(m)»
 		  	rclcpp::Subscription<«l.trigger.rosType»>::SharedPtr link_«l.stem»_sub_;
-		  	std::chrono::steady_clock::time_point link_«l.stem»_until_{};
+		  	std::int64_t link_«l.stem»_duration_;
+		  	std::optional<rclcpp::Time> link_«l.stem»_until_;
 		  «ENDFOR»
 		  «FOR r : m.releases»
 		  	rclcpp::TimerBase::SharedPtr «r.timerMember»_;
@@ -436,9 +637,7 @@ class Ros2Files {
 
 	def private callFunction(PlannedFunction f) '''
 		«IF f.minIntervalNs > 0»
-			if (std::chrono::steady_clock::now() - «f.lastRunMember» >= std::chrono::nanoseconds(«f.minIntervalNs») ||
-			    «f.lastRunMember» == std::chrono::steady_clock::time_point{}) {
-			  «f.lastRunMember» = std::chrono::steady_clock::now();
+			if (due(«f.lastRunMember», «f.lastRunMember»_interval_)) {
 			  «f.method»();
 			}
 		«ELSE»
@@ -446,20 +645,14 @@ class Ros2Files {
 		«ENDIF»
 	'''
 
-	def private main(PlannedModule m) '''
+	def private component(PlannedModule m) '''
 		// «banner»
-		#include <memory>
-
-		#include <rclcpp/rclcpp.hpp>
+		// Registers node «doc(m.rosNode)» as the rclcpp component «plugin(m)».
+		#include <rclcpp_components/register_node_macro.hpp>
 
 		#include "«m.layerId»/«m.className».hpp"
 
-		int main(int argc, char** argv) {
-		  rclcpp::init(argc, argv);
-		  rclcpp::spin(std::make_shared<::«names.project»::«m.layerId»::«m.className»>(rclcpp::NodeOptions()));
-		  rclcpp::shutdown();
-		  return 0;
-		}
+		RCLCPP_COMPONENTS_REGISTER_NODE(«plugin(m)»)
 	'''
 
 	def private userHeader(PlannedModule m) '''
@@ -521,17 +714,29 @@ class Ros2Files {
 		# «doc(plan.name)» for ROS 2
 
 		ament_cmake packages of the RsaML architecture '«doc(plan.name)»', created by
-		`rsaml generate --target ros2`: a node per module (namespace: its layer), a timer per periodic
-		function, a topic per group of connected ports, and `«pkg»/launch/«pkg».launch.py` to start them
-		all. Put this directory in a colcon workspace's `src/`, then:
+		`rsaml generate --target ros2`, for ROS 2 Humble, Jazzy, Kilted and Rolling: a node per module,
+		each an rclcpp component of the library `«pkg»` and an executable of its own, a timer per
+		periodic function, a topic per group of connected ports. Put this directory in a colcon
+		workspace's `src/`, then:
 
 		```sh
 		colcon build
 		source install/setup.bash
-		ros2 launch «pkg» «pkg».launch.py
+		ros2 launch «pkg» «pkg».launch.py                  # all nodes in one process
+		ros2 launch «pkg» «pkg»_processes.launch.py        # a process per node
+		ros2 launch «pkg» «pkg».launch.py namespace:=robot2 use_sim_time:=true
 		```
 
-		`gen/`, `package.xml`, `CMakeLists.txt` and the launch file are regenerated every time; `src/`
-		and the `.msg` files are yours, created once and never overwritten.
+		Topics are relative, so `namespace:=...` isolates a second robot. The model's periods, minimum
+		intervals and inhibitor/suppressor durations are node parameters (nanoseconds) with the model's
+		values as defaults; timers run on the node's clock, so `use_sim_time` works. Topics written by
+		modules that read sensors use the sensor data QoS (best effort), the others are reliable; both
+		can be overridden with `qos_overrides.<topic>.publisher|subscription.<policy>` parameters.
+
+		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
+		created once and never overwritten: `src/`, the `.msg` files, `user.cmake` (included by
+		`CMakeLists.txt`) and `«Ros2Manifest.FILE»` (version, maintainers, licences, URLs, authors and
+		further dependencies, merged into `package.xml`). Types of other packages used in a `.msg` file
+		are found and declared when you generate again.
 	'''
 }

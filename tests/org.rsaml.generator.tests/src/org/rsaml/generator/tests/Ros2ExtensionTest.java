@@ -1,0 +1,248 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.generator.GenerationException;
+import org.rsaml.generator.GenerationResult;
+import org.rsaml.generator.RsamlGenerator;
+import org.rsaml.generator.Target;
+import org.rsaml.generator.internal.Names;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Connection;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.validation.ModelLoader;
+
+/**
+ * What a ROS 2 developer adds to the generated packages survives regeneration and still builds
+ * with the real rosidl: the manifest's version, people, licence and dependencies
+ * ({@code package.user.xml}), CMake additions ({@code user.cmake}), message fields of other
+ * packages (declared as dependencies when found); a model change that drops a method of theirs is
+ * a compile error; a reactive cycle is bounded.
+ */
+class Ros2ExtensionTest {
+
+    static final String USER_MANIFEST = """
+            <?xml version="1.0"?>
+            <package_user>
+              <version>1.2.3</version>
+              <maintainer email="ada@robots.example.org">Ada Lovelace</maintainer>
+              <license>Apache-2.0</license>
+              <url type="repository">https://robots.example.org/arm.git</url>
+              <depend>geometry_msgs</depend>
+              <depend>rclcpp</depend>
+              <test_depend>ament_lint_auto</test_depend>
+            </package_user>
+            """;
+
+    /** In the interfaces package, a further message package to depend on. */
+    static final String USER_INTERFACES_MANIFEST = """
+            <?xml version="1.0"?>
+            <package_user>
+              <version>2.0.0</version>
+              <license>Apache-2.0</license>
+              <maintainer email="ada@robots.example.org">Ada Lovelace</maintainer>
+              <depend>builtin_interfaces</depend>
+            </package_user>
+            """;
+
+    static final String USER_MESSAGE = """
+            # A motion instruction, with a stamp and a target velocity.
+            std_msgs/Header header
+            geometry_msgs/Twist target
+            float64 speed
+            """;
+
+    /** The architect's code reads the message's fields of other packages: rosidl's headers must be found. */
+    static final String USER_CODE = """
+
+            static_assert(ARM_USER_SETTING == 42, "user.cmake is included");
+
+            double instruction_speed(const pick_and_place_arm_interfaces::msg::MotionInstruction& m) {
+              return m.speed + m.target.linear.x + m.header.stamp.sec + static_cast<double>(m.header.frame_id.size());
+            }
+            """;
+
+    @Test
+    void userAdditionsSurviveAModelChangeAndStillBuild(@TempDir Path tmp) throws Exception {
+        Path model = Files.copy(Tools.example("exp3-task-interpreter.rsaml"), tmp.resolve("arm.rsaml"));
+        Path out = tmp.resolve("ws");
+        RsamlGenerator generator = new RsamlGenerator();
+        generator.generate(model, Target.ROS2, out, false);
+
+        Path pkg = out.resolve("pick_and_place_arm");
+        Path ipkg = out.resolve("pick_and_place_arm_interfaces");
+        assertTrue(Files.readString(pkg.resolve("package.xml")).contains("<license>TODO</license>"));
+        Files.writeString(pkg.resolve("package.user.xml"), USER_MANIFEST);
+        Files.writeString(ipkg.resolve("package.user.xml"), USER_INTERFACES_MANIFEST);
+        Files.writeString(pkg.resolve("user.cmake"), Files.readString(pkg.resolve("user.cmake"))
+                + "target_compile_definitions(${PROJECT_NAME} PRIVATE ARM_USER_SETTING=42)\n");
+        Files.writeString(ipkg.resolve("msg/MotionInstruction.msg"), USER_MESSAGE);
+        Path cpp = pkg.resolve("src/motion_control/MotionController.cpp");
+        Files.writeString(cpp, Files.readString(cpp).replace("}  // namespace", USER_CODE + "\n}  // namespace"));
+        Map<String, byte[]> before = userFiles(out);
+
+        // The model changes: a new output port.
+        String text = Files.readString(model).replace("<ports xsi:type=\"rsaml:OutputPort\" name=\"s0_motionController\"",
+                "<ports xsi:type=\"rsaml:OutputPort\" name=\"s1_motionController\" dataType=\"boolean\"/>\n      "
+                        + "<ports xsi:type=\"rsaml:OutputPort\" name=\"s0_motionController\"");
+        assertNotEquals(Files.readString(model), text);
+        Files.writeString(model, text);
+        generator.generate(model, Target.ROS2, out, false);
+
+        assertTrue(Tools.sameFiles(before, userFiles(out)), "the architect's files changed");
+        assertTrue(Files.readString(pkg.resolve("gen/motion_control/MotionControllerBase.hpp")).contains("out_s1_motionController"));
+        String manifest = Files.readString(pkg.resolve("package.xml"));
+        for (String expected : List.of("<version>1.2.3</version>", "<maintainer email=\"ada@robots.example.org\">Ada Lovelace</maintainer>",
+                "<license>Apache-2.0</license>", "<url type=\"repository\">https://robots.example.org/arm.git</url>",
+                "<depend>geometry_msgs</depend>", "<test_depend>ament_lint_auto</test_depend>")) {
+            assertTrue(manifest.contains(expected), expected + " missing from\n" + manifest);
+        }
+        assertEquals(1, count(manifest, "<depend>rclcpp</depend>"), manifest);
+        assertTrue(!manifest.contains("TODO") && !manifest.contains("maintainer@example.com"), manifest);
+        // The message's fields of std_msgs and geometry_msgs: declared where rosidl and rosdep look.
+        String imanifest = Files.readString(ipkg.resolve("package.xml"));
+        assertTrue(imanifest.contains("<version>2.0.0</version>") && imanifest.contains("<depend>std_msgs</depend>")
+                && imanifest.contains("<depend>geometry_msgs</depend>"), imanifest);
+        String icmake = Files.readString(ipkg.resolve("CMakeLists.txt"));
+        assertTrue(imanifest.contains("<depend>builtin_interfaces</depend>"), imanifest);
+        assertTrue(icmake.contains("find_package(std_msgs REQUIRED)") && icmake.contains("DEPENDENCIES builtin_interfaces geometry_msgs std_msgs"), icmake);
+
+        Ros2Build.validateManifest(pkg.resolve("package.xml"));
+        Ros2Build.validateManifest(ipkg.resolve("package.xml"));
+        Ros2Build.buildAll(out, tmp.resolve("colcon"));
+    }
+
+    @Test
+    void aBrokenUserManifestIsRefusedWithItsLine(@TempDir Path tmp) throws Exception {
+        Path out = tmp.resolve("ws");
+        RsamlGenerator generator = new RsamlGenerator();
+        generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.ROS2, out, false);
+        Path user = out.resolve("pick_and_place_arm/package.user.xml");
+        Files.writeString(user, "<?xml version=\"1.0\"?>\n<package_user>\n  <licence>MIT</licence>\n"
+                + "  <maintainer email=\"a@b.org\">A</maintainer>\n  <license>MIT</license>\n</package_user>\n");
+        Map<String, byte[]> before = Tools.snapshot(out);
+
+        GenerationException e = assertThrows(GenerationException.class,
+                () -> generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.ROS2, out, false));
+        assertEquals("pick_and_place_arm/package.user.xml", e.file().replace('\\', '/'), e.toString());
+        assertEquals(3, e.line(), e.toString());
+        assertTrue(e.getMessage().contains("<licence>"), e.getMessage());
+        assertTrue(Tools.sameFiles(before, Tools.snapshot(out)), "the output changed");
+    }
+
+    @Test
+    void aMethodTheModelDropsIsACompileError(@TempDir Path tmp) throws Exception {
+        Path model = Files.copy(Tools.example("exp3-task-interpreter.rsaml"), tmp.resolve("arm.rsaml"));
+        Path out = tmp.resolve("ws");
+        RsamlGenerator generator = new RsamlGenerator();
+        generator.generate(model, Target.ROS2, out, false);
+        Files.writeString(model, Files.readString(model).replace("instruction6", "placePart"));
+        GenerationResult again = generator.generate(model, Target.ROS2, out, false);
+        assertTrue(again.warnings().stream().anyMatch(w -> w.contains("MotionController.hpp: instruction6 is no longer in the model")),
+                again.warnings().toString());
+
+        Path work = tmp.resolve("colcon");
+        Path install = work.resolve("install");
+        Ros2Build.buildPackage(out.resolve("pick_and_place_arm_interfaces"), work.resolve("build/i"), install,
+                List.of(Ros2Build.underlay(), install));
+        Path pkg = out.resolve("pick_and_place_arm");
+        String prefixes = Ros2Build.underlay() + ";" + install;
+        Tools.ok(pkg, 600, "cmake", "-S", ".", "-B", work.resolve("build/p").toString(), "-DCMAKE_PREFIX_PATH=" + prefixes,
+                "-DPython3_EXECUTABLE=" + (Files.isExecutable(Path.of("/usr/bin/python3")) ? "/usr/bin/python3" : "python3"),
+                "-DCMAKE_CXX_FLAGS=" + Ros2Build.CXX_FLAGS);
+        Tools.Result build = Tools.run(pkg, 900, "cmake", "--build", work.resolve("build/p").toString(), "-j2");
+        assertNotEquals(0, build.exit(), "the build did not notice the dropped method");
+        assertTrue(Pattern.compile("instruction6\\(\\)['\u2018\u2019] marked ['\u2018\u2019]override['\u2018\u2019], but does not override").matcher(build.output()).find(),
+                Tools.last(build.output(), 4000));
+    }
+
+    @Test
+    void modulesInAReactiveCycleReactAtMostOncePerWave(@TempDir Path tmp) throws Exception {
+        String name = "exp1-hybrid.rsaml";
+        Path out = tmp.resolve("ws");
+        GenerationResult result = new RsamlGenerator().generate(Tools.example(name), Target.ROS2, out, false);
+        Architecture arch = ModelLoader.load(Tools.example(name), name).architecture();
+        List<String> cycles = result.warnings().stream().filter(w -> w.contains("react to each other's data in a cycle")).toList();
+        assertTrue(!cycles.isEmpty(), "exp1 has a reactive cycle: " + result.warnings());
+
+        int bounded = 0;
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                String qn = layer.getName() + "/" + m.getName();
+                if (cycles.stream().noneMatch(w -> w.contains(" " + qn + " ") || w.contains("modules " + qn + " "))) {
+                    continue;
+                }
+                Path base = out.resolve(Names.snake(arch.getName()) + "/gen/" + Names.snake(layer.getName()) + "/"
+                        + Names.pascal(m.getName()) + "Base.hpp");
+                String text = Files.readString(base);
+                Matcher p = Pattern.compile("declare_parameter<std::int64_t>\\(\"reaction.min_interval_ns\", (\\d+)\\)").matcher(text);
+                assertTrue(p.find(), qn + " has no reaction bound");
+                assertEquals(shortestFeedingPeriodNs(arch, m), Long.parseLong(p.group(1)), qn);
+                assertTrue(text.contains("if (!due(last_reaction_, reaction_interval_)) {"), qn);
+                bounded++;
+            }
+        }
+        assertTrue(bounded >= 2, "no module of the cycle found: " + cycles);
+    }
+
+    /** The shortest period of the periodic modules and functions whose data can reach m. */
+    private static long shortestFeedingPeriodNs(Architecture arch, Module m) {
+        Set<Module> seen = new HashSet<>();
+        Deque<Module> todo = new ArrayDeque<>(List.of(m));
+        long shortest = Long.MAX_VALUE;
+        while (!todo.isEmpty()) {
+            Module u = todo.pop();
+            if (!seen.add(u)) {
+                continue;
+            }
+            if (u.getExecType() == ExecutionType.PERIODIC && u.getPeriod() > 0) {
+                shortest = Math.min(shortest, Math.round(u.getPeriod() * u.getTimeUnit().getValue()));
+            }
+            for (Function f : u.getFunctions()) {
+                if (f.getExecType() == ExecutionType.PERIODIC && f.getPeriod() > 0) {
+                    shortest = Math.min(shortest, Math.round(f.getPeriod() * f.getTimeUnit().getValue()));
+                }
+            }
+            for (Connection c : arch.getConnections()) {
+                if (c.getTarget().getModule() == u) {
+                    todo.add(c.getSource().getModule());
+                }
+            }
+        }
+        return shortest;
+    }
+
+    private static int count(String text, String part) {
+        return text.split(Pattern.quote(part), -1).length - 1;
+    }
+
+    /** The architect's files: src/, the .msg files, user.cmake and package.user.xml. */
+    private static Map<String, byte[]> userFiles(Path out) throws Exception {
+        Map<String, byte[]> all = Tools.snapshot(out);
+        all.keySet().removeIf(k -> !(k.contains("/src/") || k.endsWith(".msg") || k.endsWith("user.cmake") || k.endsWith("package.user.xml")));
+        return all;
+    }
+}
