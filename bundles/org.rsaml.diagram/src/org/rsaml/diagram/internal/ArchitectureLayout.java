@@ -16,8 +16,11 @@ import org.eclipse.elk.core.options.PortConstraints;
 import org.eclipse.elk.core.options.PortSide;
 import org.eclipse.elk.core.options.SizeConstraint;
 import org.eclipse.elk.core.math.KVector;
+import org.eclipse.elk.graph.ElkBendPoint;
 import org.eclipse.elk.graph.ElkConnectableShape;
 import org.eclipse.elk.graph.ElkEdge;
+import org.eclipse.elk.graph.ElkEdgeSection;
+import org.eclipse.elk.graph.ElkLabel;
 import org.eclipse.elk.graph.ElkNode;
 import org.eclipse.elk.graph.ElkPort;
 import org.eclipse.emf.ecore.EObject;
@@ -337,6 +340,46 @@ public final class ArchitectureLayout extends Layout {
         }
         lines.addAll(overlayLines(device));
         return lines;
+    }
+
+    /**
+     * Widens every layer to the span of the widest, keeping what it holds in place, so that the
+     * layers read as the paper's horizontal bands rather than boxes of different widths.
+     */
+    @Override
+    void arrange() {
+        double left = Double.MAX_VALUE;
+        double right = -Double.MAX_VALUE;
+        for (Layer layer : layers) {
+            ElkNode node = (ElkNode) shapeOf.get(layer);
+            left = Math.min(left, node.getX());
+            right = Math.max(right, node.getX() + node.getWidth());
+        }
+        for (Layer layer : layers) {
+            ElkNode node = (ElkNode) shapeOf.get(layer);
+            double dx = node.getX() - left;
+            node.setX(left);
+            node.setWidth(right - left);
+            for (ElkNode child : node.getChildren()) {
+                child.setX(child.getX() + dx);
+            }
+            for (ElkEdge edge : node.getContainedEdges()) {
+                shift(edge, dx);
+            }
+        }
+    }
+
+    private static void shift(ElkEdge edge, double dx) {
+        for (ElkEdgeSection section : edge.getSections()) {
+            section.setStartX(section.getStartX() + dx);
+            section.setEndX(section.getEndX() + dx);
+            for (ElkBendPoint bend : section.getBendPoints()) {
+                bend.setX(bend.getX() + dx);
+            }
+        }
+        for (ElkLabel label : edge.getLabels()) {
+            label.setX(label.getX() + dx);
+        }
     }
 
     // ------------------------------------------------------------ result

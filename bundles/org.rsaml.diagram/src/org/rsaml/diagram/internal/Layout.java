@@ -114,6 +114,10 @@ abstract class Layout {
     /** Builds the ELK graph: nodes, ports, edges and their labels, sized from their text. */
     abstract void build();
 
+    /** Adjusts ELK's result before it is copied; nothing by default. */
+    void arrange() {
+    }
+
     /** Copies ELK's result into the drawing: shapes, texts, links. */
     abstract void collect();
 
@@ -126,6 +130,7 @@ abstract class Layout {
             KVector minimum = root.getProperty(CoreOptions.NODE_SIZE_MINIMUM);
             root.setDimensions(Math.max(minimum.x, padding.left + padding.right), padding.top + PAD);
         }
+        arrange();
         drawing.width = root.getWidth();
         drawing.height = root.getHeight();
         collect();

@@ -1,0 +1,134 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+
+import org.rsaml.cli.report.ExitCodes;
+import org.rsaml.diagram.DiagramException;
+import org.rsaml.diagram.DiagramFormat;
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.RsamlValidationSetup;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code rsaml diagram [--view V] [--format F] -o DIR MODEL...}: each model drawn into DIR. */
+@Command(name = "diagram", mixinStandardHelpOptions = true, sortOptions = false,
+        description = { "Draws models laid out by the Eclipse Layout Kernel, as SVG images or as self-contained HTML pages",
+                "(diagram, findings, validation summary, pan and zoom; no network needed to open them).",
+                "Each model is written to DIR/<model>-<view>.<svg|html>; findings decorate the elements they are on." },
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = { "0:every diagram written (findings do not change the exit code; see 'rsaml validate')",
+                "2:usage error, a model that cannot be read, or a diagram that cannot be written" },
+        footer = { "", "Example: rsaml diagram --format html -o target/diagrams models/" })
+final class DiagramCommand implements Callable<Integer> {
+
+    @Option(names = "--view", defaultValue = "architecture", paramLabel = "VIEW", converter = ViewConverter.class,
+            description = "architecture (layers, modules, ports, links, devices) or mission (missions, goals, plans, supervisors, orders); default ${DEFAULT-VALUE}.")
+    DiagramView view;
+
+    @Option(names = { "-f", "--format" }, defaultValue = "svg", paramLabel = "FORMAT", converter = FormatConverter.class,
+            description = "svg or html; default ${DEFAULT-VALUE}.")
+    DiagramFormat format;
+
+    @Option(names = { "-o", "--output" }, required = true, paramLabel = "DIR",
+            description = "The directory the diagrams are written to (created if needed).")
+    Path output;
+
+    @Parameters(arity = "1..*", paramLabel = "MODEL", description = "Model files, or directories searched for *.rsaml files.")
+    List<Path> models;
+
+    @ParentCommand
+    RsamlCli parent;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        RsamlValidationSetup.initInBackground();
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        Path directory = parent.workingDirectory.resolve(output);
+        if (Files.exists(directory) && !Files.isDirectory(directory)) {
+            throw new CommandLine.ParameterException(spec.commandLine(),
+                    ModelFiles.display(output) + " is a file; -o names the directory the diagrams are written to");
+        }
+        RsamlDiagrams diagrams = new RsamlDiagrams(view);
+        List<ModelFiles.Input> inputs = ModelFiles.select(parent.workingDirectory, models);
+        // Two models of the same name would overwrite each other's diagram: refuse before writing anything.
+        Map<String, ModelFiles.Input> byFile = new LinkedHashMap<>();
+        for (ModelFiles.Input input : inputs) {
+            if (input.unusable() == null) {
+                String file = diagrams.fileName(input.path(), format);
+                ModelFiles.Input other = byFile.putIfAbsent(file, input);
+                if (other != null) {
+                    throw new CommandLine.ParameterException(spec.commandLine(), other.displayName() + " and " + input.displayName()
+                            + " would both be drawn to " + ModelFiles.display(output.resolve(file))
+                            + "; draw them into different directories");
+                }
+            }
+        }
+        int code = ExitCodes.OK;
+        for (ModelFiles.Input input : inputs) {
+            if (input.unusable() != null) {
+                err.println(input.unusable());
+                code = ExitCodes.INPUT_ERROR;
+                continue;
+            }
+            try {
+                Path written = diagrams.write(input.path(), input.displayName(), format, directory);
+                out.println("wrote " + ModelFiles.display(output.resolve(written.getFileName())));
+            } catch (ModelLoadException e) {
+                err.println(e);
+                code = ExitCodes.INPUT_ERROR;
+            } catch (DiagramException e) {
+                err.println(input.displayName() + ": error: " + e.getMessage());
+                if (parent.debug && e.getCause() != null) {
+                    e.getCause().printStackTrace(err);
+                }
+                code = ExitCodes.INPUT_ERROR;
+            }
+        }
+        out.flush();
+        return code;
+    }
+
+    static final class ViewConverter implements CommandLine.ITypeConverter<DiagramView> {
+        @Override
+        public DiagramView convert(String value) {
+            try {
+                return DiagramView.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    static final class FormatConverter implements CommandLine.ITypeConverter<DiagramFormat> {
+        @Override
+        public DiagramFormat convert(String value) {
+            try {
+                return DiagramFormat.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
+    }
+}

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: EPL-2.0
+// Opens an RsaML HTML report in the system's headless Chromium (puppeteer-core: no browser download),
+// acts as a user would (clicks each finding, an element, the zoom buttons), saves screenshots and
+// prints what it saw as one JSON document. The assertions are made by BrowserTest.java.
+//
+// node report-check.mjs REPORT.html OUTPUT_DIR CHROMIUM [ELEMENT_QNAME]
+import { writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import puppeteer from 'puppeteer-core';
+
+const [report, outDir, executablePath, elementQname] = process.argv.slice(2);
+const seen = { requests: [], errors: [], findings: [], clicks: [] };
+
+const browser = await puppeteer.launch({
+  executablePath,
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
+    '--disable-component-update', '--disable-sync', '--hide-scrollbars'],
+  defaultViewport: { width: 1600, height: 1000 },
+});
+try {
+  const page = await browser.newPage();
+  const url = pathToFileURL(report).href;
+  page.on('request', (r) => { if (r.url() !== url) { seen.requests.push(r.url()); } });
+  page.on('pageerror', (e) => seen.errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error') { seen.errors.push(m.text()); } });
+  await page.goto(url, { waitUntil: 'load' });
+
+  const shot = async (name) => {
+    const file = join(outDir, name);
+    writeFileSync(file, await page.screenshot({ type: 'png' }));
+    return file;
+  };
+  seen.summary = await page.$eval('#summary', (e) => e.textContent);
+  seen.findings = await page.$$eval('#findings li', (items) => items.map((li) => ({
+    rule: li.dataset.rule, qname: li.dataset.qname, severity: li.classList.contains('error') ? 'error' : 'warning',
+  })));
+  seen.screenshot = await shot('report.png');
+
+  const items = await page.$$('#findings li');
+  for (let i = 0; i < items.length; i++) {
+    await items[i].click();
+    const click = await page.evaluate(() => {
+      const svg = document.querySelector('#diagram > svg').getBoundingClientRect();
+      const lit = Array.from(document.querySelectorAll('#diagram .highlight'));
+      const box = lit.length ? lit[0].getBoundingClientRect() : null;
+      return {
+        highlighted: lit.map((e) => e.dataset.qname),
+        offset: box ? [box.left + box.width / 2 - (svg.left + svg.width / 2), box.top + box.height / 2 - (svg.top + svg.height / 2)] : null,
+        details: (document.querySelector('#details .qname') || {}).textContent || '',
+        visible: box ? box.width > 0 && box.height > 0 : false,
+      };
+    });
+    click.screenshot = await shot(`finding-${i + 1}-${seen.findings[i].rule}.png`);
+    seen.clicks.push(click);
+  }
+
+  await page.click('#zoom-fit');
+  if (elementQname) {
+    await page.click(`#diagram g[data-qname="${elementQname}"] > text`);
+    seen.element = await page.evaluate(() => ({
+      details: document.querySelector('#details .qname').textContent,
+      attributes: Object.fromEntries(Array.from(document.querySelectorAll('#details tr')).map((r) => [r.cells[0].textContent, r.cells[1].textContent])),
+      findings: Array.from(document.querySelectorAll('#details .element-findings li')).map((li) => li.textContent),
+      highlighted: Array.from(document.querySelectorAll('#diagram .highlight')).map((e) => e.dataset.qname),
+    }));
+  }
+
+  const width = () => page.$eval('#diagram > svg', (s) => s.viewBox.baseVal.width);
+  seen.zoom = { fit: await width() };
+  await page.click('#zoom-in');
+  seen.zoom.in = await width();
+  await page.click('#zoom-out');
+  await page.click('#zoom-out');
+  seen.zoom.out = await width();
+  const svgBox = await page.$eval('#diagram > svg', (s) => { const r = s.getBoundingClientRect(); return [r.left, r.top, r.width, r.height]; });
+  const before = await page.$eval('#diagram > svg', (s) => s.viewBox.baseVal.x);
+  await page.mouse.move(svgBox[0] + svgBox[2] / 2, svgBox[1] + svgBox[3] / 2);
+  await page.mouse.down();
+  await page.mouse.move(svgBox[0] + svgBox[2] / 2 + 200, svgBox[1] + svgBox[3] / 2, { steps: 5 });
+  await page.mouse.up();
+  seen.pan = { before, after: await page.$eval('#diagram > svg', (s) => s.viewBox.baseVal.x) };
+  await page.click('#zoom-fit');
+  seen.overview = await shot('overview.png');
+} finally {
+  await browser.close();
+}
+process.stdout.write(JSON.stringify(seen, null, 2) + '\n');
