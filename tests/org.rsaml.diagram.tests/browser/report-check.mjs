@@ -4,13 +4,20 @@
 // prints what it saw as one JSON document. The assertions are made by BrowserTest.java.
 //
 // node report-check.mjs REPORT.html OUTPUT_DIR CHROMIUM [ELEMENT_QNAME]
+// node report-check.mjs --svg OUTPUT_DIR CHROMIUM FILE.svg...   renders each image as the browser's own
+//   document: parse errors and the errors Chromium logs for invalid SVG (bad attribute values, ...) are
+//   reported with the size drawn and a screenshot.
 import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import puppeteer from 'puppeteer-core';
 
-const [report, outDir, executablePath, elementQname] = process.argv.slice(2);
-const seen = { requests: [], errors: [], findings: [], clicks: [] };
+const svgMode = process.argv[2] === '--svg';
+const args = process.argv.slice(svgMode ? 3 : 2);
+const report = svgMode ? null : args.shift();
+const [outDir, executablePath, ...rest] = args;
+const elementQname = rest[0];
+const seen = { requests: [], errors: [], findings: [], clicks: [], images: [] };
 
 const browser = await puppeteer.launch({
   executablePath,
@@ -20,6 +27,43 @@ const browser = await puppeteer.launch({
   defaultViewport: { width: 1600, height: 1000 },
 });
 try {
+  if (svgMode) {
+    for (const file of rest) {
+      seen.images.push(await renderSvg(file));
+    }
+  } else {
+    await checkReport();
+  }
+} finally {
+  await browser.close();
+}
+process.stdout.write(JSON.stringify(svgMode ? { images: seen.images } : seen, null, 2) + '\n');
+
+async function renderSvg(file) {
+  const page = await browser.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error' || m.type() === 'warning') { errors.push(m.text()); } });
+  await page.goto(pathToFileURL(file).href, { waitUntil: 'load' });
+  const drawn = await page.evaluate(() => {
+    const root = document.documentElement;
+    const parseError = document.getElementsByTagName('parsererror').length > 0;
+    const box = root.getBBox ? root.getBBox() : { width: 0, height: 0 };
+    return { root: root.localName, parseError, width: box.width, height: box.height,
+      elements: document.querySelectorAll('[data-qname]').length };
+  });
+  const name = file.split('/').pop().replace(/\.svg$/, '.png');
+  const screenshot = join(outDir, name);
+  const clip = await page.evaluate(() => {
+    const r = document.documentElement.getBoundingClientRect();
+    return { x: 0, y: 0, width: Math.max(1, Math.ceil(r.width)), height: Math.max(1, Math.ceil(r.height)) };
+  });
+  writeFileSync(screenshot, await page.screenshot({ type: 'png', clip, captureBeyondViewport: true }));
+  await page.close();
+  return { file, errors, ...drawn, screenshot };
+}
+
+async function checkReport() {
   const page = await browser.newPage();
   const url = pathToFileURL(report).href;
   page.on('request', (r) => { if (r.url() !== url) { seen.requests.push(r.url()); } });
@@ -83,7 +127,4 @@ try {
   seen.pan = { before, after: await page.$eval('#diagram > svg', (s) => s.viewBox.baseVal.x) };
   await page.click('#zoom-fit');
   seen.overview = await shot('overview.png');
-} finally {
-  await browser.close();
 }
-process.stdout.write(JSON.stringify(seen, null, 2) + '\n');
