@@ -33,7 +33,7 @@ import org.eclipse.emf.common.util.EList;
  *
  * @see org.rsaml.model.RsamlPackage#getArchitecture()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA01_declaredLayerCount RSA09_uniqueNames RSA14_layerLevels'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA01_declaredLayerCount='declaredLayers = layers-&gt;size()' RSA09_uniqueNames='layers-&gt;isUnique(name) and sensors-&gt;isUnique(name) and actuators-&gt;isUnique(name) and missions-&gt;isUnique(name) and supervisors-&gt;isUnique(name) and orders-&gt;isUnique(name) and databases-&gt;isUnique(name)' RSA14_layerLevels='layers-&gt;isUnique(level) and layers-&gt;forAll(l | l.level &gt;= 0 and l.level &lt; layers-&gt;size())'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA01_declaredLayerCount='declaredLayers = layers-&gt;size()' RSA09_uniqueNames='layers-&gt;isUnique(normalizedName()) and sensors-&gt;isUnique(normalizedName()) and actuators-&gt;isUnique(normalizedName()) and missions-&gt;isUnique(normalizedName()) and supervisors-&gt;isUnique(normalizedName()) and orders-&gt;isUnique(normalizedName()) and databases-&gt;isUnique(normalizedName())' RSA14_layerLevels='layers-&gt;isUnique(level) and layers-&gt;forAll(l | l.level &gt;= 0 and l.level &lt; layers-&gt;size())'"
  * @generated
  */
 public interface Architecture extends NamedElement {

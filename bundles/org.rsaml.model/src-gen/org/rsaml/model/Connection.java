@@ -26,7 +26,7 @@ import org.eclipse.emf.ecore.EObject;
  *
  * @see org.rsaml.model.RsamlPackage#getConnection()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA02_connectedPortTypes RSA03_adjacentLayerCommunication'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA02_connectedPortTypes='(source &lt;&gt; null and target &lt;&gt; null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.messageType = target.messageType))' RSA03_adjacentLayerCommunication='let from : Layer = if source = null or source.module = null then null else source.module.layer endif, to : Layer = if target = null or target.module = null then null else target.module.layer endif in (from &lt;&gt; null and to &lt;&gt; null) implies (from.level - to.level).abs() &lt;= 1'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA02_connectedPortTypes='(source &lt;&gt; null and target &lt;&gt; null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.normalizedMessageType() = target.normalizedMessageType()))' RSA03_adjacentLayerCommunication='let from : Layer = if source = null or source.module = null then null else source.module.layer endif, to : Layer = if target = null or target.module = null then null else target.module.layer endif in (from &lt;&gt; null and to &lt;&gt; null) implies (from.level - to.level).abs() &lt;= 1'"
  * @generated
  */
 public interface Connection extends EObject {

@@ -25,7 +25,7 @@ import org.eclipse.emf.common.util.EList;
  *
  * @see org.rsaml.model.RsamlPackage#getDatabase()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='knowledge-&gt;isUnique(name)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='knowledge-&gt;isUnique(normalizedName())'"
  * @generated
  */
 public interface Database extends NamedElement {

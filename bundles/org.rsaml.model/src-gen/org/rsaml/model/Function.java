@@ -28,7 +28,7 @@ import org.eclipse.emf.common.util.EList;
  *
  * @see org.rsaml.model.RsamlPackage#getFunction()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA07_realTimeFunctionActions RSA09_uniqueNames'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA07_realTimeFunctionActions='type = ElementType::realTime implies actions-&gt;forAll(a | a.type = ElementType::realTime)' RSA09_uniqueNames='actions-&gt;isUnique(name)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA07_realTimeFunctionActions='type = ElementType::realTime implies actions-&gt;forAll(a | a.type = ElementType::realTime)' RSA09_uniqueNames='actions-&gt;isUnique(normalizedName())'"
  * @generated
  */
 public interface Function extends RealTimeElement {

@@ -27,7 +27,7 @@ import org.eclipse.emf.common.util.EList;
  *
  * @see org.rsaml.model.RsamlPackage#getGoal()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='subGoals-&gt;isUnique(name)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='subGoals-&gt;isUnique(normalizedName())'"
  * @generated
  */
 public interface Goal extends NamedElement {

@@ -26,8 +26,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getLayer()
- * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames RSA13_nonNegativeTimes'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='modules-&gt;isUnique(name)' RSA13_nonNegativeTimes='maxExecTime &gt;= 0'"
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames RSA13_nonNegativeTimes RSA20_representableTimes'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='modules-&gt;isUnique(normalizedName())' RSA13_nonNegativeTimes='maxExecTime &gt;= 0' RSA20_representableTimes='representable(maxExecTime)'"
  * @generated
  */
 public interface Layer extends NamedElement, TimeScaled {

@@ -30,7 +30,7 @@ import org.eclipse.emf.common.util.EList;
  *
  * @see org.rsaml.model.RsamlPackage#getModule()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA05_realTimeModuleTiming RSA06_realTimeModuleFunctions RSA08_layerExecutionBudget RSA09_uniqueNames'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA05_realTimeModuleTiming='type = ElementType::realTime implies (period &gt; 0 and delay &gt; 0)' RSA06_realTimeModuleFunctions='type = ElementType::realTime implies functions-&gt;forAll(f | f.type = ElementType::realTime)' RSA08_layerExecutionBudget='let budget : Real = if layer = null then 0.0 else layer.toMilliseconds(layer.maxExecTime) endif in budget &gt; 0 implies toMilliseconds(execDuration) &lt;= budget + 0.000000001' RSA09_uniqueNames='ports-&gt;isUnique(name) and functions-&gt;isUnique(name) and inhibitors-&gt;isUnique(name) and suppressors-&gt;isUnique(name)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA05_realTimeModuleTiming='type = ElementType::realTime implies (period &gt; 0 and delay &gt; 0)' RSA06_realTimeModuleFunctions='type = ElementType::realTime implies functions-&gt;forAll(f | f.type = ElementType::realTime)' RSA08_layerExecutionBudget='(layer &lt;&gt; null and layer.maxExecTime &gt; 0) implies compareTime(execDuration, layer, layer.maxExecTime) &lt;= 0' RSA09_uniqueNames='ports-&gt;isUnique(normalizedName()) and functions-&gt;isUnique(normalizedName()) and inhibitors-&gt;isUnique(normalizedName()) and suppressors-&gt;isUnique(normalizedName())'"
  * @generated
  */
 public interface Module extends RealTimeElement {

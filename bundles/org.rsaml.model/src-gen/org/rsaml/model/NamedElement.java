@@ -78,4 +78,15 @@ public interface NamedElement extends EObject {
 	 */
 	void setDescription(String value);
 
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The name without surrounding white space; null when it is missing or blank. Rules and generators compare names this way.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	String normalizedName();
+
 } // NamedElement

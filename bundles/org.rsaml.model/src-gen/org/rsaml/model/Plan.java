@@ -26,7 +26,7 @@ import org.eclipse.emf.common.util.EList;
  *
  * @see org.rsaml.model.RsamlPackage#getPlan()
  * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='activities-&gt;isUnique(name)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='activities-&gt;isUnique(normalizedName())'"
  * @generated
  */
 public interface Plan extends NamedElement {

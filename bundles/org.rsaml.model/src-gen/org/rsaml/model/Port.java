@@ -26,7 +26,7 @@ package org.rsaml.model;
  * @see org.rsaml.model.RsamlPackage#getPort()
  * @model abstract="true"
  *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA18_structuredPortNamesMessageType'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA18_structuredPortNamesMessageType='dataType = DataType::structured implies (messageType &lt;&gt; null and messageType.size() &gt; 0)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA18_structuredPortNamesMessageType='dataType = DataType::structured implies normalizedMessageType() &lt;&gt; null'"
  * @generated
  */
 public interface Port extends NamedElement {
@@ -110,5 +110,16 @@ public interface Port extends NamedElement {
 	 * @generated
 	 */
 	void setMessageType(String value);
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The message type without surrounding white space; null when it is missing or blank. Rules and generators compare message types this way.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	String normalizedMessageType();
 
 } // Port

@@ -27,8 +27,8 @@ package org.rsaml.model;
  *
  * @see org.rsaml.model.RsamlPackage#getRealTimeElement()
  * @model abstract="true"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA10_executionWithinPeriod RSA11_deadlineWithinPeriod RSA12_periodicHasPeriod RSA13_nonNegativeTimes RSA17_executionWithinDeadline'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA10_executionWithinPeriod='(execType = ExecutionType::periodic and period &gt; 0) implies execDuration &lt;= period' RSA11_deadlineWithinPeriod='(execType = ExecutionType::periodic and period &gt; 0 and delay &gt; 0) implies delay &lt;= period' RSA12_periodicHasPeriod='execType = ExecutionType::periodic implies period &gt; 0' RSA13_nonNegativeTimes='period &gt;= 0 and delay &gt;= 0 and execDuration &gt;= 0' RSA17_executionWithinDeadline='(type = ElementType::realTime and delay &gt; 0) implies execDuration &lt;= delay'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA10_executionWithinPeriod RSA11_deadlineWithinPeriod RSA12_periodicHasPeriod RSA13_nonNegativeTimes RSA17_executionWithinDeadline RSA20_representableTimes'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA10_executionWithinPeriod='(execType = ExecutionType::periodic and period &gt; 0) implies execDuration &lt;= period' RSA11_deadlineWithinPeriod='(execType = ExecutionType::periodic and period &gt; 0 and delay &gt; 0) implies delay &lt;= period' RSA12_periodicHasPeriod='execType = ExecutionType::periodic implies period &gt; 0' RSA13_nonNegativeTimes='period &gt;= 0 and delay &gt;= 0 and execDuration &gt;= 0' RSA17_executionWithinDeadline='(type = ElementType::realTime and delay &gt; 0) implies execDuration &lt;= delay' RSA20_representableTimes='representable(period) and representable(delay) and representable(execDuration)'"
  * @generated
  */
 public interface RealTimeElement extends NamedElement, TimeScaled {

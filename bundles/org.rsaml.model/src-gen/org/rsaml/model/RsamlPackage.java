@@ -110,13 +110,22 @@ public interface RsamlPackage extends EPackage {
 	int NAMED_ELEMENT_FEATURE_COUNT = 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int NAMED_ELEMENT___NORMALIZED_NAME = 0;
+
+	/**
 	 * The number of operations of the '<em>Named Element</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int NAMED_ELEMENT_OPERATION_COUNT = 0;
+	int NAMED_ELEMENT_OPERATION_COUNT = 1;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.TimeScaled <em>Time Scaled</em>}' class.
@@ -156,13 +165,31 @@ public interface RsamlPackage extends EPackage {
 	int TIME_SCALED___TO_MILLISECONDS__DOUBLE = 0;
 
 	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int TIME_SCALED___REPRESENTABLE__DOUBLE = 2;
+
+	/**
 	 * The number of operations of the '<em>Time Scaled</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int TIME_SCALED_OPERATION_COUNT = 1;
+	int TIME_SCALED_OPERATION_COUNT = 3;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.RealTimeElementImpl <em>Real Time Element</em>}' class.
@@ -256,6 +283,15 @@ public interface RsamlPackage extends EPackage {
 	int REAL_TIME_ELEMENT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 6;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int REAL_TIME_ELEMENT___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -265,13 +301,31 @@ public interface RsamlPackage extends EPackage {
 	int REAL_TIME_ELEMENT___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int REAL_TIME_ELEMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
+
+	/**
 	 * The number of operations of the '<em>Real Time Element</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int REAL_TIME_ELEMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+	int REAL_TIME_ELEMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.ArchitectureImpl <em>Architecture</em>}' class.
@@ -401,6 +455,15 @@ public interface RsamlPackage extends EPackage {
 	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 10;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ARCHITECTURE___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The number of operations of the '<em>Architecture</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -492,6 +555,15 @@ public interface RsamlPackage extends EPackage {
 	int LAYER_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 5;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LAYER___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -501,13 +573,31 @@ public interface RsamlPackage extends EPackage {
 	int LAYER___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LAYER___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LAYER___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
+
+	/**
 	 * The number of operations of the '<em>Layer</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int LAYER_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+	int LAYER_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.ModuleImpl <em>Module</em>}' class.
@@ -664,6 +754,15 @@ public interface RsamlPackage extends EPackage {
 	int MODULE_FEATURE_COUNT = REAL_TIME_ELEMENT_FEATURE_COUNT + 7;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MODULE___NORMALIZED_NAME = REAL_TIME_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -671,6 +770,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int MODULE___TO_MILLISECONDS__DOUBLE = REAL_TIME_ELEMENT___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MODULE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = REAL_TIME_ELEMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MODULE___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Module</em>' class.
@@ -818,6 +935,15 @@ public interface RsamlPackage extends EPackage {
 	int FUNCTION_FEATURE_COUNT = REAL_TIME_ELEMENT_FEATURE_COUNT + 5;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int FUNCTION___NORMALIZED_NAME = REAL_TIME_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -825,6 +951,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int FUNCTION___TO_MILLISECONDS__DOUBLE = REAL_TIME_ELEMENT___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int FUNCTION___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = REAL_TIME_ELEMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int FUNCTION___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Function</em>' class.
@@ -945,6 +1089,15 @@ public interface RsamlPackage extends EPackage {
 	int ACTION_FEATURE_COUNT = REAL_TIME_ELEMENT_FEATURE_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTION___NORMALIZED_NAME = REAL_TIME_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -952,6 +1105,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ACTION___TO_MILLISECONDS__DOUBLE = REAL_TIME_ELEMENT___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTION___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = REAL_TIME_ELEMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTION___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Action</em>' class.
@@ -1072,6 +1243,15 @@ public interface RsamlPackage extends EPackage {
 	int RT_ACTION_FEATURE_COUNT = ACTION_FEATURE_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int RT_ACTION___NORMALIZED_NAME = ACTION___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1079,6 +1259,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int RT_ACTION___TO_MILLISECONDS__DOUBLE = ACTION___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int RT_ACTION___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = ACTION___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int RT_ACTION___REPRESENTABLE__DOUBLE = ACTION___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>RT Action</em>' class.
@@ -1154,13 +1352,31 @@ public interface RsamlPackage extends EPackage {
 	int PORT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PORT___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
+	 * The operation id for the '<em>Normalized Message Type</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PORT___NORMALIZED_MESSAGE_TYPE = NAMED_ELEMENT_OPERATION_COUNT + 0;
+
+	/**
 	 * The number of operations of the '<em>Port</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int PORT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 0;
+	int PORT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.EntryPortImpl <em>Entry Port</em>}' class.
@@ -1243,6 +1459,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ENTRY_PORT_FEATURE_COUNT = PORT_FEATURE_COUNT + 2;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ENTRY_PORT___NORMALIZED_NAME = PORT___NORMALIZED_NAME;
+
+	/**
+	 * The operation id for the '<em>Normalized Message Type</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ENTRY_PORT___NORMALIZED_MESSAGE_TYPE = PORT___NORMALIZED_MESSAGE_TYPE;
 
 	/**
 	 * The number of operations of the '<em>Entry Port</em>' class.
@@ -1334,6 +1568,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int OUTPUT_PORT_FEATURE_COUNT = PORT_FEATURE_COUNT + 2;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int OUTPUT_PORT___NORMALIZED_NAME = PORT___NORMALIZED_NAME;
+
+	/**
+	 * The operation id for the '<em>Normalized Message Type</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int OUTPUT_PORT___NORMALIZED_MESSAGE_TYPE = PORT___NORMALIZED_MESSAGE_TYPE;
 
 	/**
 	 * The number of operations of the '<em>Output Port</em>' class.
@@ -1464,6 +1716,15 @@ public interface RsamlPackage extends EPackage {
 	int SUBSUMPTION_LINK_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUBSUMPTION_LINK___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1473,13 +1734,31 @@ public interface RsamlPackage extends EPackage {
 	int SUBSUMPTION_LINK___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUBSUMPTION_LINK___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
+
+	/**
 	 * The number of operations of the '<em>Subsumption Link</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int SUBSUMPTION_LINK_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+	int SUBSUMPTION_LINK_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.InhibitorImpl <em>Inhibitor</em>}' class.
@@ -1564,6 +1843,15 @@ public interface RsamlPackage extends EPackage {
 	int INHIBITOR_FEATURE_COUNT = SUBSUMPTION_LINK_FEATURE_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int INHIBITOR___NORMALIZED_NAME = SUBSUMPTION_LINK___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1571,6 +1859,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int INHIBITOR___TO_MILLISECONDS__DOUBLE = SUBSUMPTION_LINK___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int INHIBITOR___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = SUBSUMPTION_LINK___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int INHIBITOR___REPRESENTABLE__DOUBLE = SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Inhibitor</em>' class.
@@ -1664,6 +1970,15 @@ public interface RsamlPackage extends EPackage {
 	int SUPPRESSOR_FEATURE_COUNT = SUBSUMPTION_LINK_FEATURE_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUPPRESSOR___NORMALIZED_NAME = SUBSUMPTION_LINK___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1671,6 +1986,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int SUPPRESSOR___TO_MILLISECONDS__DOUBLE = SUBSUMPTION_LINK___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUPPRESSOR___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = SUBSUMPTION_LINK___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUPPRESSOR___REPRESENTABLE__DOUBLE = SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Suppressor</em>' class.
@@ -1755,6 +2088,15 @@ public interface RsamlPackage extends EPackage {
 	int DEVICE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int DEVICE___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1764,13 +2106,31 @@ public interface RsamlPackage extends EPackage {
 	int DEVICE___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int DEVICE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int DEVICE___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
+
+	/**
 	 * The number of operations of the '<em>Device</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int DEVICE_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+	int DEVICE_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.SensorImpl <em>Sensor</em>}' class.
@@ -1864,6 +2224,15 @@ public interface RsamlPackage extends EPackage {
 	int SENSOR_FEATURE_COUNT = DEVICE_FEATURE_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SENSOR___NORMALIZED_NAME = DEVICE___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1871,6 +2240,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int SENSOR___TO_MILLISECONDS__DOUBLE = DEVICE___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SENSOR___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = DEVICE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SENSOR___REPRESENTABLE__DOUBLE = DEVICE___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Sensor</em>' class.
@@ -1973,6 +2360,15 @@ public interface RsamlPackage extends EPackage {
 	int ACTUATOR_FEATURE_COUNT = DEVICE_FEATURE_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTUATOR___NORMALIZED_NAME = DEVICE___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1980,6 +2376,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ACTUATOR___TO_MILLISECONDS__DOUBLE = DEVICE___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTUATOR___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = DEVICE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTUATOR___REPRESENTABLE__DOUBLE = DEVICE___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Actuator</em>' class.
@@ -2053,6 +2467,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int MISSION_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MISSION___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
 
 	/**
 	 * The number of operations of the '<em>Mission</em>' class.
@@ -2137,6 +2560,15 @@ public interface RsamlPackage extends EPackage {
 	int GOAL_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int GOAL___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The number of operations of the '<em>Goal</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -2208,6 +2640,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int PLAN_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PLAN___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
 
 	/**
 	 * The number of operations of the '<em>Plan</em>' class.
@@ -2328,6 +2769,15 @@ public interface RsamlPackage extends EPackage {
 	int ACTIVITY_FEATURE_COUNT = REAL_TIME_ELEMENT_FEATURE_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTIVITY___NORMALIZED_NAME = REAL_TIME_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -2335,6 +2785,24 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ACTIVITY___TO_MILLISECONDS__DOUBLE = REAL_TIME_ELEMENT___TO_MILLISECONDS__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTIVITY___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = REAL_TIME_ELEMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTIVITY___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Activity</em>' class.
@@ -2408,6 +2876,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int SUPERVISOR_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUPERVISOR___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
 
 	/**
 	 * The number of operations of the '<em>Supervisor</em>' class.
@@ -2492,6 +2969,15 @@ public interface RsamlPackage extends EPackage {
 	int ORDER_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ORDER___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The number of operations of the '<em>Order</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -2554,6 +3040,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int DATABASE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 2;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int DATABASE___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
 
 	/**
 	 * The number of operations of the '<em>Database</em>' class.
@@ -2627,6 +3122,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int KNOWLEDGE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int KNOWLEDGE___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
 
 	/**
 	 * The number of operations of the '<em>Knowledge</em>' class.
@@ -2741,6 +3245,16 @@ public interface RsamlPackage extends EPackage {
 	EAttribute getNamedElement_Description();
 
 	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.NamedElement#normalizedName() <em>Normalized Name</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Normalized Name</em>' operation.
+	 * @see org.rsaml.model.NamedElement#normalizedName()
+	 * @generated
+	 */
+	EOperation getNamedElement__NormalizedName();
+
+	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.TimeScaled <em>Time Scaled</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -2770,6 +3284,26 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EOperation getTimeScaled__ToMilliseconds__double();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.TimeScaled#compareTime(double, org.rsaml.model.TimeScaled, double) <em>Compare Time</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Compare Time</em>' operation.
+	 * @see org.rsaml.model.TimeScaled#compareTime(double, org.rsaml.model.TimeScaled, double)
+	 * @generated
+	 */
+	EOperation getTimeScaled__CompareTime__double_TimeScaled_double();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.TimeScaled#representable(double) <em>Representable</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Representable</em>' operation.
+	 * @see org.rsaml.model.TimeScaled#representable(double)
+	 * @generated
+	 */
+	EOperation getTimeScaled__Representable__double();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.RealTimeElement <em>Real Time Element</em>}'.
@@ -3246,6 +3780,16 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EAttribute getPort_MessageType();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.Port#normalizedMessageType() <em>Normalized Message Type</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Normalized Message Type</em>' operation.
+	 * @see org.rsaml.model.Port#normalizedMessageType()
+	 * @generated
+	 */
+	EOperation getPort__NormalizedMessageType();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.EntryPort <em>Entry Port</em>}'.
@@ -4021,6 +4565,14 @@ public interface RsamlPackage extends EPackage {
 		EAttribute NAMED_ELEMENT__DESCRIPTION = eINSTANCE.getNamedElement_Description();
 
 		/**
+		 * The meta object literal for the '<em><b>Normalized Name</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation NAMED_ELEMENT___NORMALIZED_NAME = eINSTANCE.getNamedElement__NormalizedName();
+
+		/**
 		 * The meta object literal for the '{@link org.rsaml.model.TimeScaled <em>Time Scaled</em>}' class.
 		 * <!-- begin-user-doc -->
 		 * <!-- end-user-doc -->
@@ -4045,6 +4597,22 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EOperation TIME_SCALED___TO_MILLISECONDS__DOUBLE = eINSTANCE.getTimeScaled__ToMilliseconds__double();
+
+		/**
+		 * The meta object literal for the '<em><b>Compare Time</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = eINSTANCE.getTimeScaled__CompareTime__double_TimeScaled_double();
+
+		/**
+		 * The meta object literal for the '<em><b>Representable</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation TIME_SCALED___REPRESENTABLE__DOUBLE = eINSTANCE.getTimeScaled__Representable__double();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.RealTimeElementImpl <em>Real Time Element</em>}' class.
@@ -4413,6 +4981,14 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EAttribute PORT__MESSAGE_TYPE = eINSTANCE.getPort_MessageType();
+
+		/**
+		 * The meta object literal for the '<em><b>Normalized Message Type</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation PORT___NORMALIZED_MESSAGE_TYPE = eINSTANCE.getPort__NormalizedMessageType();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.EntryPortImpl <em>Entry Port</em>}' class.

@@ -24,8 +24,8 @@ package org.rsaml.model;
  *
  * @see org.rsaml.model.RsamlPackage#getSubsumptionLink()
  * @model abstract="true"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='duration &gt;= 0'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='duration &gt;= 0' RSA20_representableTimes='representable(duration)'"
  * @generated
  */
 public interface SubsumptionLink extends NamedElement, TimeScaled {

@@ -67,4 +67,26 @@ public interface TimeScaled extends EObject {
 	 */
 	double toMilliseconds(double value);
 
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * Compares a time value in this element's unit with one in another element's unit, exactly (decimal scaling of the written values): negative, zero or positive as this one is shorter, equal or longer.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	int compareTime(double value, TimeScaled other, double otherValue);
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * Whether a time value in this element's unit fits the generated code's clock: finite and at most 2^63-1 nanoseconds.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	boolean representable(double value);
+
 } // TimeScaled

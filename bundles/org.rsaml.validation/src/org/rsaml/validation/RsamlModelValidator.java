@@ -20,6 +20,7 @@ import org.eclipse.emf.ecore.util.Diagnostician;
 import org.eclipse.emf.ecore.util.EObjectValidator;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.internal.OclRules;
 import org.rsaml.validation.internal.RuleEValidator;
 
 /**
@@ -56,7 +57,7 @@ public final class RsamlModelValidator {
     /** Validates a loaded model with every RsaML rule. */
     public static List<Finding> validate(LoadedModel model) {
         RsamlValidationSetup.init();
-        return toFindings(diagnose(model.resource().getContents(), new RuleEValidator(RsamlValidationSetup.rules())), model);
+        return toFindings(diagnose(model.resource().getContents(), new RuleEValidator(OclRules.instance())), model);
     }
 
     /** EMF's structural checks alone (multiplicities, proxies, references), without the OCL rules. */
@@ -67,7 +68,7 @@ public final class RsamlModelValidator {
     /** Validates elements that were not read from a file (no line and column). */
     public static List<Finding> validate(EObject root) {
         RsamlValidationSetup.init();
-        return toFindings(diagnose(List.of(root), new RuleEValidator(RsamlValidationSetup.rules())), null);
+        return toFindings(diagnose(List.of(root), new RuleEValidator(OclRules.instance())), null);
     }
 
     /**
@@ -78,7 +79,7 @@ public final class RsamlModelValidator {
      */
     public static Diagnostic diagnose(EObject element) {
         RsamlValidationSetup.init();
-        List<Raised> raised = raised(diagnose(List.of(element), new RuleEValidator(RsamlValidationSetup.rules())));
+        List<Raised> raised = raised(diagnose(List.of(element), new RuleEValidator(OclRules.instance())));
         BasicDiagnostic result = new BasicDiagnostic(RuleEValidator.SOURCE, 0,
                 "RsaML rules on " + RsamlLabels.qualifiedName(element), new Object[] { element });
         for (Raised r : raised) {

@@ -6,39 +6,39 @@ package org.rsaml.validation;
 
 import java.util.List;
 
+import org.eclipse.emf.ecore.EValidator;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.resource.RsamlStandaloneSetup;
 import org.rsaml.validation.internal.OclRules;
+import org.rsaml.validation.internal.RuleEValidator;
 
 /**
- * Makes RsaML's rules runnable, in a plain JVM as inside OSGi: registers the package and the
- * {@code .rsaml} resource factory, and parses every OCL invariant of rsaml.ecore once, so that a
- * broken rule fails here, naming its id, instead of on every element.
+ * Makes RsaML's rules runnable in a plain JVM: registers the package, the {@code .rsaml} resource
+ * factory and RsaML's validator in EMF's registries (so that EMF's stock {@code Diagnostician}
+ * reports RsaML's findings), and parses every OCL invariant of rsaml.ecore once, so that a broken
+ * rule fails here, naming its id, instead of on every element. Inside OSGi the bundle's
+ * component ({@code OSGI-INF/validator.xml}) registers the validator.
  */
 public final class RsamlValidationSetup {
-
-    private static volatile OclRules rules;
 
     private RsamlValidationSetup() {
     }
 
     /** Idempotent and thread-safe; cheap after the first call. */
     public static void init() {
-        rules();
+        registerValidator();
+        OclRules.instance();
     }
 
     /**
      * Starts {@link #init()} on a daemon thread and returns at once, so that parsing the rules
-     * overlaps with whatever the caller does next (reading models); {@link #init()} and
-     * {@link #rules()} wait for it. A broken rule is still reported by the next {@link #init()}.
+     * overlaps with whatever the caller does next (reading models); {@link #init()} waits for it.
+     * A broken rule is still reported by the next {@link #init()}.
      */
     public static void initInBackground() {
-        if (rules != null) {
-            return;
-        }
         // EMF's package registry is not thread-safe: make every registration the parse would
         // make here, on the caller's thread, so the parser thread only reads the registry.
-        registerPackage();
+        registerValidator();
         OclRules.registerPackages();
         Thread thread = new Thread(() -> {
             try {
@@ -56,32 +56,23 @@ public final class RsamlValidationSetup {
         RsamlStandaloneSetup.init();
     }
 
-    /** The parsed invariants of rsaml.ecore. */
-    public static OclRules rules() {
-        OclRules r = rules;
-        if (r != null) {
-            return r;
-        }
-        synchronized (RsamlValidationSetup.class) {
-            if (rules == null) {
-                registerPackage();
-                OclRules parsed = new OclRules(RsamlPackage.eINSTANCE);
-                if (!parsed.problems().isEmpty()) {
-                    throw new RuleDefinitionException(parsed.problems());
-                }
-                rules = parsed;
-            }
-            return rules;
-        }
+    /**
+     * Registers the package and puts RsaML's validator in EMF's validator registry for it, in place
+     * of the generated one (which reports every invariant as an error with a generic message).
+     */
+    public static synchronized void registerValidator() {
+        registerPackage();
+        // RsamlPackage.eINSTANCE is initialised by now, so the generated registration cannot come later.
+        EValidator.Registry.INSTANCE.put(RsamlPackage.eINSTANCE, RuleEValidator.DESCRIPTOR);
     }
 
-    /** Thrown at start-up when a rule of the metamodel cannot be used. */
+    /** Thrown at start-up when a rule of the metamodel or its catalogue entry cannot be used. */
     public static final class RuleDefinitionException extends IllegalStateException {
         private static final long serialVersionUID = 1L;
         private final List<String> problems;
 
         public RuleDefinitionException(List<String> problems) {
-            super("RsaML rules are broken in rsaml.ecore:\n  " + String.join("\n  ", problems));
+            super("RsaML rules are broken in rsaml.ecore or model/rules.properties:\n  " + String.join("\n  ", problems));
             this.problems = List.copyOf(problems);
         }
 

@@ -244,6 +244,26 @@ public abstract class DeviceImpl extends NamedElementImpl implements Device {
 	 * @generated
 	 */
 	@Override
+	public int compareTime(final double value, final TimeScaled other, final double otherValue) {
+		return org.rsaml.model.support.RsamlTimes.compare(value, this, otherValue, other);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public boolean representable(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representable(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public Object eGet(int featureID, boolean resolve, boolean coreType) {
 		switch (featureID) {
 			case RsamlPackage.DEVICE__TIME_UNIT:
@@ -368,6 +388,8 @@ public abstract class DeviceImpl extends NamedElementImpl implements Device {
 		if (baseClass == TimeScaled.class) {
 			switch (baseOperationID) {
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.DEVICE___TO_MILLISECONDS__DOUBLE;
+				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.DEVICE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.DEVICE___REPRESENTABLE__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -384,6 +406,10 @@ public abstract class DeviceImpl extends NamedElementImpl implements Device {
 		switch (operationID) {
 			case RsamlPackage.DEVICE___TO_MILLISECONDS__DOUBLE:
 				return toMilliseconds((Double)arguments.get(0));
+			case RsamlPackage.DEVICE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE:
+				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
+			case RsamlPackage.DEVICE___REPRESENTABLE__DOUBLE:
+				return representable((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

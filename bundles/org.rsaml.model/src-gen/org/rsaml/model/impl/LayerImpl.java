@@ -275,6 +275,26 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	@Override
+	public int compareTime(final double value, final TimeScaled other, final double otherValue) {
+		return org.rsaml.model.support.RsamlTimes.compare(value, this, otherValue, other);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public boolean representable(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representable(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	@SuppressWarnings("unchecked")
 	@Override
 	public NotificationChain eInverseAdd(InternalEObject otherEnd, int featureID, NotificationChain msgs) {
@@ -461,6 +481,8 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 		if (baseClass == TimeScaled.class) {
 			switch (baseOperationID) {
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.LAYER___TO_MILLISECONDS__DOUBLE;
+				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.LAYER___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.LAYER___REPRESENTABLE__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -477,6 +499,10 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 		switch (operationID) {
 			case RsamlPackage.LAYER___TO_MILLISECONDS__DOUBLE:
 				return toMilliseconds((Double)arguments.get(0));
+			case RsamlPackage.LAYER___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE:
+				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
+			case RsamlPackage.LAYER___REPRESENTABLE__DOUBLE:
+				return representable((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

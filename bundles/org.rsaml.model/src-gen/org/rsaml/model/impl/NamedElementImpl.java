@@ -4,7 +4,11 @@
  */
 package org.rsaml.model.impl;
 
+import java.lang.reflect.InvocationTargetException;
+
 import org.eclipse.emf.common.notify.Notification;
+
+import org.eclipse.emf.common.util.EList;
 
 import org.eclipse.emf.ecore.EClass;
 
@@ -140,6 +144,16 @@ public abstract class NamedElementImpl extends EObjectImpl implements NamedEleme
 	 * @generated
 	 */
 	@Override
+	public String normalizedName() {
+		return org.rsaml.model.support.RsamlText.normalized(getName());
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public Object eGet(int featureID, boolean resolve, boolean coreType) {
 		switch (featureID) {
 			case RsamlPackage.NAMED_ELEMENT__NAME:
@@ -200,6 +214,20 @@ public abstract class NamedElementImpl extends EObjectImpl implements NamedEleme
 				return DESCRIPTION_EDEFAULT == null ? description != null : !DESCRIPTION_EDEFAULT.equals(description);
 		}
 		return super.eIsSet(featureID);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public Object eInvoke(int operationID, EList<?> arguments) throws InvocationTargetException {
+		switch (operationID) {
+			case RsamlPackage.NAMED_ELEMENT___NORMALIZED_NAME:
+				return normalizedName();
+		}
+		return super.eInvoke(operationID, arguments);
 	}
 
 	/**

@@ -4,8 +4,12 @@
  */
 package org.rsaml.model.impl;
 
+import java.lang.reflect.InvocationTargetException;
+
 import org.eclipse.emf.common.notify.Notification;
 import org.eclipse.emf.common.notify.NotificationChain;
+
+import org.eclipse.emf.common.util.EList;
 
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.InternalEObject;
@@ -188,6 +192,16 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 	 * @generated
 	 */
 	@Override
+	public String normalizedMessageType() {
+		return org.rsaml.model.support.RsamlText.normalized(getMessageType());
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public NotificationChain eInverseAdd(InternalEObject otherEnd, int featureID, NotificationChain msgs) {
 		switch (featureID) {
 			case RsamlPackage.PORT__MODULE:
@@ -302,6 +316,20 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 				return MESSAGE_TYPE_EDEFAULT == null ? messageType != null : !MESSAGE_TYPE_EDEFAULT.equals(messageType);
 		}
 		return super.eIsSet(featureID);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public Object eInvoke(int operationID, EList<?> arguments) throws InvocationTargetException {
+		switch (operationID) {
+			case RsamlPackage.PORT___NORMALIZED_MESSAGE_TYPE:
+				return normalizedMessageType();
+		}
+		return super.eInvoke(operationID, arguments);
 	}
 
 	/**

@@ -403,6 +403,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EOperation getNamedElement__NormalizedName() {
+		return namedElementEClass.getEOperations().get(0);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EClass getTimeScaled() {
 		return timeScaledEClass;
 	}
@@ -425,6 +435,26 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	@Override
 	public EOperation getTimeScaled__ToMilliseconds__double() {
 		return timeScaledEClass.getEOperations().get(0);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EOperation getTimeScaled__CompareTime__double_TimeScaled_double() {
+		return timeScaledEClass.getEOperations().get(1);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EOperation getTimeScaled__Representable__double() {
+		return timeScaledEClass.getEOperations().get(2);
 	}
 
 	/**
@@ -865,6 +895,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	@Override
 	public EAttribute getPort_MessageType() {
 		return (EAttribute)portEClass.getEStructuralFeatures().get(2);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EOperation getPort__NormalizedMessageType() {
+		return portEClass.getEOperations().get(0);
 	}
 
 	/**
@@ -1579,10 +1619,13 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		namedElementEClass = createEClass(NAMED_ELEMENT);
 		createEAttribute(namedElementEClass, NAMED_ELEMENT__NAME);
 		createEAttribute(namedElementEClass, NAMED_ELEMENT__DESCRIPTION);
+		createEOperation(namedElementEClass, NAMED_ELEMENT___NORMALIZED_NAME);
 
 		timeScaledEClass = createEClass(TIME_SCALED);
 		createEAttribute(timeScaledEClass, TIME_SCALED__TIME_UNIT);
 		createEOperation(timeScaledEClass, TIME_SCALED___TO_MILLISECONDS__DOUBLE);
+		createEOperation(timeScaledEClass, TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE);
+		createEOperation(timeScaledEClass, TIME_SCALED___REPRESENTABLE__DOUBLE);
 
 		realTimeElementEClass = createEClass(REAL_TIME_ELEMENT);
 		createEAttribute(realTimeElementEClass, REAL_TIME_ELEMENT__TYPE);
@@ -1635,6 +1678,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEReference(portEClass, PORT__MODULE);
 		createEAttribute(portEClass, PORT__DATA_TYPE);
 		createEAttribute(portEClass, PORT__MESSAGE_TYPE);
+		createEOperation(portEClass, PORT___NORMALIZED_MESSAGE_TYPE);
 
 		entryPortEClass = createEClass(ENTRY_PORT);
 		createEReference(entryPortEClass, ENTRY_PORT__INCOMING);
@@ -1786,10 +1830,20 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEAttribute(getNamedElement_Name(), ecorePackage.getEString(), "name", null, 1, 1, NamedElement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getNamedElement_Description(), ecorePackage.getEString(), "description", null, 0, 1, NamedElement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
+		initEOperation(getNamedElement__NormalizedName(), ecorePackage.getEString(), "normalizedName", 0, 1, IS_UNIQUE, IS_ORDERED);
+
 		initEClass(timeScaledEClass, TimeScaled.class, "TimeScaled", IS_ABSTRACT, IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEAttribute(getTimeScaled_TimeUnit(), this.getTimeUnit(), "timeUnit", "ms", 0, 1, TimeScaled.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
 		EOperation op = initEOperation(getTimeScaled__ToMilliseconds__double(), ecorePackage.getEDouble(), "toMilliseconds", 0, 1, IS_UNIQUE, IS_ORDERED);
+		addEParameter(op, ecorePackage.getEDouble(), "value", 0, 1, IS_UNIQUE, IS_ORDERED);
+
+		op = initEOperation(getTimeScaled__CompareTime__double_TimeScaled_double(), ecorePackage.getEInt(), "compareTime", 0, 1, IS_UNIQUE, IS_ORDERED);
+		addEParameter(op, ecorePackage.getEDouble(), "value", 0, 1, IS_UNIQUE, IS_ORDERED);
+		addEParameter(op, this.getTimeScaled(), "other", 0, 1, IS_UNIQUE, IS_ORDERED);
+		addEParameter(op, ecorePackage.getEDouble(), "otherValue", 0, 1, IS_UNIQUE, IS_ORDERED);
+
+		op = initEOperation(getTimeScaled__Representable__double(), ecorePackage.getEBoolean(), "representable", 0, 1, IS_UNIQUE, IS_ORDERED);
 		addEParameter(op, ecorePackage.getEDouble(), "value", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		initEClass(realTimeElementEClass, RealTimeElement.class, "RealTimeElement", IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
@@ -1856,6 +1910,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEReference(getPort_Module(), this.getModule(), this.getModule_Ports(), "module", null, 0, 1, Port.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getPort_DataType(), this.getDataType(), "dataType", "numeric", 0, 1, Port.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getPort_MessageType(), ecorePackage.getEString(), "messageType", null, 0, 1, Port.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+
+		initEOperation(getPort__NormalizedMessageType(), ecorePackage.getEString(), "normalizedMessageType", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		initEClass(entryPortEClass, EntryPort.class, "EntryPort", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getEntryPort_Incoming(), this.getConnection(), this.getConnection_Target(), "incoming", null, 0, -1, EntryPort.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2013,7 +2069,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (realTimeElementEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA10_executionWithinPeriod RSA11_deadlineWithinPeriod RSA12_periodicHasPeriod RSA13_nonNegativeTimes RSA17_executionWithinDeadline"
+			   "constraints", "RSA10_executionWithinPeriod RSA11_deadlineWithinPeriod RSA12_periodicHasPeriod RSA13_nonNegativeTimes RSA17_executionWithinDeadline RSA20_representableTimes"
 		   });
 		addAnnotation
 		  (architectureEClass,
@@ -2025,7 +2081,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (layerEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA09_uniqueNames RSA13_nonNegativeTimes"
+			   "constraints", "RSA09_uniqueNames RSA13_nonNegativeTimes RSA20_representableTimes"
 		   });
 		addAnnotation
 		  (moduleEClass,
@@ -2061,7 +2117,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (subsumptionLinkEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA13_nonNegativeTimes"
+			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes"
 		   });
 		addAnnotation
 		  (inhibitorEClass,
@@ -2074,6 +2130,12 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "constraints", "RSA04_suppressLayerBelow RSA16_triggerOfOwnModule"
+		   });
+		addAnnotation
+		  (deviceEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes"
 		   });
 		addAnnotation
 		  (missionEClass,
@@ -2117,22 +2179,24 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 			   "RSA11_deadlineWithinPeriod", "(execType = ExecutionType::periodic and period > 0 and delay > 0) implies delay <= period",
 			   "RSA12_periodicHasPeriod", "execType = ExecutionType::periodic implies period > 0",
 			   "RSA13_nonNegativeTimes", "period >= 0 and delay >= 0 and execDuration >= 0",
-			   "RSA17_executionWithinDeadline", "(type = ElementType::realTime and delay > 0) implies execDuration <= delay"
+			   "RSA17_executionWithinDeadline", "(type = ElementType::realTime and delay > 0) implies execDuration <= delay",
+			   "RSA20_representableTimes", "representable(period) and representable(delay) and representable(execDuration)"
 		   });
 		addAnnotation
 		  (architectureEClass,
 		   source,
 		   new String[] {
 			   "RSA01_declaredLayerCount", "declaredLayers = layers->size()",
-			   "RSA09_uniqueNames", "layers->isUnique(name) and sensors->isUnique(name) and actuators->isUnique(name) and missions->isUnique(name) and supervisors->isUnique(name) and orders->isUnique(name) and databases->isUnique(name)",
+			   "RSA09_uniqueNames", "layers->isUnique(normalizedName()) and sensors->isUnique(normalizedName()) and actuators->isUnique(normalizedName()) and missions->isUnique(normalizedName()) and supervisors->isUnique(normalizedName()) and orders->isUnique(normalizedName()) and databases->isUnique(normalizedName())",
 			   "RSA14_layerLevels", "layers->isUnique(level) and layers->forAll(l | l.level >= 0 and l.level < layers->size())"
 		   });
 		addAnnotation
 		  (layerEClass,
 		   source,
 		   new String[] {
-			   "RSA09_uniqueNames", "modules->isUnique(name)",
-			   "RSA13_nonNegativeTimes", "maxExecTime >= 0"
+			   "RSA09_uniqueNames", "modules->isUnique(normalizedName())",
+			   "RSA13_nonNegativeTimes", "maxExecTime >= 0",
+			   "RSA20_representableTimes", "representable(maxExecTime)"
 		   });
 		addAnnotation
 		  (moduleEClass,
@@ -2140,15 +2204,15 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   new String[] {
 			   "RSA05_realTimeModuleTiming", "type = ElementType::realTime implies (period > 0 and delay > 0)",
 			   "RSA06_realTimeModuleFunctions", "type = ElementType::realTime implies functions->forAll(f | f.type = ElementType::realTime)",
-			   "RSA08_layerExecutionBudget", "let budget : Real = if layer = null then 0.0 else layer.toMilliseconds(layer.maxExecTime) endif in budget > 0 implies toMilliseconds(execDuration) <= budget + 0.000000001",
-			   "RSA09_uniqueNames", "ports->isUnique(name) and functions->isUnique(name) and inhibitors->isUnique(name) and suppressors->isUnique(name)"
+			   "RSA08_layerExecutionBudget", "(layer <> null and layer.maxExecTime > 0) implies compareTime(execDuration, layer, layer.maxExecTime) <= 0",
+			   "RSA09_uniqueNames", "ports->isUnique(normalizedName()) and functions->isUnique(normalizedName()) and inhibitors->isUnique(normalizedName()) and suppressors->isUnique(normalizedName())"
 		   });
 		addAnnotation
 		  (functionEClass,
 		   source,
 		   new String[] {
 			   "RSA07_realTimeFunctionActions", "type = ElementType::realTime implies actions->forAll(a | a.type = ElementType::realTime)",
-			   "RSA09_uniqueNames", "actions->isUnique(name)"
+			   "RSA09_uniqueNames", "actions->isUnique(normalizedName())"
 		   });
 		addAnnotation
 		  (rtActionEClass,
@@ -2160,20 +2224,21 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (portEClass,
 		   source,
 		   new String[] {
-			   "RSA18_structuredPortNamesMessageType", "dataType = DataType::structured implies (messageType <> null and messageType.size() > 0)"
+			   "RSA18_structuredPortNamesMessageType", "dataType = DataType::structured implies normalizedMessageType() <> null"
 		   });
 		addAnnotation
 		  (connectionEClass,
 		   source,
 		   new String[] {
-			   "RSA02_connectedPortTypes", "(source <> null and target <> null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.messageType = target.messageType))",
+			   "RSA02_connectedPortTypes", "(source <> null and target <> null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.normalizedMessageType() = target.normalizedMessageType()))",
 			   "RSA03_adjacentLayerCommunication", "let from : Layer = if source = null or source.module = null then null else source.module.layer endif, to : Layer = if target = null or target.module = null then null else target.module.layer endif in (from <> null and to <> null) implies (from.level - to.level).abs() <= 1"
 		   });
 		addAnnotation
 		  (subsumptionLinkEClass,
 		   source,
 		   new String[] {
-			   "RSA13_nonNegativeTimes", "duration >= 0"
+			   "RSA13_nonNegativeTimes", "duration >= 0",
+			   "RSA20_representableTimes", "representable(duration)"
 		   });
 		addAnnotation
 		  (inhibitorEClass,
@@ -2190,28 +2255,35 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 			   "RSA16_triggerOfOwnModule", "trigger <> null implies trigger.module = module"
 		   });
 		addAnnotation
+		  (deviceEClass,
+		   source,
+		   new String[] {
+			   "RSA13_nonNegativeTimes", "period >= 0",
+			   "RSA20_representableTimes", "representable(period)"
+		   });
+		addAnnotation
 		  (missionEClass,
 		   source,
 		   new String[] {
-			   "RSA09_uniqueNames", "goals->isUnique(name) and plans->isUnique(name)"
+			   "RSA09_uniqueNames", "goals->isUnique(normalizedName()) and plans->isUnique(normalizedName())"
 		   });
 		addAnnotation
 		  (goalEClass,
 		   source,
 		   new String[] {
-			   "RSA09_uniqueNames", "subGoals->isUnique(name)"
+			   "RSA09_uniqueNames", "subGoals->isUnique(normalizedName())"
 		   });
 		addAnnotation
 		  (planEClass,
 		   source,
 		   new String[] {
-			   "RSA09_uniqueNames", "activities->isUnique(name)"
+			   "RSA09_uniqueNames", "activities->isUnique(normalizedName())"
 		   });
 		addAnnotation
 		  (databaseEClass,
 		   source,
 		   new String[] {
-			   "RSA09_uniqueNames", "knowledge->isUnique(name)"
+			   "RSA09_uniqueNames", "knowledge->isUnique(normalizedName())"
 		   });
 	}
 

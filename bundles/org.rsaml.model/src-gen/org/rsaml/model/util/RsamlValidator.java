@@ -232,6 +232,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(realTimeElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(realTimeElement, diagnostics, context);
 		return result;
 	}
 
@@ -381,6 +382,35 @@ public class RsamlValidator extends EObjectValidator {
 	}
 
 	/**
+	 * The cached validation expression for the RSA20_representableTimes constraint of '<em>Real Time Element</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String REAL_TIME_ELEMENT__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representable(period) and representable(delay) and representable(execDuration)";
+
+	/**
+	 * Validates the RSA20_representableTimes constraint of '<em>Real Time Element</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateRealTimeElement_RSA20_representableTimes(RealTimeElement realTimeElement, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.REAL_TIME_ELEMENT,
+				 realTimeElement,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA20_representableTimes",
+				 REAL_TIME_ELEMENT__RSA20_REPRESENTABLE_TIMES__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
@@ -436,7 +466,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String ARCHITECTURE__RSA09_UNIQUE_NAMES__EEXPRESSION = "layers->isUnique(name) and sensors->isUnique(name) and actuators->isUnique(name) and missions->isUnique(name) and supervisors->isUnique(name) and orders->isUnique(name) and databases->isUnique(name)";
+	protected static final String ARCHITECTURE__RSA09_UNIQUE_NAMES__EEXPRESSION = "layers->isUnique(normalizedName()) and sensors->isUnique(normalizedName()) and actuators->isUnique(normalizedName()) and missions->isUnique(normalizedName()) and supervisors->isUnique(normalizedName()) and orders->isUnique(normalizedName()) and databases->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Architecture</em>'.
@@ -505,6 +535,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validateLayer_RSA09_uniqueNames(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validateLayer_RSA13_nonNegativeTimes(layer, diagnostics, context);
+		if (result || diagnostics != null) result &= validateLayer_RSA20_representableTimes(layer, diagnostics, context);
 		return result;
 	}
 
@@ -514,7 +545,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String LAYER__RSA09_UNIQUE_NAMES__EEXPRESSION = "modules->isUnique(name)";
+	protected static final String LAYER__RSA09_UNIQUE_NAMES__EEXPRESSION = "modules->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Layer</em>'.
@@ -567,6 +598,35 @@ public class RsamlValidator extends EObjectValidator {
 	}
 
 	/**
+	 * The cached validation expression for the RSA20_representableTimes constraint of '<em>Layer</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String LAYER__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representable(maxExecTime)";
+
+	/**
+	 * Validates the RSA20_representableTimes constraint of '<em>Layer</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateLayer_RSA20_representableTimes(Layer layer, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.LAYER,
+				 layer,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA20_representableTimes",
+				 LAYER__RSA20_REPRESENTABLE_TIMES__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
@@ -586,6 +646,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(module, diagnostics, context);
+		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateModule_RSA05_realTimeModuleTiming(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateModule_RSA06_realTimeModuleFunctions(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateModule_RSA08_layerExecutionBudget(module, diagnostics, context);
@@ -657,7 +718,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String MODULE__RSA08_LAYER_EXECUTION_BUDGET__EEXPRESSION = "let budget : Real = if layer = null then 0.0 else layer.toMilliseconds(layer.maxExecTime) endif in budget > 0 implies toMilliseconds(execDuration) <= budget + 0.000000001";
+	protected static final String MODULE__RSA08_LAYER_EXECUTION_BUDGET__EEXPRESSION = "(layer <> null and layer.maxExecTime > 0) implies compareTime(execDuration, layer, layer.maxExecTime) <= 0";
 
 	/**
 	 * Validates the RSA08_layerExecutionBudget constraint of '<em>Module</em>'.
@@ -686,7 +747,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String MODULE__RSA09_UNIQUE_NAMES__EEXPRESSION = "ports->isUnique(name) and functions->isUnique(name) and inhibitors->isUnique(name) and suppressors->isUnique(name)";
+	protected static final String MODULE__RSA09_UNIQUE_NAMES__EEXPRESSION = "ports->isUnique(normalizedName()) and functions->isUnique(normalizedName()) and inhibitors->isUnique(normalizedName()) and suppressors->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Module</em>'.
@@ -729,6 +790,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(function, diagnostics, context);
+		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateFunction_RSA07_realTimeFunctionActions(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateFunction_RSA09_uniqueNames(function, diagnostics, context);
 		return result;
@@ -769,7 +831,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String FUNCTION__RSA09_UNIQUE_NAMES__EEXPRESSION = "actions->isUnique(name)";
+	protected static final String FUNCTION__RSA09_UNIQUE_NAMES__EEXPRESSION = "actions->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Function</em>'.
@@ -812,6 +874,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(action, diagnostics, context);
+		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(action, diagnostics, context);
 		return result;
 	}
 
@@ -835,6 +898,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(rtAction, diagnostics, context);
+		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRTAction_RSA15_rtActionIsRealTime(rtAction, diagnostics, context);
 		return result;
 	}
@@ -893,7 +957,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String PORT__RSA18_STRUCTURED_PORT_NAMES_MESSAGE_TYPE__EEXPRESSION = "dataType = DataType::structured implies (messageType <> null and messageType.size() > 0)";
+	protected static final String PORT__RSA18_STRUCTURED_PORT_NAMES_MESSAGE_TYPE__EEXPRESSION = "dataType = DataType::structured implies normalizedMessageType() <> null";
 
 	/**
 	 * Validates the RSA18_structuredPortNamesMessageType constraint of '<em>Port</em>'.
@@ -980,7 +1044,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String CONNECTION__RSA02_CONNECTED_PORT_TYPES__EEXPRESSION = "(source <> null and target <> null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.messageType = target.messageType))";
+	protected static final String CONNECTION__RSA02_CONNECTED_PORT_TYPES__EEXPRESSION = "(source <> null and target <> null) implies (source.dataType = target.dataType and (source.dataType = DataType::structured implies source.normalizedMessageType() = target.normalizedMessageType()))";
 
 	/**
 	 * Validates the RSA02_connectedPortTypes constraint of '<em>Connection</em>'.
@@ -1048,6 +1112,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(subsumptionLink, diagnostics, context);
+		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(subsumptionLink, diagnostics, context);
 		return result;
 	}
 
@@ -1081,6 +1146,35 @@ public class RsamlValidator extends EObjectValidator {
 	}
 
 	/**
+	 * The cached validation expression for the RSA20_representableTimes constraint of '<em>Subsumption Link</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String SUBSUMPTION_LINK__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representable(duration)";
+
+	/**
+	 * Validates the RSA20_representableTimes constraint of '<em>Subsumption Link</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateSubsumptionLink_RSA20_representableTimes(SubsumptionLink subsumptionLink, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.SUBSUMPTION_LINK,
+				 subsumptionLink,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA20_representableTimes",
+				 SUBSUMPTION_LINK__RSA20_REPRESENTABLE_TIMES__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
@@ -1096,6 +1190,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(inhibitor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateInhibitor_RSA04_inhibitLayerBelow(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateInhibitor_RSA16_triggerOfOwnModule(inhibitor, diagnostics, context);
 		return result;
@@ -1175,6 +1270,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(suppressor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSuppressor_RSA04_suppressLayerBelow(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSuppressor_RSA16_triggerOfOwnModule(suppressor, diagnostics, context);
 		return result;
@@ -1244,7 +1340,76 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateDevice(Device device, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(device, diagnostics, context);
+		if (!validate_NoCircularContainment(device, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validateDevice_RSA13_nonNegativeTimes(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validateDevice_RSA20_representableTimes(device, diagnostics, context);
+		return result;
+	}
+
+	/**
+	 * The cached validation expression for the RSA13_nonNegativeTimes constraint of '<em>Device</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String DEVICE__RSA13_NON_NEGATIVE_TIMES__EEXPRESSION = "period >= 0";
+
+	/**
+	 * Validates the RSA13_nonNegativeTimes constraint of '<em>Device</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateDevice_RSA13_nonNegativeTimes(Device device, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.DEVICE,
+				 device,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA13_nonNegativeTimes",
+				 DEVICE__RSA13_NON_NEGATIVE_TIMES__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
+	 * The cached validation expression for the RSA20_representableTimes constraint of '<em>Device</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String DEVICE__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representable(period)";
+
+	/**
+	 * Validates the RSA20_representableTimes constraint of '<em>Device</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateDevice_RSA20_representableTimes(Device device, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.DEVICE,
+				 device,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA20_representableTimes",
+				 DEVICE__RSA20_REPRESENTABLE_TIMES__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
 	}
 
 	/**
@@ -1253,7 +1418,18 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateSensor(Sensor sensor, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(sensor, diagnostics, context);
+		if (!validate_NoCircularContainment(sensor, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateDevice_RSA13_nonNegativeTimes(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateDevice_RSA20_representableTimes(sensor, diagnostics, context);
+		return result;
 	}
 
 	/**
@@ -1262,7 +1438,18 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateActuator(Actuator actuator, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(actuator, diagnostics, context);
+		if (!validate_NoCircularContainment(actuator, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validateDevice_RSA13_nonNegativeTimes(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validateDevice_RSA20_representableTimes(actuator, diagnostics, context);
+		return result;
 	}
 
 	/**
@@ -1290,7 +1477,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String MISSION__RSA09_UNIQUE_NAMES__EEXPRESSION = "goals->isUnique(name) and plans->isUnique(name)";
+	protected static final String MISSION__RSA09_UNIQUE_NAMES__EEXPRESSION = "goals->isUnique(normalizedName()) and plans->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Mission</em>'.
@@ -1338,7 +1525,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String GOAL__RSA09_UNIQUE_NAMES__EEXPRESSION = "subGoals->isUnique(name)";
+	protected static final String GOAL__RSA09_UNIQUE_NAMES__EEXPRESSION = "subGoals->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Goal</em>'.
@@ -1386,7 +1573,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String PLAN__RSA09_UNIQUE_NAMES__EEXPRESSION = "activities->isUnique(name)";
+	protected static final String PLAN__RSA09_UNIQUE_NAMES__EEXPRESSION = "activities->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Plan</em>'.
@@ -1429,6 +1616,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(activity, diagnostics, context);
+		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(activity, diagnostics, context);
 		return result;
 	}
 
@@ -1475,7 +1663,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String DATABASE__RSA09_UNIQUE_NAMES__EEXPRESSION = "knowledge->isUnique(name)";
+	protected static final String DATABASE__RSA09_UNIQUE_NAMES__EEXPRESSION = "knowledge->isUnique(normalizedName())";
 
 	/**
 	 * Validates the RSA09_uniqueNames constraint of '<em>Database</em>'.

@@ -6,8 +6,11 @@ package org.rsaml.validation.internal;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
 
 import org.eclipse.emf.ecore.EAnnotation;
 import org.eclipse.emf.ecore.EClass;
@@ -19,7 +22,10 @@ import org.eclipse.ocl.ParserException;
 import org.eclipse.ocl.ecore.Constraint;
 import org.eclipse.ocl.ecore.OCL;
 import org.eclipse.ocl.ecore.OCLExpression;
+import org.rsaml.model.RsamlPackage;
 import org.rsaml.validation.Rule;
+import org.rsaml.validation.RsamlValidationSetup;
+import org.rsaml.validation.RsamlValidationSetup.RuleDefinitionException;
 import org.rsaml.validation.Rules;
 
 /**
@@ -32,9 +38,12 @@ public final class OclRules {
     /** The delegate URI under which rsaml.ecore declares its invariants. */
     public static final String OCL_URI = "http://www.eclipse.org/emf/2002/Ecore/OCL";
 
+    private static volatile OclRules instance;
+
     private final OCL ocl = OCL.newInstance();
     private final Map<EClass, Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>>> queries = new HashMap<>();
     private final List<String> problems = new ArrayList<>();
+    private final Set<String> constrained = new HashSet<>();
 
     public OclRules(EPackage ePackage) {
         for (EClassifier classifier : ePackage.getEClassifiers()) {
@@ -43,7 +52,14 @@ public final class OclRules {
             }
             EAnnotation bodies = eClass.getEAnnotation(OCL_URI);
             for (String constraint : EcoreUtil.getConstraints(eClass)) {
-                String rule = Rules.forConstraint(constraint).map(Rule::id).orElse("unknown rule");
+                Optional<Rule> catalogued = Rules.forConstraint(constraint);
+                String rule = catalogued.map(Rule::id).orElse("unknown rule");
+                if (catalogued.isEmpty() || catalogued.get().message() == null) {
+                    problems.add(rule + " (" + constraint + " on " + eClass.getName()
+                            + ") has no entry with a message in the rule catalogue " + RuleCatalog.RESOURCE);
+                    continue;
+                }
+                constrained.add(catalogued.get().id());
                 String body = bodies == null ? null : bodies.getDetails().get(constraint);
                 if (body == null) {
                     problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") has no OCL body");
@@ -60,6 +76,36 @@ public final class OclRules {
                             + e.getLocalizedMessage());
                 }
             }
+        }
+        if (ePackage == RsamlPackage.eINSTANCE || RsamlPackage.eNS_URI.equals(ePackage.getNsURI())) {
+            for (Rule rule : Rules.all()) {
+                if (rule.message() != null && !constrained.contains(rule.id())) {
+                    problems.add(rule.id() + " is in the rule catalogue but no invariant of " + ePackage.getName()
+                            + " implements it (constraint " + rule.id().replace("-", "") + "_...)");
+                }
+            }
+        }
+    }
+
+    /**
+     * The parsed invariants of rsaml.ecore, parsed once. Throws {@link RuleDefinitionException}
+     * when an invariant has no body, does not parse, or has no complete entry in the catalogue.
+     */
+    public static OclRules instance() {
+        OclRules r = instance;
+        if (r != null) {
+            return r;
+        }
+        synchronized (OclRules.class) {
+            if (instance == null) {
+                RsamlValidationSetup.registerPackage();
+                OclRules parsed = new OclRules(RsamlPackage.eINSTANCE);
+                if (!parsed.problems().isEmpty()) {
+                    throw new RuleDefinitionException(parsed.problems());
+                }
+                instance = parsed;
+            }
+            return instance;
         }
     }
 

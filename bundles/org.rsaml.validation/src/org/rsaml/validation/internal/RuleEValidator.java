@@ -11,17 +11,35 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.DiagnosticChain;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EValidator;
 import org.rsaml.model.util.RsamlValidator;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
+import org.rsaml.validation.RsamlValidationSetup;
 
 /**
  * The generated validator with RsaML's voice: a violated OCL invariant is reported with its rule's
- * id, severity and a message naming elements and values, instead of EMF's generic error.
+ * id, severity and the catalogue's message naming elements and values, instead of EMF's generic
+ * error. {@link RsamlValidationSetup} registers it for the RsaML package in EMF's validator
+ * registry (and the bundle's component does inside OSGi), so that every EMF client — the stock
+ * {@code Diagnostician}, the editors, Sirius — reports what {@code rsaml validate} reports.
  */
 public class RuleEValidator extends RsamlValidator {
 
     public static final String SOURCE = "org.rsaml.validation";
+
+    /** Creates the validator on first use: parsing the rules is left until something is validated. */
+    public static final EValidator.Descriptor DESCRIPTOR = new EValidator.Descriptor() {
+        private volatile RuleEValidator validator;
+
+        @Override
+        public EValidator getEValidator() {
+            if (validator == null) {
+                validator = new RuleEValidator(OclRules.instance());
+            }
+            return validator;
+        }
+    };
 
     private final OclRules rules;
 
@@ -61,11 +79,11 @@ public class RuleEValidator extends RsamlValidator {
         Rule rule = Rules.forConstraint(constraint).orElse(Rules.STRUCTURE);
         String message;
         try {
-            message = RuleMessages.message(constraint, eObject);
+            message = MessageParameters.render(rule.message(), eObject);
         } catch (RuntimeException e) {
-            // A message must never hide a finding: fall back to the rule's own description.
-            message = RuleMessages.capitalized(RuleMessages.element(eObject)) + " violates " + rule.id() + ": "
-                    + rule.description();
+            // The finding stands; its message template does not fit this element, and the text says so.
+            message = MessageParameters.capitalized(MessageParameters.element(eObject)) + " violates " + rule.id()
+                    + " (" + rule.description() + "); its message could not be written: " + e;
         }
         diagnostics.add(new BasicDiagnostic(rule.severity().diagnosticSeverity(), SOURCE, code,
                 message + " (" + rule.id() + ")", new Object[] { eObject, rule, message }));
@@ -75,7 +93,7 @@ public class RuleEValidator extends RsamlValidator {
     protected void reportConstraintDelegateException(EClass eClass, EObject eObject, DiagnosticChain diagnostics,
             Map<Object, Object> context, String constraint, int severity, String source, int code, Throwable throwable) {
         Rule rule = Rules.forConstraint(constraint).orElse(Rules.STRUCTURE);
-        String message = "Rule " + rule.id() + " could not be evaluated on " + RuleMessages.element(eObject) + ": "
+        String message = "Rule " + rule.id() + " could not be evaluated on " + MessageParameters.element(eObject) + ": "
                 + throwable.getLocalizedMessage();
         diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, code, message, new Object[] { eObject, rule, message }));
     }

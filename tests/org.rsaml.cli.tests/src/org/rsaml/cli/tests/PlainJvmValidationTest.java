@@ -19,7 +19,14 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.Diagnostician;
+import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.Finding;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlValidationSetup;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Severity;
 
@@ -73,5 +80,37 @@ class PlainJvmValidationTest {
         expected.sort(null);
         actual.sort(null);
         assertEquals(expected, actual, model.getFileName().toString());
+    }
+
+    /**
+     * After the standalone setup, EMF's stock Diagnostician reports exactly what {@code rsaml validate}
+     * reports: findings, elements, severities, rule ids and messages.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("ruleModels")
+    void stockDiagnosticianReportsWhatRsamlValidateReports(Path model) throws Exception {
+        RsamlValidationSetup.init();
+        LoadedModel loaded = ModelLoader.load(model, model.toString());
+        List<String> expected = new ArrayList<>(RsamlModelValidator.validate(loaded).stream()
+                .filter(f -> !f.ruleId().equals("RSA-00"))
+                .map(f -> f.severity().diagnosticSeverity() + " " + f.qualifiedName() + ": " + f.message() + " (" + f.ruleId() + ")")
+                .toList());
+        List<String> actual = new ArrayList<>();
+        for (EObject root : loaded.resource().getContents()) {
+            collect(Diagnostician.INSTANCE.validate(root), actual);
+        }
+        expected.sort(null);
+        actual.sort(null);
+        assertEquals(expected, actual, model.getFileName().toString());
+    }
+
+    private static void collect(Diagnostic diagnostic, List<String> out) {
+        for (Diagnostic child : diagnostic.getChildren()) {
+            if (child.getSeverity() != Diagnostic.OK && "org.rsaml.validation".equals(child.getSource())) {
+                out.add(child.getSeverity() + " " + RsamlLabels.qualifiedName((EObject) child.getData().get(0)) + ": "
+                        + child.getMessage());
+            }
+            collect(child, out);
+        }
     }
 }

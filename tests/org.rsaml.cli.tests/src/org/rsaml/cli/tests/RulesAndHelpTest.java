@@ -30,6 +30,12 @@ class RulesAndHelpTest {
 
         Cli.Result verbose = Cli.run("rules", "--verbose");
         assertTrue(verbose.out().contains("fix: Shorten the module's execution duration"), verbose::toString);
+        for (Rule rule : Rules.all()) {
+            assertTrue(verbose.out().contains("scope: " + rule.scope() + "\n"), () -> rule.id() + "'s scope missing:\n" + verbose.out());
+            assertTrue(verbose.out().contains("fix: " + rule.remediation() + "\n"), () -> rule.id() + "'s fix missing");
+        }
+        assertTrue(verbose.out().contains("scope: Modules of a layer whose maxExecTime is above 0; a layer without maxExecTime"),
+                verbose::toString);
     }
 
     @Test
@@ -42,7 +48,8 @@ class RulesAndHelpTest {
             Rule rule = Rules.all().get(i);
             assertEquals(rule.id(), rules.get(i).getAsJsonObject().get("id").getAsString());
             assertEquals(rule.severity().label(), rules.get(i).getAsJsonObject().get("severity").getAsString());
-            assertEquals(rule.help(), rules.get(i).getAsJsonObject().get("help").getAsString());
+            assertEquals(rule.remediation(), rules.get(i).getAsJsonObject().get("help").getAsString());
+            assertEquals(rule.scope(), rules.get(i).getAsJsonObject().get("scope").getAsString());
         }
     }
 

@@ -7,7 +7,8 @@ package org.rsaml.validation.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
+import java.io.StringReader;
+import java.util.ArrayList;
 import java.util.List;
 
 import org.eclipse.emf.common.util.URI;
@@ -23,8 +24,8 @@ import org.junit.jupiter.api.Test;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
-import org.rsaml.validation.RsamlValidationSetup;
 import org.rsaml.validation.internal.OclRules;
+import org.rsaml.validation.internal.RuleCatalog;
 
 /** The rules are defined once, in rsaml.ecore, and a broken definition is caught at start-up. */
 class RuleDefinitionTest {
@@ -49,7 +50,7 @@ class RuleDefinitionTest {
             }
         }
         assertTrue(constraints >= 20, "rsaml.ecore declares too few constraints: " + constraints);
-        assertEquals(constraints, RsamlValidationSetup.rules().size(), "every constraint must be parsed at start-up");
+        assertEquals(constraints, OclRules.instance().size(), "every constraint must be parsed at start-up");
     }
 
     @Test
@@ -73,11 +74,73 @@ class RuleDefinitionTest {
     }
 
     @Test
-    void theRulesDocumentListsEveryRuleWithItsSeverity() throws Exception {
-        String doc = Files.readString(Paths.root().resolve("docs/rules.md"));
+    void aConstraintWithoutCatalogueEntryIsReportedWithItsRuleId() {
+        EPackage copy = loadEcoreCopy();
+        EClass module = (EClass) copy.getEClassifier("Module");
+        EAnnotation constraints = module.getEAnnotation("http://www.eclipse.org/emf/2002/Ecore");
+        constraints.getDetails().put("constraints", constraints.getDetails().get("constraints") + " RSA77_somethingNew");
+        module.getEAnnotation(OclRules.OCL_URI).getDetails().put("RSA77_somethingNew", "true");
+        List<String> problems = new OclRules(copy).problems();
+        assertEquals(List.of("unknown rule (RSA77_somethingNew on Module) has no entry with a message in the rule catalogue "
+                + RuleCatalog.RESOURCE), problems);
+    }
+
+    @Test
+    void aCatalogueEntryWithoutInvariantIsReported() {
+        EPackage copy = loadEcoreCopy();
+        EClass port = (EClass) copy.getEClassifier("Port");
+        port.getEAnnotation("http://www.eclipse.org/emf/2002/Ecore").getDetails().put("constraints", "");
+        List<String> problems = new OclRules(copy).problems();
+        assertEquals(1, problems.size(), problems.toString());
+        assertTrue(problems.get(0).startsWith("RSA-18 is in the rule catalogue but no invariant"), problems.get(0));
+    }
+
+    @Test
+    void anIncompleteCatalogueEntryIsReportedWithItsRuleId() throws Exception {
+        List<String> problems = new ArrayList<>();
+        RuleCatalog.parse(new StringReader("""
+                RSA-42.name = new-rule
+                RSA-42.severity = warning
+                RSA-42.source = RsaML
+                RSA-42.context = Module
+                RSA-42.description = Something holds.
+                RSA-42.scope = Every module.
+                RSA-43.name = other-rule
+                RSA-43.severity = fatal
+                RSA-43.source = RsaML
+                RSA-43.context = Module
+                RSA-43.description = Something else holds.
+                RSA-43.scope = Every module.
+                RSA-43.message = {Element} is {notAParameter}
+                RSA-43.remediation = Fix it.
+                RSA-43.colour = red
+                """), problems);
+        assertEquals(List.of("rule catalogue: unknown key RSA-43.colour",
+                "RSA-42 has no remediation, no message in the rule catalogue",
+                "RSA-43 has an unknown severity 'fatal' (error, warning or info)"), problems);
+
+        problems.clear();
+        RuleCatalog.parse(new StringReader("""
+                RSA-43.name = other-rule
+                RSA-43.severity = error
+                RSA-43.source = RsaML
+                RSA-43.context = Module
+                RSA-43.description = Something else holds.
+                RSA-43.scope = Every module.
+                RSA-43.message = {Element} is {notAParameter}
+                RSA-43.remediation = Fix it.
+                """), problems);
+        assertEquals(1, problems.size(), problems.toString());
+        assertTrue(problems.get(0).startsWith("RSA-43's message names an unknown parameter {notAParameter}; known: "), problems.get(0));
+    }
+
+    @Test
+    void everyRuleHasItsTextsInTheCatalogue() {
         for (Rule rule : Rules.all()) {
-            assertTrue(doc.contains("| " + rule.id() + " | " + rule.name() + " | " + rule.severity().label() + " |"),
-                    "docs/rules.md lacks the row of " + rule.id());
+            for (String text : new String[] { rule.name(), rule.context(), rule.description(), rule.scope(), rule.remediation() }) {
+                assertTrue(text != null && !text.isBlank(), rule.id() + " lacks a text");
+            }
+            assertEquals(rule.id().equals("RSA-00"), rule.message() == null, rule.id() + "'s message");
         }
     }
 }

@@ -19,7 +19,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 import picocli.CommandLine.Model.CommandSpec;
 
-/** {@code rsaml rules}: the rules RsaML checks, with id, severity and description. */
+/** {@code rsaml rules}: the rules RsaML checks, from the rule catalogue: id, severity, description, scope, fix. */
 @Command(name = "rules", mixinStandardHelpOptions = true, description = "Lists the rules RsaML checks.")
 final class RulesCommand implements java.util.concurrent.Callable<Integer> {
 
@@ -28,7 +28,7 @@ final class RulesCommand implements java.util.concurrent.Callable<Integer> {
     @Option(names = { "-f", "--format" }, defaultValue = "text", description = "text or json (default: ${DEFAULT-VALUE}).")
     Format format;
 
-    @Option(names = "--verbose", description = "Also print what to change to satisfy each rule.")
+    @Option(names = "--verbose", description = "Also print each rule's exact scope and what to change to satisfy it.")
     boolean verbose;
 
     @Spec
@@ -43,7 +43,8 @@ final class RulesCommand implements java.util.concurrent.Callable<Integer> {
             for (Rule rule : Rules.all()) {
                 out.printf("%-7s %-8s %-29s %s%n", rule.id(), rule.severity().label(), rule.name(), rule.description());
                 if (verbose) {
-                    out.printf("%-46s fix: %s%n", "", rule.help());
+                    out.printf("%-46s scope: %s%n", "", rule.scope());
+                    out.printf("%-46s fix: %s%n", "", rule.remediation());
                 }
             }
         }
@@ -60,7 +61,8 @@ final class RulesCommand implements java.util.concurrent.Callable<Integer> {
             for (Rule rule : Rules.all()) {
                 json.beginObject().name("id").value(rule.id()).name("name").value(rule.name())
                         .name("severity").value(rule.severity().label()).name("source").value(rule.source())
-                        .name("description").value(rule.description()).name("help").value(rule.help()).endObject();
+                        .name("context").value(rule.context()).name("description").value(rule.description())
+                        .name("scope").value(rule.scope()).name("help").value(rule.remediation()).endObject();
             }
             json.endArray();
             json.flush();

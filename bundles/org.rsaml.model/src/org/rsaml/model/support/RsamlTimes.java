@@ -1,0 +1,79 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model.support;
+
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
+
+import org.rsaml.model.TimeScaled;
+import org.rsaml.model.TimeUnit;
+
+/**
+ * Exact arithmetic on time values written in different units. A value is read as the shortest
+ * decimal that parses to the same double ({@link #decimal(double)}), which is the number the
+ * architect wrote whenever it has at most 15 significant digits, and scaled to nanoseconds by a
+ * power of ten: no rounding, no tolerance.
+ */
+public final class RsamlTimes {
+
+    /** The longest time the generated code can hold: a signed 64-bit count of nanoseconds ({@code std::chrono::nanoseconds}). */
+    public static final BigDecimal MAX_NANOSECONDS = BigDecimal.valueOf(Long.MAX_VALUE);
+
+    private RsamlTimes() {
+    }
+
+    /** The unit of an element's time values; milliseconds when not set. */
+    public static TimeUnit unit(TimeScaled owner) {
+        return owner == null || owner.getTimeUnit() == null ? TimeUnit.MS : owner.getTimeUnit();
+    }
+
+    /** The value in nanoseconds, exactly; {@code null} for NaN and infinities. */
+    public static BigDecimal nanoseconds(double value, TimeScaled owner) {
+        if (Double.isNaN(value) || Double.isInfinite(value)) {
+            return null;
+        }
+        return decimal(value).multiply(BigDecimal.valueOf(unit(owner).getValue()));
+    }
+
+    /**
+     * The shortest decimal that parses back to {@code value}. Not {@link BigDecimal#valueOf(double)}:
+     * before Java 19, {@link Double#toString(double)} sometimes gives a longer decimal (2e23 prints
+     * as 1.9999999999999998E23).
+     */
+    public static BigDecimal decimal(double value) {
+        if (value == 0) {
+            return BigDecimal.ZERO;
+        }
+        BigDecimal exact = new BigDecimal(value);
+        for (int digits = 1; digits < 17; digits++) {
+            BigDecimal shorter = exact.round(new MathContext(digits, RoundingMode.HALF_EVEN));
+            if (shorter.doubleValue() == value) {
+                return shorter;
+            }
+        }
+        return exact.round(new MathContext(17, RoundingMode.HALF_EVEN));
+    }
+
+    /**
+     * Compares {@code value} in {@code owner}'s unit with {@code otherValue} in {@code other}'s
+     * unit, exactly: negative, zero or positive as the first is shorter, equal or longer. Values
+     * that are not finite compare as doubles.
+     */
+    public static int compare(double value, TimeScaled owner, double otherValue, TimeScaled other) {
+        BigDecimal a = nanoseconds(value, owner);
+        BigDecimal b = nanoseconds(otherValue, other);
+        if (a == null || b == null) {
+            return Double.compare(value * unit(owner).getValue(), otherValue * unit(other).getValue());
+        }
+        return Integer.signum(a.compareTo(b));
+    }
+
+    /** Whether the generated code can hold the value: finite, and at most {@link #MAX_NANOSECONDS} in magnitude. */
+    public static boolean representable(double value, TimeScaled owner) {
+        BigDecimal ns = nanoseconds(value, owner);
+        return ns != null && ns.abs().compareTo(MAX_NANOSECONDS) <= 0;
+    }
+}

@@ -1,0 +1,231 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.validation.internal;
+
+import static org.rsaml.model.support.RsamlLabels.duration;
+import static org.rsaml.model.support.RsamlLabels.name;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.function.Function;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EReference;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Connection;
+import org.rsaml.model.Device;
+import org.rsaml.model.ElementType;
+import org.rsaml.model.Inhibitor;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.NamedElement;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.Port;
+import org.rsaml.model.RealTimeElement;
+import org.rsaml.model.SubsumptionLink;
+import org.rsaml.model.Suppressor;
+import org.rsaml.model.TimeScaled;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlText;
+import org.rsaml.model.support.RsamlTimes;
+
+/**
+ * The named parameters of the catalogue's message templates, computed from the element a finding is
+ * on, in this one place: {@code {element}} is {@code module 'resourceChecker'}, {@code {Element}} the
+ * same capitalised, and every other parameter is a fact of the element. A template may use any
+ * parameter that applies to the classes its rule is checked on.
+ */
+public final class MessageParameters {
+
+    private static final Pattern PARAMETER = Pattern.compile("\\{(\\w+)}");
+    private static final Map<String, Function<EObject, Object>> PARAMETERS = new LinkedHashMap<>();
+
+    static {
+        put("element", MessageParameters::element);
+        put("Element", o -> capitalized(element(o)));
+        put("name", o -> "'" + name(o) + "'");
+        // timing
+        put("period", o -> duration(((RealTimeElement) o).getPeriod(), (TimeScaled) o));
+        put("delay", o -> duration(((RealTimeElement) o).getDelay(), (TimeScaled) o));
+        put("execDuration", o -> duration(((RealTimeElement) o).getExecDuration(), (TimeScaled) o));
+        put("missingTiming", MessageParameters::missingTiming);
+        put("negativeTimes", o -> times(o, false));
+        put("nonRepresentableTimes", o -> times(o, true));
+        // layers
+        put("layerName", o -> "'" + name(((Module) o).getLayer()) + "'");
+        put("layerBudget", o -> duration(((Module) o).getLayer().getMaxExecTime(), ((Module) o).getLayer()));
+        put("declaredLayers", o -> ((Architecture) o).getDeclaredLayers());
+        put("layerCount", o -> ((Architecture) o).getLayers().size());
+        put("layerNames", o -> names(((Architecture) o).getLayers()));
+        put("layerLevels", o -> ((Architecture) o).getLayers().stream().map(l -> String.valueOf(l.getLevel())).sorted()
+                .collect(Collectors.joining(", ")));
+        put("maxLevel", o -> ((Architecture) o).getLayers().size() - 1);
+        // contents
+        put("nonRealTimeFunctions", o -> quoted(((Module) o).getFunctions().stream()
+                .filter(f -> f.getType() != ElementType.REAL_TIME).collect(Collectors.toList())));
+        put("nonRealTimeActions", o -> quoted(((org.rsaml.model.Function) o).getActions().stream()
+                .filter(a -> a.getType() != ElementType.REAL_TIME).collect(Collectors.toList())));
+        put("outputPorts", o -> quoted(((Module) o).getPorts().stream().filter(OutputPort.class::isInstance)
+                .collect(Collectors.toList())));
+        put("duplicates", MessageParameters::duplicates);
+        // connections
+        put("source", o -> port(((Connection) o).getSource()));
+        put("target", o -> o instanceof Connection c ? port(c.getTarget()) : port(target((SubsumptionLink) o)));
+        put("sourceType", o -> RsamlLabels.dataType(((Connection) o).getSource()));
+        put("targetType", o -> RsamlLabels.dataType(((Connection) o).getTarget()));
+        put("sourceLayer", o -> layer(((Connection) o).getSource().getModule().getLayer()));
+        put("targetLayer", o -> layer(o instanceof Connection c ? c.getTarget().getModule().getLayer()
+                : target((SubsumptionLink) o).getModule().getLayer()));
+        put("skippedLayers", o -> {
+            Connection c = (Connection) o;
+            return Math.abs(c.getSource().getModule().getLayer().getLevel() - c.getTarget().getModule().getLayer().getLevel()) - 1;
+        });
+        // subsumption
+        put("owner", o -> "'" + name(owner((SubsumptionLink) o)) + "'");
+        put("ownerLayer", o -> layer(owner((SubsumptionLink) o).getLayer()));
+        put("levelBelow", o -> owner((SubsumptionLink) o).getLayer().getLevel() - 1);
+        put("subsumes", o -> o instanceof Inhibitor ? "inhibits output" : "suppresses entry");
+        put("subsumable", o -> o instanceof Inhibitor ? "inhibit outputs" : "suppress inputs");
+        put("trigger", o -> port(((SubsumptionLink) o).getTrigger()));
+    }
+
+    private MessageParameters() {
+    }
+
+    private static void put(String name, Function<EObject, Object> value) {
+        PARAMETERS.put(name, value);
+    }
+
+    /** The names a template may use. */
+    public static Set<String> names() {
+        return PARAMETERS.keySet();
+    }
+
+    /**
+     * The template with its parameters filled in for {@code element}. Throws when a parameter does
+     * not apply to the element (the caller reports that, naming the rule, instead of a message).
+     */
+    public static String render(String template, EObject element) {
+        Matcher m = PARAMETER.matcher(template);
+        StringBuilder out = new StringBuilder();
+        while (m.find()) {
+            Function<EObject, Object> parameter = PARAMETERS.get(m.group(1));
+            if (parameter == null) {
+                throw new IllegalArgumentException("unknown message parameter {" + m.group(1) + "}");
+            }
+            m.appendReplacement(out, Matcher.quoteReplacement(String.valueOf(parameter.apply(element))));
+        }
+        m.appendTail(out);
+        return out.toString();
+    }
+
+    /** A kind and a name, as messages start: {@code module 'resourceChecker'}. */
+    public static String element(EObject o) {
+        if (o == null) {
+            return "<none>";
+        }
+        String kind = switch (o.eClass().getName()) {
+            case "EntryPort" -> "entry port";
+            case "OutputPort" -> "output port";
+            case "RTAction" -> "RTAction";
+            default -> o.eClass().getName().toLowerCase(java.util.Locale.ROOT);
+        };
+        return kind + " '" + name(o) + "'";
+    }
+
+    static String capitalized(String s) {
+        return s.isEmpty() ? s : Character.toUpperCase(s.charAt(0)) + s.substring(1);
+    }
+
+    /** A port with its module: {@code 'resourceChecker.s0_ressourceCheck'}. */
+    private static String port(Port p) {
+        return "'" + (p.getModule() == null ? "" : name(p.getModule()) + ".") + name(p) + "'";
+    }
+
+    private static String layer(Layer l) {
+        return "layer '" + name(l) + "' (level " + l.getLevel() + ")";
+    }
+
+    private static Module owner(SubsumptionLink link) {
+        return link instanceof Inhibitor i ? i.getModule() : ((Suppressor) link).getModule();
+    }
+
+    private static Port target(SubsumptionLink link) {
+        return link instanceof Inhibitor i ? i.getTarget() : ((Suppressor) link).getTarget();
+    }
+
+    private static String missingTiming(EObject o) {
+        RealTimeElement e = (RealTimeElement) o;
+        List<String> zero = new ArrayList<>();
+        if (e.getPeriod() <= 0) {
+            zero.add("period");
+        }
+        if (e.getDelay() <= 0) {
+            zero.add("delay");
+        }
+        return String.join(" and no ", zero);
+    }
+
+    private static String names(List<? extends NamedElement> elements) {
+        return elements.isEmpty() ? "" : " (" + elements.stream().map(RsamlLabels::name).collect(Collectors.joining(", ")) + ")";
+    }
+
+    private static String quoted(List<? extends EObject> elements) {
+        return elements.stream().map(e -> "'" + name(e) + "'").collect(Collectors.joining(", "));
+    }
+
+    /** Which kinds of children share which names (compared trimmed): {@code module named 'x'}. */
+    private static String duplicates(EObject container) {
+        List<String> parts = new ArrayList<>();
+        for (EReference containment : container.eClass().getEAllContainments()) {
+            if (!containment.isMany()) {
+                continue;
+            }
+            Set<String> seen = new LinkedHashSet<>();
+            Set<String> twice = new LinkedHashSet<>();
+            for (Object child : (List<?>) container.eGet(containment)) {
+                if (child instanceof NamedElement n && !seen.add(String.valueOf(RsamlText.normalized(n.getName())))) {
+                    twice.add("'" + n.getName() + "'");
+                }
+            }
+            if (!twice.isEmpty()) {
+                parts.add(containment.getEReferenceType().getName().toLowerCase(java.util.Locale.ROOT) + " named "
+                        + String.join(", ", twice));
+            }
+        }
+        return parts.isEmpty() ? "child with the same name" : String.join("; ", parts);
+    }
+
+    /** The element's negative (or, with {@code representable}, too large) time values: {@code period -2.0}. */
+    private static String times(EObject o, boolean representable) {
+        Map<String, Double> values = new LinkedHashMap<>();
+        if (o instanceof RealTimeElement e) {
+            values.put("period", e.getPeriod());
+            values.put("delay", e.getDelay());
+            values.put("execDuration", e.getExecDuration());
+        } else if (o instanceof Layer l) {
+            values.put("maxExecTime", l.getMaxExecTime());
+        } else if (o instanceof SubsumptionLink s) {
+            values.put("duration", s.getDuration());
+        } else if (o instanceof Device d) {
+            values.put("period", d.getPeriod());
+        }
+        List<String> parts = new ArrayList<>();
+        values.forEach((feature, value) -> {
+            boolean wrong = representable ? !RsamlTimes.representable(value, (TimeScaled) o) : value < 0;
+            if (wrong) {
+                parts.add(feature + " " + (representable ? duration(value, (TimeScaled) o) : RsamlLabels.number(value)));
+            }
+        });
+        return String.join(", ", parts);
+    }
+}

@@ -1,0 +1,83 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.validation.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.RsamlFactory;
+import org.rsaml.model.TimeUnit;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+
+/** RSA-08 compares a module's execution duration with its layer's budget exactly, in any pair of units. */
+class ExactTimesTest {
+
+    private static List<String> budgetFindings(String exec, String execUnit, String budget, String budgetUnit) {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Architecture a = f.createArchitecture();
+        a.setName("robot");
+        a.setDeclaredLayers(1);
+        Layer layer = f.createLayer();
+        layer.setName("control");
+        layer.setTimeUnit(TimeUnit.get(budgetUnit));
+        layer.setMaxExecTime(Double.parseDouble(budget));
+        Module m = f.createModule();
+        m.setName("checker");
+        m.setTimeUnit(TimeUnit.get(execUnit));
+        m.setExecDuration(Double.parseDouble(exec));
+        layer.getModules().add(m);
+        a.getLayers().add(layer);
+        return RsamlModelValidator.validate(a).stream().map(Finding::ruleId).collect(Collectors.toList());
+    }
+
+    @ParameterizedTest(name = "{0} {1} within {2} {3}")
+    @CsvSource({
+            "2000, us, 2, ms", "2, ms, 2000, us", "1, s, 1000, ms", "1000, ms, 1, s", "1, ns, 0.000001, ms",
+            "0.000001, ms, 1, ns", "16964.9, s, 16964900, ms", "16964900, ms, 16964.9, s", "1e9, s, 1e12, ms",
+            "1e12, ms, 1e9, s", "1e9, s, 1e18, ns", "0.1, s, 100, ms", "100, ms, 0.1, s", "0.3, us, 300, ns",
+            "1.1, ms, 1100000, ns", "1e-6, s, 1, us", "1, us, 1e-6, s", "2.5, ms, 0.0025, s", "123456.789, us, 0.123456789, s",
+            "0.0000005, us, 0.0005, ns" })
+    void equalDurationsInDifferentUnitsAreWithinBudget(String exec, String execUnit, String budget, String budgetUnit) {
+        assertEquals(List.of(), budgetFindings(exec, execUnit, budget, budgetUnit));
+    }
+
+    @ParameterizedTest(name = "{0} {1} exceeds {2} {3}")
+    @CsvSource({
+            "2001, us, 2, ms", "2.001, ms, 2000, us", "1.001, s, 1000, ms", "1001, ms, 1, s", "2, ns, 0.000001, ms",
+            "0.000002, ms, 1, ns", "16964.9000001, s, 16964900, ms", "16964900.0001, ms, 16964.9, s",
+            "1000000000.000001, s, 1e12, ms", "1e12, ms, 999999999.9999, s", "0.1000001, s, 100, ms",
+            "1.0000000000001, s, 1000, ms", "0.0000015, us, 0.0005, ns", "1100001, ns, 1.1, ms",
+            "2000.0000001, us, 2, ms", "123456.7891, us, 0.123456789, s" })
+    void anExcessOfOneUnitInTheLastWrittenDigitIsAFinding(String exec, String execUnit, String budget, String budgetUnit) {
+        assertEquals(List.of("RSA-08"), budgetFindings(exec, execUnit, budget, budgetUnit));
+    }
+
+    @Test
+    void everyPairOfUnitsIsComparedExactly() {
+        String[] units = { "ns", "us", "ms", "s" };
+        long[] ns = { 1, 1_000, 1_000_000, 1_000_000_000 };
+        for (int i = 0; i < units.length; i++) {
+            for (int j = 0; j < units.length; j++) {
+                // 7 of unit j written in unit i: 7 * ns[j] / ns[i]
+                java.math.BigDecimal written = java.math.BigDecimal.valueOf(7 * ns[j])
+                        .divide(java.math.BigDecimal.valueOf(ns[i])).stripTrailingZeros();
+                java.math.BigDecimal more = written.add(java.math.BigDecimal.ONE.movePointLeft(Math.max(written.scale(), 0) + 1));
+                assertEquals(List.of(), budgetFindings(written.toPlainString(), units[i], "7", units[j]),
+                        written + " " + units[i] + " vs 7 " + units[j]);
+                assertEquals(List.of("RSA-08"), budgetFindings(more.toPlainString(), units[i], "7", units[j]),
+                        more + " " + units[i] + " vs 7 " + units[j]);
+            }
+        }
+    }
+}
