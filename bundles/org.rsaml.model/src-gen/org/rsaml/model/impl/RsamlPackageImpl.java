@@ -2087,7 +2087,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (moduleEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA05_realTimeModuleTiming RSA06_realTimeModuleFunctions RSA08_layerExecutionBudget RSA09_uniqueNames"
+			   "constraints", "RSA05_realTimeModuleTiming RSA06_realTimeModuleFunctions RSA08_layerExecutionBudget RSA09_uniqueNames RSA19_activatedModule"
 		   });
 		addAnnotation
 		  (functionEClass,
@@ -2205,7 +2205,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 			   "RSA05_realTimeModuleTiming", "type = ElementType::realTime implies (period > 0 and delay > 0)",
 			   "RSA06_realTimeModuleFunctions", "type = ElementType::realTime implies functions->forAll(f | f.type = ElementType::realTime)",
 			   "RSA08_layerExecutionBudget", "(layer <> null and layer.maxExecTime > 0) implies compareTime(execDuration, layer, layer.maxExecTime) <= 0",
-			   "RSA09_uniqueNames", "ports->isUnique(normalizedName()) and functions->isUnique(normalizedName()) and inhibitors->isUnique(normalizedName()) and suppressors->isUnique(normalizedName())"
+			   "RSA09_uniqueNames", "ports->isUnique(normalizedName()) and functions->isUnique(normalizedName()) and inhibitors->isUnique(normalizedName()) and suppressors->isUnique(normalizedName())",
+			   "RSA19_activatedModule", "ports->exists(p | p.oclIsKindOf(OutputPort)) implies ((execType = ExecutionType::periodic and period > 0) or functions->exists(f | (f.execType = ExecutionType::periodic and f.period > 0) or f.actions->exists(a | a.execType = ExecutionType::periodic and a.period > 0)) or ports->exists(p | p.oclIsKindOf(EntryPort) and (p.oclAsType(EntryPort).incoming->notEmpty() or p.oclAsType(EntryPort).suppressedBy->notEmpty())))"
 		   });
 		addAnnotation
 		  (functionEClass,

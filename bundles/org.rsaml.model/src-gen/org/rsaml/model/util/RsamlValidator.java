@@ -651,6 +651,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateModule_RSA06_realTimeModuleFunctions(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateModule_RSA08_layerExecutionBudget(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateModule_RSA09_uniqueNames(module, diagnostics, context);
+		if (result || diagnostics != null) result &= validateModule_RSA19_activatedModule(module, diagnostics, context);
 		return result;
 	}
 
@@ -765,6 +766,35 @@ public class RsamlValidator extends EObjectValidator {
 				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
 				 "RSA09_uniqueNames",
 				 MODULE__RSA09_UNIQUE_NAMES__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
+	 * The cached validation expression for the RSA19_activatedModule constraint of '<em>Module</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String MODULE__RSA19_ACTIVATED_MODULE__EEXPRESSION = "ports->exists(p | p.oclIsKindOf(OutputPort)) implies ((execType = ExecutionType::periodic and period > 0) or functions->exists(f | (f.execType = ExecutionType::periodic and f.period > 0) or f.actions->exists(a | a.execType = ExecutionType::periodic and a.period > 0)) or ports->exists(p | p.oclIsKindOf(EntryPort) and (p.oclAsType(EntryPort).incoming->notEmpty() or p.oclAsType(EntryPort).suppressedBy->notEmpty())))";
+
+	/**
+	 * Validates the RSA19_activatedModule constraint of '<em>Module</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateModule_RSA19_activatedModule(org.rsaml.model.Module module, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.MODULE,
+				 module,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA19_activatedModule",
+				 MODULE__RSA19_ACTIVATED_MODULE__EEXPRESSION,
 				 Diagnostic.ERROR,
 				 DIAGNOSTIC_SOURCE,
 				 0);
