@@ -11,7 +11,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.Connection;
 import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.support.RsamlLabels;
-import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.DiagnosisCache;
 
 /**
  * The Java services of the RsaML viewpoint (rsaml.odesign), called from its AQL expressions:
@@ -40,10 +40,10 @@ public class RsamlServices {
         return findings(self, Diagnostic.WARNING);
     }
 
-    /** The element's own findings: those on contained elements are shown on them. */
+    /** The element's own findings (those on contained elements are shown on them), validated once per model change. */
     private static String findings(EObject self, int severity) {
-        return RsamlModelValidator.diagnose(self).getChildren().stream()
-                .filter(d -> d.getSeverity() == severity && d.getData().get(0) == self)
+        return DiagnosisCache.on(self).stream()
+                .filter(d -> d.getSeverity() == severity)
                 .map(Diagnostic::getMessage)
                 .collect(Collectors.joining("\n"));
     }
