@@ -4,145 +4,52 @@
  */
 package org.rsaml.model.edit.provider.spec;
 
-import org.eclipse.emf.common.notify.Adapter;
+import org.eclipse.emf.common.notify.AdapterFactory;
 import org.eclipse.emf.ecore.EObject;
-import org.rsaml.model.edit.provider.ActionItemProvider;
-import org.rsaml.model.edit.provider.ActivityItemProvider;
-import org.rsaml.model.edit.provider.ConnectionItemProvider;
-import org.rsaml.model.edit.provider.EntryPortItemProvider;
-import org.rsaml.model.edit.provider.FunctionItemProvider;
-import org.rsaml.model.edit.provider.LayerItemProvider;
-import org.rsaml.model.edit.provider.ModuleItemProvider;
-import org.rsaml.model.edit.provider.OutputPortItemProvider;
-import org.rsaml.model.edit.provider.RTActionItemProvider;
+import org.eclipse.emf.edit.provider.DecoratorAdapterFactory;
+import org.eclipse.emf.edit.provider.IItemLabelProvider;
+import org.eclipse.emf.edit.provider.IItemProviderDecorator;
+import org.eclipse.emf.edit.provider.ItemProviderAdapter;
+import org.eclipse.emf.edit.provider.ItemProviderDecorator;
+import org.rsaml.model.Connection;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Port;
+import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.edit.provider.RsamlItemProviderAdapterFactory;
 import org.rsaml.model.support.RsamlLabels;
 
 /**
- * RsaML's item provider factory: the generated providers, with labels that say what an element
- * is and how it is timed ("Module resourceChecker — real-time, 2.5 ms") instead of its name alone.
- * Registered in plugin.xml in place of the generated factory.
+ * RsaML's item provider factory: the generated providers, decorated in one place with labels that
+ * say what an element is and how it is timed ("Module resourceChecker — real-time, 2.5 ms")
+ * instead of its name alone. Registered in plugin.xml in place of the generated factory.
  */
-public class RsamlItemProviderAdapterFactorySpec extends RsamlItemProviderAdapterFactory {
+public class RsamlItemProviderAdapterFactorySpec extends DecoratorAdapterFactory {
 
-    static String label(String typeName, Object object) {
-        return typeName + " " + RsamlLabels.describe((EObject) object);
+    public RsamlItemProviderAdapterFactorySpec() {
+        super(new RsamlItemProviderAdapterFactory());
     }
 
     @Override
-    public Adapter createLayerAdapter() {
-        if (layerItemProvider == null) {
-            layerItemProvider = new LayerItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_Layer_type"), object);
-                }
-            };
-        }
-        return layerItemProvider;
+    protected IItemProviderDecorator createItemProviderDecorator(Object target, Object type) {
+        return new LabelDecorator(this);
     }
 
-    @Override
-    public Adapter createModuleAdapter() {
-        if (moduleItemProvider == null) {
-            moduleItemProvider = new ModuleItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_Module_type"), object);
-                }
-            };
-        }
-        return moduleItemProvider;
-    }
+    /** The generated provider with RsaML's label for timed elements, layers, ports and connections. */
+    private static final class LabelDecorator extends ItemProviderDecorator implements IItemLabelProvider {
 
-    @Override
-    public Adapter createFunctionAdapter() {
-        if (functionItemProvider == null) {
-            functionItemProvider = new FunctionItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_Function_type"), object);
-                }
-            };
+        LabelDecorator(AdapterFactory adapterFactory) {
+            super(adapterFactory);
         }
-        return functionItemProvider;
-    }
 
-    @Override
-    public Adapter createActionAdapter() {
-        if (actionItemProvider == null) {
-            actionItemProvider = new ActionItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_Action_type"), object);
-                }
-            };
+        @Override
+        public String getText(Object object) {
+            if ((object instanceof RealTimeElement || object instanceof Layer || object instanceof Port
+                    || object instanceof Connection) && getDecoratedItemProvider() instanceof ItemProviderAdapter generated) {
+                EObject element = (EObject) object;
+                String type = generated.getResourceLocator().getString("_UI_" + element.eClass().getName() + "_type");
+                return type + " " + RsamlLabels.describe(element);
+            }
+            return super.getText(object);
         }
-        return actionItemProvider;
-    }
-
-    @Override
-    public Adapter createRTActionAdapter() {
-        if (rtActionItemProvider == null) {
-            rtActionItemProvider = new RTActionItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_RTAction_type"), object);
-                }
-            };
-        }
-        return rtActionItemProvider;
-    }
-
-    @Override
-    public Adapter createActivityAdapter() {
-        if (activityItemProvider == null) {
-            activityItemProvider = new ActivityItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_Activity_type"), object);
-                }
-            };
-        }
-        return activityItemProvider;
-    }
-
-    @Override
-    public Adapter createEntryPortAdapter() {
-        if (entryPortItemProvider == null) {
-            entryPortItemProvider = new EntryPortItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_EntryPort_type"), object);
-                }
-            };
-        }
-        return entryPortItemProvider;
-    }
-
-    @Override
-    public Adapter createOutputPortAdapter() {
-        if (outputPortItemProvider == null) {
-            outputPortItemProvider = new OutputPortItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_OutputPort_type"), object);
-                }
-            };
-        }
-        return outputPortItemProvider;
-    }
-
-    @Override
-    public Adapter createConnectionAdapter() {
-        if (connectionItemProvider == null) {
-            connectionItemProvider = new ConnectionItemProvider(this) {
-                @Override
-                public String getText(Object object) {
-                    return label(getString("_UI_Connection_type"), object);
-                }
-            };
-        }
-        return connectionItemProvider;
     }
 }
