@@ -4,21 +4,46 @@
  */
 package org.rsaml.model.editor.presentation.spec;
 
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.core.runtime.OperationCanceledException;
+import org.eclipse.emf.common.EMFPlugin;
 import org.eclipse.emf.common.util.BasicDiagnostic;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.edit.ui.action.ValidateAction;
+import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Rule;
 
 /**
  * Validate in the tree editor: the selected elements are checked against RsaML's rules (the OCL
  * invariants of rsaml.ecore and EMF's structural checks, as the command line checks them), and the
  * dialog and the Problems view show each finding as "RSA-08: Module 'resourceChecker' takes ...".
+ * Its markers are of the RsaML builder's type, so they replace the builder's markers of the file
+ * instead of listing every finding a second time.
  */
 public class RsamlValidateAction extends ValidateAction {
+
+    public RsamlValidateAction() {
+        eclipseResourcesUtil = EMFPlugin.IS_RESOURCES_BUNDLE_AVAILABLE ? new EclipseResourcesUtil() {
+            @Override
+            protected String getMarkerID() {
+                return RsamlMarkers.PROBLEM;
+            }
+
+            @Override
+            protected void adjustMarker(IMarker marker, Diagnostic diagnostic, Diagnostic parentDiagnostic)
+                    throws CoreException {
+                super.adjustMarker(marker, diagnostic, parentDiagnostic);
+                if (diagnostic.getData().size() > 1 && diagnostic.getData().get(1) instanceof Rule rule) {
+                    marker.setAttribute(RsamlMarkers.RULE_ID, rule.id());
+                }
+            }
+        } : null;
+    }
 
     @Override
     protected Diagnostic validate(IProgressMonitor progressMonitor) {
