@@ -38,6 +38,8 @@ class PlainJvmValidationTest {
 
     private static final Path RULE_MODELS = Cli.ROOT.resolve("tests/org.rsaml.validation.tests/resources/rules");
     private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d) (error|warning|info) (.+?) -->");
+    /** The expected findings of the examples, with their location: {@code <!-- expect: RSA-08 error a/b at 50:5 -->}. */
+    private static final Pattern EXPECT_AT = Pattern.compile("<!-- expect: (RSA-\\d\\d \\w+ .+?) at (\\d+:\\d+) -->");
 
     @Test
     void runsOnAPlainClassPath() {
@@ -50,12 +52,13 @@ class PlainJvmValidationTest {
         List<Finding> findings = RsamlModelValidator.validate(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), "exp2-defects.rsaml");
         List<String> got = findings.stream()
                 .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName() + " @" + f.line() + ":" + f.column()).toList();
-        assertEquals(List.of(
-                "RSA-01 error hybridMobileRobotWithDefects @13:1",
-                "RSA-04 error hybridMobileRobotWithDefects/decision/proceduralExec/overrideM01 @30:7",
-                "RSA-08 error hybridMobileRobotWithDefects/control/resourceChecker @50:5",
-                "RSA-07 error hybridMobileRobotWithDefects/functional/m01/f0_m01 @70:7",
-                "RSA-02 error hybridMobileRobotWithDefects/s0_ressourceCheck -> e0_prodExec @96:3"), got);
+        List<String> expected = new ArrayList<>();
+        Matcher m = EXPECT_AT.matcher(Files.readString(Cli.ROOT.resolve("examples/exp2-defects.rsaml")));
+        while (m.find()) {
+            expected.add(m.group(1) + " @" + m.group(2));
+        }
+        assertEquals(5, expected.size());
+        assertEquals(expected, got);
         assertEquals(Severity.ERROR, findings.get(2).severity());
         assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", findings.get(2).message());
     }

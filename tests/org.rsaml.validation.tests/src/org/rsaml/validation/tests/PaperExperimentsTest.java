@@ -9,7 +9,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
@@ -23,20 +26,23 @@ import org.rsaml.validation.Severity;
 /** The paper's experiments: experiment 2 shows exactly its five defects, the other models are clean. */
 class PaperExperimentsTest {
 
+    private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d \\w+ .+? at \\d+:\\d+) -->");
+
     @Test
     void experimentTwoYieldsExactlyThePapersFiveFindings() throws Exception {
         Path file = Paths.example("exp2-defects.rsaml");
         List<Finding> findings = RsamlModelValidator.validate(file, "examples/exp2-defects.rsaml");
-        String root = "hybridMobileRobotWithDefects";
         List<String> actual = findings.stream()
-                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName())
-                .sorted().collect(Collectors.toList());
-        assertEquals(List.of(
-                "RSA-01 error " + root,
-                "RSA-02 error " + root + "/s0_ressourceCheck -> e0_prodExec",
-                "RSA-04 error " + root + "/decision/proceduralExec/overrideM01",
-                "RSA-07 error " + root + "/functional/m01/f0_m01",
-                "RSA-08 error " + root + "/control/resourceChecker"), actual);
+                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName() + " at " + f.line() + ":" + f.column())
+                .collect(Collectors.toList());
+        // The expected findings are written in the model itself, as in the rule fixtures.
+        List<String> expected = new ArrayList<>();
+        Matcher m = EXPECT.matcher(Files.readString(file));
+        while (m.find()) {
+            expected.add(m.group(1));
+        }
+        assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
+        assertEquals(expected, actual);
 
         Finding budget = findings.stream().filter(f -> f.ruleId().equals("RSA-08")).findFirst().orElseThrow();
         assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.message());
