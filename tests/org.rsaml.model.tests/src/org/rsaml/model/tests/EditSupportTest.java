@@ -7,12 +7,14 @@ package org.rsaml.model.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.InputStream;
 import java.net.URL;
 import java.security.MessageDigest;
 import java.util.HashMap;
 import java.util.HexFormat;
+import java.util.List;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EClass;
@@ -20,7 +22,10 @@ import org.eclipse.emf.ecore.EClassifier;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.emf.edit.provider.ComposedAdapterFactory;
+import org.eclipse.emf.edit.provider.IEditingDomainItemProvider;
 import org.eclipse.emf.edit.provider.IItemLabelProvider;
+import org.eclipse.emf.edit.provider.IItemPropertySource;
+import org.eclipse.emf.edit.provider.ITreeItemContentProvider;
 import org.junit.jupiter.api.Test;
 import org.rsaml.model.Action;
 import org.rsaml.model.DataType;
@@ -94,5 +99,24 @@ class EditSupportTest {
                 assertEquals(null, previous, eClass.getName() + " shares its icon with " + previous);
             }
         }
+    }
+
+    /** The tree editor and the Properties view ask the same factory for contents and properties. */
+    @Test
+    void treeContentsAndPropertiesStayTheGeneratedOnes() {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Layer layer = f.createLayer();
+        layer.setName("control");
+        Module module = f.createModule();
+        module.setName("resourceChecker");
+        layer.getModules().add(module);
+        ITreeItemContentProvider tree = assertInstanceOf(ITreeItemContentProvider.class,
+                factory.adapt(layer, ITreeItemContentProvider.class));
+        assertEquals(List.of(module), List.copyOf(tree.getChildren(layer)));
+        assertEquals("Module resourceChecker \u2014 simple", label((EObject) tree.getChildren(layer).iterator().next()));
+        IItemPropertySource properties = assertInstanceOf(IItemPropertySource.class, factory.adapt(module, IItemPropertySource.class));
+        assertTrue(properties.getPropertyDescriptors(module).stream().anyMatch(d -> "name".equals(d.getId(module))),
+                "the module's name is editable in the Properties view");
+        assertInstanceOf(IEditingDomainItemProvider.class, factory.adapt(module, IEditingDomainItemProvider.class));
     }
 }
