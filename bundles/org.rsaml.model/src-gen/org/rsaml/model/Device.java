@@ -26,7 +26,7 @@ package org.rsaml.model;
  * @see org.rsaml.model.RsamlPackage#getDevice()
  * @model abstract="true"
  *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='period &gt;= 0' RSA20_representableTimes='representable(period)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='period &gt;= 0' RSA20_representableTimes='representablePeriod(period)'"
  * @generated
  */
 public interface Device extends NamedElement, TimeScaled {

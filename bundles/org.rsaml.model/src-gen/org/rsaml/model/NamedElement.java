@@ -25,6 +25,8 @@ import org.eclipse.emf.ecore.EObject;
  *
  * @see org.rsaml.model.RsamlPackage#getNamedElement()
  * @model abstract="true"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA21_fileNameLength'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA21_fileNameLength='(normalizedName() = null or normalizedName().size() &lt;= 100) and (oclIsKindOf(Port) implies (oclAsType(Port).normalizedMessageType() = null or oclAsType(Port).normalizedMessageType().size() &lt;= 100))'"
  * @generated
  */
 public interface NamedElement extends EObject {

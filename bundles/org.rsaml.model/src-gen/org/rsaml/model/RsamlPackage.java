@@ -183,13 +183,22 @@ public interface RsamlPackage extends EPackage {
 	int TIME_SCALED___REPRESENTABLE__DOUBLE = 2;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE = 3;
+
+	/**
 	 * The number of operations of the '<em>Time Scaled</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int TIME_SCALED_OPERATION_COUNT = 3;
+	int TIME_SCALED_OPERATION_COUNT = 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.RealTimeElementImpl <em>Real Time Element</em>}' class.
@@ -319,13 +328,22 @@ public interface RsamlPackage extends EPackage {
 	int REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
+
+	/**
 	 * The number of operations of the '<em>Real Time Element</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int REAL_TIME_ELEMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
+	int REAL_TIME_ELEMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.ArchitectureImpl <em>Architecture</em>}' class.
@@ -591,13 +609,22 @@ public interface RsamlPackage extends EPackage {
 	int LAYER___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LAYER___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
+
+	/**
 	 * The number of operations of the '<em>Layer</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int LAYER_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
+	int LAYER_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.ModuleImpl <em>Module</em>}' class.
@@ -790,6 +817,15 @@ public interface RsamlPackage extends EPackage {
 	int MODULE___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MODULE___REPRESENTABLE_PERIOD__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE;
+
+	/**
 	 * The number of operations of the '<em>Module</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -971,6 +1007,15 @@ public interface RsamlPackage extends EPackage {
 	int FUNCTION___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int FUNCTION___REPRESENTABLE_PERIOD__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE;
+
+	/**
 	 * The number of operations of the '<em>Function</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1125,6 +1170,15 @@ public interface RsamlPackage extends EPackage {
 	int ACTION___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTION___REPRESENTABLE_PERIOD__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE;
+
+	/**
 	 * The number of operations of the '<em>Action</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1277,6 +1331,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int RT_ACTION___REPRESENTABLE__DOUBLE = ACTION___REPRESENTABLE__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int RT_ACTION___REPRESENTABLE_PERIOD__DOUBLE = ACTION___REPRESENTABLE_PERIOD__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>RT Action</em>' class.
@@ -1752,13 +1815,22 @@ public interface RsamlPackage extends EPackage {
 	int SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUBSUMPTION_LINK___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
+
+	/**
 	 * The number of operations of the '<em>Subsumption Link</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int SUBSUMPTION_LINK_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
+	int SUBSUMPTION_LINK_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.InhibitorImpl <em>Inhibitor</em>}' class.
@@ -1877,6 +1949,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int INHIBITOR___REPRESENTABLE__DOUBLE = SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int INHIBITOR___REPRESENTABLE_PERIOD__DOUBLE = SUBSUMPTION_LINK___REPRESENTABLE_PERIOD__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Inhibitor</em>' class.
@@ -2006,6 +2087,15 @@ public interface RsamlPackage extends EPackage {
 	int SUPPRESSOR___REPRESENTABLE__DOUBLE = SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SUPPRESSOR___REPRESENTABLE_PERIOD__DOUBLE = SUBSUMPTION_LINK___REPRESENTABLE_PERIOD__DOUBLE;
+
+	/**
 	 * The number of operations of the '<em>Suppressor</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -2124,13 +2214,22 @@ public interface RsamlPackage extends EPackage {
 	int DEVICE___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
 
 	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int DEVICE___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
+
+	/**
 	 * The number of operations of the '<em>Device</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int DEVICE_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 3;
+	int DEVICE_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.SensorImpl <em>Sensor</em>}' class.
@@ -2258,6 +2357,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int SENSOR___REPRESENTABLE__DOUBLE = DEVICE___REPRESENTABLE__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int SENSOR___REPRESENTABLE_PERIOD__DOUBLE = DEVICE___REPRESENTABLE_PERIOD__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Sensor</em>' class.
@@ -2394,6 +2502,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ACTUATOR___REPRESENTABLE__DOUBLE = DEVICE___REPRESENTABLE__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTUATOR___REPRESENTABLE_PERIOD__DOUBLE = DEVICE___REPRESENTABLE_PERIOD__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Actuator</em>' class.
@@ -2803,6 +2920,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ACTIVITY___REPRESENTABLE__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ACTIVITY___REPRESENTABLE_PERIOD__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE;
 
 	/**
 	 * The number of operations of the '<em>Activity</em>' class.
@@ -3304,6 +3430,16 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EOperation getTimeScaled__Representable__double();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.TimeScaled#representablePeriod(double) <em>Representable Period</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Representable Period</em>' operation.
+	 * @see org.rsaml.model.TimeScaled#representablePeriod(double)
+	 * @generated
+	 */
+	EOperation getTimeScaled__RepresentablePeriod__double();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.RealTimeElement <em>Real Time Element</em>}'.
@@ -4613,6 +4749,14 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EOperation TIME_SCALED___REPRESENTABLE__DOUBLE = eINSTANCE.getTimeScaled__Representable__double();
+
+		/**
+		 * The meta object literal for the '<em><b>Representable Period</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE = eINSTANCE.getTimeScaled__RepresentablePeriod__double();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.RealTimeElementImpl <em>Real Time Element</em>}' class.

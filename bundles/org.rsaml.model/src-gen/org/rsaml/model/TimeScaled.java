@@ -12,7 +12,7 @@ import org.eclipse.emf.ecore.EObject;
  * <!-- end-user-doc -->
  *
  * <!-- begin-model-doc -->
- * An element whose time values are expressed in a time unit. Values of elements with different units are compared after conversion to milliseconds.
+ * An element whose time values are expressed in a time unit. Values of elements with different units are compared exactly, by decimal scaling of the written values (compareTime).
  * <!-- end-model-doc -->
  *
  * <p>
@@ -82,11 +82,22 @@ public interface TimeScaled extends EObject {
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * <!-- begin-model-doc -->
-	 * Whether a time value in this element's unit fits the generated code's clock: finite and at most 2^63-1 nanoseconds.
+	 * Whether a time value in this element's unit fits the generated code's clock: finite and at most 2^60 nanoseconds (about 36.5 years).
 	 * <!-- end-model-doc -->
 	 * @model
 	 * @generated
 	 */
 	boolean representable(double value);
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * Whether a period in this element's unit fits the generated code's timers: representable, and 0 (no period) or at least 1 nanosecond.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	boolean representablePeriod(double value);
 
 } // TimeScaled

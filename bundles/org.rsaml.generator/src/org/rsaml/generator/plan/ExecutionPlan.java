@@ -35,6 +35,7 @@ import org.rsaml.model.Suppressor;
 import org.rsaml.model.TimeScaled;
 import org.rsaml.model.TimeUnit;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * How an architecture executes, independent of any target language: what is released when, what
@@ -73,7 +74,7 @@ public final class ExecutionPlan {
      * signed 64-bit nanoseconds from the start of the run and must add a period and an offset to
      * it without overflow.
      */
-    public static final long MAX_TIME_NS = 1L << 60;
+    public static final long MAX_TIME_NS = RsamlTimes.MAX_NANOSECONDS.longValueExact();
 
     private final Architecture architecture;
     private final String name;
@@ -328,13 +329,13 @@ public final class ExecutionPlan {
         if (value < 0) {
             throw new UnplannableException((EObject) owner, what + " is negative; give 0 or more");
         }
-        double ns = value * unit.getValue();
-        if (ns > MAX_TIME_NS) {
+        // The same limits as validation (RSA-20), so that a model without errors is always planned.
+        if (!RsamlTimes.representable(value, owner)) {
             throw new UnplannableException((EObject) owner, what + " is longer than generated code can count (at most 2^60 ns, "
                     + "about 36 years); give a shorter time");
         }
-        long rounded = Math.round(ns);
-        if (period && value > 0 && rounded < 1) {
+        long rounded = Math.round(value * unit.getValue());
+        if (period && !RsamlTimes.representablePeriod(value, owner)) {
             throw new UnplannableException((EObject) owner, what + " is shorter than 1 ns, the resolution of generated code; "
                     + "give a longer period");
         }
@@ -728,8 +729,9 @@ public final class ExecutionPlan {
                 case STRUCTURED -> DataKind.STRUCTURED;
                 default -> DataKind.NUMERIC;
             };
-            String raw = port.getMessageType();
-            this.messageType = kind == DataKind.STRUCTURED ? (raw == null || raw.isBlank() ? "StructuredData" : raw.strip()) : null;
+            // Read as the rules read it (RSA-02, RSA-18): trimmed, and blank is missing.
+            String type = port.normalizedMessageType();
+            this.messageType = kind == DataKind.STRUCTURED ? (type == null ? "StructuredData" : type) : null;
         }
 
         boolean sameData(PlannedPort other) {

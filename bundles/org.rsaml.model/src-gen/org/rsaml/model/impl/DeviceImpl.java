@@ -264,6 +264,16 @@ public abstract class DeviceImpl extends NamedElementImpl implements Device {
 	 * @generated
 	 */
 	@Override
+	public boolean representablePeriod(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representablePeriod(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public Object eGet(int featureID, boolean resolve, boolean coreType) {
 		switch (featureID) {
 			case RsamlPackage.DEVICE__TIME_UNIT:
@@ -390,6 +400,7 @@ public abstract class DeviceImpl extends NamedElementImpl implements Device {
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.DEVICE___TO_MILLISECONDS__DOUBLE;
 				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.DEVICE___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
 				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.DEVICE___REPRESENTABLE__DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE: return RsamlPackage.DEVICE___REPRESENTABLE_PERIOD__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -410,6 +421,8 @@ public abstract class DeviceImpl extends NamedElementImpl implements Device {
 				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
 			case RsamlPackage.DEVICE___REPRESENTABLE__DOUBLE:
 				return representable((Double)arguments.get(0));
+			case RsamlPackage.DEVICE___REPRESENTABLE_PERIOD__DOUBLE:
+				return representablePeriod((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

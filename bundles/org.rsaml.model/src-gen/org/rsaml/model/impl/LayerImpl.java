@@ -295,6 +295,16 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	@Override
+	public boolean representablePeriod(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representablePeriod(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	@SuppressWarnings("unchecked")
 	@Override
 	public NotificationChain eInverseAdd(InternalEObject otherEnd, int featureID, NotificationChain msgs) {
@@ -483,6 +493,7 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.LAYER___TO_MILLISECONDS__DOUBLE;
 				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.LAYER___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
 				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.LAYER___REPRESENTABLE__DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE: return RsamlPackage.LAYER___REPRESENTABLE_PERIOD__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -503,6 +514,8 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
 			case RsamlPackage.LAYER___REPRESENTABLE__DOUBLE:
 				return representable((Double)arguments.get(0));
+			case RsamlPackage.LAYER___REPRESENTABLE_PERIOD__DOUBLE:
+				return representablePeriod((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

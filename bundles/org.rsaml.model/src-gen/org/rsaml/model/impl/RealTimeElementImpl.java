@@ -353,6 +353,16 @@ public abstract class RealTimeElementImpl extends NamedElementImpl implements Re
 	 * @generated
 	 */
 	@Override
+	public boolean representablePeriod(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representablePeriod(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public Object eGet(int featureID, boolean resolve, boolean coreType) {
 		switch (featureID) {
 			case RsamlPackage.REAL_TIME_ELEMENT__TIME_UNIT:
@@ -499,6 +509,7 @@ public abstract class RealTimeElementImpl extends NamedElementImpl implements Re
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.REAL_TIME_ELEMENT___TO_MILLISECONDS__DOUBLE;
 				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.REAL_TIME_ELEMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
 				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE: return RsamlPackage.REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -519,6 +530,8 @@ public abstract class RealTimeElementImpl extends NamedElementImpl implements Re
 				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
 			case RsamlPackage.REAL_TIME_ELEMENT___REPRESENTABLE__DOUBLE:
 				return representable((Double)arguments.get(0));
+			case RsamlPackage.REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE:
+				return representablePeriod((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

@@ -463,6 +463,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EOperation getTimeScaled__RepresentablePeriod__double() {
+		return timeScaledEClass.getEOperations().get(3);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EClass getRealTimeElement() {
 		return realTimeElementEClass;
 	}
@@ -1626,6 +1636,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEOperation(timeScaledEClass, TIME_SCALED___TO_MILLISECONDS__DOUBLE);
 		createEOperation(timeScaledEClass, TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE);
 		createEOperation(timeScaledEClass, TIME_SCALED___REPRESENTABLE__DOUBLE);
+		createEOperation(timeScaledEClass, TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE);
 
 		realTimeElementEClass = createEClass(REAL_TIME_ELEMENT);
 		createEAttribute(realTimeElementEClass, REAL_TIME_ELEMENT__TYPE);
@@ -1844,6 +1855,9 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		addEParameter(op, ecorePackage.getEDouble(), "otherValue", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		op = initEOperation(getTimeScaled__Representable__double(), ecorePackage.getEBoolean(), "representable", 0, 1, IS_UNIQUE, IS_ORDERED);
+		addEParameter(op, ecorePackage.getEDouble(), "value", 0, 1, IS_UNIQUE, IS_ORDERED);
+
+		op = initEOperation(getTimeScaled__RepresentablePeriod__double(), ecorePackage.getEBoolean(), "representablePeriod", 0, 1, IS_UNIQUE, IS_ORDERED);
 		addEParameter(op, ecorePackage.getEDouble(), "value", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		initEClass(realTimeElementEClass, RealTimeElement.class, "RealTimeElement", IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
@@ -2066,6 +2080,12 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 			   "validationDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL"
 		   });
 		addAnnotation
+		  (namedElementEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA21_fileNameLength"
+		   });
+		addAnnotation
 		  (realTimeElementEClass,
 		   source,
 		   new String[] {
@@ -2172,6 +2192,12 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	protected void createOCLAnnotations() {
 		String source = "http://www.eclipse.org/emf/2002/Ecore/OCL";
 		addAnnotation
+		  (namedElementEClass,
+		   source,
+		   new String[] {
+			   "RSA21_fileNameLength", "(normalizedName() = null or normalizedName().size() <= 100) and (oclIsKindOf(Port) implies (oclAsType(Port).normalizedMessageType() = null or oclAsType(Port).normalizedMessageType().size() <= 100))"
+		   });
+		addAnnotation
 		  (realTimeElementEClass,
 		   source,
 		   new String[] {
@@ -2180,7 +2206,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 			   "RSA12_periodicHasPeriod", "execType = ExecutionType::periodic implies period > 0",
 			   "RSA13_nonNegativeTimes", "period >= 0 and delay >= 0 and execDuration >= 0",
 			   "RSA17_executionWithinDeadline", "(type = ElementType::realTime and delay > 0) implies execDuration <= delay",
-			   "RSA20_representableTimes", "representable(period) and representable(delay) and representable(execDuration)"
+			   "RSA20_representableTimes", "representablePeriod(period) and representable(delay) and representable(execDuration)"
 		   });
 		addAnnotation
 		  (architectureEClass,
@@ -2260,7 +2286,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "RSA13_nonNegativeTimes", "period >= 0",
-			   "RSA20_representableTimes", "representable(period)"
+			   "RSA20_representableTimes", "representablePeriod(period)"
 		   });
 		addAnnotation
 		  (missionEClass,

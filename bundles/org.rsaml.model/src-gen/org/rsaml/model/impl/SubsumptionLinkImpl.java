@@ -228,6 +228,16 @@ public abstract class SubsumptionLinkImpl extends NamedElementImpl implements Su
 	 * @generated
 	 */
 	@Override
+	public boolean representablePeriod(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representablePeriod(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public Object eGet(int featureID, boolean resolve, boolean coreType) {
 		switch (featureID) {
 			case RsamlPackage.SUBSUMPTION_LINK__TIME_UNIT:
@@ -345,6 +355,7 @@ public abstract class SubsumptionLinkImpl extends NamedElementImpl implements Su
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.SUBSUMPTION_LINK___TO_MILLISECONDS__DOUBLE;
 				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.SUBSUMPTION_LINK___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
 				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE: return RsamlPackage.SUBSUMPTION_LINK___REPRESENTABLE_PERIOD__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -365,6 +376,8 @@ public abstract class SubsumptionLinkImpl extends NamedElementImpl implements Su
 				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
 			case RsamlPackage.SUBSUMPTION_LINK___REPRESENTABLE__DOUBLE:
 				return representable((Double)arguments.get(0));
+			case RsamlPackage.SUBSUMPTION_LINK___REPRESENTABLE_PERIOD__DOUBLE:
+				return representablePeriod((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

@@ -200,7 +200,46 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateNamedElement(NamedElement namedElement, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(namedElement, diagnostics, context);
+		if (!validate_NoCircularContainment(namedElement, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(namedElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(namedElement, diagnostics, context);
+		return result;
+	}
+
+	/**
+	 * The cached validation expression for the RSA21_fileNameLength constraint of '<em>Named Element</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String NAMED_ELEMENT__RSA21_FILE_NAME_LENGTH__EEXPRESSION = "(normalizedName() = null or normalizedName().size() <= 100) and (oclIsKindOf(Port) implies (oclAsType(Port).normalizedMessageType() = null or oclAsType(Port).normalizedMessageType().size() <= 100))";
+
+	/**
+	 * Validates the RSA21_fileNameLength constraint of '<em>Named Element</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateNamedElement_RSA21_fileNameLength(NamedElement namedElement, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.NAMED_ELEMENT,
+				 namedElement,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA21_fileNameLength",
+				 NAMED_ELEMENT__RSA21_FILE_NAME_LENGTH__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
 	}
 
 	/**
@@ -227,6 +266,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(realTimeElement, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA10_executionWithinPeriod(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA11_deadlineWithinPeriod(realTimeElement, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(realTimeElement, diagnostics, context);
@@ -387,7 +427,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String REAL_TIME_ELEMENT__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representable(period) and representable(delay) and representable(execDuration)";
+	protected static final String REAL_TIME_ELEMENT__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representablePeriod(period) and representable(delay) and representable(execDuration)";
 
 	/**
 	 * Validates the RSA20_representableTimes constraint of '<em>Real Time Element</em>'.
@@ -425,6 +465,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(architecture, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(architecture, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(architecture, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(architecture, diagnostics, context);
 		if (result || diagnostics != null) result &= validateArchitecture_RSA01_declaredLayerCount(architecture, diagnostics, context);
 		if (result || diagnostics != null) result &= validateArchitecture_RSA09_uniqueNames(architecture, diagnostics, context);
 		if (result || diagnostics != null) result &= validateArchitecture_RSA14_layerLevels(architecture, diagnostics, context);
@@ -533,6 +574,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(layer, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validateLayer_RSA09_uniqueNames(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validateLayer_RSA13_nonNegativeTimes(layer, diagnostics, context);
 		if (result || diagnostics != null) result &= validateLayer_RSA20_representableTimes(layer, diagnostics, context);
@@ -641,6 +683,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(module, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA10_executionWithinPeriod(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA11_deadlineWithinPeriod(module, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(module, diagnostics, context);
@@ -815,6 +858,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(function, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA10_executionWithinPeriod(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA11_deadlineWithinPeriod(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(function, diagnostics, context);
@@ -899,6 +943,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(action, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA10_executionWithinPeriod(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA11_deadlineWithinPeriod(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(action, diagnostics, context);
@@ -923,6 +968,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(rtAction, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA10_executionWithinPeriod(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA11_deadlineWithinPeriod(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(rtAction, diagnostics, context);
@@ -977,6 +1023,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(port, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(port, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(port, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(port, diagnostics, context);
 		if (result || diagnostics != null) result &= validatePort_RSA18_structuredPortNamesMessageType(port, diagnostics, context);
 		return result;
 	}
@@ -1025,6 +1072,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(entryPort, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(entryPort, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(entryPort, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(entryPort, diagnostics, context);
 		if (result || diagnostics != null) result &= validatePort_RSA18_structuredPortNamesMessageType(entryPort, diagnostics, context);
 		return result;
 	}
@@ -1044,6 +1092,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(outputPort, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(outputPort, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(outputPort, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(outputPort, diagnostics, context);
 		if (result || diagnostics != null) result &= validatePort_RSA18_structuredPortNamesMessageType(outputPort, diagnostics, context);
 		return result;
 	}
@@ -1141,6 +1190,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(subsumptionLink, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(subsumptionLink, diagnostics, context);
 		return result;
@@ -1219,6 +1269,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(inhibitor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateInhibitor_RSA04_inhibitLayerBelow(inhibitor, diagnostics, context);
@@ -1299,6 +1350,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(suppressor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSuppressor_RSA04_suppressLayerBelow(suppressor, diagnostics, context);
@@ -1379,6 +1431,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(device, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(device, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(device, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(device, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDevice_RSA13_nonNegativeTimes(device, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDevice_RSA20_representableTimes(device, diagnostics, context);
 		return result;
@@ -1419,7 +1472,7 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
-	protected static final String DEVICE__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representable(period)";
+	protected static final String DEVICE__RSA20_REPRESENTABLE_TIMES__EEXPRESSION = "representablePeriod(period)";
 
 	/**
 	 * Validates the RSA20_representableTimes constraint of '<em>Device</em>'.
@@ -1457,6 +1510,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(sensor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(sensor, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(sensor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(sensor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDevice_RSA13_nonNegativeTimes(sensor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDevice_RSA20_representableTimes(sensor, diagnostics, context);
 		return result;
@@ -1477,6 +1531,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(actuator, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(actuator, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(actuator, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(actuator, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDevice_RSA13_nonNegativeTimes(actuator, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDevice_RSA20_representableTimes(actuator, diagnostics, context);
 		return result;
@@ -1497,6 +1552,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(mission, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(mission, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(mission, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(mission, diagnostics, context);
 		if (result || diagnostics != null) result &= validateMission_RSA09_uniqueNames(mission, diagnostics, context);
 		return result;
 	}
@@ -1545,6 +1601,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(goal, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(goal, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(goal, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(goal, diagnostics, context);
 		if (result || diagnostics != null) result &= validateGoal_RSA09_uniqueNames(goal, diagnostics, context);
 		return result;
 	}
@@ -1593,6 +1650,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(plan, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(plan, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(plan, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(plan, diagnostics, context);
 		if (result || diagnostics != null) result &= validatePlan_RSA09_uniqueNames(plan, diagnostics, context);
 		return result;
 	}
@@ -1641,6 +1699,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(activity, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA10_executionWithinPeriod(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA11_deadlineWithinPeriod(activity, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA12_periodicHasPeriod(activity, diagnostics, context);
@@ -1656,7 +1715,17 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateSupervisor(Supervisor supervisor, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(supervisor, diagnostics, context);
+		if (!validate_NoCircularContainment(supervisor, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(supervisor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(supervisor, diagnostics, context);
+		return result;
 	}
 
 	/**
@@ -1665,7 +1734,17 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateOrder(Order order, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(order, diagnostics, context);
+		if (!validate_NoCircularContainment(order, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(order, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(order, diagnostics, context);
+		return result;
 	}
 
 	/**
@@ -1683,6 +1762,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validate_UniqueID(database, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryKeyUnique(database, diagnostics, context);
 		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(database, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(database, diagnostics, context);
 		if (result || diagnostics != null) result &= validateDatabase_RSA09_uniqueNames(database, diagnostics, context);
 		return result;
 	}
@@ -1722,7 +1802,17 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateKnowledge(Knowledge knowledge, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(knowledge, diagnostics, context);
+		if (!validate_NoCircularContainment(knowledge, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(knowledge, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(knowledge, diagnostics, context);
+		return result;
 	}
 
 	/**

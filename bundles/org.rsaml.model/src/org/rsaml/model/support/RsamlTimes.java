@@ -19,8 +19,12 @@ import org.rsaml.model.TimeUnit;
  */
 public final class RsamlTimes {
 
-    /** The longest time the generated code can hold: a signed 64-bit count of nanoseconds ({@code std::chrono::nanoseconds}). */
-    public static final BigDecimal MAX_NANOSECONDS = BigDecimal.valueOf(Long.MAX_VALUE);
+    /**
+     * The longest time the generated code holds, 2^60 ns (about 36.5 years): it counts time in
+     * signed 64-bit nanoseconds ({@code std::chrono::nanoseconds}, ROS 2's {@code rcl} timers) and
+     * adds a period and an offset to the clock's current value without overflow.
+     */
+    public static final BigDecimal MAX_NANOSECONDS = BigDecimal.valueOf(1L << 60);
 
     private RsamlTimes() {
     }
@@ -75,5 +79,13 @@ public final class RsamlTimes {
     public static boolean representable(double value, TimeScaled owner) {
         BigDecimal ns = nanoseconds(value, owner);
         return ns != null && ns.abs().compareTo(MAX_NANOSECONDS) <= 0;
+    }
+
+    /**
+     * Whether the generated code can hold the value as a period: {@link #representable representable},
+     * and 0 (no period) or at least 1 ns, the resolution of its timers (a shorter one would become 0).
+     */
+    public static boolean representablePeriod(double value, TimeScaled owner) {
+        return representable(value, owner) && (value <= 0 || nanoseconds(value, owner).compareTo(BigDecimal.ONE) >= 0);
     }
 }

@@ -77,6 +77,7 @@ public final class MessageParameters {
         put("outputPorts", o -> quoted(((Module) o).getPorts().stream().filter(OutputPort.class::isInstance)
                 .collect(Collectors.toList())));
         put("duplicates", MessageParameters::duplicates);
+        put("longTexts", MessageParameters::longTexts);
         // connections
         put("source", o -> port(((Connection) o).getSource()));
         put("target", o -> o instanceof Connection c ? port(c.getTarget()) : port(target((SubsumptionLink) o)));
@@ -205,7 +206,19 @@ public final class MessageParameters {
         return parts.isEmpty() ? "child with the same name" : String.join("; ", parts);
     }
 
-    /** The element's negative (or, with {@code representable}, too large) time values: {@code period -2.0}. */
+    /** The element's name and (for a port) message type longer than 100 characters: {@code name of 130 characters}. */
+    private static String longTexts(EObject o) {
+        List<String> parts = new ArrayList<>();
+        if (o instanceof NamedElement n && n.normalizedName() != null && n.normalizedName().length() > 100) {
+            parts.add("name of " + n.normalizedName().length() + " characters");
+        }
+        if (o instanceof Port p && p.normalizedMessageType() != null && p.normalizedMessageType().length() > 100) {
+            parts.add("message type of " + p.normalizedMessageType().length() + " characters");
+        }
+        return String.join(" and a ", parts);
+    }
+
+    /** The element's negative (or, with {@code representable}, unrepresentable) time values: {@code period -2.0}. */
     private static String times(EObject o, boolean representable) {
         Map<String, Double> values = new LinkedHashMap<>();
         if (o instanceof RealTimeElement e) {
@@ -221,7 +234,9 @@ public final class MessageParameters {
         }
         List<String> parts = new ArrayList<>();
         values.forEach((feature, value) -> {
-            boolean wrong = representable ? !RsamlTimes.representable(value, (TimeScaled) o) : value < 0;
+            TimeScaled owner = (TimeScaled) o;
+            boolean fits = feature.equals("period") ? RsamlTimes.representablePeriod(value, owner) : RsamlTimes.representable(value, owner);
+            boolean wrong = representable ? !fits : value < 0;
             if (wrong) {
                 parts.add(feature + " " + (representable ? duration(value, (TimeScaled) o) : RsamlLabels.number(value)));
             }

@@ -17,6 +17,7 @@ import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.TimeUnit;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.RsamlModelValidator;
 
@@ -47,7 +48,7 @@ class ExactTimesTest {
             "0.000001, ms, 1, ns", "16964.9, s, 16964900, ms", "16964900, ms, 16964.9, s", "1e9, s, 1e12, ms",
             "1e12, ms, 1e9, s", "1e9, s, 1e18, ns", "0.1, s, 100, ms", "100, ms, 0.1, s", "0.3, us, 300, ns",
             "1.1, ms, 1100000, ns", "1e-6, s, 1, us", "1, us, 1e-6, s", "2.5, ms, 0.0025, s", "123456.789, us, 0.123456789, s",
-            "0.0000005, us, 0.0005, ns" })
+            "0.0000005, us, 0.0005, ns", "282879384806159000, ns, 282879384.806159, s" })
     void equalDurationsInDifferentUnitsAreWithinBudget(String exec, String execUnit, String budget, String budgetUnit) {
         assertEquals(List.of(), budgetFindings(exec, execUnit, budget, budgetUnit));
     }
@@ -79,5 +80,13 @@ class ExactTimesTest {
                         more + " " + units[i] + " vs 7 " + units[j]);
             }
         }
+    }
+
+    /** Java 17 prints some doubles with more digits than were written (2.82879384806159E17 as ...159008E17). */
+    @Test
+    void valuesAreReadAsWrittenWhereJavaPrintsMoreDigits() {
+        assertEquals("2.82879384806159E+17", RsamlTimes.decimal(2.82879384806159E17).toString());
+        assertEquals("2E+23", RsamlTimes.decimal(2e23).toString());
+        assertEquals("0.1", RsamlTimes.decimal(0.1).toString());
     }
 }

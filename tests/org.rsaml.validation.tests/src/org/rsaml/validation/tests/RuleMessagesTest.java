@@ -1,0 +1,65 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.validation.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.junit.jupiter.api.Test;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+
+/** The messages of the rules a user meets on new kinds of models say what to change and name the limit. */
+class RuleMessagesTest {
+
+    private static List<String> messages(String fixture, String ruleId) throws Exception {
+        return RsamlModelValidator.validate(Paths.resource("rules").resolve(fixture)).stream()
+                .filter(f -> f.ruleId().equals(ruleId)).map(f -> f.qualifiedName() + ": " + f.message())
+                .collect(Collectors.toList());
+    }
+
+    private static List<String> sorted(List<String> list) {
+        return list.stream().sorted().collect(Collectors.toList());
+    }
+
+    @Test
+    void aModuleThatNothingActivatesIsToldToGetAPeriodOrAnInput() throws Exception {
+        assertEquals(List.of("robot/behaviour/wander: Module 'wander' is never activated: it is not periodic, has no periodic"
+                + " function or action, and none of its entry ports receives data, so its outputs 'heading' never carry more"
+                + " than their initial values; add a period (execType periodic and a period above 0) or an input (a connection"
+                + " from another module's output port to one of its entry ports)",
+                "robot/behaviour/integrate: Module 'integrate' is never activated: it is not periodic, has no periodic"
+                + " function or action, and none of its entry ports receives data, so its outputs 'pose' never carry more"
+                + " than their initial values; add a period (execType periodic and a period above 0) or an input (a connection"
+                + " from another module's output port to one of its entry ports)"),
+                messages("rule-RSA-19-violated.rsaml", "RSA-19"));
+    }
+
+    @Test
+    void timesTheGeneratedCodeCannotHoldNameTheLimit() throws Exception {
+        List<String> messages = messages("rule-RSA-20-violated.rsaml", "RSA-20");
+        String limit = "; times may be at most 1152921504606846976 ns (2^60, about 36.5 years) and a period above 0 at least 1 ns";
+        assertEquals(sorted(List.of("robot/functional: Layer 'functional' has a time value the generated code cannot represent: "
+                + "maxExecTime 1152921504.606847 s" + limit,
+                "robot/functional/odometry: Module 'odometry' has a time value the generated code cannot represent: "
+                        + "period 1000000000000000000000 ms" + limit,
+                "robot/functional/odometry/integrate: Function 'integrate' has a time value the generated code cannot represent: "
+                        + "period 0.0005 us" + limit,
+                "robot/lidar: Sensor 'lidar' has a time value the generated code cannot represent: period 9467280000.0 s" + limit)),
+                sorted(messages));
+    }
+
+    @Test
+    void namesTooLongForAFileNameNameTheLimit() throws Exception {
+        String limit = "; names and message types may have at most 100 characters, because generated file names are made from them"
+                + " and a file name may have at most 255 bytes";
+        String longName = "obstacleAvoidanceBehaviour".repeat(5).substring(0, 130);
+        assertEquals(sorted(List.of("robot/functional/" + longName + ": Module '" + longName + "' has a name of 130 characters" + limit,
+                "robot/functional/laser/scan: Output port 'scan' has a message type of 125 characters" + limit)),
+                sorted(messages("rule-RSA-21-violated.rsaml", "RSA-21")));
+    }
+}
