@@ -1,0 +1,34 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.validation.tests;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * A finding a model states it must give, in a comment of the model itself, so that its tests read
+ * the expectation from one place:
+ * {@code <!-- expect: RSA-08 error robot/control/checker at 50:5: Module 'checker' takes ... -->}.
+ */
+record ExpectedFinding(String ruleId, String severity, String qualifiedName, int line, int column, String message) {
+
+    private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d) (error|warning|info) (.+?) at (\\d+):(\\d+): (.+?) -->");
+
+    /** The located expectations of the model, in the order it states them. */
+    static List<ExpectedFinding> of(Path model) throws IOException {
+        List<ExpectedFinding> expected = new ArrayList<>();
+        Matcher m = EXPECT.matcher(Files.readString(model));
+        while (m.find()) {
+            expected.add(new ExpectedFinding(m.group(1), m.group(2), m.group(3), Integer.parseInt(m.group(4)),
+                    Integer.parseInt(m.group(5)), m.group(6)));
+        }
+        return expected;
+    }
+}
