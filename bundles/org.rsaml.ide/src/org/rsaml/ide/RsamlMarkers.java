@@ -4,7 +4,19 @@
  */
 package org.rsaml.ide;
 
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.runtime.CoreException;
+import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EValidator;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 
 /**
@@ -36,5 +48,32 @@ public final class RsamlMarkers {
     public static final String LOAD_ERROR_RULE_ID = Rules.STRUCTURE.id();
 
     private RsamlMarkers() {
+    }
+
+    /**
+     * Puts on {@code file} the marker of one finding of {@link RsamlModelValidator#diagnose}, with
+     * the builder's type and attributes (but no line: an edited model has no position in the file
+     * yet). The tree editor's Validate writes its markers through this, so that the Problems view
+     * lists each finding once, whether the builder or the editor ran last.
+     */
+    public static IMarker create(IFile file, Diagnostic finding) throws CoreException {
+        Map<String, Object> attributes = new HashMap<>();
+        attributes.put(IMarker.SEVERITY, finding.getSeverity() >= Diagnostic.ERROR ? IMarker.SEVERITY_ERROR
+                : finding.getSeverity() >= Diagnostic.WARNING ? IMarker.SEVERITY_WARNING : IMarker.SEVERITY_INFO);
+        attributes.put(IMarker.MESSAGE, finding.getMessage());
+        List<?> data = finding.getData();
+        if (data.size() > 1 && data.get(1) instanceof Rule rule) {
+            attributes.put(RULE_ID, rule.id());
+        }
+        if (!data.isEmpty() && data.get(0) instanceof EObject element) {
+            attributes.put(QUALIFIED_NAME, RsamlLabels.qualifiedName(element));
+            if (element.eResource() != null) {
+                String fragment = element.eResource().getURIFragment(element);
+                attributes.put(URI_FRAGMENT, fragment);
+                attributes.put(URI, org.eclipse.emf.common.util.URI.createPlatformResourceURI(file.getFullPath().toString(), true)
+                        .appendFragment(fragment).toString());
+            }
+        }
+        return file.createMarker(PROBLEM, attributes);
     }
 }

@@ -10,13 +10,18 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import org.eclipse.core.resources.IFile;
@@ -30,6 +35,7 @@ import org.eclipse.core.resources.IncrementalProjectBuilder;
 import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IPath;
+import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
@@ -42,15 +48,15 @@ import org.rsaml.ide.RsamlProjects;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
 
 /** What a user sees in the Problems view once a project has the RsaML nature, in a real workspace. */
 class RsamlBuilderTest {
 
     private static final IWorkspace WORKSPACE = ResourcesPlugin.getWorkspace();
 
-    /** Experiment 2's five defects as (rule, line, severity). */
-    private static final List<String> EXPERIMENT_TWO = List.of("RSA-01 line 13 error", "RSA-02 line 96 error",
-            "RSA-04 line 30 error", "RSA-07 line 70 error", "RSA-08 line 50 error");
+    /** Experiment 2's five defects as (rule, line, severity), sorted by rule, from the expectations the model states. */
+    private static final List<String> EXPERIMENT_TWO = experimentTwo();
 
     private IProject project;
 
@@ -132,6 +138,40 @@ class RsamlBuilderTest {
         file.setContents(Files.newInputStream(Paths.example("exp1-hybrid.rsaml")), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
         assertEquals(List.of(), summaries(file));
+    }
+
+    /**
+     * The tree editor's Validate replaces the file's markers of its type (the builder's) with one per
+     * finding, written by {@link RsamlMarkers#create}: after a build and a Validate, and after a
+     * Validate and a build, the Problems view lists each finding once, with the same text.
+     */
+    @Test
+    void theEditorsValidateAndTheBuilderListEachFindingOnce() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile file = copy(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        List<String> built = described(file);
+        assertEquals(5, built.size(), built::toString);
+
+        // What EMF's marker helper does for the editor's Validate, with the editor's marker type.
+        LoadedModel model = ModelLoader.load(file.getLocation().toPath(), "exp2");
+        file.deleteMarkers(RsamlMarkers.PROBLEM, false, IResource.DEPTH_ZERO);
+        for (Diagnostic finding : RsamlModelValidator.diagnose(model.architecture()).getChildren()) {
+            RsamlMarkers.create(file, finding);
+        }
+        assertEquals(built, described(file));
+
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(built, described(file));
+        assertEquals(5, markers(project).size());
+    }
+
+    /** "RSA-08 error hybrid.../resourceChecker RSA-08: Module ..." per marker of the file, sorted. */
+    private static List<String> described(IResource resource) throws CoreException {
+        return markers(resource).stream().map(m -> m.getAttribute(RsamlMarkers.RULE_ID, "?") + " "
+                + m.getAttribute(IMarker.SEVERITY, -1) + " " + m.getAttribute(RsamlMarkers.QUALIFIED_NAME, "?") + " "
+                + m.getAttribute(RsamlMarkers.URI_FRAGMENT, "?") + " " + m.getAttribute(IMarker.MESSAGE, "?"))
+                .sorted().collect(Collectors.toList());
     }
 
     @Test
@@ -260,6 +300,23 @@ class RsamlBuilderTest {
         return markers(resource).stream().map(m -> m.getAttribute(RsamlMarkers.RULE_ID, "?") + " line "
                 + m.getAttribute(IMarker.LINE_NUMBER, -1) + " " + severities.get(m.getAttribute(IMarker.SEVERITY, -1)))
                 .collect(Collectors.toList());
+    }
+
+    /** {@code <!-- expect: RSA-08 error a/b at 50:5: message -->} in exp2-defects.rsaml as "RSA-08 line 50 error". */
+    private static List<String> experimentTwo() {
+        try {
+            Matcher m = Pattern.compile("<!-- expect: (RSA-\\d\\d) (\\w+) .+? at (\\d+):\\d+: ")
+                    .matcher(Files.readString(Paths.example("exp2-defects.rsaml")));
+            List<String> expected = new ArrayList<>();
+            while (m.find()) {
+                expected.add(m.group(1) + " line " + m.group(3) + " " + m.group(2));
+            }
+            assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
+            expected.sort(null);
+            return expected;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     private static List<Long> ids(IResource resource) throws CoreException {

@@ -4,7 +4,8 @@
  */
 package org.rsaml.model.editor.presentation.spec;
 
-import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.core.runtime.OperationCanceledException;
@@ -16,7 +17,6 @@ import org.eclipse.emf.edit.ui.action.ValidateAction;
 import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.RsamlModelValidator;
-import org.rsaml.validation.Rule;
 
 /**
  * Validate in the tree editor: the selected elements are checked against RsaML's rules (the OCL
@@ -35,11 +35,10 @@ public class RsamlValidateAction extends ValidateAction {
             }
 
             @Override
-            protected void adjustMarker(IMarker marker, Diagnostic diagnostic, Diagnostic parentDiagnostic)
+            protected void createMarkers(IResource resource, Diagnostic diagnostic, Diagnostic parentDiagnostic)
                     throws CoreException {
-                super.adjustMarker(marker, diagnostic, parentDiagnostic);
-                if (diagnostic.getData().size() > 1 && diagnostic.getData().get(1) instanceof Rule rule) {
-                    marker.setAttribute(RsamlMarkers.RULE_ID, rule.id());
+                if (resource instanceof IFile file && file.exists()) {
+                    RsamlMarkers.create(file, diagnostic);
                 }
             }
         } : null;
