@@ -730,8 +730,8 @@ public final class ExecutionPlan {
                 default -> DataKind.NUMERIC;
             };
             // Read as the rules read it (RSA-02, RSA-18): trimmed, and blank is missing.
-            String type = port.normalizedMessageType();
-            this.messageType = kind == DataKind.STRUCTURED ? (type == null ? "StructuredData" : type) : null;
+            String written = port.normalizedMessageType();
+            this.messageType = kind == DataKind.STRUCTURED ? (written == null ? "StructuredData" : written) : null;
         }
 
         boolean sameData(PlannedPort other) {

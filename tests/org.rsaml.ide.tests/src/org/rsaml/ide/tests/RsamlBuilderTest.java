@@ -166,7 +166,7 @@ class RsamlBuilderTest {
         assertEquals(5, markers(project).size());
     }
 
-    /** "RSA-08 error hybrid.../resourceChecker RSA-08: Module ..." per marker of the file, sorted. */
+    /** Rule, severity, element, fragment and message of each marker of the resource, sorted. */
     private static List<String> described(IResource resource) throws CoreException {
         return markers(resource).stream().map(m -> m.getAttribute(RsamlMarkers.RULE_ID, "?") + " "
                 + m.getAttribute(IMarker.SEVERITY, -1) + " " + m.getAttribute(RsamlMarkers.QUALIFIED_NAME, "?") + " "
