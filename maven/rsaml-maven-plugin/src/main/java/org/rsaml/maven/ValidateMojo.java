@@ -8,7 +8,6 @@ import java.io.File;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 
@@ -19,7 +18,6 @@ import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
-import org.codehaus.plexus.util.DirectoryScanner;
 import org.rsaml.cli.Validation;
 import org.rsaml.cli.report.FileResult;
 import org.rsaml.cli.report.ReportFiles;
@@ -87,7 +85,7 @@ public class ValidateMojo extends AbstractMojo {
         if (!modelDirectory.isDirectory()) {
             throw new MojoFailureException("RsaML model directory " + modelDirectory + " does not exist");
         }
-        List<Path> models = scan();
+        List<Path> models = ProjectPaths.models(baseDirectory, modelDirectory, buildDirectory, includes, excludes);
         if (models.isEmpty()) {
             log.warn("No RsaML models in " + relative(modelDirectory.toPath()) + " matching " + includes);
             return;
@@ -125,30 +123,6 @@ public class ValidateMojo extends AbstractMojo {
         if (report.hasFailingFindings()) {
             throw new MojoFailureException("RsaML validation failed: " + report.summary() + " (failOn: " + failOn + ")");
         }
-    }
-
-    private List<Path> scan() {
-        DirectoryScanner scanner = new DirectoryScanner();
-        scanner.setBasedir(modelDirectory);
-        scanner.setIncludes(includes.toArray(String[]::new));
-        List<String> allExcludes = new ArrayList<>(excludes);
-        Path build = buildDirectory.toPath().toAbsolutePath().normalize();
-        Path models = modelDirectory.toPath().toAbsolutePath().normalize();
-        if (build.startsWith(models) && !build.equals(models)) {
-            allExcludes.add(models.relativize(build).toString().replace('\\', '/') + "/**");
-        }
-        scanner.setExcludes(allExcludes.toArray(String[]::new));
-        scanner.addDefaultExcludes();
-        scanner.scan();
-        String[] found = scanner.getIncludedFiles();
-        Arrays.sort(found);
-        Path base = baseDirectory.toPath().toAbsolutePath().normalize();
-        List<Path> paths = new ArrayList<>();
-        for (String file : found) {
-            Path absolute = models.resolve(file);
-            paths.add(absolute.startsWith(base) ? base.relativize(absolute) : absolute);
-        }
-        return paths;
     }
 
     private Severity threshold() throws MojoExecutionException {

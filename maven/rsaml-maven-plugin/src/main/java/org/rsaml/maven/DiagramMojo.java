@@ -1,0 +1,137 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.maven;
+
+import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.apache.maven.plugin.AbstractMojo;
+import org.apache.maven.plugin.MojoExecutionException;
+import org.apache.maven.plugin.MojoFailureException;
+import org.apache.maven.plugin.logging.Log;
+import org.apache.maven.plugins.annotations.LifecyclePhase;
+import org.apache.maven.plugins.annotations.Mojo;
+import org.apache.maven.plugins.annotations.Parameter;
+import org.rsaml.diagram.DiagramException;
+import org.rsaml.diagram.DiagramFormat;
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.validation.ModelLoadException;
+
+/**
+ * Draws the project's RsaML models, laid out by the Eclipse Layout Kernel, as SVG images and
+ * self-contained HTML pages ({@code <model>-<view>.<format>} in {@code outputDirectory}); findings
+ * decorate their elements. The build fails when a model cannot be read or a diagram cannot be
+ * written, not because of findings (the {@code validate} goal judges those).
+ */
+@Mojo(name = "diagram", defaultPhase = LifecyclePhase.PREPARE_PACKAGE, threadSafe = true)
+public class DiagramMojo extends AbstractMojo {
+
+    /** The directory searched for models. */
+    @Parameter(property = "rsaml.modelDirectory", defaultValue = "${project.basedir}")
+    File modelDirectory;
+
+    /** Ant-style patterns, relative to {@code modelDirectory}, of the models to draw. */
+    @Parameter
+    List<String> includes = new ArrayList<>(List.of("**/*.rsaml"));
+
+    /** Ant-style patterns of files to leave out; the build output folder is always left out. */
+    @Parameter
+    List<String> excludes = new ArrayList<>();
+
+    /** The views to draw: {@code architecture}, {@code mission}. */
+    @Parameter(property = "rsaml.views", defaultValue = "architecture")
+    List<String> views;
+
+    /** The formats to write: {@code svg}, {@code html} (not named {@code formats}, which the validate goal uses for its reports). */
+    @Parameter(property = "rsaml.diagramFormats", defaultValue = "svg,html")
+    List<String> diagramFormats;
+
+    /** Where the diagrams are written. */
+    @Parameter(property = "rsaml.diagramDirectory", defaultValue = "${project.build.directory}/rsaml/diagrams")
+    File outputDirectory;
+
+    /** Skips drawing. */
+    @Parameter(property = "rsaml.skip", defaultValue = "false")
+    boolean skip;
+
+    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
+    File baseDirectory;
+
+    @Parameter(defaultValue = "${project.build.directory}", readonly = true, required = true)
+    File buildDirectory;
+
+    @Override
+    public void execute() throws MojoExecutionException, MojoFailureException {
+        Log log = getLog();
+        if (skip) {
+            log.info("Skipping RsaML diagrams (rsaml.skip)");
+            return;
+        }
+        List<DiagramView> diagramViews = new ArrayList<>();
+        List<DiagramFormat> formats = new ArrayList<>();
+        try {
+            for (String view : views) {
+                if (!view.isBlank()) {
+                    diagramViews.add(DiagramView.parse(view));
+                }
+            }
+            for (String format : diagramFormats) {
+                if (!format.isBlank()) {
+                    formats.add(DiagramFormat.parse(format));
+                }
+            }
+        } catch (IllegalArgumentException e) {
+            throw new MojoExecutionException("diagram: " + e.getMessage());
+        }
+        if (!modelDirectory.isDirectory()) {
+            throw new MojoFailureException("RsaML model directory " + modelDirectory + " does not exist");
+        }
+        List<Path> models = ProjectPaths.models(baseDirectory, modelDirectory, buildDirectory, includes, excludes);
+        if (models.isEmpty()) {
+            log.warn("No RsaML models in " + relative(modelDirectory.toPath()) + " matching " + includes);
+            return;
+        }
+        Path base = baseDirectory.toPath();
+        // Two models of one name in different folders would overwrite each other's diagram: refuse first.
+        Map<String, Path> byFile = new LinkedHashMap<>();
+        for (Path model : models) {
+            Path other = byFile.putIfAbsent(new RsamlDiagrams(DiagramView.ARCHITECTURE).fileName(model, DiagramFormat.SVG), model);
+            if (other != null) {
+                throw new MojoFailureException(relative(base.resolve(other)) + " and " + relative(base.resolve(model))
+                        + " would be drawn to the same file; draw them with separate executions");
+            }
+        }
+        int failed = 0;
+        for (Path model : models) {
+            String shown = relative(base.resolve(model));
+            try {
+                for (DiagramView view : diagramViews) {
+                    for (DiagramFormat format : formats) {
+                        Path written = new RsamlDiagrams(view).write(base.resolve(model), shown, format, outputDirectory.toPath());
+                        log.info("RsaML: drew " + relative(written));
+                    }
+                }
+            } catch (ModelLoadException e) {
+                log.error(e.toString());
+                failed++;
+            } catch (DiagramException e) {
+                log.error(shown + ": error: " + e.getMessage());
+                failed++;
+            }
+        }
+        if (failed > 0) {
+            throw new MojoFailureException("RsaML could not draw " + failed + " model" + (failed == 1 ? "" : "s") + "; see the errors above");
+        }
+    }
+
+    private String relative(Path path) {
+        return ProjectPaths.relative(baseDirectory.toPath(), path);
+    }
+}
