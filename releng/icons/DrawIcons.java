@@ -46,6 +46,8 @@ public class DrawIcons {
         draw(dir, "Order", Shape.TRIANGLE_RIGHT, 0x8e24aa, "");
         draw(dir, "Database", Shape.ROUND, 0x795548, "D");
         draw(dir, "Knowledge", Shape.CIRCLE, 0xa1887f, "k");
+        draw(dir, "Processor", Shape.HEX, 0x455a64, "P");
+        draw(dir, "LatencyRequirement", Shape.DIAMOND, 0xc0392b, "t");
     }
 
     static void draw(File dir, String name, Shape shape, int rgb, String glyph) throws Exception {

@@ -29,6 +29,8 @@ import org.eclipse.emf.common.util.EList;
  *   <li>{@link org.rsaml.model.Architecture#getSupervisors <em>Supervisors</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getOrders <em>Orders</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getDatabases <em>Databases</em>}</li>
+ *   <li>{@link org.rsaml.model.Architecture#getProcessors <em>Processors</em>}</li>
+ *   <li>{@link org.rsaml.model.Architecture#getLatencyRequirements <em>Latency Requirements</em>}</li>
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getArchitecture()
@@ -227,5 +229,35 @@ public interface Architecture extends NamedElement {
 	 * @generated
 	 */
 	EList<Database> getDatabases();
+
+	/**
+	 * Returns the value of the '<em><b>Processors</b></em>' containment reference list.
+	 * The list contents are of type {@link org.rsaml.model.Processor}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * Where the modules run (optional): each processor is one scheduling domain, e.g. one CPU core. Without processors every module runs on one processor.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Processors</em>' containment reference list.
+	 * @see org.rsaml.model.RsamlPackage#getArchitecture_Processors()
+	 * @model containment="true" keys="name"
+	 * @generated
+	 */
+	EList<Processor> getProcessors();
+
+	/**
+	 * Returns the value of the '<em><b>Latency Requirements</b></em>' containment reference list.
+	 * The list contents are of type {@link org.rsaml.model.LatencyRequirement}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * End-to-end timing the architecture must meet (optional): from a sensor or an output port to an actuator or an entry port, at most a given latency.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Latency Requirements</em>' containment reference list.
+	 * @see org.rsaml.model.RsamlPackage#getArchitecture_LatencyRequirements()
+	 * @model containment="true" keys="name"
+	 * @generated
+	 */
+	EList<LatencyRequirement> getLatencyRequirements();
 
 } // Architecture

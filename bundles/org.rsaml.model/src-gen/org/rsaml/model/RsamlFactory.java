@@ -213,6 +213,24 @@ public interface RsamlFactory extends EFactory {
 	Knowledge createKnowledge();
 
 	/**
+	 * Returns a new object of class '<em>Processor</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return a new object of class '<em>Processor</em>'.
+	 * @generated
+	 */
+	Processor createProcessor();
+
+	/**
+	 * Returns a new object of class '<em>Latency Requirement</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return a new object of class '<em>Latency Requirement</em>'.
+	 * @generated
+	 */
+	LatencyRequirement createLatencyRequirement();
+
+	/**
 	 * Returns the package supported by this factory.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->

@@ -464,13 +464,31 @@ public interface RsamlPackage extends EPackage {
 	int ARCHITECTURE__DATABASES = NAMED_ELEMENT_FEATURE_COUNT + 9;
 
 	/**
+	 * The feature id for the '<em><b>Processors</b></em>' containment reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ARCHITECTURE__PROCESSORS = NAMED_ELEMENT_FEATURE_COUNT + 10;
+
+	/**
+	 * The feature id for the '<em><b>Latency Requirements</b></em>' containment reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ARCHITECTURE__LATENCY_REQUIREMENTS = NAMED_ELEMENT_FEATURE_COUNT + 11;
+
+	/**
 	 * The number of structural features of the '<em>Architecture</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 10;
+	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 12;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -3268,6 +3286,179 @@ public interface RsamlPackage extends EPackage {
 	int KNOWLEDGE_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The meta object id for the '{@link org.rsaml.model.impl.ProcessorImpl <em>Processor</em>}' class.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see org.rsaml.model.impl.ProcessorImpl
+	 * @see org.rsaml.model.impl.RsamlPackageImpl#getProcessor()
+	 * @generated
+	 */
+	int PROCESSOR = 27;
+
+	/**
+	 * The feature id for the '<em><b>Name</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__NAME = NAMED_ELEMENT__NAME;
+
+	/**
+	 * The feature id for the '<em><b>Description</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__DESCRIPTION = NAMED_ELEMENT__DESCRIPTION;
+
+	/**
+	 * The feature id for the '<em><b>Sched Policy</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__SCHED_POLICY = NAMED_ELEMENT_FEATURE_COUNT + 0;
+
+	/**
+	 * The feature id for the '<em><b>Core</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__CORE = NAMED_ELEMENT_FEATURE_COUNT + 1;
+
+	/**
+	 * The feature id for the '<em><b>Modules</b></em>' reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__MODULES = NAMED_ELEMENT_FEATURE_COUNT + 2;
+
+	/**
+	 * The number of structural features of the '<em>Processor</em>' class.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The number of operations of the '<em>Processor</em>' class.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 0;
+
+	/**
+	 * The meta object id for the '{@link org.rsaml.model.impl.LatencyRequirementImpl <em>Latency Requirement</em>}' class.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see org.rsaml.model.impl.LatencyRequirementImpl
+	 * @see org.rsaml.model.impl.RsamlPackageImpl#getLatencyRequirement()
+	 * @generated
+	 */
+	int LATENCY_REQUIREMENT = 28;
+
+	/**
+	 * The feature id for the '<em><b>Name</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__NAME = NAMED_ELEMENT__NAME;
+
+	/**
+	 * The feature id for the '<em><b>Description</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__DESCRIPTION = NAMED_ELEMENT__DESCRIPTION;
+
+	/**
+	 * The feature id for the '<em><b>Time Unit</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__TIME_UNIT = NAMED_ELEMENT_FEATURE_COUNT + 0;
+
+	/**
+	 * The feature id for the '<em><b>Source</b></em>' reference.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__SOURCE = NAMED_ELEMENT_FEATURE_COUNT + 1;
+
+	/**
+	 * The feature id for the '<em><b>Target</b></em>' reference.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__TARGET = NAMED_ELEMENT_FEATURE_COUNT + 2;
+
+	/**
+	 * The feature id for the '<em><b>Max Latency</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__MAX_LATENCY = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The feature id for the '<em><b>Kind</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__KIND = NAMED_ELEMENT_FEATURE_COUNT + 4;
+
+	/**
+	 * The number of structural features of the '<em>Latency Requirement</em>' class.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 5;
+
+	/**
+	 * The operation id for the '<em>To Milliseconds</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
+
+	/**
+	 * The number of operations of the '<em>Latency Requirement</em>' class.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
 	 * The meta object id for the '{@link org.rsaml.model.ArchitectureCategory <em>Architecture Category</em>}' enum.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -3275,7 +3466,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getArchitectureCategory()
 	 * @generated
 	 */
-	int ARCHITECTURE_CATEGORY = 27;
+	int ARCHITECTURE_CATEGORY = 29;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.ElementType <em>Element Type</em>}' enum.
@@ -3285,7 +3476,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getElementType()
 	 * @generated
 	 */
-	int ELEMENT_TYPE = 28;
+	int ELEMENT_TYPE = 30;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.ExecutionType <em>Execution Type</em>}' enum.
@@ -3295,7 +3486,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getExecutionType()
 	 * @generated
 	 */
-	int EXECUTION_TYPE = 29;
+	int EXECUTION_TYPE = 31;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.TimeUnit <em>Time Unit</em>}' enum.
@@ -3305,7 +3496,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getTimeUnit()
 	 * @generated
 	 */
-	int TIME_UNIT = 30;
+	int TIME_UNIT = 32;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.SynchronisationType <em>Synchronisation Type</em>}' enum.
@@ -3315,7 +3506,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getSynchronisationType()
 	 * @generated
 	 */
-	int SYNCHRONISATION_TYPE = 31;
+	int SYNCHRONISATION_TYPE = 33;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.SchedulingPolicy <em>Scheduling Policy</em>}' enum.
@@ -3325,7 +3516,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getSchedulingPolicy()
 	 * @generated
 	 */
-	int SCHEDULING_POLICY = 32;
+	int SCHEDULING_POLICY = 34;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.DataType <em>Data Type</em>}' enum.
@@ -3335,7 +3526,17 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getDataType()
 	 * @generated
 	 */
-	int DATA_TYPE = 33;
+	int DATA_TYPE = 35;
+
+	/**
+	 * The meta object id for the '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}' enum.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see org.rsaml.model.LatencyKind
+	 * @see org.rsaml.model.impl.RsamlPackageImpl#getLatencyKind()
+	 * @generated
+	 */
+	int LATENCY_KIND = 36;
 
 
 	/**
@@ -3625,6 +3826,28 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EReference getArchitecture_Databases();
+
+	/**
+	 * Returns the meta object for the containment reference list '{@link org.rsaml.model.Architecture#getProcessors <em>Processors</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the containment reference list '<em>Processors</em>'.
+	 * @see org.rsaml.model.Architecture#getProcessors()
+	 * @see #getArchitecture()
+	 * @generated
+	 */
+	EReference getArchitecture_Processors();
+
+	/**
+	 * Returns the meta object for the containment reference list '{@link org.rsaml.model.Architecture#getLatencyRequirements <em>Latency Requirements</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the containment reference list '<em>Latency Requirements</em>'.
+	 * @see org.rsaml.model.Architecture#getLatencyRequirements()
+	 * @see #getArchitecture()
+	 * @generated
+	 */
+	EReference getArchitecture_LatencyRequirements();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.Layer <em>Layer</em>}'.
@@ -4582,6 +4805,103 @@ public interface RsamlPackage extends EPackage {
 	EReference getKnowledge_UsedBy();
 
 	/**
+	 * Returns the meta object for class '{@link org.rsaml.model.Processor <em>Processor</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for class '<em>Processor</em>'.
+	 * @see org.rsaml.model.Processor
+	 * @generated
+	 */
+	EClass getProcessor();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Processor#getSchedPolicy <em>Sched Policy</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Sched Policy</em>'.
+	 * @see org.rsaml.model.Processor#getSchedPolicy()
+	 * @see #getProcessor()
+	 * @generated
+	 */
+	EAttribute getProcessor_SchedPolicy();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Processor#getCore <em>Core</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Core</em>'.
+	 * @see org.rsaml.model.Processor#getCore()
+	 * @see #getProcessor()
+	 * @generated
+	 */
+	EAttribute getProcessor_Core();
+
+	/**
+	 * Returns the meta object for the reference list '{@link org.rsaml.model.Processor#getModules <em>Modules</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the reference list '<em>Modules</em>'.
+	 * @see org.rsaml.model.Processor#getModules()
+	 * @see #getProcessor()
+	 * @generated
+	 */
+	EReference getProcessor_Modules();
+
+	/**
+	 * Returns the meta object for class '{@link org.rsaml.model.LatencyRequirement <em>Latency Requirement</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for class '<em>Latency Requirement</em>'.
+	 * @see org.rsaml.model.LatencyRequirement
+	 * @generated
+	 */
+	EClass getLatencyRequirement();
+
+	/**
+	 * Returns the meta object for the reference '{@link org.rsaml.model.LatencyRequirement#getSource <em>Source</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the reference '<em>Source</em>'.
+	 * @see org.rsaml.model.LatencyRequirement#getSource()
+	 * @see #getLatencyRequirement()
+	 * @generated
+	 */
+	EReference getLatencyRequirement_Source();
+
+	/**
+	 * Returns the meta object for the reference '{@link org.rsaml.model.LatencyRequirement#getTarget <em>Target</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the reference '<em>Target</em>'.
+	 * @see org.rsaml.model.LatencyRequirement#getTarget()
+	 * @see #getLatencyRequirement()
+	 * @generated
+	 */
+	EReference getLatencyRequirement_Target();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.LatencyRequirement#getMaxLatency <em>Max Latency</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Max Latency</em>'.
+	 * @see org.rsaml.model.LatencyRequirement#getMaxLatency()
+	 * @see #getLatencyRequirement()
+	 * @generated
+	 */
+	EAttribute getLatencyRequirement_MaxLatency();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.LatencyRequirement#getKind <em>Kind</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Kind</em>'.
+	 * @see org.rsaml.model.LatencyRequirement#getKind()
+	 * @see #getLatencyRequirement()
+	 * @generated
+	 */
+	EAttribute getLatencyRequirement_Kind();
+
+	/**
 	 * Returns the meta object for enum '{@link org.rsaml.model.ArchitectureCategory <em>Architecture Category</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -4650,6 +4970,16 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EEnum getDataType();
+
+	/**
+	 * Returns the meta object for enum '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for enum '<em>Latency Kind</em>'.
+	 * @see org.rsaml.model.LatencyKind
+	 * @generated
+	 */
+	EEnum getLatencyKind();
 
 	/**
 	 * Returns the factory that creates the instances of the model.
@@ -4897,6 +5227,22 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EReference ARCHITECTURE__DATABASES = eINSTANCE.getArchitecture_Databases();
+
+		/**
+		 * The meta object literal for the '<em><b>Processors</b></em>' containment reference list feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EReference ARCHITECTURE__PROCESSORS = eINSTANCE.getArchitecture_Processors();
+
+		/**
+		 * The meta object literal for the '<em><b>Latency Requirements</b></em>' containment reference list feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EReference ARCHITECTURE__LATENCY_REQUIREMENTS = eINSTANCE.getArchitecture_LatencyRequirements();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.LayerImpl <em>Layer</em>}' class.
@@ -5657,6 +6003,82 @@ public interface RsamlPackage extends EPackage {
 		EReference KNOWLEDGE__USED_BY = eINSTANCE.getKnowledge_UsedBy();
 
 		/**
+		 * The meta object literal for the '{@link org.rsaml.model.impl.ProcessorImpl <em>Processor</em>}' class.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @see org.rsaml.model.impl.ProcessorImpl
+		 * @see org.rsaml.model.impl.RsamlPackageImpl#getProcessor()
+		 * @generated
+		 */
+		EClass PROCESSOR = eINSTANCE.getProcessor();
+
+		/**
+		 * The meta object literal for the '<em><b>Sched Policy</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute PROCESSOR__SCHED_POLICY = eINSTANCE.getProcessor_SchedPolicy();
+
+		/**
+		 * The meta object literal for the '<em><b>Core</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute PROCESSOR__CORE = eINSTANCE.getProcessor_Core();
+
+		/**
+		 * The meta object literal for the '<em><b>Modules</b></em>' reference list feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EReference PROCESSOR__MODULES = eINSTANCE.getProcessor_Modules();
+
+		/**
+		 * The meta object literal for the '{@link org.rsaml.model.impl.LatencyRequirementImpl <em>Latency Requirement</em>}' class.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @see org.rsaml.model.impl.LatencyRequirementImpl
+		 * @see org.rsaml.model.impl.RsamlPackageImpl#getLatencyRequirement()
+		 * @generated
+		 */
+		EClass LATENCY_REQUIREMENT = eINSTANCE.getLatencyRequirement();
+
+		/**
+		 * The meta object literal for the '<em><b>Source</b></em>' reference feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EReference LATENCY_REQUIREMENT__SOURCE = eINSTANCE.getLatencyRequirement_Source();
+
+		/**
+		 * The meta object literal for the '<em><b>Target</b></em>' reference feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EReference LATENCY_REQUIREMENT__TARGET = eINSTANCE.getLatencyRequirement_Target();
+
+		/**
+		 * The meta object literal for the '<em><b>Max Latency</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute LATENCY_REQUIREMENT__MAX_LATENCY = eINSTANCE.getLatencyRequirement_MaxLatency();
+
+		/**
+		 * The meta object literal for the '<em><b>Kind</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute LATENCY_REQUIREMENT__KIND = eINSTANCE.getLatencyRequirement_Kind();
+
+		/**
 		 * The meta object literal for the '{@link org.rsaml.model.ArchitectureCategory <em>Architecture Category</em>}' enum.
 		 * <!-- begin-user-doc -->
 		 * <!-- end-user-doc -->
@@ -5725,6 +6147,16 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EEnum DATA_TYPE = eINSTANCE.getDataType();
+
+		/**
+		 * The meta object literal for the '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}' enum.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @see org.rsaml.model.LatencyKind
+		 * @see org.rsaml.model.impl.RsamlPackageImpl#getLatencyKind()
+		 * @generated
+		 */
+		EEnum LATENCY_KIND = eINSTANCE.getLatencyKind();
 
 	}
 

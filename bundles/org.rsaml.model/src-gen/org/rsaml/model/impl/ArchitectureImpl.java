@@ -16,6 +16,7 @@ import org.eclipse.emf.ecore.InternalEObject;
 
 import org.eclipse.emf.ecore.impl.ENotificationImpl;
 
+import org.eclipse.emf.ecore.util.EObjectContainmentEList;
 import org.eclipse.emf.ecore.util.EObjectContainmentWithInverseEList;
 import org.eclipse.emf.ecore.util.InternalEList;
 
@@ -24,9 +25,11 @@ import org.rsaml.model.Architecture;
 import org.rsaml.model.ArchitectureCategory;
 import org.rsaml.model.Connection;
 import org.rsaml.model.Database;
+import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.Order;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.Sensor;
 import org.rsaml.model.Supervisor;
@@ -49,6 +52,8 @@ import org.rsaml.model.Supervisor;
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getSupervisors <em>Supervisors</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getOrders <em>Orders</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getDatabases <em>Databases</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getProcessors <em>Processors</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getLatencyRequirements <em>Latency Requirements</em>}</li>
  * </ul>
  *
  * @generated
@@ -173,6 +178,26 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 	 * @ordered
 	 */
 	protected EList<Database> databases;
+
+	/**
+	 * The cached value of the '{@link #getProcessors() <em>Processors</em>}' containment reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getProcessors()
+	 * @generated
+	 * @ordered
+	 */
+	protected EList<Processor> processors;
+
+	/**
+	 * The cached value of the '{@link #getLatencyRequirements() <em>Latency Requirements</em>}' containment reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getLatencyRequirements()
+	 * @generated
+	 * @ordered
+	 */
+	protected EList<LatencyRequirement> latencyRequirements;
 
 	/**
 	 * <!-- begin-user-doc -->
@@ -348,6 +373,32 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	@Override
+	public EList<Processor> getProcessors() {
+		if (processors == null) {
+			processors = new EObjectContainmentEList<Processor>(Processor.class, this, RsamlPackage.ARCHITECTURE__PROCESSORS);
+		}
+		return processors;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EList<LatencyRequirement> getLatencyRequirements() {
+		if (latencyRequirements == null) {
+			latencyRequirements = new EObjectContainmentEList<LatencyRequirement>(LatencyRequirement.class, this, RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS);
+		}
+		return latencyRequirements;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	@SuppressWarnings("unchecked")
 	@Override
 	public NotificationChain eInverseAdd(InternalEObject otherEnd, int featureID, NotificationChain msgs) {
@@ -396,6 +447,10 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return ((InternalEList<?>)getOrders()).basicRemove(otherEnd, msgs);
 			case RsamlPackage.ARCHITECTURE__DATABASES:
 				return ((InternalEList<?>)getDatabases()).basicRemove(otherEnd, msgs);
+			case RsamlPackage.ARCHITECTURE__PROCESSORS:
+				return ((InternalEList<?>)getProcessors()).basicRemove(otherEnd, msgs);
+			case RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS:
+				return ((InternalEList<?>)getLatencyRequirements()).basicRemove(otherEnd, msgs);
 		}
 		return super.eInverseRemove(otherEnd, featureID, msgs);
 	}
@@ -428,6 +483,10 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return getOrders();
 			case RsamlPackage.ARCHITECTURE__DATABASES:
 				return getDatabases();
+			case RsamlPackage.ARCHITECTURE__PROCESSORS:
+				return getProcessors();
+			case RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS:
+				return getLatencyRequirements();
 		}
 		return super.eGet(featureID, resolve, coreType);
 	}
@@ -479,6 +538,14 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				getDatabases().clear();
 				getDatabases().addAll((Collection<? extends Database>)newValue);
 				return;
+			case RsamlPackage.ARCHITECTURE__PROCESSORS:
+				getProcessors().clear();
+				getProcessors().addAll((Collection<? extends Processor>)newValue);
+				return;
+			case RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS:
+				getLatencyRequirements().clear();
+				getLatencyRequirements().addAll((Collection<? extends LatencyRequirement>)newValue);
+				return;
 		}
 		super.eSet(featureID, newValue);
 	}
@@ -521,6 +588,12 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 			case RsamlPackage.ARCHITECTURE__DATABASES:
 				getDatabases().clear();
 				return;
+			case RsamlPackage.ARCHITECTURE__PROCESSORS:
+				getProcessors().clear();
+				return;
+			case RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS:
+				getLatencyRequirements().clear();
+				return;
 		}
 		super.eUnset(featureID);
 	}
@@ -553,6 +626,10 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return orders != null && !orders.isEmpty();
 			case RsamlPackage.ARCHITECTURE__DATABASES:
 				return databases != null && !databases.isEmpty();
+			case RsamlPackage.ARCHITECTURE__PROCESSORS:
+				return processors != null && !processors.isEmpty();
+			case RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS:
+				return latencyRequirements != null && !latencyRequirements.isEmpty();
 		}
 		return super.eIsSet(featureID);
 	}

@@ -28,11 +28,14 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Goal;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Knowledge;
+import org.rsaml.model.LatencyKind;
+import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RTAction;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.RsamlPackage;
@@ -108,6 +111,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 			case RsamlPackage.ORDER: return createOrder();
 			case RsamlPackage.DATABASE: return createDatabase();
 			case RsamlPackage.KNOWLEDGE: return createKnowledge();
+			case RsamlPackage.PROCESSOR: return createProcessor();
+			case RsamlPackage.LATENCY_REQUIREMENT: return createLatencyRequirement();
 			default:
 				throw new IllegalArgumentException("The class '" + eClass.getName() + "' is not a valid classifier");
 		}
@@ -135,6 +140,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 				return createSchedulingPolicyFromString(eDataType, initialValue);
 			case RsamlPackage.DATA_TYPE:
 				return createDataTypeFromString(eDataType, initialValue);
+			case RsamlPackage.LATENCY_KIND:
+				return createLatencyKindFromString(eDataType, initialValue);
 			default:
 				throw new IllegalArgumentException("The datatype '" + eDataType.getName() + "' is not a valid classifier");
 		}
@@ -162,6 +169,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 				return convertSchedulingPolicyToString(eDataType, instanceValue);
 			case RsamlPackage.DATA_TYPE:
 				return convertDataTypeToString(eDataType, instanceValue);
+			case RsamlPackage.LATENCY_KIND:
+				return convertLatencyKindToString(eDataType, instanceValue);
 			default:
 				throw new IllegalArgumentException("The datatype '" + eDataType.getName() + "' is not a valid classifier");
 		}
@@ -403,6 +412,28 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	@Override
+	public Processor createProcessor() {
+		ProcessorImpl processor = new ProcessorImpl();
+		return processor;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public LatencyRequirement createLatencyRequirement() {
+		LatencyRequirementImpl latencyRequirement = new LatencyRequirementImpl();
+		return latencyRequirement;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	public ArchitectureCategory createArchitectureCategoryFromString(EDataType eDataType, String initialValue) {
 		ArchitectureCategory result = ArchitectureCategory.get(initialValue);
 		if (result == null) throw new IllegalArgumentException("The value '" + initialValue + "' is not a valid enumerator of '" + eDataType.getName() + "'");
@@ -535,6 +566,26 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 	 * @generated
 	 */
 	public String convertDataTypeToString(EDataType eDataType, Object instanceValue) {
+		return instanceValue == null ? null : instanceValue.toString();
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public LatencyKind createLatencyKindFromString(EDataType eDataType, String initialValue) {
+		LatencyKind result = LatencyKind.get(initialValue);
+		if (result == null) throw new IllegalArgumentException("The value '" + initialValue + "' is not a valid enumerator of '" + eDataType.getName() + "'");
+		return result;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public String convertLatencyKindToString(EDataType eDataType, Object instanceValue) {
 		return instanceValue == null ? null : instanceValue.toString();
 	}
 

@@ -30,6 +30,8 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Goal;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Knowledge;
+import org.rsaml.model.LatencyKind;
+import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.NamedElement;
@@ -37,6 +39,7 @@ import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RTAction;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.RsamlFactory;
@@ -253,6 +256,20 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	private EClass processorEClass = null;
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	private EClass latencyRequirementEClass = null;
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	private EEnum architectureCategoryEEnum = null;
 
 	/**
@@ -296,6 +313,13 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	private EEnum dataTypeEEnum = null;
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	private EEnum latencyKindEEnum = null;
 
 	/**
 	 * Creates an instance of the model <b>Package</b>, registered with
@@ -635,6 +659,26 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	@Override
 	public EReference getArchitecture_Databases() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(9);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getArchitecture_Processors() {
+		return (EReference)architectureEClass.getEStructuralFeatures().get(10);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getArchitecture_LatencyRequirements() {
+		return (EReference)architectureEClass.getEStructuralFeatures().get(11);
 	}
 
 	/**
@@ -1533,6 +1577,96 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EClass getProcessor() {
+		return processorEClass;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EAttribute getProcessor_SchedPolicy() {
+		return (EAttribute)processorEClass.getEStructuralFeatures().get(0);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EAttribute getProcessor_Core() {
+		return (EAttribute)processorEClass.getEStructuralFeatures().get(1);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getProcessor_Modules() {
+		return (EReference)processorEClass.getEStructuralFeatures().get(2);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EClass getLatencyRequirement() {
+		return latencyRequirementEClass;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getLatencyRequirement_Source() {
+		return (EReference)latencyRequirementEClass.getEStructuralFeatures().get(0);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getLatencyRequirement_Target() {
+		return (EReference)latencyRequirementEClass.getEStructuralFeatures().get(1);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EAttribute getLatencyRequirement_MaxLatency() {
+		return (EAttribute)latencyRequirementEClass.getEStructuralFeatures().get(2);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EAttribute getLatencyRequirement_Kind() {
+		return (EAttribute)latencyRequirementEClass.getEStructuralFeatures().get(3);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EEnum getArchitectureCategory() {
 		return architectureCategoryEEnum;
 	}
@@ -1603,6 +1737,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EEnum getLatencyKind() {
+		return latencyKindEEnum;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public RsamlFactory getRsamlFactory() {
 		return (RsamlFactory)getEFactoryInstance();
 	}
@@ -1656,6 +1800,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEReference(architectureEClass, ARCHITECTURE__SUPERVISORS);
 		createEReference(architectureEClass, ARCHITECTURE__ORDERS);
 		createEReference(architectureEClass, ARCHITECTURE__DATABASES);
+		createEReference(architectureEClass, ARCHITECTURE__PROCESSORS);
+		createEReference(architectureEClass, ARCHITECTURE__LATENCY_REQUIREMENTS);
 
 		layerEClass = createEClass(LAYER);
 		createEReference(layerEClass, LAYER__ARCHITECTURE);
@@ -1769,6 +1915,17 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEAttribute(knowledgeEClass, KNOWLEDGE__DATA_TYPE);
 		createEReference(knowledgeEClass, KNOWLEDGE__USED_BY);
 
+		processorEClass = createEClass(PROCESSOR);
+		createEAttribute(processorEClass, PROCESSOR__SCHED_POLICY);
+		createEAttribute(processorEClass, PROCESSOR__CORE);
+		createEReference(processorEClass, PROCESSOR__MODULES);
+
+		latencyRequirementEClass = createEClass(LATENCY_REQUIREMENT);
+		createEReference(latencyRequirementEClass, LATENCY_REQUIREMENT__SOURCE);
+		createEReference(latencyRequirementEClass, LATENCY_REQUIREMENT__TARGET);
+		createEAttribute(latencyRequirementEClass, LATENCY_REQUIREMENT__MAX_LATENCY);
+		createEAttribute(latencyRequirementEClass, LATENCY_REQUIREMENT__KIND);
+
 		// Create enums
 		architectureCategoryEEnum = createEEnum(ARCHITECTURE_CATEGORY);
 		elementTypeEEnum = createEEnum(ELEMENT_TYPE);
@@ -1777,6 +1934,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		synchronisationTypeEEnum = createEEnum(SYNCHRONISATION_TYPE);
 		schedulingPolicyEEnum = createEEnum(SCHEDULING_POLICY);
 		dataTypeEEnum = createEEnum(DATA_TYPE);
+		latencyKindEEnum = createEEnum(LATENCY_KIND);
 	}
 
 	/**
@@ -1835,6 +1993,9 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		orderEClass.getESuperTypes().add(this.getNamedElement());
 		databaseEClass.getESuperTypes().add(this.getNamedElement());
 		knowledgeEClass.getESuperTypes().add(this.getNamedElement());
+		processorEClass.getESuperTypes().add(this.getNamedElement());
+		latencyRequirementEClass.getESuperTypes().add(this.getNamedElement());
+		latencyRequirementEClass.getESuperTypes().add(this.getTimeScaled());
 
 		// Initialize classes, features, and operations; add parameters
 		initEClass(namedElementEClass, NamedElement.class, "NamedElement", IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
@@ -1885,6 +2046,10 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		getArchitecture_Orders().getEKeys().add(this.getNamedElement_Name());
 		initEReference(getArchitecture_Databases(), this.getDatabase(), this.getDatabase_Architecture(), "databases", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		getArchitecture_Databases().getEKeys().add(this.getNamedElement_Name());
+		initEReference(getArchitecture_Processors(), this.getProcessor(), null, "processors", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		getArchitecture_Processors().getEKeys().add(this.getNamedElement_Name());
+		initEReference(getArchitecture_LatencyRequirements(), this.getLatencyRequirement(), null, "latencyRequirements", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		getArchitecture_LatencyRequirements().getEKeys().add(this.getNamedElement_Name());
 
 		initEClass(layerEClass, Layer.class, "Layer", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getLayer_Architecture(), this.getArchitecture(), this.getArchitecture_Layers(), "architecture", null, 0, 1, Layer.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2010,6 +2175,17 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEAttribute(getKnowledge_DataType(), this.getDataType(), "dataType", "structured", 0, 1, Knowledge.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getKnowledge_UsedBy(), this.getModule(), null, "usedBy", null, 0, -1, Knowledge.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
+		initEClass(processorEClass, Processor.class, "Processor", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
+		initEAttribute(getProcessor_SchedPolicy(), this.getSchedulingPolicy(), "schedPolicy", null, 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getProcessor_Core(), ecorePackage.getEInt(), "core", "-1", 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEReference(getProcessor_Modules(), this.getModule(), null, "modules", null, 0, -1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+
+		initEClass(latencyRequirementEClass, LatencyRequirement.class, "LatencyRequirement", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
+		initEReference(getLatencyRequirement_Source(), this.getNamedElement(), null, "source", null, 1, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEReference(getLatencyRequirement_Target(), this.getNamedElement(), null, "target", null, 1, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getLatencyRequirement_MaxLatency(), ecorePackage.getEDouble(), "maxLatency", "0.0", 0, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getLatencyRequirement_Kind(), this.getLatencyKind(), "kind", "reactionTime", 0, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+
 		// Initialize enums and add enum literals
 		initEEnum(architectureCategoryEEnum, ArchitectureCategory.class, "ArchitectureCategory");
 		addEEnumLiteral(architectureCategoryEEnum, ArchitectureCategory.CENTRALIZED);
@@ -2052,6 +2228,10 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		addEEnumLiteral(dataTypeEEnum, DataType.ALPHANUMERIC);
 		addEEnumLiteral(dataTypeEEnum, DataType.BOOLEAN);
 		addEEnumLiteral(dataTypeEEnum, DataType.STRUCTURED);
+
+		initEEnum(latencyKindEEnum, LatencyKind.class, "LatencyKind");
+		addEEnumLiteral(latencyKindEEnum, LatencyKind.REACTION_TIME);
+		addEEnumLiteral(latencyKindEEnum, LatencyKind.DATA_AGE);
 
 		// Create resource
 		createResource(eNS_URI);

@@ -23,6 +23,7 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Goal;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Knowledge;
+import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.NamedElement;
@@ -30,6 +31,7 @@ import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RTAction;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.RsamlPackage;
@@ -202,6 +204,14 @@ public class RsamlAdapterFactory extends AdapterFactoryImpl {
 			@Override
 			public Adapter caseKnowledge(Knowledge object) {
 				return createKnowledgeAdapter();
+			}
+			@Override
+			public Adapter caseProcessor(Processor object) {
+				return createProcessorAdapter();
+			}
+			@Override
+			public Adapter caseLatencyRequirement(LatencyRequirement object) {
+				return createLatencyRequirementAdapter();
 			}
 			@Override
 			public Adapter defaultCase(EObject object) {
@@ -598,6 +608,34 @@ public class RsamlAdapterFactory extends AdapterFactoryImpl {
 	 * @generated
 	 */
 	public Adapter createKnowledgeAdapter() {
+		return null;
+	}
+
+	/**
+	 * Creates a new adapter for an object of class '{@link org.rsaml.model.Processor <em>Processor</em>}'.
+	 * <!-- begin-user-doc -->
+	 * This default implementation returns null so that we can easily ignore cases;
+	 * it's useful to ignore a case when inheritance will catch all the cases anyway.
+	 * <!-- end-user-doc -->
+	 * @return the new adapter.
+	 * @see org.rsaml.model.Processor
+	 * @generated
+	 */
+	public Adapter createProcessorAdapter() {
+		return null;
+	}
+
+	/**
+	 * Creates a new adapter for an object of class '{@link org.rsaml.model.LatencyRequirement <em>Latency Requirement</em>}'.
+	 * <!-- begin-user-doc -->
+	 * This default implementation returns null so that we can easily ignore cases;
+	 * it's useful to ignore a case when inheritance will catch all the cases anyway.
+	 * <!-- end-user-doc -->
+	 * @return the new adapter.
+	 * @see org.rsaml.model.LatencyRequirement
+	 * @generated
+	 */
+	public Adapter createLatencyRequirementAdapter() {
 		return null;
 	}
 

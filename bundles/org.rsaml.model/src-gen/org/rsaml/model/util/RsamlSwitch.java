@@ -21,6 +21,7 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Goal;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Knowledge;
+import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.NamedElement;
@@ -28,6 +29,7 @@ import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RTAction;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.RsamlPackage;
@@ -302,6 +304,21 @@ public class RsamlSwitch<T> extends Switch<T> {
 				Knowledge knowledge = (Knowledge)theEObject;
 				T result = caseKnowledge(knowledge);
 				if (result == null) result = caseNamedElement(knowledge);
+				if (result == null) result = defaultCase(theEObject);
+				return result;
+			}
+			case RsamlPackage.PROCESSOR: {
+				Processor processor = (Processor)theEObject;
+				T result = caseProcessor(processor);
+				if (result == null) result = caseNamedElement(processor);
+				if (result == null) result = defaultCase(theEObject);
+				return result;
+			}
+			case RsamlPackage.LATENCY_REQUIREMENT: {
+				LatencyRequirement latencyRequirement = (LatencyRequirement)theEObject;
+				T result = caseLatencyRequirement(latencyRequirement);
+				if (result == null) result = caseNamedElement(latencyRequirement);
+				if (result == null) result = caseTimeScaled(latencyRequirement);
 				if (result == null) result = defaultCase(theEObject);
 				return result;
 			}
@@ -711,6 +728,36 @@ public class RsamlSwitch<T> extends Switch<T> {
 	 * @generated
 	 */
 	public T caseKnowledge(Knowledge object) {
+		return null;
+	}
+
+	/**
+	 * Returns the result of interpreting the object as an instance of '<em>Processor</em>'.
+	 * <!-- begin-user-doc -->
+	 * This implementation returns null;
+	 * returning a non-null result will terminate the switch.
+	 * <!-- end-user-doc -->
+	 * @param object the target of the switch.
+	 * @return the result of interpreting the object as an instance of '<em>Processor</em>'.
+	 * @see #doSwitch(org.eclipse.emf.ecore.EObject) doSwitch(EObject)
+	 * @generated
+	 */
+	public T caseProcessor(Processor object) {
+		return null;
+	}
+
+	/**
+	 * Returns the result of interpreting the object as an instance of '<em>Latency Requirement</em>'.
+	 * <!-- begin-user-doc -->
+	 * This implementation returns null;
+	 * returning a non-null result will terminate the switch.
+	 * <!-- end-user-doc -->
+	 * @param object the target of the switch.
+	 * @return the result of interpreting the object as an instance of '<em>Latency Requirement</em>'.
+	 * @see #doSwitch(org.eclipse.emf.ecore.EObject) doSwitch(EObject)
+	 * @generated
+	 */
+	public T caseLatencyRequirement(LatencyRequirement object) {
 		return null;
 	}
 

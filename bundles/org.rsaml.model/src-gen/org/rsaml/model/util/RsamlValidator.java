@@ -30,6 +30,8 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Goal;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Knowledge;
+import org.rsaml.model.LatencyKind;
+import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.NamedElement;
@@ -37,6 +39,7 @@ import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RTAction;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.RsamlPackage;
@@ -175,6 +178,10 @@ public class RsamlValidator extends EObjectValidator {
 				return validateDatabase((Database)value, diagnostics, context);
 			case RsamlPackage.KNOWLEDGE:
 				return validateKnowledge((Knowledge)value, diagnostics, context);
+			case RsamlPackage.PROCESSOR:
+				return validateProcessor((Processor)value, diagnostics, context);
+			case RsamlPackage.LATENCY_REQUIREMENT:
+				return validateLatencyRequirement((LatencyRequirement)value, diagnostics, context);
 			case RsamlPackage.ARCHITECTURE_CATEGORY:
 				return validateArchitectureCategory((ArchitectureCategory)value, diagnostics, context);
 			case RsamlPackage.ELEMENT_TYPE:
@@ -189,6 +196,8 @@ public class RsamlValidator extends EObjectValidator {
 				return validateSchedulingPolicy((SchedulingPolicy)value, diagnostics, context);
 			case RsamlPackage.DATA_TYPE:
 				return validateDataType((DataType)value, diagnostics, context);
+			case RsamlPackage.LATENCY_KIND:
+				return validateLatencyKind((LatencyKind)value, diagnostics, context);
 			default:
 				return true;
 		}
@@ -1820,6 +1829,24 @@ public class RsamlValidator extends EObjectValidator {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	public boolean validateProcessor(Processor processor, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return validate_EveryDefaultConstraint(processor, diagnostics, context);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateLatencyRequirement(LatencyRequirement latencyRequirement, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return validate_EveryDefaultConstraint(latencyRequirement, diagnostics, context);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	public boolean validateArchitectureCategory(ArchitectureCategory architectureCategory, DiagnosticChain diagnostics, Map<Object, Object> context) {
 		return true;
 	}
@@ -1875,6 +1902,15 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateDataType(DataType dataType, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return true;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateLatencyKind(LatencyKind latencyKind, DiagnosticChain diagnostics, Map<Object, Object> context) {
 		return true;
 	}
 

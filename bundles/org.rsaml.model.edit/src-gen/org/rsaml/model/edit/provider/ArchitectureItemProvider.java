@@ -120,6 +120,8 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 			childrenFeatures.add(RsamlPackage.Literals.ARCHITECTURE__SUPERVISORS);
 			childrenFeatures.add(RsamlPackage.Literals.ARCHITECTURE__ORDERS);
 			childrenFeatures.add(RsamlPackage.Literals.ARCHITECTURE__DATABASES);
+			childrenFeatures.add(RsamlPackage.Literals.ARCHITECTURE__PROCESSORS);
+			childrenFeatures.add(RsamlPackage.Literals.ARCHITECTURE__LATENCY_REQUIREMENTS);
 		}
 		return childrenFeatures;
 	}
@@ -197,6 +199,8 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 			case RsamlPackage.ARCHITECTURE__SUPERVISORS:
 			case RsamlPackage.ARCHITECTURE__ORDERS:
 			case RsamlPackage.ARCHITECTURE__DATABASES:
+			case RsamlPackage.ARCHITECTURE__PROCESSORS:
+			case RsamlPackage.ARCHITECTURE__LATENCY_REQUIREMENTS:
 				fireNotifyChanged(new ViewerNotification(notification, notification.getNotifier(), true, false));
 				return;
 		}
@@ -253,6 +257,16 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 			(createChildParameter
 				(RsamlPackage.Literals.ARCHITECTURE__DATABASES,
 				 RsamlFactory.eINSTANCE.createDatabase()));
+
+		newChildDescriptors.add
+			(createChildParameter
+				(RsamlPackage.Literals.ARCHITECTURE__PROCESSORS,
+				 RsamlFactory.eINSTANCE.createProcessor()));
+
+		newChildDescriptors.add
+			(createChildParameter
+				(RsamlPackage.Literals.ARCHITECTURE__LATENCY_REQUIREMENTS,
+				 RsamlFactory.eINSTANCE.createLatencyRequirement()));
 	}
 
 }

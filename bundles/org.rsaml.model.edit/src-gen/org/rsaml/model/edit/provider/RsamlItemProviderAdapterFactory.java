@@ -557,6 +557,52 @@ public class RsamlItemProviderAdapterFactory extends RsamlAdapterFactory impleme
 	}
 
 	/**
+	 * This keeps track of the one adapter used for all {@link org.rsaml.model.Processor} instances.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected ProcessorItemProvider processorItemProvider;
+
+	/**
+	 * This creates an adapter for a {@link org.rsaml.model.Processor}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public Adapter createProcessorAdapter() {
+		if (processorItemProvider == null) {
+			processorItemProvider = new ProcessorItemProvider(this);
+		}
+
+		return processorItemProvider;
+	}
+
+	/**
+	 * This keeps track of the one adapter used for all {@link org.rsaml.model.LatencyRequirement} instances.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected LatencyRequirementItemProvider latencyRequirementItemProvider;
+
+	/**
+	 * This creates an adapter for a {@link org.rsaml.model.LatencyRequirement}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public Adapter createLatencyRequirementAdapter() {
+		if (latencyRequirementItemProvider == null) {
+			latencyRequirementItemProvider = new LatencyRequirementItemProvider(this);
+		}
+
+		return latencyRequirementItemProvider;
+	}
+
+	/**
 	 * This returns the root adapter factory that contains this factory.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -682,6 +728,8 @@ public class RsamlItemProviderAdapterFactory extends RsamlAdapterFactory impleme
 		if (orderItemProvider != null) orderItemProvider.dispose();
 		if (databaseItemProvider != null) databaseItemProvider.dispose();
 		if (knowledgeItemProvider != null) knowledgeItemProvider.dispose();
+		if (processorItemProvider != null) processorItemProvider.dispose();
+		if (latencyRequirementItemProvider != null) latencyRequirementItemProvider.dispose();
 	}
 
 }

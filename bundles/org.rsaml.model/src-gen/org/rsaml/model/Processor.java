@@ -1,0 +1,128 @@
+/**
+ * Copyright (c) 2026 the RsaML authors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model;
+
+import org.eclipse.emf.common.util.EList;
+
+/**
+ * <!-- begin-user-doc -->
+ * A representation of the model object '<em><b>Processor</b></em>'.
+ * <!-- end-user-doc -->
+ *
+ * <!-- begin-model-doc -->
+ * A scheduling domain (e.g. one CPU core) and the modules allocated to it. Every timed release and reaction of an allocated module runs there; the modules no processor names run on a processor of their own, named 'default'.
+ * <!-- end-model-doc -->
+ *
+ * <p>
+ * The following features are supported:
+ * </p>
+ * <ul>
+ *   <li>{@link org.rsaml.model.Processor#getSchedPolicy <em>Sched Policy</em>}</li>
+ *   <li>{@link org.rsaml.model.Processor#getCore <em>Core</em>}</li>
+ *   <li>{@link org.rsaml.model.Processor#getModules <em>Modules</em>}</li>
+ * </ul>
+ *
+ * @see org.rsaml.model.RsamlPackage#getProcessor()
+ * @model
+ * @generated
+ */
+public interface Processor extends NamedElement {
+	/**
+	 * Returns the value of the '<em><b>Sched Policy</b></em>' attribute.
+	 * The literals are from the enumeration {@link org.rsaml.model.SchedulingPolicy}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * How the processor schedules its work. Not set: the fixed priorities the generated runtime assigns (rate and deadline monotonic ranks, FIFO and RR at the base rank), as FIFO, RR, RM and DM also mean. EDF, LLF, SJF and OTHER describe a platform scheduler the generated runtime does not set up.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Sched Policy</em>' attribute.
+	 * @see org.rsaml.model.SchedulingPolicy
+	 * @see #isSetSchedPolicy()
+	 * @see #unsetSchedPolicy()
+	 * @see #setSchedPolicy(SchedulingPolicy)
+	 * @see org.rsaml.model.RsamlPackage#getProcessor_SchedPolicy()
+	 * @model unsettable="true"
+	 * @generated
+	 */
+	SchedulingPolicy getSchedPolicy();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Processor#getSchedPolicy <em>Sched Policy</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Sched Policy</em>' attribute.
+	 * @see org.rsaml.model.SchedulingPolicy
+	 * @see #isSetSchedPolicy()
+	 * @see #unsetSchedPolicy()
+	 * @see #getSchedPolicy()
+	 * @generated
+	 */
+	void setSchedPolicy(SchedulingPolicy value);
+
+	/**
+	 * Unsets the value of the '{@link org.rsaml.model.Processor#getSchedPolicy <em>Sched Policy</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #isSetSchedPolicy()
+	 * @see #getSchedPolicy()
+	 * @see #setSchedPolicy(SchedulingPolicy)
+	 * @generated
+	 */
+	void unsetSchedPolicy();
+
+	/**
+	 * Returns whether the value of the '{@link org.rsaml.model.Processor#getSchedPolicy <em>Sched Policy</em>}' attribute is set.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return whether the value of the '<em>Sched Policy</em>' attribute is set.
+	 * @see #unsetSchedPolicy()
+	 * @see #getSchedPolicy()
+	 * @see #setSchedPolicy(SchedulingPolicy)
+	 * @generated
+	 */
+	boolean isSetSchedPolicy();
+
+	/**
+	 * Returns the value of the '<em><b>Core</b></em>' attribute.
+	 * The default value is <code>"-1"</code>.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The CPU core (from 0) the processor's threads are pinned to where the platform permits; -1 leaves the choice to the operating system.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Core</em>' attribute.
+	 * @see #setCore(int)
+	 * @see org.rsaml.model.RsamlPackage#getProcessor_Core()
+	 * @model default="-1"
+	 * @generated
+	 */
+	int getCore();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Processor#getCore <em>Core</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Core</em>' attribute.
+	 * @see #getCore()
+	 * @generated
+	 */
+	void setCore(int value);
+
+	/**
+	 * Returns the value of the '<em><b>Modules</b></em>' reference list.
+	 * The list contents are of type {@link org.rsaml.model.Module}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The modules allocated to this processor; a module is allocated to at most one processor.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Modules</em>' reference list.
+	 * @see org.rsaml.model.RsamlPackage#getProcessor_Modules()
+	 * @model
+	 * @generated
+	 */
+	EList<org.rsaml.model.Module> getModules();
+
+} // Processor
