@@ -53,7 +53,9 @@ public final class SchedulabilityAnalysis {
     private static ProcessorResult fixedPriority(String processor, SchedulingPolicy policy, List<Task> tasks, Utilisation u,
             List<BoundCheck> bounds) {
         TaskResult[] byIndex = new TaskResult[tasks.size()];
-        if (policy == SchedulingPolicy.FIXED_PRIORITY) {
+        if (policy == SchedulingPolicy.FIXED_PRIORITY && ResponseTimes.anyBlockedByLock(tasks)) {
+            lockGroups(tasks, byIndex);
+        } else if (policy == SchedulingPolicy.FIXED_PRIORITY) {
             // highest first, so that each task's first-job window seeds the next one's iteration
             int[] effective = new int[tasks.size()];
             List<Integer> order = new ArrayList<>();
@@ -96,6 +98,85 @@ public final class SchedulabilityAnalysis {
             default -> method + ": " + open + " of " + tasks.size() + " tasks not analysed";
         };
         return new ProcessorResult(processor, policy, results, u.value, bounds, verdict, explanation, null);
+    }
+
+    /** Rounds of the jitter iteration for lock groups before giving up (said so). */
+    private static final int MAX_ROUNDS = 1000;
+
+    /**
+     * With lock groups a task can be held back by a lower-priority lock holder and then run its
+     * delayed jobs back to back: to the tasks below it, it interferes as if released with a jitter
+     * of its response time minus its cost (holistic analysis, Tindell &amp; Clark 1994). Iterated
+     * until the jitters settle; the response times are then upper bounds, not exact.
+     */
+    private static void lockGroups(List<Task> tasks, TaskResult[] byIndex) {
+        int n = tasks.size();
+        int[] effective = new int[n];
+        for (int i = 0; i < n; i++) {
+            effective[i] = ResponseTimes.effectivePriority(tasks, tasks.get(i));
+        }
+        Task[] view = tasks.toArray(new Task[0]);
+        for (int round = 0; round < MAX_ROUNDS; round++) {
+            for (int i = 0; i < n; i++) {
+                Task own = tasks.get(i);
+                Task shown = view[i];
+                view[i] = own;
+                byIndex[i] = ResponseTimes.preemptive(java.util.Arrays.asList(view), own, effective[i], 0, null);
+                view[i] = shown;
+            }
+            boolean changed = false;
+            List<Integer> late = new ArrayList<>();
+            for (int j = 0; j < n; j++) {
+                Task t = tasks.get(j);
+                if (effective[j] >= t.priority()) {
+                    continue;
+                }
+                if (byIndex[j].responseTime().isEmpty() || byIndex[j].verdict() == Verdict.MISSES) {
+                    late.add(j);
+                    continue;
+                }
+                long jitter = Math.max(t.jitter(), byIndex[j].responseTime().getAsLong() - t.cost());
+                if (jitter > view[j].jitter()) {
+                    view[j] = new Task(t.name(), t.period(), t.deadline(), t.cost(), t.priority(), jitter, t.group());
+                    changed = true;
+                }
+            }
+            if (!late.isEmpty()) {
+                unsettled(tasks, byIndex, effective, late);
+                return;
+            }
+            if (!changed) {
+                return;
+            }
+        }
+        for (int i = 0; i < n; i++) {
+            byIndex[i] = new TaskResult(tasks.get(i), OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: with the lock groups,"
+                    + " the response times did not settle within " + MAX_ROUNDS + " rounds", null);
+        }
+    }
+
+    /**
+     * Some tasks held back by their lock can be late, so their late jobs can pile up and run back to
+     * back: no bound holds for a task that one of them, or any task held back by a lock, can delay (the
+     * jitters have not settled). Such a task that already misses its deadline misses it still.
+     */
+    private static void unsettled(List<Task> tasks, TaskResult[] byIndex, int[] effective, List<Integer> late) {
+        String who = "'" + tasks.get(late.get(0)).name() + "'";
+        for (int i = 0; i < tasks.size(); i++) {
+            boolean exposed = false;
+            for (int j = 0; j < tasks.size() && !exposed; j++) {
+                exposed = j != i && effective[j] < tasks.get(j).priority() && tasks.get(j).priority() >= effective[i];
+            }
+            if (!exposed) {
+                continue;
+            }
+            TaskResult r = byIndex[i];
+            byIndex[i] = r.verdict() == Verdict.MISSES
+                    ? new TaskResult(r.task(), OptionalLong.empty(), Verdict.MISSES, r.explanation()
+                            + " (at least; tasks that wait for their lock groups can delay it further)", null)
+                    : new TaskResult(r.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + who
+                            + " can be late waiting for its lock group, and then run its late jobs back to back", null);
+        }
     }
 
     private static ProcessorResult edf(String processor, List<Task> tasks, Utilisation u, List<BoundCheck> bounds) {

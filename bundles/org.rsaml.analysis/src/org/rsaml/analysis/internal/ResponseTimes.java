@@ -40,6 +40,22 @@ public final class ResponseTimes {
         return hp;
     }
 
+    /** Whether some task can wait for a lower-priority member of its lock group. */
+    public static boolean anyBlockedByLock(List<Task> tasks) {
+        java.util.Map<String, Integer> lowest = new java.util.HashMap<>();
+        for (Task t : tasks) {
+            if (t.group() != null) {
+                lowest.merge(t.group(), t.priority(), Math::min);
+            }
+        }
+        for (Task t : tasks) {
+            if (t.group() != null && lowest.get(t.group()) < t.priority()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /**
      * The lowest priority of the task's lock group: a lower-priority member holding the lock makes the
      * task wait, and whatever preempts that member delays the task too (no priority inheritance).

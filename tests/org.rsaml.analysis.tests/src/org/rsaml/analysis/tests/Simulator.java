@@ -12,7 +12,9 @@ import org.rsaml.analysis.Task;
 /**
  * A discrete-event simulation of synchronous periodic tasks on one processor, written apart from the
  * analysis (it shares only the Task record): it plays every job released in [0, horizon) and records
- * each one's response time. With utilisation at most 1 and every task released at 0, the schedule
+ * each one's response time. Jobs of tasks in one lock group exclude each other: a job takes the
+ * group's lock when it first runs and keeps it, preempted or not, until it completes; a job waiting
+ * for the lock does not run, whatever its priority (no priority inheritance). With utilisation at most 1 and every task released at 0, the schedule
  * repeats after the hyperperiod, so one hyperperiod shows every response time there is.
  */
 final class Simulator {
@@ -44,6 +46,8 @@ final class Simulator {
         long[] next = new long[n];
         long now = 0;
         Job current = null;
+        // per lock group, the job that holds its lock (it took it when it first ran, until it completes)
+        java.util.Map<String, Job> holders = new java.util.HashMap<>();
         while (true) {
             for (int i = 0; i < n; i++) {
                 while (next[i] <= now && next[i] < horizon) {
@@ -58,7 +62,7 @@ final class Simulator {
                 }
             }
             if (mode != Mode.NON_PREEMPTIVE || current == null || current.left == 0) {
-                current = pick(pending, tasks, mode);
+                current = pick(pending, tasks, mode, holders);
             }
             if (current == null) {
                 if (release == Long.MAX_VALUE) {
@@ -67,21 +71,33 @@ final class Simulator {
                 now = release;
                 continue;
             }
+            String group = tasks.get(current.task).group();
+            if (group != null) {
+                holders.put(group, current);
+            }
             long until = mode == Mode.NON_PREEMPTIVE ? now + current.left : Math.min(now + current.left, release);
             current.left -= until - now;
             now = until;
             if (current.left == 0) {
                 pending.remove(current);
+                if (group != null) {
+                    holders.remove(group);
+                }
                 worst[current.task] = Math.max(worst[current.task], now - current.release);
             }
         }
     }
 
-    private static Job pick(List<Job> pending, List<Task> tasks, Mode mode) {
+    private static Job pick(List<Job> pending, List<Task> tasks, Mode mode, java.util.Map<String, Job> holders) {
         Job best = null;
         for (Job j : pending) {
             if (j.left == 0) {
                 continue;
+            }
+            String group = tasks.get(j.task).group();
+            Job holder = group == null ? null : holders.get(group);
+            if (holder != null && holder != j) {
+                continue; // waits for the lock (no priority inheritance)
             }
             if (best == null || before(j, best, tasks, mode)) {
                 best = j;

@@ -51,25 +51,33 @@ class VerdictTest {
 
     /**
      * Releases of one module share the module's lock, without priority inheritance: the high-priority h
-     * waits for l holding the lock while m preempts l, so h can take 2 + 10 + 5 = 17 ms, not 2 ms.
+     * waits for l holding the lock while m preempts l, so h can take 2 + 10 + 5 = 17 ms, not 2 ms. Its
+     * jobs held back then run back to back: m, below h, is bounded with h's jitter of 17 - 2 ms.
      */
     @Test
     void lockGroupDelaysItsHighPriorityMember() {
-        Task h = new Task("h", 10 * MS, 10 * MS, 2 * MS, 3, 0, "module");
+        Task h = new Task("h", 20 * MS, 20 * MS, 2 * MS, 3, 0, "module");
         Task m = Task.implicit("m", 20 * MS, 5 * MS, 2);
         Task l = new Task("l", 50 * MS, 50 * MS, 10 * MS, 1, 0, "module");
         ProcessorResult grouped = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, List.of(h, m, l));
         TaskResult hr = grouped.tasks().get(0);
         assertEquals(17 * MS, hr.responseTime().getAsLong());
-        assertEquals(Verdict.MISSES, hr.verdict());
+        assertEquals(Verdict.MEETS, hr.verdict());
         assertTrue(hr.explanation().contains("lock group 'module'"), hr.explanation());
-        assertEquals(7 * MS, grouped.tasks().get(1).responseTime().getAsLong(), "m is not delayed by the lock");
+        assertEquals(9 * MS, grouped.tasks().get(1).responseTime().getAsLong());
         assertEquals(19 * MS, grouped.tasks().get(2).responseTime().getAsLong());
 
         ProcessorResult apart = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY,
-                List.of(Task.implicit("h", 10 * MS, 2 * MS, 3), m, Task.implicit("l", 50 * MS, 10 * MS, 1)));
+                List.of(Task.implicit("h", 20 * MS, 2 * MS, 3), m, Task.implicit("l", 50 * MS, 10 * MS, 1)));
         assertEquals(2 * MS, apart.tasks().get(0).responseTime().getAsLong());
-        assertEquals(Verdict.MEETS, apart.verdict());
+        assertEquals(7 * MS, apart.tasks().get(1).responseTime().getAsLong());
+
+        // with a deadline of 10 ms h can miss it; then nothing below it is bounded, and that is said
+        ProcessorResult late = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY,
+                List.of(new Task("h", 20 * MS, 10 * MS, 2 * MS, 3, 0, "module"), m, l));
+        assertEquals(Verdict.MISSES, late.tasks().get(0).verdict());
+        assertEquals(Verdict.NOT_ANALYSED, late.tasks().get(1).verdict());
+        assertTrue(late.tasks().get(1).explanation().contains("'h' can be late waiting for its lock group"), late.tasks().get(1).explanation());
     }
 
     @Test

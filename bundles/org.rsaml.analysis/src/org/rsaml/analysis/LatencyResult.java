@@ -1,0 +1,38 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis;
+
+import java.util.List;
+
+import org.rsaml.model.LatencyRequirement;
+
+/**
+ * An end-to-end latency requirement checked against every path between its source and its target.
+ *
+ * @param requirement  the model's requirement
+ * @param name         its name
+ * @param from         the source as {@code sensor 'x'} or {@code layer/module.port}
+ * @param to           the target likewise
+ * @param maxNs        the latency allowed
+ * @param dataAge      true when the requirement bounds the data age, false for the reaction time
+ * @param verdict      MEETS when every path is proven within maxNs
+ * @param reactionNs   the worst-case reaction time over all paths (-1 when not bounded)
+ * @param dataAgeNs    the maximum data age over all paths (-1 when not bounded)
+ * @param worstPath    the hops of the path with the largest bounded latency (empty when there is none)
+ * @param paths        how many paths were examined
+ * @param explanation  what decided the verdict
+ */
+public record LatencyResult(LatencyRequirement requirement, String name, String from, String to, long maxNs, boolean dataAge,
+        Verdict verdict, long reactionNs, long dataAgeNs, List<Hop> worstPath, int paths, String explanation) {
+
+    public LatencyResult {
+        worstPath = List.copyOf(worstPath);
+    }
+
+    /** The latency the requirement bounds (-1 when not bounded). */
+    public long boundNs() {
+        return dataAge ? dataAgeNs : reactionNs;
+    }
+}

@@ -1,0 +1,246 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.OptionalLong;
+import java.util.Set;
+
+import org.eclipse.emf.ecore.EObject;
+import org.rsaml.analysis.internal.Latencies;
+import org.rsaml.generator.plan.ExecutionPlan;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedAction;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.generator.plan.ExecutionPlan.Release;
+import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Module;
+import org.rsaml.model.Processor;
+import org.rsaml.model.TimeUnit;
+import org.rsaml.model.support.RsamlLabels;
+
+/**
+ * The timing of an architecture, with the tasks taken from the generator's {@link ExecutionPlan}, so
+ * that the analysis and the generated runtime tell the same story (docs/timing.md):
+ * <ul>
+ * <li>every timed release is a periodic task: its period, deadline = delay (the period when none),
+ * cost = execution duration, priority = the rank the runtime gives its thread;</li>
+ * <li>the releases and the reaction of one module share the module's lock (no priority
+ * inheritance), so they form one lock group;</li>
+ * <li>a sporadic module's reaction is a sporadic task at priority 0, below every real-time rank (it
+ * runs on the module's worker thread, which has no real-time priority); an aperiodic reaction has
+ * no bound on its arrivals and is excluded, said so, and the work at its level is not analysed.</li>
+ * </ul>
+ */
+public final class TimingAnalysis {
+
+    /** The name of the processor of the modules that no processor names. */
+    public static final String DEFAULT_PROCESSOR = "default";
+
+    private TimingAnalysis() {
+    }
+
+    /**
+     * @throws UnplannableException a time of the model cannot be represented (see {@link ExecutionPlan#of})
+     * @throws TimingModelException the deployment is contradictory (a module on two processors)
+     */
+    public static ArchitectureTiming analyse(Architecture architecture) throws UnplannableException, TimingModelException {
+        ExecutionPlan plan = ExecutionPlan.of(architecture);
+        Map<Module, Processor> allocation = allocation(architecture);
+        Map<String, Group> groups = new LinkedHashMap<>();
+        for (Processor p : architecture.getProcessors()) {
+            groups.put(RsamlLabels.name(p), new Group(RsamlLabels.name(p), p));
+        }
+        List<Exclusion> excluded = new ArrayList<>();
+        for (PlannedModule m : plan.modules()) {
+            Processor p = allocation.get(m.module());
+            String name = p == null ? DEFAULT_PROCESSOR : RsamlLabels.name(p);
+            Group g = groups.computeIfAbsent(name, n -> new Group(n, null));
+            for (Release r : m.releases()) {
+                g.add(release(r));
+            }
+            if (m.reactive()) {
+                if (m.minIntervalNs() > 0) {
+                    g.add(reaction(m));
+                } else {
+                    String reason = "reacts to every arrival of data and the model bounds neither how often data arrives nor"
+                            + " (as sporadic) how often it reacts: give it execType sporadic with a period (its minimum"
+                            + " inter-arrival time) to have it analysed";
+                    Exclusion x = new Exclusion(m.module(), m.qualifiedName(), name, reason);
+                    excluded.add(x);
+                    g.aperiodic.add(x);
+                }
+            }
+        }
+        List<ProcessorTiming> processors = new ArrayList<>();
+        for (Group g : groups.values()) {
+            if (g.element == null && g.tasks.isEmpty() && g.aperiodic.isEmpty() && !architecture.getProcessors().isEmpty()) {
+                continue;
+            }
+            processors.add(g.analyse(plan));
+        }
+        List<LatencyResult> latencies = Latencies.analyse(plan, architecture.getLatencyRequirements(), processors);
+        return new ArchitectureTiming(RsamlLabels.name(architecture), processors, excluded, latencies);
+    }
+
+    private static Map<Module, Processor> allocation(Architecture architecture) throws TimingModelException {
+        Map<Module, Processor> allocation = new IdentityHashMap<>();
+        for (Processor p : architecture.getProcessors()) {
+            for (Module m : p.getModules()) {
+                Processor other = allocation.putIfAbsent(m, p);
+                if (other != null && other != p) {
+                    throw new TimingModelException(p, "module " + (m.getLayer() == null ? "" : RsamlLabels.name(m.getLayer()) + "/") + RsamlLabels.name(m) + " is allocated to two processors, '"
+                            + RsamlLabels.name(other) + "' and '" + RsamlLabels.name(p) + "': remove it from one of them");
+                }
+            }
+        }
+        return allocation;
+    }
+
+    private static TaskSource release(Release r) {
+        long cost = r.costNs();
+        String note = "";
+        if (r.function() != null && r.action() == null) {
+            long offset = 0;
+            for (PlannedAction a : r.function().inlineActions()) {
+                offset = Math.max(offset, a.offsetNs());
+            }
+            if (offset > 0) {
+                // the release sleeps until each action's start date: counted as execution (sound, pessimistic)
+                cost = Math.addExact(cost, offset);
+                note = "its actions' start dates (up to " + org.rsaml.analysis.internal.Durations.format(offset)
+                        + ") are counted as execution";
+            }
+        }
+        if (r.costNs() == 0) {
+            note = join(note, "the model gives no execution duration: counted as 0");
+        }
+        EObject element = switch (r.kind()) {
+            case FUNCTION -> r.function().function();
+            case ACTION -> r.action().action();
+            case MODULE -> r.module().module();
+        };
+        Task t = new Task(r.label(), r.periodNs(), r.deadlineNs(), cost, r.rank(), 0, r.module().qualifiedName());
+        return new TaskSource(t, element, r.kind().name().toLowerCase(java.util.Locale.ROOT), note);
+    }
+
+    private static TaskSource reaction(PlannedModule m) {
+        Module module = m.module();
+        long cost = nanos(module.getExecDuration(), module.getTimeUnit());
+        String note = "";
+        if (cost == 0) {
+            for (ExecutionPlan.PlannedFunction f : m.stepFunctions()) {
+                cost = Math.addExact(cost, nanos(f.function().getExecDuration(), f.function().getTimeUnit()));
+            }
+            note = "the module gives no execution duration: the sum of its functions' is used";
+        }
+        long delay = nanos(module.getDelay(), module.getTimeUnit());
+        long deadline = delay > 0 ? delay : m.minIntervalNs();
+        Task t = new Task(m.qualifiedName() + " (reaction)", m.minIntervalNs(), deadline, cost, 0, 0, m.qualifiedName());
+        return new TaskSource(t, module, "reaction", note);
+    }
+
+    /** Model times are validated by the plan first; this only converts. */
+    static long nanos(double value, TimeUnit unit) {
+        TimeUnit u = unit == null ? TimeUnit.MS : unit;
+        return Math.round(value * u.getValue());
+    }
+
+    private static String join(String a, String b) {
+        return a.isEmpty() ? b : a + "; " + b;
+    }
+
+    /** The analysis policy for a processor. */
+    static SchedulingPolicy policy(Processor p) {
+        if (p == null || !p.isSetSchedPolicy()) {
+            return SchedulingPolicy.FIXED_PRIORITY;
+        }
+        return switch (p.getSchedPolicy()) {
+            case EDF -> SchedulingPolicy.EDF;
+            case LLF -> SchedulingPolicy.LLF;
+            case SJF -> SchedulingPolicy.SJF;
+            case OTHER -> SchedulingPolicy.OTHER;
+            default -> SchedulingPolicy.FIXED_PRIORITY; // FIFO, RR, RM, DM: the runtime's ranks
+        };
+    }
+
+    private static final class Group {
+        final String name;
+        final Processor element;
+        final List<TaskSource> tasks = new ArrayList<>();
+        final List<Exclusion> aperiodic = new ArrayList<>();
+        final Set<String> names = new HashSet<>();
+
+        Group(String name, Processor element) {
+            this.name = name;
+            this.element = element;
+        }
+
+        void add(TaskSource s) {
+            Task t = s.task();
+            String unique = t.name();
+            for (int i = 2; !names.add(unique); i++) {
+                unique = t.name() + " (" + i + ")";
+            }
+            if (!unique.equals(t.name())) {
+                t = new Task(unique, t.period(), t.deadline(), t.cost(), t.priority(), t.jitter(), t.group());
+                s = new TaskSource(t, s.element(), s.kind(), s.note());
+            }
+            tasks.add(s);
+        }
+
+        ProcessorTiming analyse(ExecutionPlan plan) {
+            SchedulingPolicy policy = policy(element);
+            List<Task> list = tasks.stream().map(TaskSource::task).toList();
+            ProcessorResult r = SchedulabilityAnalysis.analyse(name, policy, list);
+            List<String> notes = new ArrayList<>();
+            if (policy == SchedulingPolicy.FIXED_PRIORITY) {
+                notes.add("scheduled as the generated runtime does: one real-time thread per timed release at its rank"
+                        + " (SCHED_FIFO, SCHED_RR for round robin), reactions on non-real-time worker threads below them;"
+                        + " the verdict holds when the program runs with real-time priorities (not with --no-realtime)");
+            } else {
+                notes.add("the processor is declared " + element.getSchedPolicy().getLiteral() + ": the verdict is for a platform"
+                        + " scheduling it so, while the generated C++ runtime schedules by fixed priorities");
+            }
+            notes.add("every task released together (start dates and offsets ignored): the worst case");
+            if (!aperiodic.isEmpty()) {
+                r = withoutLevelZero(r, policy, aperiodic);
+                notes.add("aperiodic reactions (" + String.join(", ", aperiodic.stream().map(Exclusion::label).toList())
+                        + ") share this processor below the real-time ranks; their load is unbounded");
+            }
+            return new ProcessorTiming(name, element, r, tasks, notes);
+        }
+    }
+
+    /**
+     * The tasks that aperiodic work can delay without bound lose their verdict: under fixed priorities
+     * those analysed at priority 0 (reactions, and releases sharing a lock with one); under any other
+     * policy all of them. A proven miss stays a miss.
+     */
+    private static ProcessorResult withoutLevelZero(ProcessorResult r, SchedulingPolicy policy, List<Exclusion> aperiodic) {
+        String who = String.join(", ", aperiodic.stream().map(Exclusion::label).toList());
+        List<TaskResult> tasks = new ArrayList<>();
+        Verdict verdict = Verdict.MEETS;
+        List<Task> all = r.tasks().stream().map(TaskResult::task).toList();
+        for (TaskResult t : r.tasks()) {
+            boolean exposed = policy != SchedulingPolicy.FIXED_PRIORITY
+                    || org.rsaml.analysis.internal.ResponseTimes.effectivePriority(all, t.task()) <= 0;
+            if (exposed && t.verdict() == Verdict.MEETS) {
+                t = new TaskResult(t.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED,
+                        "not analysed: aperiodic reactions on this processor (" + who + ") can delay it without bound", null);
+            }
+            verdict = verdict.and(t.verdict());
+            tasks.add(t);
+        }
+        String explanation = verdict == r.verdict() ? r.explanation()
+                : r.explanation() + "; but aperiodic reactions (" + who + ") can delay the work below the real-time ranks";
+        return new ProcessorResult(r.processor(), r.policy(), tasks, r.utilisation(), r.bounds(), verdict, explanation, r.demand());
+    }
+}

@@ -1,0 +1,289 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis.internal;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.rsaml.analysis.Hop;
+import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.ProcessorTiming;
+import org.rsaml.analysis.TaskResult;
+import org.rsaml.analysis.TaskSource;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.generator.plan.ExecutionPlan;
+import org.rsaml.generator.plan.ExecutionPlan.Flow;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.generator.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.model.Actuator;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.LatencyKind;
+import org.rsaml.model.LatencyRequirement;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.Sensor;
+import org.rsaml.model.TimeUnit;
+import org.rsaml.model.support.RsamlLabels;
+
+/**
+ * End-to-end latency along every path of connections, under the runtime's communication: a module
+ * with timed releases samples the latest value at its next release (it waits up to one period, then
+ * takes its worst-case response time); a sporadic reacting module starts on the arrival (it may skip
+ * an arrival within its minimum interval, so it waits up to that interval); an aperiodic one has no
+ * bound. Delivery between modules is a memory write in one process and counts as 0. The maximum data
+ * age adds the period of the last stage, whose output stays in place until replaced.
+ */
+public final class Latencies {
+
+    /** Paths examined per requirement before giving up (said so, never a silent pass). */
+    static final int MAX_PATHS = 100_000;
+
+    private Latencies() {
+    }
+
+    /** A stage: how long data can take through a module, or unbounded (hop null) and why. */
+    private record Stage(Hop hop, long periodNs, String unbounded) {
+    }
+
+    public static List<LatencyResult> analyse(ExecutionPlan plan, List<LatencyRequirement> requirements, List<ProcessorTiming> processors) {
+        if (requirements.isEmpty()) {
+            return List.of();
+        }
+        Map<String, List<TaskResult>> byModule = new HashMap<>();
+        Map<String, List<TaskSource>> sourcesByModule = new HashMap<>();
+        for (ProcessorTiming p : processors) {
+            for (int i = 0; i < p.sources().size(); i++) {
+                TaskSource s = p.sources().get(i);
+                byModule.computeIfAbsent(s.task().group(), k -> new ArrayList<>()).add(p.result().tasks().get(i));
+                sourcesByModule.computeIfAbsent(s.task().group(), k -> new ArrayList<>()).add(s);
+            }
+        }
+        Map<PlannedModule, Stage> stages = new HashMap<>();
+        for (PlannedModule m : plan.modules()) {
+            stages.put(m, stage(m, byModule.getOrDefault(m.qualifiedName(), List.of()),
+                    sourcesByModule.getOrDefault(m.qualifiedName(), List.of())));
+        }
+        List<LatencyResult> results = new ArrayList<>();
+        for (LatencyRequirement r : requirements) {
+            results.add(new Search(plan, stages, r).run());
+        }
+        return results;
+    }
+
+    private static Stage stage(PlannedModule m, List<TaskResult> results, List<TaskSource> sources) {
+        Stage best = null;
+        for (int i = 0; i < results.size(); i++) {
+            TaskResult t = results.get(i);
+            boolean reaction = "reaction".equals(sources.get(i).kind());
+            if (t.responseTime().isEmpty()) {
+                return new Stage(null, 0, m.qualifiedName() + " has no bounded response time (" + t.explanation() + ")");
+            }
+            long r = t.responseTime().getAsLong();
+            long wait = t.task().period();
+            String how = reaction
+                    ? "reacts to the arrival (may skip arrivals within its minimum interval of " + Durations.format(wait) + ")"
+                    : "samples the latest value at its next release of " + t.task().name() + " (every " + Durations.format(wait) + ")";
+            Stage s = new Stage(new Hop(m.qualifiedName(), how, wait, r), t.task().period(), null);
+            if (best == null || s.hop().totalNs() > best.hop().totalNs()) {
+                best = s;
+            }
+        }
+        if (m.reactive() && m.minIntervalNs() == 0) {
+            return new Stage(null, 0, m.qualifiedName() + " reacts aperiodically: its response time has no bound");
+        }
+        if (best == null) {
+            return new Stage(null, 0, m.qualifiedName() + " is never activated");
+        }
+        return best;
+    }
+
+    private static final class Search {
+        final ExecutionPlan plan;
+        final Map<PlannedModule, Stage> stages;
+        final LatencyRequirement requirement;
+        final Set<PlannedModule> visited = new HashSet<>();
+        final List<Hop> hops = new ArrayList<>();
+        int paths;
+        long worstReaction = -1;
+        long worstAge = -1;
+        List<Hop> worstPath = List.of();
+        String unbounded;
+        Actuator actuator;
+        EntryPort entry;
+
+        Search(ExecutionPlan plan, Map<PlannedModule, Stage> stages, LatencyRequirement requirement) {
+            this.plan = plan;
+            this.stages = stages;
+            this.requirement = requirement;
+        }
+
+        LatencyResult run() {
+            String name = RsamlLabels.name(requirement);
+            String from = label(requirement.getSource());
+            String to = label(requirement.getTarget());
+            boolean age = requirement.getKind() == LatencyKind.DATA_AGE;
+            TimeUnit unit = requirement.getTimeUnit() == null ? TimeUnit.MS : requirement.getTimeUnit();
+            double max = requirement.getMaxLatency();
+            if (!Double.isFinite(max) || max <= 0 || max * unit.getValue() > ExecutionPlan.MAX_TIME_NS) {
+                return fail(name, from, to, 0, age, "maxLatency " + RsamlLabels.number(max) + " " + unit.getLiteral()
+                        + " is not a positive time generated code can count: give the longest latency allowed");
+            }
+            long maxNs = Math.round(max * unit.getValue());
+            if (requirement.getTarget() instanceof Actuator a) {
+                actuator = a;
+            } else if (requirement.getTarget() instanceof EntryPort e) {
+                entry = e;
+            } else {
+                return fail(name, from, to, maxNs, age, "the target " + to + " is neither an actuator nor an entry port: choose one");
+            }
+            if (requirement.getSource() instanceof Sensor s) {
+                for (PlannedModule m : plan.modules()) {
+                    if (m.module().getSensors().contains(s)) {
+                        Stage st = stages.get(m);
+                        if (st.hop() != null && m.reactive() && m.releases().isEmpty()) {
+                            st = new Stage(null, 0, m.qualifiedName() + " reacts to data only: reading sensor " + from
+                                    + " does not start it, so nothing bounds when it reads the sensor");
+                        }
+                        enter(m, st);
+                    }
+                }
+            } else if (requirement.getSource() instanceof OutputPort p && plan.port(p) != null) {
+                PlannedPort port = plan.port(p);
+                visited.add(port.module());
+                follow(port.module(), port, stages.get(port.module()).periodNs());
+                visited.remove(port.module());
+            } else {
+                return fail(name, from, to, maxNs, age, "the source " + from + " is neither a sensor nor an output port of a module: choose one");
+            }
+            Verdict verdict;
+            String explanation;
+            long bound = age ? worstAge : worstReaction;
+            String what = age ? "maximum data age" : "worst-case reaction time";
+            if (paths > MAX_PATHS) {
+                verdict = Verdict.NOT_ANALYSED;
+                explanation = "not analysed: more than " + MAX_PATHS + " paths from " + from + " to " + to;
+            } else if (paths == 0) {
+                verdict = Verdict.MISSES;
+                explanation = "no path of connections leads from " + from + " to " + to + ": the data never arrives";
+            } else if (bound > maxNs) {
+                verdict = Verdict.MISSES;
+                explanation = "the " + what + " can reach " + Durations.format(bound) + ", more than " + Durations.format(maxNs);
+            } else if (unbounded != null) {
+                verdict = Verdict.NOT_ANALYSED;
+                explanation = "not analysed: " + unbounded;
+            } else {
+                verdict = Verdict.MEETS;
+                explanation = "the " + what + " is at most " + Durations.format(bound) + " over " + paths + " path"
+                        + (paths == 1 ? "" : "s") + ", within " + Durations.format(maxNs);
+            }
+            return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, worstReaction, worstAge, worstPath, Math.min(paths,
+                    MAX_PATHS), explanation);
+        }
+
+        private LatencyResult fail(String name, String from, String to, long maxNs, boolean age, String why) {
+            return new LatencyResult(requirement, name, from, to, maxNs, age, Verdict.NOT_ANALYSED, -1, -1, List.of(), 0,
+                    "not analysed: " + why);
+        }
+
+        /** Data reaches module m, which takes it through its stage st. */
+        private void enter(PlannedModule m, Stage st) {
+            if (paths > MAX_PATHS || !visited.add(m)) {
+                return;
+            }
+            if (st.hop() == null) {
+                // a path through here exists but has no bound
+                if (reachesTarget(m)) {
+                    paths++;
+                    if (unbounded == null) {
+                        unbounded = st.unbounded();
+                    }
+                }
+                visited.remove(m);
+                return;
+            }
+            hops.add(st.hop());
+            if (actuator != null && m.module().getActuators().contains(actuator)) {
+                record(st.periodNs());
+            }
+            follow(m, null, st.periodNs());
+            hops.remove(hops.size() - 1);
+            visited.remove(m);
+        }
+
+        private void follow(PlannedModule m, PlannedPort only, long period) {
+            for (PlannedPort out : m.outputs()) {
+                if (only != null && out != only) {
+                    continue;
+                }
+                for (Flow f : out.outgoing()) {
+                    if (entry != null && f.target().port() == entry) {
+                        record(period);
+                    }
+                    PlannedModule next = f.target().module();
+                    if (!visited.contains(next)) {
+                        enter(next, stages.get(next));
+                    }
+                }
+            }
+        }
+
+        /** Whether the target can be reached from m at all, ignoring bounds (for honest NOT_ANALYSED). */
+        private boolean reachesTarget(PlannedModule start) {
+            Set<PlannedModule> seen = new HashSet<>();
+            List<PlannedModule> todo = new ArrayList<>(List.of(start));
+            while (!todo.isEmpty()) {
+                PlannedModule m = todo.remove(todo.size() - 1);
+                if (!seen.add(m)) {
+                    continue;
+                }
+                if (actuator != null && m.module().getActuators().contains(actuator)) {
+                    return true;
+                }
+                for (PlannedPort out : m.outputs()) {
+                    for (Flow f : out.outgoing()) {
+                        if (entry != null && f.target().port() == entry) {
+                            return true;
+                        }
+                        todo.add(f.target().module());
+                    }
+                }
+            }
+            return false;
+        }
+
+        private void record(long lastPeriod) {
+            paths++;
+            long reaction = 0;
+            for (Hop h : hops) {
+                reaction = Math.addExact(reaction, h.totalNs());
+            }
+            long age = Math.addExact(reaction, lastPeriod);
+            if (reaction > worstReaction || age > worstAge) {
+                boolean ageKind = requirement.getKind() == LatencyKind.DATA_AGE;
+                if ((ageKind ? age > worstAge : reaction > worstReaction)) {
+                    worstPath = List.copyOf(hops);
+                }
+                worstReaction = Math.max(worstReaction, reaction);
+                worstAge = Math.max(worstAge, age);
+            }
+        }
+
+        private String label(Object element) {
+            if (element instanceof Sensor s) {
+                return "sensor '" + RsamlLabels.name(s) + "'";
+            }
+            if (element instanceof Actuator a) {
+                return "actuator '" + RsamlLabels.name(a) + "'";
+            }
+            if (element instanceof org.rsaml.model.Port p && plan.port(p) != null) {
+                return plan.port(p).qualifiedName();
+            }
+            return element == null ? "nothing" : RsamlLabels.describe((org.eclipse.emf.ecore.EObject) element);
+        }
+    }
+}
