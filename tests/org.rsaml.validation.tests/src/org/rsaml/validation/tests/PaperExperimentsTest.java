@@ -61,7 +61,7 @@ class PaperExperimentsTest {
 
     @ParameterizedTest
     @ValueSource(strings = { "exp1-hybrid.rsaml", "exp3-task-interpreter.rsaml", "subsumption-brooks.rsaml",
-            "hierarchical-nasrem.rsaml" })
+            "hierarchical-nasrem.rsaml", "mobile-base-latency.rsaml", "mobile-base-latency-missed.rsaml" })
     void cleanExamplesHaveNoFinding(String name) throws Exception {
         List<Finding> findings = RsamlModelValidator.validate(Paths.example(name));
         assertEquals(List.of(), findings.stream().map(Finding::toString).collect(Collectors.toList()));
@@ -73,7 +73,8 @@ class PaperExperimentsTest {
             List<String> names = files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted()
                     .collect(Collectors.toList());
             assertEquals(List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "exp3-task-interpreter.rsaml",
-                    "hierarchical-nasrem.rsaml", "subsumption-brooks.rsaml"), names,
+                    "hierarchical-nasrem.rsaml", "mobile-base-latency-missed.rsaml", "mobile-base-latency.rsaml",
+                    "subsumption-brooks.rsaml"), names,
                     "a new example needs an expectation here");
         }
         assertEquals(Severity.ERROR, org.rsaml.validation.Rules.byId("RSA-08").orElseThrow().severity());

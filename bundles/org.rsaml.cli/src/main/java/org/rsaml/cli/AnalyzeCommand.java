@@ -1,0 +1,122 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.Callable;
+
+import org.rsaml.analysis.ArchitectureTiming;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.TimingModelException;
+import org.rsaml.analysis.TimingSvg;
+import org.rsaml.analysis.TimingText;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.cli.report.ExitCodes;
+import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.ModelLoader;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.ParentCommand;
+import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.CommandSpec;
+
+/** {@code rsaml analyze MODEL...}: schedulability per processor and end-to-end latency, with witnesses. */
+@Command(name = "analyze", mixinStandardHelpOptions = true, sortOptions = false,
+        description = { "Analyses the timing of models as the generated runtime runs them (see docs/timing.md): per processor",
+                "the worst-case response time of every task, utilisation and bounds; per latency requirement the worst path.",
+                "Every verdict is 'meets' (proven), 'MISSES' (with a witness) or 'not analysed' (with the reason)." },
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = { "0:no deadline or requirement can be missed", "1:a deadline or a latency requirement can be missed",
+                "2:usage error, a model that cannot be read or analysed, or output that cannot be written" })
+final class AnalyzeCommand implements Callable<Integer> {
+
+    enum Format { text, json }
+
+    @Parameters(arity = "1..*", paramLabel = "MODEL", description = "Model files and directories.")
+    List<Path> paths;
+
+    @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
+            description = "Format written to standard output: text or json (default: ${DEFAULT-VALUE}).")
+    Format format;
+
+    @Option(names = "--timeline", paramLabel = "DIR",
+            description = "Also write an SVG timeline of each missed deadline's witness into DIR.")
+    Path timeline;
+
+    @ParentCommand
+    RsamlCli parent;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        int code = ExitCodes.OK;
+        JsonArray json = new JsonArray();
+        for (ModelFiles.Input input : ModelFiles.select(parent.workingDirectory, paths)) {
+            if (input.unusable() != null) {
+                err.println(input.unusable());
+                code = Math.max(code, ExitCodes.INPUT_ERROR);
+                continue;
+            }
+            ArchitectureTiming timing;
+            try {
+                LoadedModel model = ModelLoader.load(input.path(), input.displayName());
+                timing = TimingAnalysis.analyse(model.architecture());
+            } catch (ModelLoadException e) {
+                err.println(e);
+                code = Math.max(code, ExitCodes.INPUT_ERROR);
+                continue;
+            } catch (UnplannableException e) {
+                err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                code = Math.max(code, ExitCodes.INPUT_ERROR);
+                continue;
+            } catch (TimingModelException e) {
+                err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                code = Math.max(code, ExitCodes.INPUT_ERROR);
+                continue;
+            }
+            if (format == Format.text) {
+                out.print(TimingText.render(input.displayName(), timing));
+            } else {
+                JsonObject o = TimingJson.of(timing);
+                o.addProperty("file", input.displayName());
+                json.add(o);
+            }
+            if (timeline != null) {
+                try {
+                    for (Path written : TimingSvg.write(parent.workingDirectory.resolve(timeline), timing)) {
+                        err.println("timeline written: " + ModelFiles.display(parent.workingDirectory.relativize(written)));
+                    }
+                } catch (IOException e) {
+                    err.println(ModelFiles.display(timeline) + ": error: cannot write the timeline: " + e.getMessage());
+                    code = Math.max(code, ExitCodes.INPUT_ERROR);
+                }
+            }
+            if (timing.verdict() == Verdict.MISSES && code == ExitCodes.OK) {
+                code = ExitCodes.FINDINGS;
+            }
+        }
+        if (format == Format.json) {
+            out.println(new com.google.gson.GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(json));
+        }
+        out.flush();
+        err.flush();
+        return code;
+    }
+}

@@ -1,0 +1,101 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.maven;
+
+import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.apache.maven.plugin.AbstractMojo;
+import org.apache.maven.plugin.MojoExecutionException;
+import org.apache.maven.plugin.MojoFailureException;
+import org.apache.maven.plugin.logging.Log;
+import org.apache.maven.plugins.annotations.LifecyclePhase;
+import org.apache.maven.plugins.annotations.Mojo;
+import org.apache.maven.plugins.annotations.Parameter;
+import org.rsaml.analysis.ArchitectureTiming;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.TimingModelException;
+import org.rsaml.analysis.TimingSvg;
+import org.rsaml.analysis.TimingText;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.ModelLoader;
+
+/**
+ * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
+ * build fails when a deadline or a latency requirement can be missed; the verdicts, with their
+ * witnesses, are logged.
+ */
+@Mojo(name = "analyze", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
+public class AnalyzeMojo extends AbstractMojo {
+
+    /** The {@code .rsaml} models to analyse. */
+    @Parameter(property = "rsaml.models", required = true)
+    List<File> models = new ArrayList<>();
+
+    /** A directory for an SVG timeline of each missed deadline's witness (none when not set). */
+    @Parameter(property = "rsaml.timeline")
+    File timeline;
+
+    /** Log the verdicts but do not fail the build on a miss. */
+    @Parameter(property = "rsaml.analysis.failOnMiss", defaultValue = "true")
+    boolean failOnMiss;
+
+    /** Skips the analysis. */
+    @Parameter(property = "rsaml.skip", defaultValue = "false")
+    boolean skip;
+
+    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
+    File baseDirectory;
+
+    @Override
+    public void execute() throws MojoExecutionException, MojoFailureException {
+        Log log = getLog();
+        if (skip) {
+            log.info("Skipping RsaML timing analysis (rsaml.skip)");
+            return;
+        }
+        List<String> missed = new ArrayList<>();
+        for (File model : models) {
+            String shown = ProjectPaths.relative(baseDirectory.toPath(), model.toPath());
+            ArchitectureTiming timing;
+            try {
+                timing = TimingAnalysis.analyse(ModelLoader.load(model.toPath(), shown).architecture());
+            } catch (ModelLoadException e) {
+                throw new MojoExecutionException(e.toString());
+            } catch (UnplannableException e) {
+                throw new MojoExecutionException(shown + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+            } catch (TimingModelException e) {
+                throw new MojoExecutionException(shown + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+            }
+            for (String line : TimingText.render(shown, timing).split("\n")) {
+                if (timing.verdict() == Verdict.MISSES && line.contains("MISSES")) {
+                    log.error(line);
+                } else {
+                    log.info(line);
+                }
+            }
+            if (timeline != null) {
+                try {
+                    for (Path written : TimingSvg.write(timeline.toPath(), timing)) {
+                        log.info("RsaML: timeline written: " + ProjectPaths.relative(baseDirectory.toPath(), written));
+                    }
+                } catch (java.io.IOException e) {
+                    throw new MojoExecutionException("cannot write the timeline into " + timeline + ": " + e.getMessage());
+                }
+            }
+            if (timing.verdict() == Verdict.MISSES) {
+                missed.add(shown);
+            }
+        }
+        if (!missed.isEmpty() && failOnMiss) {
+            throw new MojoFailureException("RsaML timing: a deadline or a latency requirement can be missed in " + String.join(", ", missed));
+        }
+    }
+}

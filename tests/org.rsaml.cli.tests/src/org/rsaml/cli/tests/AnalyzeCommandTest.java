@@ -1,0 +1,80 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+
+/** {@code rsaml analyze}: verdicts with witnesses, exit codes, JSON and SVG timelines. */
+class AnalyzeCommandTest {
+
+    @Test
+    void aHoldingRequirementExitsZeroWithTheTableAndTheWorstPath() {
+        Cli.Result r = Cli.run("analyze", "examples/mobile-base-latency.rsaml");
+        assertEquals(0, r.code(), r.toString());
+        assertTrue(r.out().contains("processor core0 (preemptive fixed priority): 2 tasks, utilisation 0.4000"), r.out());
+        assertTrue(r.out().matches("(?s).*task\\s+period\\s+deadline\\s+cost\\s+priority\\s+WCRT\\s+slack\\s+verdict.*"), r.out());
+        assertTrue(r.out().matches("(?s).*navigation/pathPlanner\\.plan\\s+100 ms\\s+100 ms\\s+30 ms\\s+\\d+\\s+38 ms\\s+62 ms\\s+meets.*"),
+                r.out());
+        assertTrue(r.out().contains("latency requirement 'scanToWheels' from sensor 'laserScanner' to actuator 'wheelMotors'"), r.out());
+        assertTrue(r.out().contains("the worst-case reaction time is at most 37 ms over 1 path, within 50 ms"), r.out());
+        assertTrue(r.out().contains("examples/mobile-base-latency.rsaml: timing meets"), r.out());
+    }
+
+    @Test
+    void aMissedRequirementExitsOne() {
+        Cli.Result r = Cli.run("analyze", "examples/mobile-base-latency-missed.rsaml");
+        assertEquals(1, r.code(), r.toString());
+        assertTrue(r.out().contains("verdict: MISSES: the worst-case reaction time can reach 57 ms, more than 50 ms"), r.out());
+    }
+
+    @Test
+    void aMissedDeadlineHasItsWitnessAsTextJsonAndTimeline(@TempDir Path tmp) throws Exception {
+        Path model = tmp.resolve("overloaded.rsaml");
+        // the detector now takes 12 ms of every 20 and the planner is due within 60 ms: it completes at 78 ms
+        Files.writeString(model, Files.readString(Cli.ROOT.resolve("examples/mobile-base-latency.rsaml"))
+                .replace("period=\"20.0\" delay=\"20.0\" execDuration=\"4.0\"", "period=\"20.0\" delay=\"20.0\" execDuration=\"12.0\"")
+                .replace("period=\"100.0\" delay=\"100.0\"", "period=\"100.0\" delay=\"60.0\""));
+        Cli.Result text = Cli.runIn(tmp, "analyze", "--timeline", "svg", "overloaded.rsaml");
+        assertEquals(1, text.code(), text.toString());
+        assertTrue(text.out().contains("witness: critical instant at 0; job 1 of navigation/pathPlanner.plan"), text.out());
+        try (Stream<Path> svgs = Files.list(tmp.resolve("svg"))) {
+            List<Path> files = svgs.toList();
+            assertEquals(1, files.size(), files.toString());
+            String svg = Files.readString(files.get(0));
+            assertTrue(svg.startsWith("<svg xmlns=\"http://www.w3.org/2000/svg\""), svg);
+            assertTrue(svg.contains("navigation/pathPlanner.plan misses its deadline"), svg);
+        }
+
+        Cli.Result json = Cli.runIn(tmp, "analyze", "--format", "json", "overloaded.rsaml");
+        assertEquals(1, json.code(), json.toString());
+        JsonArray files = JsonParser.parseString(json.out()).getAsJsonArray();
+        JsonObject core1 = files.get(0).getAsJsonObject().getAsJsonArray("processors").get(1).getAsJsonObject();
+        assertEquals("misses", core1.get("verdict").getAsString());
+        JsonObject plan = core1.getAsJsonArray("tasks").get(1).getAsJsonObject();
+        assertEquals("navigation/pathPlanner.plan", plan.get("task").getAsString());
+        assertEquals("misses", plan.get("verdict").getAsString());
+        assertTrue(plan.getAsJsonObject("witness").getAsJsonObject("preemptions").get("navigation/obstacleDetector.detect").getAsLong() > 0);
+    }
+
+    @Test
+    void aModelThatCannotBeReadExitsTwo() {
+        Cli.Result r = Cli.run("analyze", "examples/no-such-model.rsaml");
+        assertEquals(2, r.code(), r.toString());
+        assertTrue(r.err().contains("no-such-model.rsaml"), r.err());
+    }
+}
