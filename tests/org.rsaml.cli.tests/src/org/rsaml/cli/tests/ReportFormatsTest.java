@@ -59,7 +59,7 @@ class ReportFormatsTest {
         JsonObject doc = JsonParser.parseString(r.out()).getAsJsonObject();
         assertEquals(System.getProperty("rsaml.version"), doc.getAsJsonObject("tool").get("version").getAsString());
         JsonArray files = doc.getAsJsonArray("files");
-        assertEquals(6, files.size());
+        assertEquals(8, files.size());
         JsonObject exp2 = find(files, "examples/exp2-defects.rsaml");
         assertEquals("findings", exp2.get("status").getAsString());
         JsonArray findings = exp2.getAsJsonArray("findings");
@@ -150,7 +150,7 @@ class ReportFormatsTest {
         try (InputStreamReader in = new InputStreamReader(Files.newInputStream(report), StandardCharsets.UTF_8)) {
             suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(in);
         }
-        assertEquals(6, suites.size());
+        assertEquals(8, suites.size());
         ReportTestSuite exp2 = suites.stream().filter(s -> s.getFullClassName().equals("examples/exp2-defects.rsaml")
                 || s.getName().contains("exp2-defects")).findFirst().orElseThrow(() -> new AssertionError(suites));
         assertEquals(Rules.all().size(), exp2.getNumberOfTests());

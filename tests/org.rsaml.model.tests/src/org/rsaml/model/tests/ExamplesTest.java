@@ -63,9 +63,10 @@ class ExamplesTest {
     }
 
     @Test
-    void theFiveExamplesAreThere() throws Exception {
+    void theExamplesAreThere() throws Exception {
         assertEquals(List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "exp3-task-interpreter.rsaml",
-                "hierarchical-nasrem.rsaml", "subsumption-brooks.rsaml"), exampleFiles().collect(Collectors.toList()));
+                "hierarchical-nasrem.rsaml", "mobile-base-latency-missed.rsaml", "mobile-base-latency.rsaml",
+                "subsumption-brooks.rsaml"), exampleFiles().collect(Collectors.toList()));
     }
 
     private static Module module(Architecture a, String name) {
