@@ -77,7 +77,7 @@ class ReportFormatsTest {
         assertEquals("unreadable", empty.get("status").getAsString());
         assertTrue(empty.getAsJsonObject("error").get("message").getAsString().startsWith("the file is empty"));
         JsonObject summary = doc.getAsJsonObject("summary");
-        assertEquals(5, summary.get("files").getAsInt());
+        assertEquals(7, summary.get("files").getAsInt());
         assertEquals(5, summary.get("errors").getAsInt());
         assertEquals(1, summary.get("unreadable").getAsInt());
         assertEquals(2, summary.get("exitCode").getAsInt());
@@ -167,7 +167,7 @@ class ReportFormatsTest {
         assertEquals(1, binary.getNumberOfTests());
         assertTrue(binary.getTestCases().get(0).hasError());
         long cleanSuites = suites.stream().filter(s -> s.getNumberOfFailures() == 0 && s.getNumberOfErrors() == 0).count();
-        assertEquals(4, cleanSuites);
+        assertEquals(6, cleanSuites);
     }
 
     @Test
