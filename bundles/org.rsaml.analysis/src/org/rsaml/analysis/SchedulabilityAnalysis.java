@@ -56,28 +56,7 @@ public final class SchedulabilityAnalysis {
         if (policy == SchedulingPolicy.FIXED_PRIORITY && ResponseTimes.anyBlockedByLock(tasks)) {
             lockGroups(tasks, byIndex);
         } else if (policy == SchedulingPolicy.FIXED_PRIORITY) {
-            // highest first, so that each task's first-job window seeds the next one's iteration
-            int[] effective = new int[tasks.size()];
-            List<Integer> order = new ArrayList<>();
-            for (int i = 0; i < tasks.size(); i++) {
-                effective[i] = ResponseTimes.effectivePriority(tasks, tasks.get(i));
-                order.add(i);
-            }
-            order.sort((a, b) -> Integer.compare(effective[b], effective[a]));
-            List<long[]> done = new ArrayList<>(); // {effective priority, first-job window}
-            long[] window = new long[1];
-            for (int i : order) {
-                Task t = tasks.get(i);
-                long seed = 0;
-                for (int k = done.size() - 1; k >= 0; k--) {
-                    if (done.get(k)[0] > t.priority()) {
-                        seed = Math.max(0, done.get(k)[1]);
-                        break;
-                    }
-                }
-                byIndex[i] = ResponseTimes.preemptive(tasks, t, effective[i], seed, window);
-                done.add(new long[] { effective[i], window[0] });
-            }
+            preemptive(tasks, byIndex);
         } else {
             for (int i = 0; i < tasks.size(); i++) {
                 byIndex[i] = ResponseTimes.nonPreemptive(tasks, tasks.get(i));
@@ -98,6 +77,75 @@ public final class SchedulabilityAnalysis {
             default -> method + ": " + open + " of " + tasks.size() + " tasks not analysed";
         };
         return new ProcessorResult(processor, policy, results, u.value, bounds, verdict, explanation, null);
+    }
+
+    /**
+     * Preemptive fixed priorities without lock waits, highest priority first. The interfering tasks
+     * are kept as one entry per (period, jitter), built up as the priority falls: each task then costs
+     * an iteration over the distinct periods, not over all tasks; and the first-job window of the
+     * previous priority level seeds the next one's iteration (it is a lower bound of it).
+     */
+    private static void preemptive(List<Task> tasks, TaskResult[] byIndex) {
+        int n = tasks.size();
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (a, b) -> Integer.compare(tasks.get(b).priority(), tasks.get(a).priority()));
+        java.util.Map<Long, Integer> slot = new java.util.HashMap<>();
+        long[] period = new long[n];
+        long[] cost = new long[n];
+        long[] jitter = new long[n];
+        int[] entryOf = new int[n];
+        int entries = 0;
+        long seed = 0;
+        long[] window = new long[1];
+        for (int g = 0; g < n;) {
+            int priority = tasks.get(order[g]).priority();
+            int end = g;
+            while (end < n && tasks.get(order[end]).priority() == priority) {
+                end++;
+            }
+            // the whole level first: tasks of equal priority delay each other
+            for (int k = g; k < end; k++) {
+                Task t = tasks.get(order[k]);
+                Integer e = t.jitter() == 0 ? slot.get(t.period()) : null;
+                if (e == null) {
+                    e = entries++;
+                    period[e] = t.period();
+                    jitter[e] = t.jitter();
+                    if (t.jitter() == 0) {
+                        slot.put(t.period(), e);
+                    }
+                }
+                cost[e] = Math.addExact(cost[e], t.cost());
+                entryOf[order[k]] = e;
+            }
+            long levelWindow = -1;
+            for (int k = g; k < end; k++) {
+                int i = order[k];
+                Task t = tasks.get(i);
+                cost[entryOf[i]] -= t.cost();
+                int lowest = priority;
+                byIndex[i] = ResponseTimes.preemptive(t, priority, period, cost, jitter, entries, seed, window,
+                        () -> hp(tasks, t, lowest));
+                cost[entryOf[i]] += t.cost();
+                levelWindow = Math.max(levelWindow, window[0]);
+            }
+            // the next level's first job needs at least this level's window beyond its own cost
+            seed = Math.max(0, levelWindow);
+            g = end;
+        }
+    }
+
+    private static List<Task> hp(List<Task> tasks, Task task, int priority) {
+        List<Task> hp = new ArrayList<>();
+        for (Task t : tasks) {
+            if (t != task && t.priority() >= priority) {
+                hp.add(t);
+            }
+        }
+        return hp;
     }
 
     /** Rounds of the jitter iteration for lock groups before giving up (said so). */

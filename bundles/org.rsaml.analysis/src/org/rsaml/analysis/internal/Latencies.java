@@ -115,6 +115,8 @@ public final class Latencies {
         String unbounded;
         Actuator actuator;
         EntryPort entry;
+        /** The modules from which the target can be reached: the search goes nowhere else. */
+        Set<PlannedModule> reaching;
 
         Search(ExecutionPlan plan, Map<PlannedModule, Stage> stages, LatencyRequirement requirement) {
             this.plan = plan;
@@ -141,9 +143,10 @@ public final class Latencies {
             } else {
                 return fail(name, from, to, maxNs, age, "the target " + to + " is neither an actuator nor an entry port: choose one");
             }
+            reaching = reaching();
             if (requirement.getSource() instanceof Sensor s) {
                 for (PlannedModule m : plan.modules()) {
-                    if (m.module().getSensors().contains(s)) {
+                    if (m.module().getSensors().contains(s) && reaching.contains(m)) {
                         Stage st = stages.get(m);
                         if (st.hop() != null && m.reactive() && m.releases().isEmpty()) {
                             st = new Stage(null, 0, m.qualifiedName() + " reacts to data only: reading sensor " + from
@@ -196,12 +199,10 @@ public final class Latencies {
                 return;
             }
             if (st.hop() == null) {
-                // a path through here exists but has no bound
-                if (reachesTarget(m)) {
-                    paths++;
-                    if (unbounded == null) {
-                        unbounded = st.unbounded();
-                    }
+                // a path through here reaches the target but has no bound
+                paths++;
+                if (unbounded == null) {
+                    unbounded = st.unbounded();
                 }
                 visited.remove(m);
                 return;
@@ -225,35 +226,38 @@ public final class Latencies {
                         record(period);
                     }
                     PlannedModule next = f.target().module();
-                    if (!visited.contains(next)) {
+                    if (!visited.contains(next) && reaching.contains(next)) {
                         enter(next, stages.get(next));
                     }
                 }
             }
         }
 
-        /** Whether the target can be reached from m at all, ignoring bounds (for honest NOT_ANALYSED). */
-        private boolean reachesTarget(PlannedModule start) {
-            Set<PlannedModule> seen = new HashSet<>();
-            List<PlannedModule> todo = new ArrayList<>(List.of(start));
-            while (!todo.isEmpty()) {
-                PlannedModule m = todo.remove(todo.size() - 1);
-                if (!seen.add(m)) {
-                    continue;
+        /** The modules with a path of flows to the target (the target's own module included). */
+        private Set<PlannedModule> reaching() {
+            Map<PlannedModule, List<PlannedModule>> upstream = new HashMap<>();
+            List<PlannedModule> todo = new ArrayList<>();
+            for (Flow f : plan.flows()) {
+                upstream.computeIfAbsent(f.target().module(), k -> new ArrayList<>()).add(f.source().module());
+                if (entry != null && f.target().port() == entry) {
+                    todo.add(f.source().module());
                 }
-                if (actuator != null && m.module().getActuators().contains(actuator)) {
-                    return true;
-                }
-                for (PlannedPort out : m.outputs()) {
-                    for (Flow f : out.outgoing()) {
-                        if (entry != null && f.target().port() == entry) {
-                            return true;
-                        }
-                        todo.add(f.target().module());
+            }
+            if (actuator != null) {
+                for (PlannedModule m : plan.modules()) {
+                    if (m.module().getActuators().contains(actuator)) {
+                        todo.add(m);
                     }
                 }
             }
-            return false;
+            Set<PlannedModule> seen = new HashSet<>();
+            while (!todo.isEmpty()) {
+                PlannedModule m = todo.remove(todo.size() - 1);
+                if (seen.add(m)) {
+                    todo.addAll(upstream.getOrDefault(m, List.of()));
+                }
+            }
+            return seen;
         }
 
         private void record(long lastPeriod) {

@@ -125,23 +125,40 @@ public final class ResponseTimes {
                 hp.add(t);
             }
         }
+        int n = hp.size();
+        long[] period = new long[n];
+        long[] cost = new long[n];
+        long[] jitter = new long[n];
+        for (int k = 0; k < n; k++) {
+            Task t = hp.get(k);
+            period[k] = t.period();
+            cost[k] = t.cost();
+            jitter[k] = t.jitter();
+        }
+        return preemptive(task, effective, period, cost, jitter, n, seed, firstWindow, () -> hp);
+    }
+
+    /**
+     * The same, with the interfering tasks given as (period, cost, jitter) entries; tasks of equal
+     * period and jitter may be merged into one entry with the sum of their costs, which keeps the
+     * iteration short for thousands of tasks with few distinct periods.
+     *
+     * @param interfering the interfering tasks themselves, asked for only for a miss's witness
+     */
+    public static TaskResult preemptive(Task task, int effective, long[] period, long[] cost, long[] jitter, int n, long seed,
+            long[] firstWindow, java.util.function.Supplier<List<Task>> interfering) {
+        if (firstWindow != null) {
+            firstWindow[0] = -1;
+        }
         Task analysed = effective == task.priority() ? task
                 : new Task(task.name(), task.period(), task.deadline(), task.cost(), effective, task.jitter(), task.group());
-        if (utilisationVersusOne(task, hp) > 0) {
-            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, levelOverload(task, hp), null);
+        if (levelVersusOne(task, period, cost, n) > 0) {
+            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, levelOverload(task, interfering.get()), null);
         }
         try {
-            int n = hp.size();
-            long[] period = new long[n];
-            long[] cost = new long[n];
-            long[] jitter = new long[n];
             long base = 0;
             for (int k = 0; k < n; k++) {
-                Task t = hp.get(k);
-                period[k] = t.period();
-                cost[k] = t.cost();
-                jitter[k] = t.jitter();
-                base = Math.addExact(base, t.cost());
+                base = Math.addExact(base, cost[k]);
             }
             long worst = -1;
             long worstJob = 0;
@@ -180,13 +197,32 @@ public final class ResponseTimes {
                     break;
                 }
             }
-            TaskResult r = result(analysed, worst, worstJob, hp, null, true);
+            TaskResult r = result(analysed, worst, worstJob, worst <= task.deadline() ? List.of() : interfering.get(), null, true);
             String lock = analysed == task ? ""
                     : " (waiting for its lock group '" + task.group() + "', as if at priority " + effective + ")";
             return new TaskResult(task, r.responseTime(), r.verdict(), r.explanation() + lock, r.witness());
         } catch (ArithmeticException e) {
             return notAnalysed(task, new Arith.TooLarge().getMessage());
         }
+    }
+
+    /** The utilisation of the task and the entries compared with 1, exactly near 1. */
+    static int levelVersusOne(Task task, long[] period, long[] cost, int n) {
+        double u = (double) task.cost() / task.period();
+        for (int k = 0; k < n; k++) {
+            u += (double) cost[k] / period[k];
+        }
+        if (u > 1 + 1e-9) {
+            return 1;
+        }
+        if (u < 1 - 1e-9) {
+            return -1;
+        }
+        Rational exact = Rational.of(task.cost(), task.period());
+        for (int k = 0; k < n; k++) {
+            exact = exact.plus(Rational.of(cost[k], period[k]));
+        }
+        return exact.compareTo(Rational.ONE);
     }
 
     /**

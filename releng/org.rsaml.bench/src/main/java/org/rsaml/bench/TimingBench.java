@@ -1,0 +1,194 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.bench;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.rsaml.analysis.ArchitectureTiming;
+import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.ProcessorResult;
+import org.rsaml.analysis.SchedulabilityAnalysis;
+import org.rsaml.analysis.Task;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.ArchitectureCategory;
+import org.rsaml.model.Connection;
+import org.rsaml.model.DataType;
+import org.rsaml.model.ElementType;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
+import org.rsaml.model.LatencyRequirement;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.Processor;
+import org.rsaml.model.RsamlFactory;
+import org.rsaml.model.SchedulingPolicy;
+
+/**
+ * Timing analysis figures: (1) one processor with N rate-monotonic tasks (random periods from a
+ * set dividing 1.2 s, utilisation 0.8) for N = 100, 1,000 and 10,000; (2) an architecture of M
+ * periodic modules on 4 processors, each module connected to the next and every 50th also three
+ * ahead, with 100 latency requirements each spanning 10 modules. Prints Markdown tables of medians.
+ */
+public final class TimingBench {
+
+    static final int RUNS = 5;
+    /** CPU time of this thread: on a shared machine wall time mostly measures the other processes. */
+    static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
+    static final long MS = 1_000_000L;
+    static final long[] PERIODS = { 5, 10, 20, 25, 40, 50, 100, 200, 300, 400, 600, 1200 };
+
+    public static void main(String[] args) throws Exception {
+        int modules = args.length > 0 ? Integer.parseInt(args[0].trim()) : 1000;
+        System.out.println("| tasks on one processor | analysis, CPU time (median of " + RUNS + ") | wall time | verdict |");
+        System.out.println("|---:|---:|---:|---|");
+        for (int n : new int[] { 100, 1_000, 10_000 }) {
+            List<Task> tasks = taskSet(n, new Random(n));
+            SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks); // JIT
+            long[] times = new long[RUNS];
+            long[] cpu = new long[RUNS];
+            ProcessorResult r = null;
+            for (int i = 0; i < RUNS; i++) {
+                long c0 = CPU.getCurrentThreadCpuTime();
+                long t0 = System.nanoTime();
+                r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks);
+                times[i] = System.nanoTime() - t0;
+                cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
+            }
+            System.out.printf("| %,d | %,d ms | %,d ms | %s (U = %s) |%n", n, GenerationBench.median(cpu) / MS, GenerationBench.median(times) / MS,
+                    r.verdict(), r.utilisationText());
+        }
+        Architecture a = architecture(modules, 100);
+        TimingAnalysis.analyse(a); // JIT
+        long[] times = new long[RUNS];
+        long[] cpu = new long[RUNS];
+        ArchitectureTiming timing = null;
+        for (int i = 0; i < RUNS; i++) {
+            long c0 = CPU.getCurrentThreadCpuTime();
+            long t0 = System.nanoTime();
+            timing = TimingAnalysis.analyse(a);
+            times[i] = System.nanoTime() - t0;
+            cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
+        }
+        int met = 0;
+        for (LatencyResult l : timing.latencies()) {
+            met += l.verdict() == Verdict.MEETS ? 1 : 0;
+        }
+        System.out.println();
+        System.out.println("| modules | processors | latency requirements | analysis incl. execution plan, CPU time (median of " + RUNS
+                + ") | wall time | verdict |");
+        System.out.println("|---:|---:|---:|---:|---:|---|");
+        System.out.printf("| %,d | %d | %d | %,d ms | %,d ms | %s (%d requirements met) |%n", modules, timing.processors().size(),
+                timing.latencies().size(), GenerationBench.median(cpu) / MS, GenerationBench.median(times) / MS, timing.verdict(), met);
+    }
+
+    /** n tasks, rate-monotonic priorities (distinct, ties by index), total utilisation about 0.8. */
+    static List<Task> taskSet(int n, Random random) {
+        List<Task> tasks = new ArrayList<>();
+        long[] periods = new long[n];
+        double[] weights = new double[n];
+        double sum = 0;
+        for (int i = 0; i < n; i++) {
+            periods[i] = PERIODS[random.nextInt(PERIODS.length)] * MS;
+            weights[i] = random.nextDouble();
+            sum += weights[i];
+        }
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (x, y) -> Long.compare(periods[y], periods[x]));
+        int[] priority = new int[n];
+        for (int rank = 0; rank < n; rank++) {
+            priority[order[rank]] = rank + 1;
+        }
+        for (int i = 0; i < n; i++) {
+            long cost = Math.max(1, (long) (0.8 * weights[i] / sum * periods[i]));
+            tasks.add(Task.implicit("t" + i, periods[i], cost, priority[i]));
+        }
+        return tasks;
+    }
+
+    /** m periodic modules in 4 layers on 4 processors; requirements from a module's output to the entry 10 modules on. */
+    static Architecture architecture(int m, int requirements) {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Architecture a = f.createArchitecture();
+        a.setName("timing");
+        a.setCategory(ArchitectureCategory.HYBRID);
+        a.setDeclaredLayers(4);
+        List<Layer> layers = new ArrayList<>();
+        List<Processor> processors = new ArrayList<>();
+        for (int l = 0; l < 4; l++) {
+            Layer layer = f.createLayer();
+            layer.setName("layer" + l);
+            layer.setLevel(l);
+            layer.setMaxExecTime(5.0);
+            a.getLayers().add(layer);
+            layers.add(layer);
+            Processor p = f.createProcessor();
+            p.setName("core" + l);
+            p.setCore(l);
+            a.getProcessors().add(p);
+            processors.add(p);
+        }
+        List<EntryPort> ins = new ArrayList<>();
+        List<OutputPort> outs = new ArrayList<>();
+        for (int i = 0; i < m; i++) {
+            Module module = f.createModule();
+            module.setName("m" + i);
+            module.setType(ElementType.REAL_TIME);
+            module.setExecType(ExecutionType.PERIODIC);
+            long period = 100 + 100 * (i % 4);
+            module.setPeriod(period);
+            module.setExecDuration(0.2);
+            layers.get(i * 4 / m).getModules().add(module);
+            processors.get(i % 4).getModules().add(module);
+            Function fn = f.createFunction();
+            fn.setName("step");
+            fn.setExecType(ExecutionType.PERIODIC);
+            fn.setPeriod(period);
+            fn.setExecDuration(0.2);
+            fn.setSchedPolicy(SchedulingPolicy.RM);
+            module.getFunctions().add(fn);
+            EntryPort in = f.createEntryPort();
+            in.setName("in");
+            in.setDataType(DataType.NUMERIC);
+            OutputPort out = f.createOutputPort();
+            out.setName("out");
+            module.getPorts().add(in);
+            module.getPorts().add(out);
+            ins.add(in);
+            outs.add(out);
+        }
+        for (int i = 0; i + 1 < m; i++) {
+            connect(a, outs.get(i), ins.get(i + 1));
+            if (i % 50 == 0 && i + 3 < m) {
+                connect(a, outs.get(i), ins.get(i + 3));
+            }
+        }
+        for (int r = 0; r < requirements; r++) {
+            int from = (int) ((long) r * (m - 11) / requirements);
+            LatencyRequirement req = f.createLatencyRequirement();
+            req.setName("req" + r);
+            req.setSource(outs.get(from));
+            req.setTarget(ins.get(from + 10));
+            req.setMaxLatency(5000);
+            a.getLatencyRequirements().add(req);
+        }
+        return a;
+    }
+
+    private static void connect(Architecture a, OutputPort from, EntryPort to) {
+        Connection c = RsamlFactory.eINSTANCE.createConnection();
+        c.setSource(from);
+        c.setTarget(to);
+        a.getConnections().add(c);
+    }
+}
