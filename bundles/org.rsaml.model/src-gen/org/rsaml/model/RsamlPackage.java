@@ -3350,6 +3350,15 @@ public interface RsamlPackage extends EPackage {
 	int PROCESSOR_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The number of operations of the '<em>Processor</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -3441,6 +3450,15 @@ public interface RsamlPackage extends EPackage {
 	int LATENCY_REQUIREMENT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 5;
 
 	/**
+	 * The operation id for the '<em>Normalized Name</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
+
+	/**
 	 * The operation id for the '<em>To Milliseconds</em>' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -3450,13 +3468,40 @@ public interface RsamlPackage extends EPackage {
 	int LATENCY_REQUIREMENT___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
+
+	/**
 	 * The number of operations of the '<em>Latency Requirement</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int LATENCY_REQUIREMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+	int LATENCY_REQUIREMENT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.ArchitectureCategory <em>Architecture Category</em>}' enum.

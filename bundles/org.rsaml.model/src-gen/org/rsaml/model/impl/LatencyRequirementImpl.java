@@ -304,6 +304,36 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 	 * @generated
 	 */
 	@Override
+	public int compareTime(final double value, final TimeScaled other, final double otherValue) {
+		return org.rsaml.model.support.RsamlTimes.compare(value, this, otherValue, other);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public boolean representable(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representable(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public boolean representablePeriod(final double value) {
+		return org.rsaml.model.support.RsamlTimes.representablePeriod(value, this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public Object eGet(int featureID, boolean resolve, boolean coreType) {
 		switch (featureID) {
 			case RsamlPackage.LATENCY_REQUIREMENT__TIME_UNIT:
@@ -440,6 +470,9 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 		if (baseClass == TimeScaled.class) {
 			switch (baseOperationID) {
 				case RsamlPackage.TIME_SCALED___TO_MILLISECONDS__DOUBLE: return RsamlPackage.LATENCY_REQUIREMENT___TO_MILLISECONDS__DOUBLE;
+				case RsamlPackage.TIME_SCALED___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE: return RsamlPackage.LATENCY_REQUIREMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE__DOUBLE: return RsamlPackage.LATENCY_REQUIREMENT___REPRESENTABLE__DOUBLE;
+				case RsamlPackage.TIME_SCALED___REPRESENTABLE_PERIOD__DOUBLE: return RsamlPackage.LATENCY_REQUIREMENT___REPRESENTABLE_PERIOD__DOUBLE;
 				default: return -1;
 			}
 		}
@@ -456,6 +489,12 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 		switch (operationID) {
 			case RsamlPackage.LATENCY_REQUIREMENT___TO_MILLISECONDS__DOUBLE:
 				return toMilliseconds((Double)arguments.get(0));
+			case RsamlPackage.LATENCY_REQUIREMENT___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE:
+				return compareTime((Double)arguments.get(0), (TimeScaled)arguments.get(1), (Double)arguments.get(2));
+			case RsamlPackage.LATENCY_REQUIREMENT___REPRESENTABLE__DOUBLE:
+				return representable((Double)arguments.get(0));
+			case RsamlPackage.LATENCY_REQUIREMENT___REPRESENTABLE_PERIOD__DOUBLE:
+				return representablePeriod((Double)arguments.get(0));
 		}
 		return super.eInvoke(operationID, arguments);
 	}

@@ -1830,7 +1830,17 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateProcessor(Processor processor, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(processor, diagnostics, context);
+		if (!validate_NoCircularContainment(processor, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(processor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(processor, diagnostics, context);
+		return result;
 	}
 
 	/**
@@ -1839,7 +1849,17 @@ public class RsamlValidator extends EObjectValidator {
 	 * @generated
 	 */
 	public boolean validateLatencyRequirement(LatencyRequirement latencyRequirement, DiagnosticChain diagnostics, Map<Object, Object> context) {
-		return validate_EveryDefaultConstraint(latencyRequirement, diagnostics, context);
+		if (!validate_NoCircularContainment(latencyRequirement, diagnostics, context)) return false;
+		boolean result = validate_EveryMultiplicityConforms(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryDataValueConforms(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryReferenceIsContained(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryBidirectionalReferenceIsPaired(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryProxyResolves(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_UniqueID(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryKeyUnique(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validate_EveryMapEntryUnique(latencyRequirement, diagnostics, context);
+		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(latencyRequirement, diagnostics, context);
+		return result;
 	}
 
 	/**
