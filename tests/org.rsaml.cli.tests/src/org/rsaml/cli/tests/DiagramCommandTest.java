@@ -22,7 +22,7 @@ import org.junit.jupiter.api.io.TempDir;
 class DiagramCommandTest {
 
     private static final List<String> EXAMPLES = List.of("exp1-hybrid", "exp2-defects", "exp3-task-interpreter",
-            "hierarchical-nasrem", "subsumption-brooks");
+            "hierarchical-nasrem", "mobile-base-latency", "mobile-base-latency-missed", "subsumption-brooks");
 
     @Test
     void everyExampleInEveryViewAndFormat(@TempDir Path dir) throws Exception {
