@@ -10,9 +10,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** {@code rsaml validate} in text format: findings, summary, thresholds and exit codes. */
 class ValidateCommandTest {
@@ -65,14 +68,37 @@ class ValidateCommandTest {
     }
 
     @Test
-    void quietPrintsErrorsOnlyWithoutSummary() {
+    void quietPrintsWhatFailsTheRunAndItsSummary() {
         Cli.Result warnings = Cli.run("validate", "--quiet", Cli.INPUTS.resolve("warnings-only.rsaml").toString());
         assertEquals(0, warnings.code());
         assertEquals("", warnings.out(), warnings::toString);
 
         Cli.Result errors = Cli.run("validate", "-q", "examples/exp2-defects.rsaml");
         assertEquals(1, errors.code());
-        assertEquals(EXP2_FINDINGS, errors.outLines());
+        List<String> expected = new java.util.ArrayList<>(EXP2_FINDINGS);
+        expected.add("1 file checked: 5 errors, 0 warnings");
+        assertEquals(expected, errors.outLines());
+    }
+
+    @Test
+    void quietWithFailOnWarningShowsTheWarningsThatFailTheRun() {
+        Cli.Result r = Cli.run("validate", "--quiet", "--fail-on", "warning", Cli.INPUTS.resolve("warnings-only.rsaml").toString());
+        assertEquals(1, r.code(), r::toString);
+        List<String> lines = r.outLines();
+        assertTrue(lines.size() >= 2, r::toString);
+        assertTrue(lines.subList(0, lines.size() - 1).stream().allMatch(l -> l.contains(": warning RSA-")), r::toString);
+        assertTrue(lines.get(lines.size() - 1).matches("1 file checked: 0 errors, [1-9]\\d* warnings?"), r::toString);
+    }
+
+    @Test
+    void quietDoesNotEmptyAReportFile(@TempDir Path dir) throws Exception {
+        Cli.Result r = Cli.run("validate", "--quiet", "--output", "text=" + dir.resolve("all.txt"),
+                Cli.INPUTS.resolve("warnings-only.rsaml").toString());
+        assertEquals(0, r.code(), r::toString);
+        assertEquals("", r.out(), r::toString);
+        String file = Files.readString(dir.resolve("all.txt"));
+        assertTrue(file.contains(": warning RSA-"), file);
+        assertTrue(file.contains("1 file checked"), file);
     }
 
     @Test

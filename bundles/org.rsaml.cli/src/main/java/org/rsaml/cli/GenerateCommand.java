@@ -4,17 +4,17 @@
  */
 package org.rsaml.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
-import org.rsaml.cli.report.ExitCodes;
-import org.rsaml.generator.GenerationException;
-import org.rsaml.generator.GenerationRefusedException;
-import org.rsaml.generator.GenerationResult;
-import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
-import org.rsaml.validation.Finding;
+import org.rsaml.report.Generation;
+import org.rsaml.report.ModelFiles;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.ReportOptions;
+import org.rsaml.report.Text;
 import org.rsaml.validation.RsamlValidationSetup;
 
 import picocli.CommandLine;
@@ -46,6 +46,11 @@ final class GenerateCommand implements Callable<Integer> {
     @Option(names = "--force", description = "Generate even when the model has error findings.")
     boolean force;
 
+    @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
+            converter = ReportArgs.FormatConverter.class,
+            description = "Format of the model's findings on standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).")
+    ReportFormat format;
+
     @Parameters(arity = "1", paramLabel = "MODEL", description = "The .rsaml model.")
     Path model;
 
@@ -61,36 +66,28 @@ final class GenerateCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         String shown = ModelFiles.display(model);
-        GenerationResult result;
-        try {
-            result = new RsamlGenerator().generate(parent.workingDirectory.resolve(model), shown, target,
-                    parent.workingDirectory.resolve(output), force);
-        } catch (GenerationRefusedException e) {
-            for (Finding finding : e.findings()) {
-                out.println(finding);
+        Generation.Outcome outcome = Generation.run(parent.workingDirectory.resolve(model), shown, target,
+                parent.workingDirectory.resolve(output), force, "generate anyway with --force");
+        if (!outcome.report().results().get(0).findings().isEmpty() || format != ReportFormat.TEXT) {
+            try {
+                format.write(outcome.report(), out, new ReportOptions(RsamlCli.version(), parent.workingDirectory, false));
+            } catch (IOException e) {
+                throw new RsamlCli.UserException("cannot write the report: " + e.getMessage());
             }
-            err.println(shown + ": error: generation refused: the model has " + e.errors().size() + " error finding"
-                    + (e.errors().size() == 1 ? "" : "s") + "; fix " + (e.errors().size() == 1 ? "it" : "them")
-                    + " or generate anyway with --force");
-            return ExitCodes.FINDINGS;
-        } catch (GenerationException e) {
-            err.println(e);
-            if (parent.debug && e.getCause() != null) {
-                e.getCause().printStackTrace(err);
-            }
-            return ExitCodes.INPUT_ERROR;
         }
-        for (Finding finding : result.findings()) {
-            out.println(finding);
+        PrintWriter notes = format == ReportFormat.TEXT ? out : err;
+        for (String warning : outcome.warnings(shown)) {
+            notes.println(Text.line(warning));
         }
-        for (String warning : result.warnings()) {
-            out.println(shown + ": warning: " + warning);
+        if (outcome.error() != null) {
+            err.println(Text.line(outcome.error()));
+            parent.printCause(err, shown, outcome.cause());
+        } else {
+            notes.println(Text.line(outcome.summary(ModelFiles.display(output))));
         }
-        out.println("generated " + target.id() + " into " + ModelFiles.display(output) + ": "
-                + result.written().size() + " written, " + result.unchanged().size() + " unchanged, "
-                + result.preserved().size() + " of yours kept" + (result.deleted().isEmpty() ? "" : ", " + result.deleted().size() + " obsolete removed"));
         out.flush();
-        return ExitCodes.OK;
+        err.flush();
+        return outcome.exitCode();
     }
 
     static final class TargetConverter implements CommandLine.ITypeConverter<Target> {

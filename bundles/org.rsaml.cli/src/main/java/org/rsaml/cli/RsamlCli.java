@@ -10,9 +10,11 @@ import java.io.OutputStreamWriter;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Properties;
 
-import org.rsaml.cli.report.ExitCodes;
+import org.rsaml.report.ExitCodes;
+import org.rsaml.report.Text;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -72,15 +74,21 @@ public final class RsamlCli implements Runnable {
         commandLine.setExitCodeExceptionMapper(e -> ExitCodes.INPUT_ERROR);
         commandLine.setParameterExceptionHandler((e, arguments) -> {
             CommandLine cmd = e.getCommandLine();
-            cmd.getErr().println("rsaml: " + e.getMessage());
+            cmd.getErr().println(Text.line("rsaml: " + e.getMessage()));
+            if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
+                List<String> suggestions = unmatched.getSuggestions();
+                if (!suggestions.isEmpty()) {
+                    cmd.getErr().println(Text.line("Did you mean " + String.join(" or ", suggestions.stream().limit(3).toList()) + "?"));
+                }
+            }
             cmd.getErr().println("Try '" + cmd.getCommandSpec().qualifiedName() + " --help' for more information.");
             return ExitCodes.INPUT_ERROR;
         });
         commandLine.setExecutionExceptionHandler((e, cmd, parseResult) -> {
             if (e instanceof UserException user) {
-                cmd.getErr().println("rsaml: " + user.getMessage());
+                cmd.getErr().println(Text.line("rsaml: " + user.getMessage()));
             } else {
-                cmd.getErr().println("rsaml: internal error: " + e + (cli.debug ? "" : " (run with --debug for details)"));
+                cmd.getErr().println(Text.line("rsaml: internal error: " + e + (cli.debug ? "" : " (run with --debug for details)")));
             }
             if (cli.debug) {
                 e.printStackTrace(cmd.getErr());
@@ -92,6 +100,14 @@ public final class RsamlCli implements Runnable {
         } catch (OutOfMemoryError e) {
             err.println("rsaml: out of memory; give the JVM more heap (RSAML_JAVA_OPTS=-Xmx4g)");
             return ExitCodes.INPUT_ERROR;
+        }
+    }
+
+    /** With {@code --debug}: the stack trace of what made {@code file} fail. */
+    void printCause(PrintWriter err, String file, Throwable cause) {
+        if (debug && cause != null) {
+            err.println(Text.line(file + ": cause of the error above:"));
+            cause.printStackTrace(err);
         }
     }
 

@@ -8,7 +8,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 
-import org.rsaml.cli.report.ExitCodes;
+import org.rsaml.report.ExitCodes;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 

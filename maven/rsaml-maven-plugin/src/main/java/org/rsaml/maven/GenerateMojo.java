@@ -5,21 +5,16 @@
 package org.rsaml.maven;
 
 import java.io.File;
-import java.nio.file.Path;
 
-import org.apache.maven.plugin.AbstractMojo;
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
-import org.rsaml.generator.GenerationException;
-import org.rsaml.generator.GenerationRefusedException;
-import org.rsaml.generator.GenerationResult;
-import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
-import org.rsaml.validation.Finding;
+import org.rsaml.report.Generation;
+import org.rsaml.report.Text;
 
 /**
  * Generates the code skeleton of an RsaML model: a CMake C++17 project ({@code cpp}) or ROS 2
@@ -28,7 +23,7 @@ import org.rsaml.validation.Finding;
  * (the findings are logged) unless {@code force} is set.
  */
 @Mojo(name = "generate", defaultPhase = LifecyclePhase.GENERATE_SOURCES, threadSafe = true)
-public class GenerateMojo extends AbstractMojo {
+public class GenerateMojo extends AbstractRsamlMojo {
 
     /** The {@code .rsaml} model to generate from. */
     @Parameter(property = "rsaml.model", required = true)
@@ -46,20 +41,14 @@ public class GenerateMojo extends AbstractMojo {
     @Parameter(property = "rsaml.force", defaultValue = "false")
     boolean force;
 
-    /** Skips generation. */
-    @Parameter(property = "rsaml.skip", defaultValue = "false")
-    boolean skip;
-
-    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
-    File baseDirectory;
+    @Override
+    String goal() {
+        return "generation";
+    }
 
     @Override
-    public void execute() throws MojoExecutionException, MojoFailureException {
+    void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
-        if (skip) {
-            log.info("Skipping RsaML generation (rsaml.skip)");
-            return;
-        }
         Target t;
         try {
             t = Target.parse(target);
@@ -67,31 +56,18 @@ public class GenerateMojo extends AbstractMojo {
             throw new MojoExecutionException("target: " + e.getMessage());
         }
         String shown = relative(model.toPath());
-        GenerationResult result;
-        try {
-            result = new RsamlGenerator().generate(model.toPath(), shown, t, outputDirectory.toPath(), force);
-        } catch (GenerationRefusedException e) {
-            for (Finding finding : e.findings()) {
-                log.error(finding.toString());
+        Generation.Outcome outcome = Generation.run(model.toPath(), shown, t, outputDirectory.toPath(), force, "set force");
+        log(outcome.report());
+        for (String warning : outcome.warnings(shown)) {
+            log.warn(Text.line(warning));
+        }
+        if (outcome.error() != null) {
+            if (log.isDebugEnabled() && outcome.cause() != null) {
+                log.debug(outcome.cause());
             }
-            throw new MojoFailureException("RsaML generation refused: " + shown + " has " + e.errors().size()
-                    + " error finding" + (e.errors().size() == 1 ? "" : "s") + "; fix them or set force");
-        } catch (GenerationException e) {
-            log.error(e.toString());
-            throw new MojoFailureException("RsaML generation failed: " + e.getMessage());
+            // The same line as the command line's: refused for error findings, or why the model or output is unusable.
+            throw new MojoFailureException("RsaML: " + Text.line(outcome.error()));
         }
-        for (Finding finding : result.findings()) {
-            log.warn(finding.toString());
-        }
-        for (String warning : result.warnings()) {
-            log.warn(shown + ": warning: " + warning);
-        }
-        log.info("RsaML: generated " + t.id() + " into " + relative(outputDirectory.toPath()) + ": "
-                + result.written().size() + " written, " + result.unchanged().size() + " unchanged, "
-                + result.preserved().size() + " of yours kept");
-    }
-
-    private String relative(Path path) {
-        return ProjectPaths.relative(baseDirectory.toPath(), path);
+        log.info("RsaML: " + Text.line(outcome.summary(relative(outputDirectory.toPath()))));
     }
 }

@@ -9,22 +9,18 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
-import org.apache.maven.plugin.AbstractMojo;
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
-import org.rsaml.cli.Validation;
-import org.rsaml.cli.report.FileResult;
-import org.rsaml.cli.report.ReportFiles;
-import org.rsaml.cli.report.ReportFormat;
-import org.rsaml.cli.report.ReportOptions;
-import org.rsaml.cli.report.ValidationReport;
-import org.rsaml.validation.Finding;
+import org.rsaml.report.ModelBatch;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportFiles;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.ReportOptions;
 import org.rsaml.validation.Severity;
 
 /**
@@ -34,7 +30,7 @@ import org.rsaml.validation.Severity;
  * that cannot be read.
  */
 @Mojo(name = "validate", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
-public class ValidateMojo extends AbstractMojo {
+public class ValidateMojo extends AbstractRsamlMojo {
 
     /** The directory searched for models. */
     @Parameter(property = "rsaml.modelDirectory", defaultValue = "${project.basedir}")
@@ -60,13 +56,6 @@ public class ValidateMojo extends AbstractMojo {
     @Parameter(property = "rsaml.reportDirectory", defaultValue = "${project.build.directory}/rsaml")
     File reportDirectory;
 
-    /** Skips validation. */
-    @Parameter(property = "rsaml.skip", defaultValue = "false")
-    boolean skip;
-
-    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
-    File baseDirectory;
-
     @Parameter(defaultValue = "${project.build.directory}", readonly = true, required = true)
     File buildDirectory;
 
@@ -74,13 +63,14 @@ public class ValidateMojo extends AbstractMojo {
     String pluginVersion;
 
     @Override
-    public void execute() throws MojoExecutionException, MojoFailureException {
+    String goal() {
+        return "validation";
+    }
+
+    @Override
+    void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
-        if (skip) {
-            log.info("Skipping RsaML validation (rsaml.skip)");
-            return;
-        }
-        Severity threshold = threshold();
+        Severity threshold = failOn("failOn", failOn);
         List<ReportFormat> reportFormats = reportFormats();
         if (!modelDirectory.isDirectory()) {
             throw new MojoFailureException("RsaML model directory " + modelDirectory + " does not exist");
@@ -92,26 +82,16 @@ public class ValidateMojo extends AbstractMojo {
         }
 
         Path base = baseDirectory.toPath();
-        ValidationReport report = Validation.run(base, models, threshold);
-        for (FileResult result : report.results()) {
-            if (!result.readable()) {
-                log.error(result.error().toString());
-            }
-            for (Finding finding : result.findings()) {
-                switch (finding.severity()) {
-                    case ERROR -> log.error(finding.toString());
-                    case WARNING -> log.warn(finding.toString());
-                    case INFO -> log.info(finding.toString());
-                }
-            }
-        }
+        Report report = ModelBatch.validate(base, models, threshold);
+        log(report);
         ReportOptions options = new ReportOptions(pluginVersion, base, false);
         for (ReportFormat format : reportFormats) {
             Path file = reportDirectory.toPath().resolve(fileName(format));
             try {
                 ReportFiles.write(file, format, report, options);
             } catch (IOException e) {
-                throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": " + e.getMessage(), e);
+                throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": "
+                        + ReportFiles.reason(e, file), e);
             }
         }
         log.info("RsaML: " + report.summary() + (reportFormats.isEmpty() ? "" : "; reports in " + relative(reportDirectory.toPath())));
@@ -123,15 +103,6 @@ public class ValidateMojo extends AbstractMojo {
         if (report.hasFailingFindings()) {
             throw new MojoFailureException("RsaML validation failed: " + report.summary() + " (failOn: " + failOn + ")");
         }
-    }
-
-    private Severity threshold() throws MojoExecutionException {
-        return switch (failOn.trim().toLowerCase(Locale.ROOT)) {
-            case "error" -> Severity.ERROR;
-            case "warning" -> Severity.WARNING;
-            case "never" -> null;
-            default -> throw new MojoExecutionException("failOn must be error, warning or never, not '" + failOn + "'");
-        };
     }
 
     private List<ReportFormat> reportFormats() throws MojoExecutionException {
@@ -154,9 +125,5 @@ public class ValidateMojo extends AbstractMojo {
             case JUNIT -> "TEST-rsaml.xml";
             default -> "rsaml." + format.extension();
         };
-    }
-
-    private String relative(Path path) {
-        return ProjectPaths.relative(baseDirectory.toPath(), path);
     }
 }

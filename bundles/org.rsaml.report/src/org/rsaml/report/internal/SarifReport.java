@@ -2,21 +2,23 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.report;
+package org.rsaml.report.internal;
 
 import java.io.IOException;
 import java.io.Writer;
-import java.net.URI;
-import java.net.URISyntaxException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.rsaml.report.FileResult;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportOptions;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.Rule;
-import org.rsaml.validation.Rules;
 import org.rsaml.validation.Severity;
 
 import com.google.gson.stream.JsonWriter;
@@ -27,7 +29,7 @@ import com.google.gson.stream.JsonWriter;
  * could not be read as tool execution notifications. File names are relative to {@code %SRCROOT%},
  * the working directory, which is what code-scanning services expect.
  */
-final class SarifReport {
+public final class SarifReport {
 
     static final String SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json";
     static final String SRCROOT = "%SRCROOT%";
@@ -35,8 +37,8 @@ final class SarifReport {
     private SarifReport() {
     }
 
-    static void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
-        List<Rule> rules = Rules.all();
+    public static void write(Report report, Writer out, ReportOptions options) throws IOException {
+        List<Rule> rules = report.rules();
         Map<String, Integer> ruleIndex = new HashMap<>();
         for (int i = 0; i < rules.size(); i++) {
             ruleIndex.put(rules.get(i).id(), i);
@@ -101,7 +103,10 @@ final class SarifReport {
             for (Finding f : result.findings()) {
                 json.beginObject();
                 json.name("ruleId").value(f.ruleId());
-                json.name("ruleIndex").value(ruleIndex.get(f.ruleId()));
+                Integer index = ruleIndex.get(f.ruleId());
+                if (index != null) {
+                    json.name("ruleIndex").value(index);
+                }
                 json.name("level").value(level(f.severity()));
                 json.name("message").beginObject().name("text").value(f.message()).endObject();
                 json.name("locations").beginArray().beginObject();
@@ -125,9 +130,14 @@ final class SarifReport {
     private static void physicalLocation(JsonWriter json, String file, int line, int column, Path base) throws IOException {
         json.name("physicalLocation").beginObject();
         json.name("artifactLocation").beginObject();
-        Path path = base.resolve(file).normalize();
-        if (path.startsWith(base)) {
-            json.name("uri").value(relativeUri(base.relativize(path)));
+        Path path;
+        try {
+            path = base.resolve(file).normalize();
+        } catch (InvalidPathException e) {
+            path = null; // not a name the file system takes, but still the name the user gave
+        }
+        if (path == null || path.startsWith(base)) {
+            json.name("uri").value(relativeUri(path == null ? file : base.relativize(path).toString()));
             json.name("uriBaseId").value(SRCROOT);
         } else {
             json.name("uri").value(path.toUri().toASCIIString());
@@ -143,13 +153,19 @@ final class SarifReport {
         json.endObject();
     }
 
-    private static String relativeUri(Path relative) {
-        String slashed = relative.toString().replace('\\', '/');
-        try {
-            return new URI(null, null, slashed, null).toASCIIString();
-        } catch (URISyntaxException e) {
-            throw new IllegalArgumentException("file name cannot be expressed as a URI: " + slashed, e);
+    /** A relative URI reference: every byte but the unreserved ones and '/' percent-encoded (':' too, so no segment reads as a scheme). */
+    static String relativeUri(String relative) {
+        StringBuilder uri = new StringBuilder();
+        for (byte b : relative.replace('\\', '/').getBytes(StandardCharsets.UTF_8)) {
+            int c = b & 0xff;
+            if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || "-._~/".indexOf(c) >= 0) {
+                uri.append((char) c);
+            } else {
+                uri.append('%').append(Character.toUpperCase(Character.forDigit(c >> 4, 16)))
+                        .append(Character.toUpperCase(Character.forDigit(c & 0xf, 16)));
+            }
         }
+        return uri.toString();
     }
 
     private static String directoryUri(Path dir) {

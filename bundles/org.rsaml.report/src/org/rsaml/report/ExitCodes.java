@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.report;
+package org.rsaml.report;
 
 /** The process exit codes of {@code rsaml}, as CI pipelines see them. */
 public final class ExitCodes {

@@ -2,23 +2,26 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.report;
+package org.rsaml.report;
 
 import java.util.List;
 
 import org.rsaml.validation.Finding;
+import org.rsaml.validation.Rule;
 import org.rsaml.validation.Severity;
 
 /**
- * The outcome of validating a set of inputs, in the order they were named: what every report
- * format renders and what decides the exit code.
+ * The outcome of checking a set of inputs, in the order they were named: what every report format
+ * renders and what decides the exit code.
  *
+ * @param rules   the rules the check applies (SARIF lists them, JUnit has a test per rule and file)
  * @param results one entry per model file, and one per input that could not be read
  * @param failOn  the lowest severity that fails the run, or {@code null} when findings never fail it
  */
-public record ValidationReport(List<FileResult> results, Severity failOn) {
+public record Report(List<Rule> rules, List<FileResult> results, Severity failOn) {
 
-    public ValidationReport {
+    public Report {
+        rules = List.copyOf(rules);
         results = List.copyOf(results);
     }
 

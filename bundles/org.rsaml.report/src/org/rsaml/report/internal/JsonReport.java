@@ -2,23 +2,26 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.report;
+package org.rsaml.report.internal;
 
 import java.io.IOException;
 import java.io.Writer;
 
+import org.rsaml.report.FileResult;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportOptions;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.Severity;
 
 import com.google.gson.stream.JsonWriter;
 
 /** RsaML's JSON report: one object per file with its findings or its input error, and totals. */
-final class JsonReport {
+public final class JsonReport {
 
     private JsonReport() {
     }
 
-    static void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+    public static void write(Report report, Writer out, ReportOptions options) throws IOException {
         JsonWriter json = new JsonWriter(out);
         json.setIndent("  ");
         json.setHtmlSafe(false);

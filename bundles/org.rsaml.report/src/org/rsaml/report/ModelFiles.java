@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli;
+package org.rsaml.report;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -102,7 +102,7 @@ public final class ModelFiles {
     }
 
     /** Forward slashes everywhere, so reports read the same on every platform and in SARIF. */
-    static String display(Path path) {
+    public static String display(Path path) {
         return path.toString().replace('\\', '/');
     }
 

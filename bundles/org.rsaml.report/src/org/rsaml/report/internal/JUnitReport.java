@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.report;
+package org.rsaml.report.internal;
 
 import java.io.IOException;
 import java.io.Writer;
@@ -13,18 +13,23 @@ import javax.xml.stream.XMLOutputFactory;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamWriter;
 
+import org.rsaml.report.FileResult;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportOptions;
+import org.rsaml.report.Text;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.Rule;
-import org.rsaml.validation.Rules;
 
 /**
  * JUnit XML as the test reporters of Jenkins, GitLab and GitHub Actions read it: a test suite per
  * model file; in it a passing test per rule the file satisfies, a failing test per finding at or
  * above the failure threshold (named after rule and element), and an erroring test when the file
  * could not be read. Findings below the threshold leave their test passing, with the finding as
- * its output, so the report agrees with the exit code.
+ * its output, so the report agrees with the exit code. Text from the model is written as
+ * {@link Text#line} shows it: XML 1.0 cannot carry most control characters, and CI pages show these
+ * names to people.
  */
-final class JUnitReport {
+public final class JUnitReport {
 
     /** A test: failed by {@code failure} when set; {@code notes} are findings below the threshold. */
     private record Case(String name, Finding failure, List<Finding> notes) {
@@ -36,7 +41,7 @@ final class JUnitReport {
     private JUnitReport() {
     }
 
-    static void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+    public static void write(Report report, Writer out, ReportOptions options) throws IOException {
         try {
             XMLStreamWriter xml = XMLOutputFactory.newFactory().createXMLStreamWriter(out);
             xml.writeStartDocument("UTF-8", "1.0");
@@ -70,12 +75,12 @@ final class JUnitReport {
         }
     }
 
-    private static List<Case> cases(FileResult result, ValidationReport report) {
+    private static List<Case> cases(FileResult result, Report report) {
         List<Case> cases = new ArrayList<>();
         if (!result.readable()) {
             return cases;
         }
-        for (Rule rule : Rules.all()) {
+        for (Rule rule : report.rules()) {
             String test = rule.id() + " " + rule.name();
             List<Finding> found = result.findings().stream().filter(f -> f.rule().equals(rule)).toList();
             List<Finding> failing = found.stream().filter(report::fails).toList();
@@ -94,7 +99,7 @@ final class JUnitReport {
     private static void suite(XMLStreamWriter xml, FileResult result, List<Case> cases) throws XMLStreamException {
         newline(xml, 1);
         xml.writeStartElement("testsuite");
-        xml.writeAttribute("name", result.file());
+        xml.writeAttribute("name", Text.line(result.file()));
         xml.writeAttribute("tests", Integer.toString(result.readable() ? cases.size() : 1));
         xml.writeAttribute("failures", Long.toString(cases.stream().filter(Case::failed).count()));
         xml.writeAttribute("errors", result.readable() ? "0" : "1");
@@ -103,30 +108,30 @@ final class JUnitReport {
         if (!result.readable()) {
             newline(xml, 2);
             xml.writeStartElement("testcase");
-            xml.writeAttribute("classname", result.file());
+            xml.writeAttribute("classname", Text.line(result.file()));
             xml.writeAttribute("name", "load model");
             xml.writeStartElement("error");
             xml.writeAttribute("type", "input");
-            xml.writeAttribute("message", result.error().getMessage());
-            xml.writeCharacters(result.error().toString());
+            xml.writeAttribute("message", Text.line(result.error().getMessage()));
+            xml.writeCharacters(Text.line(result.error().toString()));
             xml.writeEndElement();
             xml.writeEndElement();
         }
         for (Case c : cases) {
             newline(xml, 2);
             xml.writeStartElement("testcase");
-            xml.writeAttribute("classname", result.file());
-            xml.writeAttribute("name", c.name());
+            xml.writeAttribute("classname", Text.line(result.file()));
+            xml.writeAttribute("name", Text.line(c.name()));
             if (c.failed()) {
                 xml.writeStartElement("failure");
                 xml.writeAttribute("type", c.failure().ruleId());
-                xml.writeAttribute("message", c.failure().message());
-                xml.writeCharacters(c.failure().toString());
+                xml.writeAttribute("message", Text.line(c.failure().message()));
+                xml.writeCharacters(Text.line(c.failure().toString()));
                 xml.writeEndElement();
             }
             if (!c.notes().isEmpty()) {
                 xml.writeStartElement("system-out");
-                xml.writeCharacters(String.join("\n", c.notes().stream().map(Finding::toString).toList()));
+                xml.writeCharacters(String.join("\n", c.notes().stream().map(f -> Text.line(f.toString())).toList()));
                 xml.writeEndElement();
             }
             xml.writeEndElement();

@@ -2,39 +2,44 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.report;
+package org.rsaml.report;
 
 import java.io.IOException;
 import java.io.Writer;
 import java.util.Locale;
 
-/** The formats a validation report is written in. */
+import org.rsaml.report.internal.JUnitReport;
+import org.rsaml.report.internal.JsonReport;
+import org.rsaml.report.internal.SarifReport;
+import org.rsaml.report.internal.TextReport;
+
+/** The formats a report is written in. */
 public enum ReportFormat {
     /** Compiler style, one finding a line, then a summary line. */
     TEXT("txt") {
         @Override
-        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+        public void write(Report report, Writer out, ReportOptions options) throws IOException {
             TextReport.write(report, out, options);
         }
     },
     /** RsaML's own JSON document: files, findings, input errors, summary. */
     JSON("json") {
         @Override
-        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+        public void write(Report report, Writer out, ReportOptions options) throws IOException {
             JsonReport.write(report, out, options);
         }
     },
     /** SARIF 2.1.0, read by GitHub code scanning and most static-analysis dashboards. */
     SARIF("sarif") {
         @Override
-        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+        public void write(Report report, Writer out, ReportOptions options) throws IOException {
             SarifReport.write(report, out, options);
         }
     },
     /** JUnit XML, read by the test reporters of Jenkins, GitLab and GitHub Actions. */
     JUNIT("xml") {
         @Override
-        public void write(ValidationReport report, Writer out, ReportOptions options) throws IOException {
+        public void write(Report report, Writer out, ReportOptions options) throws IOException {
             JUnitReport.write(report, out, options);
         }
     };
@@ -45,7 +50,7 @@ public enum ReportFormat {
         this.extension = extension;
     }
 
-    public abstract void write(ValidationReport report, Writer out, ReportOptions options) throws IOException;
+    public abstract void write(Report report, Writer out, ReportOptions options) throws IOException;
 
     /** The usual file extension of this format, without the dot. */
     public String extension() {

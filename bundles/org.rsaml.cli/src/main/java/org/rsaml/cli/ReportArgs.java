@@ -1,0 +1,158 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import org.rsaml.report.ExitCodes;
+import org.rsaml.report.FileResult;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportFiles;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.ReportOptions;
+import org.rsaml.report.ModelFiles;
+import org.rsaml.report.Text;
+import org.rsaml.validation.Severity;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * The report options of every command that checks models ({@code validate}, and any further
+ * kind of check): what goes to standard output, which report files are written, what fails the run.
+ */
+final class ReportArgs {
+
+    enum FailOn { error, warning, never }
+
+    @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
+            converter = FormatConverter.class,
+            description = "Format written to standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).")
+    ReportFormat format;
+
+    @Option(names = { "-o", "--output" }, paramLabel = "FORMAT=FILE",
+            description = { "Also write a report in FORMAT to FILE (repeatable), e.g. sarif=target/rsaml.sarif.",
+                    "A FILE alone takes its format from the extension (.sarif, .json, .xml, .txt)." })
+    List<String> outputs = new ArrayList<>();
+
+    @Option(names = "--fail-on", defaultValue = "error", paramLabel = "LEVEL",
+            description = "Lowest severity that makes the exit code 1: error, warning or never (default: ${DEFAULT-VALUE}).")
+    FailOn failOn;
+
+    @Option(names = { "-q", "--quiet" },
+            description = "Text format: print only what fails the run (findings at or above --fail-on, unreadable inputs) "
+                    + "and, when it fails, the summary line. Report files are complete.")
+    boolean quiet;
+
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec spec;
+
+    Severity threshold() {
+        return switch (failOn) {
+            case error -> Severity.ERROR;
+            case warning -> Severity.WARNING;
+            case never -> null;
+        };
+    }
+
+    /** The {@code --output} files, checked before any model is read. */
+    Map<Path, ReportFormat> files() {
+        Map<Path, ReportFormat> files = new LinkedHashMap<>();
+        for (String output : outputs) {
+            int eq = output.indexOf('=');
+            ReportFormat fmt;
+            String file;
+            try {
+                if (eq > 0) {
+                    fmt = ReportFormat.parse(output.substring(0, eq));
+                    file = output.substring(eq + 1);
+                } else {
+                    file = output;
+                    fmt = byExtension(file);
+                }
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "--output " + output + ": " + e.getMessage());
+            }
+            if (file.isBlank()) {
+                throw new CommandLine.ParameterException(spec.commandLine(), "--output " + output + ": no file name");
+            }
+            files.put(Path.of(file), fmt);
+        }
+        return files;
+    }
+
+    /**
+     * Writes {@code report} to standard output and to the report files.
+     *
+     * @return the exit code: the report's, or 2 when a report file cannot be written
+     */
+    static int emit(Report report, ReportFormat format, Map<Path, ReportFormat> files, boolean quiet, RsamlCli cli,
+            CommandSpec spec) {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        for (FileResult result : report.results()) {
+            if (result.readable()) {
+                continue;
+            }
+            if (format != ReportFormat.TEXT) {
+                // Structured output owns standard output; a person still reads input errors on standard error.
+                err.println(Text.line(result.error().toString()));
+            }
+            cli.printCause(err, result.file(), result.error().getCause());
+        }
+        ReportOptions options = new ReportOptions(RsamlCli.version(), cli.workingDirectory, quiet);
+        try {
+            format.write(report, out, options);
+        } catch (IOException e) {
+            throw new RsamlCli.UserException("cannot write the report: " + e.getMessage());
+        }
+        out.flush();
+        int code = report.exitCode();
+        // A report file is for whoever reads it later: always complete, whatever --quiet says.
+        ReportOptions complete = new ReportOptions(options.toolVersion(), options.baseDir(), false);
+        for (Map.Entry<Path, ReportFormat> file : files.entrySet()) {
+            Path target = cli.workingDirectory.resolve(file.getKey());
+            try {
+                ReportFiles.write(target, file.getValue(), report, complete);
+            } catch (IOException e) {
+                err.println(Text.line(ModelFiles.display(file.getKey()) + ": error: cannot write the " + file.getValue().id()
+                        + " report: " + ReportFiles.reason(e, target)));
+                code = ExitCodes.INPUT_ERROR;
+            }
+        }
+        err.flush();
+        return code;
+    }
+
+    private static ReportFormat byExtension(String file) {
+        String lower = file.toLowerCase(Locale.ROOT);
+        for (ReportFormat f : ReportFormat.values()) {
+            if (lower.endsWith("." + f.extension())) {
+                return f;
+            }
+        }
+        throw new IllegalArgumentException("cannot tell the format from the file name; write FORMAT=FILE");
+    }
+
+    static final class FormatConverter implements CommandLine.ITypeConverter<ReportFormat> {
+        @Override
+        public ReportFormat convert(String value) {
+            try {
+                return ReportFormat.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
+    }
+}
