@@ -82,7 +82,7 @@ public final class ReportFiles {
                     : e instanceof AccessDeniedException ? "permission denied"
                     : e instanceof NoSuchFileException ? "no such file or directory"
                     : e instanceof NotDirectoryException ? "not a directory"
-                    : e instanceof FileAlreadyExistsException ? "a file of that name is in the way"
+                    : e instanceof FileAlreadyExistsException ? "it exists and is not a directory"
                     : e instanceof DirectoryNotEmptyException ? "it is a directory that is not empty"
                     : e.getClass().getSimpleName();
             String other = fs.getFile();

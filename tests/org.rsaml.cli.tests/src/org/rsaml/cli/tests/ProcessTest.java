@@ -8,9 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The runnable jar and the ./rsaml launcher, as separate processes, the way CI and people call them. */
 class ProcessTest {
@@ -56,5 +58,22 @@ class ProcessTest {
         assertEquals(1, again.code(), again::toString);
         assertEquals("", again.err(), "nothing but the report, no JVM warnings");
         assertTrue(again.out().contains("\"ruleId\": \"RSA-08\""), again::toString);
+    }
+
+    @Test
+    void launcherSymlinkedOntoThePathRunsFromAnotherDirectory(@TempDir Path dir) throws Exception {
+        // As after 'ln -s ~/rsaml/rsaml ~/bin/rsaml': a link to a link, called from elsewhere.
+        Path bin = Files.createDirectories(dir.resolve("bin"));
+        Path tools = Files.createDirectories(dir.resolve("tools"));
+        Files.createSymbolicLink(tools.resolve("rsaml"), Cli.ROOT.resolve("rsaml"));
+        Files.createSymbolicLink(bin.resolve("rsaml"), Path.of("../tools/rsaml"));
+        Path work = Files.createDirectories(dir.resolve("work"));
+        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), work.resolve("model.rsaml"));
+
+        Cli.Result r = Cli.process(work, List.of(bin.resolve("rsaml").toString(), "validate", "model.rsaml"));
+        assertEquals(1, r.code(), r::toString);
+        assertTrue(r.out().startsWith("model.rsaml:"), r::toString);
+        assertTrue(r.out().endsWith("1 file checked: 5 errors, 0 warnings\n"), r::toString);
+        assertEquals("", r.err(), "no first-use build: the launcher found its jar");
     }
 }

@@ -49,6 +49,9 @@ class ReportFormatsTest {
     }
 
     static Set<ValidationMessage> sarifProblems(String sarif) throws Exception {
+        if (sarifSchema == null) {
+            loadSarifSchema();
+        }
         return sarifSchema.validate(new ObjectMapper().readTree(sarif));
     }
 

@@ -10,6 +10,7 @@ import java.io.OutputStreamWriter;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
 
@@ -75,11 +76,23 @@ public final class RsamlCli implements Runnable {
         commandLine.setParameterExceptionHandler((e, arguments) -> {
             CommandLine cmd = e.getCommandLine();
             cmd.getErr().println(Text.line("rsaml: " + e.getMessage()));
-            if (e instanceof CommandLine.UnmatchedArgumentException unmatched) {
-                List<String> suggestions = unmatched.getSuggestions();
-                if (!suggestions.isEmpty()) {
-                    cmd.getErr().println(Text.line("Did you mean " + String.join(" or ", suggestions.stream().limit(3).toList()) + "?"));
+            List<String> suggestions = List.of();
+            if (e instanceof CommandLine.UnmatchedArgumentException unmatched && !unmatched.getUnmatched().isEmpty()
+                    && !unmatched.getUnmatched().get(0).startsWith("-")) {
+                suggestions = suggestions(cmd.getCommandSpec(), unmatched.getUnmatched().get(0));
+            } else {
+                // The first option the command does not know, also when picocli reports something else first.
+                for (String argument : arguments) {
+                    String option = argument.contains("=") ? argument.substring(0, argument.indexOf('=')) : argument;
+                    if (option.startsWith("-") && option.length() > 1 && !option.equals("--")
+                            && cmd.getCommandSpec().findOption(option) == null) {
+                        suggestions = suggestions(cmd.getCommandSpec(), option);
+                        break;
+                    }
                 }
+            }
+            if (!suggestions.isEmpty()) {
+                cmd.getErr().println(Text.line("Did you mean " + String.join(" or ", suggestions) + "?"));
             }
             cmd.getErr().println("Try '" + cmd.getCommandSpec().qualifiedName() + " --help' for more information.");
             return ExitCodes.INPUT_ERROR;
@@ -101,6 +114,49 @@ public final class RsamlCli implements Runnable {
             err.println("rsaml: out of memory; give the JVM more heap (RSAML_JAVA_OPTS=-Xmx4g)");
             return ExitCodes.INPUT_ERROR;
         }
+    }
+
+    /** The commands or options closest to a misspelled one ({@code valdate}, {@code --fromat}), by edit distance. */
+    static List<String> suggestions(CommandLine.Model.CommandSpec spec, String typed) {
+        String word = typed;
+        List<String> candidates = new ArrayList<>();
+        if (word.startsWith("-")) {
+            spec.options().stream().filter(o -> !o.hidden()).forEach(o -> candidates.addAll(List.of(o.names())));
+        } else {
+            candidates.addAll(spec.subcommands().keySet());
+        }
+        int best = Integer.MAX_VALUE;
+        List<String> closest = new ArrayList<>();
+        for (String candidate : candidates) {
+            int d = distance(word, candidate);
+            if (d < best) {
+                best = d;
+                closest.clear();
+            }
+            if (d == best) {
+                closest.add(candidate);
+            }
+        }
+        return best <= Math.max(2, word.length() / 3) ? closest : List.of();
+    }
+
+    /** Edit distance with transpositions (optimal string alignment). */
+    private static int distance(String a, String b) {
+        int[][] d = new int[a.length() + 1][b.length() + 1];
+        for (int i = 0; i <= a.length(); i++) {
+            for (int j = 0; j <= b.length(); j++) {
+                if (i == 0 || j == 0) {
+                    d[i][j] = i + j;
+                    continue;
+                }
+                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
+                d[i][j] = Math.min(Math.min(d[i - 1][j] + 1, d[i][j - 1] + 1), d[i - 1][j - 1] + cost);
+                if (i > 1 && j > 1 && a.charAt(i - 1) == b.charAt(j - 2) && a.charAt(i - 2) == b.charAt(j - 1)) {
+                    d[i][j] = Math.min(d[i][j], d[i - 2][j - 2] + 1);
+                }
+            }
+        }
+        return d[a.length()][b.length()];
     }
 
     /** With {@code --debug}: the stack trace of what made {@code file} fail. */
