@@ -14,12 +14,13 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.rsaml.cli.RsamlCli;
+import org.rsaml.tests.support.TestRepository;
 
 /** Runs {@code rsaml} in this JVM or as a real process, from a given working directory. */
 final class Cli {
 
     /** The repository root: examples/ lives there. */
-    static final Path ROOT = Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+    static final Path ROOT = TestRepository.root();
     /** This module's test inputs. */
     static final Path INPUTS = ROOT.resolve("tests/org.rsaml.cli.tests/resources/inputs");
     static final Path JAR = Path.of(System.getProperty("rsaml.jar", ROOT + "/bundles/org.rsaml.cli/target/rsaml.jar"));

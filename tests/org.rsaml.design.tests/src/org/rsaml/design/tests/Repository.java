@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.junit.jupiter.api.Assumptions;
+import org.rsaml.tests.support.TestRepository;
 
 /** Where the files under test are: the repository (system property {@code rsaml.root}) and Sirius's metamodels beside it. */
 final class Repository {
@@ -23,7 +24,7 @@ final class Repository {
     }
 
     static Path root() {
-        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+        return TestRepository.root();
     }
 
     static Path file(String path) {

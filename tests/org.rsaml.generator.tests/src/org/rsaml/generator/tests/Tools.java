@@ -19,6 +19,7 @@ import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.RsamlModelValidator;
@@ -30,7 +31,7 @@ final class Tools {
     }
 
     static Path root() {
-        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+        return TestRepository.root();
     }
 
     static Path example(String name) {

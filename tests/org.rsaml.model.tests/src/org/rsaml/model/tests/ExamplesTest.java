@@ -32,12 +32,13 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.Suppressor;
+import org.rsaml.tests.support.TestRepository;
 
 /** The example models open in Eclipse's way (content type, no explicit registration) and are what they claim. */
 class ExamplesTest {
 
     static Path examples() {
-        return Path.of(System.getProperty("rsaml.root", "../..")).resolve("examples").toAbsolutePath().normalize();
+        return TestRepository.root().resolve("examples");
     }
 
     static Stream<String> exampleFiles() throws Exception {

@@ -6,13 +6,15 @@ package org.rsaml.validation.tests;
 
 import java.nio.file.Path;
 
+import org.rsaml.tests.support.TestRepository;
+
 /** Where the repository's files are, for tests running inside OSGi. */
 final class Paths {
     private Paths() {
     }
 
     static Path root() {
-        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+        return TestRepository.root();
     }
 
     static Path example(String name) {

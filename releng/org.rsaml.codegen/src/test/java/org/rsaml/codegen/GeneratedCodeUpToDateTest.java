@@ -10,10 +10,11 @@ import java.nio.file.Path;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.tests.support.TestRepository;
 
 class GeneratedCodeUpToDateTest {
 
-    static final Path ROOT = Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
+    static final Path ROOT = TestRepository.root();
 
     @Test
     void committedGeneratedCodeMatchesTheEcore() throws Exception {
