@@ -1,17 +1,29 @@
 #!/bin/sh
 # SPDX-License-Identifier: EPL-2.0
-# Run by the root pom before anything is built: the tests compile and run generated C++ (CMake, g++,
-# make) and read ROS 2 package.xml files with Python's catkin_pkg. Say at once what is missing.
+# Run by the root pom before anything is built: the tests need the tools of releng/prerequisites.txt
+# (cmake, g++, ... for the generated code). Say at once what is missing and how to install it.
+# With --missing: print only the missing Debian/Ubuntu packages, one a line (.ci/run installs them).
+list="$(dirname "$0")/prerequisites.txt"
 missing=""
-for tool in cmake g++ make python3; do
-  command -v "$tool" >/dev/null 2>&1 || missing="$missing $tool"
-done
-if command -v python3 >/dev/null 2>&1 && ! python3 -c 'import catkin_pkg' >/dev/null 2>&1; then
-  missing="$missing catkin_pkg(Python)"
+reasons=""
+all=""
+while IFS='|' read -r package check why; do
+  package=$(echo "$package" | tr -d ' ')
+  case "$package" in ''|'#'*) continue ;; esac
+  all="$all $package"
+  if ! sh -c "$check" >/dev/null 2>&1; then
+    missing="$missing $package"
+    reasons="$reasons
+[ERROR]   $package ($(echo "$why" | sed 's/^ *//; s/ *$//'))"
+  fi
+done < "$list"
+if [ "$1" = "--missing" ]; then
+  for package in $missing; do echo "$package"; done
+  exit 0
 fi
 if [ -n "$missing" ]; then
-  echo "[ERROR] RsaML's tests need tools this machine lacks:$missing"
-  echo "[ERROR] On Debian or Ubuntu: sudo apt-get install -y cmake g++ make python3 python3-catkin-pkg"
-  echo "[ERROR] (elsewhere: pip install catkin_pkg for catkin_pkg). To build without the tests: ./mvnw install -DskipTests"
+  echo "[ERROR] RsaML's tests need tools this machine lacks:$reasons"
+  echo "[ERROR] On Debian or Ubuntu: sudo apt-get install -y$all"
+  echo "[ERROR] (catkin_pkg elsewhere: pip install catkin_pkg). To build without the tests: ./mvnw install -DskipTests"
   exit 1
 fi
