@@ -14,34 +14,18 @@ import java.util.stream.Stream;
 import org.rsaml.generator.GenerationResult;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
-import org.rsaml.model.Architecture;
-import org.rsaml.model.ArchitectureCategory;
-import org.rsaml.model.Connection;
-import org.rsaml.model.DataType;
-import org.rsaml.model.ElementType;
-import org.rsaml.model.EntryPort;
-import org.rsaml.model.ExecutionType;
-import org.rsaml.model.Function;
-import org.rsaml.model.Layer;
-import org.rsaml.model.Module;
-import org.rsaml.model.OutputPort;
-import org.rsaml.model.RsamlFactory;
-import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.RsamlValidationSetup;
 
 /**
- * Generation figures on a synthetic, valid architecture of N modules (4 layers; per module a
- * periodic function of 3 actions, an aperiodic function of 2, an entry and an output port, a
- * connection to the next module): for each target, the time of a first generation into an empty
- * directory, of a regeneration with nothing to change, and the size of the output. Prints a
- * Markdown table.
+ * Generation figures on a clean synthetic architecture of N modules ({@link SyntheticArchitecture}):
+ * for each target, the time of a first generation into an empty directory, of a regeneration with
+ * nothing to change, and the size of the output. Prints a Markdown table.
  */
 public final class GenerationBench {
 
-    static final int LAYERS = 4;
     static final int RUNS = 3;
 
     public static void main(String[] args) throws Exception {
@@ -49,7 +33,7 @@ public final class GenerationBench {
         int modules = Integer.parseInt(args[0].trim());
         Path dir = Files.createTempDirectory("rsaml-genbench");
         Path file = dir.resolve("synthetic-" + modules + ".rsaml");
-        ValidationBench.write(generate(modules), file);
+        SyntheticArchitecture.write(SyntheticArchitecture.of(modules, false), file);
 
         long t0 = System.nanoTime();
         LoadedModel model = ModelLoader.load(file, file.getFileName().toString());
@@ -89,68 +73,6 @@ public final class GenerationBench {
         System.out.println("| target | modules | first generation (median of " + RUNS + ") | regeneration, nothing changed | files | output |");
         System.out.println("|---|---:|---:|---:|---:|---:|");
         rows.forEach(System.out::println);
-    }
-
-    /** A clean layered architecture: every connection joins the same or adjacent layers, with equal types. */
-    static Architecture generate(int modules) {
-        RsamlFactory f = RsamlFactory.eINSTANCE;
-        Architecture a = f.createArchitecture();
-        a.setName("synthetic");
-        a.setCategory(ArchitectureCategory.HIERARCHICAL);
-        a.setDeclaredLayers(LAYERS);
-        List<Layer> layers = new ArrayList<>();
-        for (int l = 0; l < LAYERS; l++) {
-            Layer layer = f.createLayer();
-            layer.setName("layer" + l);
-            layer.setLevel(l);
-            layer.setMaxExecTime(5.0);
-            a.getLayers().add(layer);
-            layers.add(layer);
-        }
-        OutputPort previous = null;
-        for (int i = 0; i < modules; i++) {
-            Module m = f.createModule();
-            m.setName("m" + i);
-            m.setExecDuration(2.0);
-            layers.get(i * LAYERS / modules).getModules().add(m);
-            EntryPort in = f.createEntryPort();
-            in.setName("in");
-            in.setDataType(DataType.NUMERIC);
-            OutputPort out = f.createOutputPort();
-            out.setName("out");
-            m.getPorts().add(in);
-            m.getPorts().add(out);
-            Function periodic = f.createFunction();
-            periodic.setName("control");
-            periodic.setExecType(ExecutionType.PERIODIC);
-            periodic.setPeriod(20 + 10 * (i % 5));
-            periodic.setSchedPolicy(SchedulingPolicy.RM);
-            m.getFunctions().add(periodic);
-            for (int j = 0; j < 3; j++) {
-                var action = f.createAction();
-                action.setName("step" + j);
-                action.setExecDuration(0.5);
-                action.setStartDate(j * 0.5);
-                periodic.getActions().add(action);
-            }
-            Function onData = f.createFunction();
-            onData.setName("update");
-            onData.setType(ElementType.SIMPLE);
-            m.getFunctions().add(onData);
-            for (int j = 0; j < 2; j++) {
-                var action = f.createAction();
-                action.setName("apply" + j);
-                onData.getActions().add(action);
-            }
-            if (previous != null) {
-                Connection c = f.createConnection();
-                c.setSource(previous);
-                c.setTarget(in);
-                a.getConnections().add(c);
-            }
-            previous = out;
-        }
-        return a;
     }
 
     static long median(long[] values) {

@@ -1,0 +1,120 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.bench;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.ArchitectureCategory;
+import org.rsaml.model.Connection;
+import org.rsaml.model.DataType;
+import org.rsaml.model.ElementType;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.RsamlFactory;
+import org.rsaml.model.SchedulingPolicy;
+import org.rsaml.model.util.RsamlResourceFactoryImpl;
+
+/**
+ * The layered architecture every benchmark measures: 4 layers; per module an entry and an output
+ * port, a periodic RM function of 3 actions with start dates, an aperiodic function of 2 actions,
+ * and a connection to the next module's entry port (11 elements a module). Clean, or with a few
+ * defects for validation to find: about 1% of modules over their layer's budget (RSA-08) and 1% of
+ * connections between ports of different data types (RSA-02).
+ */
+final class SyntheticArchitecture {
+
+    static final int LAYERS = 4;
+    /** The module, 2 ports, 2 functions, 5 actions, 1 connection. */
+    static final int ELEMENTS_PER_MODULE = 11;
+
+    private SyntheticArchitecture() {
+    }
+
+    /** The number of modules that gives about {@code elements} elements. */
+    static int modulesFor(int elements) {
+        return Math.max(LAYERS, elements / ELEMENTS_PER_MODULE);
+    }
+
+    static Architecture of(int modules, boolean defects) {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Architecture a = f.createArchitecture();
+        a.setName("synthetic");
+        a.setCategory(ArchitectureCategory.HIERARCHICAL);
+        a.setDeclaredLayers(LAYERS);
+        List<Layer> layers = new ArrayList<>();
+        for (int l = 0; l < LAYERS; l++) {
+            Layer layer = f.createLayer();
+            layer.setName("layer" + l);
+            layer.setLevel(l);
+            layer.setMaxExecTime(5.0);
+            a.getLayers().add(layer);
+            layers.add(layer);
+        }
+        OutputPort previous = null;
+        for (int i = 0; i < modules; i++) {
+            Module m = f.createModule();
+            m.setName("m" + i);
+            m.setExecDuration(defects && i % 97 == 5 ? 7.5 : 2.0);
+            layers.get(i * LAYERS / modules).getModules().add(m);
+            EntryPort in = f.createEntryPort();
+            in.setName("in");
+            in.setDataType(defects && i % 101 == 7 ? DataType.BOOLEAN : DataType.NUMERIC);
+            OutputPort out = f.createOutputPort();
+            out.setName("out");
+            m.getPorts().add(in);
+            m.getPorts().add(out);
+            Function periodic = f.createFunction();
+            periodic.setName("control");
+            periodic.setExecType(ExecutionType.PERIODIC);
+            periodic.setPeriod(20 + 10 * (i % 5));
+            periodic.setSchedPolicy(SchedulingPolicy.RM);
+            m.getFunctions().add(periodic);
+            for (int j = 0; j < 3; j++) {
+                var action = f.createAction();
+                action.setName("step" + j);
+                action.setExecDuration(0.5);
+                action.setStartDate(j * 0.5);
+                periodic.getActions().add(action);
+            }
+            Function onData = f.createFunction();
+            onData.setName("update");
+            onData.setType(ElementType.SIMPLE);
+            m.getFunctions().add(onData);
+            for (int j = 0; j < 2; j++) {
+                var action = f.createAction();
+                action.setName("apply" + j);
+                onData.getActions().add(action);
+            }
+            if (previous != null) {
+                Connection c = f.createConnection();
+                c.setSource(previous);
+                c.setTarget(in);
+                a.getConnections().add(c);
+            }
+            previous = out;
+        }
+        return a;
+    }
+
+    static void write(Architecture a, Path file) throws Exception {
+        ResourceSetImpl set = new ResourceSetImpl();
+        set.getResourceFactoryRegistry().getExtensionToFactoryMap().put("rsaml", new RsamlResourceFactoryImpl());
+        Resource r = set.createResource(URI.createFileURI(file.toString()));
+        r.getContents().add(a);
+        r.save(Map.of());
+        r.unload();
+    }
+}
