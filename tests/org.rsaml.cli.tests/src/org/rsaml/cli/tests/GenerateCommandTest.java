@@ -49,6 +49,19 @@ class GenerateCommandTest {
     }
 
     @Test
+    void refusedFindingsComeThroughValidatesWritersInEveryFormat(@TempDir Path dir) {
+        for (String format : List.of("json", "sarif", "junit")) {
+            Cli.Result validate = Cli.run("validate", "--format", format, "examples/exp2-defects.rsaml");
+            Cli.Result generate = Cli.run("generate", "--format", format, "-t", "cpp", "-o", dir.resolve(format).toString(),
+                    "examples/exp2-defects.rsaml");
+            assertEquals(1, generate.code(), generate::toString);
+            // The same document; JUnit's time attribute is how long the check took, not a finding.
+            assertEquals(validate.out().replaceAll(" time=\"[0-9.]+\"", ""), generate.out().replaceAll(" time=\"[0-9.]+\"", ""), format);
+            assertTrue(generate.err().contains("generation refused"), generate::toString);
+        }
+    }
+
+    @Test
     void aModelWithErrorsIsRefusedUnlessForced(@TempDir Path dir) {
         Cli.Result refused = Cli.runIn(Cli.ROOT, "generate", "-t", "cpp", "-o", dir.resolve("exp2").toString(), "examples/exp2-defects.rsaml");
         assertEquals(1, refused.code(), refused::toString);

@@ -71,6 +71,8 @@ class ProcessTest {
         Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), work.resolve("model.rsaml"));
 
         Cli.Result r = Cli.process(work, List.of(bin.resolve("rsaml").toString(), "validate", "model.rsaml"));
+        // The link out of the temporary folder goes now, so JUnit need not warn about it.
+        Files.delete(tools.resolve("rsaml"));
         assertEquals(1, r.code(), r::toString);
         assertTrue(r.out().startsWith("model.rsaml:"), r::toString);
         assertTrue(r.out().endsWith("1 file checked: 5 errors, 0 warnings\n"), r::toString);
