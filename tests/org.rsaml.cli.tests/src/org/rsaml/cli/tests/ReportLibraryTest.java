@@ -58,8 +58,9 @@ class ReportLibraryTest {
     @Test
     void anotherKindOfCheckReusesEveryWriter() throws Exception {
         // As a timing analysis would: its own rule, its own findings, the same batch and formats.
-        Rule latency = new Rule("RSA-T1", "end-to-end-latency", Severity.WARNING, "analysis",
-                "A chain's end-to-end latency fits its deadline.", "Shorten the chain or relax the deadline.");
+        Rule latency = new Rule("RSA-T1", "end-to-end-latency", Severity.WARNING, "analysis", "Architecture",
+                "A chain's end-to-end latency fits its deadline.", "every chain with a deadline",
+                "chain {chain} takes {latency}, deadline {deadline}", "Shorten the chain or relax the deadline.");
         Report report = ModelBatch.run(Cli.ROOT, EXAMPLES.subList(0, 1), Severity.WARNING, List.of(latency),
                 (file, shown) -> List.of(new Finding(latency, Severity.WARNING, "chain a -> b takes 12 ms, deadline 10 ms",
                         "robot/a", "//@layers.0", shown, 3, 5)));

@@ -12,7 +12,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
 
-import org.rsaml.cli.report.ExitCodes;
+import org.rsaml.report.ExitCodes;
+import org.rsaml.report.ModelFiles;
 import org.rsaml.diagram.DiagramException;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
