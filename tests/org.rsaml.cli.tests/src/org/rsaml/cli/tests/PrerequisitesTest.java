@@ -29,7 +29,8 @@ class PrerequisitesTest {
     @Test
     void theReadmeInstallLineNamesEveryListedPackage() throws Exception {
         String readme = Files.readString(Cli.ROOT.resolve("README.md"));
-        String line = readme.lines().filter(l -> l.startsWith("sudo apt-get install -y ")).findFirst().orElseThrow();
+        String joined = readme.replace("\\\n", " ");
+        String line = joined.lines().filter(l -> l.startsWith("sudo apt-get install -y ")).findFirst().orElseThrow();
         List<String> named = Arrays.asList(line.substring("sudo apt-get install -y ".length()).trim().split(" +"));
         List<String> listed = packages();
         assertTrue(listed.size() >= 5, listed::toString);
@@ -40,7 +41,7 @@ class PrerequisitesTest {
     void aMissingToolStopsTheCheckWithItsNameAndTheInstallLine(@TempDir Path dir) throws Exception {
         // A PATH with the shell tools the script uses and the listed tools, except cmake.
         Path bin = Files.createDirectories(dir.resolve("bin"));
-        for (String tool : List.of("sh", "dirname", "tr", "sed", "g++", "make")) {
+        for (String tool : List.of("sh", "dirname", "tr", "sed", "g++", "make", "node", "npm")) {
             wrap(bin, tool, false);
         }
         wrap(bin, "python3", true);
