@@ -1,0 +1,139 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.TreeSet;
+import java.util.jar.Manifest;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+
+/**
+ * README's repository structure and docs/architecture.md stay true: every module folder is listed,
+ * every bundle is described, and the dependencies the page states are the ones the manifests and
+ * poms declare.
+ */
+class RepositoryDocsTest {
+
+    private static final Path ROOT = Cli.ROOT;
+    private static final Pattern RSAML_ID = Pattern.compile("org\\.rsaml\\.[a-z.]*[a-z]");
+
+    @Test
+    void theReadmeStructureListsEveryModuleFolder() throws Exception {
+        String readme = Files.readString(ROOT.resolve("README.md"));
+        int start = readme.indexOf("## Repository structure");
+        assertTrue(start >= 0, "README has a repository-structure section");
+        int open = readme.indexOf("```", start);
+        String block = readme.substring(open + 3, readme.indexOf("```", open + 3));
+        List<String> missing = new ArrayList<>();
+        for (String parent : List.of("bundles", "tests", "features", "releng", "maven")) {
+            assertTrue(block.contains("\n" + parent + "/"), () -> "README structure names " + parent + "/");
+            for (Path dir : folders(ROOT.resolve(parent))) {
+                if (!Pattern.compile("\\n {2}" + Pattern.quote(dir.getFileName().toString()) + "/").matcher(block).find()) {
+                    missing.add(parent + "/" + dir.getFileName());
+                }
+            }
+        }
+        assertEquals(List.of(), missing, "folders missing from README's repository structure");
+    }
+
+    @Test
+    void theArchitecturePageDescribesEveryBundle() throws Exception {
+        String page = Files.readString(ROOT.resolve("docs/architecture.md"));
+        List<String> missing = new ArrayList<>();
+        for (Path dir : folders(ROOT.resolve("bundles"))) {
+            if (!page.contains("| `" + dir.getFileName() + "`")) {
+                missing.add(dir.getFileName().toString());
+            }
+        }
+        assertEquals(List.of(), missing, "bundles without a row in docs/architecture.md");
+    }
+
+    @Test
+    void theStatedDependenciesAreTheDeclaredOnes() throws Exception {
+        TreeMap<String, Set<String>> stated = statedDependencies();
+        TreeMap<String, Set<String>> declared = new TreeMap<>();
+        for (Path dir : folders(ROOT.resolve("bundles"))) {
+            String name = dir.getFileName().toString();
+            Path manifest = dir.resolve("META-INF/MANIFEST.MF");
+            if (Files.exists(manifest)) {
+                try (InputStream in = Files.newInputStream(manifest)) {
+                    declared.put(name, rsamlIds(new Manifest(in).getMainAttributes().getValue("Require-Bundle")));
+                }
+            } else {
+                declared.put(name, pomDependencies(dir.resolve("pom.xml")));
+            }
+        }
+        declared.put("rsaml-maven-plugin", pomDependencies(ROOT.resolve("maven/rsaml-maven-plugin/pom.xml")));
+        assertEquals(declared, stated, "docs/architecture.md's dependency list against the manifests and poms");
+    }
+
+    /** The page's "bundle → requirements" lines; "a, b → x" states the same requirements for both. */
+    private static TreeMap<String, Set<String>> statedDependencies() throws Exception {
+        String page = Files.readString(ROOT.resolve("docs/architecture.md"));
+        int section = page.indexOf("## Direction of dependencies");
+        int open = page.indexOf("```", section);
+        String block = page.substring(open + 3, page.indexOf("```", open + 3));
+        TreeMap<String, Set<String>> stated = new TreeMap<>();
+        for (String line : block.strip().split("\n")) {
+            String[] sides = line.split("→", 2);
+            Set<String> requires = new TreeSet<>();
+            if (sides.length == 2) {
+                for (String r : sides[1].replaceAll("\\(.*\\)", "").split(",")) {
+                    requires.add("org.rsaml." + r.strip());
+                }
+            }
+            for (String b : sides[0].split(",")) {
+                String id = b.strip();
+                stated.put(id.equals("plugin") ? "rsaml-maven-plugin" : id, requires);
+            }
+        }
+        return stated;
+    }
+
+    private static Set<String> pomDependencies(Path pom) throws Exception {
+        String text = Files.readString(pom);
+        String deps = text.substring(text.indexOf("<dependencies>"), text.indexOf("</dependencies>"));
+        Set<String> ids = new TreeSet<>();
+        Matcher m = Pattern.compile("<artifactId>(org\\.rsaml\\.[a-z.]*[a-z])</artifactId>").matcher(deps);
+        while (m.find()) {
+            ids.add(m.group(1));
+        }
+        return ids;
+    }
+
+    private static Set<String> rsamlIds(String requireBundle) {
+        Set<String> ids = new TreeSet<>();
+        if (requireBundle != null) {
+            for (String clause : requireBundle.split(",(?=[^\"]*(\"[^\"]*\"[^\"]*)*$)")) {
+                String id = clause.split(";", 2)[0].strip();
+                if (RSAML_ID.matcher(id).matches()) {
+                    ids.add(id);
+                }
+            }
+        }
+        return ids;
+    }
+
+    private static List<Path> folders(Path parent) throws Exception {
+        try (Stream<Path> s = Files.list(parent)) {
+            return s.filter(Files::isDirectory)
+                    .filter(d -> !d.getFileName().toString().startsWith(".") && !d.getFileName().toString().equals("target"))
+                    .sorted().toList();
+        }
+    }
+}
