@@ -13,6 +13,7 @@ import org.rsaml.generator.GenerationResult;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
 import org.rsaml.validation.Finding;
+import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.Rules;
 import org.rsaml.validation.Severity;
 
@@ -25,11 +26,16 @@ public final class Generation {
     /**
      * @param report   the model's findings (failing at {@code error}: those refuse generation)
      * @param result   what was generated, or {@code null} when nothing was
-     * @param error    one line saying why nothing was generated, or {@code null}
+     * @param errors   why nothing was generated, a safe line each (every problem of a model that cannot be
+     *                 read), or empty when it was
      * @param cause    the exception behind {@code error}, for a debugging stack trace, or {@code null}
      * @param exitCode 0 generated, 1 refused for error findings, 2 the model or the output is unusable
      */
-    public record Outcome(Report report, GenerationResult result, String error, Throwable cause, int exitCode) {
+    public record Outcome(Report report, GenerationResult result, List<String> errors, Throwable cause, int exitCode) {
+
+        public Outcome {
+            errors = List.copyOf(errors);
+        }
 
         /** What was generated, in one line: {@code generated cpp into out: 12 written, 0 unchanged, 3 of yours kept}. */
         public String summary(String outputShown) {
@@ -53,17 +59,22 @@ public final class Generation {
     public static Outcome run(Path model, String modelShown, Target target, Path output, boolean force, String forceHint) {
         try {
             GenerationResult result = new RsamlGenerator().generate(model, modelShown, target, output, force);
-            return new Outcome(report(modelShown, result.findings()), result, null, null, ExitCodes.OK);
+            return new Outcome(report(modelShown, result.findings()), result, List.of(), null, ExitCodes.OK);
         } catch (GenerationRefusedException e) {
             int errors = e.errors().size();
-            return new Outcome(report(modelShown, e.findings()), null, modelShown + ": error: generation refused: the model has "
+            return new Outcome(report(modelShown, e.findings()), null, List.of(Text.line(modelShown + ": error: generation refused: the model has "
                     + errors + " error finding" + (errors == 1 ? "" : "s") + "; fix " + (errors == 1 ? "it" : "them")
-                    + " or " + forceHint, null, ExitCodes.FINDINGS);
+                    + " or " + forceHint)), null, ExitCodes.FINDINGS);
         } catch (GenerationException e) {
-            return new Outcome(report(modelShown, List.of()), null, e.toString(), e.getCause(), ExitCodes.INPUT_ERROR);
+            if (e.getCause() instanceof ModelLoadException unreadable) {
+                // Every problem of the file, and a report that says it could not be read.
+                return new Outcome(new Report(Rules.all(), List.of(FileResult.unreadable(unreadable, 0)), Severity.ERROR), null,
+                        Text.lines(unreadable), unreadable.getCause(), ExitCodes.INPUT_ERROR);
+            }
+            return new Outcome(report(modelShown, List.of()), null, List.of(Text.line(e.toString())), e.getCause(), ExitCodes.INPUT_ERROR);
         } catch (RuntimeException | StackOverflowError | LinkageError e) {
-            return new Outcome(report(modelShown, List.of()), null, modelShown
-                    + ": error: internal error while generating (a defect in RsaML, please report it): " + e, e, ExitCodes.INPUT_ERROR);
+            return new Outcome(report(modelShown, List.of()), null, List.of(Text.line(modelShown
+                    + ": error: internal error while generating (a defect in RsaML, please report it): " + e)), e, ExitCodes.INPUT_ERROR);
         }
     }
 

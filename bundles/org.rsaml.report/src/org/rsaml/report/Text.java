@@ -4,6 +4,10 @@
  */
 package org.rsaml.report;
 
+import java.util.List;
+
+import org.rsaml.validation.ModelLoadException;
+
 /**
  * Makes text from a model (names, descriptions, file names) safe to print where people and CI
  * runners read lines: a terminal, a build log. A model must not be able to forge a finding with a
@@ -53,6 +57,11 @@ public final class Text {
             escaped = escaped.replace("##vso[", "\\x23#vso[").replace("##[", "\\x23#[");
         }
         return escaped;
+    }
+
+    /** Every problem of an input that cannot be read, compiler style, one safe {@link #line} each. */
+    public static List<String> lines(ModelLoadException error) {
+        return error.problems().stream().map(p -> line(p.toString())).toList();
     }
 
     /** Whether a character must not reach a terminal or log as it is. */

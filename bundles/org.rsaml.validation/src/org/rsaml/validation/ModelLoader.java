@@ -6,7 +6,10 @@ package org.rsaml.validation;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Map;
 
 import org.eclipse.emf.common.util.URI;
@@ -56,12 +59,12 @@ public final class ModelLoader {
             return new ModelLoadException(file, 0, 0, "the file cannot be read: " + thrown.getMessage(), thrown);
         }
         Resource.Diagnostic first = resource.getErrors().get(0);
-        String message = first.getMessage();
-        int more = resource.getErrors().size() - 1;
-        if (more > 0) {
-            message += " (and " + more + " more error" + (more > 1 ? "s" : "") + ")";
+        List<ModelLoadException.Problem> more = new ArrayList<>();
+        for (Resource.Diagnostic next : resource.getErrors().subList(1, resource.getErrors().size())) {
+            more.add(new ModelLoadException.Problem(new SourceLocation(file, next.getLine(), next.getColumn()), next.getMessage()));
         }
-        return new ModelLoadException(file, first.getLine(), first.getColumn(), message, first instanceof Exception e ? e : thrown);
+        return new ModelLoadException(file, first.getLine(), first.getColumn(), first.getMessage(), more,
+                first instanceof Exception e ? e : thrown);
     }
 
     private static void checkCrossReferences(String file, URI uri, RsamlResource resource) throws ModelLoadException {
@@ -69,23 +72,36 @@ public final class ModelLoader {
         if (unresolved.isEmpty()) {
             return;
         }
-        Map.Entry<EObject, Collection<EStructuralFeature.Setting>> first = unresolved.entrySet().iterator().next();
-        EStructuralFeature.Setting setting = first.getValue().iterator().next();
-        SourceLocation at = resource.locate(setting.getEObject());
-        URI target = ((InternalEObject) first.getKey()).eProxyURI();
-        // Named as written, relative to the model, never as an absolute path the user did not give.
-        String named = target.trimFragment().equals(uri) ? target.fragment() : target.deresolve(uri).toString();
+        List<ModelLoadException.Problem> problems = new ArrayList<>();
+        for (Map.Entry<EObject, Collection<EStructuralFeature.Setting>> proxy : unresolved.entrySet()) {
+            URI target = ((InternalEObject) proxy.getKey()).eProxyURI();
+            String why = unresolvedBecause(uri, resource, target);
+            for (EStructuralFeature.Setting setting : proxy.getValue()) {
+                SourceLocation at = resource.locate(setting.getEObject());
+                problems.add(new ModelLoadException.Problem(new SourceLocation(file, at.line(), at.column()),
+                        "reference " + setting.getEStructuralFeature().getName() + " points to '" + named(uri, target) + "'" + why));
+            }
+        }
+        // In the order of the file, whatever order the references were found in.
+        problems.sort(Comparator.comparingInt((ModelLoadException.Problem p) -> p.location().line())
+                .thenComparingInt(p -> p.location().column()).thenComparing(ModelLoadException.Problem::message));
+        ModelLoadException.Problem first = problems.get(0);
+        throw new ModelLoadException(file, first.location().line(), first.location().column(), first.message(),
+                problems.subList(1, problems.size()), null);
+    }
+
+    /** A reference's target as written, relative to the model, never as an absolute path the user did not give. */
+    private static String named(URI uri, URI target) {
+        return target.trimFragment().equals(uri) ? target.fragment() : target.deresolve(uri).toString();
+    }
+
+    private static String unresolvedBecause(URI uri, RsamlResource resource, URI target) {
         Resource other = target.trimFragment().equals(uri) ? null : resource.getResourceSet().getResource(target.trimFragment(), false);
-        String why = ", which does not exist";
         if (other != null && !other.getErrors().isEmpty()) {
             Resource.Diagnostic problem = other.getErrors().get(0);
-            why = ", which cannot be loaded: " + new SourceLocation(target.trimFragment().deresolve(uri).toString(),
+            return ", which cannot be loaded: " + new SourceLocation(target.trimFragment().deresolve(uri).toString(),
                     problem.getLine(), problem.getColumn()) + ": " + problem.getMessage();
-        } else if (other != null && !other.isLoaded()) {
-            why = ", which cannot be loaded";
         }
-        throw new ModelLoadException(file, at.line(), at.column(), "reference " + setting.getEStructuralFeature().getName()
-                + " points to '" + named + "'" + why
-                + (unresolved.size() > 1 ? " (and " + (unresolved.size() - 1) + " more unresolved references)" : ""), null);
+        return other != null && !other.isLoaded() ? ", which cannot be loaded" : ", which does not exist";
     }
 }

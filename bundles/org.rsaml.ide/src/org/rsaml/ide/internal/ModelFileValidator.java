@@ -41,12 +41,14 @@ final class ModelFileValidator {
                 file.createMarker(RsamlMarkers.PROBLEM, attributes(file, finding));
             }
         } catch (ModelLoadException e) {
-            Map<String, Object> attributes = new HashMap<>();
-            attributes.put(IMarker.SEVERITY, IMarker.SEVERITY_ERROR);
-            attributes.put(IMarker.MESSAGE, RsamlMarkers.LOAD_ERROR_RULE_ID + ": " + e.getMessage());
-            attributes.put(IMarker.LINE_NUMBER, Math.max(1, e.line()));
-            attributes.put(RsamlMarkers.RULE_ID, RsamlMarkers.LOAD_ERROR_RULE_ID);
-            file.createMarker(RsamlMarkers.PROBLEM, attributes);
+            for (ModelLoadException.Problem problem : e.problems()) {
+                Map<String, Object> attributes = new HashMap<>();
+                attributes.put(IMarker.SEVERITY, IMarker.SEVERITY_ERROR);
+                attributes.put(IMarker.MESSAGE, RsamlMarkers.LOAD_ERROR_RULE_ID + ": " + problem.message());
+                attributes.put(IMarker.LINE_NUMBER, Math.max(1, problem.location().line()));
+                attributes.put(RsamlMarkers.RULE_ID, RsamlMarkers.LOAD_ERROR_RULE_ID);
+                file.createMarker(RsamlMarkers.PROBLEM, attributes);
+            }
         } catch (RuntimeException e) {
             // A defect of RsaML, not of the model: say so on the file instead of failing the whole build.
             Platform.getLog(ModelFileValidator.class).log(Status.error("RsaML could not validate " + displayName, e));

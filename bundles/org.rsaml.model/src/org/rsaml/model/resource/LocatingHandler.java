@@ -19,6 +19,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EPackage;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.InternalEObject;
+import org.eclipse.emf.ecore.xmi.ClassNotFoundException;
 import org.eclipse.emf.ecore.xmi.PackageNotFoundException;
 import org.eclipse.emf.ecore.xmi.XMIException;
 import org.eclipse.emf.ecore.xmi.XMLHelper;
@@ -71,6 +72,8 @@ final class LocatingHandler extends SAXXMIHandler {
     private String elementName;
     private String typeName;
     private EStructuralFeature typedFeature;
+    /** A namespace was already reported as unknown: its elements' types cannot be found either, which says nothing new. */
+    private boolean unknownNamespace;
 
     LocatingHandler(RsamlResource resource, XMLHelper helper, Map<?, ?> options, Context context) {
         super(resource, helper, options);
@@ -378,6 +381,10 @@ final class LocatingHandler extends SAXXMIHandler {
 
     @Override
     public void error(XMIException e) {
+        if (e instanceof ClassNotFoundException c && c.getFactory() == null && unknownNamespace) {
+            return;
+        }
+        unknownNamespace |= e instanceof PackageNotFoundException;
         if (e instanceof PackageNotFoundException p && p.uri() == null) {
             // EMF names no namespace as 'null': say which element or type lacks one.
             super.error(new LoadProblem(LoadMessages.noNamespace(elementName, typeName, typedFeature), e, getLocation(),

@@ -18,6 +18,7 @@ import org.rsaml.report.Report;
 import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.Finding;
+import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.Rule;
 
 /**
@@ -112,8 +113,10 @@ public final class JUnitReport {
             xml.writeAttribute("name", "load model");
             xml.writeStartElement("error");
             xml.writeAttribute("type", "input");
-            xml.writeAttribute("message", Text.line(result.error().getMessage()));
-            xml.writeCharacters(Text.line(result.error().toString()));
+            List<ModelLoadException.Problem> problems = result.error().problems();
+            xml.writeAttribute("message", Text.line(result.error().getMessage())
+                    + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more errors, all listed in the text below)" : ""));
+            xml.writeCharacters(String.join("\n", Text.lines(result.error())));
             xml.writeEndElement();
             xml.writeEndElement();
         }

@@ -11,6 +11,7 @@ import org.rsaml.report.FileResult;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportOptions;
 import org.rsaml.validation.Finding;
+import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.Severity;
 
 import com.google.gson.stream.JsonWriter;
@@ -50,15 +51,14 @@ public final class JsonReport {
                 json.endArray();
             } else {
                 json.name("status").value("unreadable");
-                json.name("error").beginObject();
-                json.name("message").value(result.error().getMessage());
-                if (result.error().line() > 0) {
-                    json.name("line").value(result.error().line());
+                // "error" is the first problem, "errors" every one of them.
+                json.name("error");
+                problem(json, result.error().problems().get(0));
+                json.name("errors").beginArray();
+                for (ModelLoadException.Problem problem : result.error().problems()) {
+                    problem(json, problem);
                 }
-                if (result.error().column() > 0) {
-                    json.name("column").value(result.error().column());
-                }
-                json.endObject();
+                json.endArray();
             }
             json.endObject();
         }
@@ -75,5 +75,17 @@ public final class JsonReport {
         json.endObject();
         json.flush();
         out.write('\n');
+    }
+
+    private static void problem(JsonWriter json, ModelLoadException.Problem problem) throws IOException {
+        json.beginObject();
+        json.name("message").value(problem.message());
+        if (problem.location().line() > 0) {
+            json.name("line").value(problem.location().line());
+        }
+        if (problem.location().column() > 0) {
+            json.name("column").value(problem.location().column());
+        }
+        json.endObject();
     }
 }

@@ -81,14 +81,15 @@ public final class SarifReport {
         json.name("toolExecutionNotifications").beginArray();
         for (FileResult result : report.results()) {
             if (!result.readable()) {
-                ModelLoadException error = result.error();
-                json.beginObject();
-                json.name("level").value("error");
-                json.name("message").beginObject().name("text").value(error.getMessage()).endObject();
-                json.name("locations").beginArray().beginObject();
-                physicalLocation(json, result.file(), error.line(), error.column(), base);
-                json.endObject().endArray();
-                json.endObject();
+                for (ModelLoadException.Problem problem : result.error().problems()) {
+                    json.beginObject();
+                    json.name("level").value("error");
+                    json.name("message").beginObject().name("text").value(problem.message()).endObject();
+                    json.name("locations").beginArray().beginObject();
+                    physicalLocation(json, result.file(), problem.location().line(), problem.location().column(), base);
+                    json.endObject().endArray();
+                    json.endObject();
+                }
             }
         }
         json.endArray();

@@ -26,7 +26,10 @@ public final class TextReport {
     public static void write(Report report, Writer out, ReportOptions options) throws IOException {
         for (FileResult result : report.results()) {
             if (!result.readable()) {
-                line(out, result.error().toString());
+                for (String line : Text.lines(result.error())) {
+                    out.write(line);
+                    out.write('\n');
+                }
                 continue;
             }
             for (Finding finding : result.findings()) {

@@ -220,6 +220,69 @@ class ReportFormatsTest {
         assertTrue(Files.isDirectory(dir.resolve("taken.sarif")));
     }
 
+    @Test
+    void everyLoadErrorOfAFileIsInEveryFormat(@TempDir Path dir) throws Exception {
+        // A mistake on each line that declares a module: all of them are reported, none summarised away.
+        String name = "many-errors.rsaml";
+        List<String> model = Files.readAllLines(Cli.INPUTS.resolve(name));
+        List<Integer> expected = new ArrayList<>();
+        for (int i = 0; i < model.size(); i++) {
+            if (model.get(i).contains("<modules name=\"m")) {
+                expected.add(i + 1);
+            }
+        }
+        assertEquals(12, expected.size());
+
+        Cli.Result text = Cli.runIn(Cli.INPUTS, "validate", "--output", "sarif=" + dir.resolve("r.sarif"),
+                "--output", "json=" + dir.resolve("r.json"), "--output", "junit=" + dir.resolve("r.xml"), name);
+        assertEquals(2, text.code(), text::toString);
+        List<String> lines = text.outLines().stream().filter(l -> l.startsWith(name + ":")).toList();
+        assertEquals(expected, lines.stream().map(l -> Integer.parseInt(l.split(":")[1])).toList(), text::toString);
+        assertTrue(lines.stream().allMatch(l -> l.matches(name + ":\\d+:\\d+: error: .+")), text::toString);
+        assertFalse(text.out().contains("more error"), text::toString);
+
+        JsonArray errors = JsonParser.parseString(Files.readString(dir.resolve("r.json"))).getAsJsonObject().getAsJsonArray("files")
+                .get(0).getAsJsonObject().getAsJsonArray("errors");
+        List<String> fromJson = new ArrayList<>();
+        for (var e : errors) {
+            JsonObject error = e.getAsJsonObject();
+            fromJson.add(name + ":" + error.get("line").getAsInt() + ":" + error.get("column").getAsInt() + ": error: "
+                    + error.get("message").getAsString());
+        }
+        assertEquals(lines, fromJson);
+
+        String sarif = Files.readString(dir.resolve("r.sarif"));
+        assertEquals(Set.of(), sarifProblems(sarif));
+        JsonArray notifications = JsonParser.parseString(sarif).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
+                .getAsJsonArray("invocations").get(0).getAsJsonObject().getAsJsonArray("toolExecutionNotifications");
+        List<String> fromSarif = new ArrayList<>();
+        for (var n : notifications) {
+            JsonObject notification = n.getAsJsonObject();
+            JsonObject region = notification.getAsJsonArray("locations").get(0).getAsJsonObject()
+                    .getAsJsonObject("physicalLocation").getAsJsonObject("region");
+            fromSarif.add(name + ":" + region.get("startLine").getAsInt() + ":" + region.get("startColumn").getAsInt() + ": error: "
+                    + notification.getAsJsonObject("message").get("text").getAsString());
+        }
+        assertEquals(lines, fromSarif);
+
+        List<ReportTestSuite> suites;
+        try (InputStreamReader in = new InputStreamReader(Files.newInputStream(dir.resolve("r.xml")), StandardCharsets.UTF_8)) {
+            suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(in);
+        }
+        ReportTestCase load = suites.get(0).getTestCases().get(0);
+        assertTrue(load.hasError());
+        assertTrue(load.getFailureMessage().endsWith("(and 11 more errors, all listed in the text below)"), load.getFailureMessage());
+        assertEquals(lines, load.getFailureDetail().lines().toList());
+
+        // Generation refuses the model with the same lines.
+        Cli.Result generate = Cli.runIn(Cli.INPUTS, "generate", "--target", "cpp", "-o", dir.resolve("out").toString(), name);
+        assertEquals(2, generate.code(), generate::toString);
+        assertEquals(lines, generate.errLines(), generate::toString);
+        Cli.Result generateJson = Cli.runIn(Cli.INPUTS, "generate", "--format", "json", "--target", "cpp", "-o",
+                dir.resolve("out").toString(), name);
+        assertEquals(Cli.runIn(Cli.INPUTS, "validate", "--format", "json", name).out(), generateJson.out(), "the document of rsaml validate");
+    }
+
     private static JsonObject find(JsonArray files, String name) {
         for (var f : files) {
             if (f.getAsJsonObject().get("file").getAsString().equals(name)) {

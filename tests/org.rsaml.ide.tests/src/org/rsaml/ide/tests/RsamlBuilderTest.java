@@ -140,6 +140,25 @@ class RsamlBuilderTest {
         assertEquals(List.of(), summaries(file));
     }
 
+    @Test
+    void aFileWithSeveralMistakesGetsAnErrorForEach() throws Exception {
+        RsamlProjects.addNature(project, null);
+        Path model = Paths.root().resolve("tests/org.rsaml.cli.tests/resources/inputs/many-errors.rsaml");
+        IFile file = copy(model, "many-errors.rsaml");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+
+        // One marker per line with a mistake (each line that declares a module), not one for the first alone.
+        List<String> lines = Files.readAllLines(model);
+        List<String> expected = new ArrayList<>();
+        for (int i = 0; i < lines.size(); i++) {
+            if (lines.get(i).contains("<modules name=\"m")) {
+                expected.add("RSA-00 line " + (i + 1) + " error");
+            }
+        }
+        assertEquals(12, expected.size());
+        assertEquals(expected, summaries(file).stream().sorted(Comparator.comparingInt(s -> Integer.parseInt(s.split(" ")[2]))).toList());
+    }
+
     /**
      * The tree editor's Validate replaces the file's markers of its type (the builder's) with one per
      * finding, written by {@link RsamlMarkers#create}: after a build and a Validate, and after a

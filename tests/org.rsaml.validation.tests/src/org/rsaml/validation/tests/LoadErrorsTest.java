@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -100,6 +101,31 @@ class LoadErrorsTest {
                 """);
         assertTrue(e.getMessage().contains("nope") && e.getMessage().contains("does not exist"), e.getMessage());
         assertEquals(6, e.line());
+        // Both ends are missing: both are reported, not the first alone.
+        assertEquals(List.of("dangling.rsaml:6:3: error: reference source points to '//@layers[name='a']/@modules[name='m']/@ports[name='nope']', which does not exist",
+                "dangling.rsaml:6:3: error: reference target points to '//@layers[name='a']/@modules[name='m']/@ports[name='none']', which does not exist"),
+                e.problems().stream().map(ModelLoadException.Problem::toString).toList());
+    }
+
+    @Test
+    void everyProblemOfTheFileIsKeptInTheOrderOfTheFile() throws Exception {
+        ModelLoadException e = fails("many.rsaml", """
+                <?xml version="1.0" encoding="UTF-8"?>
+                <rsaml:Architecture xmi:version="2.0" xmlns:xmi="http://www.omg.org/XMI" xmlns:rsaml="http://www.rsaml.org/rsaml/1.0" name="r" declaredLayers="1">
+                  <layers name="a">
+                    <modules name="m1" execType="weekly"/>
+                    <modules name="m2" period="50ms"/>
+                    <modules name="m3" colour="red"/>
+                  </layers>
+                </rsaml:Architecture>
+                """);
+        List<ModelLoadException.Problem> problems = e.problems();
+        assertEquals(List.of(4, 5, 6), problems.stream().map(p -> p.location().line()).toList(), e::toString);
+        assertEquals(new ModelLoadException.Problem(e.location(), e.getMessage()), problems.get(0));
+        assertTrue(problems.get(1).message().startsWith("'50ms' is not a number"), e::toString);
+        assertTrue(problems.get(2).message().startsWith("'colour' is not a feature of Module"), e::toString);
+        assertEquals(3, e.toString().lines().count(), e::toString);
+        assertTrue(e.toString().lines().allMatch(l -> l.startsWith("many.rsaml:")), e::toString);
     }
 
     @Test

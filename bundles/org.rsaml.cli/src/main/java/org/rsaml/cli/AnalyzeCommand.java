@@ -18,6 +18,7 @@ import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
+import org.rsaml.report.Text;
 import org.rsaml.generator.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.LoadedModel;
@@ -71,7 +72,7 @@ final class AnalyzeCommand implements Callable<Integer> {
         JsonArray json = new JsonArray();
         for (ModelFiles.Input input : ModelFiles.select(parent.workingDirectory, paths)) {
             if (input.unusable() != null) {
-                err.println(input.unusable());
+                Text.lines(input.unusable()).forEach(err::println);
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
             }
@@ -80,7 +81,7 @@ final class AnalyzeCommand implements Callable<Integer> {
                 LoadedModel model = ModelLoader.load(input.path(), input.displayName());
                 timing = TimingAnalysis.analyse(model.architecture());
             } catch (ModelLoadException e) {
-                err.println(e);
+                Text.lines(e).forEach(err::println);
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
             } catch (UnplannableException e) {

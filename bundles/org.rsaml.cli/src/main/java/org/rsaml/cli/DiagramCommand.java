@@ -14,6 +14,7 @@ import java.util.concurrent.Callable;
 
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
+import org.rsaml.report.Text;
 import org.rsaml.diagram.DiagramException;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
@@ -89,7 +90,7 @@ final class DiagramCommand implements Callable<Integer> {
         int code = ExitCodes.OK;
         for (ModelFiles.Input input : inputs) {
             if (input.unusable() != null) {
-                err.println(input.unusable());
+                Text.lines(input.unusable()).forEach(err::println);
                 code = ExitCodes.INPUT_ERROR;
                 continue;
             }
@@ -97,7 +98,7 @@ final class DiagramCommand implements Callable<Integer> {
                 Path written = diagrams.write(input.path(), input.displayName(), format, directory);
                 out.println("wrote " + ModelFiles.display(output.resolve(written.getFileName())));
             } catch (ModelLoadException e) {
-                err.println(e);
+                Text.lines(e).forEach(err::println);
                 code = ExitCodes.INPUT_ERROR;
             } catch (DiagramException e) {
                 err.println(input.displayName() + ": error: " + e.getMessage());

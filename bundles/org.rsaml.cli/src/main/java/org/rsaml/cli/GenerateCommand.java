@@ -79,8 +79,8 @@ final class GenerateCommand implements Callable<Integer> {
         for (String warning : outcome.warnings(shown)) {
             notes.println(Text.line(warning));
         }
-        if (outcome.error() != null) {
-            err.println(Text.line(outcome.error()));
+        if (!outcome.errors().isEmpty()) {
+            outcome.errors().forEach(err::println);
             parent.printCause(err, shown, outcome.cause());
         } else {
             notes.println(Text.line(outcome.summary(ModelFiles.display(output))));

@@ -107,7 +107,7 @@ final class ReportArgs {
             }
             if (format != ReportFormat.TEXT) {
                 // Structured output owns standard output; a person still reads input errors on standard error.
-                err.println(Text.line(result.error().toString()));
+                Text.lines(result.error()).forEach(err::println);
             }
             cli.printCause(err, result.file(), result.error().getCause());
         }

@@ -65,7 +65,7 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
         Log log = getLog();
         for (FileResult result : report.results()) {
             if (!result.readable()) {
-                log.error(Text.line(result.error().toString()));
+                Text.lines(result.error()).forEach(log::error);
                 if (log.isDebugEnabled() && result.error().getCause() != null) {
                     log.debug(Text.line(result.file() + ": cause of the error above:"), result.error().getCause());
                 }

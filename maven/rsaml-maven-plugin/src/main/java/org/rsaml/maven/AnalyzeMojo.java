@@ -24,6 +24,7 @@ import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.generator.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
 
@@ -68,7 +69,7 @@ public class AnalyzeMojo extends AbstractMojo {
             try {
                 timing = TimingAnalysis.analyse(ModelLoader.load(model.toPath(), shown).architecture());
             } catch (ModelLoadException e) {
-                throw new MojoExecutionException(e.toString());
+                throw new MojoExecutionException(String.join("\n", Text.lines(e)));
             } catch (UnplannableException e) {
                 throw new MojoExecutionException(shown + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
             } catch (TimingModelException e) {

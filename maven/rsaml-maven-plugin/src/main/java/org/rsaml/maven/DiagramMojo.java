@@ -22,6 +22,7 @@ import org.rsaml.diagram.DiagramException;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;
 
 /**
@@ -119,7 +120,7 @@ public class DiagramMojo extends AbstractMojo {
                     }
                 }
             } catch (ModelLoadException e) {
-                log.error(e.toString());
+                Text.lines(e).forEach(log::error);
                 failed++;
             } catch (DiagramException e) {
                 log.error(shown + ": error: " + e.getMessage());

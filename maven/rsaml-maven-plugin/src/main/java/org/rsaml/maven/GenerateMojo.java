@@ -5,6 +5,7 @@
 package org.rsaml.maven;
 
 import java.io.File;
+import java.util.List;
 
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
@@ -61,12 +62,15 @@ public class GenerateMojo extends AbstractRsamlMojo {
         for (String warning : outcome.warnings(shown)) {
             log.warn(Text.line(warning));
         }
-        if (outcome.error() != null) {
+        if (!outcome.errors().isEmpty()) {
             if (log.isDebugEnabled() && outcome.cause() != null) {
                 log.debug(outcome.cause());
             }
-            // The same line as the command line's: refused for error findings, or why the model or output is unusable.
-            throw new MojoFailureException("RsaML: " + Text.line(outcome.error()));
+            // The command line's first line: refused for error findings, or why the model or output is unusable
+            // (a model's further load errors were logged with the report).
+            List<String> errors = outcome.errors();
+            throw new MojoFailureException("RsaML: " + errors.get(0)
+                    + (errors.size() > 1 ? " (and " + (errors.size() - 1) + " more errors, listed above)" : ""));
         }
         log.info("RsaML: " + Text.line(outcome.summary(relative(outputDirectory.toPath()))));
     }
