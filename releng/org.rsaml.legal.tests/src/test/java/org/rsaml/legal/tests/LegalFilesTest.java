@@ -74,7 +74,7 @@ class LegalFilesTest {
     @Test
     void everyBundleAndFeatureShipsAboutHtml() throws IOException {
         List<Path> modules = new ArrayList<>();
-        for (String parent : List.of("bundles", "features")) {
+        for (String parent : List.of("bundles", "features", "tests")) {
             try (Stream<Path> children = Files.list(ROOT.resolve(parent))) {
                 children.filter(d -> Files.exists(d.resolve("build.properties"))).forEach(modules::add);
             }
