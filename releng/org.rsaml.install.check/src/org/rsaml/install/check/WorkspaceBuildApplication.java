@@ -26,14 +26,16 @@ import org.eclipse.equinox.app.IApplication;
 import org.eclipse.equinox.app.IApplicationContext;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.FrameworkUtil;
+import org.rsaml.tests.support.ExpectedFinding;
 
 /**
  * Builds a workspace holding one RsaML project, as Eclipse does after a user creates it, and checks the RsaML
- * problem markers against the expected rule and line of each finding. Exit code 0 when everything holds, 1
- * otherwise (each failed check printed on standard error).
+ * problem markers against the rule, line and severity of each finding the model states in its
+ * {@code <!-- expect: ... -->} comments. Exit code 0 when everything holds, 1 otherwise (each failed check printed
+ * on standard error).
  * <p>
- * Arguments: {@code -model FILE} the model to put in the project; {@code -expect RULE@LINE,...} the findings;
- * optionally {@code -expectBundle ID=VERSION}: exactly one bundle ID is installed, at VERSION.
+ * Arguments: {@code -model FILE} the model to put in the project; optionally {@code -expectBundle ID=VERSION}:
+ * exactly one bundle ID is installed, at VERSION.
  */
 public class WorkspaceBuildApplication implements IApplication {
 
@@ -51,7 +53,7 @@ public class WorkspaceBuildApplication implements IApplication {
             checkSingleBundle(args.get("-expectBundle"));
         }
         if (failures.isEmpty()) {
-            checkMarkers(Path.of(args.get("-model")), new TreeSet<>(Arrays.asList(args.get("-expect").split(","))));
+            checkMarkers(Path.of(args.get("-model")));
         }
         failures.forEach(f -> System.err.println("INSTALL CHECK FAILED: " + f));
         return failures.isEmpty() ? IApplication.EXIT_OK : Integer.valueOf(1);
@@ -60,7 +62,7 @@ public class WorkspaceBuildApplication implements IApplication {
     private void checkRsamlBundlesResolve() {
         int found = 0;
         for (Bundle bundle : context().getBundles()) {
-            if (bundle.getSymbolicName().startsWith("org.rsaml.") && !bundle.getSymbolicName().startsWith("org.rsaml.install.")) {
+            if (isInstalledRsaml(bundle.getSymbolicName())) {
                 found++;
                 if (bundle.getState() == Bundle.INSTALLED) {
                     failures.add(bundle.getSymbolicName() + " " + bundle.getVersion() + " is installed but does not resolve");
@@ -71,6 +73,11 @@ public class WorkspaceBuildApplication implements IApplication {
         if (found == 0) {
             failures.add("no RsaML bundle is installed");
         }
+    }
+
+    /** RsaML's bundles, not the check's own (this application and the test support it reads expectations with). */
+    private static boolean isInstalledRsaml(String id) {
+        return id.startsWith("org.rsaml.") && !id.startsWith("org.rsaml.install.") && !id.startsWith("org.rsaml.tests.");
     }
 
     private void checkSingleBundle(String expected) {
@@ -84,7 +91,15 @@ public class WorkspaceBuildApplication implements IApplication {
         }
     }
 
-    private void checkMarkers(Path model, TreeSet<String> expected) throws CoreException, java.io.IOException {
+    private void checkMarkers(Path model) throws CoreException, java.io.IOException {
+        TreeSet<String> expected = new TreeSet<>();
+        for (ExpectedFinding finding : ExpectedFinding.of(model)) {
+            expected.add(finding.ruleId() + "@" + finding.line() + " " + finding.severity());
+        }
+        if (expected.isEmpty()) {
+            failures.add(model + " states no finding in an <!-- expect: ... --> comment; nothing to check the markers against");
+            return;
+        }
         IWorkspace workspace = ResourcesPlugin.getWorkspace();
         if (workspace.getNatureDescriptor(NATURE) == null) {
             failures.add("the RsaML project nature " + NATURE + " is not installed");
@@ -116,13 +131,10 @@ public class WorkspaceBuildApplication implements IApplication {
 
         TreeSet<String> actual = new TreeSet<>();
         for (IMarker marker : file.findMarkers(MARKER, true, org.eclipse.core.resources.IResource.DEPTH_ZERO)) {
-            String finding = marker.getAttribute(RULE_ID, "?") + "@" + marker.getAttribute(IMarker.LINE_NUMBER, -1);
-            System.out.println("marker " + finding + " severity " + marker.getAttribute(IMarker.SEVERITY, -1) + ": "
-                    + marker.getAttribute(IMarker.MESSAGE, ""));
+            String finding = marker.getAttribute(RULE_ID, "?") + "@" + marker.getAttribute(IMarker.LINE_NUMBER, -1) + " "
+                    + severity(marker.getAttribute(IMarker.SEVERITY, -1));
+            System.out.println("marker " + finding + ": " + marker.getAttribute(IMarker.MESSAGE, ""));
             actual.add(finding);
-            if (marker.getAttribute(IMarker.SEVERITY, -1) != IMarker.SEVERITY_ERROR) {
-                failures.add(finding + " is not an error marker");
-            }
         }
         if (!actual.equals(expected)) {
             failures.add("RsaML markers on " + file.getFullPath() + " are " + actual + ", expected " + expected);
@@ -136,12 +148,22 @@ public class WorkspaceBuildApplication implements IApplication {
         workspace.save(true, null);
     }
 
+    /** The marker severity as the expect comments name it. */
+    private static String severity(int markerSeverity) {
+        return switch (markerSeverity) {
+            case IMarker.SEVERITY_ERROR -> "error";
+            case IMarker.SEVERITY_WARNING -> "warning";
+            case IMarker.SEVERITY_INFO -> "info";
+            default -> "severity " + markerSeverity;
+        };
+    }
+
     private static Map<String, String> arguments(String[] args) {
         Map<String, String> map = new java.util.HashMap<>();
         for (int i = 0; i + 1 < args.length; i += 2) {
             map.put(args[i], args[i + 1]);
         }
-        for (String required : List.of("-model", "-expect")) {
+        for (String required : List.of("-model")) {
             if (!map.containsKey(required)) {
                 throw new IllegalArgumentException("missing argument " + required + " (arguments: " + Arrays.toString(args) + ")");
             }

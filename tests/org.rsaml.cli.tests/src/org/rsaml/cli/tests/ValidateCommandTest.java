@@ -16,6 +16,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.tests.support.ExpectedFinding;
 
 /** {@code rsaml validate} in text format: findings, summary, thresholds and exit codes. */
 class ValidateCommandTest {

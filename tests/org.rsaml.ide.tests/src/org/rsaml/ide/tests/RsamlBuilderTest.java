@@ -20,8 +20,6 @@ import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import org.eclipse.core.resources.IFile;
@@ -46,6 +44,7 @@ import org.junit.jupiter.api.TestInfo;
 import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.ide.RsamlProjects;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.tests.support.ExpectedFinding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
@@ -324,11 +323,9 @@ class RsamlBuilderTest {
     /** {@code <!-- expect: RSA-08 error a/b at 50:5: message -->} in exp2-defects.rsaml as "RSA-08 line 50 error". */
     private static List<String> experimentTwo() {
         try {
-            Matcher m = Pattern.compile("<!-- expect: (RSA-\\d\\d) (\\w+) .+? at (\\d+):\\d+: ")
-                    .matcher(Files.readString(Paths.example("exp2-defects.rsaml")));
             List<String> expected = new ArrayList<>();
-            while (m.find()) {
-                expected.add(m.group(1) + " line " + m.group(3) + " " + m.group(2));
+            for (ExpectedFinding finding : ExpectedFinding.of(Paths.example("exp2-defects.rsaml"))) {
+                expected.add(finding.ruleId() + " line " + finding.line() + " " + finding.severity());
             }
             assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
             expected.sort(null);

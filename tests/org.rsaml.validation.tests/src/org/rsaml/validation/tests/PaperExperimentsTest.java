@@ -16,6 +16,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.rsaml.tests.support.ExpectedFinding;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Severity;

@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli.tests;
+package org.rsaml.tests.support;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -14,15 +14,15 @@ import java.util.regex.Pattern;
 
 /**
  * A finding a model states it must give, in a comment of the model itself, so that its tests read
- * the expectation from one place:
+ * the expectation from one place (the validation, command-line and install tests):
  * {@code <!-- expect: RSA-08 error robot/control/checker at 50:5: Module 'checker' takes ... -->}.
  */
-record ExpectedFinding(String ruleId, String severity, String qualifiedName, int line, int column, String message) {
+public record ExpectedFinding(String ruleId, String severity, String qualifiedName, int line, int column, String message) {
 
     private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d) (error|warning|info) (.+?) at (\\d+):(\\d+): (.+?) -->");
 
     /** The located expectations of the model, in the order it states them. */
-    static List<ExpectedFinding> of(Path model) throws IOException {
+    public static List<ExpectedFinding> of(Path model) throws IOException {
         List<ExpectedFinding> expected = new ArrayList<>();
         Matcher m = EXPECT.matcher(Files.readString(model));
         while (m.find()) {
