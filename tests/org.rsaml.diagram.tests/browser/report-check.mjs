@@ -82,8 +82,22 @@ async function checkReport() {
   })));
   seen.screenshot = await shot('report.png');
 
+  // The box of the element an item points at, in screen pixels, and whether it lies inside the diagram's area.
+  const boxOf = (ids) => page.evaluate((ids) => {
+    const svg = document.querySelector('#diagram > svg').getBoundingClientRect();
+    const boxes = ids.map((id) => document.getElementById(id)).filter(Boolean).map((e) => e.getBoundingClientRect());
+    if (boxes.length === 0) { return null; }
+    const left = Math.min(...boxes.map((b) => b.left)), top = Math.min(...boxes.map((b) => b.top));
+    const right = Math.max(...boxes.map((b) => b.right)), bottom = Math.max(...boxes.map((b) => b.bottom));
+    return { width: right - left, height: bottom - top, view: [svg.width, svg.height],
+      inside: left >= svg.left - 1 && top >= svg.top - 1 && right <= svg.right + 1 && bottom <= svg.bottom + 1 };
+  }, ids);
+
   const items = await page.$$('#findings li');
   for (let i = 0; i < items.length; i++) {
+    await page.click('#zoom-fit');
+    const target = await page.evaluate((li) => li.dataset.target, items[i]);
+    const before = await boxOf([target]);
     await items[i].click();
     const click = await page.evaluate(() => {
       const svg = document.querySelector('#diagram > svg').getBoundingClientRect();
@@ -96,8 +110,46 @@ async function checkReport() {
         visible: box ? box.width > 0 && box.height > 0 : false,
       };
     });
+    click.before = before;
+    click.after = await boxOf([target]);
     click.screenshot = await shot(`finding-${i + 1}-${seen.findings[i].rule}.png`);
     seen.clicks.push(click);
+  }
+
+  // What an overlay (the timing analysis) draws: its items, the elements styled as a latency path, and
+  // what clicking each item highlights.
+  await page.click('#zoom-fit');
+  seen.overlay = await page.evaluate(() => {
+    const svg = document.querySelector('#diagram > svg').getBoundingClientRect();
+    return {
+      sections: Array.from(document.querySelectorAll('aside h2')).map((h) => h.textContent),
+      items: Array.from(document.querySelectorAll('.overlay-items li')).map((li) => ({
+        text: li.querySelector('.text').textContent, style: li.className, targets: (li.dataset.targets || '').split(' ').filter(Boolean),
+        shown: li.getBoundingClientRect().height > 0,
+      })),
+      path: Array.from(document.querySelectorAll('#diagram .latency-path')).map((g) => {
+        const line = g.querySelector(':scope > .shape, :scope > path');
+        const style = getComputedStyle(line);
+        const b = g.getBoundingClientRect();
+        return { qname: g.dataset.qname || '', kind: g.dataset.kind, stroke: style.stroke, width: style.strokeWidth, dash: style.strokeDasharray,
+          visible: (b.width > 0 || b.height > 0) && b.left >= svg.left - 1 && b.right <= svg.right + 1 && b.top >= svg.top - 1 && b.bottom <= svg.bottom + 1 };
+      }),
+      texts: Array.from(document.querySelectorAll('#diagram text.overlay-misses, #diagram text.overlay-meets, #diagram text.overlay-unknown'))
+        .map((t) => ({ text: t.textContent, fill: getComputedStyle(t).fill })),
+      clicks: [],
+    };
+  });
+  if (seen.overlay.items.length > 0) {
+    seen.overlay.screenshot = await shot('overlay.png');
+  }
+  const overlayItems = await page.$$('.overlay-items li');
+  for (let i = 0; i < overlayItems.length; i++) {
+    await page.click('#zoom-fit');
+    const targets = seen.overlay.items[i].targets;
+    const before = await boxOf(targets);
+    await overlayItems[i].click();
+    const highlighted = await page.$$eval('#diagram .highlight', (els) => els.map((e) => e.dataset.qname));
+    seen.overlay.clicks.push({ highlighted, before, after: await boxOf(targets), screenshot: await shot(`overlay-${i + 1}.png`) });
   }
 
   await page.click('#zoom-fit');

@@ -12,4 +12,7 @@ expected.each { assert log.contains("RsaML: drew target/rsaml/diagrams/$it") }
 def svg = javax.xml.parsers.DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(new File(dir, 'exp2-defects-architecture.svg'))
 assert svg.documentElement.tagName == 'svg'
 assert new File(dir, 'exp2-defects-architecture.html').text.contains('data-rule="RSA-08"')
+// <timing>on</timing>: the architecture view shows the processors' utilisation, the mission view does not.
+assert new File(dir, 'rover-architecture.svg').text.contains('processor default (preemptive fixed priority): utilisation ')
+assert !new File(dir, 'rover-mission.svg').text.contains('utilisation ')
 return true

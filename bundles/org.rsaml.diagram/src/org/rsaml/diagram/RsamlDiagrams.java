@@ -12,11 +12,12 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
+import java.util.TreeSet;
 import java.util.UUID;
 
 import org.rsaml.diagram.internal.ArchitectureLayout;
@@ -24,6 +25,7 @@ import org.rsaml.diagram.internal.Drawing;
 import org.rsaml.diagram.internal.HtmlWriter;
 import org.rsaml.diagram.internal.MissionLayout;
 import org.rsaml.diagram.internal.SvgWriter;
+import org.rsaml.diagram.internal.TimingOverlay;
 import org.rsaml.model.Architecture;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
@@ -45,9 +47,19 @@ public final class RsamlDiagrams {
 
     private final DiagramView view;
     private final List<DiagramOverlay> overlays = new ArrayList<>();
+    private TimingMode timing = TimingMode.AUTO;
 
     public RsamlDiagrams(DiagramView view) {
         this.view = view;
+    }
+
+    /**
+     * Whether the architecture view shows the timing analysis (processors' utilisation, tasks'
+     * response times, latency requirements' worst paths); {@link TimingMode#AUTO} by default.
+     */
+    public RsamlDiagrams timing(TimingMode mode) {
+        this.timing = mode;
+        return this;
     }
 
     /** Adds an overlay (e.g. timing analysis results) drawn over the diagram. */
@@ -73,17 +85,26 @@ public final class RsamlDiagrams {
     }
 
     private DiagramOverlay.Notes notes(Architecture architecture) {
-        if (overlays.isEmpty()) {
+        List<DiagramOverlay> all = new ArrayList<>();
+        if (view == DiagramView.ARCHITECTURE && timing.appliesTo(architecture)) {
+            all.add(new TimingOverlay());
+        }
+        all.addAll(overlays);
+        if (all.isEmpty()) {
             return DiagramOverlay.Notes.NONE;
         }
-        Map<String, List<String>> lines = new LinkedHashMap<>();
-        Set<String> emphasised = new HashSet<>();
-        for (DiagramOverlay overlay : overlays) {
+        Map<String, List<DiagramOverlay.Line>> lines = new LinkedHashMap<>();
+        Map<String, Set<String>> classes = new LinkedHashMap<>();
+        Map<String, Map<String, String>> data = new LinkedHashMap<>();
+        List<DiagramOverlay.Item> items = new ArrayList<>();
+        for (DiagramOverlay overlay : all) {
             DiagramOverlay.Notes notes = overlay.notes(architecture);
             notes.lines().forEach((k, v) -> lines.computeIfAbsent(k, x -> new ArrayList<>()).addAll(v));
-            emphasised.addAll(notes.emphasised());
+            notes.classes().forEach((k, v) -> classes.computeIfAbsent(k, x -> new TreeSet<>()).addAll(v));
+            notes.data().forEach((k, v) -> data.computeIfAbsent(k, x -> new TreeMap<>()).putAll(v));
+            items.addAll(notes.items());
         }
-        return new DiagramOverlay.Notes(lines, emphasised);
+        return new DiagramOverlay.Notes(lines, classes, data, items);
     }
 
     /** The file a model's diagram is written to: {@code exp1-hybrid-architecture.svg} for {@code exp1-hybrid.rsaml}. */

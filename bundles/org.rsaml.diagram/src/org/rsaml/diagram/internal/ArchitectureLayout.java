@@ -479,7 +479,7 @@ public final class ArchitectureLayout extends Layout {
         shape.y = y;
         shape.width = width;
         shape.height = height;
-        emphasise(item.element(), shape.classes);
+        emphasise(item.element(), shape.classes, shape.data);
         if (item.element() instanceof org.rsaml.model.RealTimeElement rt && rt.getExecType() == ExecutionType.PERIODIC) {
             shape.classes.add("periodic");
         }

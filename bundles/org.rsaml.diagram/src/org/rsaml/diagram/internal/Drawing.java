@@ -8,8 +8,10 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 import org.eclipse.emf.ecore.EObject;
+import org.rsaml.diagram.DiagramOverlay;
 import org.rsaml.validation.Finding;
 
 /**
@@ -40,6 +42,8 @@ public final class Drawing {
         public final List<String> classes = new ArrayList<>();
         public final List<Text> texts = new ArrayList<>();
         public final List<Badge> badges = new ArrayList<>();
+        /** {@code data-} attributes from overlays, by name (sorted: the same model gives the same bytes). */
+        public final Map<String, String> data = new TreeMap<>();
 
         public Shape(String kind, EObject element, Shape parent) {
             this.kind = kind;
@@ -59,6 +63,7 @@ public final class Drawing {
         public final List<Text> texts = new ArrayList<>();
         public final List<Badge> badges = new ArrayList<>();
         public final List<String> classes = new ArrayList<>();
+        public final Map<String, String> data = new TreeMap<>();
         /** A letter drawn in a circle on the link's last segment (I for inhibitors, S for suppressors), or null. */
         public String marker;
 
@@ -81,6 +86,8 @@ public final class Drawing {
     public final Map<EObject, List<Finding>> findings = new LinkedHashMap<>();
     /** Findings on elements this view does not draw at all (not even a container). */
     public final List<Finding> undrawn = new ArrayList<>();
+    /** What the overlays list beside the diagram (HTML only). */
+    public final List<DiagramOverlay.Item> items = new ArrayList<>();
 
     public Drawing(String title, String view) {
         this.title = title;

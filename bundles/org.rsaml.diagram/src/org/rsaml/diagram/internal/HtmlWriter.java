@@ -18,6 +18,7 @@ import java.util.regex.Pattern;
 import org.eclipse.emf.ecore.EAttribute;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
+import org.rsaml.diagram.DiagramOverlay;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.Severity;
@@ -52,6 +53,7 @@ public final class HtmlWriter {
         values.put("JS", resource("report.js"));
         values.put("SVG", SvgWriter.write(drawing, false));
         values.put("FINDINGS", findingItems(drawing, findings, ids));
+        values.put("OVERLAY", overlayItems(drawing, ids));
         values.put("DATA", data(drawing, file, findings, ids));
         String template = resource("report.html");
         Matcher m = TOKEN.matcher(template);
@@ -97,6 +99,36 @@ public final class HtmlWriter {
                     .append(on == null ? " \u00b7 not drawn in this view" : "").append("</span></li>\n");
         }
         return b.toString();
+    }
+
+    /** The overlays' items, one list per section, each pointing at the ids of the elements it concerns. */
+    private static String overlayItems(Drawing drawing, Map<EObject, String> ids) {
+        Map<String, List<String>> idsByName = new LinkedHashMap<>();
+        for (Map.Entry<EObject, String> e : ids.entrySet()) {
+            idsByName.computeIfAbsent(RsamlLabels.qualifiedName(e.getKey()), k -> new ArrayList<>()).add(e.getValue());
+        }
+        Map<String, StringBuilder> sections = new LinkedHashMap<>();
+        for (DiagramOverlay.Item item : drawing.items) {
+            List<String> targets = new ArrayList<>();
+            for (String element : item.elements()) {
+                targets.addAll(idsByName.getOrDefault(element, List.of()));
+            }
+            StringBuilder b = sections.computeIfAbsent(item.section(), k -> new StringBuilder());
+            b.append("<li class=\"overlay-item ").append(SvgWriter.esc(item.line().style())).append("\" tabindex=\"0\" data-targets=\"")
+                    .append(String.join(" ", targets)).append("\"><span class=\"text\">").append(SvgWriter.esc(item.line().text()))
+                    .append("</span>");
+            for (String detail : item.details()) {
+                b.append("<span class=\"detail\">").append(SvgWriter.esc(detail)).append("</span>");
+            }
+            b.append("</li>\n");
+        }
+        StringBuilder out = new StringBuilder();
+        for (Map.Entry<String, StringBuilder> e : sections.entrySet()) {
+            String id = "overlay-" + e.getKey().toLowerCase(java.util.Locale.ROOT).replaceAll("[^a-z0-9]+", "-");
+            out.append("    <h2>").append(SvgWriter.esc(e.getKey())).append("</h2>\n    <ul class=\"overlay-items\" id=\"").append(id)
+                    .append("\">\n").append(e.getValue()).append("    </ul>\n");
+        }
+        return out.toString();
     }
 
     private static String data(Drawing drawing, String file, List<Finding> findings, Map<EObject, String> ids) {

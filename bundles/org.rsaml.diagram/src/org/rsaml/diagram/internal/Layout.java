@@ -80,6 +80,7 @@ abstract class Layout {
         this.architecture = architecture;
         this.drawing = new Drawing(RsamlLabels.name(architecture), view);
         this.notes = notes;
+        drawing.items.addAll(notes.items());
         register();
         assign(findings);
         root.setProperty(CoreOptions.ALGORITHM, LayeredOptions.ALGORITHM_ID);
@@ -198,16 +199,17 @@ abstract class Layout {
     /** The overlay's extra lines for an element. */
     protected List<Line> overlayLines(EObject element) {
         List<Line> lines = new ArrayList<>();
-        for (String text : notes.lines().getOrDefault(RsamlLabels.qualifiedName(element), List.of())) {
-            lines.add(new Line(text, SMALL, false, "overlay"));
+        for (DiagramOverlay.Line line : notes.lines().getOrDefault(RsamlLabels.qualifiedName(element), List.of())) {
+            lines.add(new Line(line.text(), SMALL, false, line.style()));
         }
         return lines;
     }
 
-    protected void emphasise(EObject element, List<String> classes) {
-        if (notes.emphasised().contains(RsamlLabels.qualifiedName(element))) {
-            classes.add("emphasis");
-        }
+    /** The overlay's classes and data attributes for an element, in a fixed order. */
+    protected void emphasise(EObject element, List<String> classes, Map<String, String> data) {
+        String qname = RsamlLabels.qualifiedName(element);
+        classes.addAll(new java.util.TreeSet<>(notes.classes().getOrDefault(qname, Set.of())));
+        data.putAll(notes.data().getOrDefault(qname, Map.of()));
     }
 
     // ---------------------------------------------------------------- text blocks
@@ -307,7 +309,7 @@ abstract class Layout {
         shape.width = elk.getWidth();
         shape.height = elk.getHeight();
         if (element != null) {
-            emphasise(element, shape.classes);
+            emphasise(element, shape.classes, shape.data);
         }
         drawing.shapes.add(shape);
         return shape;
@@ -339,7 +341,11 @@ abstract class Layout {
             }
         }
         if (element != null) {
-            emphasise(element, link.classes);
+            emphasise(element, link.classes, link.data);
+        } else if (source != null && target != null) {
+            String name = RsamlLabels.qualifiedName(source) + " -> " + RsamlLabels.qualifiedName(target);
+            link.classes.addAll(new java.util.TreeSet<>(notes.classes().getOrDefault(name, Set.of())));
+            link.data.putAll(notes.data().getOrDefault(name, Map.of()));
         }
         drawing.links.add(link);
         return link;

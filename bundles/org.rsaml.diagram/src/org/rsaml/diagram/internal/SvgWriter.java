@@ -129,7 +129,7 @@ public final class SvgWriter {
                 .append("<path d=\"M0,0 L10,4 L0,8 Z\" fill=\"").append(colour).append("\"/></marker>\n");
     }
 
-    private void open(String kind, EObject element, List<String> classes, String extra) {
+    private void open(String kind, EObject element, List<String> classes, Map<String, String> data, String extra) {
         out.append("<g");
         if (element != null) {
             out.append(" id=\"").append(ids.get(element)).append('"');
@@ -148,6 +148,9 @@ public final class SvgWriter {
             out.append(" data-qname=\"").append(esc(RsamlLabels.qualifiedName(element))).append('"');
             String fragment = element.eResource() == null ? "" : element.eResource().getURIFragment(element);
             out.append(" data-uri=\"").append(esc(fragment)).append('"');
+        }
+        for (Map.Entry<String, String> d : data.entrySet()) {
+            out.append(" data-").append(d.getKey()).append("=\"").append(esc(d.getValue())).append('"');
         }
         out.append(extra).append(">");
         if (element != null) {
@@ -170,7 +173,7 @@ public final class SvgWriter {
 
     private void shape(Drawing.Shape shape) {
         String parent = shape.parent == null || shape.parent.element == null ? "" : ids.get(shape.parent.element);
-        open(shape.kind, shape.element, shape.classes, parent.isEmpty() ? "" : " data-parent=\"" + parent + "\"");
+        open(shape.kind, shape.element, shape.classes, shape.data, parent.isEmpty() ? "" : " data-parent=\"" + parent + "\"");
         switch (shape.form) {
             case "ellipse" -> out.append("<ellipse class=\"shape\" cx=\"").append(num(shape.x + shape.width / 2)).append("\" cy=\"")
                     .append(num(shape.y + shape.height / 2)).append("\" rx=\"").append(num(shape.width / 2)).append("\" ry=\"")
@@ -205,7 +208,7 @@ public final class SvgWriter {
         }
         List<String> classes = new java.util.ArrayList<>(link.classes);
         classes.add(0, "link");
-        open(link.kind, link.element, classes, extra.toString());
+        open(link.kind, link.element, classes, link.data, extra.toString());
         out.append("<path d=\"");
         for (int i = 0; i < link.points.size(); i++) {
             double[] p = link.points.get(i);

@@ -58,15 +58,28 @@
   });
   window.addEventListener('mouseup', function () { drag = null; });
 
-  function highlight(element) {
+  function highlight(elements) {
     var previous = svg.querySelectorAll('.highlight');
     for (var i = 0; i < previous.length; i++) { previous[i].classList.remove('highlight'); }
-    if (element) { element.classList.add('highlight'); }
+    elements.forEach(function (e) { e.classList.add('highlight'); });
   }
-  function centre(element) {
-    var b = element.getBBox();
-    view.x = b.x + b.width / 2 - view.w / 2;
-    view.y = b.y + b.height / 2 - view.h / 2;
+  // Zooms so that the elements span about 40 % of the diagram's width or height (never more than two
+  // screen pixels per unit, so a port is not blown up) and centres them.
+  function focus(elements) {
+    if (elements.length === 0) { return; }
+    var x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    elements.forEach(function (e) {
+      var b = e.getBBox();
+      x0 = Math.min(x0, b.x); y0 = Math.min(y0, b.y);
+      x1 = Math.max(x1, b.x + b.width); y1 = Math.max(y1, b.y + b.height);
+    });
+    var rect = svg.getBoundingClientRect();
+    var aspect = rect.width / Math.max(1, rect.height);
+    var w = Math.max((x1 - x0) * 2.5, (y1 - y0) * 2.5 * aspect, rect.width / 2);
+    // Never wider than the view of the whole diagram, nor so close that they do not fit.
+    var whole = Math.max(full.w, full.h * aspect);
+    w = Math.max(Math.min(w, whole), Math.min(Math.max(x1 - x0, (y1 - y0) * aspect) * 1.05, whole));
+    view = { x: (x0 + x1) / 2 - w / 2, y: (y0 + y1) / 2 - w / aspect / 2, w: w, h: w / aspect };
     apply();
   }
   function cell(row, text, header) {
@@ -107,32 +120,47 @@
     details.appendChild(list);
   }
   function select(item) {
-    var items = document.querySelectorAll('#findings li');
+    var items = document.querySelectorAll('#findings li, .overlay-items li');
     for (var i = 0; i < items.length; i++) { items[i].classList.remove('selected'); }
     if (item) { item.classList.add('selected'); }
+  }
+  function activate(item, open) {
+    item.addEventListener('click', open);
+    item.addEventListener('keydown', function (e) { if (e.key === 'Enter') { open(); } });
   }
 
   var findingItems = document.querySelectorAll('#findings li');
   for (var i = 0; i < findingItems.length; i++) {
     (function (item) {
-      function open() {
+      activate(item, function () {
         select(item);
         var target = item.getAttribute('data-target');
         var element = target ? document.getElementById(target) : null;
-        highlight(element);
+        highlight(element ? [element] : []);
         if (element) {
-          centre(element);
+          focus([element]);
           show(target);
         }
-      }
-      item.addEventListener('click', open);
-      item.addEventListener('keydown', function (e) { if (e.key === 'Enter') { open(); } });
+      });
     })(findingItems[i]);
+  }
+  // Overlay items (a processor, a latency requirement) highlight every element they concern.
+  var overlayItems = document.querySelectorAll('.overlay-items li');
+  for (var j = 0; j < overlayItems.length; j++) {
+    (function (item) {
+      activate(item, function () {
+        select(item);
+        var targets = (item.getAttribute('data-targets') || '').split(' ').filter(Boolean);
+        var elements = targets.map(function (id) { return document.getElementById(id); }).filter(Boolean);
+        highlight(elements);
+        focus(elements);
+      });
+    })(overlayItems[j]);
   }
   svg.addEventListener('click', function (e) {
     if (dragged) { return; }
     var element = e.target.closest('.el');
-    highlight(element);
+    highlight(element ? [element] : []);
     select(null);
     if (element) { show(element.id); }
   });

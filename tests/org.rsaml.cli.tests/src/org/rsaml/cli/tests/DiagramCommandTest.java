@@ -60,6 +60,27 @@ class DiagramCommandTest {
     }
 
     @Test
+    void timingIsDrawnWhenTheModelAsksForItOrWhenAsked(@TempDir Path dir) throws Exception {
+        String missed = Cli.ROOT.resolve("examples/mobile-base-latency-missed.rsaml").toString();
+        String plain = Cli.ROOT.resolve("examples/exp1-hybrid.rsaml").toString();
+        Cli.Result auto = Cli.runIn(dir, "diagram", "-o", "auto", missed, plain);
+        assertEquals(0, auto.code(), auto::toString);
+        String drawn = Files.readString(dir.resolve("auto/mobile-base-latency-missed-architecture.svg"));
+        assertTrue(drawn.contains("latency scanToWheels (reaction time at most 50 ms): worst 57 ms: MISSES"), "drawn by default: the model has processors");
+        assertTrue(drawn.contains("class=\"el module latency-misses latency-path realtime\""), "the worst path is drawn");
+        assertFalse(Files.readString(dir.resolve("auto/exp1-hybrid-architecture.svg")).contains("utilisation"), "no timing question, no timing");
+
+        Cli.Result on = Cli.runIn(dir, "diagram", "--timing", "-o", "on", plain);
+        assertEquals(0, on.code(), on::toString);
+        assertTrue(Files.readString(dir.resolve("on/exp1-hybrid-architecture.svg")).contains("processor default (preemptive fixed priority): utilisation "));
+
+        Cli.Result off = Cli.runIn(dir, "diagram", "--no-timing", "-o", "off", missed);
+        assertEquals(0, off.code(), off::toString);
+        String none = Files.readString(dir.resolve("off/mobile-base-latency-missed-architecture.svg"));
+        assertFalse(none.contains("utilisation") || none.contains("latency-path\""), "--no-timing draws none");
+    }
+
+    @Test
     void theRunnableJarDrawsWithElksAlgorithms(@TempDir Path dir) throws Exception {
         Cli.Result r = Cli.process(dir, Cli.java(List.of(), "diagram", "--format", "html", "-o", "out",
                 Cli.ROOT.resolve("examples/exp2-defects.rsaml").toString()));

@@ -36,7 +36,7 @@ final class Browser {
     private Browser() {
     }
 
-    /** Runs report-check.mjs with {@code arguments} (Chromium's path is inserted) and returns what it saw. */
+    /** Runs report-check.mjs with {@code arguments} (Chromium's path is inserted) and returns what it saw; screenshots go to OUT/name. */
     static JsonObject run(String name, List<String> before, List<String> after) throws Exception {
         Files.createDirectories(OUT);
         assertTrue(Files.isRegularFile(DRIVER), DRIVER + " is installed by the build (npm ci in target/browser-driver)");
@@ -44,7 +44,9 @@ final class Browser {
         command.add(executable("node", "RSAML_NODE", "nodejs"));
         command.add(DRIVER.toString());
         command.addAll(before);
-        command.add(OUT.toString());
+        Path screenshots = OUT.resolve(name);
+        Files.createDirectories(screenshots);
+        command.add(screenshots.toString());
         command.add(executable("chromium", "RSAML_CHROMIUM", "chromium"));
         command.addAll(after);
         Path stdout = OUT.resolve(name + ".json");

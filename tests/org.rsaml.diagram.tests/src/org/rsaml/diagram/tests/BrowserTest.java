@@ -27,22 +27,30 @@ import com.google.gson.JsonObject;
 /**
  * Experiment 2's HTML report in the system's headless Chromium, driven by puppeteer-core
  * (browser/report-check.mjs, installed by the build into target/browser-driver): five findings
- * listed, a click on each highlights and centres its element, a click on an element shows its
- * attributes and findings, zoom and pan move the view, nothing is fetched. The screenshots stay
- * in target/browser/ for a person to look at.
+ * listed, a click on each highlights its element, zooms in on it and centres it, a click on an
+ * element shows its attributes and findings, zoom and pan move the view, nothing is fetched. The
+ * missed latency example's page shows the timing: its list, the worst path drawn in the miss colour,
+ * highlighted and brought into view by a click. The screenshots stay in target/browser/ for a person
+ * to look at.
  */
 class BrowserTest {
 
     private static final String MODULE = "hybridMobileRobotWithDefects/control/resourceChecker";
 
+    private static final String MISSED = "mobile-base-latency-missed.rsaml";
+
     private static JsonObject seen;
+    private static JsonObject timing;
 
     @BeforeAll
-    static void openTheReport() throws Exception {
+    static void openTheReports() throws Exception {
         Files.createDirectories(Browser.OUT);
         Path page = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example("exp2-defects.rsaml"),
                 "examples/exp2-defects.rsaml", DiagramFormat.HTML, Browser.OUT);
         seen = Browser.run("exp2-report", List.of(page.toString()), List.of(MODULE));
+        Path timed = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
+                Browser.OUT.resolve("timing"));
+        timing = Browser.run("timing-report", List.of(timed.toString()), List.of()).getAsJsonObject("overlay");
     }
 
     @Test
@@ -54,11 +62,12 @@ class BrowserTest {
     }
 
     @Test
-    void clickingEachFindingHighlightsAndCentresItsElement() throws Exception {
+    void clickingEachFindingHighlightsZoomsToAndCentresItsElement() throws Exception {
         JsonArray findings = seen.getAsJsonArray("findings");
         JsonArray clicks = seen.getAsJsonArray("clicks");
         assertEquals(findings.size(), clicks.size());
         Set<String> rules = new HashSet<>();
+        int zoomedIn = 0;
         for (int i = 0; i < findings.size(); i++) {
             JsonObject finding = findings.get(i).getAsJsonObject();
             JsonObject click = clicks.get(i).getAsJsonObject();
@@ -70,9 +79,25 @@ class BrowserTest {
             assertTrue(Math.abs(offset.get(0).getAsDouble()) < 3 && Math.abs(offset.get(1).getAsDouble()) < 3,
                     rule + ": the element is centred in the diagram (off by " + offset + ")");
             assertTrue(click.get("details").getAsString().endsWith(" " + qname), rule + ": the element's details are shown");
+            JsonObject before = click.getAsJsonObject("before");
+            JsonObject after = click.getAsJsonObject("after");
+            assertTrue(after.get("inside").getAsBoolean(), rule + ": the element is inside the view after the click: " + after);
+            JsonArray view = before.getAsJsonArray("view");
+            boolean small = before.get("width").getAsDouble() < view.get(0).getAsDouble() / 4
+                    && before.get("height").getAsDouble() < view.get(1).getAsDouble() / 4;
+            if (small) {
+                assertTrue(after.get("width").getAsDouble() > before.get("width").getAsDouble() * 1.2
+                        && after.get("height").getAsDouble() > before.get("height").getAsDouble() * 1.2,
+                        rule + ": the click zooms in on the element (" + before + " before, " + after + " after)");
+                zoomedIn++;
+            } else {
+                assertTrue(after.get("width").getAsDouble() >= before.get("width").getAsDouble() * 0.99,
+                        rule + ": an element as large as the view is not zoomed out of (" + before + " before, " + after + " after)");
+            }
             Browser.assertNotBlank(Path.of(click.get("screenshot").getAsString()));
         }
         assertEquals(Set.of("RSA-01", "RSA-02", "RSA-04", "RSA-07", "RSA-08"), rules);
+        assertEquals(2, zoomedIn, "the two small elements (a module and a function) are zoomed in on; the others fill a quarter of the view already");
     }
 
     @Test
@@ -94,6 +119,45 @@ class BrowserTest {
         JsonObject pan = seen.getAsJsonObject("pan");
         assertTrue(pan.get("after").getAsDouble() < pan.get("before").getAsDouble() - 50, "dragging right moves the view left: " + pan);
         Browser.assertNotBlank(Path.of(seen.get("overview").getAsString()));
+    }
+
+    @Test
+    void theTimingOverlayIsVisibleAndItsPathIsHighlightedOnClick() throws Exception {
+        Set<String> sections = new HashSet<>(strings(timing.getAsJsonArray("sections")));
+        assertTrue(sections.contains("Timing") && sections.contains("Findings"), "a Timing section beside the findings: " + sections);
+        JsonObject missed = null;
+        int index = -1;
+        JsonArray items = timing.getAsJsonArray("items");
+        for (int i = 0; i < items.size(); i++) {
+            JsonObject item = items.get(i).getAsJsonObject();
+            assertTrue(item.get("shown").getAsBoolean(), item + " is shown");
+            if (item.get("text").getAsString().startsWith("latency scanToWheels")) {
+                missed = item;
+                index = i;
+            }
+        }
+        assertTrue(missed != null && missed.get("text").getAsString().endsWith(": MISSES"), "the missed requirement is listed: " + items);
+        assertTrue(missed.get("style").getAsString().contains("overlay-misses"));
+        Set<String> path = new HashSet<>();
+        for (JsonElement e : timing.getAsJsonArray("path")) {
+            JsonObject element = e.getAsJsonObject();
+            assertEquals("rgb(164, 0, 0)", element.get("stroke").getAsString(), element + " is drawn in the miss colour");
+            assertEquals("4px", element.get("width").getAsString(), element + " has the path's heavy stroke");
+            assertTrue(element.get("visible").getAsBoolean(), element + " is visible in the whole diagram");
+            if (!element.get("qname").getAsString().isEmpty()) {
+                path.add(element.get("qname").getAsString());
+            }
+        }
+        String root = "mobileBaseSlowDetector/";
+        assertTrue(path.containsAll(List.of(root + "navigation/obstacleDetector", root + "control/velocityController", root + "laserScanner",
+                root + "wheelMotors")), "the path's elements are drawn as such: " + path);
+        assertTrue(timing.getAsJsonArray("texts").toString().contains("scanToWheels hop 1: +44 ms (wait 40 ms + response 4 ms)"),
+                "the hops' contributions are written in the diagram");
+        JsonObject click = timing.getAsJsonArray("clicks").get(index).getAsJsonObject();
+        assertEquals(path, new HashSet<>(strings(click.getAsJsonArray("highlighted"))), "clicking the requirement highlights its path");
+        assertTrue(click.getAsJsonObject("after").get("inside").getAsBoolean(), "the whole path is in view: " + click);
+        Browser.assertNotBlank(Path.of(timing.get("screenshot").getAsString()));
+        Browser.assertNotBlank(Path.of(click.get("screenshot").getAsString()));
     }
 
     private static List<String> strings(JsonArray array) {

@@ -55,11 +55,11 @@ final class SvgDocument {
     }
 
     record Shape(String id, String kind, String qname, String uri, String parent, List<String> classes, Box box,
-            List<Text> texts, List<String> badges) {
+            List<Text> texts, List<String> badges, Map<String, String> data) {
     }
 
     record Link(String id, String kind, String qname, String uri, String source, String target, List<String> classes,
-            List<double[]> points, List<String> badges) {
+            List<double[]> points, List<String> badges, Map<String, String> data) {
     }
 
     final Document document;
@@ -83,7 +83,7 @@ final class SvgDocument {
             }
             if (classes.contains("link")) {
                 links.add(new Link(g.getAttribute("id"), g.getAttribute("data-kind"), attr(g, "data-qname"), attr(g, "data-uri"), attr(g, "data-source"),
-                        attr(g, "data-target"), classes, points(child(g, "path").getAttribute("d")), badges(g)));
+                        attr(g, "data-target"), classes, points(child(g, "path").getAttribute("d")), badges(g), data(g)));
             } else {
                 Element shape = child(g, "rect");
                 Box box;
@@ -100,9 +100,21 @@ final class SvgDocument {
                     }
                 }
                 shapes.put(g.getAttribute("id"), new Shape(g.getAttribute("id"), g.getAttribute("data-kind"), attr(g, "data-qname"),
-                        attr(g, "data-uri"), attr(g, "data-parent"), classes, box, texts, badges(g)));
+                        attr(g, "data-uri"), attr(g, "data-parent"), classes, box, texts, badges(g), data(g)));
             }
         }
+    }
+
+    /** Every data- attribute, by its name without the prefix. */
+    private static Map<String, String> data(Element g) {
+        Map<String, String> data = new LinkedHashMap<>();
+        for (int i = 0; i < g.getAttributes().getLength(); i++) {
+            Node a = g.getAttributes().item(i);
+            if (a.getNodeName().startsWith("data-")) {
+                data.put(a.getNodeName().substring(5), a.getNodeValue());
+            }
+        }
+        return data;
     }
 
     private static List<String> badges(Element g) {

@@ -91,7 +91,7 @@ class SvgTest {
     void overlayNotesAndEmphasisAreDrawnOnTheirElements() throws Exception {
         LoadedModel model = ModelLoader.load(Examples.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
         String module = "hybridMobileRobot/control/resourceChecker";
-        DiagramOverlay overlay = architecture -> new DiagramOverlay.Notes(Map.of(module, List.of("utilisation 42 %")), Set.of(module));
+        DiagramOverlay overlay = architecture -> DiagramOverlay.Notes.of(Map.of(module, List.of("utilisation 42 %")), Set.of(module));
         String svgText = new RsamlDiagrams(DiagramView.ARCHITECTURE).overlay(overlay).svg(model.architecture(),
                 RsamlModelValidator.validate(model));
         SvgDocument svg = new SvgDocument(svgText);

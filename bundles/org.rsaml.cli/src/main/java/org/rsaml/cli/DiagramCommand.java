@@ -19,6 +19,7 @@ import org.rsaml.diagram.DiagramException;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.diagram.TimingMode;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.RsamlValidationSetup;
 
@@ -33,7 +34,7 @@ import picocli.CommandLine.Model.CommandSpec;
 /** {@code rsaml diagram [--view V] [--format F] -o DIR MODEL...}: each model drawn into DIR. */
 @Command(name = "diagram", mixinStandardHelpOptions = true, sortOptions = false,
         description = { "Draws models laid out by the Eclipse Layout Kernel, as SVG images or as self-contained HTML pages",
-                "(diagram, findings, validation summary, pan and zoom; no network needed to open them).",
+                "(diagram, findings, timing, validation summary, pan and zoom; no network needed to open them).",
                 "Each model is written to DIR/<model>-<view>.<svg|html>; findings decorate the elements they are on." },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:every diagram written (findings do not change the exit code; see 'rsaml validate')",
@@ -48,6 +49,12 @@ final class DiagramCommand implements Callable<Integer> {
     @Option(names = { "-f", "--format" }, defaultValue = "svg", paramLabel = "FORMAT", converter = FormatConverter.class,
             description = "svg or html; default ${DEFAULT-VALUE}.")
     DiagramFormat format;
+
+    @Option(names = "--timing", negatable = true,
+            description = { "Draw the timing analysis over the architecture view: processors' utilisation, tasks' worst-case response",
+                    "times and each latency requirement's worst path; --no-timing never draws it. Default: when the model deploys",
+                    "modules on processors or states latency requirements." })
+    Boolean timing;
 
     @Option(names = { "-o", "--output" }, required = true, paramLabel = "DIR",
             description = "The directory the diagrams are written to (created if needed).")
@@ -72,7 +79,8 @@ final class DiagramCommand implements Callable<Integer> {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     ModelFiles.display(output) + " is a file; -o names the directory the diagrams are written to");
         }
-        RsamlDiagrams diagrams = new RsamlDiagrams(view);
+        RsamlDiagrams diagrams = new RsamlDiagrams(view)
+                .timing(timing == null ? TimingMode.AUTO : timing ? TimingMode.ON : TimingMode.OFF);
         List<ModelFiles.Input> inputs = ModelFiles.select(parent.workingDirectory, models);
         // Two models of the same name would overwrite each other's diagram: refuse before writing anything.
         Map<String, ModelFiles.Input> byFile = new LinkedHashMap<>();

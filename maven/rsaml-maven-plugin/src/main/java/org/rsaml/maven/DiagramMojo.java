@@ -22,6 +22,7 @@ import org.rsaml.diagram.DiagramException;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.diagram.TimingMode;
 import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;
 
@@ -54,6 +55,14 @@ public class DiagramMojo extends AbstractMojo {
     @Parameter(property = "rsaml.diagramFormats", defaultValue = "svg,html")
     List<String> diagramFormats;
 
+    /**
+     * Whether the architecture view draws the timing analysis (processors' utilisation, tasks' response
+     * times, latency requirements' worst paths): {@code auto} (when the model deploys modules on
+     * processors or states latency requirements), {@code on} or {@code off}.
+     */
+    @Parameter(property = "rsaml.timing", defaultValue = "auto")
+    String timing;
+
     /** Where the diagrams are written. */
     @Parameter(property = "rsaml.diagramDirectory", defaultValue = "${project.build.directory}/rsaml/diagrams")
     File outputDirectory;
@@ -77,7 +86,9 @@ public class DiagramMojo extends AbstractMojo {
         }
         List<DiagramView> diagramViews = new ArrayList<>();
         List<DiagramFormat> formats = new ArrayList<>();
+        TimingMode timingMode;
         try {
+            timingMode = TimingMode.parse(timing);
             for (String view : views) {
                 if (!view.isBlank()) {
                     diagramViews.add(DiagramView.parse(view));
@@ -115,7 +126,7 @@ public class DiagramMojo extends AbstractMojo {
             try {
                 for (DiagramView view : diagramViews) {
                     for (DiagramFormat format : formats) {
-                        Path written = new RsamlDiagrams(view).write(base.resolve(model), shown, format, outputDirectory.toPath());
+                        Path written = new RsamlDiagrams(view).timing(timingMode).write(base.resolve(model), shown, format, outputDirectory.toPath());
                         log.info("RsaML: drew " + relative(written));
                     }
                 }
