@@ -19,6 +19,7 @@ import org.junit.jupiter.api.Test;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.tests.support.TestRepository;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonElement;
@@ -45,10 +46,10 @@ class BrowserTest {
     @BeforeAll
     static void openTheReports() throws Exception {
         Files.createDirectories(Browser.OUT);
-        Path page = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example("exp2-defects.rsaml"),
+        Path page = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example("exp2-defects.rsaml"),
                 "examples/exp2-defects.rsaml", DiagramFormat.HTML, Browser.OUT);
         seen = Browser.run("exp2-report", List.of(page.toString()), List.of(MODULE));
-        Path timed = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
+        Path timed = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
                 Browser.OUT.resolve("timing"));
         timing = Browser.run("timing-report", List.of(timed.toString()), List.of()).getAsJsonObject("overlay");
     }

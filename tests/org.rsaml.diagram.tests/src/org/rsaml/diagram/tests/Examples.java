@@ -12,27 +12,20 @@ import java.util.stream.Stream;
 
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
 
-/** The repository's example models and their diagrams. */
+/** The repository's example models (found through {@link TestRepository}) and their diagrams. */
 final class Examples {
 
     private Examples() {
     }
 
-    static Path root() {
-        return Path.of(System.getProperty("rsaml.root", "../..")).toAbsolutePath().normalize();
-    }
-
-    static Path example(String name) {
-        return root().resolve("examples").resolve(name);
-    }
-
     static List<String> names() throws IOException {
-        try (Stream<Path> files = Files.list(root().resolve("examples"))) {
+        try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples"))) {
             return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted().toList();
         }
     }
@@ -41,7 +34,7 @@ final class Examples {
     }
 
     static Drawn draw(String name, DiagramView view) throws Exception {
-        LoadedModel model = ModelLoader.load(example(name), "examples/" + name);
+        LoadedModel model = ModelLoader.load(TestRepository.example(name), "examples/" + name);
         List<Finding> findings = RsamlModelValidator.validate(model);
         return new Drawn(model, findings, new RsamlDiagrams(view).svg(model.architecture(), findings));
     }

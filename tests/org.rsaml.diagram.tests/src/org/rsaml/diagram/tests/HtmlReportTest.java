@@ -15,6 +15,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
@@ -29,7 +30,7 @@ class HtmlReportTest {
     @MethodSource("org.rsaml.diagram.tests.Examples#names")
     void selfContainedPageWithFindingsAndElementData(String name) throws Exception {
         for (DiagramView view : DiagramView.values()) {
-            LoadedModel model = ModelLoader.load(Examples.example(name), "examples/" + name);
+            LoadedModel model = ModelLoader.load(TestRepository.example(name), "examples/" + name);
             var findings = RsamlModelValidator.validate(model);
             String html = new RsamlDiagrams(view).html(model.architecture(), "examples/" + name, findings);
             assertFalse(Pattern.compile("<(script|link|img|iframe)[^>]*(src|href)=", Pattern.CASE_INSENSITIVE).matcher(html).find(),

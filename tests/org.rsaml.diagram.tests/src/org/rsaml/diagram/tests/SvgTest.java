@@ -22,6 +22,7 @@ import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramOverlay;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
@@ -65,13 +66,13 @@ class SvgTest {
     @Test
     void sameModelSameBytesWithoutPathsOrDates(@TempDir Path dir) throws Exception {
         for (DiagramFormat format : DiagramFormat.values()) {
-            Path first = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example("exp2-defects.rsaml"), "examples/exp2-defects.rsaml",
+            Path first = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example("exp2-defects.rsaml"), "examples/exp2-defects.rsaml",
                     format, dir.resolve("a"));
-            Path second = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example("exp2-defects.rsaml"), "examples/exp2-defects.rsaml",
+            Path second = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example("exp2-defects.rsaml"), "examples/exp2-defects.rsaml",
                     format, dir.resolve("b"));
             assertEquals(Files.readString(first), Files.readString(second));
             String text = Files.readString(first);
-            assertFalse(text.contains(Examples.root().toString()), "no absolute path in the " + format.id());
+            assertFalse(text.contains(TestRepository.root().toString()), "no absolute path in the " + format.id());
             assertFalse(text.matches("(?s).*20\\d\\d-\\d\\d-\\d\\d.*"), "no date in the " + format.id());
             assertEquals("exp2-defects-architecture." + format.id(), first.getFileName().toString());
         }
@@ -79,17 +80,17 @@ class SvgTest {
 
     @Test
     void readmeShowsTheCurrentDiagramOfExperimentOne() throws Exception {
-        Path image = Examples.root().resolve("docs/images/exp1-hybrid-architecture.svg");
+        Path image = TestRepository.root().resolve("docs/images/exp1-hybrid-architecture.svg");
         String current = Examples.draw("exp1-hybrid.rsaml", DiagramView.ARCHITECTURE).svg();
         assertTrue(Files.exists(image), image + " exists");
         assertEquals(current, Files.readString(image),
                 "docs/images/exp1-hybrid-architecture.svg is out of date: run ./rsaml diagram -o docs/images examples/exp1-hybrid.rsaml");
-        assertTrue(Files.readString(Examples.root().resolve("README.md")).contains("docs/images/exp1-hybrid-architecture.svg"));
+        assertTrue(Files.readString(TestRepository.root().resolve("README.md")).contains("docs/images/exp1-hybrid-architecture.svg"));
     }
 
     @Test
     void overlayNotesAndEmphasisAreDrawnOnTheirElements() throws Exception {
-        LoadedModel model = ModelLoader.load(Examples.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
+        LoadedModel model = ModelLoader.load(TestRepository.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
         String module = "hybridMobileRobot/control/resourceChecker";
         DiagramOverlay overlay = architecture -> DiagramOverlay.Notes.of(Map.of(module, List.of("utilisation 42 %")), Set.of(module));
         String svgText = new RsamlDiagrams(DiagramView.ARCHITECTURE).overlay(overlay).svg(model.architecture(),

@@ -35,6 +35,7 @@ import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
 import org.rsaml.diagram.TimingMode;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
@@ -52,7 +53,7 @@ class TimingOverlayTest {
     }
 
     private static Analysed analyse(String name, TimingMode mode) throws Exception {
-        LoadedModel model = ModelLoader.load(Examples.example(name), "examples/" + name);
+        LoadedModel model = ModelLoader.load(TestRepository.example(name), "examples/" + name);
         ArchitectureTiming timing = TimingAnalysis.analyse(model.architecture());
         String svg = new RsamlDiagrams(DiagramView.ARCHITECTURE).timing(mode).svg(model.architecture(), RsamlModelValidator.validate(model));
         return new Analysed(model, timing, new SvgDocument(svg), svg);
@@ -182,9 +183,9 @@ class TimingOverlayTest {
 
     @Test
     void theHtmlPageListsTheTimingAndPointsAtThePath(@TempDir Path dir) throws Exception {
-        Path first = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
+        Path first = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
                 dir.resolve("a"));
-        Path second = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(Examples.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
+        Path second = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
                 dir.resolve("b"));
         String html = Files.readString(first);
         assertEquals(html, Files.readString(second), "the same model gives the same page");
