@@ -37,7 +37,6 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
-import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
 import org.rsaml.model.Sensor;
 import org.rsaml.model.SubsumptionLink;

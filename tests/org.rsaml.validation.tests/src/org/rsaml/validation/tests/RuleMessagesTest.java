@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.stream.Collectors;
 
 import org.junit.jupiter.api.Test;
-import org.rsaml.validation.Finding;
 import org.rsaml.validation.RsamlModelValidator;
 
 /** The messages of the rules a user meets on new kinds of models say what to change and name the limit. */
