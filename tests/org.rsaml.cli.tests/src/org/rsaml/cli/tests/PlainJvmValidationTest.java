@@ -12,8 +12,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
@@ -37,7 +35,6 @@ import org.rsaml.validation.RsamlModelValidator;
 class PlainJvmValidationTest {
 
     private static final Path RULE_MODELS = Cli.ROOT.resolve("tests/org.rsaml.validation.tests/resources/rules");
-    private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d) (error|warning|info) (.+?) -->");
 
     @Test
     void runsOnAPlainClassPath() {
@@ -64,12 +61,7 @@ class PlainJvmValidationTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("ruleModels")
     void ruleModelGivesTheFindingsItStates(Path model) throws Exception {
-        String text = Files.readString(model);
-        List<String> expected = new ArrayList<>();
-        Matcher m = EXPECT.matcher(text);
-        while (m.find()) {
-            expected.add(m.group(1) + " " + m.group(2) + " " + m.group(3));
-        }
+        List<String> expected = new ArrayList<>(ExpectedFinding.of(model).stream().map(ExpectedFinding::what).toList());
         List<String> actual = new ArrayList<>(RsamlModelValidator.validate(model).stream()
                 .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName()).toList());
         expected.sort(null);

@@ -16,13 +16,14 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.tests.support.TestRepository;
 
 /** Every plugin.xml of bundles/ uses only extension points of bundles its manifest requires. */
 class ExtensionPointDependenciesTest {
 
     @Test
     void everyBundleRequiresTheBundlesDeclaringTheExtensionPointsItUses() throws Exception {
-        Path root = Paths.root();
+        Path root = TestRepository.root();
         List<Path> bundles;
         try (Stream<Path> dirs = Files.list(root.resolve("bundles"))) {
             bundles = dirs.filter(d -> Files.isRegularFile(d.resolve("plugin.xml"))).sorted().collect(Collectors.toList());
@@ -39,7 +40,7 @@ class ExtensionPointDependenciesTest {
 
     @Test
     void aPointOfABundleThatIsNotRequiredIsReportedWithFilePointAndBundle() throws Exception {
-        Path base = Paths.resource("extension-points");
+        Path base = TestRepository.resource("org.rsaml.ide.tests", "extension-points");
         assertEquals(List.of(
                 "missing-require/plugin.xml: extension point 'org.eclipse.core.resources.markers' belongs to bundle"
                         + " 'org.eclipse.core.resources', which missing-require/META-INF/MANIFEST.MF does not require;"
@@ -52,7 +53,7 @@ class ExtensionPointDependenciesTest {
 
     @Test
     void pointsOfRequiredAbsentAndOwnBundlesPass() throws Exception {
-        Path base = Paths.resource("extension-points");
+        Path base = TestRepository.resource("org.rsaml.ide.tests", "extension-points");
         assertEquals(List.of(), ExtensionPointDependencies.check(base.resolve("complete"), base));
     }
 

@@ -45,6 +45,7 @@ import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.ide.RsamlProjects;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.tests.support.ExpectedFinding;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
@@ -86,8 +87,8 @@ class RsamlBuilderTest {
     @Test
     void experimentTwoShowsItsFiveDefectsAndAFixedDefectDisappears() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile file = copy(Paths.example("exp2-defects.rsaml"), "models/exp2-defects.rsaml");
-        IFile other = copy(Paths.example("exp2-defects.rsaml"), "other/exp2-copy.rsaml");
+        IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "models/exp2-defects.rsaml");
+        IFile other = copy(TestRepository.example("exp2-defects.rsaml"), "other/exp2-copy.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
         assertEquals(EXPERIMENT_TWO, summaries(file));
@@ -127,14 +128,14 @@ class RsamlBuilderTest {
     @Test
     void aMalformedFileGetsOneErrorAtTheFaultyLineUntilItIsRepaired() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile file = copy(Paths.resource("models/malformed-unclosed-layer.rsaml"), "broken.rsaml");
+        IFile file = copy(TestRepository.resource("org.rsaml.ide.tests", "models/malformed-unclosed-layer.rsaml"), "broken.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
         assertEquals(List.of("RSA-00 line 7 error"), summaries(file));
         String message = (String) markers(file).get(0).getAttribute(IMarker.MESSAGE);
         assertTrue(message.startsWith("RSA-00: malformed XML: ") && message.contains("layers"), message);
 
-        file.setContents(Files.newInputStream(Paths.example("exp1-hybrid.rsaml")), IResource.FORCE, null);
+        file.setContents(Files.newInputStream(TestRepository.example("exp1-hybrid.rsaml")), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
         assertEquals(List.of(), summaries(file));
     }
@@ -142,7 +143,7 @@ class RsamlBuilderTest {
     @Test
     void aFileWithSeveralMistakesGetsAnErrorForEach() throws Exception {
         RsamlProjects.addNature(project, null);
-        Path model = Paths.root().resolve("tests/org.rsaml.cli.tests/resources/inputs/many-errors.rsaml");
+        Path model = TestRepository.root().resolve("tests/org.rsaml.cli.tests/resources/inputs/many-errors.rsaml");
         IFile file = copy(model, "many-errors.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
@@ -166,7 +167,7 @@ class RsamlBuilderTest {
     @Test
     void theEditorsValidateAndTheBuilderListEachFindingOnce() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile file = copy(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
         List<String> built = described(file);
         assertEquals(5, built.size(), built::toString);
@@ -195,9 +196,9 @@ class RsamlBuilderTest {
     @Test
     void deletedAndRenamedModelsLoseTheirMarkers() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile deleted = copy(Paths.example("exp2-defects.rsaml"), "a.rsaml");
-        IFile renamed = copy(Paths.example("exp2-defects.rsaml"), "b.rsaml");
-        IFile kept = copy(Paths.example("exp2-defects.rsaml"), "c.rsaml");
+        IFile deleted = copy(TestRepository.example("exp2-defects.rsaml"), "a.rsaml");
+        IFile renamed = copy(TestRepository.example("exp2-defects.rsaml"), "b.rsaml");
+        IFile kept = copy(TestRepository.example("exp2-defects.rsaml"), "c.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
         assertEquals(15, markers(project).size());
 
@@ -217,8 +218,8 @@ class RsamlBuilderTest {
     @Test
     void aCleanExampleGetsNoMarker() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile clean = copy(Paths.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
-        IFile defective = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        IFile clean = copy(TestRepository.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
+        IFile defective = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
         assertEquals(List.of(), summaries(clean));
@@ -228,13 +229,13 @@ class RsamlBuilderTest {
     @Test
     void otherFilesAndDerivedCopiesAreIgnored() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile model = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
-        IFile xml = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.xml");
-        IFile text = copy(Paths.resource("models/malformed-unclosed-layer.rsaml"), "notes.txt");
+        IFile model = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        IFile xml = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.xml");
+        IFile text = copy(TestRepository.resource("org.rsaml.ide.tests", "models/malformed-unclosed-layer.rsaml"), "notes.txt");
         IFolder bin = project.getFolder("bin");
         bin.create(true, true, null);
         bin.setDerived(true, null);
-        IFile derived = copy(Paths.example("exp2-defects.rsaml"), "bin/exp2-defects.rsaml");
+        IFile derived = copy(TestRepository.example("exp2-defects.rsaml"), "bin/exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
         assertEquals(EXPERIMENT_TWO, summaries(model), "the builder ran");
@@ -242,14 +243,14 @@ class RsamlBuilderTest {
         assertEquals(List.of(), summaries(text));
         assertEquals(List.of(), summaries(derived));
 
-        derived.setContents(Files.newInputStream(Paths.resource("models/malformed-unclosed-layer.rsaml")), IResource.FORCE, null);
+        derived.setContents(Files.newInputStream(TestRepository.resource("org.rsaml.ide.tests", "models/malformed-unclosed-layer.rsaml")), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
         assertEquals(List.of(), summaries(derived));
     }
 
     @Test
     void onlyProjectsWithTheNatureAreValidated() throws Exception {
-        IFile file = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
         assertFalse(RsamlProjects.hasNature(project));
         assertEquals(List.of(), summaries(project));
@@ -271,7 +272,7 @@ class RsamlBuilderTest {
     @Test
     void cleaningTheProjectRemovesTheMarkersAndAFullBuildRestoresThem() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile file = copy(Paths.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
         assertEquals(EXPERIMENT_TWO, summaries(file));
 
@@ -320,13 +321,11 @@ class RsamlBuilderTest {
                 .collect(Collectors.toList());
     }
 
-    /** {@code <!-- expect: RSA-08 error a/b at 50:5: message -->} in exp2-defects.rsaml as "RSA-08 line 50 error". */
+    /** What exp2-defects.rsaml states it gives ({@code <!-- expect: -->}), as "RSA-08 line 50 error". */
     private static List<String> experimentTwo() {
         try {
-            List<String> expected = new ArrayList<>();
-            for (ExpectedFinding finding : ExpectedFinding.of(Paths.example("exp2-defects.rsaml"))) {
-                expected.add(finding.ruleId() + " line " + finding.line() + " " + finding.severity());
-            }
+            List<String> expected = new ArrayList<>(ExpectedFinding.of(TestRepository.example("exp2-defects.rsaml")).stream()
+                    .map(f -> f.ruleId() + " line " + f.line() + " " + f.severity()).toList());
             assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
             expected.sort(null);
             return expected;

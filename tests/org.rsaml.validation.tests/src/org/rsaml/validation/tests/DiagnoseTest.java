@@ -14,6 +14,7 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.Test;
 import org.rsaml.model.Layer;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
@@ -25,7 +26,7 @@ class DiagnoseTest {
 
     @Test
     void everyFindingBecomesAChildDiagnosticNamedByItsRule() throws Exception {
-        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         Diagnostic diagnostic = RsamlModelValidator.diagnose(model.architecture());
 
         assertEquals(Diagnostic.ERROR, diagnostic.getSeverity());
@@ -43,7 +44,7 @@ class DiagnoseTest {
 
     @Test
     void anElementIsDiagnosedWithWhatItContainsOnly() throws Exception {
-        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         Layer control = model.architecture().getLayers().stream().filter(l -> l.getName().equals("control"))
                 .findFirst().orElseThrow();
         List<String> messages = messages(RsamlModelValidator.diagnose(control));
@@ -53,7 +54,7 @@ class DiagnoseTest {
 
     @Test
     void aCleanModelIsOk() throws Exception {
-        EObject root = ModelLoader.load(Paths.example("exp1-hybrid.rsaml"), "exp1.rsaml").architecture();
+        EObject root = ModelLoader.load(TestRepository.example("exp1-hybrid.rsaml"), "exp1.rsaml").architecture();
         Diagnostic diagnostic = RsamlModelValidator.diagnose(root);
         assertEquals(Diagnostic.OK, diagnostic.getSeverity(), messages(diagnostic).toString());
         assertEquals(List.of(root), diagnostic.getData());

@@ -14,6 +14,7 @@ import java.util.stream.Collectors;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.rsaml.model.Module;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.DiagnosisCache;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
@@ -27,7 +28,7 @@ class DiagnosisCacheTest {
 
     @Test
     void findingsAreComputedOncePerModelChangeAndFollowTheModel() throws Exception {
-        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         Module checker = (Module) model.resource().getEObject("//@layers[name='control']/@modules[name='resourceChecker']");
         List<Diagnostic> first = DiagnosisCache.on(checker);
         assertEquals(List.of("RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms"),

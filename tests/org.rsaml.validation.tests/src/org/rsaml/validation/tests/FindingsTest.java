@@ -17,6 +17,7 @@ import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.TimeUnit;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
@@ -27,7 +28,7 @@ class FindingsTest {
 
     @Test
     void findingLocatesItsElementByFragmentAndPosition() throws Exception {
-        LoadedModel model = ModelLoader.load(Paths.example("exp2-defects.rsaml"), "exp2.rsaml");
+        LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         Finding f = RsamlModelValidator.validate(model).stream().filter(x -> x.ruleId().equals("RSA-08")).findFirst().orElseThrow();
         EObject element = model.resource().getEObject(f.uriFragment());
         assertEquals("resourceChecker", ((Module) element).getName());

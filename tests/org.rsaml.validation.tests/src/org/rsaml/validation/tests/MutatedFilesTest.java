@@ -20,6 +20,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.model.resource.SourceLocation;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
@@ -44,7 +45,7 @@ class MutatedFilesTest {
     @Test
     void everyMutationLoadsOrIsOneLocatedSentence() throws Exception {
         List<byte[]> examples = new ArrayList<>();
-        try (Stream<Path> files = Files.list(Paths.root().resolve("examples"))) {
+        try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples"))) {
             for (Path f : (Iterable<Path>) files.filter(p -> p.toString().endsWith(".rsaml")).sorted()::iterator) {
                 examples.add(Files.readAllBytes(f));
             }

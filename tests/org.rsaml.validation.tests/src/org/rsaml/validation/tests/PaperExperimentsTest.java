@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.rsaml.tests.support.ExpectedFinding;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Severity;
@@ -26,7 +27,7 @@ class PaperExperimentsTest {
 
     @Test
     void experimentTwoYieldsExactlyThePapersFiveFindings() throws Exception {
-        Path file = Paths.example("exp2-defects.rsaml");
+        Path file = TestRepository.example("exp2-defects.rsaml");
         List<Finding> findings = RsamlModelValidator.validate(file, "examples/exp2-defects.rsaml");
         List<ExpectedFinding> actual = findings.stream().map(f -> new ExpectedFinding(f.ruleId(), f.severity().label(),
                 f.qualifiedName(), f.line(), f.column(), f.message())).collect(Collectors.toList());
@@ -64,13 +65,13 @@ class PaperExperimentsTest {
     @ValueSource(strings = { "exp1-hybrid.rsaml", "exp3-task-interpreter.rsaml", "subsumption-brooks.rsaml",
             "hierarchical-nasrem.rsaml", "mobile-base-latency.rsaml", "mobile-base-latency-missed.rsaml" })
     void cleanExamplesHaveNoFinding(String name) throws Exception {
-        List<Finding> findings = RsamlModelValidator.validate(Paths.example(name));
+        List<Finding> findings = RsamlModelValidator.validate(TestRepository.example(name));
         assertEquals(List.of(), findings.stream().map(Finding::toString).collect(Collectors.toList()));
     }
 
     @Test
     void everyExampleIsCoveredByThisTest() throws Exception {
-        try (Stream<Path> files = Files.list(Paths.root().resolve("examples"))) {
+        try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples"))) {
             List<String> names = files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted()
                     .collect(Collectors.toList());
             assertEquals(List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "exp3-task-interpreter.rsaml",

@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Rules;
 
 /**
@@ -31,7 +32,7 @@ class PublicApiTest {
     void thePublicApiExposesNoInternalType() throws Exception {
         String pkg = Rules.class.getPackageName();
         List<String> classes = new ArrayList<>();
-        try (Stream<Path> files = Files.list(Paths.root().resolve("bundles/org.rsaml.validation/src/" + pkg.replace('.', '/')))) {
+        try (Stream<Path> files = Files.list(TestRepository.root().resolve("bundles/org.rsaml.validation/src/" + pkg.replace('.', '/')))) {
             files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".java"))
                     .forEach(n -> classes.add(pkg + "." + n.substring(0, n.length() - ".java".length())));
         }

@@ -22,6 +22,7 @@ import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.emf.ecore.xmi.impl.EcoreResourceFactoryImpl;
 import org.junit.jupiter.api.Test;
 import org.rsaml.model.RsamlPackage;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 import org.rsaml.validation.internal.OclRules;
@@ -34,7 +35,7 @@ class RuleDefinitionTest {
         ResourceSetImpl set = new ResourceSetImpl();
         set.getResourceFactoryRegistry().getExtensionToFactoryMap().put("ecore", new EcoreResourceFactoryImpl());
         Resource r = set.getResource(URI.createFileURI(
-                Paths.root().resolve("bundles/org.rsaml.model/model/rsaml.ecore").toString()), true);
+                TestRepository.root().resolve("bundles/org.rsaml.model/model/rsaml.ecore").toString()), true);
         return (EPackage) r.getContents().get(0);
     }
 

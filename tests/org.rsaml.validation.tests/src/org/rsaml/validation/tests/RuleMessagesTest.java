@@ -10,13 +10,14 @@ import java.util.List;
 import java.util.stream.Collectors;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.RsamlModelValidator;
 
 /** The messages of the rules a user meets on new kinds of models say what to change and name the limit. */
 class RuleMessagesTest {
 
     private static List<String> messages(String fixture, String ruleId) throws Exception {
-        return RsamlModelValidator.validate(Paths.resource("rules").resolve(fixture)).stream()
+        return RsamlModelValidator.validate(TestRepository.resource("org.rsaml.validation.tests", "rules").resolve(fixture)).stream()
                 .filter(f -> f.ruleId().equals(ruleId)).map(f -> f.qualifiedName() + ": " + f.message())
                 .collect(Collectors.toList());
     }

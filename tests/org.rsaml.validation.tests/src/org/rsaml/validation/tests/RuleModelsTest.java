@@ -12,14 +12,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.tests.support.ExpectedFinding;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Rule;
@@ -31,10 +31,8 @@ import org.rsaml.validation.Rules;
  */
 class RuleModelsTest {
 
-    private static final Pattern EXPECT = Pattern.compile("<!-- expect: (RSA-\\d\\d) (error|warning|info) (.+?) -->");
-
     static Stream<String> models() throws Exception {
-        try (Stream<Path> files = Files.list(Paths.resource("rules"))) {
+        try (Stream<Path> files = Files.list(TestRepository.resource("org.rsaml.validation.tests", "rules"))) {
             return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted()
                     .collect(Collectors.toList()).stream();
         }
@@ -43,12 +41,8 @@ class RuleModelsTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("models")
     void modelYieldsExactlyItsExpectedFindings(String name) throws Exception {
-        Path file = Paths.resource("rules").resolve(name);
-        List<String> expected = new ArrayList<>();
-        Matcher m = EXPECT.matcher(Files.readString(file));
-        while (m.find()) {
-            expected.add(m.group(1) + " " + m.group(2) + " " + m.group(3));
-        }
+        Path file = TestRepository.resource("org.rsaml.validation.tests", "rules").resolve(name);
+        List<String> expected = new ArrayList<>(ExpectedFinding.of(file).stream().map(ExpectedFinding::what).toList());
         if (name.contains("-violated")) {
             assertTrue(!expected.isEmpty(), name + " states no expected finding");
             String rule = name.substring(5, 11);

@@ -12,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 
@@ -44,7 +45,7 @@ class RulesDocumentTest {
 
     @Test
     void theRulesTableIsTheCatalogue() throws Exception {
-        Path doc = Paths.root().resolve("docs/rules.md");
+        Path doc = TestRepository.root().resolve("docs/rules.md");
         String text = Files.readString(doc, StandardCharsets.UTF_8);
         int begin = text.indexOf(BEGIN);
         int end = text.indexOf(END);

@@ -23,6 +23,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
@@ -39,10 +40,10 @@ class StockDiagnosticianTest {
 
     static Stream<String> models() throws Exception {
         List<String> names = new ArrayList<>();
-        try (Stream<Path> files = Files.list(Paths.resource("rules"))) {
+        try (Stream<Path> files = Files.list(TestRepository.resource("org.rsaml.validation.tests", "rules"))) {
             files.map(p -> "rules/" + p.getFileName()).filter(n -> n.endsWith(".rsaml")).forEach(names::add);
         }
-        try (Stream<Path> files = Files.list(Paths.root().resolve("examples"))) {
+        try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples"))) {
             files.map(p -> "examples/" + p.getFileName()).filter(n -> n.endsWith(".rsaml")).forEach(names::add);
         }
         return names.stream().sorted();
@@ -57,7 +58,7 @@ class StockDiagnosticianTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("models")
     void stockDiagnosticianReportsWhatRsamlValidateReports(String name) throws Exception {
-        Path file = name.startsWith("rules/") ? Paths.resource(name) : Paths.root().resolve(name);
+        Path file = name.startsWith("rules/") ? TestRepository.resource("org.rsaml.validation.tests", name) : TestRepository.root().resolve(name);
         LoadedModel model = ModelLoader.load(file, name);
         List<String> expected = RsamlModelValidator.validate(model).stream()
                 .filter(f -> !f.ruleId().equals("RSA-00"))
@@ -97,7 +98,7 @@ class StockDiagnosticianTest {
     /** A finding's severity as EMF spells it, so a warning rule stays a warning in Eclipse. */
     @Test
     void warningsStayWarnings() throws Exception {
-        LoadedModel model = ModelLoader.load(Paths.resource("rules").resolve("rule-RSA-11-violated.rsaml"), "rsa11");
+        LoadedModel model = ModelLoader.load(TestRepository.resource("org.rsaml.validation.tests", "rules").resolve("rule-RSA-11-violated.rsaml"), "rsa11");
         Diagnostic d = Diagnostician.INSTANCE.validate(model.architecture());
         assertEquals(Diagnostic.WARNING, d.getSeverity(), d.toString());
         List<Finding> findings = RsamlModelValidator.validate(model);
