@@ -20,8 +20,25 @@ import java.util.TreeMap;
 
 import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.Test;
+import org.rsaml.design.services.RsamlServices;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.Inhibitor;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.NamedElement;
+import org.rsaml.model.SubsumptionLink;
+import org.rsaml.model.Suppressor;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.tests.support.ExpectedFinding;
+import org.rsaml.tests.support.TestRepository;
+import org.rsaml.validation.ModelLoader;
 
-/** What an architect finds in the RsaML diagrams: the tools, the looks that tell elements apart, the findings. */
+/**
+ * What an architect finds in the RsaML diagrams: the tools, the looks that tell elements apart, the
+ * findings. What a diagram shows for an element is computed by evaluating the specification's own
+ * expressions on real models ({@link Expressions}), not read from how they are spelled.
+ */
 class DiagramsTest {
 
     private static EObject viewpoint;
@@ -58,12 +75,24 @@ class DiagramsTest {
         assertEquals("VerticalStack", get(stack, "childrenPresentation").toString());
         EObject layer = mapping(diagram("Architecture"), "LayerRegion");
         assertEquals(stack, layer.eContainer());
-        assertEquals("aql:self.layers->sortedBy(l | l.level)->reverse()", get(layer, "semanticCandidatesExpression"),
-                "highest level on top");
+        // Highest level on top, whatever order the file lists the layers in.
+        Architecture architecture = model("exp1-hybrid.rsaml");
+        architecture.getLayers().move(0, 2);
+        assertEquals(List.of("functional", "decision", "control"), names(architecture.getLayers()));
+        assertEquals(List.of("decision", "control", "functional"), names(shown(layer, architecture)));
+
         EObject module = mapping(diagram("Architecture"), "ModuleContainer");
         assertEquals(layer, module.eContainer());
-        assertEquals(List.of("EntryPortNode", "OutputPortNode"),
-                list(module, "borderedNodeMappings").stream().map(m -> get(m, "name")).toList(), "ports sit on the module's border");
+        Layer control = architecture.getLayers().stream().filter(l -> l.getName().equals("control")).findFirst().orElseThrow();
+        assertEquals(List.of("requestChecker", "resourceChecker", "robustnessManager"), names(shown(module, control)));
+
+        List<EObject> borders = list(module, "borderedNodeMappings");
+        assertEquals(2, borders.size(), "ports sit on the module's border");
+        Module checker = control.getModules().get(0);
+        assertEquals(List.of("e0_requestCheck"), names(shown(borders.get(0), checker)));
+        assertEquals(List.of("s0_requestCheck", "s1_requestCheck"), names(shown(borders.get(1), checker)));
+        assertTrue(checker.getPorts().stream().allMatch(p -> names(shown(borders.get(p instanceof EntryPort ? 0 : 1), checker))
+                .contains(p.getName())), "entry ports on one border mapping, output ports on the other");
     }
 
     @Test
@@ -74,46 +103,99 @@ class DiagramsTest {
             looks.add(get(ref(style, "strokeColor"), "name") + " " + get(style, "lineStyle"));
         }
         assertEquals(List.of("black solid", "red dash", "purple dash_dot"), looks);
-        assertEquals("feature:target", get(mapping(diagram("Architecture"), "InhibitorEdge"), "targetFinderExpression"));
+
+        // Each edge runs from the module that acts to the port it acts on, and says what it does.
+        Architecture brooks = model("subsumption-brooks.rsaml");
+        List<String> edges = new ArrayList<>();
+        for (String edge : List.of("InhibitorEdge", "SuppressorEdge")) {
+            EObject mapping = mapping(diagram("Architecture"), edge);
+            for (Object link : (List<?>) shown(mapping, brooks)) {
+                EObject l = (EObject) link;
+                edges.add(name(Expressions.evaluate(get(mapping, "sourceFinderExpression"), l)) + " -> "
+                        + name(Expressions.evaluate(get(mapping, "targetFinderExpression"), l)) + ": "
+                        + Expressions.evaluate(get(ref(ref(mapping, "style"), "centerLabelStyleDescription"), "labelExpression"), l));
+            }
+        }
+        assertEquals(expectedSubsumption(brooks), edges);
     }
 
     @Test
     void realTimeModulesAndPeriodicFunctionsStandOut() throws Exception {
+        Architecture architecture = model("exp1-hybrid.rsaml");
         EObject module = mapping(diagram("Architecture"), "ModuleContainer");
         EObject realTime = list(module, "conditionnalStyles").get(0);
-        assertEquals("aql:self.type = model::ElementType::realTime", get(realTime, "predicateExpression"));
         assertNotEquals(get(ref(ref(module, "style"), "backgroundColor"), "name"),
                 get(ref(ref(realTime, "style"), "backgroundColor"), "name"));
+        Map<String, String> modules = new TreeMap<>();
+        for (Layer layer : architecture.getLayers()) {
+            for (Module m : layer.getModules()) {
+                EObject style = Boolean.TRUE.equals(Expressions.evaluate(get(realTime, "predicateExpression"), m)) ? realTime : module;
+                modules.put(m.getName(), get(ref(ref(style, "style"), "backgroundColor"), "name") + " "
+                        + Expressions.evaluate(get(ref(style, "style"), "labelExpression"), m));
+            }
+        }
+        String plain = get(ref(ref(module, "style"), "backgroundColor"), "name").toString();
+        String highlighted = get(ref(ref(realTime, "style"), "backgroundColor"), "name").toString();
+        assertEquals(Map.of("temporalExecutive", plain + " temporalExecutive — simple, 120.0 ms",
+                "operatorMissionSupervisor", plain + " operatorMissionSupervisor — simple, 50.0 ms",
+                "requestChecker", plain + " requestChecker — simple, 1.0 ms",
+                "resourceChecker", plain + " resourceChecker — simple, 1.5 ms",
+                "robustnessManager", plain + " robustnessManager — simple, 1.8 ms",
+                "m01", plain + " m01 — simple, 3.0 ms",
+                "m02", highlighted + " m02 — real-time, 4.0 ms every 20.0 ms"), modules, "only the real-time module stands out");
 
         EObject function = mapping(diagram("Architecture"), "FunctionItem");
         EObject periodic = list(function, "conditionnalStyles").get(0);
-        assertEquals("aql:self.execType = model::ExecutionType::periodic", get(periodic, "predicateExpression"));
         assertNotEquals(get(ref(ref(function, "style"), "labelColor"), "name"), get(ref(ref(periodic, "style"), "labelColor"), "name"));
-        // The label gives the timing: "localisation — real-time, 1.0 ms every 20.0 ms".
-        assertEquals("aql:self.rsamlLabel()", get(ref(periodic, "style"), "labelExpression"));
-        assertEquals("aql:self.rsamlLabel()", get(ref(module, "style"), "labelExpression"));
+        Map<String, String> functions = new TreeMap<>();
+        Module m01 = architecture.getLayers().get(2).getModules().get(0);
+        for (Object f : (List<?>) shown(function, m01)) {
+            EObject style = Boolean.TRUE.equals(Expressions.evaluate(get(periodic, "predicateExpression"), (EObject) f)) ? periodic : function;
+            functions.put(name(f), get(ref(ref(style, "style"), "labelColor"), "name") + " "
+                    + Expressions.evaluate(get(ref(style, "style"), "labelExpression"), (EObject) f));
+        }
+        assertEquals(Map.of("f0_m01", get(ref(ref(periodic, "style"), "labelColor"), "name") + " f0_m01 — real-time, RM, 1.0 ms every 10.0 ms",
+                "f1_m01", get(ref(ref(function, "style"), "labelColor"), "name") + " f1_m01 — simple, FIFO, 2.0 ms"), functions,
+                "the periodic function stands out, and both labels give the timing");
     }
 
     @Test
     void findingsOfRsamlRulesAreShownAsErrorsAndWarnings() throws Exception {
         EObject rules = ref(diagram("Architecture"), "validationSet");
-        List<String> shown = new ArrayList<>();
+        // What Sirius's validation reports on experiment 2: each rule's audit fails on an element with
+        // findings of its level, and its message is what the element has.
+        Architecture architecture = model("exp2-defects.rsaml");
+        List<EObject> elements = new ArrayList<>(List.of(architecture));
+        architecture.eAllContents().forEachRemaining(elements::add);
+        List<String> reported = new ArrayList<>();
         for (EObject rule : list(rules, "ownedRules")) {
             assertTrue(is(rule, "SemanticValidationRule"), get(rule, "name").toString());
-            shown.add(get(rule, "level") + " on " + get(rule, "targetClass") + " unless " + get(list(rule, "audits").get(0), "auditExpression")
-                    + ", saying " + get(rule, "message"));
+            String target = get(rule, "targetClass").toString();
+            for (EObject element : elements) {
+                if (!element.eClass().getEAllSuperTypes().stream().anyMatch(c -> ("model." + c.getName()).equals(target))
+                        && !("model." + element.eClass().getName()).equals(target)) {
+                    continue;
+                }
+                if (Boolean.FALSE.equals(Expressions.evaluate(get(list(rule, "audits").get(0), "auditExpression"), element))) {
+                    reported.add(get(rule, "level") + " " + RsamlLabels.qualifiedName(element) + ": "
+                            + Expressions.evaluate(get(rule, "message"), element));
+                }
+            }
         }
-        assertEquals(List.of("ERROR on model.NamedElement unless aql:self.rsamlErrors() = '', saying aql:self.rsamlErrors()",
-                "WARNING on model.NamedElement unless aql:self.rsamlWarnings() = '', saying aql:self.rsamlWarnings()",
-                "ERROR on model.Connection unless aql:self.rsamlErrors() = '', saying aql:self.rsamlErrors()"), shown);
+        List<String> expected = new ArrayList<>();
+        for (ExpectedFinding f : ExpectedFinding.of(TestRepository.example("exp2-defects.rsaml"))) {
+            expected.add(f.severity().toUpperCase(java.util.Locale.ROOT) + " " + f.qualifiedName() + ": " + f.ruleId() + ": " + f.message());
+        }
+        reported.sort(null);
+        expected.sort(null);
+        assertEquals(expected, reported);
         assertEquals(list(rules, "ownedRules").subList(0, 2), list(ref(diagram("Missions"), "validationSet"), "reusedRules"));
     }
 
     @Test
     void designBundleRegistersTheSpecificationAndItsServices() throws Exception {
-        assertEquals(List.of("org.rsaml.design.services.RsamlServices"),
+        assertEquals(List.of(RsamlServices.class.getName()),
                 list(viewpoint(), "ownedJavaExtensions").stream().map(e -> get(e, "qualifiedClassName")).toList());
-        assertTrue(Files.isRegularFile(Repository.file(Repository.SERVICES)));
         String pluginXml = Files.readString(Repository.file(Repository.DESIGN + "plugin.xml"));
         assertTrue(pluginXml.contains("point=\"org.eclipse.sirius.componentization\"")
                 && pluginXml.contains("class=\"org.rsaml.design.Activator\""), pluginXml);
@@ -124,6 +206,38 @@ class DiagramsTest {
     }
 
     // ---------------------------------------------------------------- helpers
+
+    private static Architecture model(String example) throws Exception {
+        return ModelLoader.load(TestRepository.example(example), example).architecture();
+    }
+
+    /** The elements a mapping shows inside the view of {@code container}: its candidates, evaluated. */
+    private static Object shown(EObject mapping, EObject container) {
+        return Expressions.evaluate(get(mapping, "semanticCandidatesExpression"), container);
+    }
+
+    private static String name(Object element) {
+        return element instanceof NamedElement n ? n.getName() : String.valueOf(element);
+    }
+
+    private static List<String> names(Object elements) {
+        return ((List<?>) elements).stream().map(DiagramsTest::name).toList();
+    }
+
+    /** The subsumption links of a model as the diagram should draw them: module -> port: what it does, for how long. */
+    private static List<String> expectedSubsumption(Architecture architecture) {
+        List<String> links = new ArrayList<>();
+        for (String kind : List.of("inhibits", "suppresses")) {
+            architecture.eAllContents().forEachRemaining(e -> {
+                if (e instanceof SubsumptionLink link && (link instanceof Inhibitor) == kind.equals("inhibits")) {
+                    NamedElement target = link instanceof Inhibitor i ? i.getTarget() : ((Suppressor) link).getTarget();
+                    links.add(((NamedElement) link.eContainer()).getName() + " -> " + target.getName() + ": " + kind + ": "
+                            + link.getName() + (link.getDuration() > 0 ? ", " + RsamlLabels.duration(link.getDuration(), link) : ""));
+                }
+            });
+        }
+        return links;
+    }
 
     private static EObject diagram(String name) throws Exception {
         return list(viewpoint(), "ownedRepresentations").stream().filter(r -> name.equals(get(r, "name"))).findFirst().orElseThrow();

@@ -10,10 +10,8 @@ import static org.rsaml.design.tests.SiriusSpecifications.list;
 import static org.rsaml.design.tests.SiriusSpecifications.ref;
 import static org.rsaml.design.tests.SiriusSpecifications.where;
 
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -29,13 +27,15 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EPackage;
 import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.EStructuralFeature;
+import org.rsaml.model.RsamlPackage;
 
 /**
  * Checks that a Sirius specification speaks of RsaML as rsaml.ecore defines it: every domain class,
  * type and target class is an EClass of rsaml.ecore, every {@code feature:} and {@code featureName}
  * a feature of the class at hand, every {@code aql:} navigation ({@code self.layer.architecture})
  * a chain of features followed class by class, every {@code model::Type} a classifier, and every
- * service called a method of the viewpoint's Java services.
+ * service called a public method of the viewpoint's Java services class that takes the element it is
+ * called on.
  *
  * <p>"The class at hand" follows Sirius's rules: a mapping's candidates are computed on its parent's
  * element, its styles on its own element; an element-based edge finds its ends from its own element,
@@ -60,25 +60,19 @@ final class DomainReferences {
     private static final Pattern TYPE_LITERAL = Pattern.compile("\\b([A-Za-z_]\\w*)::([A-Za-z_]\\w*)(?:::([A-Za-z_]\\w*))?");
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z_]\\w*");
     private static final Pattern NUMBER = Pattern.compile("-?\\d+(\\.\\d+)?");
-    private static final Pattern SERVICE_METHOD = Pattern.compile("public\\s+[\\w<>\\[\\],.? ]+\\s+(\\w+)\\s*\\(");
 
     private final EPackage rsaml;
-    private final Set<String> services;
+    private final Class<?> services;
     private final Map<EObject, EClass> domainClasses = new HashMap<>();
     private final Set<String> problems = new TreeSet<>();
 
-    private DomainReferences(EPackage rsaml, Set<String> services) {
+    private DomainReferences(EPackage rsaml, Class<?> services) {
         this.rsaml = rsaml;
         this.services = services;
     }
 
-    /** The problems of a loaded specification, sorted; {@code servicesSource} is the Java file of its services. */
-    static List<String> check(SiriusSpecifications.Loaded specification, Path servicesSource) throws IOException {
-        Set<String> services = new TreeSet<>();
-        Matcher m = SERVICE_METHOD.matcher(Files.readString(servicesSource));
-        while (m.find()) {
-            services.add(m.group(1));
-        }
+    /** The problems of a loaded specification, sorted; {@code services} is the class of its Java services. */
+    static List<String> check(SiriusSpecifications.Loaded specification, Class<?> services) {
         DomainReferences checker = new DomainReferences(specification.rsaml(), services);
         for (EObject viewpoint : list(specification.group(), "ownedViewpoints")) {
             for (EObject representation : list(viewpoint, "ownedRepresentations")) {
@@ -313,8 +307,10 @@ final class DomainReferences {
         }
         if (text.startsWith("service:")) {
             String name = text.substring(8).replaceAll("\\(.*", "").trim();
-            if (!services.contains(name)) {
+            if (!isService(name)) {
                 problems.add(at + ": '" + text + "' calls '" + name + "', which is not a method of the viewpoint's Java services");
+            } else {
+                receiver(at, text, name, scope.self());
             }
             return null;
         }
@@ -365,14 +361,18 @@ final class DomainReferences {
                 return null;
             }
             if (!(type instanceof EClass eClass)) {
-                if (!call) {
+                if (call && isService(name)) {
+                    receiver(at, text, name, type);
+                } else if (!call) {
                     problems.add(at + ": '" + text + "' navigates to '" + name + "' from a " + type.getName()
                             + " value, which has no features");
                 }
                 return null;
             }
             if (call) {
-                if (!AQL_SERVICES.contains(name) && !services.contains(name)) {
+                if (isService(name)) {
+                    receiver(at, text, name, eClass);
+                } else if (!AQL_SERVICES.contains(name)) {
                     problems.add(at + ": '" + text + "' calls '" + name
                             + "', which is neither an AQL service nor a method of the viewpoint's Java services");
                 }
@@ -386,6 +386,35 @@ final class DomainReferences {
             type = feature.getEType();
             i = step.end();
         }
+    }
+
+    /** Whether the Java services class has a public method of that name (AQL calls any of them). */
+    private boolean isService(String name) {
+        return Arrays.stream(services.getMethods()).anyMatch(m -> m.getName().equals(name) && m.getDeclaringClass() != Object.class);
+    }
+
+    /** AQL passes the receiver as the service's first argument: some method of the name must take it. */
+    private void receiver(String at, String text, String name, EClassifier type) {
+        Class<?> instance = instanceClass(type);
+        if (instance == null) {
+            return;
+        }
+        boolean takes = Arrays.stream(services.getMethods()).anyMatch(m -> m.getName().equals(name) && m.getParameterCount() >= 1
+                && m.getParameterTypes()[0].isAssignableFrom(instance));
+        if (!takes) {
+            problems.add(at + ": '" + text + "' calls '" + name + "' on " + type.getName() + ", which no method '" + name
+                    + "' of the viewpoint's Java services takes");
+        }
+    }
+
+    /** The Java class of an RsaML classifier (rsaml.ecore is read as a dynamic package here) or of an Ecore data type. */
+    private static Class<?> instanceClass(EClassifier type) {
+        if (type == null) {
+            return null;
+        }
+        EClassifier generated = type.getEPackage() != null && RsamlPackage.eNS_URI.equals(type.getEPackage().getNsURI())
+                ? RsamlPackage.eINSTANCE.getEClassifier(type.getName()) : type;
+        return generated == null ? null : generated.getInstanceClass();
     }
 
     private void typeLiteral(String at, String text, String ePackage, String classifier, String literal) {

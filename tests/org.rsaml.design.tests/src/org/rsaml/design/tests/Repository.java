@@ -15,7 +15,6 @@ final class Repository {
 
     static final String DESIGN = "bundles/org.rsaml.design/";
     static final String ODESIGN = DESIGN + "description/rsaml.odesign";
-    static final String SERVICES = DESIGN + "src/org/rsaml/design/services/RsamlServices.java";
     static final String ECORE = "bundles/org.rsaml.model/model/rsaml.ecore";
 
     private static boolean skipAnnounced;
