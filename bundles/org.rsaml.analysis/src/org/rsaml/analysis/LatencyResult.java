@@ -6,6 +6,7 @@ package org.rsaml.analysis;
 
 import java.util.List;
 
+import org.rsaml.analysis.internal.Durations;
 import org.rsaml.model.LatencyRequirement;
 
 /**
@@ -29,6 +30,11 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
 
     public LatencyResult {
         worstPath = List.copyOf(worstPath);
+    }
+
+    /** The worst path in one line, {@code perception/filter +15 ms -> control/drive +22 ms}; empty without one. */
+    public String worstPathText() {
+        return String.join(" -> ", worstPath.stream().map(h -> h.label() + " +" + Durations.format(h.totalNs())).toList());
     }
 
     /** The latency the requirement bounds (-1 when not bounded). */

@@ -15,11 +15,11 @@ import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.internal.Latencies;
-import org.rsaml.generator.plan.ExecutionPlan;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedAction;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.generator.plan.ExecutionPlan.Release;
-import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Module;
 import org.rsaml.model.Processor;

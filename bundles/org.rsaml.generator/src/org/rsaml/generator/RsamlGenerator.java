@@ -9,8 +9,8 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.rsaml.generator.internal.OutputWriter;
-import org.rsaml.generator.plan.ExecutionPlan;
-import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.generator.spi.GeneratedProject;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;

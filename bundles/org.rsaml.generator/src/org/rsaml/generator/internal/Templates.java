@@ -4,7 +4,7 @@
  */
 package org.rsaml.generator.internal;
 
-import org.rsaml.generator.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan;
 
 /** Text every target's templates share, written once: the banner, doc comments, the user-file note. */
 public final class Templates {

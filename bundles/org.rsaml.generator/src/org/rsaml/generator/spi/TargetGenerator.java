@@ -5,7 +5,7 @@
 package org.rsaml.generator.spi;
 
 import org.rsaml.generator.GenerationException;
-import org.rsaml.generator.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan;
 
 /**
  * A code generation target: renders an {@link ExecutionPlan} as the files of a project. Register

@@ -97,6 +97,12 @@ public final class MessageParameters {
         put("subsumes", o -> o instanceof Inhibitor ? "inhibits output" : "suppresses entry");
         put("subsumable", o -> o instanceof Inhibitor ? "inhibit outputs" : "suppress inputs");
         put("trigger", o -> port(((SubsumptionLink) o).getTrigger()));
+        // results of the timing analysis, which the timing checks supply with the finding
+        for (String supplied : TimingChecks.PARAMETERS) {
+            put(supplied, o -> {
+                throw new IllegalArgumentException("{" + supplied + "} is supplied by the timing analysis, not by " + element(o));
+            });
+        }
     }
 
     private MessageParameters() {
@@ -116,6 +122,11 @@ public final class MessageParameters {
      * not apply to the element (the caller reports that, naming the rule, instead of a message).
      */
     public static String render(String template, EObject element) {
+        return render(template, element, Map.of());
+    }
+
+    /** Likewise, with the values of parameters a check computed ({@code supplied}) taking precedence. */
+    public static String render(String template, EObject element, Map<String, ?> supplied) {
         Matcher m = PARAMETER.matcher(template);
         StringBuilder out = new StringBuilder();
         while (m.find()) {
@@ -123,7 +134,8 @@ public final class MessageParameters {
             if (parameter == null) {
                 throw new IllegalArgumentException("unknown message parameter {" + m.group(1) + "}");
             }
-            m.appendReplacement(out, Matcher.quoteReplacement(String.valueOf(parameter.apply(element))));
+            Object value = supplied.containsKey(m.group(1)) ? supplied.get(m.group(1)) : parameter.apply(element);
+            m.appendReplacement(out, Matcher.quoteReplacement(String.valueOf(value)));
         }
         m.appendTail(out);
         return out.toString();
@@ -138,6 +150,7 @@ public final class MessageParameters {
             case "EntryPort" -> "entry port";
             case "OutputPort" -> "output port";
             case "RTAction" -> "RTAction";
+            case "LatencyRequirement" -> "latency requirement";
             default -> o.eClass().getName().toLowerCase(java.util.Locale.ROOT);
         };
         return kind + " '" + name(o) + "'";

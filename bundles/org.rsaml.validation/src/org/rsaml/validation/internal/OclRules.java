@@ -78,8 +78,14 @@ public final class OclRules {
             }
         }
         if (ePackage == RsamlPackage.eINSTANCE || RsamlPackage.eNS_URI.equals(ePackage.getNsURI())) {
+            for (String id : TimingChecks.RULES) {
+                if (Rules.byId(id).map(Rule::message).isEmpty()) {
+                    problems.add(id + " is checked by the timing analysis but has no entry with a message in the rule catalogue "
+                            + RuleCatalog.RESOURCE);
+                }
+            }
             for (Rule rule : Rules.all()) {
-                if (rule.message() != null && !constrained.contains(rule.id())) {
+                if (rule.message() != null && !constrained.contains(rule.id()) && !TimingChecks.RULES.contains(rule.id())) {
                     problems.add(rule.id() + " is in the rule catalogue but no invariant of " + ePackage.getName()
                             + " implements it (constraint " + rule.id().replace("-", "") + "_...)");
                 }
@@ -123,6 +129,30 @@ public final class OclRules {
     /** Number of parsed constraints. */
     public int size() {
         return queries.values().stream().mapToInt(Map::size).sum();
+    }
+
+    /** Whether an invariant of one of {@code ruleIds} is violated on the element, or cannot be evaluated there. */
+    public boolean violatesAny(EObject object, Set<String> ruleIds) {
+        for (EClass eClass : TimingChecks.classes(object)) {
+            Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>> byName = queries.get(eClass);
+            if (byName == null) {
+                continue;
+            }
+            for (String constraint : byName.keySet()) {
+                if (Rules.forConstraint(constraint).map(r -> ruleIds.contains(r.id())).orElse(false)) {
+                    Boolean satisfied;
+                    try {
+                        satisfied = check(eClass, constraint, object);
+                    } catch (RuntimeException e) {
+                        satisfied = null;
+                    }
+                    if (!Boolean.TRUE.equals(satisfied)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     /**

@@ -4,6 +4,7 @@
  */
 package org.rsaml.validation.internal;
 
+import java.util.List;
 import java.util.Map;
 
 import org.eclipse.emf.common.util.BasicDiagnostic;
@@ -96,6 +97,35 @@ public class RuleEValidator extends RsamlValidator {
         String message = "Rule " + rule.id() + " could not be evaluated on " + MessageParameters.element(eObject) + ": "
                 + throwable.getLocalizedMessage();
         diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, code, message, new Object[] { eObject, rule, message }));
+    }
+
+    /** The OCL invariants and EMF's checks of the generated validator, then the timing rules (RSA-22 to RSA-25). */
+    @Override
+    protected boolean validate(int classifierID, Object value, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        boolean result = super.validate(classifierID, value, diagnostics, context);
+        if ((result || diagnostics != null) && value instanceof EObject eObject && TimingChecks.concerns(eObject)) {
+            for (TimingChecks.Found f : TimingChecks.on(eObject, context, rules)) {
+                result = false;
+                if (diagnostics == null) {
+                    break;
+                }
+                if (f.failure() != null) {
+                    String message = MessageParameters.capitalized(f.failure());
+                    diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, 0, message, new Object[] { eObject, f.rule(), message }));
+                    continue;
+                }
+                String message;
+                try {
+                    message = MessageParameters.render(f.rule().message(), eObject, f.parameters());
+                } catch (RuntimeException e) {
+                    message = MessageParameters.capitalized(MessageParameters.element(eObject)) + " violates " + f.rule().id()
+                            + " (" + f.rule().description() + "); its message could not be written: " + e;
+                }
+                diagnostics.add(new BasicDiagnostic(f.rule().severity().diagnosticSeverity(), SOURCE, 0,
+                        message + " (" + f.rule().id() + ")", new Object[] { eObject, f.rule(), message }));
+            }
+        }
+        return result;
     }
 
     /** RSA-09 reports duplicate names with a clearer message than EMF's duplicate-key check. */

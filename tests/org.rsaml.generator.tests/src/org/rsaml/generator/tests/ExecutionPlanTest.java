@@ -12,10 +12,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
-import org.rsaml.generator.plan.ExecutionPlan;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.generator.plan.ExecutionPlan.Release;
-import org.rsaml.generator.plan.ExecutionPlan.ReleaseKind;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.ExecutionPlan.ReleaseKind;
 import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.validation.ModelLoader;
 

@@ -19,7 +19,7 @@ import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
 import org.rsaml.report.Text;
-import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;

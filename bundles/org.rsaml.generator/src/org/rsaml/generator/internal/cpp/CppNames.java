@@ -13,10 +13,10 @@ import java.util.Map;
 import org.rsaml.generator.internal.NameScope;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.generator.internal.cxx.CxxNames;
-import org.rsaml.generator.plan.ExecutionPlan;
-import org.rsaml.generator.plan.ExecutionPlan.LinkPlan;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
 
 /**
  * What only the C++ target names: the members of the generated architecture class, the data types

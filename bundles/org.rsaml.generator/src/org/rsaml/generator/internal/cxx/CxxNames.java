@@ -12,15 +12,15 @@ import java.util.Map;
 
 import org.rsaml.generator.internal.NameScope;
 import org.rsaml.generator.internal.Names;
-import org.rsaml.generator.plan.ExecutionPlan;
-import org.rsaml.generator.plan.ExecutionPlan.LinkPlan;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedAction;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedFunction;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedLayer;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedPort;
-import org.rsaml.generator.plan.ExecutionPlan.Release;
-import org.rsaml.generator.plan.ExecutionPlan.ReleaseKind;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedLayer;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.ExecutionPlan.ReleaseKind;
 
 /**
  * The C++ names of a plan, for the targets that emit a class per module (C++ and ROS 2): project

@@ -20,12 +20,12 @@ import java.util.regex.Pattern;
 import org.rsaml.generator.internal.NameScope;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.generator.internal.cxx.CxxNames;
-import org.rsaml.generator.plan.ExecutionPlan;
-import org.rsaml.generator.plan.ExecutionPlan.Flow;
-import org.rsaml.generator.plan.ExecutionPlan.LinkPlan;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.generator.plan.ExecutionPlan.PlannedPort;
-import org.rsaml.generator.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.Flow;
+import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.analysis.plan.ExecutionPlan.Release;
 
 /**
  * What only the ROS 2 target names and decides: node and executable names, the interfaces package

@@ -10,11 +10,11 @@ import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cxx.CxxCode
 import org.rsaml.generator.internal.cxx.CxxNames
-import org.rsaml.generator.plan.ExecutionPlan
-import org.rsaml.generator.plan.ExecutionPlan.LinkPlan
-import org.rsaml.generator.plan.ExecutionPlan.PlannedFunction
-import org.rsaml.generator.plan.ExecutionPlan.PlannedModule
-import org.rsaml.generator.plan.ExecutionPlan.Release
+import org.rsaml.analysis.plan.ExecutionPlan
+import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
+import org.rsaml.analysis.plan.ExecutionPlan.Release
 import org.rsaml.generator.spi.GeneratedFile
 import org.rsaml.generator.spi.GeneratedProject
 import org.rsaml.generator.spi.OutputContext

@@ -22,7 +22,7 @@ import org.rsaml.analysis.TimingModelException;
 import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
-import org.rsaml.generator.plan.UnplannableException;
+import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;

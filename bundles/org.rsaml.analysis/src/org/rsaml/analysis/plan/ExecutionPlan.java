@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.generator.plan;
+package org.rsaml.analysis.plan;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;

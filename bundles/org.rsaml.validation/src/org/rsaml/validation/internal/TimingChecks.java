@@ -1,0 +1,207 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.validation.internal;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.emf.common.util.DiagnosticChain;
+import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EObjectValidator;
+import org.rsaml.analysis.ArchitectureTiming;
+import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.ProcessorTiming;
+import org.rsaml.analysis.TaskResult;
+import org.rsaml.analysis.TaskSource;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.TimingModelException;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.analysis.plan.UnplannableException;
+import org.rsaml.model.Action;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Function;
+import org.rsaml.model.LatencyRequirement;
+import org.rsaml.model.Module;
+import org.rsaml.model.Processor;
+import org.rsaml.validation.Rule;
+import org.rsaml.validation.Rules;
+
+/**
+ * The timing rules, which OCL cannot express: the verdicts of {@link TimingAnalysis} on the
+ * architecture of an element, computed once per validation (cached in the validation context) and
+ * reported on the element they concern. The rules' texts are in the catalogue like every other's.
+ */
+public final class TimingChecks {
+
+    public static final String DEADLINE = "RSA-22";
+    public static final String LATENCY = "RSA-23";
+    public static final String NOT_ANALYSED = "RSA-24";
+    public static final String DEPLOYMENT = "RSA-25";
+
+    /** The rules implemented here rather than by an invariant of rsaml.ecore. */
+    public static final Set<String> RULES = Set.of(DEADLINE, LATENCY, NOT_ANALYSED, DEPLOYMENT);
+
+    /** The message parameters these checks supply from the analysis' results. */
+    public static final List<String> PARAMETERS = List.of("processor", "task", "reason", "worstPath", "where");
+
+    /**
+     * Rules whose errors leave the architecture without a task set (times missing, negative, beyond
+     * the clock, longer than their period, references broken): while one is violated, those rules
+     * report the problem and the timing is not analysed, instead of reporting its consequences.
+     */
+    static final Set<String> PREREQUISITES = Set.of("RSA-10", "RSA-12", "RSA-13", "RSA-20");
+
+    /**
+     * One timing finding: the rule, the element it is on, the supplied message parameters; or, with
+     * a {@code failure}, the analysis could not be run (an error, never a silent pass).
+     */
+    public record Found(Rule rule, EObject element, Map<String, String> parameters, String failure) {
+        Found(Rule rule, EObject element, Map<String, String> parameters) {
+            this(rule, element, parameters, null);
+        }
+    }
+
+    /** EMF's structural checks alone (RSA-00); duplicate names (RSA-09) do not stop the analysis. */
+    private static final EObjectValidator STRUCTURE = new EObjectValidator() {
+        @Override
+        public boolean validate_EveryKeyUnique(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+            return true;
+        }
+    };
+
+    private static final Object CONTEXT_KEY = TimingChecks.class;
+
+    private TimingChecks() {
+    }
+
+    /** Whether the timing rules may report on this element. */
+    public static boolean concerns(EObject element) {
+        return element instanceof Module || element instanceof Function || element instanceof Action
+                || element instanceof LatencyRequirement || element instanceof Processor || element instanceof Architecture;
+    }
+
+    /** The timing findings on {@code element} itself (none when it is in no architecture). */
+    public static List<Found> on(EObject element, Map<Object, Object> context, OclRules rules) {
+        Architecture architecture = architectureOf(element);
+        if (architecture == null) {
+            return List.of();
+        }
+        Map<EObject, List<Found>> byElement;
+        if (context == null) {
+            byElement = findings(architecture, rules);
+        } else {
+            @SuppressWarnings("unchecked")
+            Map<Architecture, Map<EObject, List<Found>>> cache = (Map<Architecture, Map<EObject, List<Found>>>) context
+                    .computeIfAbsent(CONTEXT_KEY, k -> new IdentityHashMap<>());
+            byElement = cache.computeIfAbsent(architecture, a -> findings(a, rules));
+        }
+        return byElement.getOrDefault(element, List.of());
+    }
+
+    private static Architecture architectureOf(EObject element) {
+        for (EObject e = element; e != null; e = e.eContainer()) {
+            if (e instanceof Architecture a) {
+                return a;
+            }
+        }
+        return null;
+    }
+
+    /** Every timing finding of the architecture, by the element it is on. */
+    static Map<EObject, List<Found>> findings(Architecture architecture, OclRules rules) {
+        try {
+            return analyse(architecture, rules);
+        } catch (RuntimeException e) {
+            Map<EObject, List<Found>> out = new IdentityHashMap<>();
+            add(out, new Found(rule(DEADLINE), architecture, Map.of(), "the timing rules could not be evaluated on "
+                    + MessageParameters.element(architecture) + ": " + e));
+            return out;
+        }
+    }
+
+    private static Map<EObject, List<Found>> analyse(Architecture architecture, OclRules rules) {
+        Map<EObject, List<Found>> out = new IdentityHashMap<>();
+        if (!prerequisitesHold(architecture, rules)) {
+            return out;
+        }
+        ArchitectureTiming timing;
+        try {
+            timing = TimingAnalysis.analyse(architecture);
+        } catch (UnplannableException e) {
+            return out; // RSA-13 or RSA-20 reports the time; prerequisitesHold normally catches it first
+        } catch (TimingModelException e) {
+            EObject on = e.element() == null ? architecture : e.element();
+            add(out, new Found(rule(DEPLOYMENT), on, Map.of("reason", e.getMessage())));
+            return out;
+        }
+        for (ProcessorTiming p : timing.processors()) {
+            for (int i = 0; i < p.result().tasks().size() && i < p.sources().size(); i++) {
+                TaskResult t = p.result().tasks().get(i);
+                TaskSource s = p.sources().get(i);
+                if (t.verdict() == Verdict.MEETS || s.element() == null) {
+                    continue;
+                }
+                Map<String, String> parameters = new LinkedHashMap<>();
+                parameters.put("processor", "'" + p.name() + "'");
+                parameters.put("task", t.task().name());
+                parameters.put("where", " (" + t.task().name() + " on processor '" + p.name() + "')");
+                parameters.put("reason", reason(t.explanation()) + (s.note().isEmpty() ? "" : " (" + s.note() + ")"));
+                add(out, new Found(rule(t.verdict() == Verdict.MISSES ? DEADLINE : NOT_ANALYSED), s.element(), parameters));
+            }
+        }
+        for (LatencyResult l : timing.latencies()) {
+            if (l.verdict() == Verdict.MEETS || l.requirement() == null) {
+                continue;
+            }
+            Map<String, String> parameters = new LinkedHashMap<>();
+            parameters.put("where", "");
+            parameters.put("reason", reason(l.explanation()));
+            parameters.put("worstPath", l.worstPath().isEmpty() ? "" : "; worst path: " + l.worstPathText());
+            add(out, new Found(rule(l.verdict() == Verdict.MISSES ? LATENCY : NOT_ANALYSED), l.requirement(), parameters));
+        }
+        return out;
+    }
+
+    private static String reason(String explanation) {
+        return explanation.startsWith("not analysed: ") ? explanation.substring("not analysed: ".length()) : explanation;
+    }
+
+    private static void add(Map<EObject, List<Found>> out, Found found) {
+        out.computeIfAbsent(found.element(), k -> new ArrayList<>()).add(found);
+    }
+
+    private static Rule rule(String id) {
+        return Rules.byId(id).orElseThrow(() -> new IllegalStateException(id + " is not in the rule catalogue"));
+    }
+
+    /** No element of the architecture breaks EMF's structure or a rule of {@link #PREREQUISITES}. */
+    private static boolean prerequisitesHold(Architecture architecture, OclRules rules) {
+        Map<Object, Object> context = new HashMap<>();
+        for (Iterator<EObject> it = architecture.eAllContents(); ; ) {
+            EObject o = it.hasNext() ? it.next() : null;
+            EObject element = o == null ? architecture : o;
+            if (!STRUCTURE.validate(element.eClass(), element, null, context) || rules.violatesAny(element, PREREQUISITES)) {
+                return false;
+            }
+            if (o == null) {
+                return true;
+            }
+        }
+    }
+
+    /** The classes whose invariants apply to an element: its own and its supertypes. */
+    static List<EClass> classes(EObject element) {
+        List<EClass> classes = new ArrayList<>(element.eClass().getEAllSuperTypes());
+        classes.add(element.eClass());
+        return classes;
+    }
+}
