@@ -18,10 +18,12 @@ import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
 import org.eclipse.emf.ecore.util.Diagnostician;
 import org.eclipse.emf.ecore.util.EObjectValidator;
+import org.rsaml.model.Architecture;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.internal.OclRules;
 import org.rsaml.validation.internal.RuleEValidator;
+import org.rsaml.validation.internal.TimingChecks;
 
 /**
  * Validates RsaML models against the OCL rules of rsaml.ecore and EMF's structural checks, and
@@ -58,6 +60,24 @@ public final class RsamlModelValidator {
     public static List<Finding> validate(LoadedModel model) {
         RsamlValidationSetup.init();
         return toFindings(diagnose(model.resource().getContents(), new RuleEValidator(OclRules.instance())), model);
+    }
+
+    /**
+     * The findings of the timing rules alone (RSA-22 to RSA-25), worded and located as
+     * {@link #validate(LoadedModel)} reports them; when other errors leave an architecture without a
+     * task set, an RSA-24 warning on it says so instead of nothing.
+     */
+    public static List<Finding> validateTiming(LoadedModel model) {
+        RsamlValidationSetup.init();
+        BasicDiagnostic chain = new BasicDiagnostic();
+        for (EObject root : model.resource().getContents()) {
+            if (root instanceof Architecture architecture) {
+                for (TimingChecks.Found f : TimingChecks.all(architecture, OclRules.instance())) {
+                    chain.add(TimingChecks.diagnostic(f));
+                }
+            }
+        }
+        return toFindings(chain, model);
     }
 
     /** EMF's structural checks alone (multiplicities, proxies, references), without the OCL rules. */

@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Optional;
 
 import org.rsaml.validation.internal.RuleCatalog;
+import org.rsaml.validation.internal.TimingChecks;
 
 /**
  * The catalogue of RsaML rules, read from {@code model/rules.properties} of the model bundle. RSA-01
@@ -36,6 +37,11 @@ public final class Rules {
     /** All rules, in id order. */
     public static List<Rule> all() {
         return List.copyOf(BY_ID.values());
+    }
+
+    /** The rules of the timing analysis (RSA-22 to RSA-25), in id order. */
+    public static List<Rule> timing() {
+        return BY_ID.values().stream().filter(r -> TimingChecks.RULES.contains(r.id())).toList();
     }
 
     public static Optional<Rule> byId(String id) {

@@ -109,20 +109,7 @@ public class RuleEValidator extends RsamlValidator {
                 if (diagnostics == null) {
                     break;
                 }
-                if (f.failure() != null) {
-                    String message = MessageParameters.capitalized(f.failure());
-                    diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, 0, message, new Object[] { eObject, f.rule(), message }));
-                    continue;
-                }
-                String message;
-                try {
-                    message = MessageParameters.render(f.rule().message(), eObject, f.parameters());
-                } catch (RuntimeException e) {
-                    message = MessageParameters.capitalized(MessageParameters.element(eObject)) + " violates " + f.rule().id()
-                            + " (" + f.rule().description() + "); its message could not be written: " + e;
-                }
-                diagnostics.add(new BasicDiagnostic(f.rule().severity().diagnosticSeverity(), SOURCE, 0,
-                        message + " (" + f.rule().id() + ")", new Object[] { eObject, f.rule(), message }));
+                diagnostics.add(TimingChecks.diagnostic(f));
             }
         }
         return result;

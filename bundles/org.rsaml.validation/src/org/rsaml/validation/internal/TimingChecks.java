@@ -13,6 +13,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import org.eclipse.emf.common.util.BasicDiagnostic;
+import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.DiagnosticChain;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
@@ -179,6 +181,40 @@ public final class TimingChecks {
             add(out, new Found(rule(l.verdict() == Verdict.MISSES ? LATENCY : NOT_ANALYSED), l.requirement(), parameters));
         }
         return out;
+    }
+
+    /** The finding as EMF diagnostic, worded as {@link RuleEValidator} words the OCL rules' findings. */
+    public static Diagnostic diagnostic(Found f) {
+        EObject on = f.element();
+        if (f.failure() != null) {
+            String message = MessageParameters.capitalized(f.failure());
+            return new BasicDiagnostic(Diagnostic.ERROR, RuleEValidator.SOURCE, 0, message, new Object[] { on, f.rule(), message });
+        }
+        String message;
+        try {
+            message = MessageParameters.render(f.rule().message(), on, f.parameters());
+        } catch (RuntimeException e) {
+            message = MessageParameters.capitalized(MessageParameters.element(on)) + " violates " + f.rule().id() + " ("
+                    + f.rule().description() + "); its message could not be written: " + e;
+        }
+        return new BasicDiagnostic(f.rule().severity().diagnosticSeverity(), RuleEValidator.SOURCE, 0,
+                message + " (" + f.rule().id() + ")", new Object[] { on, f.rule(), message });
+    }
+
+    /**
+     * The timing findings of the architecture alone, as {@code rsaml analyze} reports them: like
+     * validation's, and when the architecture's other errors leave it without a task set, one RSA-24
+     * warning on it saying so (validation reports those errors themselves).
+     */
+    public static List<Found> all(Architecture architecture, OclRules rules) {
+        List<Found> all = new ArrayList<>();
+        if (!prerequisitesHold(architecture, rules)) {
+            all.add(new Found(rule(NOT_ANALYSED), architecture, Map.of("where", "", "reason", "it has errors of RSA-00, RSA-10,"
+                    + " RSA-12, RSA-13 or RSA-20 (rsaml validate lists them), which leave it without a well-defined task set")));
+            return all;
+        }
+        findings(architecture, rules).values().forEach(all::addAll);
+        return all;
     }
 
     private static String reason(String explanation) {

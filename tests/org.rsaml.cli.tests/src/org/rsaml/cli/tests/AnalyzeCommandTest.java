@@ -7,11 +7,18 @@ package org.rsaml.cli.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.StringReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.stream.Stream;
 
+import org.apache.maven.plugin.surefire.log.api.NullConsoleLogger;
+import org.apache.maven.plugins.surefire.report.ReportTestCase;
+import org.apache.maven.plugins.surefire.report.ReportTestSuite;
+import org.apache.maven.plugins.surefire.report.TestSuiteXmlParser;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -19,7 +26,7 @@ import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 
-/** {@code rsaml analyze}: verdicts with witnesses, exit codes, JSON and SVG timelines. */
+/** {@code rsaml analyze}: verdicts with witnesses, exit codes, JSON, SARIF, JUnit XML and SVG timelines. */
 class AnalyzeCommandTest {
 
     @Test
@@ -69,6 +76,60 @@ class AnalyzeCommandTest {
         assertEquals("navigation/pathPlanner.plan", plan.get("task").getAsString());
         assertEquals("misses", plan.get("verdict").getAsString());
         assertTrue(plan.getAsJsonObject("witness").getAsJsonObject("preemptions").get("navigation/obstacleDetector.detect").getAsLong() > 0);
+    }
+
+    @Test
+    void sarifListsTheTimingFindingsSchemaValid() throws Exception {
+        Cli.Result r = Cli.run("analyze", "--format", "sarif", "examples/mobile-base-latency.rsaml", "examples/mobile-base-latency-missed.rsaml");
+        assertEquals(1, r.code(), r.toString());
+        assertEquals(Set.of(), ReportFormatsTest.sarifProblems(r.out()), r.out());
+        JsonObject run = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject();
+        List<String> rules = new ArrayList<>();
+        run.getAsJsonObject("tool").getAsJsonObject("driver").getAsJsonArray("rules")
+                .forEach(rule -> rules.add(rule.getAsJsonObject().get("id").getAsString()));
+        assertEquals(List.of("RSA-22", "RSA-23", "RSA-24", "RSA-25"), rules);
+        JsonArray results = run.getAsJsonArray("results");
+        assertEquals(1, results.size(), r.out());
+        JsonObject result = results.get(0).getAsJsonObject();
+        assertEquals("RSA-23", result.get("ruleId").getAsString());
+        assertEquals("error", result.get("level").getAsString());
+        assertTrue(result.getAsJsonObject("message").get("text").getAsString()
+                .startsWith("Latency requirement 'scanToWheels' can be exceeded: the worst-case reaction time can reach 57 ms"), r.out());
+        JsonObject location = result.getAsJsonArray("locations").get(0).getAsJsonObject().getAsJsonObject("physicalLocation");
+        assertEquals("examples/mobile-base-latency-missed.rsaml", location.getAsJsonObject("artifactLocation").get("uri").getAsString());
+        assertEquals(40, location.getAsJsonObject("region").get("startLine").getAsInt());
+    }
+
+    @Test
+    void junitHasATestPerTimingRuleAndFile() throws Exception {
+        Cli.Result r = Cli.run("analyze", "--format", "junit", "examples/mobile-base-latency.rsaml", "examples/mobile-base-latency-missed.rsaml");
+        assertEquals(1, r.code(), r.toString());
+        List<ReportTestSuite> suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(new StringReader(r.out()));
+        assertEquals(2, suites.size(), r.out());
+        for (ReportTestSuite suite : suites) {
+            assertEquals(4, suite.getNumberOfTests(), suite.getFullClassName());
+        }
+        ReportTestSuite missed = suites.stream().filter(s -> s.getNumberOfFailures() > 0).findFirst().orElseThrow(() -> new AssertionError(r.out()));
+        assertEquals(1, missed.getNumberOfFailures());
+        ReportTestCase failed = missed.getTestCases().stream().filter(ReportTestCase::hasFailure).findFirst().orElseThrow();
+        assertEquals("RSA-23", failed.getFailureType());
+        assertTrue(failed.getName().startsWith("RSA-23 latency-within-requirement (mobileBaseSlowDetector/scanToWheels)"), failed.getName());
+    }
+
+    @Test
+    void sarifSaysWhenErrorsLeaveNoTaskSet(@TempDir Path tmp) throws Exception {
+        Path model = tmp.resolve("negative.rsaml");
+        Files.writeString(model, Files.readString(Cli.ROOT.resolve("examples/mobile-base-latency.rsaml"))
+                .replace("period=\"20.0\" delay=\"20.0\" execDuration=\"4.0\"", "period=\"20.0\" delay=\"20.0\" execDuration=\"-4.0\""));
+        Cli.Result r = Cli.runIn(tmp, "analyze", "--format", "sarif", "negative.rsaml");
+        assertEquals(0, r.code(), r.toString());
+        JsonArray results = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
+                .getAsJsonArray("results");
+        assertEquals(1, results.size(), r.out());
+        JsonObject result = results.get(0).getAsJsonObject();
+        assertEquals("RSA-24", result.get("ruleId").getAsString());
+        assertEquals("warning", result.get("level").getAsString());
+        assertTrue(result.getAsJsonObject("message").get("text").getAsString().contains("errors of RSA-00, RSA-10"), r.out());
     }
 
     @Test

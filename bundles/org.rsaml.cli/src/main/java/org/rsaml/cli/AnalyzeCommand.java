@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.rsaml.analysis.ArchitectureTiming;
@@ -17,13 +18,17 @@ import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ExitCodes;
+import org.rsaml.report.ModelBatch;
 import org.rsaml.report.ModelFiles;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
 import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.Severity;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
@@ -45,13 +50,14 @@ import picocli.CommandLine.Model.CommandSpec;
                 "2:usage error, a model that cannot be read or analysed, or output that cannot be written" })
 final class AnalyzeCommand implements Callable<Integer> {
 
-    enum Format { text, json }
+    enum Format { text, json, sarif, junit }
 
     @Parameters(arity = "1..*", paramLabel = "MODEL", description = "Model files and directories.")
     List<Path> paths;
 
     @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
-            description = "Format written to standard output: text or json (default: ${DEFAULT-VALUE}).")
+            description = { "Format written to standard output: text or json (the verdicts and witnesses), sarif or junit",
+                    "(the timing rules' findings RSA-22 to RSA-25, as validate reports them) (default: ${DEFAULT-VALUE})." })
     Format format;
 
     @Option(names = "--timeline", paramLabel = "DIR",
@@ -66,13 +72,26 @@ final class AnalyzeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (format == Format.sarif || format == Format.junit) {
+            Report report = ModelBatch.analyze(parent.workingDirectory, paths, Severity.ERROR);
+            int code = ReportArgs.emit(report, format == Format.sarif ? ReportFormat.SARIF : ReportFormat.JUNIT, Map.of(), false,
+                    parent, spec);
+            return timeline == null ? code : Math.max(code, analyse(false));
+        }
+        return analyse(true);
+    }
+
+    /** Analyses every model; with {@code print}, writes the verdicts in the text or JSON format. */
+    private int analyse(boolean print) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         int code = ExitCodes.OK;
         JsonArray json = new JsonArray();
         for (ModelFiles.Input input : ModelFiles.select(parent.workingDirectory, paths)) {
             if (input.unusable() != null) {
-                Text.lines(input.unusable()).forEach(err::println);
+                if (print) {
+                    Text.lines(input.unusable()).forEach(err::println);
+                }
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
             }
@@ -81,21 +100,27 @@ final class AnalyzeCommand implements Callable<Integer> {
                 LoadedModel model = ModelLoader.load(input.path(), input.displayName());
                 timing = TimingAnalysis.analyse(model.architecture());
             } catch (ModelLoadException e) {
-                Text.lines(e).forEach(err::println);
+                if (print) {
+                    Text.lines(e).forEach(err::println);
+                }
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
             } catch (UnplannableException e) {
-                err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                if (print) {
+                    err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                }
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
             } catch (TimingModelException e) {
-                err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                if (print) {
+                    err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                }
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
             }
-            if (format == Format.text) {
+            if (print && format == Format.text) {
                 out.print(TimingText.render(input.displayName(), timing));
-            } else {
+            } else if (print) {
                 JsonObject o = TimingJson.of(timing);
                 o.addProperty("file", input.displayName());
                 json.add(o);
@@ -114,7 +139,7 @@ final class AnalyzeCommand implements Callable<Integer> {
                 code = ExitCodes.FINDINGS;
             }
         }
-        if (format == Format.json) {
+        if (print && format == Format.json) {
             out.println(new com.google.gson.GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(json));
         }
         out.flush();

@@ -24,14 +24,21 @@ import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.report.ModelBatch;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportFiles;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.Severity;
 
 /**
  * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
  * build fails when a deadline or a latency requirement can be missed; the verdicts, with their
- * witnesses, are logged.
+ * witnesses, are logged, and the timing rules' findings (RSA-22 to RSA-25) are written as reports
+ * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses.
  */
 @Mojo(name = "analyze", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
 public class AnalyzeMojo extends AbstractMojo {
@@ -48,6 +55,17 @@ public class AnalyzeMojo extends AbstractMojo {
     @Parameter(property = "rsaml.analysis.failOnMiss", defaultValue = "true")
     boolean failOnMiss;
 
+    /** Report formats (text, json, sarif, junit) of the timing rules' findings; empty for none. */
+    @Parameter(property = "rsaml.analysis.formats", defaultValue = "sarif,junit")
+    List<String> formats;
+
+    /** Where the reports are written. */
+    @Parameter(property = "rsaml.reportDirectory", defaultValue = "${project.build.directory}/rsaml")
+    File reportDirectory;
+
+    @Parameter(defaultValue = "${plugin.version}", readonly = true)
+    String pluginVersion;
+
     /** Skips the analysis. */
     @Parameter(property = "rsaml.skip", defaultValue = "false")
     boolean skip;
@@ -61,6 +79,16 @@ public class AnalyzeMojo extends AbstractMojo {
         if (skip) {
             log.info("Skipping RsaML timing analysis (rsaml.skip)");
             return;
+        }
+        List<ReportFormat> reportFormats = new ArrayList<>();
+        for (String name : formats == null ? List.<String>of() : formats) {
+            try {
+                if (!name.isBlank()) {
+                    reportFormats.add(ReportFormat.parse(name));
+                }
+            } catch (IllegalArgumentException e) {
+                throw new MojoExecutionException("formats: " + e.getMessage());
+            }
         }
         List<String> missed = new ArrayList<>();
         for (File model : models) {
@@ -94,6 +122,23 @@ public class AnalyzeMojo extends AbstractMojo {
             if (timing.verdict() == Verdict.MISSES) {
                 missed.add(shown);
             }
+        }
+        if (!reportFormats.isEmpty()) {
+            Path base = baseDirectory.toPath();
+            Report report = ModelBatch.analyze(base, models.stream().map(File::toPath).toList(), Severity.ERROR);
+            ReportOptions options = new ReportOptions(pluginVersion, base, false);
+            for (ReportFormat format : reportFormats) {
+                Path file = reportDirectory.toPath().resolve(format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
+                        : "rsaml-timing." + format.extension());
+                try {
+                    ReportFiles.write(file, format, report, options);
+                } catch (java.io.IOException e) {
+                    throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": "
+                            + ReportFiles.reason(e, file), e);
+                }
+            }
+            log.info("RsaML timing findings: " + report.summary() + "; reports in "
+                    + ProjectPaths.relative(baseDirectory.toPath(), reportDirectory.toPath()));
         }
         if (!missed.isEmpty() && failOnMiss) {
             throw new MojoFailureException("RsaML timing: a deadline or a latency requirement can be missed in " + String.join(", ", missed));
