@@ -7,7 +7,9 @@ package org.rsaml.cli.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.StringReader;
+import java.io.ByteArrayInputStream;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -104,7 +106,8 @@ class AnalyzeCommandTest {
     void junitHasATestPerTimingRuleAndFile() throws Exception {
         Cli.Result r = Cli.run("analyze", "--format", "junit", "examples/mobile-base-latency.rsaml", "examples/mobile-base-latency-missed.rsaml");
         assertEquals(1, r.code(), r.toString());
-        List<ReportTestSuite> suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(new StringReader(r.out()));
+        List<ReportTestSuite> suites = new TestSuiteXmlParser(new NullConsoleLogger())
+                .parse(new InputStreamReader(new ByteArrayInputStream(r.out().getBytes(StandardCharsets.UTF_8)), StandardCharsets.UTF_8));
         assertEquals(2, suites.size(), r.out());
         for (ReportTestSuite suite : suites) {
             assertEquals(4, suite.getNumberOfTests(), suite.getFullClassName());
