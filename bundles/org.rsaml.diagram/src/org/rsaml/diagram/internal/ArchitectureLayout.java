@@ -410,7 +410,7 @@ public final class ArchitectureLayout extends Layout {
         }
         collectLinks();
         // Ports last: drawn over the links that end on them.
-        drawing.shapes.removeAll(ports);
+        drawing.shapes.removeAll(new java.util.HashSet<>(ports)); // a set: a list would make this quadratic
         drawing.shapes.addAll(ports);
     }
 
@@ -435,11 +435,12 @@ public final class ArchitectureLayout extends Layout {
         addBadge(shape, left + text.head().get(0).width() + 4, shape.y + PAD);
         y += 4;
         Drawing.Shape function = null;
-        for (Item item : text.items()) {
+        for (int i = 0; i < text.items().size(); i++) {
+            Item item = text.items().get(i);
             double itemHeight = height(item.lines()) + 2;
             if (item.depth() == 0) {
                 double h = itemHeight;
-                for (Item a : text.items().subList(text.items().indexOf(item) + 1, text.items().size())) {
+                for (Item a : text.items().subList(i + 1, text.items().size())) {
                     if (a.depth() == 0) {
                         break;
                     }

@@ -57,15 +57,18 @@ public final class HtmlWriter {
         values.put("DATA", data(drawing, file, findings, ids));
         String template = resource("report.html");
         Matcher m = TOKEN.matcher(template);
-        StringBuilder out = new StringBuilder(template.length() + 128 * 1024);
+        StringBuilder out = new StringBuilder(template.length() + values.values().stream().mapToInt(String::length).sum());
+        int last = 0;
         while (m.find()) {
             String value = values.get(m.group(1));
             if (value == null) {
                 throw new IllegalStateException("report.html names an unknown value " + m.group());
             }
-            m.appendReplacement(out, Matcher.quoteReplacement(value));
+            // Appended as is: appendReplacement would scan the megabytes of a large diagram twice.
+            out.append(template, last, m.start()).append(value);
+            last = m.end();
         }
-        m.appendTail(out);
+        out.append(template, last, template.length());
         return out.toString();
     }
 

@@ -11,7 +11,6 @@ import java.nio.charset.StandardCharsets;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 
@@ -263,12 +262,22 @@ public final class SvgWriter {
 
     /** Rounded to 0.01 and printed the same on every platform. */
     static String num(double value) {
-        double rounded = Math.round(value * 100) / 100.0;
-        if (rounded == Math.rint(rounded)) {
-            return Long.toString((long) rounded);
+        // By hand: String.format was the larger part of writing a diagram of 1,000 modules.
+        long hundredths = Math.round(value * 100);
+        long whole = Math.abs(hundredths) / 100;
+        int fraction = (int) (Math.abs(hundredths) % 100);
+        StringBuilder b = new StringBuilder(12);
+        if (hundredths < 0) {
+            b.append('-');
         }
-        String s = String.format(Locale.ROOT, "%.2f", rounded);
-        return s.endsWith("0") ? s.substring(0, s.length() - 1) : s;
+        b.append(whole);
+        if (fraction != 0) {
+            b.append('.').append(fraction / 10);
+            if (fraction % 10 != 0) {
+                b.append(fraction % 10);
+            }
+        }
+        return b.toString();
     }
 
     static String esc(String text) {
