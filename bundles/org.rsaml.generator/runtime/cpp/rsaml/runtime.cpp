@@ -131,9 +131,17 @@ bool Link::active() const { return Clock::now().time_since_epoch().count() < unt
 Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
     : module(module), wave(wave), timed(timed), release(release), lock(module.mutex_), previous_(current_activation) {
   current_activation = this;
+  if (module.depth_++ == 0) {
+    for (auto& latch : module.latches_) {
+      latch();
+    }
+  }
 }
 
-Activation::~Activation() { current_activation = previous_; }
+Activation::~Activation() {
+  --module.depth_;
+  current_activation = previous_;
+}
 
 Activation* Activation::current() { return current_activation; }
 

@@ -110,6 +110,8 @@ class Module {
   void stop_worker();
   void start_step(std::uint64_t wave);
   void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body);
+  /** Registers an entry port's latch: each activation starts with the latest value of every port. */
+  void add_input(std::function<void()> latch) { latches_.push_back(std::move(latch)); }
 
  protected:
   /** Called once when the run starts, lowest layer first, before the outputs are first sent. */
@@ -142,6 +144,8 @@ class Module {
   bool stopping_ = false;
   std::thread worker_;
   std::set<std::uint64_t> waves_;
+  std::vector<std::function<void()>> latches_;
+  int depth_ = 0;
   Clock::time_point last_reaction_{};
   bool reacted_ = false;
 };
@@ -190,13 +194,19 @@ class Output {
   std::atomic<std::uint64_t> sequence_{0};
 };
 
-/** An entry port: the latest value received, delivered on the owning module's thread. */
+/**
+ * An entry port: the latest value received. A value sent is at once the one the owning module's next
+ * activation reads (taken when the activation starts, so it does not change during it: the sampling
+ * the timing analysis assumes); the handler runs on the owning module's thread.
+ */
 template <class T>
 class Input {
  public:
   using Handler = std::function<void(const T&)>;
   Input(Module& owner, const std::string& port, Handler handler)
-      : owner_(owner), name_(owner.name() + "." + port), handler_(std::move(handler)) {}
+      : owner_(owner), name_(owner.name() + "." + port), handler_(std::move(handler)) {
+    owner_.add_input([this] { latch(); });
+  }
   Input(const Input&) = delete;
   Input& operator=(const Input&) = delete;
 
@@ -217,23 +227,39 @@ class Input {
   }
 
   void deliver(const T& data, const std::string* from, std::uint64_t sequence, std::uint64_t wave, Link* replacing) {
+    {
+      std::lock_guard<std::mutex> lock(pending_mutex_);
+      pending_ = data;
+      fresh_ = true;
+    }
     owner_.post(wave, [this, data, from, sequence, replacing] {
-      value_ = data;
       ++received_;
       if (Trace::enabled()) {
         Trace::line("recv " + name_ + " <- " + *from + " #" + std::to_string(sequence) +
                     (replacing ? " by " + replacing->name() : std::string()));
       }
-      handler_(value_);
+      handler_(data);
     });
   }
 
  private:
+  /** Called with the owner's lock held, when one of its activations starts. */
+  void latch() {
+    std::lock_guard<std::mutex> lock(pending_mutex_);
+    if (fresh_) {
+      value_ = pending_;
+      fresh_ = false;
+    }
+  }
+
   Module& owner_;
   std::string name_;
   Handler handler_;
   std::vector<Link*> suppressors_;
   T value_{};
+  std::mutex pending_mutex_;
+  T pending_{};
+  bool fresh_ = false;
   std::uint64_t received_ = 0;
 };
 
