@@ -5,6 +5,10 @@
 package org.rsaml.maven;
 
 import java.io.File;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Function;
 import java.nio.file.Path;
 import java.util.Locale;
 
@@ -15,6 +19,9 @@ import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.report.FileResult;
 import org.rsaml.report.Report;
+import org.rsaml.report.ReportFiles;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.Severity;
@@ -28,6 +35,9 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
 
     @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
     File baseDirectory;
+
+    @Parameter(defaultValue = "${plugin.version}", readonly = true)
+    String pluginVersion;
 
     @Override
     public final void execute() throws MojoExecutionException, MojoFailureException {
@@ -45,9 +55,7 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
 
     /** Paths as the build log shows them: relative to the project when inside it, with forward slashes. */
     String relative(Path path) {
-        Path base = baseDirectory.toPath().toAbsolutePath().normalize();
-        Path p = path.toAbsolutePath().normalize();
-        return (p.startsWith(base) && !p.equals(base) ? base.relativize(p) : p).toString().replace('\\', '/');
+        return ProjectPaths.relative(baseDirectory.toPath(), path);
     }
 
     /** {@code error}, {@code warning} or {@code never} (then {@code null}: findings never fail the build). */
@@ -77,6 +85,37 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
                     case WARNING -> log.warn(line);
                     case INFO -> log.info(line);
                 }
+            }
+        }
+    }
+
+    /** The report formats a goal's {@code parameter} names; blank entries are ignored. */
+    static List<ReportFormat> reportFormats(String parameter, List<String> names) throws MojoExecutionException {
+        List<ReportFormat> result = new ArrayList<>();
+        for (String name : names == null ? List.<String>of() : names) {
+            if (name.isBlank()) {
+                continue;
+            }
+            try {
+                result.add(ReportFormat.parse(name));
+            } catch (IllegalArgumentException e) {
+                throw new MojoExecutionException(parameter + ": " + e.getMessage());
+            }
+        }
+        return result;
+    }
+
+    /** Writes {@code report} in each format into {@code directory}, named by {@code fileName}. */
+    void writeReports(Report report, List<ReportFormat> formats, File directory, Function<ReportFormat, String> fileName)
+            throws MojoExecutionException {
+        ReportOptions options = new ReportOptions(pluginVersion, baseDirectory.toPath(), false);
+        for (ReportFormat format : formats) {
+            Path file = directory.toPath().resolve(fileName.apply(format));
+            try {
+                ReportFiles.write(file, format, report, options);
+            } catch (IOException e) {
+                throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": "
+                        + ReportFiles.reason(e, file), e);
             }
         }
     }

@@ -9,7 +9,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
-import org.apache.maven.plugin.AbstractMojo;
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugin.logging.Log;
@@ -26,9 +25,7 @@ import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
-import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
-import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
@@ -41,7 +38,7 @@ import org.rsaml.validation.Severity;
  * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses.
  */
 @Mojo(name = "analyze", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
-public class AnalyzeMojo extends AbstractMojo {
+public class AnalyzeMojo extends AbstractRsamlMojo {
 
     /** The {@code .rsaml} models to analyse. */
     @Parameter(property = "rsaml.models", required = true)
@@ -63,36 +60,18 @@ public class AnalyzeMojo extends AbstractMojo {
     @Parameter(property = "rsaml.reportDirectory", defaultValue = "${project.build.directory}/rsaml")
     File reportDirectory;
 
-    @Parameter(defaultValue = "${plugin.version}", readonly = true)
-    String pluginVersion;
-
-    /** Skips the analysis. */
-    @Parameter(property = "rsaml.skip", defaultValue = "false")
-    boolean skip;
-
-    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
-    File baseDirectory;
+    @Override
+    String goal() {
+        return "timing analysis";
+    }
 
     @Override
-    public void execute() throws MojoExecutionException, MojoFailureException {
+    void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
-        if (skip) {
-            log.info("Skipping RsaML timing analysis (rsaml.skip)");
-            return;
-        }
-        List<ReportFormat> reportFormats = new ArrayList<>();
-        for (String name : formats == null ? List.<String>of() : formats) {
-            try {
-                if (!name.isBlank()) {
-                    reportFormats.add(ReportFormat.parse(name));
-                }
-            } catch (IllegalArgumentException e) {
-                throw new MojoExecutionException("formats: " + e.getMessage());
-            }
-        }
+        List<ReportFormat> reportFormats = reportFormats("formats", formats);
         List<String> missed = new ArrayList<>();
         for (File model : models) {
-            String shown = ProjectPaths.relative(baseDirectory.toPath(), model.toPath());
+            String shown = relative(model.toPath());
             ArchitectureTiming timing;
             try {
                 timing = TimingAnalysis.analyse(ModelLoader.load(model.toPath(), shown).architecture());
@@ -113,7 +92,7 @@ public class AnalyzeMojo extends AbstractMojo {
             if (timeline != null) {
                 try {
                     for (Path written : TimingSvg.write(timeline.toPath(), timing)) {
-                        log.info("RsaML: timeline written: " + ProjectPaths.relative(baseDirectory.toPath(), written));
+                        log.info("RsaML: timeline written: " + relative(written));
                     }
                 } catch (java.io.IOException e) {
                     throw new MojoExecutionException("cannot write the timeline into " + timeline + ": " + e.getMessage());
@@ -126,19 +105,10 @@ public class AnalyzeMojo extends AbstractMojo {
         if (!reportFormats.isEmpty()) {
             Path base = baseDirectory.toPath();
             Report report = ModelBatch.analyze(base, models.stream().map(File::toPath).toList(), Severity.ERROR);
-            ReportOptions options = new ReportOptions(pluginVersion, base, false);
-            for (ReportFormat format : reportFormats) {
-                Path file = reportDirectory.toPath().resolve(format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
-                        : "rsaml-timing." + format.extension());
-                try {
-                    ReportFiles.write(file, format, report, options);
-                } catch (java.io.IOException e) {
-                    throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": "
-                            + ReportFiles.reason(e, file), e);
-                }
-            }
+            writeReports(report, reportFormats, reportDirectory, format -> format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
+                    : "rsaml-timing." + format.extension());
             log.info("RsaML timing findings: " + report.summary() + "; reports in "
-                    + ProjectPaths.relative(baseDirectory.toPath(), reportDirectory.toPath()));
+                    + relative(reportDirectory.toPath()));
         }
         if (!missed.isEmpty() && failOnMiss) {
             throw new MojoFailureException("RsaML timing: a deadline or a latency requirement can be missed in " + String.join(", ", missed));

@@ -11,7 +11,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.apache.maven.plugin.AbstractMojo;
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugin.logging.Log;
@@ -33,19 +32,7 @@ import org.rsaml.validation.ModelLoadException;
  * written, not because of findings (the {@code validate} goal judges those).
  */
 @Mojo(name = "diagram", defaultPhase = LifecyclePhase.PREPARE_PACKAGE, threadSafe = true)
-public class DiagramMojo extends AbstractMojo {
-
-    /** The directory searched for models. */
-    @Parameter(property = "rsaml.modelDirectory", defaultValue = "${project.basedir}")
-    File modelDirectory;
-
-    /** Ant-style patterns, relative to {@code modelDirectory}, of the models to draw. */
-    @Parameter
-    List<String> includes = new ArrayList<>(List.of("**/*.rsaml"));
-
-    /** Ant-style patterns of files to leave out; the build output folder is always left out. */
-    @Parameter
-    List<String> excludes = new ArrayList<>();
+public class DiagramMojo extends AbstractModelsMojo {
 
     /** The views to draw: {@code architecture}, {@code mission}. */
     @Parameter(property = "rsaml.views", defaultValue = "architecture")
@@ -67,23 +54,14 @@ public class DiagramMojo extends AbstractMojo {
     @Parameter(property = "rsaml.diagramDirectory", defaultValue = "${project.build.directory}/rsaml/diagrams")
     File outputDirectory;
 
-    /** Skips drawing. */
-    @Parameter(property = "rsaml.skip", defaultValue = "false")
-    boolean skip;
-
-    @Parameter(defaultValue = "${project.basedir}", readonly = true, required = true)
-    File baseDirectory;
-
-    @Parameter(defaultValue = "${project.build.directory}", readonly = true, required = true)
-    File buildDirectory;
+    @Override
+    String goal() {
+        return "diagrams";
+    }
 
     @Override
-    public void execute() throws MojoExecutionException, MojoFailureException {
+    void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
-        if (skip) {
-            log.info("Skipping RsaML diagrams (rsaml.skip)");
-            return;
-        }
         List<DiagramView> diagramViews = new ArrayList<>();
         List<DiagramFormat> formats = new ArrayList<>();
         TimingMode timingMode;
@@ -102,12 +80,8 @@ public class DiagramMojo extends AbstractMojo {
         } catch (IllegalArgumentException e) {
             throw new MojoExecutionException("diagram: " + e.getMessage());
         }
-        if (!modelDirectory.isDirectory()) {
-            throw new MojoFailureException("RsaML model directory " + modelDirectory + " does not exist");
-        }
-        List<Path> models = ProjectPaths.models(baseDirectory, modelDirectory, buildDirectory, includes, excludes);
+        List<Path> models = models();
         if (models.isEmpty()) {
-            log.warn("No RsaML models in " + relative(modelDirectory.toPath()) + " matching " + includes);
             return;
         }
         Path base = baseDirectory.toPath();
@@ -143,7 +117,4 @@ public class DiagramMojo extends AbstractMojo {
         }
     }
 
-    private String relative(Path path) {
-        return ProjectPaths.relative(baseDirectory.toPath(), path);
-    }
 }

@@ -5,9 +5,7 @@
 package org.rsaml.maven;
 
 import java.io.File;
-import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 
 import org.apache.maven.plugin.MojoExecutionException;
@@ -18,9 +16,7 @@ import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
-import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
-import org.rsaml.report.ReportOptions;
 import org.rsaml.validation.Severity;
 
 /**
@@ -30,19 +26,7 @@ import org.rsaml.validation.Severity;
  * that cannot be read.
  */
 @Mojo(name = "validate", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
-public class ValidateMojo extends AbstractRsamlMojo {
-
-    /** The directory searched for models. */
-    @Parameter(property = "rsaml.modelDirectory", defaultValue = "${project.basedir}")
-    File modelDirectory;
-
-    /** Ant-style patterns, relative to {@code modelDirectory}, of the models to validate. */
-    @Parameter
-    List<String> includes = new ArrayList<>(List.of("**/*.rsaml"));
-
-    /** Ant-style patterns of files to leave out; the build output folder is always left out. */
-    @Parameter
-    List<String> excludes = new ArrayList<>();
+public class ValidateMojo extends AbstractModelsMojo {
 
     /** Lowest severity that fails the build: {@code error}, {@code warning} or {@code never}. */
     @Parameter(property = "rsaml.failOn", defaultValue = "error")
@@ -56,12 +40,6 @@ public class ValidateMojo extends AbstractRsamlMojo {
     @Parameter(property = "rsaml.reportDirectory", defaultValue = "${project.build.directory}/rsaml")
     File reportDirectory;
 
-    @Parameter(defaultValue = "${project.build.directory}", readonly = true, required = true)
-    File buildDirectory;
-
-    @Parameter(defaultValue = "${plugin.version}", readonly = true)
-    String pluginVersion;
-
     @Override
     String goal() {
         return "validation";
@@ -71,29 +49,16 @@ public class ValidateMojo extends AbstractRsamlMojo {
     void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
         Severity threshold = failOn("failOn", failOn);
-        List<ReportFormat> reportFormats = reportFormats();
-        if (!modelDirectory.isDirectory()) {
-            throw new MojoFailureException("RsaML model directory " + modelDirectory + " does not exist");
-        }
-        List<Path> models = ProjectPaths.models(baseDirectory, modelDirectory, buildDirectory, includes, excludes);
+        List<ReportFormat> reportFormats = reportFormats("formats", formats);
+        List<Path> models = models();
         if (models.isEmpty()) {
-            log.warn("No RsaML models in " + relative(modelDirectory.toPath()) + " matching " + includes);
             return;
         }
 
         Path base = baseDirectory.toPath();
         Report report = ModelBatch.validate(base, models, threshold);
         log(report);
-        ReportOptions options = new ReportOptions(pluginVersion, base, false);
-        for (ReportFormat format : reportFormats) {
-            Path file = reportDirectory.toPath().resolve(fileName(format));
-            try {
-                ReportFiles.write(file, format, report, options);
-            } catch (IOException e) {
-                throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": "
-                        + ReportFiles.reason(e, file), e);
-            }
-        }
+        writeReports(report, reportFormats, reportDirectory, ValidateMojo::fileName);
         log.info("RsaML: " + report.summary() + (reportFormats.isEmpty() ? "" : "; reports in " + relative(reportDirectory.toPath())));
 
         if (report.unreadable() > 0) {
@@ -103,21 +68,6 @@ public class ValidateMojo extends AbstractRsamlMojo {
         if (report.hasFailingFindings()) {
             throw new MojoFailureException("RsaML validation failed: " + report.summary() + " (failOn: " + failOn + ")");
         }
-    }
-
-    private List<ReportFormat> reportFormats() throws MojoExecutionException {
-        List<ReportFormat> result = new ArrayList<>();
-        for (String name : formats == null ? List.<String>of() : formats) {
-            if (name.isBlank()) {
-                continue;
-            }
-            try {
-                result.add(ReportFormat.parse(name));
-            } catch (IllegalArgumentException e) {
-                throw new MojoExecutionException("formats: " + e.getMessage());
-            }
-        }
-        return result;
     }
 
     static String fileName(ReportFormat format) {
