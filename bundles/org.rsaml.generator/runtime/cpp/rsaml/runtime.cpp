@@ -62,6 +62,31 @@ bool apply_priority(std::thread& thread, Policy policy, int rank) {
 #endif
 }
 
+/**
+ * Pins a thread to a CPU core where the platform allows it, and says so in the trace; a core the
+ * machine lacks (or a platform without affinity) leaves the thread where the OS puts it.
+ */
+void apply_core(std::thread& thread, const std::string& label, int core) {
+  if (core < 0) {
+    return;
+  }
+#if defined(__linux__)
+  if (core < CPU_SETSIZE) {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    CPU_SET(core, &set);
+    if (pthread_setaffinity_np(thread.native_handle(), sizeof(set), &set) == 0) {
+      Trace::line("cpu " + label + " core " + std::to_string(core));
+      return;
+    }
+  }
+  Trace::line("cpu " + label + " core " + std::to_string(core) + " not available: default");
+#else
+  (void)thread;
+  Trace::line("cpu " + label + " core " + std::to_string(core) + " not supported on this platform: default");
+#endif
+}
+
 }  // namespace
 
 Options parse_options(int argc, char** argv, const char* program) {
@@ -145,7 +170,7 @@ Activation::~Activation() {
 
 Activation* Activation::current() { return current_activation; }
 
-Module::Module(System& system, std::string name) : system_(system), name_(std::move(name)) {}
+Module::Module(System& system, std::string name, int core) : system_(system), name_(std::move(name)), core_(core) {}
 
 Module::~Module() { stop_worker(); }
 
@@ -163,6 +188,7 @@ void Module::post(std::uint64_t wave, std::function<void()> work) {
 void Module::start_worker() {
   if (!worker_.joinable()) {
     worker_ = std::thread([this] { run_worker(); });
+    apply_core(worker_, name_, core_);
   }
 }
 
@@ -311,6 +337,7 @@ int System::run(const Options& options) {
   for (auto& release : releases_) {
     Release* r = release.get();
     r->thread = std::thread([this, r, start] { run_release(*r, start); });
+    apply_core(r->thread, r->label, r->module->core());
     if (options.realtime && apply_priority(r->thread, r->policy, r->rank)) {
       Trace::line("sched " + r->label + (r->policy == Policy::RoundRobin ? " SCHED_RR" : " SCHED_FIFO") + " rank " +
                   std::to_string(r->rank));

@@ -95,7 +95,8 @@ class Activation {
 /** The base of every generated module class. */
 class Module {
  public:
-  Module(System& system, std::string name);
+  /** core: the CPU core the module's threads are pinned to (its processor's), or -1 for the OS's choice. */
+  Module(System& system, std::string name, int core = -1);
   virtual ~Module();
   Module(const Module&) = delete;
   Module& operator=(const Module&) = delete;
@@ -103,6 +104,7 @@ class Module {
   /** layer/module, as in the model. */
   const std::string& name() const { return name_; }
   System& system() { return system_; }
+  int core() const { return core_; }
 
   // Used by the runtime and the generated code.
   void post(std::uint64_t wave, std::function<void()> work);
@@ -137,6 +139,7 @@ class Module {
 
   System& system_;
   std::string name_;
+  int core_;
   std::recursive_mutex mutex_;
   std::mutex mail_mutex_;
   std::condition_variable mail_cv_;

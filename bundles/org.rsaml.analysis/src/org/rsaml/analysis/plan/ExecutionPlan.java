@@ -28,6 +28,7 @@ import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.model.SubsumptionLink;
@@ -102,6 +103,16 @@ public final class ExecutionPlan {
                 PlannedModule pm = new PlannedModule(this, pl, module);
                 pl.modules.add(pm);
                 modules.add(pm);
+            }
+        }
+        Map<Module, PlannedModule> byModule = new IdentityHashMap<>();
+        modules.forEach(m -> byModule.put(m.module, m));
+        for (Processor p : architecture.getProcessors()) {
+            for (Module module : p.getModules()) {
+                PlannedModule m = byModule.get(module);
+                if (m != null && m.processor == null) {
+                    m.processor = p; // a second processor naming the module is RSA-25's finding
+                }
             }
         }
         for (PlannedModule m : modules) {
@@ -392,6 +403,7 @@ public final class ExecutionPlan {
         boolean reactive;
         long minIntervalNs;
         Reaction reaction;
+        Processor processor;
 
         PlannedModule(ExecutionPlan plan, PlannedLayer layer, Module module) {
             this.plan = plan;
@@ -519,6 +531,16 @@ public final class ExecutionPlan {
         /** Whether the module has a period of its own. */
         public boolean periodic() {
             return periodic;
+        }
+
+        /** The processor the module is allocated to, or null: then it runs on the default processor. */
+        public Processor processor() {
+            return processor;
+        }
+
+        /** The CPU core the module's threads are pinned to, or -1 to leave the choice to the operating system. */
+        public int core() {
+            return processor == null ? -1 : processor.getCore();
         }
 
         /** Whether the module reacts to arriving data. */

@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -28,6 +29,7 @@ import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Function;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.validation.ModelLoader;
 
@@ -78,6 +80,7 @@ class CppExamplesTest {
             }
         }
         assertTrue(periodicActions > 0 || trace.matching("release ").size() > 0 || arch.getConnections().size() > 0);
+        assertPinnedAsDeployed(arch, trace);
 
         for (Connection c : arch.getConnections()) {
             String source = name(c.getSource());
@@ -86,6 +89,54 @@ class CppExamplesTest {
             assertFalse(received.isEmpty(), "no data flowed from " + source + " to " + target + ":\n" + Tools.last(trace.output, 4000));
             assertTrue(received.size() <= trace.sends(source), "more received at " + target + " than " + source + " sent");
         }
+    }
+
+    /**
+     * Every module of a processor with a core runs its threads there: the runtime pins the module's
+     * worker and each of its releases (one 'sched' line each) and traces it, or says the machine
+     * lacks that core; the threads of other modules are left to the operating system.
+     */
+    static void assertPinnedAsDeployed(Architecture arch, RunTrace trace) {
+        int cores = Runtime.getRuntime().availableProcessors();
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                String module = layer.getName() + "/" + m.getName();
+                Processor p = arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst().orElse(null);
+                List<String> pinned = threadsOf(trace, "cpu ", module);
+                if (p == null || p.getCore() < 0) {
+                    assertTrue(pinned.isEmpty(), module + " is left to the OS: " + pinned);
+                    continue;
+                }
+                String where = " core " + p.getCore() + (p.getCore() < cores ? "" : " not available: default");
+                int threads = 1 + threadsOf(trace, "sched ", module).size();
+                assertEquals(threads, pinned.size(), () -> module + ": a line per thread (worker and releases) expected, got "
+                        + pinned + "\n" + Tools.last(trace.output, 2000));
+                assertTrue(pinned.stream().allMatch(l -> l.endsWith(where)), () -> module + " on" + where + ": " + pinned);
+            }
+        }
+    }
+
+    /** The trace lines of a kind ('cpu ', 'sched ') about a module's threads: its worker's and its releases'. */
+    private static List<String> threadsOf(RunTrace trace, String kind, String module) {
+        return trace.matching(kind + module).stream()
+                .filter(l -> l.startsWith(kind + module + " ") || l.startsWith(kind + module + ".")).toList();
+    }
+
+    @Test
+    void aCoreTheMachineLacksLeavesTheModuleToTheOs(@TempDir Path tmp) throws Exception {
+        Path model = tmp.resolve("far-core.rsaml");
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        assertTrue(text.contains("core=\"1\""));
+        Files.writeString(model, text.replace("core=\"1\"", "core=\"4096\""));
+        Path out = tmp.resolve("project");
+        new RsamlGenerator().generate(model, Target.CPP, out, false);
+        Path exe = Tools.cmakeBuild(out, executableName(out));
+        RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", "200"));
+        List<String> far = trace.matching("cpu navigation/obstacleDetector");
+        assertTrue(far.size() >= 2, "the worker and the release:\n" + trace.output);
+        assertTrue(far.stream().allMatch(l -> l.endsWith(" core 4096 not available: default")), far::toString);
+        assertEquals(List.of("cpu control/velocityController core 0"), trace.matching("cpu control/velocityController core"));
+        assertFalse(trace.matching("release control/velocityController").isEmpty(), "the run went on:\n" + trace.output);
     }
 
     /** Releases happen at offset + k * period: over the run, about that many, at least one. */

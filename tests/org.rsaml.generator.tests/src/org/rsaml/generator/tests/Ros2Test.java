@@ -6,13 +6,17 @@ package org.rsaml.generator.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
@@ -33,6 +37,7 @@ import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.validation.ModelLoader;
 
 /**
@@ -75,6 +80,8 @@ class Ros2Test {
                         print('component', c.package, c.plugin, repr(c.namespace), c.name, repr(c.parameters))
                 else:
                     print('node', e.package, e.executable, repr(e.namespace), e.name, repr(e.parameters))
+                if kind != 'DeclareLaunchArgument' and e.other.get('prefix') is not None:
+                    print('prefix', e.name, e.other['prefix'])
             """;
 
     @ParameterizedTest
@@ -128,6 +135,7 @@ class Ros2Test {
             assertTrue(started.contains("argument use_sim_time 'false'"), started);
         }
         assertTrue(composed.contains("container rclcpp_components component_container $(namespace)"), composed);
+        assertDeployed(arch, pkg, root, composed, processes);
         List<String> components = composed.lines().filter(l -> l.startsWith("component ")).toList();
         List<String> nodes = processes.lines().filter(l -> l.startsWith("node ")).toList();
         assertEquals(modules, components.size(), composed);
@@ -199,6 +207,56 @@ class Ros2Test {
                 }
             }
         }
+    }
+
+    /**
+     * The model's deployment in the launch files: the nodes of the modules one processor runs share
+     * a container of their own, the modules no processor names share the package's container, and
+     * the processes of a processor with a core (its container, or its nodes' processes) start under
+     * taskset on that core; nothing else is pinned.
+     */
+    private static void assertDeployed(Architecture arch, String pkg, Path root, String composed, String processes) throws Exception {
+        Map<String, String> containerOf = new TreeMap<>();
+        Map<String, String> prefixes = new TreeMap<>();
+        String container = null;
+        for (String line : (composed + "\n" + processes).lines().toList()) {
+            String[] f = line.split(" ");
+            if (line.startsWith("container ")) {
+                container = f[4];
+            } else if (line.startsWith("component ")) {
+                assertNull(containerOf.put(f[4], container), "node " + f[4] + " in two containers: " + composed);
+            } else if (line.startsWith("prefix ")) {
+                assertNull(prefixes.put(f[1], line.substring(line.indexOf(' ', 7) + 1)), line);
+            }
+        }
+        Map<String, String> nodesByModule = nodes(root);
+        Map<Object, String> containerOfProcessor = new HashMap<>();
+        Map<String, Object> processorOfContainer = new TreeMap<>();
+        Set<String> pinned = new TreeSet<>();
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                String node = nodesByModule.get(key(m));
+                Processor processor = arch.getProcessors().stream().filter(p -> p.getModules().contains(m)).findFirst().orElse(null);
+                String c = containerOf.get(node);
+                assertNotNull(c, "node " + node + " in no container: " + composed);
+                Object domain = processor == null ? "default" : processor;
+                String before = containerOfProcessor.putIfAbsent(domain, c);
+                assertEquals(before == null ? c : before, c, "modules of one processor in different containers: " + composed);
+                Object other = processorOfContainer.putIfAbsent(c, domain);
+                assertEquals(other == null ? domain : other, domain, "modules of different processors in container " + c);
+                if (processor == null) {
+                    assertEquals(arch.getProcessors().isEmpty() ? pkg + "_container" : c, c);
+                }
+                if (processor != null && processor.getCore() >= 0) {
+                    String taskset = "taskset -c " + processor.getCore();
+                    assertEquals(taskset, prefixes.get(c), "container " + c + " of processor " + processor.getName());
+                    assertEquals(taskset, prefixes.get(node), "process of node " + node);
+                    pinned.add(c);
+                    pinned.add(node);
+                }
+            }
+        }
+        assertEquals(pinned, prefixes.keySet(), "processes pinned that the model does not pin");
     }
 
     private static String launch(Path dir, Path file) throws Exception {

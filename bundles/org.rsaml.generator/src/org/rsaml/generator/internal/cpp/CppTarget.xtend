@@ -352,7 +352,7 @@ class CppFiles {
 		namespace «ns(m)» {
 
 		«m.baseName»::«m.baseName»(::rsaml::System& system)
-		    : ::rsaml::Module(system, «str(m.qualifiedName)»)«FOR p : m.inputs»,
+		    : ::rsaml::Module(system, «str(m.qualifiedName)»«IF m.core >= 0», «m.core»«ENDIF»)«FOR p : m.inputs»,
 		      «p.inName»(*this, «str(p.name)», [this](const «p.cppType»& value) { «p.receiveName»(value); })«ENDFOR»«FOR p : m.outputs»,
 		      «p.outName»(*this, «str(p.name)»)«ENDFOR» {
 		  «FOR r : m.releases»

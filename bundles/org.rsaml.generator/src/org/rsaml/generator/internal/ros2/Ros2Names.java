@@ -26,6 +26,7 @@ import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
 import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.model.Processor;
 
 /**
  * What only the ROS 2 target names and decides: node and executable names, the interfaces package
@@ -74,6 +75,28 @@ public final class Ros2Names {
     private final Map<String, RosMessage> messages = new LinkedHashMap<>();
     private final Map<PlannedPort, Boolean> sensorTopics = new IdentityHashMap<>();
     private final Map<PlannedModule, Long> cycleBounds = new IdentityHashMap<>();
+    private final List<Container> containers = new ArrayList<>();
+
+    /**
+     * A component container: the nodes of the modules allocated to one processor, in one process
+     * pinned to the processor's core when it has one; or, as the model's 'default' processor, the
+     * nodes of the modules no processor names (all of them without a deployment).
+     */
+    public static final class Container {
+        /** The container's node name, unique among the package's node names. */
+        public final String name;
+        /** The processor, or null for the modules no processor names. */
+        public final Processor processor;
+        /** The CPU core the container's process is pinned to, or -1. */
+        public final int core;
+        public final List<PlannedModule> modules = new ArrayList<>();
+
+        Container(String name, Processor processor) {
+            this.name = name;
+            this.processor = processor;
+            this.core = processor == null ? -1 : processor.getCore();
+        }
+    }
 
     public Ros2Names(ExecutionPlan plan, CxxNames names) {
         this.interfacesPackage = names.project() + "_interfaces";
@@ -81,6 +104,30 @@ public final class Ros2Names {
         NameScope executableScope = new NameScope(true, names.project());
         for (PlannedModule m : plan.modules()) {
             executables.put(m, executableScope.allocate(Names.stem(names.layerId(m) + "_" + names.nodeName(m))));
+        }
+        // Containers are nodes too, in the same namespace: one per processor that runs a module,
+        // in the model's order, then one for the modules no processor names.
+        Map<Processor, Container> byProcessor = new LinkedHashMap<>();
+        Container unallocated = null;
+        for (Processor p : plan.architecture().getProcessors()) {
+            if (plan.modules().stream().anyMatch(m -> m.processor() == p)) {
+                byProcessor.put(p, new Container(executableScope.allocate(
+                        Names.stem(names.project() + "_" + Names.snake(p.getName()) + "_container")), p));
+            }
+        }
+        for (PlannedModule m : plan.modules()) {
+            if (m.processor() != null) {
+                byProcessor.get(m.processor()).modules.add(m);
+            } else {
+                if (unallocated == null) {
+                    unallocated = new Container(executableScope.allocate(names.project() + "_container"), null);
+                }
+                unallocated.modules.add(m);
+            }
+        }
+        containers.addAll(byProcessor.values());
+        if (unallocated != null) {
+            containers.add(unallocated);
         }
         NameScope messageScope = new NameScope(true);
         for (String key : plan.messageTypes()) {
@@ -177,6 +224,11 @@ public final class Ros2Names {
 
     public String executable(PlannedModule m) {
         return executables.get(m);
+    }
+
+    /** The component containers the package's launch file starts, each with at least one node. */
+    public List<Container> containers() {
+        return containers;
     }
 
     /** The node's name: unique in the architecture, since all nodes share the launch namespace. */

@@ -332,8 +332,14 @@ class Ros2Files {
 
 	def private launchComposed() '''
 		# «banner»
-		# Starts every module of the architecture as an rclcpp component in one process (a component
-		# container); «pkg»_processes.launch.py starts a process per node instead. Arguments:
+		# Starts every module of the architecture as an rclcpp component in a component container:
+		«IF rosNames.containers.exists[processor !== null]»
+		# one container (one process) per processor of the model's deployment, pinned with taskset to
+		# the processor's core where the model names one«IF rosNames.containers.exists[processor === null]», and one for the modules no processor names«ENDIF».
+		«ELSE»
+		# all in one process.
+		«ENDIF»
+		# «pkg»_processes.launch.py starts a process per node instead. Arguments:
 		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true.
 		from launch import LaunchDescription
 		from launch.actions import DeclareLaunchArgument
@@ -347,21 +353,35 @@ class Ros2Files {
 		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time')}]
 		    return LaunchDescription([
 		        «launchArguments»
-		        ComposableNodeContainer(
-		            name=«py(pkg + "_container")», namespace=namespace, package='rclcpp_components',
-		            executable='component_container', output='screen', parameters=parameters,
-		            composable_node_descriptions=[
-		                «FOR m : plan.modules»
-		                	ComposableNode(package=«py(pkg)», plugin=«py(plugin(m))», name=«py(m.rosNode)»,
-		                	               namespace=namespace, parameters=parameters),
-		                «ENDFOR»
-		            ]),
+		        «FOR c : rosNames.containers»
+		        	«IF c.processor !== null»
+		        	# Processor '«Names.comment(c.processor.name)»'«IF c.core >= 0»: CPU core «c.core»«ENDIF».
+		        	«ELSEIF rosNames.containers.size > 1»
+		        	# The modules no processor names.
+		        	«ENDIF»
+		        	ComposableNodeContainer(
+		        	    name=«py(c.name)», namespace=namespace, package='rclcpp_components',
+		        	    executable='component_container', output='screen', parameters=parameters,«IF c.core >= 0»
+		        	    prefix=«py(taskset(c.core))»,«ENDIF»
+		        	    composable_node_descriptions=[
+		        	        «FOR m : c.modules»
+		        	        	ComposableNode(package=«py(pkg)», plugin=«py(plugin(m))», name=«py(m.rosNode)»,
+		        	        	               namespace=namespace, parameters=parameters),
+		        	        «ENDFOR»
+		        	    ]),
+		        «ENDFOR»
 		    ])
 	'''
 
+	/** The launch prefix that pins a process (and the threads it starts) to one CPU core (util-linux's taskset). */
+	def private taskset(int core) {
+		"taskset -c " + core
+	}
+
 	def private launchProcesses() '''
 		# «banner»
-		# Starts every module of the architecture as a node in a process of its own. Arguments:
+		# Starts every module of the architecture as a node in a process of its own«IF rosNames.containers.exists[core >= 0]», pinned with
+		# taskset to the core of its processor where the model names one«ENDIF». Arguments:
 		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true.
 		from launch import LaunchDescription
 		from launch.actions import DeclareLaunchArgument
@@ -376,7 +396,8 @@ class Ros2Files {
 		        «launchArguments»
 		        «FOR m : plan.modules»
 		        	Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
-		        	     namespace=namespace, parameters=parameters, output='screen'),
+		        	     namespace=namespace, parameters=parameters, output='screen'«IF m.core >= 0»,
+		        	     prefix=«py(taskset(m.core))»«ENDIF»),
 		        «ENDFOR»
 		    ])
 	'''
@@ -722,7 +743,7 @@ class Ros2Files {
 		```sh
 		colcon build
 		source install/setup.bash
-		ros2 launch «pkg» «pkg».launch.py                  # all nodes in one process
+		ros2 launch «pkg» «pkg».launch.py                  # «IF rosNames.containers.size > 1»a process (component container) per processor«ELSE»all nodes in one process«ENDIF»
 		ros2 launch «pkg» «pkg»_processes.launch.py        # a process per node
 		ros2 launch «pkg» «pkg».launch.py namespace:=robot2 use_sim_time:=true
 		```
@@ -732,6 +753,15 @@ class Ros2Files {
 		values as defaults; timers run on the node's clock, so `use_sim_time` works. Topics written by
 		modules that read sensors use the sensor data QoS (best effort), the others are reliable; both
 		can be overridden with `qos_overrides.<topic>.publisher|subscription.<policy>` parameters.
+		«IF rosNames.containers.exists[processor !== null]»
+
+		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
+		«FOR c : rosNames.containers SEPARATOR ", "»`«c.name»` («IF c.processor === null»the modules no processor names«ELSE»processor '«doc(c.processor.name)»'«IF c.core >= 0», core «c.core»«ENDIF»«ENDIF»)«ENDFOR».
+		Processes of a processor with a core are started under `taskset -c CORE` (util-linux), in both
+		launch files. A container runs its nodes' callbacks one at a time (ROS 2's single-threaded
+		executor) in the order they become ready, without the fixed priorities of RsaML's C++ runtime:
+		the timing analysis (`rsaml analyze`) describes the C++ runtime, not this executor.
+		«ENDIF»
 
 		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
 		created once and never overwritten: `src/`, the `.msg` files, `user.cmake` (included by
