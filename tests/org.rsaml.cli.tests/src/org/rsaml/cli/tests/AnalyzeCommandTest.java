@@ -52,6 +52,32 @@ class AnalyzeCommandTest {
     }
 
     @Test
+    void aMissedRequirementHasItsWorstPathAsTimeline(@TempDir Path tmp) throws Exception {
+        Files.copy(Cli.ROOT.resolve("examples/mobile-base-latency-missed.rsaml"), tmp.resolve("missed.rsaml"));
+        Cli.Result r = Cli.runIn(tmp, "analyze", "--timeline", "svg", "missed.rsaml");
+        assertEquals(1, r.code(), r.toString());
+        assertTrue(r.err().contains("timeline written: svg/mobileBaseSlowDetector-latency-scanToWheels.svg"), r.err());
+        Path file = tmp.resolve("svg/mobileBaseSlowDetector-latency-scanToWheels.svg");
+        org.w3c.dom.Document svg = javax.xml.parsers.DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(file.toFile());
+        String all = svg.getDocumentElement().getTextContent();
+        assertTrue(all.contains("latency requirement 'scanToWheels' can be exceeded: reaction time up to 57 ms, at most 50 ms"), all);
+        // a lane per stage of the worst path, in order, each waiting then responding (40 + 4, then 10 + 3 ms)
+        int detector = all.indexOf("navigation/obstacleDetector: waits up to 40 ms");
+        int controller = all.indexOf("control/velocityController: waits up to 10 ms");
+        assertTrue(detector > 0 && controller > detector, all);
+        assertTrue(all.contains("navigation/obstacleDetector: responds within 4 ms"), all);
+        assertTrue(all.contains("control/velocityController: responds within 3 ms"), all);
+        assertTrue(all.contains("required 50 ms"), all);
+        assertEquals(4, svg.getElementsByTagName("rect").getLength(), Files.readString(file));
+
+        Files.copy(Cli.ROOT.resolve("examples/mobile-base-latency.rsaml"), tmp.resolve("holds.rsaml"));
+        Cli.Result holds = Cli.runIn(tmp, "analyze", "--timeline", "more", "holds.rsaml");
+        assertEquals(0, holds.code(), holds.toString());
+        assertTrue(holds.err().contains("holds.rsaml: no timeline written"), holds.err());
+        assertTrue(Files.notExists(tmp.resolve("more")), "nothing to write, no directory");
+    }
+
+    @Test
     void aMissedDeadlineHasItsWitnessAsTextJsonAndTimeline(@TempDir Path tmp) throws Exception {
         Path model = tmp.resolve("overloaded.rsaml");
         // the detector now takes 12 ms of every 20 and the planner is due within 60 ms: it completes at 78 ms

@@ -61,7 +61,8 @@ final class AnalyzeCommand implements Callable<Integer> {
     Format format;
 
     @Option(names = "--timeline", paramLabel = "DIR",
-            description = "Also write an SVG timeline of each missed deadline's witness into DIR.")
+            description = "Also write into DIR an SVG timeline of each witness: a missed deadline's critical-instant schedule, "
+                    + "a latency requirement's worst path.")
     Path timeline;
 
     @ParentCommand
@@ -127,8 +128,12 @@ final class AnalyzeCommand implements Callable<Integer> {
             }
             if (timeline != null) {
                 try {
-                    for (Path written : TimingSvg.write(parent.workingDirectory.resolve(timeline), timing)) {
-                        err.println("timeline written: " + ModelFiles.display(parent.workingDirectory.relativize(written)));
+                    List<Path> written = TimingSvg.write(parent.workingDirectory.resolve(timeline), timing);
+                    for (Path file : written) {
+                        err.println("timeline written: " + ModelFiles.display(parent.workingDirectory.relativize(file)));
+                    }
+                    if (written.isEmpty()) {
+                        err.println(input.displayName() + ": no timeline written: no missed deadline or exceeded latency requirement has a witness");
                     }
                 } catch (IOException e) {
                     err.println(ModelFiles.display(timeline) + ": error: cannot write the timeline: " + e.getMessage());

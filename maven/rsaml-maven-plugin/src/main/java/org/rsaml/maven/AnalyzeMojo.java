@@ -44,7 +44,7 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     @Parameter(property = "rsaml.models", required = true)
     List<File> models = new ArrayList<>();
 
-    /** A directory for an SVG timeline of each missed deadline's witness (none when not set). */
+    /** A directory for an SVG timeline of each witness, missed deadline or exceeded latency requirement (none when not set). */
     @Parameter(property = "rsaml.timeline")
     File timeline;
 
