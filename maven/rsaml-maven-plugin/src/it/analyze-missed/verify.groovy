@@ -18,4 +18,11 @@ assert timing.runs[0].tool.driver.rules*.id == ['RSA-22', 'RSA-23', 'RSA-24', 'R
 assert timing.runs[0].results*.ruleId == ['RSA-23']
 def junit = new groovy.xml.XmlSlurper().parse(new File(basedir, 'target/rsaml/TEST-rsaml-timing.xml'))
 assert junit.'**'.findAll { it.name() == 'failure' }.size() == 1
+// The witness as an SVG timeline: the worst path, a lane per stage, against the requirement.
+def svg = new File(basedir, 'target/rsaml/timeline/mobileBaseSlowDetector-latency-scanToWheels.svg')
+assert svg.isFile()
+assert log.contains('RsaML: timeline written: target/rsaml/timeline/mobileBaseSlowDetector-latency-scanToWheels.svg')
+def lanes = new groovy.xml.XmlSlurper().parse(svg).'**'.findAll { it.name() == 'rect' }*.title*.text()
+assert lanes.any { it.startsWith('navigation/obstacleDetector: waits up to 40 ms') }
+assert lanes.any { it == 'control/velocityController: responds within 3 ms' }
 return true
