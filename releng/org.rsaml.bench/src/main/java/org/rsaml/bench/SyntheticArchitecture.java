@@ -29,16 +29,28 @@ import org.rsaml.model.util.RsamlResourceFactoryImpl;
 
 /**
  * The layered architecture every benchmark measures: 4 layers; per module an entry and an output
- * port, a periodic RM function of 3 actions with start dates, an aperiodic function of 2 actions,
- * and a connection to the next module's entry port (11 elements a module). Clean, or with a few
- * defects for validation to find: about 1% of modules over their layer's budget (RSA-08) and 1% of
- * connections between ports of different data types (RSA-02).
+ * port, and a connection from each module's output port to the next module's entry port. What a
+ * module holds besides its ports is the benchmark's {@link Shape}: {@link #of} gives the validation,
+ * generation and diagram benchmarks a periodic RM function of 3 actions with start dates and an
+ * aperiodic function of 2 actions (11 elements a module), clean or with a few defects for validation
+ * to find (about 1% of modules over their layer's budget, RSA-08, and 1% of connections between
+ * ports of different data types, RSA-02); {@code TimingBench} gives real-time periodic modules.
  */
 final class SyntheticArchitecture {
 
     static final int LAYERS = 4;
     /** The module, 2 ports, 2 functions, 5 actions, 1 connection. */
     static final int ELEMENTS_PER_MODULE = 11;
+
+    /** What module {@code i} of {@code modules} holds besides its two ports. */
+    @FunctionalInterface
+    interface Shape {
+        void shape(Module module, int i, int modules);
+    }
+
+    /** An architecture and the ports of its modules, in module order. */
+    record Built(Architecture architecture, List<Layer> layers, List<EntryPort> ins, List<OutputPort> outs) {
+    }
 
     private SyntheticArchitecture() {
     }
@@ -49,33 +61,12 @@ final class SyntheticArchitecture {
     }
 
     static Architecture of(int modules, boolean defects) {
-        RsamlFactory f = RsamlFactory.eINSTANCE;
-        Architecture a = f.createArchitecture();
-        a.setName("synthetic");
-        a.setCategory(ArchitectureCategory.HIERARCHICAL);
-        a.setDeclaredLayers(LAYERS);
-        List<Layer> layers = new ArrayList<>();
-        for (int l = 0; l < LAYERS; l++) {
-            Layer layer = f.createLayer();
-            layer.setName("layer" + l);
-            layer.setLevel(l);
-            layer.setMaxExecTime(5.0);
-            a.getLayers().add(layer);
-            layers.add(layer);
-        }
-        OutputPort previous = null;
-        for (int i = 0; i < modules; i++) {
-            Module m = f.createModule();
-            m.setName("m" + i);
+        return build("synthetic", ArchitectureCategory.HIERARCHICAL, modules, (m, i, n) -> {
             m.setExecDuration(defects && i % 97 == 5 ? 7.5 : 2.0);
-            layers.get(i * LAYERS / modules).getModules().add(m);
-            EntryPort in = f.createEntryPort();
-            in.setName("in");
-            in.setDataType(defects && i % 101 == 7 ? DataType.BOOLEAN : DataType.NUMERIC);
-            OutputPort out = f.createOutputPort();
-            out.setName("out");
-            m.getPorts().add(in);
-            m.getPorts().add(out);
+            if (defects && i % 101 == 7) {
+                ((EntryPort) m.getPorts().get(0)).setDataType(DataType.BOOLEAN);
+            }
+            RsamlFactory f = RsamlFactory.eINSTANCE;
             Function periodic = f.createFunction();
             periodic.setName("control");
             periodic.setExecType(ExecutionType.PERIODIC);
@@ -98,15 +89,60 @@ final class SyntheticArchitecture {
                 action.setName("apply" + j);
                 onData.getActions().add(action);
             }
-            if (previous != null) {
-                Connection c = f.createConnection();
-                c.setSource(previous);
-                c.setTarget(in);
-                a.getConnections().add(c);
-            }
-            previous = out;
+        }).architecture();
+    }
+
+    /**
+     * {@code modules} modules named {@code m0, m1, ...} spread in order over {@link #LAYERS} layers
+     * (at least one module), each with an entry port {@code in} (numeric) and an output port
+     * {@code out}, each connected to the next, and shaped by {@code shape}.
+     */
+    static Built build(String name, ArchitectureCategory category, int modules, Shape shape) {
+        if (modules < 1) {
+            throw new IllegalArgumentException("a synthetic architecture needs at least 1 module, not " + modules);
         }
-        return a;
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        Architecture a = f.createArchitecture();
+        a.setName(name);
+        a.setCategory(category);
+        a.setDeclaredLayers(LAYERS);
+        List<Layer> layers = new ArrayList<>();
+        for (int l = 0; l < LAYERS; l++) {
+            Layer layer = f.createLayer();
+            layer.setName("layer" + l);
+            layer.setLevel(l);
+            layer.setMaxExecTime(5.0);
+            a.getLayers().add(layer);
+            layers.add(layer);
+        }
+        List<EntryPort> ins = new ArrayList<>();
+        List<OutputPort> outs = new ArrayList<>();
+        for (int i = 0; i < modules; i++) {
+            Module m = f.createModule();
+            m.setName("m" + i);
+            layers.get((int) ((long) i * LAYERS / modules)).getModules().add(m);
+            EntryPort in = f.createEntryPort();
+            in.setName("in");
+            in.setDataType(DataType.NUMERIC);
+            OutputPort out = f.createOutputPort();
+            out.setName("out");
+            m.getPorts().add(in);
+            m.getPorts().add(out);
+            shape.shape(m, i, modules);
+            if (i > 0) {
+                connect(a, outs.get(i - 1), in);
+            }
+            ins.add(in);
+            outs.add(out);
+        }
+        return new Built(a, layers, ins, outs);
+    }
+
+    static void connect(Architecture a, OutputPort from, EntryPort to) {
+        Connection c = RsamlFactory.eINSTANCE.createConnection();
+        c.setSource(from);
+        c.setTarget(to);
+        a.getConnections().add(c);
     }
 
     static void write(Architecture a, Path file) throws Exception {

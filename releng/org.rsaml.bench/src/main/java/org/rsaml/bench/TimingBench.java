@@ -17,15 +17,11 @@ import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.ArchitectureCategory;
-import org.rsaml.model.Connection;
-import org.rsaml.model.DataType;
 import org.rsaml.model.ElementType;
 import org.rsaml.model.EntryPort;
 import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Function;
 import org.rsaml.model.LatencyRequirement;
-import org.rsaml.model.Layer;
-import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlFactory;
@@ -116,40 +112,28 @@ public final class TimingBench {
         return tasks;
     }
 
-    /** m periodic modules in 4 layers on 4 processors; requirements from a module's output to the entry 10 modules on. */
+    /**
+     * {@link SyntheticArchitecture} of {@code m} real-time periodic modules of one periodic function
+     * each, on 4 processors; every 50th module also connected three modules ahead; {@code requirements}
+     * latency requirements from a module's output to the entry port 10 modules on (fewer when the
+     * architecture has fewer than 11 modules, none with 1 module).
+     */
     static Architecture architecture(int m, int requirements) {
         RsamlFactory f = RsamlFactory.eINSTANCE;
-        Architecture a = f.createArchitecture();
-        a.setName("timing");
-        a.setCategory(ArchitectureCategory.HYBRID);
-        a.setDeclaredLayers(4);
-        List<Layer> layers = new ArrayList<>();
         List<Processor> processors = new ArrayList<>();
-        for (int l = 0; l < 4; l++) {
-            Layer layer = f.createLayer();
-            layer.setName("layer" + l);
-            layer.setLevel(l);
-            layer.setMaxExecTime(5.0);
-            a.getLayers().add(layer);
-            layers.add(layer);
+        for (int l = 0; l < SyntheticArchitecture.LAYERS; l++) {
             Processor p = f.createProcessor();
             p.setName("core" + l);
             p.setCore(l);
-            a.getProcessors().add(p);
             processors.add(p);
         }
-        List<EntryPort> ins = new ArrayList<>();
-        List<OutputPort> outs = new ArrayList<>();
-        for (int i = 0; i < m; i++) {
-            Module module = f.createModule();
-            module.setName("m" + i);
+        SyntheticArchitecture.Built built = SyntheticArchitecture.build("timing", ArchitectureCategory.HYBRID, m, (module, i, n) -> {
             module.setType(ElementType.REAL_TIME);
             module.setExecType(ExecutionType.PERIODIC);
             long period = 100 + 100 * (i % 4);
             module.setPeriod(period);
             module.setExecDuration(0.2);
-            layers.get(i * 4 / m).getModules().add(module);
-            processors.get(i % 4).getModules().add(module);
+            processors.get(i % processors.size()).getModules().add(module);
             Function fn = f.createFunction();
             fn.setName("step");
             fn.setExecType(ExecutionType.PERIODIC);
@@ -157,38 +141,24 @@ public final class TimingBench {
             fn.setExecDuration(0.2);
             fn.setSchedPolicy(SchedulingPolicy.RM);
             module.getFunctions().add(fn);
-            EntryPort in = f.createEntryPort();
-            in.setName("in");
-            in.setDataType(DataType.NUMERIC);
-            OutputPort out = f.createOutputPort();
-            out.setName("out");
-            module.getPorts().add(in);
-            module.getPorts().add(out);
-            ins.add(in);
-            outs.add(out);
+        });
+        Architecture a = built.architecture();
+        a.getProcessors().addAll(processors);
+        List<EntryPort> ins = built.ins();
+        List<OutputPort> outs = built.outs();
+        for (int i = 0; i + 3 < m; i += 50) {
+            SyntheticArchitecture.connect(a, outs.get(i), ins.get(i + 3));
         }
-        for (int i = 0; i + 1 < m; i++) {
-            connect(a, outs.get(i), ins.get(i + 1));
-            if (i % 50 == 0 && i + 3 < m) {
-                connect(a, outs.get(i), ins.get(i + 3));
-            }
-        }
-        for (int r = 0; r < requirements; r++) {
-            int from = (int) ((long) r * (m - 11) / requirements);
+        int span = Math.min(10, m - 1);
+        for (int r = 0; span > 0 && r < requirements; r++) {
+            int from = (int) ((long) r * (m - span) / requirements);
             LatencyRequirement req = f.createLatencyRequirement();
             req.setName("req" + r);
             req.setSource(outs.get(from));
-            req.setTarget(ins.get(from + 10));
+            req.setTarget(ins.get(from + span));
             req.setMaxLatency(5000);
             a.getLatencyRequirements().add(req);
         }
         return a;
-    }
-
-    private static void connect(Architecture a, OutputPort from, EntryPort to) {
-        Connection c = RsamlFactory.eINSTANCE.createConnection();
-        c.setSource(from);
-        c.setTarget(to);
-        a.getConnections().add(c);
     }
 }
