@@ -18,8 +18,13 @@ import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
 import org.eclipse.emf.ecore.util.Diagnostician;
 import org.eclipse.emf.ecore.util.EObjectValidator;
+import org.rsaml.analysis.ArchitectureTiming;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.TimingModelException;
+import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.RsamlPackage;
+import org.rsaml.model.resource.SourceLocation;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.internal.OclRules;
 import org.rsaml.validation.internal.RuleEValidator;
@@ -64,11 +69,12 @@ public final class RsamlModelValidator {
 
     /**
      * The findings of the timing rules alone (RSA-22 to RSA-25), worded and located as
-     * {@link #validate(LoadedModel)} reports them; when other errors leave an architecture without a
-     * task set, an RSA-24 warning on it says so instead of nothing.
+     * {@link #validate(LoadedModel)} reports them.
+     *
+     * @throws ModelLoadException when the model cannot be analysed, as {@link #analyseTiming} decides
      */
-    public static List<Finding> validateTiming(LoadedModel model) {
-        RsamlValidationSetup.init();
+    public static List<Finding> validateTiming(LoadedModel model) throws ModelLoadException {
+        analyseTiming(model);
         BasicDiagnostic chain = new BasicDiagnostic();
         for (EObject root : model.resource().getContents()) {
             if (root instanceof Architecture architecture) {
@@ -78,6 +84,50 @@ public final class RsamlModelValidator {
             }
         }
         return toFindings(chain, model);
+    }
+
+    /**
+     * The timing analysis of the model's architecture, as {@code rsaml analyze} and the analyze goal
+     * report it in every format. This is the one decision whether a model can be analysed.
+     *
+     * @throws ModelLoadException when it cannot be, located on the element concerned: errors of RSA-00,
+     *         RSA-10, RSA-12, RSA-13 or RSA-20 leave the architecture without a task set (each such
+     *         error is named, as validation words it), a time cannot be planned, or the deployment
+     *         contradicts itself
+     */
+    public static ArchitectureTiming analyseTiming(LoadedModel model) throws ModelLoadException {
+        RsamlValidationSetup.init();
+        Architecture architecture = model.architecture();
+        EObject broken = TimingChecks.withoutTaskSet(architecture, OclRules.instance());
+        if (broken != null) {
+            List<ModelLoadException.Problem> problems = new ArrayList<>();
+            for (Finding f : validate(model)) {
+                if (f.severity() == Severity.ERROR && TimingChecks.prerequisite(f.ruleId())) {
+                    problems.add(new ModelLoadException.Problem(new SourceLocation(f.file(), f.line(), f.column()),
+                            "the timing cannot be analysed: " + f.ruleId() + ": " + f.message()));
+                }
+            }
+            if (problems.isEmpty()) {
+                problems.add(new ModelLoadException.Problem(model.location(broken), "the timing cannot be analysed: "
+                        + RsamlLabels.describe(broken) + " leaves the architecture without a task set (rsaml validate lists its errors)"));
+            }
+            ModelLoadException.Problem first = problems.get(0);
+            throw new ModelLoadException(first.location().file(), first.location().line(), first.location().column(), first.message(),
+                    problems.subList(1, problems.size()), null);
+        }
+        try {
+            return TimingAnalysis.analyse(architecture);
+        } catch (UnplannableException e) {
+            throw cannotAnalyse(model, e.element() == null ? architecture : e.element(), e.getMessage(), e);
+        } catch (TimingModelException e) {
+            throw cannotAnalyse(model, e.element() == null ? architecture : e.element(), e.getMessage(), e);
+        }
+    }
+
+    private static ModelLoadException cannotAnalyse(LoadedModel model, EObject element, String message, Exception cause) {
+        SourceLocation at = model.location(element);
+        return new ModelLoadException(at.file(), at.line(), at.column(),
+                "the timing cannot be analysed: " + RsamlLabels.describe(element) + ": " + message, cause);
     }
 
     /** EMF's structural checks alone (multiplicities, proxies, references), without the OCL rules. */

@@ -201,18 +201,9 @@ public final class TimingChecks {
                 message + " (" + f.rule().id() + ")", new Object[] { on, f.rule(), message });
     }
 
-    /**
-     * The timing findings of the architecture alone, as {@code rsaml analyze} reports them: like
-     * validation's, and when the architecture's other errors leave it without a task set, one RSA-24
-     * warning on it saying so (validation reports those errors themselves).
-     */
+    /** The timing findings of the architecture alone, as {@code rsaml analyze} reports them. */
     public static List<Found> all(Architecture architecture, OclRules rules) {
         List<Found> all = new ArrayList<>();
-        if (!prerequisitesHold(architecture, rules)) {
-            all.add(new Found(rule(NOT_ANALYSED), architecture, Map.of("where", "", "reason", "it has errors of RSA-00, RSA-10,"
-                    + " RSA-12, RSA-13 or RSA-20 (rsaml validate lists them), which leave it without a well-defined task set")));
-            return all;
-        }
         findings(architecture, rules).values().forEach(all::addAll);
         return all;
     }
@@ -231,17 +222,31 @@ public final class TimingChecks {
 
     /** No element of the architecture breaks EMF's structure or a rule of {@link #PREREQUISITES}. */
     private static boolean prerequisitesHold(Architecture architecture, OclRules rules) {
+        return withoutTaskSet(architecture, rules) == null;
+    }
+
+    /**
+     * The first element (in document order, the architecture last) that breaks EMF's structure or a
+     * rule of {@link #PREREQUISITES}, leaving the architecture without a task set; {@code null} when
+     * none does and the architecture can be analysed.
+     */
+    public static EObject withoutTaskSet(Architecture architecture, OclRules rules) {
         Map<Object, Object> context = new HashMap<>();
         for (Iterator<EObject> it = architecture.eAllContents(); ; ) {
             EObject o = it.hasNext() ? it.next() : null;
             EObject element = o == null ? architecture : o;
             if (!STRUCTURE.validate(element.eClass(), element, null, context) || rules.violatesAny(element, PREREQUISITES)) {
-                return false;
+                return element;
             }
             if (o == null) {
-                return true;
+                return null;
             }
         }
+    }
+
+    /** Whether a finding of this rule leaves an architecture without a task set (RSA-00 or a rule of {@link #PREREQUISITES}). */
+    public static boolean prerequisite(String ruleId) {
+        return PREREQUISITES.contains(ruleId) || Rules.STRUCTURE.id().equals(ruleId);
     }
 
     /** The classes whose invariants apply to an element: its own and its supertypes. */

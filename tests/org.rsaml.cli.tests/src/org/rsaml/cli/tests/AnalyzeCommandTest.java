@@ -14,7 +14,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.stream.Stream;
 
 import org.apache.maven.plugin.surefire.log.api.NullConsoleLogger;
@@ -145,20 +147,41 @@ class AnalyzeCommandTest {
         assertTrue(failed.getName().startsWith("RSA-23 latency-within-requirement (mobileBaseSlowDetector/scanToWheels)"), failed.getName());
     }
 
+    /** A model that is read but cannot be analysed exits 2 whatever the format, and says why on the element. */
     @Test
-    void sarifSaysWhenErrorsLeaveNoTaskSet(@TempDir Path tmp) throws Exception {
-        Path model = tmp.resolve("negative.rsaml");
-        Files.writeString(model, Files.readString(Cli.ROOT.resolve("examples/mobile-base-latency.rsaml"))
-                .replace("period=\"20.0\" delay=\"20.0\" execDuration=\"4.0\"", "period=\"20.0\" delay=\"20.0\" execDuration=\"-4.0\""));
-        Cli.Result r = Cli.runIn(tmp, "analyze", "--format", "sarif", "negative.rsaml");
-        assertEquals(0, r.code(), r.toString());
-        JsonArray results = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
-                .getAsJsonArray("results");
-        assertEquals(1, results.size(), r.out());
-        JsonObject result = results.get(0).getAsJsonObject();
-        assertEquals("RSA-24", result.get("ruleId").getAsString());
-        assertEquals("warning", result.get("level").getAsString());
-        assertTrue(result.getAsJsonObject("message").get("text").getAsString().contains("errors of RSA-00, RSA-10"), r.out());
+    void aModelThatCannotBeAnalysedExitsTwoInEveryFormat(@TempDir Path tmp) throws Exception {
+        String example = Files.readString(Cli.ROOT.resolve("examples/mobile-base-latency.rsaml"));
+        // a negative execution duration leaves no task set (RSA-13); a module on two processors, no deployment (RSA-25)
+        Files.writeString(tmp.resolve("negative.rsaml"), example.replace("period=\"20.0\" delay=\"20.0\" execDuration=\"4.0\"",
+                "period=\"20.0\" delay=\"20.0\" execDuration=\"-4.0\""));
+        String twice = example.replace("modules=\"//@layers[name='control']/@modules[name='velocityController']",
+                "modules=\"//@layers[name='navigation']/@modules[name='obstacleDetector'] //@layers[name='control']/@modules[name='velocityController']");
+        Files.writeString(tmp.resolve("two-processors.rsaml"), twice);
+        assertTrue(!twice.equals(example), "the fixture must change the example");
+        for (String model : List.of("negative.rsaml", "two-processors.rsaml")) {
+            Map<String, Integer> codes = new TreeMap<>();
+            List<Cli.Result> results = new ArrayList<>();
+            for (String format : List.of("text", "json", "sarif", "junit")) {
+                Cli.Result r = Cli.runIn(tmp, "analyze", "--format", format, model);
+                codes.put(format, r.code());
+                results.add(r);
+            }
+            assertEquals(Map.of("text", 2, "json", 2, "sarif", 2, "junit", 2), codes, model + ": " + results);
+            for (Cli.Result r : results) {
+                assertTrue(r.err().startsWith(model + ":") && r.err().contains(": error: the timing cannot be analysed: "),
+                        model + ": " + r.err());
+            }
+        }
+        Cli.Result sarif = Cli.runIn(tmp, "analyze", "--format", "sarif", "negative.rsaml");
+        assertEquals(Set.of(), ReportFormatsTest.sarifProblems(sarif.out()), sarif.out());
+        JsonObject run = JsonParser.parseString(sarif.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject();
+        assertEquals(0, run.getAsJsonArray("results").size(), sarif.out());
+        JsonObject invocation = run.getAsJsonArray("invocations").get(0).getAsJsonObject();
+        assertEquals(false, invocation.get("executionSuccessful").getAsBoolean(), sarif.out());
+        assertTrue(invocation.toString().contains("RSA-13: Module 'obstacleDetector' has a negative time value"), sarif.out());
+        Cli.Result text = Cli.runIn(tmp, "analyze", "negative.rsaml");
+        assertTrue(text.err().matches("(?s)negative\\.rsaml:\\d+:\\d+: error: the timing cannot be analysed: RSA-13: Module 'obstacleDetector'.*"),
+                text.err());
     }
 
     @Test

@@ -12,8 +12,6 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.rsaml.analysis.ArchitectureTiming;
-import org.rsaml.analysis.TimingAnalysis;
-import org.rsaml.analysis.TimingModelException;
 import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
@@ -23,11 +21,9 @@ import org.rsaml.report.ModelFiles;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
-import org.rsaml.analysis.plan.UnplannableException;
-import org.rsaml.model.support.RsamlLabels;
-import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Severity;
 
 import com.google.gson.JsonArray;
@@ -98,23 +94,11 @@ final class AnalyzeCommand implements Callable<Integer> {
             }
             ArchitectureTiming timing;
             try {
-                LoadedModel model = ModelLoader.load(input.path(), input.displayName());
-                timing = TimingAnalysis.analyse(model.architecture());
+                timing = RsamlModelValidator.analyseTiming(ModelLoader.load(input.path(), input.displayName()));
             } catch (ModelLoadException e) {
+                // Read or not, a model that cannot be analysed is an input error in every format.
                 if (print) {
                     Text.lines(e).forEach(err::println);
-                }
-                code = Math.max(code, ExitCodes.INPUT_ERROR);
-                continue;
-            } catch (UnplannableException e) {
-                if (print) {
-                    err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
-                }
-                code = Math.max(code, ExitCodes.INPUT_ERROR);
-                continue;
-            } catch (TimingModelException e) {
-                if (print) {
-                    err.println(input.displayName() + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
                 }
                 code = Math.max(code, ExitCodes.INPUT_ERROR);
                 continue;
