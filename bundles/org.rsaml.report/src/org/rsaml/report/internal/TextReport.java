@@ -15,7 +15,8 @@ import org.rsaml.validation.Finding;
 
 /**
  * Compiler-style lines ({@code file:line:column: error RSA-08: message}) that terminals, editors and
- * CI log parsers turn into links and annotations, and a summary line. Every line goes through
+ * CI log parsers turn into links and annotations, {@code file: no findings} for a file checked
+ * without any, and a summary line. Every line goes through
  * {@link Text#line}, so a model cannot forge lines or commands.
  */
 public final class TextReport {
@@ -31,6 +32,10 @@ public final class TextReport {
                     out.write('\n');
                 }
                 continue;
+            }
+            if (result.findings().isEmpty() && !options.quiet()) {
+                // Checked and clean, said so: otherwise a file without findings cannot be told from one never checked.
+                line(out, result.file() + ": no findings");
             }
             for (Finding finding : result.findings()) {
                 if (!options.quiet() || report.fails(finding)) {

@@ -22,7 +22,8 @@ class ProcessTest {
         Cli.Result r = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/"));
         assertEquals(1, r.code(), r::toString);
         List<String> lines = r.outLines();
-        assertEquals(ValidateCommandTest.EXAMPLES_FINDINGS, lines.subList(0, lines.size() - 1), r::toString);
+        assertEquals(ValidateCommandTest.EXAMPLES_FINDINGS, ValidateCommandTest.findingLines(lines), r::toString);
+        assertEquals(ValidateCommandTest.EXAMPLES_CLEAN, ValidateCommandTest.cleanLines(lines), r::toString);
         assertEquals("", r.err());
     }
 

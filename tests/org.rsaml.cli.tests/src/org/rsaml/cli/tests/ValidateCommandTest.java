@@ -34,6 +34,21 @@ class ValidateCommandTest {
     static final List<String> EXAMPLES_FINDINGS = java.util.stream.Stream.concat(EXP2_FINDINGS.stream(),
             java.util.stream.Stream.of(MISSED_LATENCY)).toList();
 
+    /** The examples without findings, each named on a line of its own in the text report. */
+    static final List<String> EXAMPLES_CLEAN = List.of("examples/exp1-hybrid.rsaml: no findings",
+            "examples/exp3-task-interpreter.rsaml: no findings", "examples/hierarchical-nasrem.rsaml: no findings",
+            "examples/mobile-base-latency.rsaml: no findings", "examples/subsumption-brooks.rsaml: no findings");
+
+    /** The lines of a text report but its summary, those of files without findings left out. */
+    static List<String> findingLines(List<String> lines) {
+        return lines.subList(0, lines.size() - 1).stream().filter(l -> !l.endsWith(": no findings")).toList();
+    }
+
+    /** The lines of a text report naming files without findings. */
+    static List<String> cleanLines(List<String> lines) {
+        return lines.stream().filter(l -> l.endsWith(": no findings")).toList();
+    }
+
     static List<ExpectedFinding> exp2() {
         try {
             List<ExpectedFinding> expected = ExpectedFinding.of(Cli.ROOT.resolve("examples/exp2-defects.rsaml"));
@@ -49,16 +64,42 @@ class ValidateCommandTest {
         Cli.Result r = Cli.run("validate", "examples/");
         assertEquals(1, r.code(), r::toString);
         List<String> lines = r.outLines();
-        assertEquals(EXAMPLES_FINDINGS, lines.subList(0, lines.size() - 1), r::toString);
+        assertEquals(EXAMPLES_FINDINGS, findingLines(lines), r::toString);
+        assertEquals(EXAMPLES_CLEAN, cleanLines(lines), r::toString);
         assertEquals("7 files checked: 6 errors, 0 warnings", lines.get(lines.size() - 1));
         assertEquals("", r.err());
+    }
+
+    /** A file checked without findings is named, so that it cannot be taken for one that was never checked. */
+    @Test
+    void aFileWithoutFindingsIsNamedAsChecked() throws Exception {
+        Cli.Result r = Cli.run("validate", "examples/exp1-hybrid.rsaml", "examples/exp2-defects.rsaml");
+        assertEquals(1, r.code(), r::toString);
+        List<String> lines = r.outLines();
+        assertEquals("examples/exp1-hybrid.rsaml: no findings", lines.get(0), r::toString);
+        assertEquals(EXP2_FINDINGS, lines.subList(1, lines.size() - 1), r::toString);
+        assertEquals("2 files checked: 5 errors, 0 warnings", lines.get(lines.size() - 1));
+
+        Cli.Result quiet = Cli.run("validate", "--quiet", "examples/exp1-hybrid.rsaml");
+        assertEquals(0, quiet.code(), quiet::toString);
+        assertEquals("", quiet.out(), "--quiet prints only what fails the run");
+
+        // The structured formats of a file without findings stay well formed.
+        Cli.Result sarif = Cli.run("validate", "--format", "sarif", "examples/exp1-hybrid.rsaml");
+        assertEquals(java.util.Set.of(), ReportFormatsTest.sarifProblems(sarif.out()), sarif.out());
+        Cli.Result json = Cli.run("validate", "--format", "json", "examples/exp1-hybrid.rsaml");
+        assertEquals(0, com.google.gson.JsonParser.parseString(json.out()).getAsJsonObject().getAsJsonObject("summary")
+                .get("exitCode").getAsInt(), json.out());
+        Cli.Result junit = Cli.run("validate", "--format", "junit", "examples/exp1-hybrid.rsaml");
+        assertTrue(junit.out().startsWith("<?xml") && junit.out().contains("failures=\"0\""), junit.out());
     }
 
     @Test
     void cleanModelExitsZero() {
         Cli.Result r = Cli.run("validate", "examples/exp1-hybrid.rsaml", "examples/exp3-task-interpreter.rsaml");
         assertEquals(0, r.code(), r::toString);
-        assertEquals(List.of("2 files checked: 0 errors, 0 warnings"), r.outLines());
+        assertEquals(List.of("examples/exp1-hybrid.rsaml: no findings", "examples/exp3-task-interpreter.rsaml: no findings",
+                "2 files checked: 0 errors, 0 warnings"), r.outLines());
     }
 
     @Test
@@ -115,18 +156,19 @@ class ValidateCommandTest {
     void relativeNamesAreKeptAsTheUserWroteThem() {
         Cli.Result r = Cli.runIn(Cli.ROOT.resolve("examples"), "validate", ".");
         assertEquals(1, r.code(), r::toString);
-        assertTrue(r.out().startsWith(EXP2_FINDINGS.get(0).substring("examples/".length())), r::toString);
+        assertTrue(r.outLines().contains(EXP2_FINDINGS.get(0).substring("examples/".length())), r::toString);
+        assertEquals("exp1-hybrid.rsaml: no findings", r.outLines().get(0), r::toString);
 
         Cli.Result spaced = Cli.runIn(Cli.INPUTS, "validate", "dir with space");
         assertEquals(0, spaced.code(), spaced::toString);
-        assertEquals(List.of("1 file checked: 0 errors, 0 warnings"), spaced.outLines());
+        assertEquals(List.of("dir with space/clean model.rsaml: no findings", "1 file checked: 0 errors, 0 warnings"), spaced.outLines());
     }
 
     @Test
     void aFileNamedTwiceIsValidatedOnce() {
         Cli.Result r = Cli.run("validate", "examples/exp2-defects.rsaml", "examples", "./examples/exp2-defects.rsaml");
         assertEquals(1, r.code());
-        assertEquals(EXAMPLES_FINDINGS.size() + 1, r.outLines().size(), r::toString);
+        assertEquals(EXAMPLES_FINDINGS.size() + EXAMPLES_CLEAN.size() + 1, r.outLines().size(), r::toString);
         assertTrue(r.out().contains("7 files checked"), r::toString);
     }
 
