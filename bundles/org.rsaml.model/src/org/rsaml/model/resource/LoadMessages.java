@@ -226,6 +226,33 @@ final class LoadMessages {
                 + (line <= 2 ? "; this does not look like an RsaML model (root should be rsaml:Architecture)" : "");
     }
 
+    /**
+     * An element whose tag names an abstract type, or none where the feature's type is abstract
+     * (a port without xsi:type): which element, and the xsi:type values it can take; {@code null}
+     * when the type is not abstract.
+     */
+    static String untyped(ClassNotFoundException c, String feature, String name) {
+        EPackage ePackage = c.getFactory() == null ? null : c.getFactory().getEPackage();
+        EClassifier classifier = ePackage == null ? null : ePackage.getEClassifier(c.getName());
+        if (!(classifier instanceof EClass eClass && (eClass.isAbstract() || eClass.isInterface()))) {
+            return null;
+        }
+        List<String> kinds = concreteSubclasses(eClass).stream()
+                .map(k -> "xsi:type=\"" + ePackage.getNsPrefix() + ":" + k.getName() + "\"").toList();
+        String element = "<" + feature + (name == null ? "" : " name=\"" + name + "\"") + ">";
+        return element + " does not say which kind of " + eClass.getName() + " it is, so it cannot be read: add " + or(kinds)
+                + " to it";
+    }
+
+    /** What an untyped element's error adds about the references to it, which are not reported one by one. */
+    static String referencesWaiting(List<Integer> lines) {
+        List<String> where = lines.stream().distinct().sorted().map(String::valueOf).toList();
+        String joined = where.size() == 1 ? where.get(0)
+                : String.join(", ", where.subList(0, where.size() - 1)) + " and " + where.get(where.size() - 1);
+        return "; " + (lines.size() == 1 ? "the reference to it" : "the " + lines.size() + " references to it") + " (line"
+                + (where.size() == 1 ? " " : "s ") + joined + ") will resolve once it has one";
+    }
+
     private static List<EClass> concreteSubclasses(EClass eClass) {
         return eClass.getEPackage().getEClassifiers().stream().filter(EClass.class::isInstance).map(EClass.class::cast)
                 .filter(k -> !k.isAbstract() && !k.isInterface() && eClass.isSuperTypeOf(k)).toList();

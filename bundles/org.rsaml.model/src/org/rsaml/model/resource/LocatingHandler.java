@@ -12,6 +12,8 @@ import java.nio.ByteBuffer;
 import java.nio.charset.Charset;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EAttribute;
@@ -19,8 +21,10 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EPackage;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.InternalEObject;
+import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.xmi.ClassNotFoundException;
 import org.eclipse.emf.ecore.xmi.PackageNotFoundException;
+import org.eclipse.emf.ecore.xmi.UnresolvedReferenceException;
 import org.eclipse.emf.ecore.xmi.XMIException;
 import org.eclipse.emf.ecore.xmi.XMLHelper;
 import org.eclipse.emf.ecore.xmi.impl.SAXXMIHandler;
@@ -74,6 +78,27 @@ final class LocatingHandler extends SAXXMIHandler {
     private EStructuralFeature typedFeature;
     /** A namespace was already reported as unknown: its elements' types cannot be found either, which says nothing new. */
     private boolean unknownNamespace;
+    /** The attributes of the start tag being handled. */
+    private Attributes tagAttributes;
+    /** Elements that could not be created because they do not say which kind they are, in the order of the file. */
+    private final List<Untyped> untyped = new ArrayList<>();
+
+    /**
+     * An element without a concrete type: its error, and the references to it, which cannot resolve
+     * while it is missing and are counted in its error instead of each being reported as dangling.
+     */
+    private static final class Untyped {
+        final EObject container;
+        final String segment;
+        final LoadProblem problem;
+        final List<Integer> referencedFrom = new ArrayList<>();
+
+        Untyped(EObject container, String segment, LoadProblem problem) {
+            this.container = container;
+            this.segment = segment;
+            this.problem = problem;
+        }
+    }
 
     LocatingHandler(RsamlResource resource, XMLHelper helper, Map<?, ?> options, Context context) {
         super(resource, helper, options);
@@ -113,10 +138,12 @@ final class LocatingHandler extends SAXXMIHandler {
         }
         inStartTag = true;
         elementName = name;
+        tagAttributes = attributes;
         try {
             super.startElement(uri, localName, name, attributes);
         } finally {
             inStartTag = false;
+            tagAttributes = null;
             mark();
         }
     }
@@ -391,7 +418,60 @@ final class LocatingHandler extends SAXXMIHandler {
                     e.getLine(), e.getColumn()));
             return;
         }
+        if (e instanceof ClassNotFoundException c && inStartTag) {
+            String name = tagAttributes == null ? null : tagAttributes.getValue("name");
+            String message = LoadMessages.untyped(c, elementName, name);
+            if (message != null) {
+                LoadProblem problem = new LoadProblem(message, e, getLocation(), e.getLine(), e.getColumn());
+                EObject container = objects.peekEObject();
+                if (name != null && container != null && !name.contains("'")) {
+                    untyped.add(new Untyped(container, "@" + elementName + "[name='" + name + "']", problem));
+                }
+                super.error(problem);
+                return;
+            }
+        }
+        if (e instanceof UnresolvedReferenceException u && toUntyped(u)) {
+            return;
+        }
         super.error(e instanceof LoadProblem ? e : LoadMessages.describe(e, context, getLocation(), rsamlResource));
+    }
+
+    /** Whether the reference points into an element that could not be created for want of a type; counted there if so. */
+    private boolean toUntyped(UnresolvedReferenceException u) {
+        String reference = u.getReference();
+        if (untyped.isEmpty() || reference == null) {
+            return false;
+        }
+        for (Untyped element : untyped) {
+            int at = reference.indexOf("/" + element.segment);
+            int end = at + 1 + element.segment.length();
+            if (at > 0 && (end == reference.length() || reference.charAt(end) == '/')
+                    && rsamlResource.getEObject(reference.substring(0, at)) == element.container) {
+                int line = u.getLine();
+                if (line <= 0 && u.getObject() != null) {
+                    line = rsamlResource.locate(u.getObject()).line();
+                }
+                element.referencedFrom.add(line);
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Override
+    public void endDocument() {
+        super.endDocument();
+        // References are resolved at the end: each untyped element's error now says how many pointed to it.
+        List<Resource.Diagnostic> errors = xmlResource.getErrors();
+        for (Untyped element : untyped) {
+            int index = errors.indexOf(element.problem);
+            if (index >= 0 && !element.referencedFrom.isEmpty()) {
+                LoadProblem p = element.problem;
+                errors.set(index, new LoadProblem(p.getMessage() + LoadMessages.referencesWaiting(element.referencedFrom),
+                        (Exception) p.getCause(), p.getLocation(), p.getLine(), p.getColumn()));
+            }
+        }
     }
 
     @Override

@@ -33,6 +33,7 @@ class BadInputTest {
             "foreign-namespace.rsaml| foreign-namespace.rsaml:2:1: error: namespace 'http://www.eclipse.org/uml2/5.0.0/UML' is not RsaML's",
             "dangling-reference.rsaml| dangling-reference.rsaml:9:3: error: reference target points to '//@layers[name='functional']/@modules[name='planner']/@ports[name='pose']', which does not exist",
             "missing-file-reference.rsaml| missing-file-reference.rsaml:9:3: error: reference target points to 'planner.rsaml#//@layers[name='decision']/@modules[name='planner']/@ports[name='pose']', which cannot be loaded: planner.rsaml: no such file",
+            "port-without-type.rsaml| port-without-type.rsaml:9:7: error: <ports name=\"pose\"> does not say which kind of Port it is, so it cannot be read: add xsi:type=\"rsaml:EntryPort\" or xsi:type=\"rsaml:OutputPort\" to it; the 2 references to it (lines 15 and 19) will resolve once it has one",
             "xxe.rsaml              | xxe.rsaml:2:10: error: DOCTYPE declarations are not allowed",
             "entity-bomb.rsaml      | entity-bomb.rsaml:2:10: error: DOCTYPE declarations are not allowed" })
     void oneClearLineAndTheOtherFilesStillValidated(String input, String expected) {

@@ -284,8 +284,24 @@ class LoadingTest {
         Path file = write("port.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n      <ports name=\"p\"/>\n    </modules>\n  </layers>\n"));
         Resource r = open(file);
         Resource.Diagnostic d = r.getErrors().get(0);
-        assertEquals("a Port must say which kind it is: add xsi:type=\"rsaml:EntryPort\" or xsi:type=\"rsaml:OutputPort\"", d.getMessage());
+        assertEquals("<ports name=\"p\"> does not say which kind of Port it is, so it cannot be read: add xsi:type=\"rsaml:EntryPort\""
+                + " or xsi:type=\"rsaml:OutputPort\" to it", d.getMessage());
         assertEquals("5:7", d.getLine() + ":" + d.getColumn());
+    }
+
+    /** References to an element without a type are told in its error, not each as dangling; others still are. */
+    @Test
+    void referencesToAnUntypedPortAreCountedInItsErrorOnly() throws Exception {
+        String m = "//@layers[name='a']/@modules[name='m']/@ports";
+        Path file = write("refs.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n"
+                + "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\"/>\n      <ports name=\"p\"/>\n    </modules>\n  </layers>\n"
+                + "  <connections source=\"" + m + "[name='out']\" target=\"" + m + "[name='p']\"/>\n"
+                + "  <connections source=\"" + m + "[name='out']\" target=\"" + m + "[name='gone']\"/>\n"));
+        Resource r = open(file);
+        assertEquals(List.of("6:7: <ports name=\"p\"> does not say which kind of Port it is, so it cannot be read: add"
+                + " xsi:type=\"rsaml:EntryPort\" or xsi:type=\"rsaml:OutputPort\" to it; the reference to it (line 9) will resolve once it has one",
+                "10:3: reference target points to '" + m + "[name='gone']', which does not exist"),
+                r.getErrors().stream().map(d -> d.getLine() + ":" + d.getColumn() + ": " + d.getMessage()).toList());
     }
 
     @Test
