@@ -158,7 +158,10 @@ class AnalyzeCommandTest {
                 "modules=\"//@layers[name='navigation']/@modules[name='obstacleDetector'] //@layers[name='control']/@modules[name='velocityController']");
         Files.writeString(tmp.resolve("two-processors.rsaml"), twice);
         assertTrue(!twice.equals(example), "the fixture must change the example");
-        for (String model : List.of("negative.rsaml", "two-processors.rsaml")) {
+        // an execution longer than the period (RSA-10): the plan could be built and would miss, but there is no task set
+        Files.writeString(tmp.resolve("exceeds-period.rsaml"), example.replace("period=\"20.0\" delay=\"20.0\" execDuration=\"4.0\"",
+                "period=\"20.0\" delay=\"20.0\" execDuration=\"24.0\""));
+        for (String model : List.of("negative.rsaml", "two-processors.rsaml", "exceeds-period.rsaml")) {
             Map<String, Integer> codes = new TreeMap<>();
             List<Cli.Result> results = new ArrayList<>();
             for (String format : List.of("text", "json", "sarif", "junit")) {
@@ -179,6 +182,19 @@ class AnalyzeCommandTest {
         JsonObject invocation = run.getAsJsonArray("invocations").get(0).getAsJsonObject();
         assertEquals(false, invocation.get("executionSuccessful").getAsBoolean(), sarif.out());
         assertTrue(invocation.toString().contains("RSA-13: Module 'obstacleDetector' has a negative time value"), sarif.out());
+        // No format gives a verdict for it: the same error, the same exit code, no MISSES on standard output.
+        Map<String, String> outs = new TreeMap<>();
+        for (String format : List.of("text", "json", "sarif", "junit")) {
+            Cli.Result r = Cli.runIn(tmp, "analyze", "--format", format, "exceeds-period.rsaml");
+            assertTrue(r.err().matches("(?s)exceeds-period\\.rsaml:\\d+:\\d+: error: the timing cannot be analysed: RSA-10: Module 'obstacleDetector'"
+                    + " takes 24\\.0 ms but runs every 20\\.0 ms.*"), format + ": " + r.err());
+            assertTrue(!r.out().contains("MISSES"), format + ": " + r.out());
+            outs.put(format, r.out().strip());
+        }
+        assertEquals("", outs.get("text"));
+        assertEquals("[]", outs.get("json"));
+        assertTrue(outs.get("junit").contains("failures=\"0\" errors=\"1\""), outs.get("junit"));
+        assertTrue(outs.get("sarif").contains("the timing cannot be analysed: RSA-10"), outs.get("sarif"));
         Cli.Result text = Cli.runIn(tmp, "analyze", "negative.rsaml");
         assertTrue(text.err().matches("(?s)negative\\.rsaml:\\d+:\\d+: error: the timing cannot be analysed: RSA-13: Module 'obstacleDetector'.*"),
                 text.err());

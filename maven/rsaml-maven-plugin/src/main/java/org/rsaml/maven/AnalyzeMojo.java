@@ -16,19 +16,16 @@ import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.analysis.ArchitectureTiming;
-import org.rsaml.analysis.TimingAnalysis;
-import org.rsaml.analysis.TimingModelException;
 import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
-import org.rsaml.analysis.plan.UnplannableException;
-import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Severity;
 
 /**
@@ -36,6 +33,8 @@ import org.rsaml.validation.Severity;
  * build fails when a deadline or a latency requirement can be missed; the verdicts, with their
  * witnesses, are logged, and the timing rules' findings (RSA-22 to RSA-25) are written as reports
  * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses.
+ * A model that cannot be read or analysed fails the build whatever {@code failOnMiss} says, after
+ * the reports are written, as {@code rsaml analyze} exits 2 for it in every format.
  */
 @Mojo(name = "analyze", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
 public class AnalyzeMojo extends AbstractRsamlMojo {
@@ -70,17 +69,17 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
         Log log = getLog();
         List<ReportFormat> reportFormats = reportFormats("formats", formats);
         List<String> missed = new ArrayList<>();
+        List<String> unanalysed = new ArrayList<>();
         for (File model : models) {
             String shown = relative(model.toPath());
             ArchitectureTiming timing;
             try {
-                timing = TimingAnalysis.analyse(ModelLoader.load(model.toPath(), shown).architecture());
+                // The one decision whether a model can be analysed, as rsaml analyze takes it in every format.
+                timing = RsamlModelValidator.analyseTiming(ModelLoader.load(model.toPath(), shown));
             } catch (ModelLoadException e) {
-                throw new MojoExecutionException(String.join("\n", Text.lines(e)));
-            } catch (UnplannableException e) {
-                throw new MojoExecutionException(shown + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
-            } catch (TimingModelException e) {
-                throw new MojoExecutionException(shown + ": error: " + RsamlLabels.describe(e.element()) + ": " + e.getMessage());
+                Text.lines(e).forEach(log::error);
+                unanalysed.add(shown);
+                continue;
             }
             for (String line : TimingText.render(shown, timing).split("\n")) {
                 if (timing.verdict() == Verdict.MISSES && line.contains("MISSES")) {
@@ -109,6 +108,9 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
                     : "rsaml-timing." + format.extension());
             log.info("RsaML timing findings: " + report.summary() + "; reports in "
                     + relative(reportDirectory.toPath()));
+        }
+        if (!unanalysed.isEmpty()) {
+            throw new MojoFailureException("RsaML timing: cannot read or analyse " + String.join(", ", unanalysed) + "; see the errors above");
         }
         if (!missed.isEmpty() && failOnMiss) {
             throw new MojoFailureException("RsaML timing: a deadline or a latency requirement can be missed in " + String.join(", ", missed));
