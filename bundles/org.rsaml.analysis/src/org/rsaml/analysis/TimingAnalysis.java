@@ -63,6 +63,7 @@ public final class TimingAnalysis {
             Processor p = allocation.get(m.module());
             String name = p == null ? DEFAULT_PROCESSOR : RsamlLabels.name(p);
             Group g = groups.computeIfAbsent(name, n -> new Group(n, null));
+            g.modules++;
             for (Release r : m.releases()) {
                 g.add(release(r));
             }
@@ -79,12 +80,15 @@ public final class TimingAnalysis {
                 }
             }
         }
+        Map<Group, String> shared = sharedCpus(groups.values());
         List<ProcessorTiming> processors = new ArrayList<>();
         for (Group g : groups.values()) {
             if (g.element == null && g.tasks.isEmpty() && g.aperiodic.isEmpty() && !architecture.getProcessors().isEmpty()) {
                 continue;
             }
-            processors.add(g.analyse(plan));
+            ProcessorTiming p = g.analyse(plan);
+            String why = shared.get(g);
+            processors.add(why == null ? p : new ProcessorTiming(p.name(), p.element(), sharing(p.result(), why), p.sources(), p.notes()));
         }
         List<LatencyResult> latencies = Latencies.analyse(plan, architecture.getLatencyRequirements(), processors);
         return new ArchitectureTiming(RsamlLabels.name(architecture), processors, excluded, latencies);
@@ -102,6 +106,62 @@ public final class TimingAnalysis {
             }
         }
         return allocation;
+    }
+
+    /**
+     * Each processor is analysed as if it had a CPU to itself. The runtime pins the threads of a
+     * processor with a core to that core and confines those of every processor without one (and of
+     * the modules no processor names) to the cores no processor claims: domains with modules that
+     * end up on the same CPUs (two without a core, or two claiming one core) interfere, and no
+     * verdict of theirs holds. Per such domain, why.
+     */
+    private static Map<Group, String> sharedCpus(java.util.Collection<Group> groups) {
+        Map<Integer, List<Group>> byCore = new java.util.TreeMap<>();
+        for (Group g : groups) {
+            if (g.modules > 0) {
+                int core = g.element == null || g.element.getCore() < 0 ? -1 : g.element.getCore();
+                byCore.computeIfAbsent(core, c -> new ArrayList<>()).add(g);
+            }
+        }
+        Map<Group, String> shared = new IdentityHashMap<>();
+        byCore.forEach((core, domains) -> {
+            if (domains.size() < 2) {
+                return;
+            }
+            String names = names(domains.stream().map(g -> g.name).toList());
+            String why = core < 0
+                    ? "processors " + names + " have no core of their own, so the runtime runs their threads on the same CPUs"
+                            + " (those no processor claims) and each delays the others, which the analysis of a processor"
+                            + " alone does not count: give each processor a core of its own"
+                            + (domains.stream().anyMatch(g -> g.element == null)
+                                    ? " (and allocate the modules no processor names to a processor)" : "")
+                    : "processors " + names + " claim the same core " + core + ", so their threads share it and each delays"
+                            + " the others, which the analysis of a processor alone does not count: give each processor a core"
+                            + " of its own";
+            domains.forEach(g -> shared.put(g, why));
+        });
+        return shared;
+    }
+
+    private static String names(List<String> names) {
+        List<String> quoted = names.stream().map(n -> "'" + n + "'").toList();
+        return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
+    }
+
+    /** No verdict holds for a processor whose CPUs other processors' threads share: each task says why. */
+    private static ProcessorResult sharing(ProcessorResult r, String why) {
+        List<TaskResult> tasks = new ArrayList<>();
+        for (TaskResult t : r.tasks()) {
+            tasks.add(new TaskResult(t.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + why, null));
+        }
+        List<BoundCheck> bounds = new ArrayList<>();
+        for (BoundCheck b : r.bounds()) {
+            bounds.add(b.sufficient() && b.applicable()
+                    ? new BoundCheck(b.name(), true, b.limit(), false, false, "not applicable: the processor shares its CPUs")
+                    : b);
+        }
+        return new ProcessorResult(r.processor(), r.policy(), tasks, r.utilisation(), bounds,
+                tasks.isEmpty() ? r.verdict() : Verdict.NOT_ANALYSED, "not analysed: " + why, null);
     }
 
     private static TaskSource release(Release r) {
@@ -177,6 +237,7 @@ public final class TimingAnalysis {
         final List<TaskSource> tasks = new ArrayList<>();
         final List<Exclusion> aperiodic = new ArrayList<>();
         final Set<String> names = new HashSet<>();
+        int modules;
 
         Group(String name, Processor element) {
             this.name = name;

@@ -37,6 +37,16 @@ class ArchitectureTimingTest {
         return ModelLoader.load(root.resolve("examples").resolve(name), "examples/" + name).architecture();
     }
 
+    static Architecture fixture(String name) throws Exception {
+        Path root = Path.of(System.getProperty("rsaml.root", "../.."));
+        String path = "tests/org.rsaml.analysis.tests/resources/" + name;
+        return ModelLoader.load(root.resolve(path), path).architecture();
+    }
+
+    private static ProcessorTiming processor(ArchitectureTiming timing, String name) {
+        return timing.processors().stream().filter(p -> p.name().equals(name)).findFirst().orElseThrow();
+    }
+
     private static TaskResult task(ProcessorTiming p, String name) {
         return p.result().tasks().stream().filter(t -> t.task().name().equals(name)).findFirst().orElseThrow();
     }
@@ -117,5 +127,56 @@ class ArchitectureTimingTest {
         assertTrue(core1.notes().get(0).contains("the generated C++ runtime schedules by fixed priorities"), core1.notes().get(0));
         // without response times under EDF the latency through core 1 is not bounded, and says so
         assertEquals(Verdict.NOT_ANALYSED, timing.latencies().get(0).verdict());
+    }
+
+    /** Processors without a core share the cores no processor claims: a processor analysed alone proves nothing. */
+    @Test
+    void processorsWithoutACoreShareTheUnclaimedCpusAndAreNotAnalysed() throws Exception {
+        ArchitectureTiming timing = TimingAnalysis.analyse(fixture("deployment-two-without-core.rsaml"));
+        assertEquals(List.of("p1", "p2", "default"), timing.processors().stream().map(ProcessorTiming::name).toList());
+        for (ProcessorTiming p : timing.processors()) {
+            assertEquals(Verdict.NOT_ANALYSED, p.result().verdict(), p.name());
+            for (TaskResult t : p.result().tasks()) {
+                assertEquals(Verdict.NOT_ANALYSED, t.verdict(), t.task().name());
+                assertTrue(t.responseTime().isEmpty(), t.task().name());
+                assertTrue(t.explanation().startsWith("not analysed: processors 'p1', 'p2' and 'default' have no core of their own"),
+                        t.explanation());
+                assertTrue(t.explanation().contains("give each processor a core of its own (and allocate the modules no processor names"),
+                        t.explanation());
+            }
+        }
+        assertEquals(Verdict.NOT_ANALYSED, timing.verdict());
+        String text = TimingText.render("m.rsaml", timing);
+        assertTrue(text.contains("l/a.fa   40 ms     12 ms  8 ms         2     -      -  not analysed"), text);
+        assertTrue(text.contains("bound Liu & Layland (sufficient): U <= 1.0000 not applicable: task 'l/a.fa' has a deadline other than its period"), text);
+        assertTrue(text.contains("bound hyperbolic (sufficient): prod(U_i + 1) <= 2 not applicable: the processor shares its CPUs"), text);
+    }
+
+    @Test
+    void processorsClaimingOneCoreAreNotAnalysedTheOthersAre() throws Exception {
+        ArchitectureTiming timing = TimingAnalysis.analyse(fixture("deployment-same-core.rsaml"));
+        for (String name : List.of("p1", "p2")) {
+            TaskResult t = processor(timing, name).result().tasks().get(0);
+            assertEquals(Verdict.NOT_ANALYSED, t.verdict(), name);
+            assertTrue(t.explanation().startsWith("not analysed: processors 'p1' and 'p2' claim the same core 1"), t.explanation());
+        }
+        TaskResult alone = processor(timing, "p3").result().tasks().get(0);
+        assertEquals(Verdict.MEETS, alone.verdict());
+        assertEquals(5 * MS, alone.responseTime().getAsLong());
+    }
+
+    /** One processor without a core gets the cores no processor claims to itself: analysed as before. */
+    @Test
+    void oneProcessorWithoutACoreIsAnalysed() throws Exception {
+        ArchitectureTiming timing = TimingAnalysis.analyse(fixture("deployment-one-without-core.rsaml"));
+        assertEquals(8 * MS, task(processor(timing, "core0"), "l/a.fa").responseTime().getAsLong());
+        assertEquals(10 * MS, task(processor(timing, "default"), "l/b2.fb2").responseTime().getAsLong());
+        assertEquals(Verdict.MEETS, timing.verdict());
+        // every example with a deployment gives each processor a core of its own
+        for (String example : List.of("hierarchical-nasrem.rsaml", "mobile-base-latency.rsaml", "mobile-base-latency-missed.rsaml")) {
+            for (ProcessorTiming p : TimingAnalysis.analyse(example(example)).processors()) {
+                assertTrue(p.result().tasks().stream().noneMatch(t -> t.explanation().contains("core")), example + " " + p.name());
+            }
+        }
     }
 }
