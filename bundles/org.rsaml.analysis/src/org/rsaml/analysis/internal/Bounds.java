@@ -73,8 +73,30 @@ public final class Bounds {
         return checks;
     }
 
+    /** Why the bounds do not apply when a task can wait for a lower-priority task holding their module's lock; else null. */
+    private static String blocking(List<Task> tasks) {
+        java.util.Map<String, Task> lowest = new java.util.HashMap<>();
+        for (Task t : tasks) {
+            if (t.group() != null) {
+                lowest.merge(t.group(), t, (a, b) -> b.priority() < a.priority() ? b : a);
+            }
+        }
+        for (Task t : tasks) {
+            Task u = t.group() == null ? null : lowest.get(t.group());
+            if (u != null && u.priority() < t.priority()) {
+                return "not applicable: task '" + t.name() + "' shares its module's lock with the lower-priority '" + u.name()
+                        + "' and can wait for it, and the bound assumes independent tasks";
+            }
+        }
+        return null;
+    }
+
     /** Null when the tasks have deadlines equal to their periods, no jitter and rate-monotonic priorities; else why not. */
     private static String rateMonotonicImplicit(List<Task> tasks) {
+        String blocking = blocking(tasks);
+        if (blocking != null) {
+            return blocking;
+        }
         for (Task t : tasks) {
             if (t.deadline() != t.period()) {
                 return "not applicable: task '" + t.name() + "' has a deadline other than its period";

@@ -179,4 +179,24 @@ class ArchitectureTimingTest {
             }
         }
     }
+
+    /** The utilisation bounds assume independent tasks: with a module's lock shared they prove nothing. */
+    @Test
+    void utilisationBoundsDoNotApplyWhenTasksShareTheirModulesLock() throws Exception {
+        ArchitectureTiming timing = TimingAnalysis.analyse(fixture("lock-group-bounds.rsaml"));
+        ProcessorTiming p = timing.processors().get(0);
+        TaskResult f1 = task(p, "l/m.f1");
+        assertEquals(Verdict.MISSES, f1.verdict());
+        assertEquals(12 * MS, f1.responseTime().getAsLong());
+        String why = "not applicable: task 'l/m.f1' shares its module's lock with the lower-priority 'l/m.f2' and can wait for it,"
+                + " and the bound assumes independent tasks";
+        for (String bound : List.of("Liu & Layland", "hyperbolic")) {
+            org.rsaml.analysis.BoundCheck b = p.result().bounds().stream().filter(c -> c.name().equals(bound)).findFirst().orElseThrow();
+            assertEquals(false, b.applicable(), bound);
+            assertEquals(why, b.note(), bound);
+        }
+        String text = TimingText.render("m.rsaml", timing);
+        assertTrue(text.contains("bound Liu & Layland (sufficient): U <= 0.7798 " + why), text);
+        assertTrue(!text.contains("U <= 0.7798 holds") && !text.contains("prod(U_i + 1) <= 2 holds"), text);
+    }
 }
