@@ -4,6 +4,7 @@
  */
 package org.rsaml.generator;
 
+import org.rsaml.model.resource.Located;
 import org.rsaml.model.resource.SourceLocation;
 
 /**
@@ -11,7 +12,7 @@ import org.rsaml.model.resource.SourceLocation;
  * directory, not writable, a file of the user's where a generated file must go). The message names
  * the file concerned. When it is thrown, the output directory is as it was before.
  */
-public class GenerationException extends Exception {
+public class GenerationException extends Exception implements Located {
     private static final long serialVersionUID = 1L;
 
     private final SourceLocation location;
@@ -30,23 +31,9 @@ public class GenerationException extends Exception {
     }
 
     /** Where the problem is: the model or a path in the output, and the line and column when known. */
+    @Override
     public SourceLocation location() {
         return location;
-    }
-
-    /** The file the problem is about (the model, or a path in the output). */
-    public String file() {
-        return location.file();
-    }
-
-    /** 1-based line in {@link #file()}, or 0. */
-    public int line() {
-        return location.line();
-    }
-
-    /** 1-based column in {@link #file()}, or 0. */
-    public int column() {
-        return location.column();
     }
 
     /** Compiler style: {@code file[:line[:column]]: error: message}. */

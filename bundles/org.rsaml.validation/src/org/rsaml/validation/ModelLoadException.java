@@ -7,6 +7,7 @@ package org.rsaml.validation;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.rsaml.model.resource.Located;
 import org.rsaml.model.resource.SourceLocation;
 
 /**
@@ -14,7 +15,7 @@ import org.rsaml.model.resource.SourceLocation;
  * or with references that do not resolve. Carries the location when there is one, and every
  * problem the file has, not only the first: a user fixes them all in one go.
  */
-public class ModelLoadException extends Exception {
+public class ModelLoadException extends Exception implements Located {
     private static final long serialVersionUID = 1L;
 
     /** One reason the file cannot be read, where it is. */
@@ -52,20 +53,9 @@ public class ModelLoadException extends Exception {
     }
 
     /** Where the first problem is: the file as the user named it, and the line and column when known. */
+    @Override
     public SourceLocation location() {
         return location;
-    }
-
-    public String file() {
-        return location.file();
-    }
-
-    public int line() {
-        return location.line();
-    }
-
-    public int column() {
-        return location.column();
     }
 
     /** Every problem of the file, the first ({@link #getMessage()}, {@link #location()}) included. */
