@@ -82,6 +82,62 @@ class RepositoryDocsTest {
         assertEquals(declared, stated, "docs/architecture.md's dependency list against the manifests and poms");
     }
 
+    /**
+     * A bundle requires another RsaML bundle only when it uses it: some source, plugin.xml or OSGi
+     * component of it names a class of a package the other exports. An unused requirement is a false
+     * line on the page above and a dependency every user installs for nothing.
+     */
+    @Test
+    void everyRequiredBundleIsUsed() throws Exception {
+        // Used without naming a class: Sirius draws labels and icons through the item providers EMF.Edit registers.
+        Set<String> byRegistration = Set.of("org.rsaml.design requires org.rsaml.model.edit");
+        List<String> unused = new ArrayList<>();
+        for (Path dir : folders(ROOT.resolve("bundles"))) {
+            Path manifest = dir.resolve("META-INF/MANIFEST.MF");
+            if (!Files.exists(manifest)) {
+                continue;
+            }
+            String text = sources(dir);
+            for (String required : rsamlIds(attribute(manifest, "Require-Bundle"))) {
+                Path other = ROOT.resolve("bundles").resolve(required).resolve("META-INF/MANIFEST.MF");
+                if (!Files.exists(other)) {
+                    continue;
+                }
+                boolean used = false;
+                for (String clause : attribute(other, "Export-Package").split(",(?=[^\"]*(\"[^\"]*\"[^\"]*)*$)")) {
+                    String pkg = clause.split(";", 2)[0].strip();
+                    used |= Pattern.compile("\\b" + Pattern.quote(pkg) + "\\.[A-Z]").matcher(text).find();
+                }
+                if (!used && !byRegistration.contains(dir.getFileName() + " requires " + required)) {
+                    unused.add(dir.getFileName() + " requires " + required);
+                }
+            }
+        }
+        assertEquals(List.of(), unused, "requirements of which no class is used");
+    }
+
+    private static String attribute(Path manifest, String name) throws Exception {
+        try (InputStream in = Files.newInputStream(manifest)) {
+            String value = new Manifest(in).getMainAttributes().getValue(name);
+            return value == null ? "" : value;
+        }
+    }
+
+    /** The hand-written and generated sources, templates, plugin.xml and OSGi components of a bundle, as one text. */
+    private static String sources(Path bundle) throws Exception {
+        StringBuilder text = new StringBuilder();
+        try (Stream<Path> files = Files.walk(bundle)) {
+            for (Path f : files.filter(Files::isRegularFile).filter(f -> !bundle.relativize(f).startsWith("target")).toList()) {
+                String name = f.getFileName().toString();
+                if (name.endsWith(".java") || name.endsWith(".xtend") || name.equals("plugin.xml")
+                        || f.getParent().getFileName().toString().equals("OSGI-INF")) {
+                    text.append(Files.readString(f)).append('\n');
+                }
+            }
+        }
+        return text.toString();
+    }
+
     /** The page's "bundle → requirements" lines; "a, b → x" states the same requirements for both. */
     private static TreeMap<String, Set<String>> statedDependencies() throws Exception {
         String page = Files.readString(ROOT.resolve("docs/architecture.md"));
