@@ -62,30 +62,21 @@ bool apply_priority(std::thread& thread, Policy policy, int rank) {
 #endif
 }
 
-/**
- * Pins a thread to a CPU core where the platform allows it, and says so in the trace; a core the
- * machine lacks (or a platform without affinity) leaves the thread where the OS puts it.
- */
-void apply_core(std::thread& thread, const std::string& label, int core) {
-  if (core < 0) {
-    return;
-  }
 #if defined(__linux__)
-  if (core < CPU_SETSIZE) {
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    CPU_SET(core, &set);
-    if (pthread_setaffinity_np(thread.native_handle(), sizeof(set), &set) == 0) {
-      Trace::line("cpu " + label + " core " + std::to_string(core));
-      return;
+/** Cores as a short list: 0-3,6. */
+std::string core_list(const std::vector<int>& cores) {
+  std::string out;
+  for (std::size_t i = 0; i < cores.size();) {
+    std::size_t j = i;
+    while (j + 1 < cores.size() && cores[j + 1] == cores[j] + 1) {
+      ++j;
     }
+    out += (out.empty() ? "" : ",") + std::to_string(cores[i]) + (j > i ? "-" + std::to_string(cores[j]) : "");
+    i = j + 1;
   }
-  Trace::line("cpu " + label + " core " + std::to_string(core) + " not available: default");
-#else
-  (void)thread;
-  Trace::line("cpu " + label + " core " + std::to_string(core) + " not supported on this platform: default");
-#endif
+  return out;
 }
+#endif
 
 }  // namespace
 
@@ -188,7 +179,7 @@ void Module::post(std::uint64_t wave, std::function<void()> work) {
 void Module::start_worker() {
   if (!worker_.joinable()) {
     worker_ = std::thread([this] { run_worker(); });
-    apply_core(worker_, name_, core_);
+    system_.place(worker_, name_, core_);
   }
 }
 
@@ -310,9 +301,74 @@ bool System::sleep_until(Clock::time_point t) {
   return !stop_cv_.wait_until(lock, t, [this] { return stopping_.load(); });
 }
 
-void System::run_release(Release& release, Clock::time_point start) {
-  // Releases stay on the grid start + offset + k * period, however long one of them takes.
-  Clock::time_point next = start + release.offset;
+void System::claim_cores() {
+#if defined(__linux__)
+  cpu_set_t claimed;
+  CPU_ZERO(&claimed);
+  for (Module* module : modules_) {
+    if (module->core() >= 0 && module->core() < CPU_SETSIZE) {
+      CPU_SET(module->core(), &claimed);
+      cores_claimed_ = true;
+    }
+  }
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (cores_claimed_ && sched_getaffinity(0, sizeof(allowed), &allowed) == 0) {
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
+      if (CPU_ISSET(cpu, &allowed) && !CPU_ISSET(cpu, &claimed)) {
+        unclaimed_cores_.push_back(cpu);
+      }
+    }
+  }
+#endif
+}
+
+void System::place(std::thread& thread, const std::string& label, int core) {
+#if defined(__linux__)
+  if (core >= 0) {
+    if (core < CPU_SETSIZE) {
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      CPU_SET(core, &set);
+      if (pthread_setaffinity_np(thread.native_handle(), sizeof(set), &set) == 0) {
+        Trace::line("cpu " + label + " core " + std::to_string(core));
+        return;
+      }
+    }
+    Trace::line("cpu " + label + " core " + std::to_string(core) + " not available: default");
+    return;
+  }
+  if (!cores_claimed_) {
+    return;  // no processor claims a core: every thread where the OS puts it
+  }
+  if (!unclaimed_cores_.empty()) {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    for (int cpu : unclaimed_cores_) {
+      CPU_SET(cpu, &set);
+    }
+    if (pthread_setaffinity_np(thread.native_handle(), sizeof(set), &set) == 0) {
+      Trace::line("cpu " + label + " cores " + core_list(unclaimed_cores_) + " unclaimed");
+      return;
+    }
+  }
+  Trace::line("cpu " + label + " no unclaimed core: default");
+#else
+  (void)thread;
+  if (core >= 0) {
+    Trace::line("cpu " + label + " core " + std::to_string(core) + " not supported on this platform: default");
+  }
+#endif
+}
+
+void System::run_release(Release& release) {
+  Clock::time_point next;
+  {
+    std::unique_lock<std::mutex> lock(epoch_mutex_);
+    epoch_cv_.wait(lock, [this] { return epoch_set_; });
+    next = epoch_ + release.offset;
+  }
+  // Releases stay on the grid epoch + offset + k * period, however long one of them takes.
   while (sleep_until(next)) {
     release.module->timed_release(release.label, next, release.body);
     next += release.period;
@@ -331,13 +387,16 @@ int System::run(const Options& options) {
   for (Module* module : modules_) {
     module->start_step(start_wave);
   }
+  claim_cores();
   for (Module* module : modules_) {
     module->start_worker();
   }
+  // Each release thread gets its core and its priority before its first job: they all wait for
+  // the epoch, set once the last one is placed.
   for (auto& release : releases_) {
     Release* r = release.get();
-    r->thread = std::thread([this, r, start] { run_release(*r, start); });
-    apply_core(r->thread, r->label, r->module->core());
+    r->thread = std::thread([this, r] { run_release(*r); });
+    place(r->thread, r->label, r->module->core());
     if (options.realtime && apply_priority(r->thread, r->policy, r->rank)) {
       Trace::line("sched " + r->label + (r->policy == Policy::RoundRobin ? " SCHED_RR" : " SCHED_FIFO") + " rank " +
                   std::to_string(r->rank));
@@ -345,6 +404,12 @@ int System::run(const Options& options) {
       Trace::line("sched " + r->label + " default");
     }
   }
+  {
+    std::lock_guard<std::mutex> lock(epoch_mutex_);
+    epoch_ = Clock::now();
+    epoch_set_ = true;
+  }
+  epoch_cv_.notify_all();
   const Clock::time_point deadline =
       options.run_for_ms >= 0 ? start + std::chrono::milliseconds(options.run_for_ms) : Clock::time_point::max();
   while (!interrupted) {

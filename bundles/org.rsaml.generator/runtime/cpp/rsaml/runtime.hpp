@@ -277,7 +277,7 @@ class System {
   /** Registers a module; start steps run in registration order. */
   void add(Module& module);
   /**
-   * Releases body every period from the start of the run plus offset, on a thread of its own
+   * Releases body every period from the run's epoch plus offset, on a thread of its own
    * with the given policy and rank (1 is the lowest real-time priority).
    */
   void every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
@@ -285,6 +285,12 @@ class System {
   /** Runs until options.run_for_ms have passed or the process is interrupted; returns the exit status. */
   int run(const Options& options);
 
+  /**
+   * Places a thread of a module: on core (its processor's) when it is 0 or more; otherwise, when
+   * some processor claims a core, on the cores none claims, so that no processor's core runs work
+   * its analysis does not count. Says so in the trace, or why it could not.
+   */
+  void place(std::thread& thread, const std::string& label, int core);
   /** Sleeps until t; false when the run is stopping. */
   bool sleep_until(Clock::time_point t);
   bool stopping() const { return stopping_.load(); }
@@ -301,11 +307,21 @@ class System {
     std::function<void()> body;
     std::thread thread;
   };
-  void run_release(Release& release, Clock::time_point start);
+  void run_release(Release& release);
+
+  /** Finds the cores the processors claim and the ones left for threads without a core. */
+  void claim_cores();
 
   std::string name_;
   std::vector<Module*> modules_;
   std::vector<std::unique_ptr<Release>> releases_;
+  bool cores_claimed_ = false;
+  std::vector<int> unclaimed_cores_;
+  // The release threads wait for the epoch, set once every thread has its core and priority.
+  std::mutex epoch_mutex_;
+  std::condition_variable epoch_cv_;
+  bool epoch_set_ = false;
+  Clock::time_point epoch_;
   std::mutex stop_mutex_;
   std::condition_variable stop_cv_;
   std::atomic<bool> stopping_{false};

@@ -81,6 +81,7 @@ class CppExamplesTest {
         }
         assertTrue(periodicActions > 0 || trace.matching("release ").size() > 0 || arch.getConnections().size() > 0);
         assertPinnedAsDeployed(arch, trace);
+        assertPlacedBeforeFirstJob(trace);
 
         for (Connection c : arch.getConnections()) {
             String source = name(c.getSource());
@@ -114,6 +115,54 @@ class CppExamplesTest {
                 assertTrue(pinned.stream().allMatch(l -> l.endsWith(where)), () -> module + " on" + where + ": " + pinned);
             }
         }
+    }
+
+    /**
+     * A release thread gets its core and its priority before its first job, so that no job runs at
+     * a priority the analysis does not assume: every release's 'sched' line (and 'cpu' line, when
+     * placed) comes before its first 'release' line.
+     */
+    static void assertPlacedBeforeFirstJob(RunTrace trace) {
+        List<String> sched = trace.matching("sched ");
+        assertFalse(sched.isEmpty(), "no release thread was started:\n" + Tools.last(trace.output, 2000));
+        for (String line : sched) {
+            String label = line.substring("sched ".length()).replaceFirst(" (SCHED_FIFO|SCHED_RR|default).*$", "");
+            int placed = trace.lines.indexOf(line);
+            int first = trace.lines.indexOf("release " + label);
+            assertTrue(first < 0 || first > placed, "release " + label + " ran before its thread had its priority:\n"
+                    + String.join("\n", trace.lines.subList(0, Math.min(trace.lines.size(), placed + 3))));
+        }
+    }
+
+    @Test
+    void aModuleNoProcessorNamesStaysOffTheClaimedCores(@TempDir Path tmp) throws Exception {
+        Path model = tmp.resolve("one-unallocated.rsaml");
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']";
+        assertTrue(text.contains(planner));
+        Files.writeString(model, text.replace(planner, ""));
+        Path out = tmp.resolve("project");
+        new RsamlGenerator().generate(model, Target.CPP, out, false);
+        Path exe = Tools.cmakeBuild(out, executableName(out));
+        RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", "200"));
+        // cores 0 and 1 are the processors'; the planner gets the others, or says there are none
+        List<String> planned = threadsOf(trace, "cpu ", "navigation/pathPlanner");
+        assertEquals(1 + threadsOf(trace, "sched ", "navigation/pathPlanner").size(), planned.size(), trace.output);
+        for (String line : planned) {
+            Matcher m = Pattern.compile("cpu navigation/pathPlanner(?:\\.\\w+)? (?:cores ([0-9,-]+) unclaimed|no unclaimed core: default)").matcher(line);
+            assertTrue(m.matches(), line);
+            if (m.group(1) != null) {
+                for (String range : m.group(1).split(",")) {
+                    int low = Integer.parseInt(range.split("-")[0]);
+                    assertTrue(low >= 2, "a claimed core in " + line);
+                }
+            } else {
+                assertTrue(Runtime.getRuntime().availableProcessors() <= 2, "cores left unused: " + line);
+            }
+        }
+        List<String> detector = threadsOf(trace, "cpu ", "navigation/obstacleDetector");
+        assertFalse(detector.isEmpty(), trace.output);
+        assertTrue(detector.stream().allMatch(l -> l.matches(".* core 1( not available: default)?")), detector::toString);
     }
 
     /** The trace lines of a kind ('cpu ', 'sched ') about a module's threads: its worker's and its releases'. */

@@ -38,7 +38,8 @@ import org.rsaml.validation.ModelLoader;
 /**
  * What a ROS 2 developer adds to the generated packages survives regeneration and still builds
  * with the real rosidl: the manifest's version, people, licence and dependencies
- * ({@code package.user.xml}), CMake additions ({@code user.cmake}), message fields of other
+ * ({@code package.user.xml}), CMake additions ({@code user.cmake}), a service of their own listed
+ * in the interfaces package's {@code user.cmake}, message fields of other
  * packages (declared as dependencies when found); a model change that drops a method of theirs is
  * a compile error; a reactive cycle is bounded.
  */
@@ -85,6 +86,21 @@ class Ros2ExtensionTest {
             }
             """;
 
+    /** A service of the architect's own in the interfaces package, listed in its user.cmake. */
+    static final String USER_SERVICE = """
+            # Asks the arm for a new speed.
+            float64 speed
+            ---
+            bool accepted
+            """;
+
+    static final String USER_SERVICE_CODE = """
+
+            bool speed_request_ok(const pick_and_place_arm_interfaces::srv::SetSpeed::Request& r) {
+              return r.speed >= 0.0;
+            }
+            """;
+
     @Test
     void userAdditionsSurviveAModelChangeAndStillBuild(@TempDir Path tmp) throws Exception {
         Path model = Files.copy(Tools.example("exp3-task-interpreter.rsaml"), tmp.resolve("arm.rsaml"));
@@ -100,8 +116,13 @@ class Ros2ExtensionTest {
         Files.writeString(pkg.resolve("user.cmake"), Files.readString(pkg.resolve("user.cmake"))
                 + "target_compile_definitions(${PROJECT_NAME} PRIVATE ARM_USER_SETTING=42)\n");
         Files.writeString(ipkg.resolve("msg/MotionInstruction.msg"), USER_MESSAGE);
+        Files.createDirectories(ipkg.resolve("srv"));
+        Files.writeString(ipkg.resolve("srv/SetSpeed.srv"), USER_SERVICE);
+        Files.writeString(ipkg.resolve("user.cmake"), Files.readString(ipkg.resolve("user.cmake"))
+                + "list(APPEND RSAML_USER_INTERFACES \"srv/SetSpeed.srv\")\n");
         Path cpp = pkg.resolve("src/motion_control/MotionController.cpp");
-        Files.writeString(cpp, Files.readString(cpp).replace("}  // namespace", USER_CODE + "\n}  // namespace"));
+        Files.writeString(cpp, "#include \"pick_and_place_arm_interfaces/srv/set_speed.hpp\"\n"
+                + Files.readString(cpp).replace("}  // namespace", USER_CODE + USER_SERVICE_CODE + "\n}  // namespace"));
         Map<String, byte[]> before = userFiles(out);
 
         // The model changes: a new output port.
@@ -242,7 +263,8 @@ class Ros2ExtensionTest {
     /** The architect's files: src/, the .msg files, user.cmake and package.user.xml. */
     private static Map<String, byte[]> userFiles(Path out) throws Exception {
         Map<String, byte[]> all = Tools.snapshot(out);
-        all.keySet().removeIf(k -> !(k.contains("/src/") || k.endsWith(".msg") || k.endsWith("user.cmake") || k.endsWith("package.user.xml")));
+        all.keySet().removeIf(k -> !(k.contains("/src/") || k.endsWith(".msg") || k.endsWith(".srv") || k.endsWith("user.cmake")
+                || k.endsWith("package.user.xml")));
         return all;
     }
 }

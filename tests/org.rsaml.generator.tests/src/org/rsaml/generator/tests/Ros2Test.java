@@ -248,15 +248,36 @@ class Ros2Test {
                     assertEquals(arch.getProcessors().isEmpty() ? pkg + "_container" : c, c);
                 }
                 if (processor != null && processor.getCore() >= 0) {
-                    String taskset = "taskset -c " + processor.getCore();
-                    assertEquals(taskset, prefixes.get(c), "container " + c + " of processor " + processor.getName());
-                    assertEquals(taskset, prefixes.get(node), "process of node " + node);
-                    pinned.add(c);
-                    pinned.add(node);
+                    for (String process : List.of(c, node)) {
+                        assertNotNull(prefixes.get(process), "process " + process + " of processor " + processor.getName() + " is not pinned");
+                        assertRunsOn(root, prefixes.get(process), processor.getCore());
+                        pinned.add(process);
+                    }
                 }
             }
         }
         assertEquals(pinned, prefixes.keySet(), "processes pinned that the model does not pin");
+    }
+
+    private static final String AFFINITY = "import os; print(sorted(os.sched_getaffinity(0)))";
+
+    /**
+     * Runs a command under a launch prefix as launch does (split as a shell would, the command
+     * appended) and checks where it runs: on the core alone, or, on a machine without that core,
+     * where it would have run anyway, with a line that says so.
+     */
+    private static void assertRunsOn(Path dir, String prefix, int core) throws Exception {
+        String everywhere = Tools.ok(dir, 60, "python3", "-c", AFFINITY).strip();
+        String ran = Tools.ok(dir, 60, "python3", "-c", "import shlex, subprocess, sys\n"
+                + "sys.exit(subprocess.call(shlex.split(sys.argv[1]) + sys.argv[2:]))", prefix, "python3", "-c", AFFINITY).strip();
+        List<String> lines = ran.lines().toList();
+        String where = lines.get(lines.size() - 1);
+        if (everywhere.matches(".*\\b" + core + "\\b.*")) {
+            assertEquals("[" + core + "]", where, ran);
+        } else {
+            assertEquals(everywhere, where, ran);
+            assertTrue(ran.contains("RsaML: CPU core " + core + " not available: python3 runs unpinned"), ran);
+        }
     }
 
     private static String launch(Path dir, Path file) throws Exception {

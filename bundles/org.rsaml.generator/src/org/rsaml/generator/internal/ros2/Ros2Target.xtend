@@ -102,6 +102,7 @@ class Ros2Files {
 			deps -= ipkg
 			files += GeneratedFile.generated(ipkg + "/package.xml", interfacesPackageXml(imanifest, deps))
 			files += GeneratedFile.user(ipkg + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(ipkg))
+			files += GeneratedFile.user(ipkg + "/user.cmake", interfacesUserCmake)
 			files += GeneratedFile.generated(ipkg + "/CMakeLists.txt", interfacesCmake(deps))
 			for (t : generatedMessages) {
 				files += GeneratedFile.user(ipkg + "/msg/" + t.rosName + ".msg", '''
@@ -247,7 +248,8 @@ class Ros2Files {
 	def private interfacesCmake(Set<String> deps) '''
 		# «banner»
 		# Message packages your .msg files use are found when you generate again; others you need go in
-		# «Ros2Manifest.FILE» as <depend>.
+		# «Ros2Manifest.FILE» as <depend>. Interface files of your own (srv/, action/, more msg/) go in
+		# user.cmake, included below.
 		cmake_minimum_required(VERSION 3.8)
 		project(«rosNames.interfacesPackage»)
 
@@ -257,10 +259,14 @@ class Ros2Files {
 			find_package(«d» REQUIRED)
 		«ENDFOR»
 
+		set(RSAML_USER_INTERFACES "")
+		include(${CMAKE_CURRENT_SOURCE_DIR}/user.cmake)
+
 		rosidl_generate_interfaces(${PROJECT_NAME}
 		  «FOR t : generatedMessages»
 		  	"msg/«t.rosName».msg"
 		  «ENDFOR»
+		  ${RSAML_USER_INTERFACES}
 		  «IF !deps.empty»
 		  	DEPENDENCIES «deps.join(" ")»
 		  «ENDIF»
@@ -309,6 +315,13 @@ class Ros2Files {
 		install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
 
 		ament_package()
+	'''
+
+	def private interfacesUserCmake() '''
+		# «Templates.USER_OWNED» CMakeLists.txt includes it before
+		# rosidl_generate_interfaces(). Your own interface files, for example:
+		#   list(APPEND RSAML_USER_INTERFACES "srv/SetSpeed.srv" "action/Move.action")
+		# Packages their fields use go in «Ros2Manifest.FILE» (<depend>geometry_msgs</depend>).
 	'''
 
 	def private userCmake() '''
@@ -373,9 +386,15 @@ class Ros2Files {
 		    ])
 	'''
 
-	/** The launch prefix that pins a process (and the threads it starts) to one CPU core (util-linux's taskset). */
+	/**
+	 * The launch prefix that pins a process (and every thread it starts) to one CPU core with
+	 * util-linux's taskset; on a machine without that core the process starts unpinned and says so,
+	 * as the C++ runtime does, instead of failing to start. Launch splits it as a shell would, and
+	 * the shell gets the node's command line as "$0" "$@".
+	 */
 	def private taskset(int core) {
-		"taskset -c " + core
+		"sh -c 'if taskset -c " + core + " true 2>/dev/null; then exec taskset -c " + core + " \"$0\" \"$@\"; fi; "
+			+ "echo \"RsaML: CPU core " + core + " not available: $0 runs unpinned\" >&2; exec \"$0\" \"$@\"'"
 	}
 
 	def private launchProcesses() '''
@@ -758,15 +777,17 @@ class Ros2Files {
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
 		«FOR c : rosNames.containers SEPARATOR ", "»`«c.name»` («IF c.processor === null»the modules no processor names«ELSE»processor '«doc(c.processor.name)»'«IF c.core >= 0», core «c.core»«ENDIF»«ENDIF»)«ENDFOR».
 		Processes of a processor with a core are started under `taskset -c CORE` (util-linux), in both
-		launch files. A container runs its nodes' callbacks one at a time (ROS 2's single-threaded
+		launch files; on a machine without that core they start unpinned and say so. A container runs its nodes' callbacks one at a time (ROS 2's single-threaded
 		executor) in the order they become ready, without the fixed priorities of RsaML's C++ runtime:
 		the timing analysis (`rsaml analyze`) describes the C++ runtime, not this executor.
 		«ENDIF»
 
 		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
-		created once and never overwritten: `src/`, the `.msg` files, `user.cmake` (included by
-		`CMakeLists.txt`) and `«Ros2Manifest.FILE»` (version, maintainers, licences, URLs, authors and
-		further dependencies, merged into `package.xml`). Types of other packages used in a `.msg` file
-		are found and declared when you generate again.
+		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`
+		(included by its `CMakeLists.txt`; the interfaces package's also lists interface files of your
+		own, `.srv`, `.action` or more `.msg`, in `RSAML_USER_INTERFACES`) and `«Ros2Manifest.FILE»`
+		(version, maintainers, licences, URLs, authors and further dependencies, merged into
+		`package.xml`). Types of other packages used in a generated `.msg` file are found and declared
+		when you generate again.
 	'''
 }
