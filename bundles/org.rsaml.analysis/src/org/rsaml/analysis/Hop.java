@@ -4,15 +4,19 @@
  */
 package org.rsaml.analysis;
 
+import org.rsaml.model.Module;
+
 /**
  * One stage of an end-to-end path and what it adds to the latency.
  *
- * @param label      {@code layer/module}, or the connection {@code from -> to}
+ * @param label      {@code layer/module}
+ * @param module     the module of the stage: names need not tell modules apart (a duplicate name is
+ *                   an error, RSA-09, but such a model is still analysed and drawn)
  * @param activation how the stage picks the data up, in words
  * @param waitNs     the longest the data waits before the stage starts on it (sampling)
  * @param responseNs the stage's worst-case response time once started
  */
-public record Hop(String label, String activation, long waitNs, long responseNs) {
+public record Hop(String label, Module module, String activation, long waitNs, long responseNs) {
 
     /** What the stage adds: wait plus response. */
     public long totalNs() {

@@ -88,7 +88,7 @@ public final class Latencies {
             String how = reaction
                     ? "reacts to the arrival (may skip arrivals within its minimum interval of " + Durations.format(wait) + ")"
                     : "samples the latest value at its next release of " + t.task().name() + " (every " + Durations.format(wait) + ")";
-            Stage s = new Stage(new Hop(m.qualifiedName(), how, wait, r), t.task().period(), null);
+            Stage s = new Stage(new Hop(m.qualifiedName(), m.module(), how, wait, r), t.task().period(), null);
             if (best == null || s.hop().totalNs() > best.hop().totalNs()) {
                 best = s;
             }

@@ -6,7 +6,6 @@ package org.rsaml.diagram.internal;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -32,7 +31,6 @@ import org.rsaml.model.Actuator;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
 import org.rsaml.model.EntryPort;
-import org.rsaml.model.Layer;
 import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
@@ -83,14 +81,8 @@ public final class TimingOverlay implements DiagramOverlay {
             add(root, line);
             items.add(new Item(SECTION, line, List.of(x.reason()), List.of(RsamlLabels.qualifiedName(x.element()))));
         }
-        Map<String, Module> modules = new HashMap<>();
-        for (Layer layer : architecture.getLayers()) {
-            for (Module module : layer.getModules()) {
-                modules.putIfAbsent(RsamlLabels.name(layer) + "/" + RsamlLabels.name(module), module);
-            }
-        }
         for (LatencyResult l : timing.latencies()) {
-            latency(root, architecture, l, modules);
+            latency(root, architecture, l);
         }
         return new Notes(lines, classes, data, items);
     }
@@ -135,7 +127,7 @@ public final class TimingOverlay implements DiagramOverlay {
         items.add(new Item(SECTION, line, details, List.copyOf(on)));
     }
 
-    private void latency(String root, Architecture architecture, LatencyResult l, Map<String, Module> modules) {
+    private void latency(String root, Architecture architecture, LatencyResult l) {
         String what = l.dataAge() ? "data age" : "reaction time";
         String worst = l.boundNs() < 0 ? "no bound" : "worst " + format(l.boundNs());
         Line line = new Line("latency " + l.name() + " (" + what + " at most " + format(l.maxNs()) + "): " + worst + ": "
@@ -147,7 +139,8 @@ public final class TimingOverlay implements DiagramOverlay {
         LatencyRequirement requirement = l.requirement();
         List<Module> hops = new ArrayList<>();
         for (Hop hop : l.worstPath()) {
-            Module m = modules.get(hop.label());
+            // The analysis' own module, not one found by name: names need not tell modules apart.
+            Module m = hop.module();
             hops.add(m);
             details.add((hops.size()) + ". " + hop.label() + ": +" + format(hop.totalNs()) + " (wait " + format(hop.waitNs()) + " + response "
                     + format(hop.responseNs()) + ")");
@@ -198,7 +191,7 @@ public final class TimingOverlay implements DiagramOverlay {
                 data.computeIfAbsent(element, k -> new TreeMap<>()).merge("latency", l.name(), (a, b) -> a + ", " + b);
             }
         } else if (hops.contains(null)) {
-            details.add("(the path's modules could not be found in the diagram by name: the model has modules of the same name)");
+            details.add("(the path's modules are not all known to the analysis, so the path is not drawn)");
         }
         items.add(new Item(SECTION, line, details, path));
     }

@@ -116,6 +116,30 @@ class TimingOverlayTest {
         assertTrue(frame.contains("latency scanToWheels (reaction time at most 50 ms): worst 57 ms: MISSES"), frame);
     }
 
+    /**
+     * The path is drawn over the elements the analysis went through, not over others of the same
+     * name: a module of the same name in another layer, or (a duplicate name, RSA-09) in the same one.
+     */
+    @Test
+    void thePathFollowsTheModulesNotTheirNames() throws Exception {
+        LoadedModel model = ModelLoader.load(TestRepository.resource("org.rsaml.diagram.tests", "same-named-modules.rsaml"),
+                "same-named-modules.rsaml");
+        LatencyResult scan = TimingAnalysis.analyse(model.architecture()).latencies().get(0);
+        assertEquals(List.of("navigation/detector", "control/velocityController"), scan.worstPath().stream().map(Hop::label).toList());
+        assertEquals(model.architecture().getLayers().get(0).getModules().get(1), scan.worstPath().get(0).module(),
+                "the hop is the second navigation detector, the one that reads the laser");
+        SvgDocument svg = new SvgDocument(new RsamlDiagrams(DiagramView.ARCHITECTURE).timing(TimingMode.AUTO)
+                .svg(model.architecture(), RsamlModelValidator.validate(model)));
+        SvgDocument.Link connection = svg.links.stream().filter(l -> "//@connections.0".equals(l.uri())).findFirst()
+                .orElseThrow(() -> new AssertionError("the connection is drawn"));
+        assertTrue(connection.classes().contains("latency-path"), "the path's connection, from the second detector: " + connection);
+        for (SvgDocument.Shape s : svg.ofKind("module")) {
+            if (s.qname().equals("dupes/control/detector")) {
+                assertFalse(s.classes().contains("latency-path"), "the control layer's detector is on no path: " + s);
+            }
+        }
+    }
+
     @Test
     void aMetRequirementsPathIsDrawnWithoutTheMissStyle() throws Exception {
         Analysed a = analyse("mobile-base-latency.rsaml", TimingMode.AUTO);
