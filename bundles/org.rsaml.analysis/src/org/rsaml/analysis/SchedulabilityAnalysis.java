@@ -32,6 +32,20 @@ public final class SchedulabilityAnalysis {
      * @param tasks     its tasks, with distinct names
      */
     public static ProcessorResult analyse(String processor, SchedulingPolicy policy, List<Task> tasks) {
+        return analyse(processor, policy, tasks, Set.of());
+    }
+
+    /**
+     * @param processor       the processor's name, for the result
+     * @param policy          how it schedules
+     * @param tasks           its tasks, with distinct names
+     * @param runToCompletion under {@link SchedulingPolicy#FIXED_PRIORITY}, the names of the tasks whose
+     *                        jobs no job of equal priority interrupts once started (threads under
+     *                        SCHED_FIFO, which POSIX runs first in, first out among equal priorities);
+     *                        when every task of the highest priority is one, nothing interrupts them
+     *                        and they are analysed without preemption
+     */
+    public static ProcessorResult analyse(String processor, SchedulingPolicy policy, List<Task> tasks, Set<String> runToCompletion) {
         Set<String> names = new HashSet<>();
         for (Task t : tasks) {
             if (!names.add(t.name())) {
@@ -44,19 +58,20 @@ public final class SchedulabilityAnalysis {
             return new ProcessorResult(processor, policy, List.of(), 0, bounds, Verdict.MEETS, "no tasks", null);
         }
         return switch (policy) {
-            case FIXED_PRIORITY, FIXED_PRIORITY_NON_PREEMPTIVE -> fixedPriority(processor, policy, tasks, u, bounds);
+            case FIXED_PRIORITY, FIXED_PRIORITY_NON_PREEMPTIVE -> fixedPriority(processor, policy, tasks, u, bounds, runToCompletion);
             case EDF -> edf(processor, tasks, u, bounds);
             default -> unanalysed(processor, policy, tasks, u, bounds);
         };
     }
 
     private static ProcessorResult fixedPriority(String processor, SchedulingPolicy policy, List<Task> tasks, Utilisation u,
-            List<BoundCheck> bounds) {
+            List<BoundCheck> bounds, Set<String> runToCompletion) {
         TaskResult[] byIndex = new TaskResult[tasks.size()];
         if (policy == SchedulingPolicy.FIXED_PRIORITY && ResponseTimes.anyBlockedByLock(tasks)) {
             lockGroups(tasks, byIndex);
         } else if (policy == SchedulingPolicy.FIXED_PRIORITY) {
             preemptive(tasks, byIndex);
+            firstInFirstOutAtTheTop(tasks, byIndex, runToCompletion);
         } else {
             for (int i = 0; i < tasks.size(); i++) {
                 byIndex[i] = ResponseTimes.nonPreemptive(tasks, tasks.get(i));
@@ -135,6 +150,39 @@ public final class SchedulabilityAnalysis {
             // the next level's first job needs at least this level's window beyond its own cost
             seed = Math.max(0, levelWindow);
             g = end;
+        }
+    }
+
+    /**
+     * Tasks of equal priority delay each other; the preemptive analysis counts every job of theirs
+     * released until the analysed job completes, which is sound whatever order they run in (round
+     * robin included). At the highest priority, jobs that run first in, first out among their equals
+     * are interrupted by nothing: a job waits only for the jobs released before or with it, which is
+     * the non-preemptive analysis without blocking (lower priorities are preempted, so they cannot block).
+     */
+    private static void firstInFirstOutAtTheTop(List<Task> tasks, TaskResult[] byIndex, Set<String> runToCompletion) {
+        int top = Integer.MIN_VALUE;
+        for (Task t : tasks) {
+            top = Math.max(top, t.priority());
+        }
+        List<Integer> level = new ArrayList<>();
+        for (int i = 0; i < tasks.size(); i++) {
+            if (tasks.get(i).priority() == top) {
+                if (!runToCompletion.contains(tasks.get(i).name())) {
+                    return;
+                }
+                level.add(i);
+            }
+        }
+        if (level.size() < 2) {
+            return;
+        }
+        List<Task> equals = level.stream().map(tasks::get).toList();
+        for (int i : level) {
+            TaskResult r = ResponseTimes.nonPreemptive(equals, tasks.get(i));
+            byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation()
+                    + " (first in, first out among the tasks of its priority, the highest: nothing interrupts it once started)",
+                    r.witness());
         }
     }
 

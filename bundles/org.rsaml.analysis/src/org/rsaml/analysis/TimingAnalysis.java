@@ -65,11 +65,12 @@ public final class TimingAnalysis {
             Group g = groups.computeIfAbsent(name, n -> new Group(n, null));
             g.modules++;
             for (Release r : m.releases()) {
-                g.add(release(r));
+                // SCHED_RR threads share time slices with their equals; SCHED_FIFO ones run to completion
+                g.add(release(r), r.policy() != org.rsaml.model.SchedulingPolicy.RR);
             }
             if (m.reactive()) {
                 if (m.minIntervalNs() > 0) {
-                    g.add(reaction(m));
+                    g.add(reaction(m), false);
                 } else {
                     String reason = "reacts to every arrival of data and the model bounds neither how often data arrives nor"
                             + " (as sporadic) how often it reacts: give it execType sporadic with a period (its minimum"
@@ -237,6 +238,7 @@ public final class TimingAnalysis {
         final List<TaskSource> tasks = new ArrayList<>();
         final List<Exclusion> aperiodic = new ArrayList<>();
         final Set<String> names = new HashSet<>();
+        final Set<String> runToCompletion = new HashSet<>();
         int modules;
 
         Group(String name, Processor element) {
@@ -244,7 +246,8 @@ public final class TimingAnalysis {
             this.element = element;
         }
 
-        void add(TaskSource s) {
+        /** @param fifo whether its thread runs first in, first out among equal priorities (SCHED_FIFO) */
+        void add(TaskSource s, boolean fifo) {
             Task t = s.task();
             String unique = t.name();
             for (int i = 2; !names.add(unique); i++) {
@@ -255,12 +258,15 @@ public final class TimingAnalysis {
                 s = new TaskSource(t, s.element(), s.kind(), s.note());
             }
             tasks.add(s);
+            if (fifo) {
+                runToCompletion.add(unique);
+            }
         }
 
         ProcessorTiming analyse(ExecutionPlan plan) {
             SchedulingPolicy policy = policy(element);
             List<Task> list = tasks.stream().map(TaskSource::task).toList();
-            ProcessorResult r = SchedulabilityAnalysis.analyse(name, policy, list);
+            ProcessorResult r = SchedulabilityAnalysis.analyse(name, policy, list, runToCompletion);
             List<String> notes = new ArrayList<>();
             if (policy == SchedulingPolicy.FIXED_PRIORITY) {
                 notes.add("scheduled as the generated runtime does: one real-time thread per timed release at its rank"

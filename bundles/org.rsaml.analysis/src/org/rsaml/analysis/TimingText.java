@@ -88,7 +88,7 @@ public final class TimingText {
         if (w.blockedBy() != null) {
             out.append(", blocked first by ").append(w.blockedBy());
         }
-        out.append("; preempted by ").append(w.preemptions().isEmpty() ? "nothing" : jobs(w.preemptions())).append('\n');
+        out.append("; delayed by ").append(w.preemptions().isEmpty() ? "nothing" : jobs(w.preemptions())).append('\n');
         int shown = 0;
         for (Segment s : w.schedule()) {
             if (shown++ == MAX_SEGMENTS) {

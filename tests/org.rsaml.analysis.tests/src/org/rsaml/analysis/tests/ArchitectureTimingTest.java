@@ -199,4 +199,40 @@ class ArchitectureTimingTest {
         assertTrue(text.contains("bound Liu & Layland (sufficient): U <= 0.7798 " + why), text);
         assertTrue(!text.contains("U <= 0.7798 holds") && !text.contains("prod(U_i + 1) <= 2 holds"), text);
     }
+
+    /**
+     * A processor declared FIFO runs the runtime's ranks, which come from each function's schedPolicy. By
+     * hand, fa: T 5, D 2, C 1; fb: T 100, C 10 (ms).
+     * Rate monotonic: fa at rank 3 preempts fb at rank 2: R(fa) = 1, R(fb) = 10 + 3 fa jobs (at 0, 5, 10) = 13.
+     * FIFO functions: one rank, SCHED_FIFO, first in, first out: fa released with fb can wait for all of
+     * fb, R(fa) = 10 + 1 = 11 > 2; fb waits for the fa job released with it only, R(fb) = 1 + 10 = 11.
+     * RR functions: one rank, SCHED_RR: time slices let the fa jobs at 5 and 10 in, R(fb) = 13; R(fa) = 11.
+     */
+    @Test
+    void fifoAndRoundRobinAreAnalysedAsTheRuntimeRanksAndRunsThem() throws Exception {
+        ProcessorTiming ranked = TimingAnalysis.analyse(fixture("fifo-ranked.rsaml")).processors().get(0);
+        assertEquals(SchedulingPolicy.FIXED_PRIORITY, ranked.result().policy());
+        assertEquals(3, task(ranked, "l/a.fa").task().priority());
+        assertEquals(1 * MS, task(ranked, "l/a.fa").responseTime().getAsLong());
+        assertEquals(Verdict.MEETS, task(ranked, "l/a.fa").verdict());
+        assertEquals(13 * MS, task(ranked, "l/b.fb").responseTime().getAsLong());
+
+        ArchitectureTiming fifo = TimingAnalysis.analyse(fixture("fifo-one-rank.rsaml"));
+        ProcessorTiming oneRank = fifo.processors().get(0);
+        TaskResult fa = task(oneRank, "l/a.fa");
+        assertEquals(1, fa.task().priority());
+        assertEquals(11 * MS, fa.responseTime().getAsLong());
+        assertEquals(Verdict.MISSES, fa.verdict());
+        assertEquals(List.of("l/b.fb 0 - 10000000", "l/a.fa 10000000 - 11000000"),
+                fa.witness().schedule().stream().map(s -> s.task() + " " + s.start() + " - " + s.end()).toList());
+        TaskResult fb = task(oneRank, "l/b.fb");
+        assertEquals(11 * MS, fb.responseTime().getAsLong());
+        assertTrue(fb.explanation().contains("first in, first out among the tasks of its priority"), fb.explanation());
+        String text = TimingText.render("m.rsaml", fifo);
+        assertTrue(text.contains("job 1 of l/a.fa released at 0 ns, completes at 11 ms; delayed by l/b.fb x1"), text);
+
+        ProcessorTiming roundRobin = TimingAnalysis.analyse(fixture("rr-one-rank.rsaml")).processors().get(0);
+        assertEquals(11 * MS, task(roundRobin, "l/a.fa").responseTime().getAsLong());
+        assertEquals(13 * MS, task(roundRobin, "l/b.fb").responseTime().getAsLong());
+    }
 }
