@@ -19,7 +19,8 @@ import org.rsaml.analysis.internal.Durations;
 
 /**
  * The witnesses of negative verdicts as SVG timelines: for a missed deadline one lane per task from
- * the critical instant; for a latency requirement that can be exceeded one lane per stage of the
+ * the critical instant; for a failed processor-demand test (EDF) one lane per task with its jobs due
+ * within the overloaded interval, against the interval; for a latency requirement that can be exceeded one lane per stage of the
  * worst path, each waiting and then responding, against the requirement.
  */
 public final class TimingSvg {
@@ -32,7 +33,8 @@ public final class TimingSvg {
     }
 
     /**
-     * Writes one file per task that misses its deadline and has a witness, and one per latency
+     * Writes one file per task that misses its deadline and has a witness, one per processor whose
+     * processor-demand test fails (its overloaded interval), and one per latency
      * requirement that can be exceeded along a bounded worst path; returns the files written.
      */
     public static List<Path> write(Path directory, ArchitectureTiming timing) throws IOException {
@@ -44,6 +46,12 @@ public final class TimingSvg {
                 }
                 Files.createDirectories(directory);
                 written.add(write(directory, timing.architecture() + "-" + p.name() + "-" + t.task().name(), svg(p.name(), t)));
+            }
+        }
+        for (ProcessorTiming p : timing.processors()) {
+            if (p.result().verdict() == Verdict.MISSES && p.result().demand() != null) {
+                Files.createDirectories(directory);
+                written.add(write(directory, timing.architecture() + "-" + p.name() + "-demand", svg(p.name(), p.result())));
             }
         }
         for (LatencyResult l : timing.latencies()) {
@@ -117,6 +125,68 @@ public final class TimingSvg {
                 LEFT + due * scale, LEFT + due * scale, bottom));
         b.append(String.format(Locale.ROOT, "<text x=\"%.2f\" y=\"%d\" fill=\"#d9534f\">deadline %s</text>\n", LEFT + due * scale + 3,
                 bottom + 14, esc(Durations.format(due))));
+        b.append(String.format(Locale.ROOT, "<text x=\"%d\" y=\"%d\">0</text>\n", LEFT, bottom + 14));
+        b.append("</svg>\n");
+        return b.toString();
+    }
+
+    /** Jobs drawn per lane of a demand witness; the rest are counted. */
+    static final int MAX_JOBS_DRAWN = 200;
+
+    /**
+     * The witness of a failed processor-demand test: with every task released at 0, one lane per task
+     * whose jobs are due within the interval, each job's window from its release to its deadline
+     * (light) with its cost at the start of it (red), and below them the demand of all those jobs
+     * against the interval's length (dashed), which it exceeds.
+     */
+    public static String svg(String processor, ProcessorResult r) {
+        DemandWitness d = r.demand();
+        List<Task> tasks = new ArrayList<>();
+        for (TaskResult t : r.tasks()) {
+            if (d.jobs().getOrDefault(t.task().name(), 0L) > 0) {
+                tasks.add(t.task());
+            }
+        }
+        long end = Math.max(Math.max(d.interval(), d.demand()), 1);
+        double scale = (double) (WIDTH - LEFT - 20) / end;
+        int height = 60 + LANE * (tasks.size() + 1) + 30;
+        StringBuilder b = new StringBuilder();
+        b.append("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").append(WIDTH).append("\" height=\"").append(height)
+                .append("\" font-family=\"sans-serif\" font-size=\"12\">\n");
+        String head = processor + ": the jobs released and due within the first " + Durations.format(d.interval()) + " need "
+                + Durations.format(d.demand()) + ", more than the interval holds";
+        b.append("<title>").append(esc(head)).append("</title>\n");
+        b.append("<text x=\"10\" y=\"20\" font-weight=\"bold\">").append(esc(head)).append("</text>\n");
+        b.append("<text x=\"10\" y=\"38\">").append(esc("every task released at 0; light: a job's window from its release to its"
+                + " deadline, red: its cost; no scheduler fits them all (" + r.policy().label() + ")")).append("</text>\n");
+        for (int i = 0; i < tasks.size(); i++) {
+            Task t = tasks.get(i);
+            long jobs = d.jobs().get(t.name());
+            int y = 60 + LANE * i;
+            b.append("<text x=\"10\" y=\"").append(y + 17).append("\">").append(esc(t.name() + " x" + jobs)).append("</text>\n");
+            b.append("<line x1=\"").append(LEFT).append("\" y1=\"").append(y + LANE - 4).append("\" x2=\"").append(WIDTH - 20)
+                    .append("\" y2=\"").append(y + LANE - 4).append("\" stroke=\"#ccc\"/>\n");
+            for (long k = 0; k < Math.min(jobs, MAX_JOBS_DRAWN); k++) {
+                long release = k * t.period();
+                String job = t.name() + " job " + (k + 1) + ": released at " + Durations.format(release) + ", due at "
+                        + Durations.format(release + t.deadline());
+                bar(b, release, t.deadline(), y, scale, "#f0d9a8", job);
+                bar(b, release, Math.min(t.cost(), t.deadline()), y, scale, "#d9534f", job + ", needs " + Durations.format(t.cost()));
+            }
+            if (jobs > MAX_JOBS_DRAWN) {
+                b.append("<text x=\"").append(WIDTH - 200).append("\" y=\"").append(y + 17).append("\">")
+                        .append(esc("... " + (jobs - MAX_JOBS_DRAWN) + " more jobs")).append("</text>\n");
+            }
+        }
+        int y = 60 + LANE * tasks.size();
+        b.append("<text x=\"10\" y=\"").append(y + 17).append("\">demand</text>\n");
+        bar(b, 0, d.demand(), y, scale, "#d9534f", "demand of the jobs due within " + Durations.format(d.interval()) + ": "
+                + Durations.format(d.demand()));
+        int bottom = y + LANE;
+        b.append(String.format(Locale.ROOT, "<line x1=\"%.2f\" y1=\"50\" x2=\"%.2f\" y2=\"%d\" stroke=\"#d9534f\" stroke-dasharray=\"4 3\"/>\n",
+                LEFT + d.interval() * scale, LEFT + d.interval() * scale, bottom));
+        b.append(String.format(Locale.ROOT, "<text x=\"%.2f\" y=\"%d\" fill=\"#d9534f\">interval %s</text>\n",
+                LEFT + d.interval() * scale + 3, bottom + 14, esc(Durations.format(d.interval()))));
         b.append(String.format(Locale.ROOT, "<text x=\"%d\" y=\"%d\">0</text>\n", LEFT, bottom + 14));
         b.append("</svg>\n");
         return b.toString();

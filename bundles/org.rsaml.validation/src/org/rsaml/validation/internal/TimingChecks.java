@@ -53,7 +53,7 @@ public final class TimingChecks {
     public static final Set<String> RULES = Set.of(DEADLINE, LATENCY, NOT_ANALYSED, DEPLOYMENT);
 
     /** The message parameters these checks supply from the analysis' results. */
-    public static final List<String> PARAMETERS = List.of("processor", "task", "reason", "worstPath", "where");
+    public static final List<String> PARAMETERS = List.of("processor", "task", "reason", "worstPath", "where", "witness");
 
     /**
      * Rules whose errors leave the architecture without a task set (times missing, negative, beyond
@@ -167,6 +167,8 @@ public final class TimingChecks {
                 parameters.put("task", t.task().name());
                 parameters.put("where", " (" + t.task().name() + " on processor '" + p.name() + "')");
                 parameters.put("reason", reason(t.explanation()) + (s.note().isEmpty() ? "" : " (" + s.note() + ")"));
+                parameters.put("witness", t.witness() != null ? "; rsaml analyze shows the critical-instant schedule"
+                        : p.result().demand() != null ? "; rsaml analyze shows the interval whose jobs need more than its length" : "");
                 add(out, new Found(rule(t.verdict() == Verdict.MISSES ? DEADLINE : NOT_ANALYSED), s.element(), parameters));
             }
         }

@@ -79,6 +79,56 @@ class AnalyzeCommandTest {
         assertTrue(Files.notExists(tmp.resolve("more")), "nothing to write, no directory");
     }
 
+    /** Three functions on an EDF processor: within the first 10 ms, jobs due by then need 11 ms. */
+    static final String EDF_OVERLOADED = """
+            <?xml version="1.0" encoding="UTF-8"?>
+            <rsaml:Architecture xmi:version="2.0" xmlns:xmi="http://www.omg.org/XMI" xmlns:rsaml="http://www.rsaml.org/rsaml/1.0"
+                name="edfOverloaded" description="EDF" category="hybrid" declaredLayers="1">
+              <layers name="l" description="l" timeUnit="ms" level="0">
+                <modules name="a" description="a" timeUnit="ms" type="realTime" period="4" delay="2" execDuration="2" execType="periodic">
+                  <functions name="fa" description="fa" timeUnit="ms" type="realTime" period="4" delay="2" execDuration="2" execType="periodic" schedPolicy="EDF"/>
+                </modules>
+                <modules name="b" description="b" timeUnit="ms" type="realTime" period="10" delay="10" execDuration="3" execType="periodic">
+                  <functions name="fb" description="fb" timeUnit="ms" type="realTime" period="10" delay="10" execDuration="3" execType="periodic" schedPolicy="EDF"/>
+                </modules>
+                <modules name="c" description="c" timeUnit="ms" type="realTime" period="5" delay="3" execDuration="1" execType="periodic">
+                  <functions name="fc" description="fc" timeUnit="ms" type="realTime" period="5" delay="3" execDuration="1" execType="periodic" schedPolicy="EDF"/>
+                </modules>
+              </layers>
+              <processors name="cpu" description="EDF" schedPolicy="EDF" modules="//@layers[name='l']/@modules[name='a'] //@layers[name='l']/@modules[name='b'] //@layers[name='l']/@modules[name='c']"/>
+            </rsaml:Architecture>
+            """;
+
+    @Test
+    void anEdfOverloadHasItsDemandIntervalAsTimeline(@TempDir Path tmp) throws Exception {
+        Files.writeString(tmp.resolve("edf.rsaml"), EDF_OVERLOADED);
+        Cli.Result r = Cli.runIn(tmp, "analyze", "--timeline", "svg", "edf.rsaml");
+        assertEquals(1, r.code(), r.toString());
+        assertTrue(r.out().contains("witness: in the first 10 ms the jobs due need 11 ms: l/a.fa x3, l/b.fb x1, l/c.fc x2"), r.out());
+        assertTrue(r.err().contains("timeline written: svg/edfOverloaded-cpu-demand.svg"), r.err());
+        Path file = tmp.resolve("svg/edfOverloaded-cpu-demand.svg");
+        org.w3c.dom.Document svg = javax.xml.parsers.DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(file.toFile());
+        String all = svg.getDocumentElement().getTextContent();
+        assertTrue(all.contains("cpu: the jobs released and due within the first 10 ms need 11 ms, more than the interval holds"), all);
+        // a lane per task with each job's window from release to deadline and its cost, then the demand
+        int a = all.indexOf("l/a.fa x3");
+        int b = all.indexOf("l/b.fb x1");
+        int c = all.indexOf("l/c.fc x2");
+        assertTrue(a > 0 && b > a && c > b, all);
+        assertTrue(all.contains("l/a.fa job 3: released at 8 ms, due at 10 ms, needs 2 ms"), all);
+        assertTrue(all.contains("l/c.fc job 2: released at 5 ms, due at 8 ms, needs 1 ms"), all);
+        assertTrue(all.contains("demand of the jobs due within 10 ms: 11 ms"), all);
+        assertTrue(all.contains("interval 10 ms"), all);
+        assertEquals(2 * (3 + 1 + 2) + 1, svg.getElementsByTagName("rect").getLength(), Files.readString(file));
+
+        // RSA-22 says what analyze shows for EDF: the interval, not a critical-instant schedule
+        Cli.Result v = Cli.runIn(tmp, "validate", "edf.rsaml");
+        assertEquals(1, v.code(), v.toString());
+        assertTrue(v.out().contains("error RSA-22: Function 'fa' can miss its deadline on processor 'cpu' (l/a.fa)"), v.out());
+        assertTrue(v.out().contains("rsaml analyze shows the interval whose jobs need more than its length"), v.out());
+        assertTrue(!v.out().contains("critical-instant"), v.out());
+    }
+
     @Test
     void aMissedDeadlineHasItsWitnessAsTextJsonAndTimeline(@TempDir Path tmp) throws Exception {
         Path model = tmp.resolve("overloaded.rsaml");

@@ -58,7 +58,7 @@ final class AnalyzeCommand implements Callable<Integer> {
 
     @Option(names = "--timeline", paramLabel = "DIR",
             description = "Also write into DIR an SVG timeline of each witness: a missed deadline's critical-instant schedule, "
-                    + "a latency requirement's worst path.")
+                    + "an overloaded processor's demand interval (EDF), a latency requirement's worst path.")
     Path timeline;
 
     @ParentCommand
