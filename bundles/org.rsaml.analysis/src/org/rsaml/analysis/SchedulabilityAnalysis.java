@@ -207,10 +207,7 @@ public final class SchedulabilityAnalysis {
      */
     private static void lockGroups(List<Task> tasks, TaskResult[] byIndex) {
         int n = tasks.size();
-        int[] effective = new int[n];
-        for (int i = 0; i < n; i++) {
-            effective[i] = ResponseTimes.effectivePriority(tasks, tasks.get(i));
-        }
+        int[] effective = ResponseTimes.effectivePriorities(tasks);
         Task[] view = tasks.toArray(new Task[0]);
         for (int round = 0; round < MAX_ROUNDS; round++) {
             for (int i = 0; i < n; i++) {

@@ -295,10 +295,10 @@ public final class TimingAnalysis {
         String who = String.join(", ", aperiodic.stream().map(Exclusion::label).toList());
         List<TaskResult> tasks = new ArrayList<>();
         Verdict verdict = Verdict.MEETS;
-        List<Task> all = r.tasks().stream().map(TaskResult::task).toList();
-        for (TaskResult t : r.tasks()) {
-            boolean exposed = policy != SchedulingPolicy.FIXED_PRIORITY
-                    || org.rsaml.analysis.internal.ResponseTimes.effectivePriority(all, t.task()) <= 0;
+        int[] effective = org.rsaml.analysis.internal.ResponseTimes.effectivePriorities(r.tasks().stream().map(TaskResult::task).toList());
+        for (int i = 0; i < r.tasks().size(); i++) {
+            TaskResult t = r.tasks().get(i);
+            boolean exposed = policy != SchedulingPolicy.FIXED_PRIORITY || effective[i] <= 0;
             if (exposed && t.verdict() == Verdict.MEETS) {
                 t = new TaskResult(t.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED,
                         "not analysed: aperiodic reactions on this processor (" + who + ") can delay it without bound", null);

@@ -60,6 +60,22 @@ public final class ResponseTimes {
      * The lowest priority of the task's lock group: a lower-priority member holding the lock makes the
      * task wait, and whatever preempts that member delays the task too (no priority inheritance).
      */
+    /** {@link #effectivePriority} of every task, in order: one pass over the lock groups, not one per task. */
+    public static int[] effectivePriorities(List<Task> tasks) {
+        java.util.Map<String, Integer> lowest = new java.util.HashMap<>();
+        for (Task t : tasks) {
+            if (t.group() != null) {
+                lowest.merge(t.group(), t.priority(), Math::min);
+            }
+        }
+        int[] effective = new int[tasks.size()];
+        for (int i = 0; i < effective.length; i++) {
+            Task t = tasks.get(i);
+            effective[i] = t.group() == null ? t.priority() : Math.min(t.priority(), lowest.get(t.group()));
+        }
+        return effective;
+    }
+
     public static int effectivePriority(List<Task> tasks, Task task) {
         int p = task.priority();
         if (task.group() != null) {
