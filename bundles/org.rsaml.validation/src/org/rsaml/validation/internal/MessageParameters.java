@@ -22,8 +22,10 @@ import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
+import org.rsaml.model.DataType;
 import org.rsaml.model.Device;
 import org.rsaml.model.ElementType;
+import org.rsaml.model.EntryPort;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
@@ -74,8 +76,8 @@ public final class MessageParameters {
                 .filter(f -> f.getType() != ElementType.REAL_TIME).collect(Collectors.toList())));
         put("nonRealTimeActions", o -> quoted(((org.rsaml.model.Function) o).getActions().stream()
                 .filter(a -> a.getType() != ElementType.REAL_TIME).collect(Collectors.toList())));
-        put("outputPorts", o -> quoted(((Module) o).getPorts().stream().filter(OutputPort.class::isInstance)
-                .collect(Collectors.toList())));
+        put("inputs", o -> inputs((Module) o));
+        put("neverHappens", o -> neverHappens((Module) o));
         put("duplicates", MessageParameters::duplicates);
         put("longTexts", MessageParameters::longTexts);
         // connections
@@ -187,6 +189,59 @@ public final class MessageParameters {
             zero.add("delay");
         }
         return String.join(" and no ", zero);
+    }
+
+    /**
+     * What a module's entry ports receive, for RSA-19: {@code has no entry port}, {@code none of its
+     * entry ports receives data}, or the modules that deliver data to them (a connection or a
+     * suppressor whose ports carry the same data, as the invariant counts them).
+     */
+    private static String inputs(Module m) {
+        List<EntryPort> entries = m.getPorts().stream().filter(EntryPort.class::isInstance).map(EntryPort.class::cast).toList();
+        if (entries.isEmpty()) {
+            return "has no entry port";
+        }
+        Set<Module> feeders = new LinkedHashSet<>();
+        for (EntryPort e : entries) {
+            for (Connection c : e.getIncoming()) {
+                if (delivers(c.getSource(), e)) {
+                    feeders.add(c.getSource().getModule());
+                }
+            }
+            for (Suppressor s : e.getSuppressedBy()) {
+                if (delivers(s.getTrigger(), e)) {
+                    feeders.add(s.getTrigger().getModule());
+                }
+            }
+        }
+        return feeders.isEmpty() ? "none of its entry ports receives data"
+                : "its entry ports receive data only from modules that are never activated either (" + quoted(new ArrayList<>(feeders)) + ")";
+    }
+
+    private static boolean delivers(OutputPort from, EntryPort to) {
+        return from != null && from.getModule() != null && from.getDataType() == to.getDataType()
+                && (to.getDataType() != DataType.STRUCTURED
+                        || java.util.Objects.equals(from.normalizedMessageType(), to.normalizedMessageType()));
+    }
+
+    /** What never happens in a module nothing activates: its outputs, actuators and functions, as it has them. */
+    private static String neverHappens(Module m) {
+        List<String> parts = new ArrayList<>();
+        List<Port> outputs = m.getPorts().stream().filter(OutputPort.class::isInstance).collect(Collectors.toList());
+        if (!outputs.isEmpty()) {
+            parts.add("its outputs " + quoted(outputs) + " never carry more than their initial values");
+        }
+        if (!m.getActuators().isEmpty()) {
+            parts.add("its actuators " + quoted(m.getActuators()) + " are never driven");
+        }
+        if (!m.getFunctions().isEmpty()) {
+            parts.add("its functions " + quoted(m.getFunctions()) + " never run");
+        }
+        if (parts.isEmpty()) {
+            return "it never runs";
+        }
+        String last = parts.remove(parts.size() - 1);
+        return parts.isEmpty() ? last : String.join(", ", parts) + " and " + last;
     }
 
     private static String names(List<? extends NamedElement> elements) {

@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.rsaml.model.Architecture;
+import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.RsamlFactory;
@@ -37,6 +38,12 @@ class ExactTimesTest {
         m.setName("checker");
         m.setTimeUnit(TimeUnit.get(execUnit));
         m.setExecDuration(Double.parseDouble(exec));
+        // a periodic function activates the module (RSA-19) without a time of its own to compare
+        org.rsaml.model.Function step = f.createFunction();
+        step.setName("step");
+        step.setExecType(ExecutionType.PERIODIC);
+        step.setPeriod(1);
+        m.getFunctions().add(step);
         layer.getModules().add(m);
         a.getLayers().add(layer);
         return RsamlModelValidator.validate(a).stream().map(Finding::ruleId).collect(Collectors.toList());

@@ -13,6 +13,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.Test;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.ElementType;
+import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.RsamlFactory;
@@ -50,6 +51,8 @@ class FindingsTest {
         Module module = f.createModule();
         module.setName("checker");
         module.setTimeUnit(TimeUnit.US);
+        module.setExecType(ExecutionType.PERIODIC);
+        module.setPeriod(10000);
         module.setExecDuration(1500);
         layer.getModules().add(module);
         assertEquals(List.of(), RsamlModelValidator.validate(a));
@@ -73,6 +76,7 @@ class FindingsTest {
         Module module = f.createModule();
         module.setName("motion");
         module.setType(ElementType.REAL_TIME);
+        module.setExecType(ExecutionType.PERIODIC);
         module.setPeriod(10);
         layer.getModules().add(module);
         List<Finding> findings = RsamlModelValidator.validate(a);

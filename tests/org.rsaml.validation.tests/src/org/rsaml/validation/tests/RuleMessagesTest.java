@@ -27,15 +27,31 @@ class RuleMessagesTest {
     }
 
     @Test
-    void aModuleThatNothingActivatesIsToldToGetAPeriodOrAnInput() throws Exception {
-        assertEquals(List.of("robot/behaviour/wander: Module 'wander' is never activated: it is not periodic, has no periodic"
-                + " function or action, and none of its entry ports receives data, so its outputs 'heading' never carry more"
-                + " than their initial values; add a period (execType periodic and a period above 0) or an input (a connection"
-                + " from another module's output port to one of its entry ports)",
-                "robot/behaviour/integrate: Module 'integrate' is never activated: it is not periodic, has no periodic"
-                + " function or action, and none of its entry ports receives data, so its outputs 'pose' never carry more"
-                + " than their initial values; add a period (execType periodic and a period above 0) or an input (a connection"
-                + " from another module's output port to one of its entry ports)"),
+    void aModuleThatNothingActivatesIsToldWhatNeverHappensAndToGetAPeriodOrAnInputThatRuns() throws Exception {
+        String add = "; add a period (execType periodic and a period above 0) or an input from a module that runs (a connection"
+                + " to one of its entry ports from an output port of a periodic module, or of a module such a module feeds)";
+        String never = " is never activated: it is not periodic, has no periodic function or action, and ";
+        assertEquals(List.of(
+                "robot/behaviour/wander: Module 'wander'" + never + "has no entry port, so its outputs 'heading' never carry more"
+                        + " than their initial values" + add,
+                "robot/behaviour/integrate: Module 'integrate'" + never + "none of its entry ports receives data, so its outputs"
+                        + " 'pose' never carry more than their initial values" + add,
+                "robot/behaviour/source: Module 'source'" + never + "has no entry port, so its outputs 'out' never carry more"
+                        + " than their initial values and its functions 'sample' never run" + add,
+                // connected, but only to a module that never runs: its initial value starts no reaction
+                "robot/behaviour/relay: Module 'relay'" + never + "its entry ports receive data only from modules that are never"
+                        + " activated either ('source'), so its outputs 'out' never carry more than their initial values and its"
+                        + " functions 'forward' never run" + add,
+                // no output port, but an actuator and a function that nothing ever runs
+                "robot/behaviour/driver: Module 'driver'" + never + "has no entry port, so its actuators 'motor' are never driven"
+                        + " and its functions 'drive' never run" + add,
+                // a cycle with nothing timed: each waits for the other
+                "robot/behaviour/ping: Module 'ping'" + never + "its entry ports receive data only from modules that are never"
+                        + " activated either ('pong'), so its outputs 'out' never carry more than their initial values and its"
+                        + " functions 'answer' never run" + add,
+                "robot/behaviour/pong: Module 'pong'" + never + "its entry ports receive data only from modules that are never"
+                        + " activated either ('ping'), so its outputs 'out' never carry more than their initial values and its"
+                        + " functions 'answer' never run" + add),
                 messages("rule-RSA-19-violated.rsaml", "RSA-19"));
     }
 
