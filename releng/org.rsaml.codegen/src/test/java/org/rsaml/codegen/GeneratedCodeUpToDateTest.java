@@ -21,6 +21,6 @@ class GeneratedCodeUpToDateTest {
         List<String> stale = RsamlCodegen.check(ROOT);
         assertEquals(List.of(), stale,
                 "Generated code is out of date with rsaml.ecore. Regenerate it with "
-                        + "./mvnw -Pregenerate -pl releng/org.rsaml.codegen process-classes");
+                        + "./mvnw -Pregenerate -pl releng/org.rsaml.codegen -am process-classes");
     }
 }
