@@ -77,6 +77,7 @@ public final class SchedulabilityAnalysis {
                 byIndex[i] = ResponseTimes.nonPreemptive(tasks, tasks.get(i));
             }
         }
+        scheduleTheFirstMiss(tasks, byIndex, policy, runToCompletion);
         List<TaskResult> results = List.of(byIndex);
         Verdict verdict = Verdict.MEETS;
         for (TaskResult r : results) {
@@ -154,6 +155,41 @@ public final class SchedulabilityAnalysis {
     }
 
     /**
+     * A critical-instant schedule costs a simulation over every task that can delay the job: only the
+     * highest-priority task that misses its deadline gets one (the tasks it delays can wait for it too);
+     * the others keep their summary witness, the jobs of each task that can delay them.
+     */
+    private static void scheduleTheFirstMiss(List<Task> tasks, TaskResult[] byIndex, SchedulingPolicy policy,
+            Set<String> runToCompletion) {
+        int first = -1;
+        for (int i = 0; i < byIndex.length; i++) {
+            if (byIndex[i].verdict() == Verdict.MISSES && byIndex[i].witness() != null
+                    && (first < 0 || tasks.get(i).priority() > tasks.get(first).priority())) {
+                first = i;
+            }
+        }
+        if (first < 0) {
+            return;
+        }
+        Task t = tasks.get(first);
+        TaskResult r = byIndex[first];
+        List<Task> scope = tasks;
+        int effective = t.priority();
+        boolean preemptive = policy == SchedulingPolicy.FIXED_PRIORITY;
+        if (preemptive && ResponseTimes.anyBlockedByLock(tasks)) {
+            effective = ResponseTimes.effectivePriority(tasks, t);
+        } else if (preemptive) {
+            List<Integer> level = firstInFirstOutLevel(tasks, runToCompletion);
+            if (level.contains(first)) {
+                scope = level.stream().map(tasks::get).toList();
+                preemptive = false;
+            }
+        }
+        byIndex[first] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation(),
+                ResponseTimes.schedule(scope, t, effective, r.witness().job(), preemptive));
+    }
+
+    /**
      * Tasks of equal priority delay each other; the preemptive analysis counts every job of theirs
      * released until the analysed job completes, which is sound whatever order they run in (round
      * robin included). At the highest priority, jobs that run first in, first out among their equals
@@ -161,6 +197,18 @@ public final class SchedulabilityAnalysis {
      * the non-preemptive analysis without blocking (lower priorities are preempted, so they cannot block).
      */
     private static void firstInFirstOutAtTheTop(List<Task> tasks, TaskResult[] byIndex, Set<String> runToCompletion) {
+        List<Integer> level = firstInFirstOutLevel(tasks, runToCompletion);
+        List<Task> equals = level.stream().map(tasks::get).toList();
+        for (int i : level) {
+            TaskResult r = ResponseTimes.nonPreemptive(equals, tasks.get(i));
+            byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation()
+                    + " (first in, first out among the tasks of its priority, the highest: nothing interrupts it once started)",
+                    r.witness());
+        }
+    }
+
+    /** The indices of the tasks of the highest priority when there are several and all run first in, first out; else none. */
+    private static List<Integer> firstInFirstOutLevel(List<Task> tasks, Set<String> runToCompletion) {
         int top = Integer.MIN_VALUE;
         for (Task t : tasks) {
             top = Math.max(top, t.priority());
@@ -169,21 +217,12 @@ public final class SchedulabilityAnalysis {
         for (int i = 0; i < tasks.size(); i++) {
             if (tasks.get(i).priority() == top) {
                 if (!runToCompletion.contains(tasks.get(i).name())) {
-                    return;
+                    return List.of();
                 }
                 level.add(i);
             }
         }
-        if (level.size() < 2) {
-            return;
-        }
-        List<Task> equals = level.stream().map(tasks::get).toList();
-        for (int i : level) {
-            TaskResult r = ResponseTimes.nonPreemptive(equals, tasks.get(i));
-            byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation()
-                    + " (first in, first out among the tasks of its priority, the highest: nothing interrupts it once started)",
-                    r.witness());
-        }
+        return level.size() < 2 ? List.of() : level;
     }
 
     private static List<Task> hp(List<Task> tasks, Task task, int priority) {

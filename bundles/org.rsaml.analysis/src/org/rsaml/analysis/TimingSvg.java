@@ -41,7 +41,7 @@ public final class TimingSvg {
         List<Path> written = new ArrayList<>();
         for (ProcessorTiming p : timing.processors()) {
             for (TaskResult t : p.result().tasks()) {
-                if (t.verdict() != Verdict.MISSES || t.witness() == null) {
+                if (t.verdict() != Verdict.MISSES || t.witness() == null || t.witness().summary()) {
                     continue;
                 }
                 Files.createDirectories(directory);

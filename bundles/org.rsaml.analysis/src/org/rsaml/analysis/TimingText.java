@@ -83,10 +83,18 @@ public final class TimingText {
 
     private static void witness(StringBuilder out, Witness w) {
         out.append("    witness: critical instant at 0; job ").append(w.job() + 1).append(" of ").append(w.task()).append(" released at ")
-                .append(Durations.format(w.release())).append(", completes at ")
+                .append(Durations.format(w.release())).append(w.summary() ? ", completes by " : ", completes at ")
                 .append(w.completion() < 0 ? "(cut short)" : Durations.format(w.completion()));
         if (w.blockedBy() != null) {
             out.append(", blocked first by ").append(w.blockedBy());
+        }
+        if (w.summary()) {
+            out.append("; delayed by at most ").append(w.preemptions().isEmpty() ? "nothing" : jobs(w.preemptions()));
+            if (w.unlisted() > 0) {
+                out.append(" and ").append(String.format(Locale.ROOT, "%,d", w.unlisted())).append(" other tasks");
+            }
+            out.append(" (only the highest-priority task that misses on a processor gets its schedule)\n");
+            return;
         }
         out.append("; delayed by ").append(w.preemptions().isEmpty() ? "nothing" : jobs(w.preemptions())).append('\n');
         int shown = 0;

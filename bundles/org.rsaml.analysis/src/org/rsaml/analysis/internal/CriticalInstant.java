@@ -112,17 +112,17 @@ public final class CriticalInstant {
                 completion = time;
             }
         }
-        Map<String, Long> preemptions = new LinkedHashMap<>();
         long until = completion < 0 ? time : completion;
-        for (Task t : all) {
-            TreeSet<Long> jobs = new TreeSet<>();
-            for (Segment s : segments) {
-                if (s.task().equals(t.name()) && s.end() > targetRelease && s.start() < until
-                        && !(t == analysed && s.job() == job)) {
-                    jobs.add(s.job());
-                }
+        Map<String, TreeSet<Long>> ran = new java.util.HashMap<>();
+        for (Segment s : segments) {
+            if (s.end() > targetRelease && s.start() < until && !(s.task().equals(analysed.name()) && s.job() == job)) {
+                ran.computeIfAbsent(s.task(), k -> new TreeSet<>()).add(s.job());
             }
-            if (!jobs.isEmpty()) {
+        }
+        Map<String, Long> preemptions = new LinkedHashMap<>();
+        for (Task t : all) {
+            TreeSet<Long> jobs = ran.get(t.name());
+            if (jobs != null) {
                 preemptions.put(t.name(), (long) jobs.size());
             }
         }

@@ -334,11 +334,58 @@ public final class ResponseTimes {
                             + Durations.format(task.deadline()),
                     null);
         }
-        Witness witness = CriticalInstant.schedule(task, hp, blocker, job, preemptive);
+        Witness witness = summary(task, worst, job, hp, blocker);
         return new TaskResult(task, OptionalLong.of(worst), Verdict.MISSES,
                 "worst-case response time " + Durations.format(worst) + " (" + where + ") exceeds its deadline of "
                         + Durations.format(task.deadline()) + " by " + Durations.format(worst - task.deadline()),
                 witness);
+    }
+
+    /** Tasks a summary witness lists by name, those that delay it most; the others are counted. */
+    public static final int MAX_LISTED = 20;
+
+    /**
+     * The witness of a miss without its schedule (which costs a simulation): per interfering task, its
+     * jobs released from the critical instant until the job completes, the most delaying first.
+     */
+    private static Witness summary(Task task, long worst, long job, List<Task> hp, Task blocker) {
+        long release = Arith.mul(task.period(), job);
+        long completion = Arith.add(release, worst - task.jitter());
+        List<long[]> counts = new ArrayList<>(); // index, jobs, delay
+        for (int k = 0; k < hp.size(); k++) {
+            Task t = hp.get(k);
+            long jobs = Arith.ceilDiv(Arith.add(completion, t.jitter()), t.period());
+            if (jobs > 0 && t.cost() > 0) {
+                counts.add(new long[] { k, jobs, Arith.mul(jobs, t.cost()) });
+            }
+        }
+        counts.sort((a, b) -> Long.compare(b[2], a[2]));
+        java.util.Map<String, Long> listed = new java.util.LinkedHashMap<>();
+        for (long[] c : counts.subList(0, Math.min(MAX_LISTED, counts.size()))) {
+            listed.put(hp.get((int) c[0]).name(), c[1]);
+        }
+        return new Witness(task.name(), job, release, completion, List.of(), listed, blocker == null ? null : blocker.name(), false,
+                counts.size() - listed.size());
+    }
+
+    /**
+     * The critical-instant schedule of job {@code job} of the task, among the tasks of {@code scope}:
+     * preemptive, everything at or above {@code effective} delaying it; or non-preemptive, everything at
+     * or above its priority, after the longest lower-priority job.
+     */
+    public static Witness schedule(List<Task> scope, Task task, int effective, long job, boolean preemptive) {
+        Task analysed = effective == task.priority() ? task
+                : new Task(task.name(), task.period(), task.deadline(), task.cost(), effective, task.jitter(), task.group());
+        List<Task> hp = new ArrayList<>();
+        Task blocker = null;
+        for (Task t : scope) {
+            if (t != task && t.priority() >= (preemptive ? effective : task.priority())) {
+                hp.add(t);
+            } else if (!preemptive && t.priority() < task.priority() && t.cost() > 0 && (blocker == null || t.cost() > blocker.cost())) {
+                blocker = t;
+            }
+        }
+        return CriticalInstant.schedule(analysed, hp, blocker, job, preemptive);
     }
 
     static TaskResult notAnalysed(Task task, String why) {

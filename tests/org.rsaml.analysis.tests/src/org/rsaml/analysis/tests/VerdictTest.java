@@ -13,11 +13,14 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
+import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.ProcessorResult;
+import org.rsaml.analysis.ProcessorTiming;
 import org.rsaml.analysis.SchedulabilityAnalysis;
 import org.rsaml.analysis.SchedulingPolicy;
 import org.rsaml.analysis.Task;
 import org.rsaml.analysis.TaskResult;
+import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 
 /** What cannot be proven is said plainly: never a silent pass. */
@@ -78,6 +81,49 @@ class VerdictTest {
         assertEquals(Verdict.MISSES, late.tasks().get(0).verdict());
         assertEquals(Verdict.NOT_ANALYSED, late.tasks().get(1).verdict());
         assertTrue(late.tasks().get(1).explanation().contains("'h' can be late waiting for its lock group"), late.tasks().get(1).explanation());
+    }
+
+    /**
+     * A schedule per miss would cost a simulation each: only the highest-priority task that misses gets
+     * its critical-instant schedule; the others list the jobs that can delay them, the most delaying first.
+     * hi takes 6 ms of every 10; lo1 .. lo30 take 2 ms once a second, due in 20 ms, lo1 highest: lo4 completes
+     * at 8 + 2 * 6 = 20 ms and meets, lo5 at 10 + 3 * 6 = 28 ms and misses, lo6 at 30 ms.
+     */
+    @Test
+    void onlyTheHighestPriorityMissGetsItsSchedule() {
+        List<Task> tasks = new java.util.ArrayList<>();
+        tasks.add(Task.implicit("hi", 10 * MS, 6 * MS, 100));
+        for (int i = 1; i <= 30; i++) {
+            tasks.add(new Task("lo" + i, 1000 * MS, 20 * MS, 2 * MS, 31 - i));
+        }
+        ProcessorResult r = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, tasks);
+        assertEquals(Verdict.MEETS, r.tasks().get(4).verdict());
+        TaskResult lo5 = r.tasks().get(5);
+        assertEquals(Verdict.MISSES, lo5.verdict());
+        assertEquals(28 * MS, lo5.witness().completion());
+        assertEquals(false, lo5.witness().summary());
+        assertEquals(28 * MS, lo5.witness().schedule().get(lo5.witness().schedule().size() - 1).end());
+
+        TaskResult lo6 = r.tasks().get(6);
+        assertEquals(30 * MS, lo6.responseTime().getAsLong());
+        assertTrue(lo6.witness().summary());
+        assertEquals(30 * MS, lo6.witness().completion());
+        assertEquals(java.util.Map.of("hi", 3L, "lo1", 1L, "lo2", 1L, "lo3", 1L, "lo4", 1L, "lo5", 1L), lo6.witness().preemptions());
+        assertEquals("hi", lo6.witness().preemptions().keySet().iterator().next(), "the most delaying first");
+
+        TaskResult lo30 = r.tasks().get(30);
+        assertEquals(Verdict.MISSES, lo30.verdict());
+        assertEquals(20, lo30.witness().preemptions().size());
+        assertEquals(10, lo30.witness().unlisted(), "hi and lo1 .. lo29: 30 tasks delay it, 20 listed");
+        long full = r.tasks().stream().filter(t -> t.witness() != null && !t.witness().summary()).count();
+        assertEquals(1, full);
+
+        ArchitectureTiming timing = new ArchitectureTiming("a", List.of(new ProcessorTiming("cpu", null, r, List.of(), List.of())),
+                List.of(), List.of());
+        String text = TimingText.render("m.rsaml", timing);
+        assertTrue(text.contains("job 1 of lo6 released at 0 ns, completes by 30 ms; delayed by at most hi x3, lo1 x1, lo2 x1, lo3 x1,"
+                + " lo4 x1, lo5 x1 (only the highest-priority task that misses on a processor gets its schedule)"), text);
+        assertTrue(text.contains(" and 10 other tasks (only the highest-priority"), text);
     }
 
     @Test

@@ -136,6 +136,9 @@ final class TimingJson {
         o.addProperty("releaseNs", w.release());
         o.addProperty("completionNs", w.completion());
         o.add("preemptions", counts(w.preemptions()));
+        if (w.unlisted() > 0) {
+            o.addProperty("unlistedTasks", w.unlisted());
+        }
         if (w.blockedBy() != null) {
             o.addProperty("blockedBy", w.blockedBy());
         }

@@ -31,7 +31,9 @@ import org.rsaml.model.SchedulingPolicy;
  * Timing analysis figures: (1) one processor with N rate-monotonic tasks (random periods from a
  * set dividing 1.2 s, utilisation 0.8) for N = 100, 1,000 and 10,000; (2) an architecture of M
  * periodic modules on 4 processors, each module connected to the next and every 50th also three
- * ahead, with 100 latency requirements each spanning 10 modules. Prints Markdown tables of medians.
+ * ahead, with 100 latency requirements each spanning 10 modules; (3) one processor with N tasks of
+ * nearly distinct periods at utilisation 0.99, many of which miss (N = 1,000 and 10,000). Prints
+ * Markdown tables of medians.
  */
 public final class TimingBench {
 
@@ -60,6 +62,33 @@ public final class TimingBench {
             }
             System.out.printf("| %,d | %,d ms | %,d ms | %s (U = %s) |%n", n, GenerationBench.median(cpu) / MS, GenerationBench.median(times) / MS,
                     r.verdict(), r.utilisationText());
+        }
+        // sized with the architecture, so that the short run of TimingBenchTest stays short
+        int[] sizes = java.util.stream.IntStream.of(1_000, 10_000).filter(n -> n <= 10 * modules).toArray();
+        if (sizes.length > 0) {
+            System.out.println();
+            System.out.println("| tasks on one processor, distinct periods, U = 0.99 | analysis, CPU time (median of " + RUNS
+                    + ") | wall time | misses | critical-instant schedules (segments) |");
+            System.out.println("|---:|---:|---:|---:|---:|");
+        }
+        for (int n : sizes) {
+            List<Task> tasks = distinctPeriods(n, 0.99, new Random(n));
+            SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks); // JIT
+            long[] times = new long[RUNS];
+            long[] cpu = new long[RUNS];
+            ProcessorResult r = null;
+            for (int i = 0; i < RUNS; i++) {
+                long c0 = CPU.getCurrentThreadCpuTime();
+                long t0 = System.nanoTime();
+                r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks);
+                times[i] = System.nanoTime() - t0;
+                cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
+            }
+            long misses = r.tasks().stream().filter(t -> t.verdict() == Verdict.MISSES).count();
+            long schedules = r.tasks().stream().filter(t -> t.witness() != null && !t.witness().summary()).count();
+            long segments = r.tasks().stream().filter(t -> t.witness() != null).mapToLong(t -> t.witness().schedule().size()).sum();
+            System.out.printf("| %,d | %,d ms | %,d ms | %,d | %,d (%,d) |%n", n, GenerationBench.median(cpu) / MS,
+                    GenerationBench.median(times) / MS, misses, schedules, segments);
         }
         Architecture a = architecture(modules, 100);
         TimingAnalysis.analyse(a); // JIT
@@ -108,6 +137,36 @@ public final class TimingBench {
         for (int i = 0; i < n; i++) {
             long cost = Math.max(1, (long) (0.8 * weights[i] / sum * periods[i]));
             tasks.add(Task.implicit("t" + i, periods[i], cost, priority[i]));
+        }
+        return tasks;
+    }
+
+    /**
+     * n tasks with periods drawn from 1 to 1000 ms at microsecond resolution (nearly all distinct),
+     * rate-monotonic priorities, total utilisation about {@code u}: near 1, many of the lowest
+     * priorities miss their deadlines, each with a witness.
+     */
+    static List<Task> distinctPeriods(int n, double u, Random random) {
+        long[] periods = new long[n];
+        double[] weights = new double[n];
+        double sum = 0;
+        for (int i = 0; i < n; i++) {
+            periods[i] = (1_000 + random.nextInt(999_000)) * 1_000L;
+            weights[i] = random.nextDouble();
+            sum += weights[i];
+        }
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (x, y) -> Long.compare(periods[y], periods[x]));
+        List<Task> tasks = new ArrayList<>();
+        int[] priority = new int[n];
+        for (int rank = 0; rank < n; rank++) {
+            priority[order[rank]] = rank + 1;
+        }
+        for (int i = 0; i < n; i++) {
+            tasks.add(Task.implicit("t" + i, periods[i], Math.max(1, (long) (u * weights[i] / sum * periods[i])), priority[i]));
         }
         return tasks;
     }
