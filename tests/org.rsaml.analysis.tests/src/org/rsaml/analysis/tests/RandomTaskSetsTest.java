@@ -194,6 +194,43 @@ class RandomTaskSetsTest {
         assertTrue(grouped > sets / 10, "too few grouped tasks were delayed: " + grouped);
     }
 
+    /**
+     * The runtime's SCHED_FIFO threads: higher priorities preempt, equal ones run first in, first out
+     * (the simulator's fixed-priority mode, which breaks ties by release). With priorities that tie
+     * (a third of the sets at one priority), the analysis, non-preemptive at the highest priority,
+     * bounds the simulation.
+     */
+    @Test
+    void firstInFirstOutAmongEqualsBoundsSimulation() {
+        Random random = new Random(SEED + 30);
+        for (int s = 0; s < SETS; s++) {
+            boolean oneRank = random.nextInt(3) == 0;
+            List<Task> tasks = new ArrayList<>();
+            for (Task t : randomSet(random, Deadlines.ARBITRARY)) {
+                tasks.add(new Task(t.name(), t.period(), t.deadline(), t.cost(), oneRank ? 1 : t.priority() / 2));
+            }
+            java.util.Set<String> fifo = new java.util.HashSet<>();
+            tasks.forEach(t -> fifo.add(t.name()));
+            ProcessorResult result = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, tasks, fifo);
+            long[] simulated = Simulator.worstResponses(tasks, Simulator.Mode.FIXED_PRIORITY, Simulator.hyperperiod(tasks));
+            for (int i = 0; i < tasks.size(); i++) {
+                TaskResult r = result.tasks().get(i);
+                if (r.verdict() == Verdict.NOT_ANALYSED) {
+                    continue;
+                }
+                if (r.responseTime().isPresent()) {
+                    assertTrue(simulated[i] <= r.responseTime().getAsLong(), "set " + s + " task " + tasks.get(i) + ": simulated "
+                            + simulated[i] + " > bound " + r.responseTime() + "; tasks " + tasks);
+                } else {
+                    assertEquals(Verdict.MISSES, r.verdict());
+                }
+                if (r.verdict() == Verdict.MEETS) {
+                    assertTrue(simulated[i] <= tasks.get(i).deadline());
+                }
+            }
+        }
+    }
+
     /** Non-preemptive analysis is an upper bound: no simulated response exceeds it. */
     @Test
     void nonPreemptiveBoundsSimulation() {
