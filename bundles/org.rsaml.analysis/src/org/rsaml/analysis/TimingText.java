@@ -56,7 +56,9 @@ public final class TimingText {
                     .append(b.limit()).append(" ");
             out.append(!b.applicable() ? b.note() : b.holds() ? "holds" : "does not hold").append('\n');
         }
-        out.append("  verdict: ").append(word(r.verdict())).append(": ").append(r.explanation()).append('\n');
+        // an explanation that starts with its verdict ("not analysed: ...") is not prefixed twice
+        String verdict = word(r.verdict()) + ": ";
+        out.append("  verdict: ").append(r.explanation().startsWith(verdict) ? "" : verdict).append(r.explanation()).append('\n');
         for (int i = 0; i < r.tasks().size(); i++) {
             TaskResult t = r.tasks().get(i);
             String note = i < p.sources().size() ? p.sources().get(i).note() : "";

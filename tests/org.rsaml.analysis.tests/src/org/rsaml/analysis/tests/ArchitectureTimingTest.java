@@ -150,6 +150,7 @@ class ArchitectureTimingTest {
         assertTrue(text.contains("l/a.fa   40 ms     12 ms  8 ms         2     -      -  not analysed"), text);
         assertTrue(text.contains("bound Liu & Layland (sufficient): U <= 1.0000 not applicable: task 'l/a.fa' has a deadline other than its period"), text);
         assertTrue(text.contains("bound hyperbolic (sufficient): prod(U_i + 1) <= 2 not applicable: the processor shares its CPUs"), text);
+        assertTrue(text.contains("  verdict: not analysed: processors 'p1', 'p2' and 'default' have no core"), text);
     }
 
     @Test
