@@ -1033,7 +1033,7 @@ public final class ExecutionPlan {
             return switch (policy) {
                 case RM -> "rate monotonic: priority by period";
                 case DM -> "deadline monotonic: priority by delay";
-                case RR -> "round robin";
+                case RR -> "round robin at the base priority (SCHED_RR)";
                 default -> policy.getLiteral() + ": first in, first out at the base priority";
             };
         }

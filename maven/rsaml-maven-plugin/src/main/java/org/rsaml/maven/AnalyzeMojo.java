@@ -43,7 +43,7 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     @Parameter(property = "rsaml.models", required = true)
     List<File> models = new ArrayList<>();
 
-    /** A directory for an SVG timeline of each witness, missed deadline or exceeded latency requirement (none when not set). */
+    /** A directory for an SVG timeline of each witness: missed deadline, overloaded EDF interval, exceeded latency requirement (none when not set). */
     @Parameter(property = "rsaml.timeline")
     File timeline;
 

@@ -23,6 +23,7 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.model.util.RsamlResourceFactoryImpl;
@@ -143,6 +144,23 @@ final class SyntheticArchitecture {
         c.setSource(from);
         c.setTarget(to);
         a.getConnections().add(c);
+    }
+
+    /**
+     * Allocates the modules, in order, to processors of {@code perProcessor} modules, each with a
+     * core of its own, so that a clean architecture's timing holds too (on one processor the
+     * periodic functions of 1,000 modules would need many times its capacity: RSA-22).
+     */
+    static Architecture deploy(Architecture a, int perProcessor) {
+        List<Module> all = a.getLayers().stream().flatMap(l -> l.getModules().stream()).toList();
+        for (int i = 0; i < all.size(); i += perProcessor) {
+            Processor p = RsamlFactory.eINSTANCE.createProcessor();
+            p.setName("cpu" + i / perProcessor);
+            p.setCore(i / perProcessor);
+            p.getModules().addAll(all.subList(i, Math.min(all.size(), i + perProcessor)));
+            a.getProcessors().add(p);
+        }
+        return a;
     }
 
     static void write(Architecture a, Path file) throws Exception {
