@@ -43,24 +43,34 @@ public final class TimingBench {
     static final long MS = 1_000_000L;
     static final long[] PERIODS = { 5, 10, 20, 25, 40, 50, 100, 200, 300, 400, 600, 1200 };
 
+    /** One task set's analysis, timed: the last run's result, median CPU and wall time (ns). */
+    private record Timed(ProcessorResult result, long cpuNs, long wallNs) {
+    }
+
+    private static Timed timed(List<Task> tasks) {
+        SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks); // JIT
+        long[] times = new long[RUNS];
+        long[] cpu = new long[RUNS];
+        ProcessorResult r = null;
+        for (int i = 0; i < RUNS; i++) {
+            long c0 = CPU.getCurrentThreadCpuTime();
+            long t0 = System.nanoTime();
+            r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks);
+            times[i] = System.nanoTime() - t0;
+            cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
+        }
+        return new Timed(r, GenerationBench.median(cpu), GenerationBench.median(times));
+    }
+
     public static void main(String[] args) throws Exception {
         int modules = args.length > 0 ? Integer.parseInt(args[0].trim()) : 1000;
         System.out.println("| tasks on one processor | analysis, CPU time (median of " + RUNS + ") | wall time | verdict |");
         System.out.println("|---:|---:|---:|---|");
         for (int n : new int[] { 100, 1_000, 10_000 }) {
             List<Task> tasks = taskSet(n, new Random(n));
-            SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks); // JIT
-            long[] times = new long[RUNS];
-            long[] cpu = new long[RUNS];
-            ProcessorResult r = null;
-            for (int i = 0; i < RUNS; i++) {
-                long c0 = CPU.getCurrentThreadCpuTime();
-                long t0 = System.nanoTime();
-                r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks);
-                times[i] = System.nanoTime() - t0;
-                cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
-            }
-            System.out.printf("| %,d | %,d ms | %,d ms | %s (U = %s) |%n", n, GenerationBench.median(cpu) / MS, GenerationBench.median(times) / MS,
+            Timed timed = timed(tasks);
+            ProcessorResult r = timed.result();
+            System.out.printf("| %,d | %,d ms | %,d ms | %s (U = %s) |%n", n, timed.cpuNs() / MS, timed.wallNs() / MS,
                     r.verdict(), r.utilisationText());
         }
         // sized with the architecture, so that the short run of TimingBenchTest stays short
@@ -73,22 +83,13 @@ public final class TimingBench {
         }
         for (int n : sizes) {
             List<Task> tasks = distinctPeriods(n, 0.99, new Random(n));
-            SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks); // JIT
-            long[] times = new long[RUNS];
-            long[] cpu = new long[RUNS];
-            ProcessorResult r = null;
-            for (int i = 0; i < RUNS; i++) {
-                long c0 = CPU.getCurrentThreadCpuTime();
-                long t0 = System.nanoTime();
-                r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks);
-                times[i] = System.nanoTime() - t0;
-                cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
-            }
+            Timed timed = timed(tasks);
+            ProcessorResult r = timed.result();
             long misses = r.tasks().stream().filter(t -> t.verdict() == Verdict.MISSES).count();
             long schedules = r.tasks().stream().filter(t -> t.witness() != null && !t.witness().summary()).count();
             long segments = r.tasks().stream().filter(t -> t.witness() != null).mapToLong(t -> t.witness().schedule().size()).sum();
-            System.out.printf("| %,d | %,d ms | %,d ms | %,d | %,d (%,d) |%n", n, GenerationBench.median(cpu) / MS,
-                    GenerationBench.median(times) / MS, misses, schedules, segments);
+            System.out.printf("| %,d | %,d ms | %,d ms | %,d | %,d (%,d) |%n", n, timed.cpuNs() / MS,
+                    timed.wallNs() / MS, misses, schedules, segments);
         }
         Architecture a = architecture(modules, 100);
         TimingAnalysis.analyse(a); // JIT
