@@ -14,10 +14,14 @@ import org.eclipse.core.runtime.CoreException;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EValidator;
+import org.rsaml.model.resource.RsamlResource;
+import org.rsaml.model.resource.SourceLocation;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.Finding;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
+import org.rsaml.validation.Severity;
 
 /**
  * The problem markers the RsaML builder puts on {@code .rsaml} files: one per finding, with the
@@ -51,29 +55,62 @@ public final class RsamlMarkers {
     }
 
     /**
-     * Puts on {@code file} the marker of one finding of {@link RsamlModelValidator#diagnose}, with
-     * the builder's type and attributes (but no line: an edited model has no position in the file
-     * yet). The tree editor's Validate writes its markers through this, so that the Problems view
-     * lists each finding once, whether the builder or the editor ran last.
+     * Puts on {@code file} the marker of one finding: the builder's and the tree editor's Validate
+     * markers are all written here, so the Problems view shows a finding alike (type, message, line,
+     * attributes) whichever of them ran last.
      */
-    public static IMarker create(IFile file, Diagnostic finding) throws CoreException {
+    public static IMarker create(IFile file, Finding finding) throws CoreException {
         Map<String, Object> attributes = new HashMap<>();
-        attributes.put(IMarker.SEVERITY, finding.getSeverity() >= Diagnostic.ERROR ? IMarker.SEVERITY_ERROR
-                : finding.getSeverity() >= Diagnostic.WARNING ? IMarker.SEVERITY_WARNING : IMarker.SEVERITY_INFO);
-        attributes.put(IMarker.MESSAGE, finding.getMessage());
-        List<?> data = finding.getData();
-        if (data.size() > 1 && data.get(1) instanceof Rule rule) {
-            attributes.put(RULE_ID, rule.id());
+        attributes.put(IMarker.SEVERITY, switch (finding.severity()) {
+            case ERROR -> IMarker.SEVERITY_ERROR;
+            case WARNING -> IMarker.SEVERITY_WARNING;
+            case INFO -> IMarker.SEVERITY_INFO;
+        });
+        attributes.put(IMarker.MESSAGE, finding.ruleId() + ": " + finding.message());
+        if (finding.line() > 0) {
+            attributes.put(IMarker.LINE_NUMBER, finding.line());
         }
-        if (!data.isEmpty() && data.get(0) instanceof EObject element) {
-            attributes.put(QUALIFIED_NAME, RsamlLabels.qualifiedName(element));
-            if (element.eResource() != null) {
-                String fragment = element.eResource().getURIFragment(element);
-                attributes.put(URI_FRAGMENT, fragment);
-                attributes.put(URI, org.eclipse.emf.common.util.URI.createPlatformResourceURI(file.getFullPath().toString(), true)
-                        .appendFragment(fragment).toString());
-            }
+        attributes.put(RULE_ID, finding.ruleId());
+        attributes.put(QUALIFIED_NAME, finding.qualifiedName());
+        if (!finding.uriFragment().isEmpty()) {
+            attributes.put(URI_FRAGMENT, finding.uriFragment());
+            attributes.put(URI, org.eclipse.emf.common.util.URI.createPlatformResourceURI(file.getFullPath().toString(), true)
+                    .appendFragment(finding.uriFragment()).toString());
         }
         return file.createMarker(PROBLEM, attributes);
+    }
+
+    /**
+     * Puts on {@code file} the marker of one finding of {@link RsamlModelValidator#diagnose} (the tree
+     * editor's Validate), located where the element's start tag was when its file was last read or
+     * saved ({@link RsamlResource#locate}); an element added since has no line yet.
+     */
+    public static IMarker create(IFile file, Diagnostic finding) throws CoreException {
+        return create(file, toFinding(file, finding));
+    }
+
+    /** One child of {@link RsamlModelValidator#diagnose} as the builder reports it. */
+    public static Finding toFinding(IFile file, Diagnostic finding) {
+        List<?> data = finding.getData();
+        Rule rule = data.size() > 1 && data.get(1) instanceof Rule r ? r : Rules.STRUCTURE;
+        String message = data.size() > 2 && data.get(2) instanceof String m ? m : finding.getMessage();
+        Severity severity = finding.getSeverity() >= Diagnostic.ERROR ? Severity.ERROR
+                : finding.getSeverity() >= Diagnostic.WARNING ? Severity.WARNING : Severity.INFO;
+        String qualifiedName = "";
+        String fragment = "";
+        int line = 0;
+        int column = 0;
+        if (!data.isEmpty() && data.get(0) instanceof EObject element) {
+            qualifiedName = RsamlLabels.qualifiedName(element);
+            if (element.eResource() != null) {
+                fragment = element.eResource().getURIFragment(element);
+            }
+            if (element.eResource() instanceof RsamlResource resource) {
+                SourceLocation at = resource.locate(element);
+                line = at.line();
+                column = at.column();
+            }
+        }
+        return new Finding(rule, severity, message, qualifiedName, fragment, file.getFullPath().toString(), line, column);
     }
 }

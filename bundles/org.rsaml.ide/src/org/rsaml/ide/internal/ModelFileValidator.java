@@ -20,12 +20,10 @@ import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IPath;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.Status;
-import org.eclipse.emf.common.util.URI;
 import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.RsamlModelValidator;
-import org.rsaml.validation.Severity;
 
 /** Validates one workspace file and replaces its RsaML problem markers with the findings. */
 final class ModelFileValidator {
@@ -38,7 +36,7 @@ final class ModelFileValidator {
         String displayName = file.getFullPath().toString();
         try {
             for (Finding finding : findings(file, displayName)) {
-                file.createMarker(RsamlMarkers.PROBLEM, attributes(file, finding));
+                RsamlMarkers.create(file, finding);
             }
         } catch (ModelLoadException e) {
             for (ModelLoadException.Problem problem : e.problems()) {
@@ -79,28 +77,5 @@ final class ModelFileValidator {
                 }
             }
         }
-    }
-
-    private static Map<String, Object> attributes(IFile file, Finding finding) {
-        Map<String, Object> attributes = new HashMap<>();
-        attributes.put(IMarker.SEVERITY, severity(finding.severity()));
-        attributes.put(IMarker.MESSAGE, finding.ruleId() + ": " + finding.message());
-        attributes.put(IMarker.LINE_NUMBER, Math.max(1, finding.line()));
-        attributes.put(RsamlMarkers.RULE_ID, finding.ruleId());
-        attributes.put(RsamlMarkers.QUALIFIED_NAME, finding.qualifiedName());
-        if (!finding.uriFragment().isEmpty()) {
-            attributes.put(RsamlMarkers.URI_FRAGMENT, finding.uriFragment());
-            attributes.put(RsamlMarkers.URI, URI.createPlatformResourceURI(file.getFullPath().toString(), true)
-                    .appendFragment(finding.uriFragment()).toString());
-        }
-        return attributes;
-    }
-
-    private static int severity(Severity severity) {
-        return switch (severity) {
-            case ERROR -> IMarker.SEVERITY_ERROR;
-            case WARNING -> IMarker.SEVERITY_WARNING;
-            case INFO -> IMarker.SEVERITY_INFO;
-        };
     }
 }

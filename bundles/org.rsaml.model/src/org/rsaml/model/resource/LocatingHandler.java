@@ -12,8 +12,11 @@ import java.nio.ByteBuffer;
 import java.nio.charset.Charset;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
 import java.util.List;
+import java.util.Optional;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EAttribute;
@@ -80,6 +83,12 @@ final class LocatingHandler extends SAXXMIHandler {
     private boolean unknownNamespace;
     /** The attributes of the start tag being handled. */
     private Attributes tagAttributes;
+    /** Comments read since the last start or end tag, waiting for the element they stand before. */
+    private final List<String> pendingComments = new ArrayList<>();
+    /** The model element each open XML element created (empty for an element that is a feature's value, say). */
+    private final Deque<Optional<EObject>> openElements = new ArrayDeque<>();
+    /** The element the start tag being handled created. */
+    private EObject created;
     /** Elements that could not be created because they do not say which kind they are, in the order of the file. */
     private final List<Untyped> untyped = new ArrayList<>();
 
@@ -139,6 +148,7 @@ final class LocatingHandler extends SAXXMIHandler {
         inStartTag = true;
         elementName = name;
         tagAttributes = attributes;
+        created = null;
         try {
             super.startElement(uri, localName, name, attributes);
         } finally {
@@ -146,6 +156,11 @@ final class LocatingHandler extends SAXXMIHandler {
             tagAttributes = null;
             mark();
         }
+        if (created != null && !pendingComments.isEmpty()) {
+            rsamlResource.comments().addBefore(created, pendingComments);
+            pendingComments.clear();
+        }
+        openElements.push(Optional.ofNullable(created));
     }
 
     /** Whether a heap pool is still at least 95% full after its last collection. */
@@ -277,6 +292,11 @@ final class LocatingHandler extends SAXXMIHandler {
         depth--;
         super.endElement(uri, localName, name);
         mark();
+        Optional<EObject> ended = openElements.isEmpty() ? Optional.empty() : openElements.pop();
+        if (ended.isPresent() && !pendingComments.isEmpty()) {
+            rsamlResource.comments().addAtEnd(ended.get(), pendingComments);
+            pendingComments.clear();
+        }
     }
 
     @Override
@@ -300,6 +320,8 @@ final class LocatingHandler extends SAXXMIHandler {
     @Override
     public void comment(char[] ch, int start, int length) {
         mark();
+        // Kept for saving: EMF's XMI save writes none of a file's comments otherwise.
+        pendingComments.add(new String(ch, start, length));
         super.comment(ch, start, length);
     }
 
@@ -330,6 +352,9 @@ final class LocatingHandler extends SAXXMIHandler {
     protected void processObject(EObject object) {
         if (object != null) {
             rsamlResource.recordPosition(object, tagLine, tagColumn);
+            if (inStartTag) {
+                created = object;
+            }
         }
         super.processObject(object);
     }
@@ -462,6 +487,8 @@ final class LocatingHandler extends SAXXMIHandler {
     @Override
     public void endDocument() {
         super.endDocument();
+        rsamlResource.comments().addAfterRoot(pendingComments);
+        pendingComments.clear();
         // References are resolved at the end: each untyped element's error now says how many pointed to it.
         List<Resource.Diagnostic> errors = xmlResource.getErrors();
         for (Untyped element : untyped) {

@@ -17,8 +17,10 @@ import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.InternalEObject;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.xmi.XMLLoad;
 import org.eclipse.emf.ecore.xmi.XMLResource;
+import org.eclipse.emf.ecore.xmi.XMLSave;
 import org.eclipse.emf.ecore.xmi.impl.XMILoadImpl;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.util.RsamlResourceImpl;
@@ -30,7 +32,8 @@ import org.xml.sax.helpers.DefaultHandler;
  * opened but regular local files of bounded size, references only to {@code .rsaml} files in the
  * referencing file's folder or below it, and namespaces only from the package registry. Every way
  * a file can be unfit becomes one error in {@link #getErrors()} saying what is wrong and, where
- * the parser knows it, the line and column. It remembers where each element's start tag begins.
+ * the parser knows it, the line and column. It remembers where each element's start tag begins,
+ * and the file's comments, which a save writes back where they stood.
  */
 public class RsamlResource extends RsamlResourceImpl {
 
@@ -45,6 +48,9 @@ public class RsamlResource extends RsamlResourceImpl {
 
     /** The fragment given to references that were refused: it names nothing, so nothing is ever opened for them. */
     static final String REFUSED_FRAGMENT = "rsaml-refused-reference";
+
+    /** The file's comments, anchored to elements, written back on save. */
+    private final Comments comments = new Comments();
 
     /** Where each element's start tag begins: line in the high half, column in the low half. */
     private final Map<EObject, Long> positions = new IdentityHashMap<>();
@@ -80,6 +86,41 @@ public class RsamlResource extends RsamlResourceImpl {
         return positions.size();
     }
 
+    /** How many of the file's comments are kept to be written back by a save. */
+    public int keptCommentCount() {
+        return comments.size();
+    }
+
+    Comments comments() {
+        return comments;
+    }
+
+    /**
+     * Reads the element positions again from the file as it is now (after a save, say), matching
+     * elements by URI fragment; elements the file does not hold (yet) have none. Contents, comments
+     * and errors stay as they are. Does nothing when the file cannot be read as a model.
+     */
+    public void refreshLocations() {
+        RsamlResource current = new RsamlResource(getURI());
+        ResourceSetImpl reader = new ResourceSetImpl();
+        reader.setURIConverter(getURIConverter()); // platform:/resource/... is read as this resource is
+        reader.getResources().add(current);
+        try {
+            current.load(getResourceSet() == null ? null : getResourceSet().getLoadOptions());
+        } catch (IOException | RuntimeException e) {
+            return; // the positions of the last successful read stay
+        }
+        positions.clear();
+        for (java.util.Iterator<EObject> it = current.getAllContents(); it.hasNext();) {
+            EObject there = it.next();
+            Long packed = current.positions.get(there);
+            EObject here = packed == null ? null : getEObject(current.getURIFragment(there));
+            if (here != null) {
+                positions.put(here, packed);
+            }
+        }
+    }
+
     void recordPosition(EObject element, int line, int column) {
         positions.put(element, ((long) line << 32) | (column & 0xffffffffL));
     }
@@ -103,6 +144,7 @@ public class RsamlResource extends RsamlResourceImpl {
     @Override
     public void doLoad(InputStream inputStream, Map<?, ?> options) throws IOException {
         positions.clear();
+        comments.clear();
         PrologRecorder prolog = new PrologRecorder(inputStream);
         LocatingHandler.Context context = new LocatingHandler.Context(prolog);
         try {
@@ -113,6 +155,7 @@ public class RsamlResource extends RsamlResourceImpl {
             }
         } catch (OutOfMemoryError e) {
             getContents().clear();
+            comments.clear();
             positions.clear();
             getErrors().clear();
             getErrors().add(new LoadProblem("the model is too large for the available heap ("
@@ -172,6 +215,12 @@ public class RsamlResource extends RsamlResourceImpl {
         result.put(XMLResource.OPTION_USE_LEXICAL_HANDLER, Boolean.TRUE);
         result.put(LocatingHandler.Context.class, context);
         return result;
+    }
+
+    /** EMF's XMI save, which also writes back the comments the file had when it was read. */
+    @Override
+    protected XMLSave createXMLSave() {
+        return new CommentKeepingSave(createXMLHelper(), comments);
     }
 
     @Override
@@ -237,6 +286,7 @@ public class RsamlResource extends RsamlResourceImpl {
     @Override
     protected void doUnload() {
         positions.clear();
+        comments.clear();
         childrenBySegment.clear();
         super.doUnload();
     }

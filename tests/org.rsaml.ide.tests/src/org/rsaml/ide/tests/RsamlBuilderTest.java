@@ -34,6 +34,9 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IPath;
 import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.ResourceSet;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
@@ -43,6 +46,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInfo;
 import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.ide.RsamlProjects;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Module;
+import org.rsaml.model.RsamlFactory;
+import org.rsaml.model.resource.RsamlResource;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.tests.support.ExpectedFinding;
 import org.rsaml.tests.support.TestRepository;
@@ -178,17 +185,78 @@ class RsamlBuilderTest {
         for (Diagnostic finding : RsamlModelValidator.diagnose(model.architecture()).getChildren()) {
             RsamlMarkers.create(file, finding);
         }
-        assertEquals(built, described(file));
+        assertEquals(built, described(file), "Validate must mark what the builder marks, on the same lines");
 
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
         assertEquals(built, described(file));
         assertEquals(5, markers(project).size());
     }
 
-    /** Rule, severity, element, fragment and message of each marker of the resource, sorted. */
+    /**
+     * After an edit saved through EMF (a module inserted above the findings, as the tree editor saves),
+     * Validate's markers have the lines of the saved file, the lines the builder then gives.
+     */
+    @Test
+    void afterASaveValidateAndTheBuilderGiveTheSameLines() throws Exception {
+        RsamlProjects.addNature(project, null);
+        IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
+        ResourceSet set = new ResourceSetImpl();
+        RsamlResource resource = (RsamlResource) set.getResource(
+                URI.createPlatformResourceURI(file.getFullPath().toString(), true), true);
+        Architecture architecture = (Architecture) resource.getContents().get(0);
+        Module inserted = RsamlFactory.eINSTANCE.createModule();
+        inserted.setName("inserted");
+        architecture.getLayers().get(0).getModules().add(0, inserted);
+        resource.save(null);
+        resource.refreshLocations();
+
+        file.deleteMarkers(RsamlMarkers.PROBLEM, false, IResource.DEPTH_ZERO);
+        for (Diagnostic finding : RsamlModelValidator.diagnose(architecture).getChildren()) {
+            RsamlMarkers.create(file, finding);
+        }
+        List<String> validated = described(file);
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(validated, described(file), "Validate after a save must mark the lines the builder marks");
+        List<Integer> lines = markers(file).stream().map(m -> m.getAttribute(IMarker.LINE_NUMBER, -1)).toList();
+        List<Integer> before = ExpectedFinding.of(TestRepository.example("exp2-defects.rsaml")).stream()
+                .sorted(Comparator.comparing(ExpectedFinding::ruleId)).map(ExpectedFinding::line).toList();
+        assertNotEquals(before, lines, "the inserted module moved the findings' lines");
+    }
+
+    /**
+     * Creating a model in a project or opening one there (the tree editor calls this) turns RsaML
+     * validation on; a project where the user turned it off stays off until turned on again.
+     */
+    @Test
+    void creatingOrOpeningAModelTurnsValidationOnUnlessTurnedOff() throws Exception {
+        IFile text = copy(TestRepository.example("exp2-defects.rsaml"), "notes.txt");
+        assertFalse(RsamlProjects.enableFor(text, null), "a file that is not a model changes nothing");
+        assertFalse(RsamlProjects.hasNature(project));
+
+        IFile model = copy(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
+        assertTrue(RsamlProjects.enableFor(model, null), "the first model turns validation on");
+        assertTrue(RsamlProjects.hasNature(project));
+        assertEquals(List.of(RsamlProjects.BUILDER_ID), builders());
+        assertFalse(RsamlProjects.enableFor(model, null), "a second time changes nothing");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+        assertEquals(EXPERIMENT_TWO, summaries(model));
+
+        RsamlProjects.removeNature(project, null);
+        assertTrue(RsamlProjects.isOptedOut(project));
+        assertFalse(RsamlProjects.enableFor(model, null), "opening a model must not undo the user's choice");
+        assertFalse(RsamlProjects.hasNature(project));
+        assertEquals(List.of(), summaries(project));
+
+        RsamlProjects.addNature(project, null);
+        assertFalse(RsamlProjects.isOptedOut(project), "turning it on again forgets the choice");
+        assertTrue(RsamlProjects.hasNature(project));
+    }
+
+    /** Rule, severity, line, element, fragment and message of each marker of the resource, sorted. */
     private static List<String> described(IResource resource) throws CoreException {
         return markers(resource).stream().map(m -> m.getAttribute(RsamlMarkers.RULE_ID, "?") + " "
-                + m.getAttribute(IMarker.SEVERITY, -1) + " " + m.getAttribute(RsamlMarkers.QUALIFIED_NAME, "?") + " "
+                + m.getAttribute(IMarker.SEVERITY, -1) + " line " + m.getAttribute(IMarker.LINE_NUMBER, -1) + " "
+                + m.getAttribute(RsamlMarkers.QUALIFIED_NAME, "?") + " "
                 + m.getAttribute(RsamlMarkers.URI_FRAGMENT, "?") + " " + m.getAttribute(IMarker.MESSAGE, "?"))
                 .sorted().collect(Collectors.toList());
     }
