@@ -19,11 +19,11 @@ import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.PlanTimes;
 import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Module;
 import org.rsaml.model.Processor;
-import org.rsaml.model.TimeUnit;
 import org.rsaml.model.support.RsamlLabels;
 
 /**
@@ -194,24 +194,18 @@ public final class TimingAnalysis {
 
     private static TaskSource reaction(PlannedModule m) {
         Module module = m.module();
-        long cost = nanos(module.getExecDuration(), module.getTimeUnit());
+        long cost = PlanTimes.nanos(module.getExecDuration(), module);
         String note = "";
         if (cost == 0) {
             for (ExecutionPlan.PlannedFunction f : m.stepFunctions()) {
-                cost = Math.addExact(cost, nanos(f.function().getExecDuration(), f.function().getTimeUnit()));
+                cost = Math.addExact(cost, PlanTimes.nanos(f.function().getExecDuration(), f.function()));
             }
             note = "the module gives no execution duration: the sum of its functions' is used";
         }
-        long delay = nanos(module.getDelay(), module.getTimeUnit());
+        long delay = PlanTimes.nanos(module.getDelay(), module);
         long deadline = delay > 0 ? delay : m.minIntervalNs();
         Task t = new Task(m.qualifiedName() + " (reaction)", m.minIntervalNs(), deadline, cost, 0, 0, m.qualifiedName());
         return new TaskSource(t, module, "reaction", note);
-    }
-
-    /** Model times are validated by the plan first; this only converts. */
-    static long nanos(double value, TimeUnit unit) {
-        TimeUnit u = unit == null ? TimeUnit.MS : unit;
-        return Math.round(value * u.getValue());
     }
 
     private static String join(String a, String b) {

@@ -21,6 +21,7 @@ import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.Flow;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.analysis.plan.PlanTimes;
 import org.rsaml.model.Actuator;
 import org.rsaml.model.EntryPort;
 import org.rsaml.model.LatencyKind;
@@ -29,6 +30,7 @@ import org.rsaml.model.OutputPort;
 import org.rsaml.model.Sensor;
 import org.rsaml.model.TimeUnit;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * End-to-end latency along every path of connections, under the runtime's communication: a module
@@ -131,11 +133,11 @@ public final class Latencies {
             boolean age = requirement.getKind() == LatencyKind.DATA_AGE;
             TimeUnit unit = requirement.getTimeUnit() == null ? TimeUnit.MS : requirement.getTimeUnit();
             double max = requirement.getMaxLatency();
-            if (!Double.isFinite(max) || max <= 0 || max * unit.getValue() > ExecutionPlan.MAX_TIME_NS) {
+            if (!Double.isFinite(max) || max <= 0 || !RsamlTimes.representable(max, requirement)) {
                 return fail(name, from, to, 0, age, "maxLatency " + RsamlLabels.number(max) + " " + unit.getLiteral()
                         + " is not a positive time generated code can count: give the longest latency allowed");
             }
-            long maxNs = Math.round(max * unit.getValue());
+            long maxNs = PlanTimes.nanos(max, requirement);
             if (requirement.getTarget() instanceof Actuator a) {
                 actuator = a;
             } else if (requirement.getTarget() instanceof EntryPort e) {

@@ -4,37 +4,26 @@
  */
 package org.rsaml.analysis.plan;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
-import java.util.Comparator;
-import java.util.Deque;
-import java.util.HashMap;
 import java.util.IdentityHashMap;
-import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeSet;
+import java.util.Set;
 
-import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.Action;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
 import org.rsaml.model.DataType;
 import org.rsaml.model.EntryPort;
-import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Function;
-import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.Port;
 import org.rsaml.model.Processor;
-import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.model.SubsumptionLink;
-import org.rsaml.model.Suppressor;
-import org.rsaml.model.TimeScaled;
-import org.rsaml.model.TimeUnit;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.model.support.RsamlTimes;
 
@@ -67,6 +56,10 @@ import org.rsaml.model.support.RsamlTimes;
  * <p>A model is planned only when every time it uses can be represented: finite, not negative, a
  * period of at least 1 ns once converted, and at most {@link #MAX_TIME_NS}. Otherwise
  * {@link #of(Architecture)} throws an {@link UnplannableException} naming the element.
+ *
+ * <p>This class holds the plan and its types (nested, as targets name them); {@code Planner}
+ * builds it, {@link PlanTimes} reads the model's times, {@code PlanWarnings} words what cannot
+ * execute and {@code ReactiveCycles} finds the reactive cycles.
  */
 public final class ExecutionPlan {
 
@@ -79,65 +72,20 @@ public final class ExecutionPlan {
 
     private final Architecture architecture;
     private final String name;
-    private final List<PlannedLayer> layers = new ArrayList<>();
-    private final List<PlannedModule> modules = new ArrayList<>();
-    private final List<Flow> flows = new ArrayList<>();
-    private final List<LinkPlan> links = new ArrayList<>();
-    private final List<Release> releases = new ArrayList<>();
-    private final List<Reaction> reactions = new ArrayList<>();
-    private final List<String> messageTypes = new ArrayList<>();
-    private final List<String> warnings = new ArrayList<>();
-    private final Map<Port, PlannedPort> ports = new IdentityHashMap<>();
+    final List<PlannedLayer> layers = new ArrayList<>();
+    final List<PlannedModule> modules = new ArrayList<>();
+    final List<Flow> flows = new ArrayList<>();
+    final List<LinkPlan> links = new ArrayList<>();
+    final List<Release> releases = new ArrayList<>();
+    final List<Reaction> reactions = new ArrayList<>();
+    final Set<String> messageTypes = new LinkedHashSet<>();
+    final List<String> warnings = new ArrayList<>();
+    final Map<Port, PlannedPort> ports = new IdentityHashMap<>();
 
-    private ExecutionPlan(Architecture architecture) throws UnplannableException {
+    /** An empty plan, filled by the {@link Planner}. */
+    ExecutionPlan(Architecture architecture) {
         this.architecture = architecture;
         this.name = RsamlLabels.name(architecture);
-        List<Layer> ordered = new ArrayList<>(architecture.getLayers());
-        ordered.sort(Comparator.comparingInt(Layer::getLevel)); // stable: model order within a level
-        for (Layer layer : architecture.getLayers()) {
-            layers.add(new PlannedLayer(layer));
-        }
-        for (Layer layer : ordered) {
-            PlannedLayer pl = layerOf(layer);
-            for (Module module : layer.getModules()) {
-                PlannedModule pm = new PlannedModule(this, pl, module);
-                pl.modules.add(pm);
-                modules.add(pm);
-            }
-        }
-        Map<Module, PlannedModule> byModule = new IdentityHashMap<>();
-        modules.forEach(m -> byModule.put(m.module, m));
-        for (Processor p : architecture.getProcessors()) {
-            for (Module module : p.getModules()) {
-                PlannedModule m = byModule.get(module);
-                if (m != null && m.processor == null) {
-                    m.processor = p; // a second processor naming the module is RSA-25's finding
-                }
-            }
-        }
-        for (PlannedModule m : modules) {
-            for (Port p : m.module.getPorts()) {
-                PlannedPort pp = new PlannedPort(this, m, p);
-                m.ports.add(pp);
-                (pp.entry ? m.inputs : m.outputs).add(pp);
-                ports.put(p, pp);
-            }
-        }
-        for (PlannedModule m : modules) {
-            m.analyse();
-        }
-        for (Connection c : architecture.getConnections()) {
-            addFlow(c);
-        }
-        for (PlannedModule m : modules) {
-            for (Inhibitor i : m.module.getInhibitors()) {
-                addLink(m, i, i.getTarget());
-            }
-            for (Suppressor s : m.module.getSuppressors()) {
-                addLink(m, s, s.getTarget());
-            }
-        }
-        assignRanks();
     }
 
     /**
@@ -147,7 +95,7 @@ public final class ExecutionPlan {
      *                              a period below 1 ns, or longer than {@link #MAX_TIME_NS})
      */
     public static ExecutionPlan of(Architecture architecture) throws UnplannableException {
-        return new ExecutionPlan(architecture);
+        return Planner.plan(architecture);
     }
 
     public Architecture architecture() {
@@ -195,7 +143,7 @@ public final class ExecutionPlan {
 
     /** Structured message type names as written on the ports, first use first. */
     public List<String> messageTypes() {
-        return Collections.unmodifiableList(messageTypes);
+        return List.copyOf(messageTypes);
     }
 
     /** Model elements that cannot execute as modeled. */
@@ -208,157 +156,12 @@ public final class ExecutionPlan {
         return port == null ? null : ports.get(port);
     }
 
-    private PlannedLayer layerOf(Layer layer) {
-        return layers.stream().filter(l -> l.layer == layer).findFirst().orElseThrow();
-    }
-
-    private void addFlow(Connection c) {
-        PlannedPort source = port(c.getSource());
-        PlannedPort target = port(c.getTarget());
-        if (source == null || target == null) {
-            warnings.add("connection " + RsamlLabels.name(c.getSource()) + " -> " + RsamlLabels.name(c.getTarget())
-                    + " is not generated: it lacks a source or a target port in a layer");
-            return;
-        }
-        if (!source.sameData(target)) {
-            warnings.add("connection " + source.qualifiedName + " -> " + target.qualifiedName
-                    + " is not generated: the ports carry different data (" + source.dataLabel() + " vs " + target.dataLabel() + ")");
-            return;
-        }
-        Flow f = new Flow(c, source, target);
-        flows.add(f);
-        source.outgoing.add(f);
-        target.incoming.add(f);
-    }
-
-    private void addLink(PlannedModule owner, SubsumptionLink link, Port targetPort) throws UnplannableException {
-        boolean inhibitor = link instanceof Inhibitor;
-        String kind = inhibitor ? "inhibitor" : "suppressor";
-        String label = owner.qualifiedName + "." + RsamlLabels.name(link);
-        PlannedPort trigger = port(link.getTrigger());
-        PlannedPort target = port(targetPort);
-        if (target == null) {
-            warnings.add(kind + " " + label + " is not generated: it has no target port");
-            return;
-        }
-        if (trigger == null) {
-            warnings.add(kind + " " + label + " is not generated: it has no trigger port, so nothing can activate it");
-            return;
-        }
-        LinkPlan lp = new LinkPlan(link, inhibitor, owner, label, trigger, target,
-                time(link.getDuration(), link, "duration", label, false));
-        if (!inhibitor && !lp.deliversData) {
-            warnings.add("suppressor " + label + " blocks " + target.qualifiedName + " but cannot replace its data: its trigger "
-                    + trigger.qualifiedName + " carries " + trigger.dataLabel() + ", the target " + target.dataLabel());
-        }
-        links.add(lp);
-        trigger.triggers.add(lp);
-        (inhibitor ? target.inhibitors : target.suppressors).add(lp);
-    }
-
-    private void assignRanks() {
-        TreeSet<Long> keys = new TreeSet<>(Comparator.reverseOrder());
-        for (Release r : releases) {
-            if (r.priorityKey > 0) {
-                keys.add(r.priorityKey);
-            }
-        }
-        List<Long> ordered = new ArrayList<>(keys);
-        for (Release r : releases) {
-            r.rank = r.priorityKey > 0 ? ordered.indexOf(r.priorityKey) + 2 : 1;
-        }
-    }
-
-    private void addMessageType(String key) {
-        if (!messageTypes.contains(key)) {
-            messageTypes.add(key);
-        }
-    }
-
     /**
      * Modules that react to data (not timed) and to each other in a cycle, each cycle in module
      * order. Where data carries no wave (see {@link Reaction}), a message would go round for ever.
      */
     public List<List<PlannedModule>> reactiveCycles() {
-        Map<PlannedModule, List<PlannedModule>> edges = new LinkedHashMap<>();
-        for (Flow f : flows) {
-            if (f.source.module.reactive && f.target.module.reactive) {
-                edges.computeIfAbsent(f.source.module, k -> new ArrayList<>()).add(f.target.module);
-            }
-        }
-        List<List<PlannedModule>> cycles = new ArrayList<>();
-        new Object() {
-            int index;
-            final Map<PlannedModule, Integer> idx = new HashMap<>();
-            final Map<PlannedModule, Integer> low = new HashMap<>();
-            final Deque<PlannedModule> stack = new ArrayDeque<>();
-
-            void run() {
-                for (PlannedModule m : modules) {
-                    if (!idx.containsKey(m)) {
-                        visit(m);
-                    }
-                }
-            }
-
-            void visit(PlannedModule v) {
-                idx.put(v, index);
-                low.put(v, index++);
-                stack.push(v);
-                for (PlannedModule w : edges.getOrDefault(v, List.of())) {
-                    if (!idx.containsKey(w)) {
-                        visit(w);
-                        low.put(v, Math.min(low.get(v), low.get(w)));
-                    } else if (stack.contains(w)) {
-                        low.put(v, Math.min(low.get(v), idx.get(w)));
-                    }
-                }
-                if (low.get(v).equals(idx.get(v))) {
-                    List<PlannedModule> scc = new ArrayList<>();
-                    PlannedModule w;
-                    do {
-                        w = stack.pop();
-                        scc.add(0, w);
-                    } while (w != v);
-                    if (scc.size() > 1 || edges.getOrDefault(v, List.of()).contains(v)) {
-                        scc.sort(Comparator.comparingInt(modules::indexOf));
-                        cycles.add(scc);
-                    }
-                }
-            }
-        }.run();
-        return cycles;
-    }
-
-    /** A time attribute of an element in nanoseconds, refused when the generated code cannot represent it. */
-    static long time(double value, TimeScaled owner, String attribute, String label, boolean period) throws UnplannableException {
-        TimeUnit unit = owner.getTimeUnit() == null ? TimeUnit.MS : owner.getTimeUnit();
-        String what = attribute + " " + format(value) + " " + unit.getLiteral() + " of " + label;
-        if (!Double.isFinite(value)) {
-            throw new UnplannableException((EObject) owner, what + " is not a finite number; give a number of " + unit.getLiteral());
-        }
-        if (value < 0) {
-            throw new UnplannableException((EObject) owner, what + " is negative; give 0 or more");
-        }
-        // The same limits as validation (RSA-20), so that a model without errors is always planned.
-        if (!RsamlTimes.representable(value, owner)) {
-            throw new UnplannableException((EObject) owner, what + " is longer than generated code can count (at most 2^60 ns, "
-                    + "about 36 years); give a shorter time");
-        }
-        long rounded = Math.round(value * unit.getValue());
-        if (period && !RsamlTimes.representablePeriod(value, owner)) {
-            throw new UnplannableException((EObject) owner, what + " is shorter than 1 ns, the resolution of generated code; "
-                    + "give a longer period");
-        }
-        return rounded;
-    }
-
-    private static String format(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
-    }
-
-    static boolean timed(RealTimeElement e) {
-        return e.getExecType() == ExecutionType.PERIODIC && e.getPeriod() > 0;
+        return ReactiveCycles.of(this);
     }
 
     /** A layer and its modules. */
@@ -418,63 +221,6 @@ public final class ExecutionPlan {
                     pf.actions.add(new PlannedAction(pf, a));
                 }
             }
-        }
-
-        void analyse() throws UnplannableException {
-            periodic = timed(module);
-            long modulePeriod = time(module.getPeriod(), module, "period", qualifiedName, true);
-            long moduleDelay = time(module.getDelay(), module, "delay", qualifiedName, false);
-            long moduleCost = time(module.getExecDuration(), module, "execution duration", qualifiedName, false);
-            boolean anyTimed = false;
-            for (PlannedFunction f : functions) {
-                f.analyse();
-                if (f.timed) {
-                    anyTimed = true;
-                    add(new Release(this, ReleaseKind.FUNCTION, f, null, f.periodNs, 0, f.deadlineNs, f.costNs,
-                            priorityKey(f.function.getSchedPolicy(), f.periodNs, f.deadlineNs), f.function.getSchedPolicy()));
-                } else {
-                    stepFunctions.add(f);
-                }
-                for (PlannedAction a : f.actions) {
-                    if (a.standalone) {
-                        anyTimed = true;
-                        add(new Release(this, ReleaseKind.ACTION, f, a, a.periodNs, a.startNs, a.deadlineNs, a.costNs,
-                                priorityKey(f.function.getSchedPolicy(), a.periodNs, a.deadlineNs), f.function.getSchedPolicy()));
-                    }
-                }
-            }
-            if (periodic && (!stepFunctions.isEmpty() || !anyTimed)) {
-                add(new Release(this, ReleaseKind.MODULE, null, null, modulePeriod, 0, moduleDelay > 0 ? moduleDelay : modulePeriod,
-                        moduleCost, 0, SchedulingPolicy.FIFO));
-            }
-            reactive = !periodic && (!stepFunctions.isEmpty() || functions.isEmpty());
-            if (module.getExecType() == ExecutionType.SPORADIC && module.getPeriod() > 0) {
-                minIntervalNs = modulePeriod;
-            }
-            if (reactive) {
-                reaction = new Reaction(this);
-                plan.reactions.add(reaction);
-            }
-            for (PlannedPort p : ports) {
-                if (p.messageType != null) {
-                    plan.addMessageType(p.messageType);
-                }
-            }
-        }
-
-        private void add(Release r) {
-            releases.add(r);
-            plan.releases.add(r);
-        }
-
-        private static long priorityKey(SchedulingPolicy policy, long periodNs, long deadlineNs) {
-            if (policy == SchedulingPolicy.RM) {
-                return periodNs;
-            }
-            if (policy == SchedulingPolicy.DM) {
-                return deadlineNs;
-            }
-            return 0;
         }
 
         public ExecutionPlan plan() {
@@ -588,21 +334,6 @@ public final class ExecutionPlan {
             this.name = RsamlLabels.name(function);
         }
 
-        void analyse() throws UnplannableException {
-            long period = time(function.getPeriod(), function, "period", label(), true);
-            long delay = time(function.getDelay(), function, "delay", label(), false);
-            costNs = time(function.getExecDuration(), function, "execution duration", label(), false);
-            timed = ExecutionPlan.timed(function);
-            periodNs = timed ? period : 0;
-            deadlineNs = delay > 0 ? delay : period;
-            if (function.getExecType() == ExecutionType.SPORADIC && function.getPeriod() > 0) {
-                minIntervalNs = period;
-            }
-            for (PlannedAction a : actions) {
-                a.analyse();
-            }
-        }
-
         public PlannedModule module() {
             return module;
         }
@@ -668,18 +399,6 @@ public final class ExecutionPlan {
             this.function = function;
             this.action = action;
             this.name = RsamlLabels.name(action);
-        }
-
-        void analyse() throws UnplannableException {
-            long period = time(action.getPeriod(), action, "period", label(), true);
-            long delay = time(action.getDelay(), action, "delay", label(), false);
-            costNs = time(action.getExecDuration(), action, "execution duration", label(), false);
-            startNs = time(action.getStartDate(), action, "start date", label(), false);
-            boolean ownTimer = timed(action);
-            periodNs = ownTimer ? period : 0;
-            deadlineNs = delay > 0 ? delay : period;
-            standalone = ownTimer && !(function.timed && periodNs == function.periodNs);
-            offsetNs = function.timed && !standalone && function.periodNs > 0 ? startNs % function.periodNs : 0;
         }
 
         public PlannedFunction function() {
