@@ -176,6 +176,7 @@ public final class SchedulabilityAnalysis {
         List<Task> scope = tasks;
         int effective = t.priority();
         boolean preemptive = policy == SchedulingPolicy.FIXED_PRIORITY;
+        boolean fifo = false;
         if (preemptive && ResponseTimes.anyBlockedByLock(tasks)) {
             effective = ResponseTimes.effectivePriority(tasks, t);
         } else if (preemptive) {
@@ -183,24 +184,26 @@ public final class SchedulabilityAnalysis {
             if (level.contains(first)) {
                 scope = level.stream().map(tasks::get).toList();
                 preemptive = false;
+                fifo = true;
             }
         }
         byIndex[first] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation(),
-                ResponseTimes.schedule(scope, t, effective, r.witness().job(), preemptive));
+                ResponseTimes.schedule(scope, t, effective, r.witness().job(), preemptive, fifo));
     }
 
     /**
      * Tasks of equal priority delay each other; the preemptive analysis counts every job of theirs
      * released until the analysed job completes, which is sound whatever order they run in (round
      * robin included). At the highest priority, jobs that run first in, first out among their equals
-     * are interrupted by nothing: a job waits only for the jobs released before or with it, which is
-     * the non-preemptive analysis without blocking (lower priorities are preempted, so they cannot block).
+     * are interrupted by nothing: a job waits only for the jobs released before or with it (lower
+     * priorities are preempted, so they cannot block), which {@link ResponseTimes#firstInFirstOut}
+     * analyses exactly.
      */
     private static void firstInFirstOutAtTheTop(List<Task> tasks, TaskResult[] byIndex, Set<String> runToCompletion) {
         List<Integer> level = firstInFirstOutLevel(tasks, runToCompletion);
         List<Task> equals = level.stream().map(tasks::get).toList();
         for (int i : level) {
-            TaskResult r = ResponseTimes.nonPreemptive(equals, tasks.get(i));
+            TaskResult r = ResponseTimes.firstInFirstOut(equals, tasks.get(i));
             byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation()
                     + " (first in, first out among the tasks of its priority, the highest: nothing interrupts it once started)",
                     r.witness());

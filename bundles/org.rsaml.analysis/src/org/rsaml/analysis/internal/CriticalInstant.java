@@ -20,7 +20,8 @@ import org.rsaml.analysis.Witness;
  * Builds a witness: the schedule from the critical instant, every task that can delay the analysed
  * one released together at 0 (after the blocking job, when there is one), up to the completion of
  * the analysed task's worst job. Ties between equal priorities go against the analysed task, as the
- * analysis assumes.
+ * analysis assumes: it runs after every equal job ready, or, first in, first out, after those
+ * released before or with it.
  */
 public final class CriticalInstant {
 
@@ -52,13 +53,24 @@ public final class CriticalInstant {
      * @param preemptive  whether a released higher-priority job takes the processor at once
      */
     public static Witness schedule(Task analysed, List<Task> interfering, Task blocker, long job, boolean preemptive) {
+        return schedule(analysed, interfering, blocker, job, preemptive, false);
+    }
+
+    /**
+     * @param firstInFirstOut equal priorities run in the order of their releases, the analysed task
+     *                        last among jobs released together (else after every equal job ready)
+     */
+    public static Witness schedule(Task analysed, List<Task> interfering, Task blocker, long job, boolean preemptive,
+            boolean firstInFirstOut) {
         List<Task> all = new ArrayList<>(interfering);
         all.add(analysed);
         int self = all.size() - 1;
-        Comparator<Job> order = Comparator.<Job>comparingInt(j -> -all.get(j.task).priority())
-                .thenComparingInt(j -> j.task == self ? 1 : 0)
-                .thenComparingLong(j -> j.release)
-                .thenComparingInt(j -> j.task);
+        Comparator<Job> byPriority = Comparator.<Job>comparingInt(j -> -all.get(j.task).priority());
+        Comparator<Job> order = firstInFirstOut
+                ? byPriority.thenComparingLong(j -> j.release).thenComparingInt(j -> j.task == self ? 1 : 0)
+                        .thenComparingInt(j -> j.task)
+                : byPriority.thenComparingInt(j -> j.task == self ? 1 : 0).thenComparingLong(j -> j.release)
+                        .thenComparingInt(j -> j.task);
         PriorityQueue<Job> ready = new PriorityQueue<>(order);
         long[] nextRelease = new long[all.size()];
         long[] nextIndex = new long[all.size()];

@@ -242,9 +242,53 @@ public final class ResponseTimes {
     }
 
     /**
+     * Tasks of one priority that run first in, first out, with nothing above them and nothing below
+     * that can block them (the runtime's SCHED_FIFO threads of a processor's highest rank): a job
+     * waits for exactly the jobs of the level released before or with it and not yet done. A job
+     * released at t in a busy period that began at s completes by s plus the work released in
+     * [s, t], at most sum_j (floor((t - s)/T_j) + 1) C_j &lt;= sum_j C_j + U (t - s); with U &lt;= 1 its
+     * response is therefore at most sum_j C_j, and all the tasks released together, the analysed one
+     * last among them, reach it. So the worst response of every task of the level is the sum of their
+     * costs (exact), and with U &gt; 1 there is no bound. Tasks with release jitter (lock groups) get
+     * {@link #nonPreemptive}, which bounds it.
+     */
+    public static TaskResult firstInFirstOut(List<Task> level, Task task) {
+        List<Task> others = interfering(level, task);
+        boolean jitter = task.jitter() > 0 || others.stream().anyMatch(t -> t.jitter() > 0);
+        if (jitter) {
+            return nonPreemptive(level, task);
+        }
+        if (utilisationVersusOne(task, others) > 0) {
+            return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, levelOverload(task, others), null);
+        }
+        try {
+            long worst = task.cost();
+            for (Task t : others) {
+                worst = Arith.add(worst, t.cost());
+            }
+            TaskResult r = result(task, worst, 0, others, null, false);
+            if (r.witness() == null) {
+                return r;
+            }
+            // one job of each other task delays it: the one released with it
+            List<Task> delaying = new ArrayList<>(others.stream().filter(t -> t.cost() > 0).toList());
+            delaying.sort((a, b) -> Long.compare(b.cost(), a.cost()));
+            java.util.Map<String, Long> listed = new java.util.LinkedHashMap<>();
+            for (Task t : delaying.subList(0, Math.min(MAX_LISTED, delaying.size()))) {
+                listed.put(t.name(), 1L);
+            }
+            Witness w = new Witness(task.name(), 0, 0, worst, List.of(), listed, null, false, delaying.size() - listed.size());
+            return new TaskResult(task, r.responseTime(), r.verdict(), r.explanation(), w);
+        } catch (ArithmeticException e) {
+            return notAnalysed(task, new Arith.TooLarge().getMessage());
+        }
+    }
+
+    /**
      * Non-preemptive fixed priority: a job, once started, runs to completion, so a lower-priority job
      * started just before can block it. Equal priorities are served first-in first-out, which the
-     * analysis covers by counting them as interfering.
+     * analysis bounds by counting them as interfering (jobs released until the job starts, not only
+     * before its release: sound, not exact; {@link #firstInFirstOut} is exact where it applies).
      */
     public static TaskResult nonPreemptive(List<Task> tasks, Task task) {
         List<Task> hp = interfering(tasks, task);
@@ -374,6 +418,15 @@ public final class ResponseTimes {
      * or above its priority, after the longest lower-priority job.
      */
     public static Witness schedule(List<Task> scope, Task task, int effective, long job, boolean preemptive) {
+        return schedule(scope, task, effective, job, preemptive, false);
+    }
+
+    /**
+     * The same; with {@code firstInFirstOut} (non-preemptive only), equal priorities run in the order
+     * of their releases, the analysed task last among those released with it.
+     */
+    public static Witness schedule(List<Task> scope, Task task, int effective, long job, boolean preemptive,
+            boolean firstInFirstOut) {
         Task analysed = effective == task.priority() ? task
                 : new Task(task.name(), task.period(), task.deadline(), task.cost(), effective, task.jitter(), task.group());
         List<Task> hp = new ArrayList<>();
@@ -385,7 +438,7 @@ public final class ResponseTimes {
                 blocker = t;
             }
         }
-        return CriticalInstant.schedule(analysed, hp, blocker, job, preemptive);
+        return CriticalInstant.schedule(analysed, hp, blocker, job, preemptive, firstInFirstOut);
     }
 
     static TaskResult notAnalysed(Task task, String why) {

@@ -217,6 +217,66 @@ class RandomTaskSetsTest {
         }
     }
 
+    /**
+     * One rank, every task first in, first out (the runtime's SCHED_FIFO threads of one priority): a
+     * job waits only for the jobs released before or with it, and the analysis is exact. For every
+     * task, the simulation in which it comes last among the jobs released with it (the simulator
+     * breaks ties by position, so it is moved to the end) reaches the analysed response exactly.
+     */
+    @Test
+    void firstInFirstOutAtOneRankEqualsSimulation() {
+        Random random = new Random(SEED + 31);
+        int compared = 0;
+        for (int s = 0; s < SETS / 2; s++) {
+            List<Task> tasks = new ArrayList<>();
+            for (Task t : randomSet(random, Deadlines.ARBITRARY)) {
+                tasks.add(new Task(t.name(), t.period(), t.deadline(), t.cost(), 1));
+            }
+            java.util.Set<String> fifo = new java.util.HashSet<>();
+            tasks.forEach(t -> fifo.add(t.name()));
+            ProcessorResult result = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, tasks, fifo);
+            for (int i = 0; i < tasks.size(); i++) {
+                TaskResult r = result.tasks().get(i);
+                assertTrue(r.responseTime().isPresent(), "set " + s + ", " + r.task().name() + ": utilisation at most 1 has a bound: "
+                        + r.explanation());
+                List<Task> lastInTies = new ArrayList<>(tasks);
+                lastInTies.add(lastInTies.remove(i));
+                long[] simulated = Simulator.worstResponses(lastInTies, Simulator.Mode.FIXED_PRIORITY, Simulator.hyperperiod(tasks));
+                assertEquals(r.responseTime().getAsLong(), simulated[tasks.size() - 1],
+                        "set " + s + " " + tasks + ", " + r.task().name() + ": analysed response against the simulation");
+                compared++;
+            }
+        }
+        assertTrue(compared > SETS, "too few tasks compared: " + compared);
+    }
+
+    /**
+     * The three tasks of one rank (all FIFO) from the timing documentation: C's worst response is
+     * 36 ms, everything released with it (A's job of 1 ms, B's of 20 ms) and nothing released after
+     * (not A's jobs at 10, 20 and 30 ms); the witness of its miss (deadline 30 ms) runs the jobs in
+     * the order of their releases.
+     */
+    @Test
+    void firstInFirstOutCountsOnlyJobsReleasedBeforeOrWith() {
+        long ms = 1_000_000L;
+        List<Task> tasks = List.of(new Task("A", 10 * ms, 40 * ms, ms, 1), new Task("B", 100 * ms, 100 * ms, 20 * ms, 1),
+                new Task("C", 100 * ms, 30 * ms, 15 * ms, 1));
+        ProcessorResult result = SchedulabilityAnalysis.analyse("cpu", SchedulingPolicy.FIXED_PRIORITY, tasks,
+                java.util.Set.of("A", "B", "C"));
+        TaskResult c = result.tasks().get(2);
+        assertEquals(36 * ms, c.responseTime().getAsLong(), c.explanation());
+        assertEquals(Verdict.MISSES, c.verdict(), c.explanation());
+        assertEquals(Verdict.MEETS, result.tasks().get(0).verdict(), "A (36 ms, due in 40 ms): " + result.tasks().get(0).explanation());
+        assertTrue(c.witness() != null && !c.witness().summary(), "the first miss has its schedule: " + c.witness());
+        for (org.rsaml.analysis.Segment seg : c.witness().schedule()) {
+            if (seg.start() < 36 * ms) {
+                long released = seg.task().equals("A") ? seg.job() * 10 * ms : seg.job() * 100 * ms;
+                assertTrue(released <= 0, "only jobs released with C's first run before it completes: " + c.witness().schedule());
+            }
+        }
+        assertEquals(36 * ms, c.witness().completion(), "the witness ends when C completes: " + c.witness().schedule());
+    }
+
     /** Non-preemptive analysis is an upper bound: no simulated response exceeds it. */
     @Test
     void nonPreemptiveBoundsSimulation() {
