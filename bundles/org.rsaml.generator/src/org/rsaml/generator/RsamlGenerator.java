@@ -100,10 +100,10 @@ public final class RsamlGenerator {
         List<String> warnings = new ArrayList<>(plan.warnings());
         warnings.addAll(project.warnings());
         OutputWriter.Outcome outcome = OutputWriter.write(outputDir, project.files(), target.id(), project.keep());
-        warnings.addAll(outcome.warnings);
+        warnings.addAll(outcome.warnings());
         Path dir = outputDir.toAbsolutePath().normalize();
-        return new GenerationResult(target, dir, paths(outcome.written), paths(outcome.unchanged), paths(outcome.preserved),
-                paths(outcome.deleted), findings, warnings);
+        return new GenerationResult(target, dir, paths(outcome.written()), paths(outcome.unchanged()), paths(outcome.preserved()),
+                paths(outcome.deleted()), findings, warnings);
     }
 
     private static List<Path> paths(List<String> relative) {
