@@ -10,7 +10,8 @@ import org.rsaml.analysis.internal.Durations;
 import org.rsaml.model.LatencyRequirement;
 
 /**
- * An end-to-end latency requirement checked against every path between its source and its target.
+ * An end-to-end latency requirement checked against every path between its source and its target
+ * (or the paths through the elements it names).
  *
  * @param requirement  the model's requirement
  * @param name         its name
@@ -24,12 +25,28 @@ import org.rsaml.model.LatencyRequirement;
  * @param worstPath    the hops of the path with the largest bounded latency (empty when there is none)
  * @param paths        how many paths were examined
  * @param explanation  what decided the verdict
+ * @param via          the elements the paths must pass through, in order, as labels (empty: every path)
+ * @param pathBounds   every path examined with its own bounds, the longest first (at most
+ *                     {@link #MAX_LISTED_PATHS}; {@code paths} counts them all)
  */
 public record LatencyResult(LatencyRequirement requirement, String name, String from, String to, long maxNs, boolean dataAge,
-        Verdict verdict, long reactionNs, long dataAgeNs, List<Hop> worstPath, int paths, String explanation) {
+        Verdict verdict, long reactionNs, long dataAgeNs, List<Hop> worstPath, int paths, String explanation, List<String> via,
+        List<PathBound> pathBounds) {
+
+    /** Paths listed with their bounds per requirement; the others are counted. */
+    public static final int MAX_LISTED_PATHS = 100;
 
     public LatencyResult {
         worstPath = List.copyOf(worstPath);
+        via = List.copyOf(via);
+        pathBounds = List.copyOf(pathBounds);
+    }
+
+    /** A result without the paths listed one by one. */
+    public LatencyResult(LatencyRequirement requirement, String name, String from, String to, long maxNs, boolean dataAge,
+            Verdict verdict, long reactionNs, long dataAgeNs, List<Hop> worstPath, int paths, String explanation) {
+        this(requirement, name, from, to, maxNs, dataAge, verdict, reactionNs, dataAgeNs, worstPath, paths, explanation, List.of(),
+                List.of());
     }
 
     /** The worst path in one line, {@code perception/filter +15 ms -> control/drive +22 ms}; empty without one. */

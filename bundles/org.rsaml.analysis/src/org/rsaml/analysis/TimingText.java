@@ -118,7 +118,8 @@ public final class TimingText {
 
     private static void latency(StringBuilder out, LatencyResult l) {
         out.append("latency requirement '").append(l.name()).append("' from ").append(l.from()).append(" to ").append(l.to()).append(": ")
-                .append(l.dataAge() ? "data age" : "reaction time").append(" at most ").append(Durations.format(l.maxNs())).append('\n');
+                .append(l.dataAge() ? "data age" : "reaction time").append(" at most ").append(Durations.format(l.maxNs()))
+                .append(l.via().isEmpty() ? "" : ", the paths through " + String.join(", then ", l.via())).append('\n');
         out.append("  verdict: ").append(word(l.verdict())).append(": ").append(l.explanation()).append('\n');
         if (!l.worstPath().isEmpty()) {
             out.append("  worst path (").append(l.paths()).append(l.paths() == 1 ? " path" : " paths").append(" examined; reaction time ")
@@ -128,6 +129,20 @@ public final class TimingText {
                 out.append("    ").append(h.label()).append(": +").append(Durations.format(h.totalNs())).append(" (wait ")
                         .append(Durations.format(h.waitNs())).append(" + response ").append(Durations.format(h.responseNs())).append("): ")
                         .append(h.activation()).append('\n');
+            }
+        }
+        if (!l.pathBounds().isEmpty()) {
+            out.append("  every path, the longest first").append(l.paths() > l.pathBounds().size()
+                    ? " (the " + l.pathBounds().size() + " longest of " + l.paths() + ")" : "").append(":\n");
+            for (PathBound b : l.pathBounds()) {
+                out.append("    ").append(b.text().isEmpty() ? "(no stage)" : b.text()).append(": ");
+                if (b.bounded()) {
+                    out.append("reaction time ").append(Durations.format(b.reactionNs())).append(", data age ")
+                            .append(Durations.format(b.dataAgeNs()));
+                } else {
+                    out.append("no bound (").append(b.unbounded()).append(')');
+                }
+                out.append('\n');
             }
         }
     }

@@ -23,7 +23,8 @@ package org.rsaml.model;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getAction()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA27_actionWithinBudget'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA27_actionWithinBudget='(function &lt;&gt; null and function.execDuration &gt; 0 implies compareTime(execDuration, function, function.execDuration) &lt;= 0) and ((function &lt;&gt; null and function.module &lt;&gt; null and function.module.execDuration &gt; 0) implies compareTime(execDuration, function.module, function.module.execDuration) &lt;= 0) and ((function &lt;&gt; null and function.module &lt;&gt; null and function.module.layer &lt;&gt; null and function.module.layer.maxExecTime &gt; 0) implies compareTime(execDuration, function.module.layer, function.module.layer.maxExecTime) &lt;= 0)'"
  * @generated
  */
 public interface Action extends RealTimeElement {

@@ -27,8 +27,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getFunction()
- * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA07_realTimeFunctionActions RSA09_uniqueNames'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA07_realTimeFunctionActions='type = ElementType::realTime implies actions-&gt;forAll(a | a.type = ElementType::realTime)' RSA09_uniqueNames='actions-&gt;isUnique(normalizedName())'"
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA07_realTimeFunctionActions RSA09_uniqueNames RSA27_functionWithinBudget'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA07_realTimeFunctionActions='type = ElementType::realTime implies actions-&gt;forAll(a | a.type = ElementType::realTime)' RSA09_uniqueNames='actions-&gt;isUnique(normalizedName())' RSA27_functionWithinBudget='(module &lt;&gt; null and module.execDuration &gt; 0 implies compareTime(execDuration, module, module.execDuration) &lt;= 0) and ((module &lt;&gt; null and module.layer &lt;&gt; null and module.layer.maxExecTime &gt; 0) implies compareTime(execDuration, module.layer, module.layer.maxExecTime) &lt;= 0)'"
  * @generated
  */
 public interface Function extends RealTimeElement {

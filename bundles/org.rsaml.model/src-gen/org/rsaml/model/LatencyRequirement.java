@@ -4,6 +4,7 @@
  */
 package org.rsaml.model;
 
+import org.eclipse.emf.common.util.EList;
 
 /**
  * <!-- begin-user-doc -->
@@ -11,7 +12,7 @@ package org.rsaml.model;
  * <!-- end-user-doc -->
  *
  * <!-- begin-model-doc -->
- * An end-to-end timing requirement: data from the source (a sensor or an output port) must reach the target (an actuator or an entry port) within maxLatency, along every path of connections between them.
+ * An end-to-end timing requirement: data from the source (a sensor or an output port) must reach the target (an actuator or an entry port) within maxLatency, along every path of connections, suppressors and inhibitors between them, or only the paths through the elements named in via.
  * <!-- end-model-doc -->
  *
  * <p>
@@ -22,6 +23,7 @@ package org.rsaml.model;
  *   <li>{@link org.rsaml.model.LatencyRequirement#getTarget <em>Target</em>}</li>
  *   <li>{@link org.rsaml.model.LatencyRequirement#getMaxLatency <em>Max Latency</em>}</li>
  *   <li>{@link org.rsaml.model.LatencyRequirement#getKind <em>Kind</em>}</li>
+ *   <li>{@link org.rsaml.model.LatencyRequirement#getVia <em>Via</em>}</li>
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getLatencyRequirement()
@@ -133,5 +135,20 @@ public interface LatencyRequirement extends NamedElement, TimeScaled {
 	 * @generated
 	 */
 	void setKind(LatencyKind value);
+
+	/**
+	 * Returns the value of the '<em><b>Via</b></em>' reference list.
+	 * The list contents are of type {@link org.rsaml.model.NamedElement}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The path the requirement is about: the modules, ports, inhibitors and suppressors it passes through, in this order (others may lie between them). Empty: every path from the source to the target.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Via</em>' reference list.
+	 * @see org.rsaml.model.RsamlPackage#getLatencyRequirement_Via()
+	 * @model
+	 * @generated
+	 */
+	EList<NamedElement> getVia();
 
 } // LatencyRequirement

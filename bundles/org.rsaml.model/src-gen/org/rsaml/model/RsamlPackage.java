@@ -3441,13 +3441,22 @@ public interface RsamlPackage extends EPackage {
 	int LATENCY_REQUIREMENT__KIND = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
+	 * The feature id for the '<em><b>Via</b></em>' reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LATENCY_REQUIREMENT__VIA = NAMED_ELEMENT_FEATURE_COUNT + 5;
+
+	/**
 	 * The number of structural features of the '<em>Latency Requirement</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int LATENCY_REQUIREMENT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 5;
+	int LATENCY_REQUIREMENT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 6;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -4947,6 +4956,17 @@ public interface RsamlPackage extends EPackage {
 	EAttribute getLatencyRequirement_Kind();
 
 	/**
+	 * Returns the meta object for the reference list '{@link org.rsaml.model.LatencyRequirement#getVia <em>Via</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the reference list '<em>Via</em>'.
+	 * @see org.rsaml.model.LatencyRequirement#getVia()
+	 * @see #getLatencyRequirement()
+	 * @generated
+	 */
+	EReference getLatencyRequirement_Via();
+
+	/**
 	 * Returns the meta object for enum '{@link org.rsaml.model.ArchitectureCategory <em>Architecture Category</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -6122,6 +6142,14 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EAttribute LATENCY_REQUIREMENT__KIND = eINSTANCE.getLatencyRequirement_Kind();
+
+		/**
+		 * The meta object literal for the '<em><b>Via</b></em>' reference list feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EReference LATENCY_REQUIREMENT__VIA = eINSTANCE.getLatencyRequirement_Via();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.ArchitectureCategory <em>Architecture Category</em>}' enum.

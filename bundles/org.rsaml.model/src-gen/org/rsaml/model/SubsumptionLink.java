@@ -24,8 +24,8 @@ package org.rsaml.model;
  *
  * @see org.rsaml.model.RsamlPackage#getSubsumptionLink()
  * @model abstract="true"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='duration &gt;= 0' RSA20_representableTimes='representable(duration)'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes RSA26_durationBelowTriggerPeriod'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='duration &gt;= 0' RSA20_representableTimes='representable(duration)' RSA26_durationBelowTriggerPeriod='(trigger &lt;&gt; null and trigger.module &lt;&gt; null and duration &gt; 0) implies (((trigger.module.execType = ExecutionType::periodic and trigger.module.period &gt; 0) and (trigger.module.functions-&gt;exists(f | not (f.execType = ExecutionType::periodic and f.period &gt; 0)) or not trigger.module.functions-&gt;exists(f | (f.execType = ExecutionType::periodic and f.period &gt; 0) or f.actions-&gt;exists(a | (a.execType = ExecutionType::periodic and a.period &gt; 0)))) implies trigger.module.compareTime(trigger.module.period, self, duration) &gt; 0) and trigger.module.functions-&gt;forAll(f | (f.execType = ExecutionType::periodic and f.period &gt; 0) implies f.compareTime(f.period, self, duration) &gt; 0) and trigger.module.functions-&gt;forAll(f | f.actions-&gt;forAll(a | (a.execType = ExecutionType::periodic and a.period &gt; 0) implies a.compareTime(a.period, self, duration) &gt; 0)))'"
  * @generated
  */
 public interface SubsumptionLink extends NamedElement, TimeScaled {

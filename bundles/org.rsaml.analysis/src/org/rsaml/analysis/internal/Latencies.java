@@ -5,6 +5,7 @@
 package org.rsaml.analysis.internal;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -13,12 +14,15 @@ import java.util.Set;
 
 import org.rsaml.analysis.Hop;
 import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.PathBound;
 import org.rsaml.analysis.ProcessorTiming;
 import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.TaskSource;
 import org.rsaml.analysis.Verdict;
+import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.Flow;
+import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
 import org.rsaml.analysis.plan.PlanTimes;
@@ -26,8 +30,10 @@ import org.rsaml.model.Actuator;
 import org.rsaml.model.EntryPort;
 import org.rsaml.model.LatencyKind;
 import org.rsaml.model.LatencyRequirement;
+import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Sensor;
+import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.TimeUnit;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.model.support.RsamlTimes;
@@ -110,11 +116,18 @@ public final class Latencies {
         final LatencyRequirement requirement;
         final Set<PlannedModule> visited = new HashSet<>();
         final List<Hop> hops = new ArrayList<>();
+        /** The modules, ports and links the current path has passed, for {@code via}. */
+        final List<EObject> trail = new ArrayList<>();
+        /** The longest paths found so far (the shortest of them first, to be replaced). */
+        final java.util.PriorityQueue<PathBound> listed;
+        List<EObject> via = List.of();
         int paths;
         long worstReaction = -1;
         long worstAge = -1;
         List<Hop> worstPath = List.of();
         String unbounded;
+        /** Why the current path has no bound (its first stage without one), or null. */
+        String pathUnbounded;
         Actuator actuator;
         EntryPort entry;
         /** The modules from which the target can be reached: the search goes nowhere else. */
@@ -124,6 +137,19 @@ public final class Latencies {
             this.plan = plan;
             this.stages = stages;
             this.requirement = requirement;
+            boolean age = requirement.getKind() == LatencyKind.DATA_AGE;
+            this.longest = Comparator.comparingLong((PathBound b) -> b.bounded() ? (age ? b.dataAgeNs() : b.reactionNs()) : Long.MAX_VALUE);
+            this.listed = new java.util.PriorityQueue<>(longest);
+        }
+
+        /** Paths by their bound for the requirement's kind; a path without a bound is the longest. */
+        final Comparator<PathBound> longest;
+
+        private void list(PathBound b) {
+            listed.add(b);
+            if (listed.size() > LatencyResult.MAX_LISTED_PATHS) {
+                listed.poll();
+            }
         }
 
         LatencyResult run() {
@@ -138,6 +164,17 @@ public final class Latencies {
                         + " is not a positive time generated code can count: give the longest latency allowed");
             }
             long maxNs = PlanTimes.nanos(max, requirement);
+            for (EObject e : requirement.getVia()) {
+                boolean known = e instanceof Module || e instanceof org.rsaml.model.Port p && plan.port(p) != null
+                        || e instanceof SubsumptionLink l && plan.links().stream().anyMatch(k -> k.link() == l);
+                if (!known) {
+                    return fail(name, from, to, maxNs, age, "via names " + label(e) + ", which is not a module, a port of a module,"
+                            + " an inhibitor or a suppressor that the generated code runs: name those the path passes through");
+                }
+            }
+            via = List.copyOf(requirement.getVia());
+            List<String> through = via.stream().map(this::label).toList();
+            String pathWord = through.isEmpty() ? "path" : "path through " + String.join(", then ", through);
             if (requirement.getTarget() instanceof Actuator a) {
                 actuator = a;
             } else if (requirement.getTarget() instanceof EntryPort e) {
@@ -160,7 +197,9 @@ public final class Latencies {
             } else if (requirement.getSource() instanceof OutputPort p && plan.port(p) != null) {
                 PlannedPort port = plan.port(p);
                 visited.add(port.module());
+                trail.add(port.module().module());
                 follow(port.module(), port, stages.get(port.module()).periodNs());
+                trail.remove(trail.size() - 1);
                 visited.remove(port.module());
             } else {
                 return fail(name, from, to, maxNs, age, "the source " + from + " is neither a sensor nor an output port of a module: choose one");
@@ -169,12 +208,14 @@ public final class Latencies {
             String explanation;
             long bound = age ? worstAge : worstReaction;
             String what = age ? "maximum data age" : "worst-case reaction time";
-            if (paths > MAX_PATHS) {
+            if (this.paths > MAX_PATHS) {
                 verdict = Verdict.NOT_ANALYSED;
-                explanation = "not analysed: more than " + MAX_PATHS + " paths from " + from + " to " + to;
-            } else if (paths == 0) {
+                explanation = "not analysed: more than " + MAX_PATHS + " " + pathWord + "s from " + from + " to " + to;
+            } else if (this.paths == 0) {
                 verdict = Verdict.MISSES;
-                explanation = "no path of connections leads from " + from + " to " + to + ": the data never arrives";
+                explanation = through.isEmpty()
+                        ? "no path of connections leads from " + from + " to " + to + ": the data never arrives"
+                        : "no " + pathWord + " leads from " + from + " to " + to + ": the data never arrives that way";
             } else if (bound > maxNs) {
                 verdict = Verdict.MISSES;
                 explanation = "the " + what + " can reach " + Durations.format(bound) + ", more than " + Durations.format(maxNs);
@@ -183,11 +224,15 @@ public final class Latencies {
                 explanation = "not analysed: " + unbounded;
             } else {
                 verdict = Verdict.MEETS;
-                explanation = "the " + what + " is at most " + Durations.format(bound) + " over " + paths + " path"
-                        + (paths == 1 ? "" : "s") + ", within " + Durations.format(maxNs);
+                explanation = "the " + what + " is at most " + Durations.format(bound) + " over " + this.paths + " "
+                        + (through.isEmpty() ? "path" + (this.paths == 1 ? "" : "s")
+                                : (this.paths == 1 ? "path" : "paths") + " through " + String.join(", then ", through))
+                        + ", within " + Durations.format(maxNs);
             }
-            return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, worstReaction, worstAge, worstPath, Math.min(paths,
-                    MAX_PATHS), explanation);
+            List<PathBound> longestFirst = new ArrayList<>(listed);
+            longestFirst.sort(longest.reversed());
+            return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, worstReaction, worstAge, worstPath,
+                    Math.min(this.paths, MAX_PATHS), explanation, through, longestFirst);
         }
 
         private LatencyResult fail(String name, String from, String to, long maxNs, boolean age, String why) {
@@ -195,43 +240,80 @@ public final class Latencies {
                     "not analysed: " + why);
         }
 
-        /** Data reaches module m, which takes it through its stage st. */
+        /** Data (or, through an inhibitor, control) reaches module m, which takes it through its stage st. */
         private void enter(PlannedModule m, Stage st) {
             if (paths > MAX_PATHS || !visited.add(m)) {
                 return;
             }
+            trail.add(m.module());
+            String before = pathUnbounded;
             if (st.hop() == null) {
-                // a path through here reaches the target but has no bound
-                paths++;
-                if (unbounded == null) {
-                    unbounded = st.unbounded();
+                // paths through here have no bound; they are still followed, to count those that reach the target
+                if (pathUnbounded == null) {
+                    pathUnbounded = st.unbounded();
                 }
-                visited.remove(m);
-                return;
+            } else {
+                hops.add(st.hop());
             }
-            hops.add(st.hop());
             if (actuator != null && m.module().getActuators().contains(actuator)) {
                 record(st.periodNs());
             }
             follow(m, null, st.periodNs());
-            hops.remove(hops.size() - 1);
+            if (st.hop() != null) {
+                hops.remove(hops.size() - 1);
+            }
+            pathUnbounded = before;
+            trail.remove(trail.size() - 1);
             visited.remove(m);
         }
 
+        /**
+         * What m sends: along its flows; a suppressor's trigger message to the suppressed entry port
+         * (as data when the two carry the same data, else as control: the target's input is blocked,
+         * which its module acts on at its next activation); an inhibitor's, at once to the inhibited
+         * output port, whose module then sends nothing more there, while what it sent before still
+         * travels on.
+         */
         private void follow(PlannedModule m, PlannedPort only, long period) {
             for (PlannedPort out : m.outputs()) {
                 if (only != null && out != only) {
                     continue;
                 }
+                trail.add(out.port());
                 for (Flow f : out.outgoing()) {
+                    PlannedModule next = f.target().module();
+                    trail.add(f.target().port());
                     if (entry != null && f.target().port() == entry) {
                         record(period);
                     }
-                    PlannedModule next = f.target().module();
                     if (!visited.contains(next) && reaching.contains(next)) {
                         enter(next, stages.get(next));
                     }
+                    trail.remove(trail.size() - 1);
                 }
+                for (LinkPlan link : out.triggers()) {
+                    PlannedModule next = link.target().module();
+                    trail.add(link.link());
+                    trail.add(link.target().port());
+                    if (!link.inhibitor()) {
+                        if (entry != null && link.target().port() == entry) {
+                            record(period);
+                        }
+                        if (!visited.contains(next) && reaching.contains(next)) {
+                            enter(next, stages.get(next));
+                        }
+                    } else if (!visited.contains(next) && reaching.contains(next) && paths <= MAX_PATHS) {
+                        visited.add(next);
+                        hops.add(new Hop(link.qualifiedName(), next.module(), "inhibits " + link.target().qualifiedName()
+                                + " from the trigger's message on, at once", 0, 0));
+                        follow(next, link.target(), 0);
+                        hops.remove(hops.size() - 1);
+                        visited.remove(next);
+                    }
+                    trail.remove(trail.size() - 1);
+                    trail.remove(trail.size() - 1);
+                }
+                trail.remove(trail.size() - 1);
             }
         }
 
@@ -243,6 +325,12 @@ public final class Latencies {
                 upstream.computeIfAbsent(f.target().module(), k -> new ArrayList<>()).add(f.source().module());
                 if (entry != null && f.target().port() == entry) {
                     todo.add(f.source().module());
+                }
+            }
+            for (LinkPlan l : plan.links()) {
+                upstream.computeIfAbsent(l.target().module(), k -> new ArrayList<>()).add(l.trigger().module());
+                if (entry != null && !l.inhibitor() && l.target().port() == entry) {
+                    todo.add(l.trigger().module());
                 }
             }
             if (actuator != null) {
@@ -263,12 +351,23 @@ public final class Latencies {
         }
 
         private void record(long lastPeriod) {
+            if (!throughVia()) {
+                return;
+            }
             paths++;
+            if (pathUnbounded != null) {
+                if (unbounded == null) {
+                    unbounded = pathUnbounded;
+                }
+                list(new PathBound(hops, -1, -1, pathUnbounded));
+                return;
+            }
             long reaction = 0;
             for (Hop h : hops) {
                 reaction = Math.addExact(reaction, h.totalNs());
             }
             long age = Math.addExact(reaction, lastPeriod);
+            list(new PathBound(hops, reaction, age, null));
             if (reaction > worstReaction || age > worstAge) {
                 boolean ageKind = requirement.getKind() == LatencyKind.DATA_AGE;
                 if ((ageKind ? age > worstAge : reaction > worstReaction)) {
@@ -279,7 +378,26 @@ public final class Latencies {
             }
         }
 
+        /** Whether the current path passes the requirement's {@code via} elements in their order. */
+        private boolean throughVia() {
+            int next = 0;
+            for (int i = 0; i < trail.size() && next < via.size(); i++) {
+                if (trail.get(i) == via.get(next)) {
+                    next++;
+                }
+            }
+            return next == via.size();
+        }
+
         private String label(Object element) {
+            if (element instanceof Module m) {
+                PlannedModule pm = plan.modules().stream().filter(x -> x.module() == m).findFirst().orElse(null);
+                return pm == null ? "module '" + RsamlLabels.name(m) + "'" : pm.qualifiedName();
+            }
+            if (element instanceof SubsumptionLink l) {
+                return plan.links().stream().filter(k -> k.link() == l).map(k -> (k.inhibitor() ? "inhibitor " : "suppressor ")
+                        + k.qualifiedName()).findFirst().orElse(RsamlLabels.describe(l));
+            }
             if (element instanceof Sensor s) {
                 return "sensor '" + RsamlLabels.name(s) + "'";
             }

@@ -193,6 +193,17 @@ public final class TimingOverlay implements DiagramOverlay {
         } else if (hops.contains(null)) {
             details.add("(the path's modules are not all known to the analysis, so the path is not drawn)");
         }
+        if (!l.via().isEmpty()) {
+            details.add("the paths through " + String.join(", then ", l.via()));
+        }
+        if (l.pathBounds().size() > 1 || l.paths() > l.pathBounds().size()) {
+            details.add("every path, the longest first" + (l.paths() > l.pathBounds().size()
+                    ? " (the " + l.pathBounds().size() + " longest of " + l.paths() + ")" : "") + ":");
+            for (org.rsaml.analysis.PathBound b : l.pathBounds()) {
+                details.add("- " + b.text() + ": " + (b.bounded() ? "reaction time " + format(b.reactionNs()) + ", data age "
+                        + format(b.dataAgeNs()) : "no bound (" + b.unbounded() + ")"));
+            }
+        }
         items.add(new Item(SECTION, line, details, path));
     }
 

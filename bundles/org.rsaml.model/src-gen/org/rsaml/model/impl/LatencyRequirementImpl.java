@@ -6,6 +6,8 @@ package org.rsaml.model.impl;
 
 import java.lang.reflect.InvocationTargetException;
 
+import java.util.Collection;
+
 import org.eclipse.emf.common.notify.Notification;
 
 import org.eclipse.emf.common.util.EList;
@@ -14,6 +16,8 @@ import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.InternalEObject;
 
 import org.eclipse.emf.ecore.impl.ENotificationImpl;
+
+import org.eclipse.emf.ecore.util.EObjectResolvingEList;
 
 import org.rsaml.model.LatencyKind;
 import org.rsaml.model.LatencyRequirement;
@@ -35,6 +39,7 @@ import org.rsaml.model.TimeUnit;
  *   <li>{@link org.rsaml.model.impl.LatencyRequirementImpl#getTarget <em>Target</em>}</li>
  *   <li>{@link org.rsaml.model.impl.LatencyRequirementImpl#getMaxLatency <em>Max Latency</em>}</li>
  *   <li>{@link org.rsaml.model.impl.LatencyRequirementImpl#getKind <em>Kind</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.LatencyRequirementImpl#getVia <em>Via</em>}</li>
  * </ul>
  *
  * @generated
@@ -119,6 +124,16 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 	 * @ordered
 	 */
 	protected LatencyKind kind = KIND_EDEFAULT;
+
+	/**
+	 * The cached value of the '{@link #getVia() <em>Via</em>}' reference list.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getVia()
+	 * @generated
+	 * @ordered
+	 */
+	protected EList<NamedElement> via;
 
 	/**
 	 * <!-- begin-user-doc -->
@@ -294,6 +309,19 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 	 * @generated
 	 */
 	@Override
+	public EList<NamedElement> getVia() {
+		if (via == null) {
+			via = new EObjectResolvingEList<NamedElement>(NamedElement.class, this, RsamlPackage.LATENCY_REQUIREMENT__VIA);
+		}
+		return via;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public double toMilliseconds(final double value) {
 		return value * getTimeUnit().getValue() / 1000000.0;
 	}
@@ -348,6 +376,8 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 				return getMaxLatency();
 			case RsamlPackage.LATENCY_REQUIREMENT__KIND:
 				return getKind();
+			case RsamlPackage.LATENCY_REQUIREMENT__VIA:
+				return getVia();
 		}
 		return super.eGet(featureID, resolve, coreType);
 	}
@@ -357,6 +387,7 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	@SuppressWarnings("unchecked")
 	@Override
 	public void eSet(int featureID, Object newValue) {
 		switch (featureID) {
@@ -374,6 +405,10 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 				return;
 			case RsamlPackage.LATENCY_REQUIREMENT__KIND:
 				setKind((LatencyKind)newValue);
+				return;
+			case RsamlPackage.LATENCY_REQUIREMENT__VIA:
+				getVia().clear();
+				getVia().addAll((Collection<? extends NamedElement>)newValue);
 				return;
 		}
 		super.eSet(featureID, newValue);
@@ -402,6 +437,9 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 			case RsamlPackage.LATENCY_REQUIREMENT__KIND:
 				setKind(KIND_EDEFAULT);
 				return;
+			case RsamlPackage.LATENCY_REQUIREMENT__VIA:
+				getVia().clear();
+				return;
 		}
 		super.eUnset(featureID);
 	}
@@ -424,6 +462,8 @@ public class LatencyRequirementImpl extends NamedElementImpl implements LatencyR
 				return maxLatency != MAX_LATENCY_EDEFAULT;
 			case RsamlPackage.LATENCY_REQUIREMENT__KIND:
 				return kind != KIND_EDEFAULT;
+			case RsamlPackage.LATENCY_REQUIREMENT__VIA:
+				return via != null && !via.isEmpty();
 		}
 		return super.eIsSet(featureID);
 	}

@@ -1667,6 +1667,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EReference getLatencyRequirement_Via() {
+		return (EReference)latencyRequirementEClass.getEStructuralFeatures().get(4);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EEnum getArchitectureCategory() {
 		return architectureCategoryEEnum;
 	}
@@ -1925,6 +1935,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEReference(latencyRequirementEClass, LATENCY_REQUIREMENT__TARGET);
 		createEAttribute(latencyRequirementEClass, LATENCY_REQUIREMENT__MAX_LATENCY);
 		createEAttribute(latencyRequirementEClass, LATENCY_REQUIREMENT__KIND);
+		createEReference(latencyRequirementEClass, LATENCY_REQUIREMENT__VIA);
 
 		// Create enums
 		architectureCategoryEEnum = createEEnum(ARCHITECTURE_CATEGORY);
@@ -2185,6 +2196,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEReference(getLatencyRequirement_Target(), this.getNamedElement(), null, "target", null, 1, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getLatencyRequirement_MaxLatency(), ecorePackage.getEDouble(), "maxLatency", "0.0", 0, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getLatencyRequirement_Kind(), this.getLatencyKind(), "kind", "reactionTime", 0, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEReference(getLatencyRequirement_Via(), this.getNamedElement(), null, "via", null, 0, -1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
 		// Initialize enums and add enum literals
 		initEEnum(architectureCategoryEEnum, ArchitectureCategory.class, "ArchitectureCategory");
@@ -2293,7 +2305,13 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (functionEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA07_realTimeFunctionActions RSA09_uniqueNames"
+			   "constraints", "RSA07_realTimeFunctionActions RSA09_uniqueNames RSA27_functionWithinBudget"
+		   });
+		addAnnotation
+		  (actionEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA27_actionWithinBudget"
 		   });
 		addAnnotation
 		  (rtActionEClass,
@@ -2317,7 +2335,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (subsumptionLinkEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes"
+			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes RSA26_durationBelowTriggerPeriod"
 		   });
 		addAnnotation
 		  (inhibitorEClass,
@@ -2419,7 +2437,14 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "RSA07_realTimeFunctionActions", "type = ElementType::realTime implies actions->forAll(a | a.type = ElementType::realTime)",
-			   "RSA09_uniqueNames", "actions->isUnique(normalizedName())"
+			   "RSA09_uniqueNames", "actions->isUnique(normalizedName())",
+			   "RSA27_functionWithinBudget", "(module <> null and module.execDuration > 0 implies compareTime(execDuration, module, module.execDuration) <= 0) and ((module <> null and module.layer <> null and module.layer.maxExecTime > 0) implies compareTime(execDuration, module.layer, module.layer.maxExecTime) <= 0)"
+		   });
+		addAnnotation
+		  (actionEClass,
+		   source,
+		   new String[] {
+			   "RSA27_actionWithinBudget", "(function <> null and function.execDuration > 0 implies compareTime(execDuration, function, function.execDuration) <= 0) and ((function <> null and function.module <> null and function.module.execDuration > 0) implies compareTime(execDuration, function.module, function.module.execDuration) <= 0) and ((function <> null and function.module <> null and function.module.layer <> null and function.module.layer.maxExecTime > 0) implies compareTime(execDuration, function.module.layer, function.module.layer.maxExecTime) <= 0)"
 		   });
 		addAnnotation
 		  (rtActionEClass,
@@ -2445,7 +2470,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "RSA13_nonNegativeTimes", "duration >= 0",
-			   "RSA20_representableTimes", "representable(duration)"
+			   "RSA20_representableTimes", "representable(duration)",
+			   "RSA26_durationBelowTriggerPeriod", "(trigger <> null and trigger.module <> null and duration > 0) implies (((trigger.module.execType = ExecutionType::periodic and trigger.module.period > 0) and (trigger.module.functions->exists(f | not (f.execType = ExecutionType::periodic and f.period > 0)) or not trigger.module.functions->exists(f | (f.execType = ExecutionType::periodic and f.period > 0) or f.actions->exists(a | (a.execType = ExecutionType::periodic and a.period > 0)))) implies trigger.module.compareTime(trigger.module.period, self, duration) > 0) and trigger.module.functions->forAll(f | (f.execType = ExecutionType::periodic and f.period > 0) implies f.compareTime(f.period, self, duration) > 0) and trigger.module.functions->forAll(f | f.actions->forAll(a | (a.execType = ExecutionType::periodic and a.period > 0) implies a.compareTime(a.period, self, duration) > 0)))"
 		   });
 		addAnnotation
 		  (inhibitorEClass,

@@ -876,6 +876,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateFunction_RSA07_realTimeFunctionActions(function, diagnostics, context);
 		if (result || diagnostics != null) result &= validateFunction_RSA09_uniqueNames(function, diagnostics, context);
+		if (result || diagnostics != null) result &= validateFunction_RSA27_functionWithinBudget(function, diagnostics, context);
 		return result;
 	}
 
@@ -938,6 +939,35 @@ public class RsamlValidator extends EObjectValidator {
 	}
 
 	/**
+	 * The cached validation expression for the RSA27_functionWithinBudget constraint of '<em>Function</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String FUNCTION__RSA27_FUNCTION_WITHIN_BUDGET__EEXPRESSION = "(module <> null and module.execDuration > 0 implies compareTime(execDuration, module, module.execDuration) <= 0) and ((module <> null and module.layer <> null and module.layer.maxExecTime > 0) implies compareTime(execDuration, module.layer, module.layer.maxExecTime) <= 0)";
+
+	/**
+	 * Validates the RSA27_functionWithinBudget constraint of '<em>Function</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateFunction_RSA27_functionWithinBudget(Function function, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.FUNCTION,
+				 function,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA27_functionWithinBudget",
+				 FUNCTION__RSA27_FUNCTION_WITHIN_BUDGET__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
@@ -959,7 +989,37 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(action, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(action, diagnostics, context);
+		if (result || diagnostics != null) result &= validateAction_RSA27_actionWithinBudget(action, diagnostics, context);
 		return result;
+	}
+
+	/**
+	 * The cached validation expression for the RSA27_actionWithinBudget constraint of '<em>Action</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String ACTION__RSA27_ACTION_WITHIN_BUDGET__EEXPRESSION = "(function <> null and function.execDuration > 0 implies compareTime(execDuration, function, function.execDuration) <= 0) and ((function <> null and function.module <> null and function.module.execDuration > 0) implies compareTime(execDuration, function.module, function.module.execDuration) <= 0) and ((function <> null and function.module <> null and function.module.layer <> null and function.module.layer.maxExecTime > 0) implies compareTime(execDuration, function.module.layer, function.module.layer.maxExecTime) <= 0)";
+
+	/**
+	 * Validates the RSA27_actionWithinBudget constraint of '<em>Action</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateAction_RSA27_actionWithinBudget(Action action, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.ACTION,
+				 action,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA27_actionWithinBudget",
+				 ACTION__RSA27_ACTION_WITHIN_BUDGET__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
 	}
 
 	/**
@@ -984,6 +1044,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA13_nonNegativeTimes(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA17_executionWithinDeadline(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRealTimeElement_RSA20_representableTimes(rtAction, diagnostics, context);
+		if (result || diagnostics != null) result &= validateAction_RSA27_actionWithinBudget(rtAction, diagnostics, context);
 		if (result || diagnostics != null) result &= validateRTAction_RSA15_rtActionIsRealTime(rtAction, diagnostics, context);
 		return result;
 	}
@@ -1202,6 +1263,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(subsumptionLink, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(subsumptionLink, diagnostics, context);
+		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA26_durationBelowTriggerPeriod(subsumptionLink, diagnostics, context);
 		return result;
 	}
 
@@ -1264,6 +1326,35 @@ public class RsamlValidator extends EObjectValidator {
 	}
 
 	/**
+	 * The cached validation expression for the RSA26_durationBelowTriggerPeriod constraint of '<em>Subsumption Link</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected static final String SUBSUMPTION_LINK__RSA26_DURATION_BELOW_TRIGGER_PERIOD__EEXPRESSION = "(trigger <> null and trigger.module <> null and duration > 0) implies (((trigger.module.execType = ExecutionType::periodic and trigger.module.period > 0) and (trigger.module.functions->exists(f | not (f.execType = ExecutionType::periodic and f.period > 0)) or not trigger.module.functions->exists(f | (f.execType = ExecutionType::periodic and f.period > 0) or f.actions->exists(a | (a.execType = ExecutionType::periodic and a.period > 0)))) implies trigger.module.compareTime(trigger.module.period, self, duration) > 0) and trigger.module.functions->forAll(f | (f.execType = ExecutionType::periodic and f.period > 0) implies f.compareTime(f.period, self, duration) > 0) and trigger.module.functions->forAll(f | f.actions->forAll(a | (a.execType = ExecutionType::periodic and a.period > 0) implies a.compareTime(a.period, self, duration) > 0)))";
+
+	/**
+	 * Validates the RSA26_durationBelowTriggerPeriod constraint of '<em>Subsumption Link</em>'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public boolean validateSubsumptionLink_RSA26_durationBelowTriggerPeriod(SubsumptionLink subsumptionLink, DiagnosticChain diagnostics, Map<Object, Object> context) {
+		return
+			validate
+				(RsamlPackage.Literals.SUBSUMPTION_LINK,
+				 subsumptionLink,
+				 diagnostics,
+				 context,
+				 "http://www.eclipse.org/emf/2002/Ecore/OCL",
+				 "RSA26_durationBelowTriggerPeriod",
+				 SUBSUMPTION_LINK__RSA26_DURATION_BELOW_TRIGGER_PERIOD__EEXPRESSION,
+				 Diagnostic.ERROR,
+				 DIAGNOSTIC_SOURCE,
+				 0);
+	}
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
@@ -1281,6 +1372,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(inhibitor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA26_durationBelowTriggerPeriod(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateInhibitor_RSA04_inhibitLayerBelow(inhibitor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateInhibitor_RSA16_triggerOfOwnModule(inhibitor, diagnostics, context);
 		return result;
@@ -1362,6 +1454,7 @@ public class RsamlValidator extends EObjectValidator {
 		if (result || diagnostics != null) result &= validateNamedElement_RSA21_fileNameLength(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA13_nonNegativeTimes(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA20_representableTimes(suppressor, diagnostics, context);
+		if (result || diagnostics != null) result &= validateSubsumptionLink_RSA26_durationBelowTriggerPeriod(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSuppressor_RSA04_suppressLayerBelow(suppressor, diagnostics, context);
 		if (result || diagnostics != null) result &= validateSuppressor_RSA16_triggerOfOwnModule(suppressor, diagnostics, context);
 		return result;

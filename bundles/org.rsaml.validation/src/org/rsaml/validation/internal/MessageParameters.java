@@ -99,6 +99,16 @@ public final class MessageParameters {
         put("subsumes", o -> o instanceof Inhibitor ? "inhibits output" : "suppresses entry");
         put("subsumable", o -> o instanceof Inhibitor ? "inhibit outputs" : "suppress inputs");
         put("trigger", o -> port(((SubsumptionLink) o).getTrigger()));
+        put("linkDuration", o -> duration(((SubsumptionLink) o).getDuration(), (TimeScaled) o));
+        put("linkKind", o -> o instanceof Inhibitor ? "inhibitor" : "suppressor");
+        put("asserting", o -> ((SubsumptionLink) o).getTrigger().getDataType() == DataType.BOOLEAN
+                ? "a boolean trigger: every true" : "a " + RsamlLabels.dataType(((SubsumptionLink) o).getTrigger()) + " trigger: every message");
+        put("triggerSends", o -> triggerSends((SubsumptionLink) o));
+        put("lapseEffect", o -> o instanceof Inhibitor
+                ? "output " + port(target((SubsumptionLink) o)) + " sends nothing"
+                : "entry " + port(target((SubsumptionLink) o)) + " receives nothing from its own connections");
+        // budgets of functions and actions
+        put("exceededBudgets", o -> exceededBudgets((RealTimeElement) o));
         // results of the timing analysis, which the timing checks supply with the finding
         for (String supplied : TimingChecks.PARAMETERS) {
             put(supplied, o -> {
@@ -177,6 +187,69 @@ public final class MessageParameters {
 
     private static Port target(SubsumptionLink link) {
         return link instanceof Inhibitor i ? i.getTarget() : ((Suppressor) link).getTarget();
+    }
+
+    /**
+     * How often a link's trigger sends, for RSA-26: the shortest period of its module's timed
+     * releases (each publishes all the module's outputs) that is no longer than the link's duration,
+     * with the element it is the period of, as the invariant selects them.
+     */
+    private static String triggerSends(SubsumptionLink link) {
+        Module m = link.getTrigger().getModule();
+        List<RealTimeElement> released = new ArrayList<>();
+        boolean anyTimed = false;
+        boolean stepFunction = false;
+        for (org.rsaml.model.Function f : m.getFunctions()) {
+            if (timed(f)) {
+                released.add(f);
+                anyTimed = true;
+            } else {
+                stepFunction = true;
+            }
+            for (org.rsaml.model.Action a : f.getActions()) {
+                if (timed(a)) {
+                    released.add(a);
+                    anyTimed = true;
+                }
+            }
+        }
+        if (timed(m) && (stepFunction || !anyTimed)) {
+            released.add(0, m);
+        }
+        RealTimeElement shortest = null;
+        for (RealTimeElement e : released) {
+            if (shortest == null || RsamlTimes.compare(e.getPeriod(), e, shortest.getPeriod(), shortest) < 0) {
+                shortest = e;
+            }
+        }
+        if (shortest == null) {
+            return "its module " + "'" + name(m) + "' sends on it";
+        }
+        String of = shortest == m ? "its own period" : "the period of " + element(shortest);
+        return "module '" + name(m) + "' sends on it every " + duration(shortest.getPeriod(), shortest) + " (" + of + ")";
+    }
+
+    private static boolean timed(RealTimeElement e) {
+        return e.getExecType() == org.rsaml.model.ExecutionType.PERIODIC && e.getPeriod() > 0;
+    }
+
+    /** The budgets a function or action exceeds, for RSA-27, as the invariants check them. */
+    private static String exceededBudgets(RealTimeElement e) {
+        org.rsaml.model.Function function = e instanceof org.rsaml.model.Action a ? a.getFunction() : null;
+        Module module = e instanceof org.rsaml.model.Function f ? f.getModule() : function == null ? null : function.getModule();
+        Layer layer = module == null ? null : module.getLayer();
+        List<String> exceeded = new ArrayList<>();
+        if (function != null && function.getExecDuration() > 0
+                && RsamlTimes.compare(e.getExecDuration(), e, function.getExecDuration(), function) > 0) {
+            exceeded.add("the " + duration(function.getExecDuration(), function) + " of its function '" + name(function) + "'");
+        }
+        if (module != null && module.getExecDuration() > 0 && RsamlTimes.compare(e.getExecDuration(), e, module.getExecDuration(), module) > 0) {
+            exceeded.add("the " + duration(module.getExecDuration(), module) + " of its module '" + name(module) + "'");
+        }
+        if (layer != null && layer.getMaxExecTime() > 0 && RsamlTimes.compare(e.getExecDuration(), e, layer.getMaxExecTime(), layer) > 0) {
+            exceeded.add("the " + duration(layer.getMaxExecTime(), layer) + " budget of its layer '" + name(layer) + "'");
+        }
+        return exceeded.isEmpty() ? "its budgets" : String.join(" and ", exceeded);
     }
 
     private static String missingTiming(EObject o) {

@@ -46,6 +46,26 @@ class AnalyzeCommandTest {
         assertTrue(r.out().contains("examples/mobile-base-latency.rsaml: timing meets"), r.out());
     }
 
+    /** JSON lists every path of a requirement with its own bounds, and the elements a requirement's path is named by. */
+    @Test
+    void jsonListsEveryPathAndTheNamedOnes() {
+        Cli.Result r = Cli.run("analyze", "--format", "json", "tests/org.rsaml.analysis.tests/resources/latency-named-paths.rsaml");
+        assertEquals(1, r.code(), "a requirement of the model names a path that does not exist: " + r);
+        JsonArray latencies = JsonParser.parseString(r.out()).getAsJsonArray().get(0).getAsJsonObject().getAsJsonArray("latencies");
+        JsonObject all = latencies.get(0).getAsJsonObject();
+        assertEquals("scanToWheels", all.get("requirement").getAsString());
+        JsonArray every = all.getAsJsonArray("everyPath");
+        assertEquals(3, every.size(), all.toString());
+        assertEquals(1_227_000_000L, every.get(0).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
+        assertEquals(33_000_000L, every.get(2).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
+        assertEquals("deliberative/monitor.halt",
+                every.get(2).getAsJsonObject().getAsJsonArray("stages").get(1).getAsJsonObject().get("stage").getAsString());
+        JsonObject safety = latencies.get(2).getAsJsonObject();
+        assertEquals("safetyChain", safety.get("requirement").getAsString());
+        assertEquals("[\"deliberative/monitor\",\"inhibitor deliberative/monitor.halt\"]", safety.getAsJsonArray("via").toString());
+        assertEquals(33_000_000L, safety.get("reactionTimeNs").getAsLong(), safety.toString());
+    }
+
     @Test
     void aMissedRequirementExitsOne() {
         Cli.Result r = Cli.run("analyze", "examples/mobile-base-latency-missed.rsaml");

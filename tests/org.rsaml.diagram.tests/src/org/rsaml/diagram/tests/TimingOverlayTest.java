@@ -140,6 +140,22 @@ class TimingOverlayTest {
         }
     }
 
+    /** The page lists every path of a requirement with its own bounds, and the paths a requirement names. */
+    @Test
+    void everyPathIsListedWithItsBound() throws Exception {
+        String name = "latency-named-paths.rsaml";
+        LoadedModel model = ModelLoader.load(TestRepository.resource("org.rsaml.analysis.tests", name), name);
+        String html = new RsamlDiagrams(DiagramView.ARCHITECTURE).timing(TimingMode.AUTO).html(model.architecture(), name,
+                RsamlModelValidator.validate(model)).replace("&gt;", ">").replace("&#62;", ">");
+        assertTrue(html.contains("every path, the longest first:"), html);
+        assertTrue(html.contains("- deliberative/planner +1.15 s -> reactive/avoid +65 ms -> control/drive +12 ms: reaction time"
+                + " 1.227 s, data age 1.237 s"), "the planner's path with its bounds: " + html);
+        assertTrue(html.contains("- deliberative/monitor +21 ms -> deliberative/monitor.halt +0 ns -> control/drive +12 ms:"
+                + " reaction time 33 ms, data age 43 ms"), "the safety chain through the inhibitor with its bounds");
+        assertTrue(html.contains("the paths through deliberative/monitor, then inhibitor deliberative/monitor.halt"),
+                "the safety requirement's named path");
+    }
+
     @Test
     void aMetRequirementsPathIsDrawnWithoutTheMissStyle() throws Exception {
         Analysed a = analyse("mobile-base-latency.rsaml", TimingMode.AUTO);

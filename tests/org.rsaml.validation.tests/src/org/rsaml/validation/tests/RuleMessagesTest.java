@@ -56,6 +56,32 @@ class RuleMessagesTest {
     }
 
     @Test
+    void aLinkThatNeverLapsesNamesTheTriggersPeriodAndTheDuration() throws Exception {
+        assertEquals(sorted(List.of(
+                "robot/safety/monitor/stopDrive: Inhibitor 'stopDrive' of module 'monitor' stays active for 500.0 ms after each"
+                        + " message on its trigger 'monitor.stop' that asserts it (a boolean trigger: every true), but module"
+                        + " 'monitor' sends on it every 50.0 ms (its own period), no longer than that: while the trigger keeps"
+                        + " asserting it, the inhibitor never lapses and output 'drive.cmd' sends nothing",
+                "robot/safety/planner/override: Suppressor 'override' of module 'planner' stays active for 2000.0 ms after each"
+                        + " message on its trigger 'planner.goal' that asserts it (a numeric trigger: every message), but module"
+                        + " 'planner' sends on it every 2.0 s (the period of function 'plan'), no longer than that: while the"
+                        + " trigger keeps asserting it, the suppressor never lapses and entry 'drive.goal' receives nothing from"
+                        + " its own connections")),
+                sorted(messages("rule-RSA-26-violated.rsaml", "RSA-26")));
+    }
+
+    @Test
+    void aFunctionOrActionLongerThanItsBudgetIsReportedOnItself() throws Exception {
+        assertEquals(sorted(List.of(
+                "robot/deliberation/planner/plan: Function 'plan' takes 45.0 ms, longer than the 40.0 ms budget of its layer"
+                        + " 'deliberation'",
+                "robot/mapping/mapper/update: Function 'update' takes 50.0 s, longer than the 50.0 ms of its module 'mapper'",
+                "robot/mapping/mapper/update/fuse: Action 'fuse' takes 60.0 s, longer than the 50.0 s of its function 'update'"
+                        + " and the 50.0 ms of its module 'mapper'")),
+                sorted(messages("rule-RSA-27-violated.rsaml", "RSA-27")));
+    }
+
+    @Test
     void timesTheGeneratedCodeCannotHoldNameTheLimit() throws Exception {
         List<String> messages = messages("rule-RSA-20-violated.rsaml", "RSA-20");
         String limit = "; times may be at most 1152921504606846976 ns (2^60, about 36.5 years) and a period above 0 at least 1 ns";

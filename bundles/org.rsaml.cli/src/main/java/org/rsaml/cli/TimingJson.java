@@ -124,6 +124,31 @@ final class TimingJson {
                 hops.add(hop);
             }
             k.add("worstPath", hops);
+            JsonArray via = new JsonArray();
+            l.via().forEach(via::add);
+            k.add("via", via);
+            JsonArray every = new JsonArray();
+            for (org.rsaml.analysis.PathBound b : l.pathBounds()) {
+                JsonObject path = new JsonObject();
+                JsonArray stages = new JsonArray();
+                for (Hop h : b.hops()) {
+                    JsonObject hop = new JsonObject();
+                    hop.addProperty("stage", h.label());
+                    hop.addProperty("activation", h.activation());
+                    hop.addProperty("waitNs", h.waitNs());
+                    hop.addProperty("responseNs", h.responseNs());
+                    stages.add(hop);
+                }
+                path.add("stages", stages);
+                if (b.bounded()) {
+                    path.addProperty("reactionTimeNs", b.reactionNs());
+                    path.addProperty("dataAgeNs", b.dataAgeNs());
+                } else {
+                    path.addProperty("unbounded", b.unbounded());
+                }
+                every.add(path);
+            }
+            k.add("everyPath", every);
             latencies.add(k);
         }
         o.add("latencies", latencies);

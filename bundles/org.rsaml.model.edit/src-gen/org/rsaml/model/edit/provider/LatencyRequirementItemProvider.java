@@ -52,6 +52,7 @@ public class LatencyRequirementItemProvider extends NamedElementItemProvider {
 			addTargetPropertyDescriptor(object);
 			addMaxLatencyPropertyDescriptor(object);
 			addKindPropertyDescriptor(object);
+			addViaPropertyDescriptor(object);
 		}
 		return itemPropertyDescriptors;
 	}
@@ -162,6 +163,28 @@ public class LatencyRequirementItemProvider extends NamedElementItemProvider {
 				 false,
 				 false,
 				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
+				 null,
+				 null));
+	}
+
+	/**
+	 * This adds a property descriptor for the Via feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addViaPropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_LatencyRequirement_via_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_LatencyRequirement_via_feature", "_UI_LatencyRequirement_type"),
+				 RsamlPackage.Literals.LATENCY_REQUIREMENT__VIA,
+				 true,
+				 false,
+				 true,
+				 null,
 				 null,
 				 null));
 	}

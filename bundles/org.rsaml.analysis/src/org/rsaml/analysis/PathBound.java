@@ -1,0 +1,31 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis;
+
+import java.util.List;
+
+import org.rsaml.analysis.internal.Durations;
+
+/**
+ * One path of a latency requirement and its bounds: the stages data passes (modules, and the
+ * inhibitors whose block acts at once), its worst-case reaction time and maximum data age, both -1
+ * when a stage has no bound ({@link #unbounded()} says which).
+ */
+public record PathBound(List<Hop> hops, long reactionNs, long dataAgeNs, String unbounded) {
+
+    public PathBound {
+        hops = List.copyOf(hops);
+    }
+
+    /** Whether the path has a bound. */
+    public boolean bounded() {
+        return unbounded == null;
+    }
+
+    /** The path in one line, {@code perception/filter +15 ms -> control/drive +22 ms}. */
+    public String text() {
+        return String.join(" -> ", hops.stream().map(h -> h.label() + " +" + Durations.format(h.totalNs())).toList());
+    }
+}
