@@ -41,7 +41,7 @@ class PrerequisitesTest {
     void aMissingToolStopsTheCheckWithItsNameAndTheInstallLine(@TempDir Path dir) throws Exception {
         // A PATH with the shell tools the script uses and the listed tools, except cmake.
         Path bin = Files.createDirectories(dir.resolve("bin"));
-        for (String tool : List.of("sh", "dirname", "tr", "sed", "g++", "make", "node", "npm")) {
+        for (String tool : List.of("sh", "dirname", "tr", "sed", "g++", "make", "node", "npm", "Xvfb", "xvfb-run", "xauth")) {
             wrap(bin, tool, false);
         }
         wrap(bin, "python3", true);

@@ -49,8 +49,15 @@ final class Ros2Build {
     private static Path underlay;
     private static Schema schema;
 
-    /** The Python that Debian's ament and rosidl modules are installed for. */
-    private static String python() {
+    /**
+     * The Python that Debian's ament, rosidl and catkin_pkg modules are installed for: the build's {@code rsaml.python}
+     * (root pom, default /usr/bin/python3), never the PATH's python3, which may be a version manager's shim.
+     */
+    static String python() {
+        String configured = System.getProperty("rsaml.python", "");
+        if (!configured.isBlank()) {
+            return configured;
+        }
         return Files.isExecutable(Path.of("/usr/bin/python3")) ? "/usr/bin/python3" : "python3";
     }
 

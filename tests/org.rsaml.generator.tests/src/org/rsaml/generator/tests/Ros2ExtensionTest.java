@@ -192,7 +192,7 @@ class Ros2ExtensionTest {
         Path pkg = out.resolve("pick_and_place_arm");
         String prefixes = Ros2Build.underlay() + ";" + install;
         Tools.ok(pkg, 600, "cmake", "-S", ".", "-B", work.resolve("build/p").toString(), "-DCMAKE_PREFIX_PATH=" + prefixes,
-                "-DPython3_EXECUTABLE=" + (Files.isExecutable(Path.of("/usr/bin/python3")) ? "/usr/bin/python3" : "python3"),
+                "-DPython3_EXECUTABLE=" + Ros2Build.python(),
                 "-DCMAKE_CXX_FLAGS=" + Ros2Build.CXX_FLAGS);
         Tools.Result build = Tools.run(pkg, 900, "cmake", "--build", work.resolve("build/p").toString(), "-j2");
         assertNotEquals(0, build.exit(), "the build did not notice the dropped method");

@@ -100,7 +100,7 @@ class Ros2Test {
         }
         for (Path manifest : manifests) {
             Ros2Build.validateManifest(manifest);
-            String parsed = Tools.ok(out, 60, "python3", "-c", "import sys\nfrom catkin_pkg.package import parse_package\n"
+            String parsed = Tools.ok(out, 60, Ros2Build.python(), "-c", "import sys\nfrom catkin_pkg.package import parse_package\n"
                     + "p = parse_package(sys.argv[1])\nprint(p.package_format, p.name, ' '.join(sorted(d.name for d in p.build_depends)),"
                     + " '|', ' '.join(sorted(d.name for d in p.exec_depends)))", manifest.toString());
             assertTrue(parsed.startsWith("3 " + manifest.getParent().getFileName()), parsed);
