@@ -10,14 +10,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.stream.Stream;
 
+import org.rsaml.model.resource.ModelFormats;
 import org.rsaml.validation.ModelLoadException;
 
 /**
  * Turns the paths a user names into model files: a file is taken as it is (whatever its extension,
- * since the user asked for it), a directory contributes every {@code .rsaml} file below it, in a
+ * since the user asked for it), a directory contributes every {@code .rsaml} and {@code .rsa} (textual)
+ * file below it, in a
  * stable order. Paths keep the spelling the user gave, so reports point where the user looks.
  */
 public final class ModelFiles {
@@ -54,7 +55,7 @@ public final class ModelFiles {
                     continue;
                 }
                 if (found.isEmpty()) {
-                    entries.add(unusable(shown, "no " + EXTENSION + " files in this directory or below it"));
+                    entries.add(unusable(shown, "no " + EXTENSION + " (or ." + ModelFormats.TEXT_EXTENSION + ") files in this directory or below it"));
                 }
                 for (Path file : found) {
                     add(entries, seen, file, display(named.resolve(path.relativize(file)).normalize()));
@@ -68,12 +69,12 @@ public final class ModelFiles {
         return List.copyOf(entries);
     }
 
-    /** The {@code .rsaml} files under a directory, sorted by path; hidden folders are skipped. */
+    /** The model files ({@code .rsaml}, {@code .rsa}) under a directory, sorted by path; hidden folders are skipped. */
     public static List<Path> modelsUnder(Path directory) throws IOException {
         try (Stream<Path> walk = Files.walk(directory)) {
             return walk.filter(p -> !hiddenBelow(directory, p))
                     .filter(p -> p.getFileName() != null
-                            && p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(EXTENSION))
+                            && ModelFormats.isModelFile(p.getFileName().toString()))
                     .filter(Files::isRegularFile)
                     .sorted()
                     .toList();

@@ -9,20 +9,28 @@ import java.nio.file.Path;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.rsaml.model.Architecture;
-import org.rsaml.model.resource.RsamlResource;
+import org.rsaml.model.resource.LocatingResource;
 import org.rsaml.model.resource.SourceLocation;
 
-/** A loaded .rsaml model that knows where in its file each element starts. */
+/** A loaded model (.rsaml or .rsa) that knows where in its file each element starts. */
 public final class LoadedModel {
 
-    private final RsamlResource resource;
+    private final LocatingResource resource;
     private final String file;
     private final Path path;
 
-    LoadedModel(RsamlResource resource, String file, Path path) {
+    LoadedModel(LocatingResource resource, String file, Path path) {
         this.resource = resource;
         this.file = file;
         this.path = path;
+    }
+
+    /**
+     * A model already in a resource, such as a textual model an editor or language server holds; it is
+     * judged and located as one {@link ModelLoader} read. {@code path} may be null when it has no file.
+     */
+    public static LoadedModel of(LocatingResource resource, String file, Path path) {
+        return new LoadedModel(resource, file, path);
     }
 
     public Resource resource() {

@@ -20,14 +20,17 @@ import org.eclipse.emf.ecore.InternalEObject;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.rsaml.model.resource.LocatingResource;
+import org.rsaml.model.resource.ModelFormats;
 import org.rsaml.model.resource.RsamlResource;
 import org.rsaml.model.resource.RsamlStandaloneSetup;
 import org.rsaml.model.resource.SourceLocation;
 
 /**
- * Reads a .rsaml file for validation through the model's own {@link RsamlResource} (safe, located
- * loading), in a resource set that opens local files only, and turns the first thing that makes
- * the file unfit, including a reference that does not resolve, into a {@link ModelLoadException}.
+ * Reads a model file for validation through the model's own {@link RsamlResource} (safe, located
+ * loading), or, for a textual {@code .rsa} file, through the resource registered for it, in a resource
+ * set that opens local files only, and turns the first thing that makes the file unfit, including a
+ * reference that does not resolve, into a {@link ModelLoadException}.
  */
 public final class ModelLoader {
 
@@ -39,10 +42,27 @@ public final class ModelLoader {
         RsamlValidationSetup.registerPackage();
         ResourceSet resourceSet = RsamlStandaloneSetup.newResourceSet();
         URI uri = URI.createFileURI(path.toAbsolutePath().toString());
-        RsamlResource resource = new RsamlResource(uri);
-        resourceSet.getResources().add(resource);
+        LocatingResource resource;
+        if (ModelFormats.isText(path.toString())) {
+            Resource.Factory factory = resourceSet.getResourceFactoryRegistry()
+                    .getFactory(URI.createURI("model." + ModelFormats.TEXT_EXTENSION));
+            Resource created = factory == null ? null : factory.createResource(uri);
+            if (!(created instanceof LocatingResource located)) {
+                throw new ModelLoadException(displayName, 0, 0, "textual models (." + ModelFormats.TEXT_EXTENSION
+                        + ") cannot be read here: the org.rsaml.text bundle is missing", null);
+            }
+            resource = located;
+            resourceSet.getResources().add(resource);
+        } else {
+            resource = new RsamlResource(uri);
+            resourceSet.getResources().add(resource);
+        }
         try {
             resource.load(resourceSet.getLoadOptions());
+            if (!resource.getErrors().isEmpty()) {
+                // A textual model is read whatever its errors (an editor shows them); a command stops here.
+                throw describe(displayName, resource, null);
+            }
             checkCrossReferences(displayName, uri, resource);
         } catch (IOException | WrappedException e) {
             throw describe(displayName, resource, e);
@@ -56,7 +76,7 @@ public final class ModelLoader {
 
     private static ModelLoadException describe(String file, Resource resource, Exception thrown) {
         if (resource.getErrors().isEmpty()) {
-            return new ModelLoadException(file, 0, 0, "the file cannot be read: " + thrown.getMessage(), thrown);
+            return new ModelLoadException(file, 0, 0, "the file cannot be read: " + (thrown == null ? "" : thrown.getMessage()), thrown);
         }
         Resource.Diagnostic first = resource.getErrors().get(0);
         List<ModelLoadException.Problem> more = new ArrayList<>();
@@ -67,7 +87,7 @@ public final class ModelLoader {
                 first instanceof Exception e ? e : thrown);
     }
 
-    private static void checkCrossReferences(String file, URI uri, RsamlResource resource) throws ModelLoadException {
+    private static void checkCrossReferences(String file, URI uri, LocatingResource resource) throws ModelLoadException {
         Map<EObject, Collection<EStructuralFeature.Setting>> unresolved = EcoreUtil.UnresolvedProxyCrossReferencer.find(resource);
         if (unresolved.isEmpty()) {
             return;
@@ -95,7 +115,7 @@ public final class ModelLoader {
         return target.trimFragment().equals(uri) ? target.fragment() : target.deresolve(uri).toString();
     }
 
-    private static String unresolvedBecause(URI uri, RsamlResource resource, URI target) {
+    private static String unresolvedBecause(URI uri, LocatingResource resource, URI target) {
         Resource other = target.trimFragment().equals(uri) ? null : resource.getResourceSet().getResource(target.trimFragment(), false);
         if (other != null && !other.getErrors().isEmpty()) {
             Resource.Diagnostic problem = other.getErrors().get(0);

@@ -21,7 +21,7 @@ public final class LoadProblem extends XMIException {
         this.sentence = sentence;
     }
 
-    LoadProblem(String sentence, String location, int line, int column) {
+    public LoadProblem(String sentence, String location, int line, int column) {
         this(sentence, null, location, line, column);
     }
 

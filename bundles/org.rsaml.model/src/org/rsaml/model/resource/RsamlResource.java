@@ -35,7 +35,7 @@ import org.xml.sax.helpers.DefaultHandler;
  * the parser knows it, the line and column. It remembers where each element's start tag begins,
  * and the file's comments, which a save writes back where they stood.
  */
-public class RsamlResource extends RsamlResourceImpl {
+public class RsamlResource extends RsamlResourceImpl implements LocatingResource {
 
     /** Load option: the largest file, in bytes, that is read (a {@link Long}). */
     public static final String OPTION_MAX_FILE_SIZE = "org.rsaml.model.resource.maxFileSize";
@@ -74,6 +74,7 @@ public class RsamlResource extends RsamlResourceImpl {
      * Where the element's start tag begins in this resource's file; line and column are 0 for an
      * element that was not read from it.
      */
+    @Override
     public SourceLocation locate(EObject element) {
         Long packed = positions.get(element);
         String file = getURI() == null ? "" : getURI().isFile() ? getURI().toFileString() : getURI().toString();
@@ -82,6 +83,7 @@ public class RsamlResource extends RsamlResourceImpl {
     }
 
     /** How many elements were read from the file (and so have a location). */
+    @Override
     public int locatedElementCount() {
         return positions.size();
     }

@@ -19,7 +19,8 @@ import org.rsaml.model.RsamlPackage;
 
 /**
  * Outside Eclipse, registers what reading {@code .rsaml} files needs (inside Eclipse, plugin.xml
- * does): the RsaML package and the {@link RsamlResourceFactory}. {@link #newResourceSet()} gives
+ * does): the RsaML package and the {@link RsamlResourceFactory}, and the factories of the other
+ * syntaxes on the class path ({@link ModelFormats.Syntax}, such as the textual {@code .rsa}). {@link #newResourceSet()} gives
  * a resource set that can open local files only, whatever asks it to.
  */
 public final class RsamlStandaloneSetup {
@@ -37,6 +38,7 @@ public final class RsamlStandaloneSetup {
         if (!(registered instanceof RsamlResourceFactory) && !(registered instanceof Resource.Factory.Descriptor)) {
             factories.put("rsaml", new RsamlResourceFactory());
         }
+        ModelFormats.registerSyntaxes(factories);
     }
 
     /**

@@ -26,7 +26,7 @@ class BadInputTest {
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
             "missing.rsaml          | missing.rsaml: error: no such file or directory",
-            "no-models              | no-models: error: no .rsaml files in this directory or below it",
+            "no-models              | no-models: error: no .rsaml (or .rsa) files in this directory or below it",
             "empty.rsaml            | empty.rsaml: error: the file is empty",
             "binary.rsaml           | binary.rsaml: error: the file is binary, not an XML model",
             "malformed.rsaml        | malformed.rsaml:6:5: error: malformed XML: The element type \"modules\" must be terminated",

@@ -29,7 +29,7 @@ import picocli.CommandLine.ScopeType;
  */
 @Command(name = "rsaml", mixinStandardHelpOptions = true, versionProvider = RsamlCli.Version.class,
         description = "Checks robot software architectures written in RsaML (.rsaml files) and generates their code skeletons.",
-        subcommands = { ValidateCommand.class, GenerateCommand.class, DiagramCommand.class, AnalyzeCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
+        subcommands = { ValidateCommand.class, GenerateCommand.class, DiagramCommand.class, AnalyzeCommand.class, ConvertCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:clean: no finding at or above --fail-on",
                 "1:findings at or above --fail-on",
@@ -53,7 +53,7 @@ public final class RsamlCli implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "a command is required (validate, generate, diagram, rules, help)");
+        throw new CommandLine.ParameterException(spec.commandLine(), "a command is required (validate, generate, diagram, analyze, convert, rules, help)");
     }
 
     public static void main(String[] args) {

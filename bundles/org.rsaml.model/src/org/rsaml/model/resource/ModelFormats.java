@@ -1,0 +1,68 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model.resource;
+
+import java.util.Locale;
+import java.util.Map;
+import java.util.ServiceConfigurationError;
+import java.util.ServiceLoader;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+
+/**
+ * The two syntaxes of an RsaML model file: XMI ({@code .rsaml}, the default) and text ({@code .rsa}).
+ * Both load into the same model. The textual syntax lives in its own bundle; outside OSGi it is found
+ * through {@link java.util.ServiceLoader} ({@link Syntax}), inside OSGi through its plugin.xml.
+ */
+public final class ModelFormats {
+
+    /** The extension of XMI model files, without the dot. */
+    public static final String XMI_EXTENSION = "rsaml";
+
+    /** The extension of textual model files, without the dot. */
+    public static final String TEXT_EXTENSION = "rsa";
+
+    /** A syntax other than XMI, registered for its file extension by {@link RsamlStandaloneSetup}. */
+    public interface Syntax {
+        String fileExtension();
+
+        Resource.Factory resourceFactory();
+    }
+
+    private ModelFormats() {
+    }
+
+    /** Whether the file name ends with the textual syntax's extension (any case). */
+    public static boolean isText(String fileName) {
+        return fileName != null && fileName.toLowerCase(Locale.ROOT).endsWith("." + TEXT_EXTENSION);
+    }
+
+    /** Whether the file name ends with one of the model extensions (any case). */
+    public static boolean isModelFile(String fileName) {
+        return fileName != null && (fileName.toLowerCase(Locale.ROOT).endsWith("." + XMI_EXTENSION) || isText(fileName));
+    }
+
+    /**
+     * Why a file must not be opened (not a regular local file, larger than {@code maxSize} bytes), or
+     * null: the same policy for every syntax.
+     */
+    public static String refuseToOpen(URI uri, long maxSize) {
+        return LoadPolicy.refuseToOpen(uri, maxSize);
+    }
+
+    /** Puts the factories of the syntaxes on the class path into the map, leaving registered ones alone. */
+    static void registerSyntaxes(Map<String, Object> factories) {
+        try {
+            for (Syntax syntax : ServiceLoader.load(Syntax.class, ModelFormats.class.getClassLoader())) {
+                if (!factories.containsKey(syntax.fileExtension())) {
+                    factories.put(syntax.fileExtension(), syntax.resourceFactory());
+                }
+            }
+        } catch (ServiceConfigurationError e) {
+            // A syntax that cannot be loaded is simply not there; its files then fail to load, saying so.
+        }
+    }
+}

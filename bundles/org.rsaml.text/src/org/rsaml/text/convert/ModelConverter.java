@@ -1,0 +1,80 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.text.convert;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.ResourceSet;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.emf.ecore.xmi.XMLResource;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.resource.ModelFormats;
+import org.rsaml.model.resource.RsamlResource;
+import org.rsaml.model.resource.RsamlStandaloneSetup;
+import org.rsaml.text.RsamlTextStandaloneSetup;
+import org.rsaml.text.serializer.RsamlTextWriter;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.ModelLoader;
+
+/**
+ * Converts a model between its two syntaxes, XMI ({@code .rsaml}) and text ({@code .rsa}), each way
+ * losslessly: the model read back from the output equals the input's ({@link EcoreUtil#equals}). The
+ * input is read as every command reads it ({@link ModelLoader}); the output is written only when the
+ * whole of it could be made.
+ *
+ * <pre>
+ * ModelConverter.convert(Path.of("robot.rsaml"), "robot.rsaml", Path.of("robot.rsa"));
+ * </pre>
+ */
+public final class ModelConverter {
+
+    private ModelConverter() {
+    }
+
+    /**
+     * Reads {@code input} (reported as {@code inputShown}) and writes the same model to {@code output}
+     * in the syntax of the output's extension ({@code .rsa}: text, anything else: XMI).
+     *
+     * @throws ModelLoadException the input cannot be read, or the model cannot be written in the output's syntax
+     * @throws IOException        the output cannot be written
+     */
+    public static void convert(Path input, String inputShown, Path output) throws ModelLoadException, IOException {
+        LoadedModel model = ModelLoader.load(input, inputShown);
+        byte[] bytes;
+        try {
+            bytes = ModelFormats.isText(output.toString()) ? toText(model.architecture()).getBytes(java.nio.charset.StandardCharsets.UTF_8)
+                    : toXmi(model.architecture(), output);
+        } catch (RsamlTextWriter.UnwritableModelException e) {
+            throw new ModelLoadException(inputShown, e.getMessage());
+        }
+        Path parent = output.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        Files.write(output, bytes);
+    }
+
+    /** The model in the textual syntax, in its canonical layout. */
+    public static String toText(Architecture architecture) {
+        return RsamlTextStandaloneSetup.injector().getInstance(RsamlTextWriter.class).write(architecture);
+    }
+
+    private static byte[] toXmi(Architecture architecture, Path output) throws IOException {
+        ResourceSet resourceSet = RsamlStandaloneSetup.newResourceSet();
+        Resource resource = new RsamlResource(URI.createFileURI(output.toAbsolutePath().toString()));
+        resourceSet.getResources().add(resource);
+        resource.getContents().add(EcoreUtil.copy(architecture));
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        resource.save(bytes, Map.of(XMLResource.OPTION_ENCODING, "UTF-8"));
+        return bytes.toByteArray();
+    }
+}

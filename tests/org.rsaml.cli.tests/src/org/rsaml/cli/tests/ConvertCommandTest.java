@@ -1,0 +1,67 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code rsaml convert}, and the other commands taking the textual models it writes as they take XMI. */
+class ConvertCommandTest {
+
+    @TempDir
+    Path temp;
+
+    @Test
+    void convertsToTextAndValidateFindsTheSameDefectsInIt() throws Exception {
+        Cli.Result converted = Cli.run("convert", "examples/exp2-defects.rsaml", temp.resolve("exp2-defects.rsa").toString());
+        assertEquals(0, converted.code(), converted.toString());
+        String text = Files.readString(temp.resolve("exp2-defects.rsa"));
+        assertTrue(text.startsWith("architecture "), "a textual model:\n" + text);
+
+        Cli.Result xmi = Cli.run("validate", "examples/exp2-defects.rsaml");
+        Cli.Result rsa = Cli.runIn(temp, "validate", "exp2-defects.rsa");
+        assertEquals(xmi.code(), rsa.code(), "the same verdict\n" + xmi + rsa);
+        List<String> expected = ValidateCommandTest.findingLines(xmi.outLines()).stream()
+                .map(l -> l.replaceFirst("^examples/exp2-defects.rsaml:\\d+:\\d+: ", "")).toList();
+        List<String> actual = ValidateCommandTest.findingLines(rsa.outLines()).stream()
+                .map(l -> l.replaceFirst("^exp2-defects.rsa:\\d+:\\d+: ", "")).toList();
+        assertEquals(expected, actual, "the same findings, rule ids and messages\n" + rsa);
+        for (String line : ValidateCommandTest.findingLines(rsa.outLines())) {
+            assertTrue(line.matches("exp2-defects\\.rsa:[1-9]\\d*:[1-9]\\d*: .*"), "located in the text: " + line);
+        }
+    }
+
+    @Test
+    void aFolderOfTextualModelsIsValidatedAndConvertedBack() throws Exception {
+        assertEquals(0, Cli.run("convert", "examples/exp1-hybrid.rsaml", temp.resolve("models/exp1.rsa").toString()).code());
+        Cli.Result folder = Cli.runIn(temp, "validate", "models");
+        assertEquals(0, folder.code(), folder.toString());
+        assertTrue(folder.out().contains("models/exp1.rsa: no findings"), "the .rsa file is found in the folder:\n" + folder);
+
+        Cli.Result back = Cli.runIn(temp, "convert", "models/exp1.rsa", "exp1.rsaml");
+        assertEquals(0, back.code(), back.toString());
+        assertEquals("wrote exp1.rsaml\n", back.out(), back.toString());
+        Cli.Result again = Cli.runIn(temp, "validate", "exp1.rsaml");
+        assertEquals(0, again.code(), again.toString());
+    }
+
+    @Test
+    void aBrokenTextIsReportedWithItsLineAndNothingIsWritten() throws Exception {
+        Files.writeString(temp.resolve("bad.rsa"), "architecture robot {\n  layer control {\n    level high\n  }\n}\n");
+        Cli.Result result = Cli.runIn(temp, "convert", "bad.rsa", "bad.rsaml");
+        assertEquals(2, result.code(), result.toString());
+        assertTrue(result.err().startsWith("bad.rsa:3:"), "file:line:column of the error: " + result.err());
+        assertFalse(result.err().contains("\tat "), "no stack trace: " + result.err());
+        assertFalse(Files.exists(temp.resolve("bad.rsaml")), "nothing is written");
+    }
+}

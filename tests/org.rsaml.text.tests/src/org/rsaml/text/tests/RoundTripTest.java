@@ -1,0 +1,86 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.text.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.model.resource.ModelFormats;
+import org.rsaml.tests.support.TestRepository;
+import org.rsaml.text.convert.ModelConverter;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.ModelLoader;
+
+/**
+ * Every example and every model of the validation fixtures converts XMI to text and back to an equal
+ * model, and text to XMI and back to the same text.
+ */
+class RoundTripTest {
+
+    @TempDir
+    Path temp;
+
+    static Stream<Path> models() throws IOException {
+        Path root = TestRepository.root();
+        List<Path> dirs = List.of(root.resolve("examples"), root.resolve("tests/org.rsaml.validation.tests/resources"));
+        Stream<Path> all = Stream.empty();
+        for (Path dir : dirs) {
+            try (Stream<Path> walk = Files.walk(dir)) {
+                List<Path> files = walk.filter(p -> p.toString().endsWith("." + ModelFormats.XMI_EXTENSION)).sorted().toList();
+                all = Stream.concat(all, files.stream());
+            }
+        }
+        return all;
+    }
+
+    @Test
+    void theFixturesAreThere() throws IOException {
+        assertTrue(models().count() >= 60, "the examples and the validation fixtures are found under " + TestRepository.root());
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("models")
+    void convertsBothWaysLosslessly(Path xmi) throws Exception {
+        String shown = TestRepository.root().relativize(xmi).toString();
+        LoadedModel original;
+        try {
+            original = ModelLoader.load(xmi, shown);
+        } catch (ModelLoadException e) {
+            // A fixture of a load error: the converter says the same as every command.
+            ModelLoadException thrown = org.junit.jupiter.api.Assertions.assertThrows(ModelLoadException.class,
+                    () -> ModelConverter.convert(xmi, shown, temp.resolve("out.rsa")), shown);
+            assertEquals(e.getMessage(), thrown.getMessage(), "the converter reports the load error of " + shown);
+            assertTrue(Files.notExists(temp.resolve("out.rsa")), "nothing is written for " + shown);
+            return;
+        }
+        Path text = temp.resolve("model.rsa");
+        ModelConverter.convert(xmi, shown, text);
+        String written = Files.readString(text, StandardCharsets.UTF_8);
+
+        LoadedModel fromText = ModelLoader.load(text, "model.rsa");
+        assertNull(Models.difference(original.architecture(), fromText.architecture()),
+                () -> shown + ": XMI -> text -> model differs; the text:\n" + written);
+
+        Path back = temp.resolve("back.rsaml");
+        ModelConverter.convert(text, "model.rsa", back);
+        LoadedModel fromXmi = ModelLoader.load(back, "back.rsaml");
+        assertNull(Models.difference(original.architecture(), fromXmi.architecture()), () -> shown + ": XMI -> text -> XMI differs");
+
+        assertEquals(written, ModelConverter.toText(fromXmi.architecture()), shown + ": text -> XMI -> text gives other text");
+    }
+}
