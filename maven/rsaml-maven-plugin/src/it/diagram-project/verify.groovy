@@ -11,7 +11,11 @@ assert dir.list() as Set == expected
 expected.each { assert log.contains("RsaML: drew target/rsaml/diagrams/$it") }
 def svg = javax.xml.parsers.DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(new File(dir, 'exp2-defects-architecture.svg'))
 assert svg.documentElement.tagName == 'svg'
-assert new File(dir, 'exp2-defects-architecture.html').text.contains('data-rule="RSA-08"')
+// Every rule the model's <!-- expect: --> comments state decorates the HTML report.
+def rules = (new File(basedir, 'model/exp2-defects.rsaml').text =~ /<!-- expect: (RSA-\d\d) /).collect { it[1] } as Set
+assert !rules.isEmpty()
+def html = new File(dir, 'exp2-defects-architecture.html').text
+rules.each { assert html.contains("data-rule=\"$it\"") : "the report decorates an element with $it" }
 // <timing>on</timing>: the architecture view shows the processors' utilisation, the mission view does not.
 assert new File(dir, 'rover-architecture.svg').text.contains('processor default (preemptive fixed priority): utilisation ')
 assert !new File(dir, 'rover-mission.svg').text.contains('utilisation ')

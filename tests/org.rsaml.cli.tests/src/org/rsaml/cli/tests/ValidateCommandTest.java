@@ -34,10 +34,23 @@ class ValidateCommandTest {
     static final List<String> EXAMPLES_FINDINGS = java.util.stream.Stream.concat(EXP2_FINDINGS.stream(),
             java.util.stream.Stream.of(MISSED_LATENCY)).toList();
 
-    /** The examples without findings, each named on a line of its own in the text report. */
-    static final List<String> EXAMPLES_CLEAN = List.of("examples/exp1-hybrid.rsaml: no findings",
-            "examples/exp3-task-interpreter.rsaml: no findings", "examples/hierarchical-nasrem.rsaml: no findings",
-            "examples/mobile-base-latency.rsaml: no findings", "examples/subsumption-brooks.rsaml: no findings");
+    /** The example models, as the command line names them ({@code examples/x.rsaml}), in the order it checks them. */
+    static List<String> exampleModels() {
+        try (java.util.stream.Stream<Path> files = Files.list(Cli.ROOT.resolve("examples"))) {
+            return files.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted()
+                    .map(n -> "examples/" + n).toList();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * The examples without findings, each named on a line of its own in the text report: every example but exp2 and the
+     * one whose latency requirement can be missed.
+     */
+    static final List<String> EXAMPLES_CLEAN = exampleModels().stream()
+            .filter(m -> !m.equals("examples/exp2-defects.rsaml") && !MISSED_LATENCY.startsWith(m + ":"))
+            .map(m -> m + ": no findings").toList();
 
     /** The lines of a text report but its summary, those of files without findings left out. */
     static List<String> findingLines(List<String> lines) {
@@ -49,10 +62,17 @@ class ValidateCommandTest {
         return lines.stream().filter(l -> l.endsWith(": no findings")).toList();
     }
 
+    /** The summary line of a text report on exp2 alone, counted from its expectations. */
+    static String exp2Summary() {
+        List<ExpectedFinding> expected = exp2();
+        return "1 file checked: " + expected.stream().filter(e -> e.severity().equals("error")).count() + " errors, "
+                + expected.stream().filter(e -> e.severity().equals("warning")).count() + " warnings";
+    }
+
     static List<ExpectedFinding> exp2() {
         try {
             List<ExpectedFinding> expected = ExpectedFinding.of(Cli.ROOT.resolve("examples/exp2-defects.rsaml"));
-            assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
+            assertFalse(expected.isEmpty(), "exp2-defects.rsaml states its findings in <!-- expect: --> comments");
             return expected;
         } catch (IOException e) {
             throw new UncheckedIOException(e);

@@ -39,6 +39,28 @@ public record ExpectedFinding(String ruleId, String severity, String qualifiedNa
         return expected;
     }
 
+    /**
+     * The one expectation the model states for the element {@code qualifiedName}.
+     *
+     * @throws IllegalArgumentException when the model states none or several for it, naming the model
+     */
+    public static ExpectedFinding on(Path model, String qualifiedName) throws IOException {
+        List<ExpectedFinding> found = of(model).stream().filter(e -> e.qualifiedName.equals(qualifiedName)).toList();
+        if (found.size() != 1) {
+            throw new IllegalArgumentException(model + " states " + found.size() + " expectations for " + qualifiedName
+                    + " in its <!-- expect: --> comments; a test asking for one needs exactly one");
+        }
+        return found.get(0);
+    }
+
+    /** The finding as EMF's diagnostics and the editor word it: {@code RSA-08: Module 'checker' takes ...}. */
+    public String diagnosticMessage() {
+        if (message == null) {
+            throw new IllegalStateException(what() + ": the model's expect comment does not state the message");
+        }
+        return ruleId + ": " + message;
+    }
+
     /** Rule, severity and element, as in {@code RSA-11 warning robot/functional/odometry}: what is found, and where in the model. */
     public String what() {
         return ruleId + " " + severity + " " + qualifiedName;

@@ -7,6 +7,7 @@ package org.rsaml.validation.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 
+import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Collectors;
 
@@ -14,6 +15,7 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.junit.jupiter.api.Test;
 import org.rsaml.model.Layer;
+import org.rsaml.tests.support.ExpectedFinding;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
@@ -24,9 +26,14 @@ import org.rsaml.validation.Rule;
 /** What Eclipse shows for a model (the tree editor's Validate action, Sirius's decorations): RsaML's findings, rule id first. */
 class DiagnoseTest {
 
+    private static final Path EXP2 = TestRepository.example("exp2-defects.rsaml");
+    private static final String CONTROL = "hybridMobileRobotWithDefects/control";
+    /** The element of exp2's budget finding, whose expectation the model states. */
+    private static final String CHECKER = CONTROL + "/resourceChecker";
+
     @Test
     void everyFindingBecomesAChildDiagnosticNamedByItsRule() throws Exception {
-        LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
+        LoadedModel model = ModelLoader.load(EXP2, "exp2.rsaml");
         Diagnostic diagnostic = RsamlModelValidator.diagnose(model.architecture());
 
         assertEquals(Diagnostic.ERROR, diagnostic.getSeverity());
@@ -34,22 +41,24 @@ class DiagnoseTest {
         assertEquals(findings.stream().map(f -> f.ruleId() + ": " + f.message()).sorted().collect(Collectors.toList()),
                 diagnostic.getChildren().stream().map(Diagnostic::getMessage).sorted().collect(Collectors.toList()));
 
-        Diagnostic budget = diagnostic.getChildren().stream().filter(d -> d.getMessage().startsWith("RSA-08: ")).findFirst()
-                .orElseThrow();
-        assertEquals("RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.getMessage());
+        ExpectedFinding expected = ExpectedFinding.on(EXP2, CHECKER);
+        Diagnostic budget = diagnostic.getChildren().stream().filter(d -> d.getMessage().equals(expected.diagnosticMessage()))
+                .findFirst().orElseThrow(() -> new AssertionError("no diagnostic " + expected.diagnosticMessage() + " among "
+                        + messages(diagnostic)));
         assertSame(model.resource().getEObject("//@layers[name='control']/@modules[name='resourceChecker']"),
                 budget.getData().get(0), "the finding's element comes first, for markers and selection");
-        assertEquals("RSA-08", ((Rule) budget.getData().get(1)).id());
+        assertEquals(expected.ruleId(), ((Rule) budget.getData().get(1)).id(), "the rule travels with the diagnostic");
     }
 
     @Test
     void anElementIsDiagnosedWithWhatItContainsOnly() throws Exception {
-        LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
+        LoadedModel model = ModelLoader.load(EXP2, "exp2.rsaml");
         Layer control = model.architecture().getLayers().stream().filter(l -> l.getName().equals("control"))
                 .findFirst().orElseThrow();
         List<String> messages = messages(RsamlModelValidator.diagnose(control));
-        assertEquals(List.of("RSA-08: Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms"),
-                messages, "RSA-01 of the architecture and the other layers' findings are not the control layer's");
+        List<String> expected = ExpectedFinding.of(EXP2).stream().filter(e -> e.qualifiedName().startsWith(CONTROL + "/"))
+                .map(ExpectedFinding::diagnosticMessage).toList();
+        assertEquals(expected, messages, "RSA-01 of the architecture and the other layers' findings are not the control layer's");
     }
 
     @Test

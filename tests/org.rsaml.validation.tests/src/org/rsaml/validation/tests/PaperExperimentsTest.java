@@ -34,18 +34,10 @@ class PaperExperimentsTest {
         // The expected findings are written in the model itself, as in the rule fixtures.
         List<ExpectedFinding> expected = ExpectedFinding.of(file);
         assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
-        assertEquals(expected, actual);
-
-        Finding budget = findings.stream().filter(f -> f.ruleId().equals("RSA-08")).findFirst().orElseThrow();
-        assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.message());
-        assertEquals("examples/exp2-defects.rsaml", budget.file());
-
-        Finding types = findings.stream().filter(f -> f.ruleId().equals("RSA-02")).findFirst().orElseThrow();
-        assertTrue(types.message().contains("'resourceChecker.s0_ressourceCheck' (numeric)"), types.message());
-        assertTrue(types.message().contains("'proceduralExec.e0_prodExec' (alphanumeric)"), types.message());
-
-        Finding suppress = findings.stream().filter(f -> f.ruleId().equals("RSA-04")).findFirst().orElseThrow();
-        assertTrue(suppress.message().contains("'m01.e0_m01'") && suppress.message().contains("level 0"), suppress.message());
+        assertEquals(expected, actual, "rule, severity, element, location and message of each finding, in order");
+        for (Finding f : findings) {
+            assertEquals("examples/exp2-defects.rsaml", f.file(), f + " names the file as it was given");
+        }
 
         // Every finding points at the start tag of its element in the file.
         List<String> lines = Files.readAllLines(file);
