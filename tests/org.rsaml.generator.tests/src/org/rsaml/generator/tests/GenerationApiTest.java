@@ -40,7 +40,7 @@ class GenerationApiTest {
     }
 
     @Test
-    void modelWithErrorsIsRefusedAndNothingIsWritten(@TempDir Path tmp) {
+    void modelWithErrorsIsRefusedAndNothingIsWritten(@TempDir Path tmp) throws Exception {
         Path out = tmp.resolve("out");
         GenerationRefusedException e = assertThrows(GenerationRefusedException.class,
                 () -> generator.generate(Tools.example("exp2-defects.rsaml"), Target.CPP, out, false));
