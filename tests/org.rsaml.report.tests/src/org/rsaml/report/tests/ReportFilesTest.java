@@ -1,0 +1,65 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.report.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.report.ModelBatch;
+import org.rsaml.report.Report;
+import org.rsaml.report.ReportFiles;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.ReportOptions;
+import org.rsaml.tests.support.TestRepository;
+import org.rsaml.validation.Severity;
+
+/** Report files are replaced whole, never left half written, and a path that cannot take one is refused with the reason. */
+class ReportFilesTest {
+
+    private static final Report REPORT = ModelBatch.validate(TestRepository.root(), List.of(Path.of("examples/exp2-defects.rsaml")),
+            Severity.ERROR);
+    private static final ReportOptions OPTIONS = new ReportOptions("0.0.0-test", TestRepository.root(), false);
+
+    @Test
+    void aReportFileIsReplacedWholeAndNoTemporaryFileIsLeft(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("reports/rsaml.sarif");
+        Files.createDirectories(file.getParent());
+        Files.writeString(file, "an older report, longer than nothing".repeat(1000));
+        ReportFiles.write(file, ReportFormat.SARIF, REPORT, OPTIONS);
+        StringWriter expected = new StringWriter();
+        ReportFormat.SARIF.write(REPORT, expected, OPTIONS);
+        assertEquals(expected.toString(), Files.readString(file), "the file holds the new report and nothing of the old one");
+        try (Stream<Path> files = Files.list(file.getParent())) {
+            assertEquals(List.of(file), files.toList(), "no temporary file is left beside the report");
+        }
+    }
+
+    @Test
+    void missingFoldersAreCreated(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("a/b/c/rsaml.xml");
+        ReportFiles.write(file, ReportFormat.JUNIT, REPORT, OPTIONS);
+        assertTrue(Files.readString(file).contains("<testsuites"), "the JUnit report is written where asked");
+    }
+
+    @Test
+    void aDirectoryWhereTheReportGoesIsRefusedWithTheReason(@TempDir Path dir) throws Exception {
+        Path taken = Files.createDirectories(dir.resolve("rsaml.json"));
+        IOException e = assertThrows(IOException.class, () -> ReportFiles.write(taken, ReportFormat.JSON, REPORT, OPTIONS));
+        assertEquals("it is a directory", ReportFiles.reason(e, taken), "the reason a user reads");
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(List.of(taken), files.toList(), "nothing is written beside it");
+        }
+    }
+}
