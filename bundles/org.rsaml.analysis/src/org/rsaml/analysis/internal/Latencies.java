@@ -196,11 +196,7 @@ public final class Latencies {
                 }
             } else if (requirement.getSource() instanceof OutputPort p && plan.port(p) != null) {
                 PlannedPort port = plan.port(p);
-                visited.add(port.module());
-                trail.add(port.module().module());
-                follow(port.module(), port, stages.get(port.module()).periodNs());
-                trail.remove(trail.size() - 1);
-                visited.remove(port.module());
+                start(port.module(), port);
             } else {
                 return fail(name, from, to, maxNs, age, "the source " + from + " is neither a sensor nor an output port of a module: choose one");
             }
@@ -240,13 +236,65 @@ public final class Latencies {
                     "not analysed: " + why);
         }
 
-        /** Data (or, through an inhibitor, control) reaches module m, which takes it through its stage st. */
+        /**
+         * One step out of a module: the trail elements it adds (the output port, the link, the entry
+         * port), whether it arrives at the target entry port, and where the path goes on: into a
+         * module's stage ({@code enter}), or past an inhibitor to the inhibited port ({@code inhibitor}).
+         */
+        private record Step(List<EObject> adds, boolean arrives, PlannedModule next, LinkPlan inhibitor) {
+        }
+
+        /** A module on the current path, with the steps out of it not taken yet. */
+        private static final class Frame {
+            final PlannedModule module;
+            final long period;
+            final List<Step> steps;
+            final int trailBefore;
+            final String unboundedBefore;
+            final boolean hop;
+            final boolean root;
+            int next;
+
+            Frame(PlannedModule module, long period, List<Step> steps, int trailBefore, String unboundedBefore, boolean hop, boolean root) {
+                this.module = module;
+                this.period = period;
+                this.steps = steps;
+                this.trailBefore = trailBefore;
+                this.unboundedBefore = unboundedBefore;
+                this.hop = hop;
+                this.root = root;
+            }
+        }
+
+        private final java.util.ArrayDeque<Frame> stack = new java.util.ArrayDeque<>();
+
+        /**
+         * Data (or, through an inhibitor, control) reaches module m, which takes it through its stage
+         * st; every path on from there is followed depth first, with a stack of its own (a chain of any
+         * length, no recursion).
+         */
         private void enter(PlannedModule m, Stage st) {
+            push(m, st, trail.size());
+            search();
+        }
+
+        /** A path starting where module m's output port {@code only} sends. */
+        private void start(PlannedModule m, PlannedPort only) {
+            visited.add(m);
+            int before = trail.size();
+            trail.add(m.module());
+            stack.push(new Frame(m, stages.get(m).periodNs(), steps(m, only), before, pathUnbounded, false, true));
+            search();
+        }
+
+        /** Enters m (when the path may: not yet on it, not past the limit), recording when it drives the actuator. */
+        private void push(PlannedModule m, Stage st, int trailBefore) {
             if (paths > MAX_PATHS || !visited.add(m)) {
+                trail.subList(trailBefore, trail.size()).clear();
                 return;
             }
-            trail.add(m.module());
             String before = pathUnbounded;
+            trail.add(m.module());
             if (st.hop() == null) {
                 // paths through here have no bound; they are still followed, to count those that reach the target
                 if (pathUnbounded == null) {
@@ -258,63 +306,72 @@ public final class Latencies {
             if (actuator != null && m.module().getActuators().contains(actuator)) {
                 record(st.periodNs());
             }
-            follow(m, null, st.periodNs());
-            if (st.hop() != null) {
-                hops.remove(hops.size() - 1);
+            stack.push(new Frame(m, st.periodNs(), steps(m, null), trailBefore, before, st.hop() != null, false));
+        }
+
+        private void search() {
+            while (!stack.isEmpty()) {
+                Frame f = stack.peek();
+                if (f.next == f.steps.size() || paths > MAX_PATHS) {
+                    stack.pop();
+                    if (f.hop) {
+                        hops.remove(hops.size() - 1);
+                    }
+                    pathUnbounded = f.unboundedBefore;
+                    visited.remove(f.module);
+                    trail.subList(f.trailBefore, trail.size()).clear();
+                    continue;
+                }
+                Step step = f.steps.get(f.next++);
+                int before = trail.size();
+                trail.addAll(step.adds());
+                if (step.arrives()) {
+                    record(f.period);
+                }
+                PlannedModule next = step.next();
+                if (next == null || visited.contains(next) || !reaching.contains(next)) {
+                    trail.subList(before, trail.size()).clear();
+                } else if (step.inhibitor() == null) {
+                    push(next, stages.get(next), before);
+                } else if (paths <= MAX_PATHS) {
+                    LinkPlan link = step.inhibitor();
+                    visited.add(next);
+                    hops.add(new Hop(link.qualifiedName(), next.module(), "inhibits " + link.target().qualifiedName()
+                            + " from the trigger's message on, at once", 0, 0));
+                    stack.push(new Frame(next, 0, steps(next, link.target()), before, pathUnbounded, true, false));
+                } else {
+                    trail.subList(before, trail.size()).clear();
+                }
             }
-            pathUnbounded = before;
-            trail.remove(trail.size() - 1);
-            visited.remove(m);
         }
 
         /**
-         * What m sends: along its flows; a suppressor's trigger message to the suppressed entry port
-         * (as data when the two carry the same data, else as control: the target's input is blocked,
-         * which its module acts on at its next activation); an inhibitor's, at once to the inhibited
-         * output port, whose module then sends nothing more there, while what it sent before still
-         * travels on.
+         * What m sends (from {@code only}, or from every output port): along its flows; a suppressor's
+         * trigger message to the suppressed entry port (as data when the two carry the same data, else
+         * as control: the target's input is blocked, which its module acts on at its next activation);
+         * an inhibitor's, at once to the inhibited output port, whose module then sends nothing more
+         * there, while what it sent before still travels on.
          */
-        private void follow(PlannedModule m, PlannedPort only, long period) {
+        private List<Step> steps(PlannedModule m, PlannedPort only) {
+            List<Step> steps = new ArrayList<>();
             for (PlannedPort out : m.outputs()) {
                 if (only != null && out != only) {
                     continue;
                 }
-                trail.add(out.port());
                 for (Flow f : out.outgoing()) {
-                    PlannedModule next = f.target().module();
-                    trail.add(f.target().port());
-                    if (entry != null && f.target().port() == entry) {
-                        record(period);
-                    }
-                    if (!visited.contains(next) && reaching.contains(next)) {
-                        enter(next, stages.get(next));
-                    }
-                    trail.remove(trail.size() - 1);
+                    steps.add(new Step(List.of(out.port(), f.target().port()), entry != null && f.target().port() == entry,
+                            f.target().module(), null));
                 }
                 for (LinkPlan link : out.triggers()) {
-                    PlannedModule next = link.target().module();
-                    trail.add(link.link());
-                    trail.add(link.target().port());
-                    if (!link.inhibitor()) {
-                        if (entry != null && link.target().port() == entry) {
-                            record(period);
-                        }
-                        if (!visited.contains(next) && reaching.contains(next)) {
-                            enter(next, stages.get(next));
-                        }
-                    } else if (!visited.contains(next) && reaching.contains(next) && paths <= MAX_PATHS) {
-                        visited.add(next);
-                        hops.add(new Hop(link.qualifiedName(), next.module(), "inhibits " + link.target().qualifiedName()
-                                + " from the trigger's message on, at once", 0, 0));
-                        follow(next, link.target(), 0);
-                        hops.remove(hops.size() - 1);
-                        visited.remove(next);
+                    List<EObject> adds = List.of(out.port(), link.link(), link.target().port());
+                    if (link.inhibitor()) {
+                        steps.add(new Step(adds, false, link.target().module(), link));
+                    } else {
+                        steps.add(new Step(adds, entry != null && link.target().port() == entry, link.target().module(), null));
                     }
-                    trail.remove(trail.size() - 1);
-                    trail.remove(trail.size() - 1);
                 }
-                trail.remove(trail.size() - 1);
             }
+            return steps;
         }
 
         /** The modules with a path of flows to the target (the target's own module included). */

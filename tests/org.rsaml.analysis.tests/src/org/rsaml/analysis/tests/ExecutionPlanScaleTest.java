@@ -10,6 +10,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.model.Architecture;
@@ -24,7 +27,8 @@ import org.rsaml.model.RsamlFactory;
 /**
  * The plan of a clean model of any size: a chain of 100,000 modules that react to each other's
  * data, fed by one timed module, is planned and searched for reactive cycles without running out
- * of stack (the search is iterative); closed into a ring, it is one cycle of all its reacting modules.
+ * of stack (the search is iterative); closed into a ring, it is one cycle of all its reacting modules;
+ * a latency requirement along a chain of 20,000 is searched to its end.
  */
 class ExecutionPlanScaleTest {
 
@@ -98,6 +102,47 @@ class ExecutionPlanScaleTest {
         assertEquals(MODULES - 1, cycle.size(), "every reacting module is in it, the timed one is not");
         assertEquals("reactive/m1", cycle.get(0).qualifiedName(), "in module order");
         assertEquals("reactive/m" + (MODULES - 1), cycle.get(cycle.size() - 1).qualifiedName(), "in module order");
+    }
+
+    /**
+     * A latency requirement along the whole chain, each module on a processor (and core) of its own:
+     * the search follows its one path to the end without running out of stack, 10 ms a hop (each
+     * module waits up to its period or minimum interval, and takes no time).
+     */
+    @Test
+    void aLatencyRequirementAlongA20000ModuleChainIsSearchedToItsEnd() throws Exception {
+        RsamlFactory f = RsamlFactory.eINSTANCE;
+        int n = 20_000; // deep enough to overflow a recursive search; each module is a processor to analyse
+        Architecture architecture = chain(n, false);
+        List<Module> modules = architecture.getLayers().get(0).getModules();
+        for (int i = 0; i < n; i++) {
+            org.rsaml.model.Processor p = f.createProcessor();
+            p.setName("p" + i);
+            p.setCore(i);
+            p.getModules().add(modules.get(i));
+            architecture.getProcessors().add(p);
+        }
+        org.rsaml.model.Sensor laser = f.createSensor();
+        laser.setName("laser");
+        architecture.getSensors().add(laser);
+        modules.get(0).getSensors().add(laser);
+        org.rsaml.model.Actuator wheels = f.createActuator();
+        wheels.setName("wheels");
+        architecture.getActuators().add(wheels);
+        modules.get(n - 1).getActuators().add(wheels);
+        org.rsaml.model.LatencyRequirement r = f.createLatencyRequirement();
+        r.setName("end");
+        r.setSource(laser);
+        r.setTarget(wheels);
+        r.setTimeUnit(org.rsaml.model.TimeUnit.S);
+        r.setMaxLatency(2000);
+        architecture.getLatencyRequirements().add(r);
+
+        LatencyResult result = TimingAnalysis.analyse(architecture).latencies().get(0);
+        assertEquals(Verdict.MEETS, result.verdict(), result.explanation());
+        assertEquals(1, result.paths(), result.explanation());
+        assertEquals(n * 10_000_000L, result.reactionNs(), "10 ms for each of the chain's modules");
+        assertEquals(n, result.worstPath().size(), "a hop per module");
     }
 
     @Test
