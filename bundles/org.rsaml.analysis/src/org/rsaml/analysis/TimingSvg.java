@@ -16,6 +16,7 @@ import java.util.Locale;
 import java.util.Map;
 
 import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.RsamlText;
 
 /**
  * The witnesses of negative verdicts as SVG timelines: for a missed deadline one lane per task from
@@ -253,6 +254,6 @@ public final class TimingSvg {
     }
 
     private static String esc(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+        return RsamlText.xml(s);
     }
 }

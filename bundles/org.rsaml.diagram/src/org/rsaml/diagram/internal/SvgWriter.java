@@ -16,6 +16,7 @@ import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlText;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.Severity;
 
@@ -281,23 +282,6 @@ public final class SvgWriter {
     }
 
     static String esc(String text) {
-        StringBuilder b = new StringBuilder(text.length());
-        for (int i = 0; i < text.length(); i++) {
-            char c = text.charAt(i);
-            switch (c) {
-                case '&' -> b.append("&amp;");
-                case '<' -> b.append("&lt;");
-                case '>' -> b.append("&gt;");
-                case '"' -> b.append("&quot;");
-                case '\'' -> b.append("&#39;");
-                default -> {
-                    // Characters XML 1.0 cannot carry are dropped rather than producing a broken document.
-                    if (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') {
-                        b.append(c);
-                    }
-                }
-            }
-        }
-        return b.toString();
+        return RsamlText.xml(text);
     }
 }

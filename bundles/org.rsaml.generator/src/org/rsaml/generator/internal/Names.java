@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 
+import org.rsaml.model.support.RsamlText;
+
 /**
  * Turns model names, which may hold any text, into names that are safe as C++ and Python
  * identifiers, ROS names and file names: ASCII letters, digits and single underscores, never a
@@ -194,19 +196,7 @@ public final class Names {
 
     /** Text for XML content and attribute values. */
     public static String xml(String text) {
-        StringBuilder out = new StringBuilder();
-        for (int i = 0; i < (text == null ? 0 : text.length()); i++) {
-            char c = text.charAt(i);
-            switch (c) {
-                case '&' -> out.append("&amp;");
-                case '<' -> out.append("&lt;");
-                case '>' -> out.append("&gt;");
-                case '"' -> out.append("&quot;");
-                case '\'' -> out.append("&apos;");
-                default -> out.append(c < 0x20 && c != '\n' && c != '\t' ? ' ' : c);
-            }
-        }
-        return out.toString();
+        return RsamlText.xml(text);
     }
 
     /**
