@@ -56,8 +56,8 @@ public final class RsamlProjects {
 
     /**
      * Turns RsaML validation on for the project of a model the user creates or opens, unless the
-     * project has it or the user turned it off there before. The caller holds the project's
-     * scheduling rule or none (it changes the project description).
+     * project has it or the user turned it off there before. The caller holds the workspace
+     * root's scheduling rule or none (it changes the project's natures).
      *
      * @return whether the nature was added now
      */

@@ -67,7 +67,8 @@ public class RsamlEditorSpec extends RsamlEditor {
                 return family == ENABLE_VALIDATION_FAMILY;
             }
         };
-        job.setRule(ResourcesPlugin.getWorkspace().getRuleFactory().modifyRule(project));
+        // Changing natures locks the workspace root (natures may concern other projects).
+        job.setRule(ResourcesPlugin.getWorkspace().getRoot());
         job.setSystem(true);
         job.schedule();
     }
