@@ -17,6 +17,8 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.eclipse.core.commands.ParameterizedCommand;
+import org.eclipse.core.expressions.IEvaluationContext;
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IProject;
@@ -31,6 +33,9 @@ import org.eclipse.jface.viewers.TreeViewer;
 import org.eclipse.jface.wizard.WizardDialog;
 import org.eclipse.ui.IEditorPart;
 import org.eclipse.ui.IPageLayout;
+import org.eclipse.ui.ISources;
+import org.eclipse.ui.commands.ICommandService;
+import org.eclipse.ui.handlers.IHandlerService;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.ide.IDE;
 import org.junit.jupiter.api.AfterEach;
@@ -205,6 +210,41 @@ class TreeEditorTest {
                 "the marker's line is the module's line in the saved file");
         assertEquals(comments(Files.readString(example)), comments(saved), "the save keeps the file's comments");
         Workbench.screenshot(editor.getSite().getShell(), "tree-editor-after-save");
+    }
+
+    /**
+     * Configure > Disable RsaML validation turns it off and keeps it off when a model is opened;
+     * Configure > Enable RsaML validation turns it on again, and the builder marks the model.
+     */
+    @Test
+    void theConfigureCommandsTurnValidationOffForGoodAndOnAgain() throws Exception {
+        project = Workbench.newProject("configured");
+        IFile file = Workbench.copy(project, TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
+        RsamlProjects.addNature(project, null);
+
+        execute("org.rsaml.model.editor.disableValidation");
+        assertFalse(RsamlProjects.hasNature(project), "Disable RsaML validation removes the nature");
+        open(file);
+        assertFalse(RsamlProjects.hasNature(project), "opening a model does not undo Disable");
+        Workbench.join(ResourcesPlugin.FAMILY_AUTO_BUILD);
+        assertEquals(List.of(), markers(file), "nothing validates the project");
+        Workbench.page().closeAllEditors(false);
+
+        execute("org.rsaml.model.editor.enableValidation");
+        assertTrue(RsamlProjects.hasNature(project), "Enable RsaML validation adds the nature");
+        Workbench.join(ResourcesPlugin.FAMILY_AUTO_BUILD);
+        List<String> marked = markers(file);
+        assertEquals(5, marked.size(), () -> "the builder marks exp2's five findings: " + marked);
+    }
+
+    /** Runs a command of the editor bundle on the project, as its menu item in Configure does. */
+    private void execute(String commandId) throws Exception {
+        IHandlerService handlers = PlatformUI.getWorkbench().getService(IHandlerService.class);
+        ICommandService commands = PlatformUI.getWorkbench().getService(ICommandService.class);
+        IEvaluationContext context = handlers.createContextSnapshot(false);
+        context.addVariable(ISources.ACTIVE_CURRENT_SELECTION_NAME, new StructuredSelection(project));
+        handlers.executeCommandInContext(new ParameterizedCommand(commands.getCommand(commandId), null), null, context);
+        Workbench.processEvents();
     }
 
     private static List<String> comments(String text) {
