@@ -14,7 +14,7 @@ import org.eclipse.core.runtime.CoreException;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EValidator;
-import org.rsaml.model.resource.RsamlResource;
+import org.rsaml.model.resource.LocatingResource;
 import org.rsaml.model.resource.SourceLocation;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.Finding;
@@ -83,7 +83,7 @@ public final class RsamlMarkers {
     /**
      * Puts on {@code file} the marker of one finding of {@link RsamlModelValidator#diagnose} (the tree
      * editor's Validate), located where the element's start tag was when its file was last read or
-     * saved ({@link RsamlResource#locate}); an element added since has no line yet.
+     * saved ({@link LocatingResource#locate}, for .rsaml and .rsa files alike); an element added since has no line yet.
      */
     public static IMarker create(IFile file, Diagnostic finding) throws CoreException {
         return create(file, toFinding(file, finding));
@@ -105,7 +105,7 @@ public final class RsamlMarkers {
             if (element.eResource() != null) {
                 fragment = element.eResource().getURIFragment(element);
             }
-            if (element.eResource() instanceof RsamlResource resource) {
+            if (element.eResource() instanceof LocatingResource resource) {
                 SourceLocation at = resource.locate(element);
                 line = at.line();
                 column = at.column();
