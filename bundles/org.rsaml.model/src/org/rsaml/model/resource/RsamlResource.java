@@ -206,7 +206,10 @@ public class RsamlResource extends RsamlResourceImpl implements LocatingResource
         features.put("http://apache.org/xml/features/nonvalidating/load-external-dtd", Boolean.FALSE);
         features.put(XMLConstants.FEATURE_SECURE_PROCESSING, Boolean.TRUE);
         result.put(XMLResource.OPTION_PARSER_FEATURES, features);
-        result.remove(XMLResource.OPTION_PARSER_PROPERTIES);
+        // RsaML refuses nesting beyond MAX_DEPTH itself, naming the line; the JDK's own limit (100 levels in Java
+        // 24's jaxp.properties, none before) stays above it as a backstop, so that every Java reads the same models.
+        result.put(XMLResource.OPTION_PARSER_PROPERTIES,
+                Map.of("http://www.oracle.com/xml/jaxp/properties/maxElementDepth", String.valueOf(2 * MAX_DEPTH)));
         result.remove(XMLResource.OPTION_USE_PARSER_POOL);
         result.remove(XMLResource.OPTION_USE_DEPRECATED_METHODS);
         result.remove(XMLResource.OPTION_EXTENDED_META_DATA);
