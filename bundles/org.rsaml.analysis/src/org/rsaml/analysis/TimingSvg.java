@@ -5,10 +5,8 @@
 package org.rsaml.analysis;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -16,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 
 import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.AtomicFiles;
 import org.rsaml.model.support.RsamlText;
 
 /**
@@ -67,13 +66,7 @@ public final class TimingSvg {
     /** Writes one timeline atomically, so that a failed run leaves no half-written file. */
     private static Path write(Path directory, String name, String svg) throws IOException {
         Path file = directory.resolve(fileName(name) + ".svg");
-        Path temp = Files.createTempFile(directory, ".timeline", ".svg");
-        try {
-            Files.writeString(temp, svg, StandardCharsets.UTF_8);
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(temp);
-        }
+        AtomicFiles.writeString(file, svg);
         return file;
     }
 

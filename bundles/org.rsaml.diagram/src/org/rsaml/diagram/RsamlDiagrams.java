@@ -5,12 +5,7 @@
 package org.rsaml.diagram;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -18,7 +13,6 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import java.util.UUID;
 
 import org.rsaml.diagram.internal.ArchitectureLayout;
 import org.rsaml.diagram.internal.Drawing;
@@ -27,6 +21,7 @@ import org.rsaml.diagram.internal.MissionLayout;
 import org.rsaml.diagram.internal.SvgWriter;
 import org.rsaml.diagram.internal.TimingOverlay;
 import org.rsaml.model.Architecture;
+import org.rsaml.model.support.AtomicFiles;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
@@ -133,36 +128,12 @@ public final class RsamlDiagrams {
         return target;
     }
 
-    /** Writes {@code text} to {@code target} through a temporary file beside it, so readers never see half a file. */
+    /** Writes {@code text} to {@code target} whole or not at all ({@link AtomicFiles}). */
     public static void write(Path target, String text) throws DiagramException {
-        Path directory = target.toAbsolutePath().getParent();
-        Path temporary = null;
         try {
-            Files.createDirectories(directory);
-            // Not createTempFile: its owner-only permissions would stay on the diagram; this one gets the umask's.
-            temporary = directory.resolve(".rsaml-diagram-" + UUID.randomUUID() + ".tmp");
-            Files.writeString(temporary, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
-            try {
-                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(temporary, target, StandardCopyOption.REPLACE_EXISTING);
-            }
+            AtomicFiles.writeString(target, text);
         } catch (IOException e) {
-            throw new DiagramException(target + ": cannot write the diagram: " + reason(e), e);
-        } finally {
-            if (temporary != null) {
-                try {
-                    Files.deleteIfExists(temporary);
-                } catch (IOException e) {
-                    // nothing left to do: the temporary file is hidden and named as ours
-                }
-            }
+            throw new DiagramException(target + ": cannot write the diagram: " + AtomicFiles.reason(e, target), e);
         }
-    }
-
-    private static String reason(IOException e) {
-        String message = e.getMessage();
-        return e.getClass().getSimpleName().replace("Exception", "").replaceAll("([a-z])([A-Z])", "$1 $2").toLowerCase()
-                + (message == null ? "" : " (" + message + ")");
     }
 }

@@ -1,0 +1,110 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model.support;
+
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.DirectoryNotEmptyException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.NotDirectoryException;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * The one way RsaML writes a file it produces (a report, a diagram, a timeline): into a hidden temporary file beside
+ * it, then moved over it, so a reader never sees half a file and a failure leaves the old one. The file gets the
+ * permissions any program's output gets (those the umask allows; {@code Files.createTempFile} would make it
+ * owner-only), since CI often reads it as another user.
+ */
+public final class AtomicFiles {
+
+    /** What goes into the file. */
+    @FunctionalInterface
+    public interface Content {
+        void writeTo(Writer out) throws IOException;
+    }
+
+    private AtomicFiles() {
+    }
+
+    /** Writes {@code text} (UTF-8) to {@code file}, replacing it; missing folders are created. */
+    public static void writeString(Path file, String text) throws IOException {
+        write(file, out -> out.write(text));
+    }
+
+    /**
+     * Writes what {@code content} produces (UTF-8) to {@code file}, replacing it; missing folders are created.
+     *
+     * @throws FileSystemException with the reason {@code it is a directory} when a directory is where the file goes
+     */
+    public static void write(Path file, Content content) throws IOException {
+        Path target = file.toAbsolutePath();
+        Path dir = target.getParent();
+        Files.createDirectories(dir);
+        if (Files.isDirectory(target)) {
+            throw new FileSystemException(target.toString(), null, "it is a directory");
+        }
+        Path temp = newTemp(dir, target.getFileName().toString());
+        try {
+            try (Writer out = Files.newBufferedWriter(temp, StandardCharsets.UTF_8)) {
+                content.writeTo(out);
+            }
+            try {
+                Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } finally {
+            Files.deleteIfExists(temp);
+        }
+    }
+
+    /** A new, empty, hidden file beside the target, created as an ordinary file is. */
+    private static Path newTemp(Path dir, String name) throws IOException {
+        for (int attempt = 0;; attempt++) {
+            Path temp = dir.resolve("." + name + "." + Long.toUnsignedString(ThreadLocalRandom.current().nextLong(), 36) + ".tmp");
+            try {
+                Files.newByteChannel(temp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
+                return temp;
+            } catch (FileAlreadyExistsException e) {
+                if (attempt > 100) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    /**
+     * Why a file operation failed, as the operating system says it ({@code permission denied},
+     * {@code not a directory}, ...), naming the file when it is not {@code target}.
+     */
+    public static String reason(IOException e, Path target) {
+        String why;
+        if (e instanceof FileSystemException fs) {
+            why = fs.getReason() != null ? fs.getReason()
+                    : e instanceof AccessDeniedException ? "permission denied"
+                    : e instanceof NoSuchFileException ? "no such file or directory"
+                    : e instanceof NotDirectoryException ? "not a directory"
+                    : e instanceof FileAlreadyExistsException ? "it exists and is not a directory"
+                    : e instanceof DirectoryNotEmptyException ? "it is a directory that is not empty"
+                    : e.getClass().getSimpleName();
+            String other = fs.getFile();
+            if (other != null && (target == null || !Path.of(other).toAbsolutePath().equals(target.toAbsolutePath()))) {
+                why += " (" + other + ")";
+            }
+        } else {
+            why = e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+        }
+        return why;
+    }
+}

@@ -1,0 +1,65 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.model.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermission;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.model.support.AtomicFiles;
+
+/** Files RsaML produces (reports, diagrams, timelines) are replaced whole, readable by others, never left half written. */
+class AtomicFilesTest {
+
+    @Test
+    void aFileIsReplacedWholeWithTheUmasksPermissionsAndNothingIsLeftBeside(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("out/diagram.svg");
+        AtomicFiles.writeString(file, "x".repeat(100_000));
+        AtomicFiles.writeString(file, "<svg/>");
+        assertEquals("<svg/>", Files.readString(file), "the new content, nothing of the old");
+        try (Stream<Path> files = Files.list(file.getParent())) {
+            assertEquals(List.of(file), files.toList(), "no temporary file is left");
+        }
+        if (Files.getFileStore(file).supportsFileAttributeView("posix")) {
+            assertTrue(Files.getPosixFilePermissions(file).contains(PosixFilePermission.OWNER_READ)
+                    && Files.getPosixFilePermissions(file).size() > 2 || !Files.getPosixFilePermissions(dir).contains(PosixFilePermission.OTHERS_READ),
+                    "not owner-only like a temporary file: " + Files.getPosixFilePermissions(file));
+        }
+    }
+
+    @Test
+    void aFailingWriterLeavesTheOldFileAndNoTemporaryFile(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("report.json");
+        Files.writeString(file, "old");
+        IOException e = assertThrows(IOException.class, () -> AtomicFiles.write(file, out -> {
+            out.write("half");
+            throw new IOException("disk full");
+        }));
+        assertEquals("disk full", e.getMessage(), "the writer's failure is passed on");
+        assertEquals("old", Files.readString(file), "the old file is kept");
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(List.of(file), files.toList(), "no temporary file is left");
+        }
+    }
+
+    @Test
+    void aDirectoryWhereTheFileGoesIsRefusedWithTheReason(@TempDir Path dir) throws Exception {
+        Path taken = Files.createDirectories(dir.resolve("timeline.svg"));
+        FileSystemException e = assertThrows(FileSystemException.class, () -> AtomicFiles.writeString(taken, "<svg/>"));
+        assertEquals("it is a directory", AtomicFiles.reason(e, taken), "the reason, without repeating the file");
+        assertEquals("permission denied (/x/y)", AtomicFiles.reason(new java.nio.file.AccessDeniedException("/x/y"), taken),
+                "another file is named");
+    }
+}
