@@ -136,6 +136,7 @@ class TreeEditorTest {
 
         Workbench.page().showView(IPageLayout.ID_PROBLEM_VIEW);
         Workbench.page().activate(editor);
+        Workbench.expandTreesStartingWith(editor.getSite().getShell(), "Errors (");
         TreeViewer viewer = (TreeViewer) editor.getViewer();
         viewer.expandToLevel(root, 2);
         editor.setSelectionToViewer(List.of(root.getLayers().get(1).getModules().get(1)));

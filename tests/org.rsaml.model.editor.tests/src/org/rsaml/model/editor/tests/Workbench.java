@@ -32,6 +32,8 @@ import org.eclipse.swt.graphics.ImageData;
 import org.eclipse.swt.graphics.ImageLoader;
 import org.eclipse.swt.graphics.Rectangle;
 import org.eclipse.swt.widgets.Button;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Display;
 import org.eclipse.swt.widgets.Event;
 import org.eclipse.swt.widgets.Shell;
@@ -220,6 +222,21 @@ final class Workbench {
             }
         }
         return null;
+    }
+
+    /** Expands, as a click on its arrow would, the first item of every tree in the shell whose text starts so (for the pictures). */
+    static void expandTreesStartingWith(Composite parent, String prefix) {
+        for (Control child : parent.getChildren()) {
+            if (child instanceof Tree tree && tree.getItemCount() > 0 && tree.getItem(0).getText().startsWith(prefix)) {
+                Event expand = new Event();
+                expand.item = tree.getItem(0);
+                tree.notifyListeners(SWT.Expand, expand);
+                tree.getItem(0).setExpanded(true);
+            } else if (child instanceof Composite composite) {
+                expandTreesStartingWith(composite, prefix);
+            }
+        }
+        processEvents();
     }
 
     /** The labels of the tree's expanded items, indented by depth, one a line. */
