@@ -21,6 +21,7 @@ import org.rsaml.report.ModelFiles;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
+import org.rsaml.report.TimingJson;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;

@@ -7,20 +7,15 @@ package org.rsaml.cli;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
-import org.rsaml.report.Text;
-import org.rsaml.diagram.DiagramException;
+import org.rsaml.report.DiagramBatch;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
-import org.rsaml.diagram.RsamlDiagrams;
 import org.rsaml.diagram.TimingMode;
-import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.RsamlValidationSetup;
 
 import picocli.CommandLine;
@@ -79,43 +74,27 @@ final class DiagramCommand implements Callable<Integer> {
             throw new CommandLine.ParameterException(spec.commandLine(),
                     ModelFiles.display(output) + " is a file; -o names the directory the diagrams are written to");
         }
-        RsamlDiagrams diagrams = new RsamlDiagrams(view)
-                .timing(timing == null ? TimingMode.AUTO : timing ? TimingMode.ON : TimingMode.OFF);
+        DiagramBatch batch = new DiagramBatch(List.of(view), List.of(format),
+                timing == null ? TimingMode.AUTO : timing ? TimingMode.ON : TimingMode.OFF);
         List<ModelFiles.Input> inputs = ModelFiles.select(parent.workingDirectory, models);
-        // Two models of the same name would overwrite each other's diagram: refuse before writing anything.
-        Map<String, ModelFiles.Input> byFile = new LinkedHashMap<>();
-        for (ModelFiles.Input input : inputs) {
-            if (input.unusable() == null) {
-                String file = diagrams.fileName(input.path(), format);
-                ModelFiles.Input other = byFile.putIfAbsent(file, input);
-                if (other != null) {
-                    throw new CommandLine.ParameterException(spec.commandLine(), other.displayName() + " and " + input.displayName()
-                            + " would both be drawn to " + ModelFiles.display(output.resolve(file))
-                            + "; draw them into different directories");
+        batch.clash(inputs, output).ifPresent(clash -> {
+            throw new CommandLine.ParameterException(spec.commandLine(), clash + "; draw them into different directories");
+        });
+        int failed = batch.draw(inputs, directory, new DiagramBatch.Listener() {
+            @Override
+            public void written(Path file) {
+                out.println("wrote " + ModelFiles.display(output.resolve(file.getFileName())));
+            }
+
+            @Override
+            public void failed(List<String> lines, Throwable cause) {
+                lines.forEach(err::println);
+                if (parent.debug && cause != null) {
+                    cause.printStackTrace(err);
                 }
             }
-        }
-        int code = ExitCodes.OK;
-        for (ModelFiles.Input input : inputs) {
-            if (input.unusable() != null) {
-                Text.lines(input.unusable()).forEach(err::println);
-                code = ExitCodes.INPUT_ERROR;
-                continue;
-            }
-            try {
-                Path written = diagrams.write(input.path(), input.displayName(), format, directory);
-                out.println("wrote " + ModelFiles.display(output.resolve(written.getFileName())));
-            } catch (ModelLoadException e) {
-                Text.lines(e).forEach(err::println);
-                code = ExitCodes.INPUT_ERROR;
-            } catch (DiagramException e) {
-                err.println(input.displayName() + ": error: " + e.getMessage());
-                if (parent.debug && e.getCause() != null) {
-                    e.getCause().printStackTrace(err);
-                }
-                code = ExitCodes.INPUT_ERROR;
-            }
-        }
+        });
+        int code = failed == 0 ? ExitCodes.OK : ExitCodes.INPUT_ERROR;
         out.flush();
         return code;
     }

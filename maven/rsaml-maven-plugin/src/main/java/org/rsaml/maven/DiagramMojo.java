@@ -7,9 +7,8 @@ package org.rsaml.maven;
 import java.io.File;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
+import java.util.Optional;
 
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
@@ -17,13 +16,11 @@ import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
-import org.rsaml.diagram.DiagramException;
 import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
-import org.rsaml.diagram.RsamlDiagrams;
 import org.rsaml.diagram.TimingMode;
-import org.rsaml.report.Text;
-import org.rsaml.validation.ModelLoadException;
+import org.rsaml.report.DiagramBatch;
+import org.rsaml.report.ModelFiles;
 
 /**
  * Draws the project's RsaML models, laid out by the Eclipse Layout Kernel, as SVG images and
@@ -84,34 +81,23 @@ public class DiagramMojo extends AbstractModelsMojo {
         if (models.isEmpty()) {
             return;
         }
-        Path base = baseDirectory.toPath();
-        // Two models of one name in different folders would overwrite each other's diagram: refuse first.
-        Map<String, Path> byFile = new LinkedHashMap<>();
-        for (Path model : models) {
-            Path other = byFile.putIfAbsent(new RsamlDiagrams(DiagramView.ARCHITECTURE).fileName(model, DiagramFormat.SVG), model);
-            if (other != null) {
-                throw new MojoFailureException(relative(base.resolve(other)) + " and " + relative(base.resolve(model))
-                        + " would be drawn to the same file; draw them with separate executions");
-            }
+        DiagramBatch batch = new DiagramBatch(diagramViews, formats, timingMode);
+        List<ModelFiles.Input> inputs = ModelFiles.select(baseDirectory.toPath(), models);
+        Optional<String> clash = batch.clash(inputs, Path.of(relative(outputDirectory.toPath())));
+        if (clash.isPresent()) {
+            throw new MojoFailureException(clash.get() + "; draw them with separate executions");
         }
-        int failed = 0;
-        for (Path model : models) {
-            String shown = relative(base.resolve(model));
-            try {
-                for (DiagramView view : diagramViews) {
-                    for (DiagramFormat format : formats) {
-                        Path written = new RsamlDiagrams(view).timing(timingMode).write(base.resolve(model), shown, format, outputDirectory.toPath());
-                        log.info("RsaML: drew " + relative(written));
-                    }
-                }
-            } catch (ModelLoadException e) {
-                Text.lines(e).forEach(log::error);
-                failed++;
-            } catch (DiagramException e) {
-                log.error(shown + ": error: " + e.getMessage());
-                failed++;
+        int failed = batch.draw(inputs, outputDirectory.toPath(), new DiagramBatch.Listener() {
+            @Override
+            public void written(Path file) {
+                log.info("RsaML: drew " + relative(file));
             }
-        }
+
+            @Override
+            public void failed(List<String> lines, Throwable cause) {
+                lines.forEach(log::error);
+            }
+        });
         if (failed > 0) {
             throw new MojoFailureException("RsaML could not draw " + failed + " model" + (failed == 1 ? "" : "s") + "; see the errors above");
         }

@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.cli;
+package org.rsaml.report;
 
 import java.util.Map;
 
@@ -20,13 +20,16 @@ import org.rsaml.analysis.Witness;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 
-/** The timing of an architecture as JSON; times are integral nanoseconds. */
-final class TimingJson {
+/**
+ * The timing of an architecture as JSON (what {@code rsaml analyze --format json} and the analyze
+ * goal's {@code json} report write); times are integral nanoseconds.
+ */
+public final class TimingJson {
 
     private TimingJson() {
     }
 
-    static JsonObject of(ArchitectureTiming timing) {
+    public static JsonObject of(ArchitectureTiming timing) {
         JsonObject o = new JsonObject();
         o.addProperty("architecture", timing.architecture());
         o.addProperty("verdict", verdict(timing.verdict()));

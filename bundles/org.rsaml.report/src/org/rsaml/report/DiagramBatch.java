@@ -1,0 +1,104 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.report;
+
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import org.rsaml.diagram.DiagramException;
+import org.rsaml.diagram.DiagramFormat;
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.diagram.RsamlDiagrams;
+import org.rsaml.diagram.TimingMode;
+import org.rsaml.validation.ModelLoadException;
+
+/**
+ * Draws every model a user named, in every view and format asked for, into one directory: what
+ * {@code rsaml diagram} and the Maven {@code diagram} goal run. Two models that would be drawn to the
+ * same file are refused before anything is written; a model that cannot be read or drawn costs that
+ * model only. The front ends only say where the files went and what went wrong.
+ */
+public final class DiagramBatch {
+
+    /** What the front end is told while the batch runs. */
+    public interface Listener {
+        /** A diagram was written to {@code file}. */
+        void written(Path file);
+
+        /**
+         * A model could not be read or drawn: {@code lines} say so as the user should read them;
+         * {@code cause} is the underlying defect, if any (for a debug trace).
+         */
+        void failed(List<String> lines, Throwable cause);
+    }
+
+    private final List<DiagramView> views;
+    private final List<DiagramFormat> formats;
+    private final TimingMode timing;
+
+    public DiagramBatch(List<DiagramView> views, List<DiagramFormat> formats, TimingMode timing) {
+        this.views = List.copyOf(views);
+        this.formats = List.copyOf(formats);
+        this.timing = timing;
+    }
+
+    /**
+     * The first pair of models that would overwrite each other's diagram, as
+     * "{@code a and b would both be drawn to DIR/file}" with {@code shownDirectory} as the user spelt it.
+     */
+    public Optional<String> clash(List<ModelFiles.Input> inputs, Path shownDirectory) {
+        for (DiagramView view : views) {
+            RsamlDiagrams diagrams = new RsamlDiagrams(view);
+            for (DiagramFormat format : formats) {
+                Map<String, ModelFiles.Input> byFile = new LinkedHashMap<>();
+                for (ModelFiles.Input input : inputs) {
+                    if (input.unusable() == null) {
+                        String file = diagrams.fileName(input.path(), format);
+                        ModelFiles.Input other = byFile.putIfAbsent(file, input);
+                        if (other != null) {
+                            return Optional.of(other.displayName() + " and " + input.displayName() + " would both be drawn to "
+                                    + ModelFiles.display(shownDirectory.resolve(file)));
+                        }
+                    }
+                }
+            }
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * Draws every usable input into {@code directory} (call {@link #clash} first).
+     *
+     * @return the number of inputs that could not be read or drawn
+     */
+    public int draw(List<ModelFiles.Input> inputs, Path directory, Listener listener) {
+        int failed = 0;
+        for (ModelFiles.Input input : inputs) {
+            if (input.unusable() != null) {
+                listener.failed(Text.lines(input.unusable()), null);
+                failed++;
+                continue;
+            }
+            try {
+                for (DiagramView view : views) {
+                    RsamlDiagrams diagrams = new RsamlDiagrams(view).timing(timing);
+                    for (DiagramFormat format : formats) {
+                        listener.written(diagrams.write(input.path(), input.displayName(), format, directory));
+                    }
+                }
+            } catch (ModelLoadException e) {
+                listener.failed(Text.lines(e), null);
+                failed++;
+            } catch (DiagramException e) {
+                listener.failed(List.of(input.displayName() + ": error: " + e.getMessage()), e.getCause());
+                failed++;
+            }
+        }
+        return failed;
+    }
+}
