@@ -10,11 +10,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <pthread.h>
 #include <sched.h>
 #define RSAML_HAS_PTHREAD 1
+#endif
+#if defined(__linux__)
+#include <sys/syscall.h>
+#include <unistd.h>
 #endif
 
 namespace rsaml {
@@ -35,15 +40,18 @@ constexpr long long kMaxRunMs = (1LL << 60) / 1000000;
 
 void usage(std::FILE* out, const char* program) {
   std::fprintf(out,
-               "Usage: %s [--run-for-ms N] [--quiet] [--no-realtime]\n"
-               "  --run-for-ms N  stop after N milliseconds (default: run until interrupted)\n"
-               "  --quiet         no trace of releases and data flow\n"
-               "  --no-realtime   do not ask for real-time priorities\n",
+               "Usage: %s [--run-for-ms N] [--quiet] [--no-realtime] [--busy-work PERCENT]\n"
+               "  --run-for-ms N        stop after N milliseconds (default: run until interrupted)\n"
+               "  --quiet               no trace of releases and data flow (misses, overruns and the\n"
+               "                        summary are still reported)\n"
+               "  --no-realtime         do not ask for real-time priorities\n"
+               "  --busy-work PERCENT   each timed job first consumes PERCENT %% of its modeled execution\n"
+               "                        time on the CPU, standing in for user code (100: as modeled)\n",
                program);
 }
 
 /** Real-time priority for a release thread where the platform allows it; false when not permitted. */
-bool apply_priority(std::thread& thread, Policy policy, int rank) {
+bool apply_priority(std::thread::native_handle_type thread, Policy policy, int rank) {
 #ifdef RSAML_HAS_PTHREAD
   const int posix = policy == Policy::RoundRobin ? SCHED_RR : SCHED_FIFO;
   const int low = sched_get_priority_min(posix);
@@ -53,7 +61,7 @@ bool apply_priority(std::thread& thread, Policy policy, int rank) {
   }
   sched_param param{};
   param.sched_priority = std::min(low + rank, high);
-  return pthread_setschedparam(thread.native_handle(), posix, &param) == 0;
+  return pthread_setschedparam(thread, posix, &param) == 0;
 #else
   (void)thread;
   (void)policy;
@@ -61,6 +69,60 @@ bool apply_priority(std::thread& thread, Policy policy, int rank) {
   return false;
 #endif
 }
+
+/** The calling thread's CPU time. */
+Nanos thread_cpu_time() {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+  timespec t{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0) {
+    return Nanos(static_cast<long long>(t.tv_sec) * 1000000000LL + t.tv_nsec);
+  }
+#endif
+  return std::chrono::duration_cast<Nanos>(Clock::now().time_since_epoch());
+}
+
+/** Consumes CPU time on the calling thread: busy work standing in for user code. */
+void consume(Nanos amount) {
+  const Nanos until = thread_cpu_time() + amount;
+  while (thread_cpu_time() < until) {
+  }
+}
+
+std::string millis(Nanos t) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3f ms", static_cast<double>(t.count()) / 1e6);
+  return text;
+}
+
+#if defined(__linux__)
+// SCHED_DEADLINE through the sched_setattr system call (glibc has no wrapper before 2.41).
+constexpr unsigned kSchedDeadline = 6;
+struct SchedAttr {
+  std::uint32_t size;
+  std::uint32_t sched_policy;
+  std::uint64_t sched_flags;
+  std::int32_t sched_nice;
+  std::uint32_t sched_priority;
+  std::uint64_t sched_runtime;
+  std::uint64_t sched_deadline;
+  std::uint64_t sched_period;
+};
+
+/** The calling thread's policy as the kernel reports it. */
+std::string kernel_policy() {
+  SchedAttr attr{};
+  if (syscall(SYS_sched_getattr, 0, &attr, sizeof attr, 0) != 0) {
+    return std::string("unknown (") + std::strerror(errno) + ")";
+  }
+  switch (attr.sched_policy) {
+    case SCHED_OTHER: return "SCHED_OTHER";
+    case SCHED_FIFO: return "SCHED_FIFO";
+    case SCHED_RR: return "SCHED_RR";
+    case kSchedDeadline: return "SCHED_DEADLINE";
+    default: return "policy " + std::to_string(attr.sched_policy);
+  }
+}
+#endif
 
 #if defined(__linux__)
 /** Cores as a short list: 0-3,6. */
@@ -100,6 +162,18 @@ Options parse_options(int argc, char** argv, const char* program) {
       options.trace = false;
     } else if (arg == "--no-realtime") {
       options.realtime = false;
+    } else if (arg == "--busy-work" && i + 1 < argc) {
+      char* end = nullptr;
+      errno = 0;
+      const long long value = std::strtoll(argv[++i], &end, 10);
+      if (end == argv[i] || *end != '\0' || errno == ERANGE || value < 0 || value > 1000) {
+        std::fprintf(stderr, "%s: --busy-work needs a percentage of the modeled execution time from 0 to 1000, not '%s'\n",
+                     program, argv[i]);
+        options.exit = true;
+        options.status = 2;
+        return options;
+      }
+      options.busy_work_percent = value;
     } else if (arg == "--help" || arg == "-h") {
       usage(stdout, program);
       options.exit = true;
@@ -128,6 +202,12 @@ void Trace::line(const std::string& text) {
   if (!trace_enabled) {
     return;
   }
+  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - trace_start).count();
+  std::fprintf(stdout, "[%10.3f ms] %s\n", ms, text.c_str());
+}
+
+void Trace::report(const std::string& text) {
+  std::lock_guard<std::mutex> lock(trace_mutex);
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - trace_start).count();
   std::fprintf(stdout, "[%10.3f ms] %s\n", ms, text.c_str());
 }
@@ -179,7 +259,7 @@ void Module::post(std::uint64_t wave, std::function<void()> work) {
 void Module::start_worker() {
   if (!worker_.joinable()) {
     worker_ = std::thread([this] { run_worker(); });
-    system_.place(worker_, name_, core_);
+    system_.place(worker_.native_handle(), name_, core_);
   }
 }
 
@@ -219,10 +299,14 @@ void Module::start_step(std::uint64_t wave) {
   publish_outputs();
 }
 
-void Module::timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body) {
+void Module::timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
+                           Nanos busy) {
   Activation activation(*this, system_.new_wave(), true, release);
   waves_.insert(activation.wave);
   trace("release " + label);
+  if (busy.count() > 0) {
+    consume(busy);
+  }
   body();
 }
 
@@ -291,9 +375,9 @@ System::~System() {
 void System::add(Module& module) { modules_.push_back(&module); }
 
 void System::every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
-                   std::function<void()> body) {
-  releases_.push_back(std::unique_ptr<Release>(
-      new Release{&module, std::move(label), period, offset, policy, rank, std::move(body), std::thread()}));
+                   JobBounds bounds, std::function<void()> body) {
+  releases_.push_back(std::unique_ptr<Release>(new Release{&module, std::move(label), period, offset, policy, rank, bounds,
+                                                           std::move(body), std::thread(), std::string(), JobStats()}));
 }
 
 bool System::sleep_until(Clock::time_point t) {
@@ -313,24 +397,27 @@ void System::claim_cores() {
   }
   cpu_set_t allowed;
   CPU_ZERO(&allowed);
-  if (cores_claimed_ && sched_getaffinity(0, sizeof(allowed), &allowed) == 0) {
+  if (sched_getaffinity(0, sizeof(allowed), &allowed) == 0) {
     for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu) {
-      if (CPU_ISSET(cpu, &allowed) && !CPU_ISSET(cpu, &claimed)) {
-        unclaimed_cores_.push_back(cpu);
+      if (CPU_ISSET(cpu, &allowed)) {
+        all_cores_.push_back(cpu);
+        if (cores_claimed_ && !CPU_ISSET(cpu, &claimed)) {
+          unclaimed_cores_.push_back(cpu);
+        }
       }
     }
   }
 #endif
 }
 
-void System::place(std::thread& thread, const std::string& label, int core) {
+void System::place(std::thread::native_handle_type thread, const std::string& label, int core) {
 #if defined(__linux__)
   if (core >= 0) {
     if (core < CPU_SETSIZE) {
       cpu_set_t set;
       CPU_ZERO(&set);
       CPU_SET(core, &set);
-      if (pthread_setaffinity_np(thread.native_handle(), sizeof(set), &set) == 0) {
+      if (pthread_setaffinity_np(thread, sizeof(set), &set) == 0) {
         Trace::line("cpu " + label + " core " + std::to_string(core));
         return;
       }
@@ -347,7 +434,7 @@ void System::place(std::thread& thread, const std::string& label, int core) {
     for (int cpu : unclaimed_cores_) {
       CPU_SET(cpu, &set);
     }
-    if (pthread_setaffinity_np(thread.native_handle(), sizeof(set), &set) == 0) {
+    if (pthread_setaffinity_np(thread, sizeof(set), &set) == 0) {
       Trace::line("cpu " + label + " cores " + core_list(unclaimed_cores_) + " unclaimed");
       return;
     }
@@ -361,22 +448,135 @@ void System::place(std::thread& thread, const std::string& label, int core) {
 #endif
 }
 
+void System::schedule_self(Release& r) {
+#ifdef RSAML_HAS_PTHREAD
+  const std::thread::native_handle_type self = pthread_self();
+#else
+  const std::thread::native_handle_type self{};
+#endif
+  place(self, r.label, r.module->core());
+  if (!options_.realtime) {
+    r.sched = "default";
+  } else if (r.policy == Policy::Deadline) {
+    // EDF: SCHED_DEADLINE with runtime = modeled cost, deadline and period as modeled. The kernel
+    // admits a deadline thread only where it may run on every CPU of its root domain, so one pinned
+    // to its processor's core is unpinned first.
+    std::string refused;
+#if defined(__linux__)
+    const long long runtime = r.bounds.cost.count();
+    if (runtime < 1024) {
+      refused = "the model gives it no execution time (SCHED_DEADLINE needs a runtime of 1 us or more)";
+    } else if (runtime > r.bounds.deadline.count() || r.bounds.deadline.count() > r.period.count()) {
+      refused = "SCHED_DEADLINE needs execution time <= deadline <= period";
+    } else {
+      std::string where;
+      if (r.module->core() >= 0 && !all_cores_.empty()) {
+        cpu_set_t set;
+        CPU_ZERO(&set);
+        for (int cpu : all_cores_) {
+          CPU_SET(cpu, &set);
+        }
+        pthread_setaffinity_np(self, sizeof(set), &set);
+        where = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->core()) +
+                " alone (the kernel admits a deadline thread only on all CPUs of its root domain)";
+      }
+      SchedAttr attr{};
+      attr.size = sizeof attr;
+      attr.sched_policy = kSchedDeadline;
+      attr.sched_runtime = static_cast<std::uint64_t>(runtime);
+      attr.sched_deadline = static_cast<std::uint64_t>(r.bounds.deadline.count());
+      attr.sched_period = static_cast<std::uint64_t>(r.period.count());
+      if (syscall(SYS_sched_setattr, 0, &attr, 0) == 0) {
+        r.sched = "SCHED_DEADLINE runtime " + millis(r.bounds.cost) + " deadline " + millis(r.bounds.deadline) + " period " +
+                  millis(r.period) + where + " (kernel: " + kernel_policy() + ")";
+      } else {
+        refused = std::string("the kernel refused SCHED_DEADLINE: ") + std::strerror(errno);
+        if (!where.empty() && r.module->core() < CPU_SETSIZE) {
+          cpu_set_t set;
+          CPU_ZERO(&set);
+          CPU_SET(r.module->core(), &set);
+          pthread_setaffinity_np(self, sizeof(set), &set);  // back on its core, as traced
+        }
+      }
+    }
+#else
+    refused = "SCHED_DEADLINE is Linux's";
+#endif
+    if (r.sched.empty()) {
+      r.sched = (apply_priority(self, Policy::Fifo, r.rank) ? "SCHED_FIFO rank " + std::to_string(r.rank) : std::string("default")) +
+                " instead of EDF: " + refused;
+    }
+  } else if (apply_priority(self, r.policy, r.rank)) {
+    r.sched = std::string(r.policy == Policy::RoundRobin ? "SCHED_RR" : "SCHED_FIFO") + " rank " + std::to_string(r.rank);
+  } else {
+    r.sched = "default";
+  }
+  Trace::line("sched " + r.label + " " + r.sched);
+}
+
+void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu) {
+  JobStats& s = r.stats;
+  ++s.jobs;
+  const Nanos response = std::chrono::duration_cast<Nanos>(done - released);
+  s.worst_response = std::max(s.worst_response, response);
+  s.worst_execution = std::max(s.worst_execution, cpu);
+  if (response > r.bounds.deadline) {
+    ++s.misses;
+    Trace::report("miss " + r.label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
+                  millis(r.bounds.deadline));
+  }
+  if (r.bounds.cost.count() > 0 && cpu > r.bounds.cost) {
+    ++s.overruns;
+    Trace::report("overrun " + r.label + " job " + std::to_string(s.jobs) + " execution " + millis(cpu) + " > modeled " +
+                  millis(r.bounds.cost));
+  }
+}
+
 void System::run_release(Release& release) {
+  schedule_self(release);
   Clock::time_point next;
   {
     std::unique_lock<std::mutex> lock(epoch_mutex_);
+    ++ready_;
+    epoch_cv_.notify_all();
     epoch_cv_.wait(lock, [this] { return epoch_set_; });
     next = epoch_ + release.offset;
   }
+  // The busy work stops short of the modeled time by 5 % (at most 100 us), which the job's own
+  // bookkeeping (trace, sends, the lock) takes instead.
+  Nanos busy(0);
+  if (options_.busy_work_percent > 0) {
+    busy = release.bounds.cost * options_.busy_work_percent / 100;
+    busy -= std::min(release.bounds.cost / 20, Nanos(100000));
+  }
   // Releases stay on the grid epoch + offset + k * period, however long one of them takes.
   while (sleep_until(next)) {
-    release.module->timed_release(release.label, next, release.body);
+    const Clock::time_point started = Clock::now();
+    const Nanos cpu = thread_cpu_time();
+    release.stats.worst_start_latency =
+        std::max(release.stats.worst_start_latency, std::chrono::duration_cast<Nanos>(started - next));
+    release.module->timed_release(release.label, next, release.body, busy);
+    const Nanos used = thread_cpu_time() - cpu;
+    job_done(release, next, Clock::now(), used);
     next += release.period;
+  }
+}
+
+void System::print_summary() {
+  for (auto& release : releases_) {
+    const Release& r = *release;
+    const JobStats& s = r.stats;
+    Trace::report("summary " + r.label + " jobs " + std::to_string(s.jobs) + " misses " + std::to_string(s.misses) +
+                  " overruns " + std::to_string(s.overruns) + " worst-response " + millis(s.worst_response) + " bound " +
+                  (r.bounds.response.count() >= 0 ? millis(r.bounds.response) : std::string("none")) + " deadline " +
+                  millis(r.bounds.deadline) + " worst-execution " + millis(s.worst_execution) + " modeled " +
+                  millis(r.bounds.cost) + " worst-start-latency " + millis(s.worst_start_latency) + " sched " + r.sched);
   }
 }
 
 int System::run(const Options& options) {
   const Clock::time_point start = Clock::now();
+  options_ = options;
   Trace::configure(options.trace, start);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -396,16 +596,10 @@ int System::run(const Options& options) {
   for (auto& release : releases_) {
     Release* r = release.get();
     r->thread = std::thread([this, r] { run_release(*r); });
-    place(r->thread, r->label, r->module->core());
-    if (options.realtime && apply_priority(r->thread, r->policy, r->rank)) {
-      Trace::line("sched " + r->label + (r->policy == Policy::RoundRobin ? " SCHED_RR" : " SCHED_FIFO") + " rank " +
-                  std::to_string(r->rank));
-    } else {
-      Trace::line("sched " + r->label + " default");
-    }
   }
   {
-    std::lock_guard<std::mutex> lock(epoch_mutex_);
+    std::unique_lock<std::mutex> lock(epoch_mutex_);
+    epoch_cv_.wait(lock, [this] { return ready_ == releases_.size(); });
     epoch_ = Clock::now();
     epoch_set_ = true;
   }
@@ -434,6 +628,7 @@ int System::run(const Options& options) {
     module->stop_worker();
   }
   const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+  print_summary();
   Trace::line("stop after " + std::to_string(ms) + " ms");
   Trace::flush();
   return 0;

@@ -31,6 +31,8 @@ struct Options {
   long long run_for_ms = -1;  // negative: until interrupted (Ctrl-C, SIGTERM)
   bool trace = true;
   bool realtime = true;
+  /** Percent of its modeled execution time each timed job first consumes on the CPU (0: none). */
+  long long busy_work_percent = 0;
   bool exit = false;  // --help or a bad argument: exit with status
   int status = 0;
 };
@@ -43,18 +45,44 @@ class Trace {
   static void configure(bool enabled, Clock::time_point start);
   static bool enabled();
   static void line(const std::string& text);
+  /** A line of the run's report (deadline misses, overruns, the summary): printed even when the trace is off. */
+  static void report(const std::string& text);
   static void flush();
 };
 
-/** POSIX scheduling policy of a timed release. */
-enum class Policy { Fifo, RoundRobin };
+/**
+ * Scheduling policy of a timed release: SCHED_FIFO or SCHED_RR at its rank, or (the releases of an
+ * EDF processor) SCHED_DEADLINE where the kernel permits it, SCHED_FIFO at the rank otherwise.
+ */
+enum class Policy { Fifo, RoundRobin, Deadline };
+
+/**
+ * What the model and the timing analysis say of each job of a timed release; the runtime measures
+ * every job against it.
+ */
+struct JobBounds {
+  Nanos deadline;  // relative deadline: the modeled delay, or the period
+  Nanos cost;      // modeled execution time; 0 when the model gives none
+  Nanos response;  // the analysis's worst-case response time; negative when it gives none
+};
+
+/** What a release thread observed of its jobs. */
+struct JobStats {
+  std::uint64_t jobs = 0;
+  std::uint64_t misses = 0;
+  std::uint64_t overruns = 0;
+  Nanos worst_response{0};
+  Nanos worst_execution{0};
+  Nanos worst_start_latency{0};
+};
 
 class System;
 class Module;
 
 /**
- * An inhibitor or a suppressor: active for its duration after each message on its trigger port.
- * Links are shared between threads, so their state is a single atomic time.
+ * An inhibitor or a suppressor: active for its duration after the last message on its trigger port
+ * that asserts it (see asserts()). Links are shared between threads, so their state is a single
+ * atomic time.
  */
 class Link {
  public:
@@ -111,7 +139,9 @@ class Module {
   void start_worker();
   void stop_worker();
   void start_step(std::uint64_t wave);
-  void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body);
+  /** Runs one job of a timed release; busy: CPU time it consumes first (the --busy-work stand-in for user code). */
+  void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
+                     Nanos busy = Nanos(0));
   /** Registers an entry port's latch: each activation starts with the latest value of every port. */
   void add_input(std::function<void()> latch) { latches_.push_back(std::move(latch)); }
 
@@ -155,6 +185,17 @@ class Module {
 
 template <class T>
 class Input;
+
+/**
+ * Whether a message on a link's trigger port asserts the link: a boolean only when true, a message
+ * of any other data kind always (its arrival is the event). A message that does not assert has no
+ * effect on the link and does not replace a suppressor's target input.
+ */
+template <class T>
+bool asserts(const T&) {
+  return true;
+}
+inline bool asserts(bool value) { return value; }
 
 /** An output port: set value, and publish_outputs() sends it; or send() at once. */
 template <class T>
@@ -278,9 +319,10 @@ class System {
   void add(Module& module);
   /**
    * Releases body every period from the run's epoch plus offset, on a thread of its own
-   * with the given policy and rank (1 is the lowest real-time priority).
+   * with the given policy and rank (1 is the lowest real-time priority); each job is measured
+   * against bounds.
    */
-  void every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
+  void every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank, JobBounds bounds,
              std::function<void()> body);
   /** Runs until options.run_for_ms have passed or the process is interrupted; returns the exit status. */
   int run(const Options& options);
@@ -290,7 +332,7 @@ class System {
    * some processor claims a core, on the cores none claims, so that no processor's core runs work
    * its analysis does not count. Says so in the trace, or why it could not.
    */
-  void place(std::thread& thread, const std::string& label, int core);
+  void place(std::thread::native_handle_type thread, const std::string& label, int core);
   /** Sleeps until t; false when the run is stopping. */
   bool sleep_until(Clock::time_point t);
   bool stopping() const { return stopping_.load(); }
@@ -304,10 +346,18 @@ class System {
     Nanos offset;
     Policy policy;
     int rank;
+    JobBounds bounds;
     std::function<void()> body;
     std::thread thread;
+    std::string sched;  // the scheduling it got, as the trace says it
+    JobStats stats;
   };
   void run_release(Release& release);
+  /** Gives the calling release thread its core and its scheduling; says which in the trace. */
+  void schedule_self(Release& release);
+  /** Measures one job: its response (release to completion) and execution (thread CPU) time. */
+  void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu);
+  void print_summary();
 
   /** Finds the cores the processors claim and the ones left for threads without a core. */
   void claim_cores();
@@ -315,8 +365,11 @@ class System {
   std::string name_;
   std::vector<Module*> modules_;
   std::vector<std::unique_ptr<Release>> releases_;
+  Options options_;
   bool cores_claimed_ = false;
   std::vector<int> unclaimed_cores_;
+  std::vector<int> all_cores_;
+  std::size_t ready_ = 0;  // release threads placed and scheduled, under epoch_mutex_
   // The release threads wait for the epoch, set once every thread has its core and priority.
   std::mutex epoch_mutex_;
   std::condition_variable epoch_cv_;
@@ -341,13 +394,19 @@ void Output<T>::send(const T& data) {
       return;
     }
   }
-  for (Link* link : triggers_) {
-    link->trigger();
+  const bool asserting = asserts(data);
+  if (asserting) {
+    for (Link* link : triggers_) {
+      link->trigger();
+    }
   }
   if (Trace::enabled()) {
     Trace::line("send " + name_ + " #" + std::to_string(sequence));
   }
   for (const Route& route : routes_) {
+    if (route.replacing && !asserting) {
+      continue;  // only an asserting message replaces the suppressed input
+    }
     if (!route.replacing) {
       if (Link* link = route.target->active_suppressor()) {
         if (Trace::enabled()) {

@@ -126,7 +126,7 @@ class CppExamplesTest {
         List<String> sched = trace.matching("sched ");
         assertFalse(sched.isEmpty(), "no release thread was started:\n" + Tools.last(trace.output, 2000));
         for (String line : sched) {
-            String label = line.substring("sched ".length()).replaceFirst(" (SCHED_FIFO|SCHED_RR|default).*$", "");
+            String label = line.substring("sched ".length()).replaceFirst(" (SCHED_FIFO|SCHED_RR|SCHED_DEADLINE|default).*$", "");
             int placed = trace.lines.indexOf(line);
             int first = trace.lines.indexOf("release " + label);
             assertTrue(first < 0 || first > placed, "release " + label + " ran before its thread had its priority:\n"

@@ -4,10 +4,13 @@
  */
 package org.rsaml.generator.tests;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -23,10 +26,29 @@ import org.rsaml.generator.Target;
  */
 class SubsumptionTest {
 
+    /**
+     * The overseer's boolean trigger 'quiet' asserts the inhibitor only when true (docs/timing.md,
+     * "Inhibitors and suppressors"). As generated, the overseer sends false every 100 ms: nothing is
+     * inhibited. With user code that sends true at every other release, the producer's messages are
+     * blocked exactly in the 30 ms after those releases, and reach the sink otherwise.
+     */
     @Test
-    void inhibitorBlocksTheOutputWhileActive(@TempDir Path tmp) throws Exception {
+    void inhibitorBlocksTheOutputOnlyAfterTrue(@TempDir Path tmp) throws Exception {
         Path out = tmp.resolve("out");
         new RsamlGenerator().generate(Tools.resource("inhibitor-window.rsaml"), Target.CPP, out, false);
+        RunTrace asGenerated = new RunTrace(Tools.ok(out, 60, Tools.cmakeBuild(out, "inhibitor_window").toString(), "--run-for-ms", "450"));
+        assertTrue(asGenerated.count("release high/overseer.watch") >= 4, asGenerated.output);
+        assertTrue(asGenerated.sends("high/overseer.quiet") >= 4, "the overseer sends false:\n" + asGenerated.output);
+        assertEquals(List.of(), asGenerated.matching("inhibit "), "a false trigger inhibits nothing");
+        assertEquals(asGenerated.sends("mid/producer.value"), asGenerated.received("low/sink.in", "mid/producer.value", false).size(),
+                "every message of the producer reaches the sink");
+
+        Path overseer = out.resolve("src/high/Overseer.cpp");
+        String user = Files.readString(overseer);
+        Matcher action = Pattern.compile("void Overseer::(\\w+)\\(\\) \\{\\}").matcher(user);
+        assertTrue(action.find(), user);
+        Files.writeString(overseer, user.replace(action.group(), "void Overseer::" + action.group(1)
+                + "() { out_quiet.value = !out_quiet.value; }"));
         RunTrace trace = new RunTrace(Tools.ok(out, 60, Tools.cmakeBuild(out, "inhibitor_window").toString(), "--run-for-ms", "450"));
 
         Pattern inhibit = Pattern.compile("inhibit mid/producer.value #(\\d+) by high/overseer.silence");
@@ -36,6 +58,19 @@ class SubsumptionTest {
         assertFalse(delivered.isEmpty(), "the inhibitor blocked everything:\n" + trace.output);
         for (Long n : blocked) {
             assertFalse(delivered.contains(n), "inhibited message #" + n + " arrived");
+        }
+        // each inhibition follows a release that sent true (the 1st, 3rd, ...) by at most the 30 ms window
+        List<Double> releases = new ArrayList<>();
+        for (int i = 0; i < trace.lines.size(); i++) {
+            String line = trace.lines.get(i);
+            if (line.equals("release high/overseer.watch")) {
+                releases.add(trace.times.get(i));
+            } else if (line.startsWith("inhibit ")) {
+                assertFalse(releases.isEmpty(), "inhibited before the overseer sent true: " + line);
+                double since = trace.times.get(i) - releases.get(releases.size() - 1);
+                assertTrue(releases.size() % 2 == 1 && since <= 30 + 2, "'" + line + "' " + since + " ms after the overseer's release "
+                        + releases.size() + ", which sent " + (releases.size() % 2 == 1) + "\n" + trace.output);
+            }
         }
     }
 

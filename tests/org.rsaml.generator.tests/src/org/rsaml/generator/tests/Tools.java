@@ -87,16 +87,83 @@ final class Tools {
         return cmakeBuild(project, executable, "");
     }
 
-    /** The same, with more compiler flags (e.g. a sanitizer, which the link then needs too). */
-    static Path cmakeBuild(Path project, String executable, String flags) throws IOException, InterruptedException {
-        ok(project, 300, "cmake", "-S", ".", "-B", "build", "-DCMAKE_BUILD_TYPE=Debug",
-                ("-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror " + flags).strip(), "-DCMAKE_EXE_LINKER_FLAGS=" + flags);
-        ok(project, 600, "cmake", "--build", "build", "-j2");
-        Path exe = project.resolve("build").resolve(executable);
-        if (!Files.isExecutable(exe)) {
-            fail("the build produced no executable " + exe);
+    /**
+     * The same, with more compiler flags (e.g. a sanitizer, which the link then needs too).
+     * <p>
+     * Builds are shared between the tests: a project is built once per content (every file of it,
+     * generated and user-owned) and flags, in {@code target/cpp-builds/<digest>/}, and a test that
+     * generates the same project again runs the same executable. The configure and build commands
+     * and their checks are those of a fresh build; only the repetition is saved.
+     */
+    static synchronized Path cmakeBuild(Path project, String executable, String flags) throws IOException, InterruptedException {
+        String key = digest(project, flags);
+        Path cached = buildCache().resolve(key);
+        Path exe = cached.resolve("build").resolve(executable);
+        if (Files.isExecutable(exe) && Files.exists(cached.resolve("complete"))) {
+            return exe;
         }
+        deleteTree(cached);
+        Path source = cached.resolve("project");
+        copyTree(project, source);
+        ok(source, 300, "cmake", "-S", ".", "-B", cached.resolve("build").toString(), "-DCMAKE_BUILD_TYPE=Debug",
+                ("-DCMAKE_CXX_FLAGS=-Wall -Wextra -Wpedantic -Werror " + flags).strip(), "-DCMAKE_EXE_LINKER_FLAGS=" + flags);
+        ok(source, 600, "cmake", "--build", cached.resolve("build").toString(), "-j2");
+        if (!Files.isExecutable(exe)) {
+            fail("the build of " + project + " produced no executable " + executable);
+        }
+        Files.writeString(cached.resolve("complete"), project.toString());
         return exe;
+    }
+
+    /** Where the shared builds are: under the test bundle's target/. */
+    static Path buildCache() {
+        return root().resolve("tests/org.rsaml.generator.tests/target/cpp-builds");
+    }
+
+    /** A digest of every file of a project (paths and bytes, build output aside) and the flags. */
+    private static String digest(Path project, String flags) throws IOException {
+        try {
+            java.security.MessageDigest sha = java.security.MessageDigest.getInstance("SHA-256");
+            sha.update(flags.getBytes(StandardCharsets.UTF_8));
+            for (Map.Entry<String, byte[]> f : snapshot(project).entrySet()) {
+                if (f.getKey().startsWith("build/")) {
+                    continue;
+                }
+                sha.update(("\0" + f.getKey() + "\0" + f.getValue().length + "\0").getBytes(StandardCharsets.UTF_8));
+                sha.update(f.getValue());
+            }
+            return java.util.HexFormat.of().formatHex(sha.digest()).substring(0, 24);
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    private static void copyTree(Path from, Path to) throws IOException {
+        try (Stream<Path> walk = Files.walk(from)) {
+            for (Path p : walk.toList()) {
+                String rel = from.relativize(p).toString().replace('\\', '/');
+                if (rel.equals("build") || rel.startsWith("build/")) {
+                    continue;
+                }
+                Path target = to.resolve(from.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(p, target);
+                }
+            }
+        }
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        if (!Files.exists(dir)) {
+            return;
+        }
+        try (Stream<Path> walk = Files.walk(dir)) {
+            for (Path p : walk.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.delete(p);
+            }
+        }
     }
 
     /** Every file under dir, by relative path, with its bytes. */

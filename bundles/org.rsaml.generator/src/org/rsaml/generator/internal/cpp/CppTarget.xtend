@@ -12,6 +12,7 @@ import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cpp.CppNames.MessageStruct
 import org.rsaml.generator.internal.cxx.CxxCode
 import org.rsaml.generator.internal.cxx.CxxNames
+import org.rsaml.generator.internal.cxx.ReleaseBounds
 import org.rsaml.analysis.plan.ExecutionPlan
 import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction
@@ -69,12 +70,14 @@ class CppFiles {
 	val extension CxxNames names
 	val extension CppNames cppNames
 	val String banner
+	val ReleaseBounds bounds
 
 	new(ExecutionPlan plan, String project) {
 		this.plan = plan
 		this.names = new CxxNames(plan, project)
 		this.cppNames = new CppNames(plan, names)
 		this.banner = Templates.banner(plan)
+		this.bounds = ReleaseBounds.of(plan)
 	}
 
 	def files() {
@@ -101,7 +104,19 @@ class CppFiles {
 	}
 
 	def private posixPolicy(Release r) {
-		if (r.policy == SchedulingPolicy.RR) "RoundRobin" else "Fifo"
+		val processor = r.module.processor
+		if (processor !== null && processor.isSetSchedPolicy && processor.schedPolicy == SchedulingPolicy.EDF) "Deadline"
+		else if (r.policy == SchedulingPolicy.RR) "RoundRobin"
+		else "Fifo"
+	}
+
+	/** The jobs' deadline, modeled cost and analysed bound, which the runtime measures each job against. */
+	def private jobBounds(Release r) '''::rsaml::JobBounds{«nanos(r.deadlineNs)», «nanos(r.costNs)», «nanos(bounds.of(r).responseNs)»}'''
+
+	def private boundComment(Release r) {
+		val bound = bounds.of(r)
+		if (bound.responseNs >= 0) '''analysed worst-case response «bound.responseNs» ns («doc(bound.why)»)'''
+		else '''no analysed bound: «doc(bound.why)»'''
 	}
 
 	def private dir(PlannedModule m) '''gen/«m.layerId»/'''
@@ -357,8 +372,9 @@ class CppFiles {
 		      «p.outName»(*this, «str(p.name)»)«ENDFOR» {
 		  «FOR r : m.releases»
 		  	// «r.kind.name.toLowerCase» «doc(r.label)»: every «r.periodNs» ns from «r.offsetNs» ns; «r.why».
+		  	// Due within «r.deadlineNs» ns, modeled to take «r.costNs» ns; «boundComment(r)».
 		  	system.every(*this, «str(r.label)», «nanos(r.periodNs)», «nanos(r.offsetNs)», ::rsaml::Policy::«r.posixPolicy», «r.rank»,
-		  	             [this] { «r.method»(); });
+		  	             «jobBounds(r)», [this] { «r.method»(); });
 		  «ENDFOR»
 		}
 		«FOR f : m.functions»
@@ -514,7 +530,12 @@ class CppFiles {
 		```
 
 		The program releases the periodic functions and actions at their modeled periods, passes data
-		along the modeled connections and prints a trace of both (`--quiet` turns it off).
+		along the modeled connections and prints a trace of both (`--quiet` turns it off). It measures
+		every job of a periodic release: a `miss` line when one completes after its deadline, an
+		`overrun` line when one uses more CPU time than modeled, and at exit a `summary` line per release
+		(jobs, worst response against the timing analysis's bound, worst execution time, its scheduling).
+		`--busy-work 100` makes every job first consume its modeled execution time, to see the timing
+		as analysed before the actions do real work; `--help` lists the options.
 
 		- `gen/` is regenerated every time the model is generated again: do not edit it.
 		- `src/` is yours: each module's class, where you implement its actions and input handlers, the
