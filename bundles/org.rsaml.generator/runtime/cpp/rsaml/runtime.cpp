@@ -364,7 +364,6 @@ System::System(std::string name) : name_(std::move(name)) {}
 
 System::~System() {
   stopping_ = true;
-  stop_cv_.notify_all();
   for (auto& release : releases_) {
     if (release->thread.joinable()) {
       release->thread.join();
@@ -381,8 +380,29 @@ void System::every(Module& module, std::string label, Nanos period, Nanos offset
 }
 
 bool System::sleep_until(Clock::time_point t) {
-  std::unique_lock<std::mutex> lock(stop_mutex_);
-  return !stop_cv_.wait_until(lock, t, [this] { return stopping_.load(); });
+  // No lock shared with other threads: a real-time thread must not wait for one that holds it
+  // while preempted. The stop is seen within a slice.
+  constexpr Nanos kSlice = std::chrono::milliseconds(20);
+  for (;;) {
+    if (stopping_.load()) {
+      return false;
+    }
+    const Clock::time_point now = Clock::now();
+    if (now >= t) {
+      return true;
+    }
+    const Clock::time_point until = t - now > kSlice ? now + kSlice : t;
+#if defined(__linux__)
+    // steady_clock is CLOCK_MONOTONIC: sleep to the absolute time, with no drift.
+    const long long ns = std::chrono::duration_cast<Nanos>(until.time_since_epoch()).count();
+    timespec at{};
+    at.tv_sec = static_cast<time_t>(ns / 1000000000LL);
+    at.tv_nsec = static_cast<long>(ns % 1000000000LL);
+    clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &at, nullptr);
+#else
+    std::this_thread::sleep_until(until);
+#endif
+  }
 }
 
 void System::claim_cores() {
@@ -600,7 +620,8 @@ int System::run(const Options& options) {
   {
     std::unique_lock<std::mutex> lock(epoch_mutex_);
     epoch_cv_.wait(lock, [this] { return ready_ == releases_.size(); });
-    epoch_ = Clock::now();
+    // The first releases come a moment later, when every release thread is asleep waiting for them.
+    epoch_ = Clock::now() + std::chrono::milliseconds(2);
     epoch_set_ = true;
   }
   epoch_cv_.notify_all();
@@ -611,14 +632,9 @@ int System::run(const Options& options) {
     if (now >= deadline) {
       break;
     }
-    std::unique_lock<std::mutex> lock(stop_mutex_);
-    stop_cv_.wait_until(lock, std::min(deadline, now + std::chrono::milliseconds(20)));
+    std::this_thread::sleep_until(std::min(deadline, now + std::chrono::milliseconds(20)));
   }
-  {
-    std::lock_guard<std::mutex> lock(stop_mutex_);
-    stopping_ = true;
-  }
-  stop_cv_.notify_all();
+  stopping_ = true;
   for (auto& release : releases_) {
     if (release->thread.joinable()) {
       release->thread.join();

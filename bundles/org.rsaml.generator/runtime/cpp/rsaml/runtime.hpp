@@ -375,8 +375,6 @@ class System {
   std::condition_variable epoch_cv_;
   bool epoch_set_ = false;
   Clock::time_point epoch_;
-  std::mutex stop_mutex_;
-  std::condition_variable stop_cv_;
   std::atomic<bool> stopping_{false};
   std::atomic<std::uint64_t> waves_{0};
 };

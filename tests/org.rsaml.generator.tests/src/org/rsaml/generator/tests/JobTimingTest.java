@@ -43,9 +43,10 @@ import org.rsaml.validation.ModelLoader;
  * consumes its modeled execution time on the CPU, so the run is the worst case the analysis assumes.
  * <p>
  * The bound can only be asserted where the program got the scheduling the analysis assumes
- * (SCHED_FIFO/SCHED_RR at its ranks, SCHED_DEADLINE for EDF); each release's summary line says what
- * it got, as the kernel granted it. Where it did not (no CAP_SYS_NICE, a container without
- * real-time budget), the test says so on standard output and checks what does not depend on it: the
+ * (SCHED_FIFO/SCHED_RR at its ranks, SCHED_DEADLINE for EDF; each release's summary line says what
+ * it got, as the kernel granted it) and every processor has a core of this machine to itself. Where
+ * not (no CAP_SYS_NICE, a container without real-time budget, a model's core this machine lacks), the
+ * test says so on standard output and checks what does not depend on it: the
  * summary of every release, the analysis's bound written into the program, the jobs counted, the
  * busy work consumed, and misses and overruns reported as they happen.
  * <p>
@@ -164,18 +165,19 @@ class JobTimingTest {
     }
 
     /**
-     * A processor the analysis proves overloaded: A (T 10, C 4) and B (T 20, C 13) under rate
-     * monotonic; B's worst response is 25 ms, past its 20 ms deadline. Run as modeled, the program
-     * reports B's misses (under real-time scheduling; A, above it, meets); with --busy-work 200 every
-     * job of both uses twice its modeled time and is reported as an overrun whatever the scheduling.
+     * A processor the analysis proves overloaded: A (T 10, C 5) and B (T 14, C 6) under rate
+     * monotonic; B's worst response is 16 ms, past its 14 ms deadline. Run as modeled, the program
+     * reports B's misses (under real-time scheduling; A, above it, meets); with --busy-work 150 every
+     * job of both uses more than its modeled time and is reported as an overrun whatever the scheduling.
      */
     @Test
     void anOverloadedProcessorMissesAsPredicted(@TempDir Path tmp) throws Exception {
-        String layers = module("a", 10, 4, "RM") + module("b", 20, 13, "RM");
+        String layers = module("a", 10, 5, "RM") + module("b", 14, 6, "RM");
         String processors = "  <processors name=\"cpu1\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='a']"
                 + " //@layers[name='tasks']/@modules[name='b']\"/>\n";
         Path out = tmp.resolve("project");
-        Architecture arch = writeAndGenerate(tmp, "overloaded", layers, processors, out);
+        // the analysis's miss is an error finding: generated anyway (--force), as an architect would to see it
+        Architecture arch = writeAndGenerate(tmp, "overloaded", layers, processors, out, true);
         ArchitectureTiming timing = TimingAnalysis.analyse(arch);
         TaskResult b = timing.processors().get(0).result().tasks().stream().filter(t -> t.task().name().equals("tasks/b.f"))
                 .findFirst().orElseThrow();
@@ -189,15 +191,16 @@ class JobTimingTest {
         }
 
         String doubled = Tools.ok(out, 60, Tools.cmakeBuild(out, CppExamplesTest.executableName(out)).toString(), "--run-for-ms",
-                "300", "--quiet", "--busy-work", "200");
+                "400", "--quiet", "--busy-work", "150");
         Map<String, Summary> over = summaries(doubled);
         for (Summary s : over.values()) {
             assertTrue(s.jobs() > 0, "no job of " + s.label() + " completed:\n" + doubled);
-            assertEquals(s.jobs(), s.overruns(), "every job used twice its modeled time: " + s);
+            assertEquals(s.jobs(), s.overruns(), "every job used half as much again as its modeled time: " + s);
             assertEquals(s.overruns(), new RunTrace(doubled).matching("overrun " + s.label() + " job ").size(),
                     "an overrun line per overrun of " + s.label());
         }
-        assertTrue(over.get("tasks/b.f").misses() > 0, "B runs 26 ms per 20 ms period, so it misses: " + over.get("tasks/b.f"));
+        assertTrue(over.get("tasks/b.f").misses() > 0, "B needs 8.7 ms of the 2.75 ms A leaves it every 10 ms, so it misses: "
+                + over.get("tasks/b.f"));
     }
 
     /**
@@ -212,7 +215,7 @@ class JobTimingTest {
         String processors = "  <processors name=\"edf\" schedPolicy=\"EDF\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='a']"
                 + " //@layers[name='tasks']/@modules[name='b']\"/>\n";
         Path out = tmp.resolve("project");
-        Architecture arch = writeAndGenerate(tmp, "edf", layers, processors, out);
+        Architecture arch = writeAndGenerate(tmp, "edf", layers, processors, out, false);
         assertEquals(Verdict.MEETS, TimingAnalysis.analyse(arch).verdict(), "EDF schedules A and B");
         Map<String, Summary> run = runAndCheck(arch, out, "edf");
         for (Summary s : run.values()) {
@@ -230,6 +233,27 @@ class JobTimingTest {
         }
     }
 
+    /**
+     * Null when every module runs on a processor whose core this machine has, so that each
+     * processor's threads have their CPU to themselves as the analysis assumes; else why not.
+     */
+    static String deployedApart(Architecture arch) {
+        int cores = Runtime.getRuntime().availableProcessors();
+        for (org.rsaml.model.Layer layer : arch.getLayers()) {
+            for (org.rsaml.model.Module m : layer.getModules()) {
+                org.rsaml.model.Processor p = arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst()
+                        .orElse(null);
+                if (p == null || p.getCore() < 0) {
+                    return layer.getName() + "/" + m.getName() + " has no core of its own";
+                }
+                if (p.getCore() >= cores) {
+                    return "processor " + p.getName() + "'s core " + p.getCore() + " is not among this machine's " + cores;
+                }
+            }
+        }
+        return null;
+    }
+
     private static String module(String name, long period, double cost, String policy) {
         String timing = String.format(Locale.ROOT, "timeUnit=\"ms\" type=\"realTime\" period=\"%d.0\" delay=\"%d.0\" execDuration=\"%s\""
                 + " execType=\"periodic\"", period, period, cost);
@@ -237,7 +261,8 @@ class JobTimingTest {
                 + "\"/>\n    </modules>\n";
     }
 
-    private static Architecture writeAndGenerate(Path tmp, String name, String modules, String processors, Path out) throws Exception {
+    private static Architecture writeAndGenerate(Path tmp, String name, String modules, String processors, Path out, boolean force)
+            throws Exception {
         Path model = tmp.resolve(name + ".rsaml");
         Files.writeString(model, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<rsaml:Architecture xmi:version=\"2.0\" xmlns:xmi=\"http://www.omg.org/XMI\""
@@ -245,13 +270,13 @@ class JobTimingTest {
                 + "\" category=\"other\" declaredLayers=\"1\">\n"
                 + "  <layers name=\"tasks\" timeUnit=\"ms\" level=\"0\" maxExecTime=\"1000.0\">\n" + modules + "  </layers>\n" + processors
                 + "</rsaml:Architecture>\n");
-        new RsamlGenerator().generate(model, Target.CPP, out, false);
+        new RsamlGenerator().generate(model, Target.CPP, out, force);
         return ModelLoader.load(model, name + ".rsaml").architecture();
     }
 
     private static Architecture runModel(Path tmp, String name, String modules, String processors) throws Exception {
         Path out = tmp.resolve("project");
-        Architecture arch = writeAndGenerate(tmp, name, modules, processors, out);
+        Architecture arch = writeAndGenerate(tmp, name, modules, processors, out, false);
         runAndCheck(arch, out, name);
         return arch;
     }
@@ -269,6 +294,7 @@ class JobTimingTest {
         RunTrace trace = new RunTrace(output);
         assertEquals(plan.releases().stream().map(Release::label).sorted().toList(), summaries.keySet().stream().sorted().toList(),
                 what + ": a summary line per timed release\n" + Tools.last(output, 3000));
+        String apart = deployedApart(arch);
         List<String> unchecked = new ArrayList<>();
         for (Release r : plan.releases()) {
             Summary s = summaries.get(r.label());
@@ -276,8 +302,10 @@ class JobTimingTest {
             assertEquals(bound == null ? "none" : ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
             assertEquals(r.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline: " + s);
             assertEquals(r.costNs(), s.modeledNs(), what + ": the modeled execution time: " + s);
+            // about one a period; the releases go on until the threads see the stop (within 20 ms, later on a loaded machine)
             long expected = (RUN_MS * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
-            assertTrue(s.jobs() >= Math.max(1, expected / 2) && s.jobs() <= expected + 1,
+            long most = ((RUN_MS + 500) * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
+            assertTrue(s.jobs() >= Math.max(1, expected / 2) && s.jobs() <= most,
                     what + ": " + s.jobs() + " jobs of " + r.label() + " in " + RUN_MS + " ms, expected about " + expected);
             assertTrue(s.executionNs() >= r.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
             assertEquals(s.misses(), trace.matching("miss " + r.label() + " job ").size(), what + ": a line per miss of " + r.label());
@@ -289,8 +317,8 @@ class JobTimingTest {
             if (bound == null) {
                 continue;
             }
-            if (!s.asAnalysed()) {
-                unchecked.add(r.label() + " (" + s.sched() + ")");
+            if (!s.asAnalysed() || apart != null) {
+                unchecked.add(r.label() + " (" + (apart != null ? apart : s.sched()) + ")");
                 continue;
             }
             System.out.printf(Locale.ROOT, "JobTimingTest %s: %s worst response %s, bound %s, worst start latency %s, %s%n", what,
@@ -300,7 +328,7 @@ class JobTimingTest {
                     + Tools.last(output, 3000));
         }
         if (!unchecked.isEmpty()) {
-            System.out.println("JobTimingTest " + what + ": real-time scheduling was not granted to " + unchecked
+            System.out.println("JobTimingTest " + what + ": not scheduled as analysed on this machine: " + unchecked
                     + ": the bound is not asserted for them, only the measurement and the report");
         }
         return summaries;

