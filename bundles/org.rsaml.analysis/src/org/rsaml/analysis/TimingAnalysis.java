@@ -266,6 +266,10 @@ public final class TimingAnalysis {
                 notes.add("scheduled as the generated runtime does: one real-time thread per timed release at its rank"
                         + " (SCHED_FIFO, SCHED_RR for round robin), reactions on non-real-time worker threads below them;"
                         + " the verdict holds when the program runs with real-time priorities (not with --no-realtime)");
+            } else if (policy == SchedulingPolicy.EDF) {
+                notes.add("scheduled by deadline: the generated C++ runtime runs each timed release under SCHED_DEADLINE"
+                        + " (runtime = its execution duration, its deadline and period) where the kernel permits it, and its"
+                        + " trace says when not; there the verdict is for a platform scheduling by deadline");
             } else {
                 notes.add("the processor is declared " + element.getSchedPolicy().getLiteral() + ": the verdict is for a platform"
                         + " scheduling it so, while the generated C++ runtime schedules by fixed priorities");

@@ -117,14 +117,15 @@ class ArchitectureTimingTest {
     }
 
     @Test
-    void anEdfProcessorIsAnalysedByDemandAndSaysTheRuntimeDiffers() throws Exception {
+    void anEdfProcessorIsAnalysedByDemandAndSaysHowTheRuntimeSchedulesIt() throws Exception {
         Architecture a = example("mobile-base-latency.rsaml");
         a.getProcessors().get(1).setSchedPolicy(org.rsaml.model.SchedulingPolicy.EDF);
         ArchitectureTiming timing = TimingAnalysis.analyse(a);
         ProcessorTiming core1 = timing.processors().get(1);
         assertEquals(SchedulingPolicy.EDF, core1.result().policy());
         assertEquals(Verdict.MEETS, core1.result().verdict());
-        assertTrue(core1.notes().get(0).contains("the generated C++ runtime schedules by fixed priorities"), core1.notes().get(0));
+        assertTrue(core1.notes().get(0).contains("the generated C++ runtime runs each timed release under SCHED_DEADLINE"),
+                core1.notes().get(0));
         // without response times under EDF the latency through core 1 is not bounded, and says so
         assertEquals(Verdict.NOT_ANALYSED, timing.latencies().get(0).verdict());
     }
