@@ -14,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 
 import org.rsaml.report.ExitCodes;
+import org.rsaml.report.FindingFailOn;
 import org.rsaml.report.FileResult;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFiles;
@@ -34,8 +35,6 @@ import picocli.CommandLine.Spec;
  */
 final class ReportArgs {
 
-    enum FailOn { error, warning, never }
-
     @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
             converter = FormatConverter.class,
             description = "Format written to standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).")
@@ -46,9 +45,9 @@ final class ReportArgs {
                     "A FILE alone takes its format from the extension (.sarif, .json, .xml, .txt)." })
     List<String> outputs = new ArrayList<>();
 
-    @Option(names = "--fail-on", defaultValue = "error", paramLabel = "LEVEL",
+    @Option(names = "--fail-on", defaultValue = "error", paramLabel = "LEVEL", converter = FailOnConverter.class,
             description = "Lowest severity that makes the exit code 1: error, warning or never (default: ${DEFAULT-VALUE}).")
-    FailOn failOn;
+    FindingFailOn failOn;
 
     @Option(names = { "-q", "--quiet" },
             description = "Text format: print only what fails the run (findings at or above --fail-on, unreadable inputs) "
@@ -59,11 +58,7 @@ final class ReportArgs {
     CommandSpec spec;
 
     Severity threshold() {
-        return switch (failOn) {
-            case error -> Severity.ERROR;
-            case warning -> Severity.WARNING;
-            case never -> null;
-        };
+        return failOn.threshold();
     }
 
     /** The {@code --output} files, checked before any model is read. */
@@ -150,6 +145,17 @@ final class ReportArgs {
         public ReportFormat convert(String value) {
             try {
                 return ReportFormat.parse(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    static final class FailOnConverter implements CommandLine.ITypeConverter<FindingFailOn> {
+        @Override
+        public FindingFailOn convert(String value) {
+            try {
+                return FindingFailOn.parse(value);
             } catch (IllegalArgumentException e) {
                 throw new CommandLine.TypeConversionException(e.getMessage());
             }

@@ -10,7 +10,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
 import java.nio.file.Path;
-import java.util.Locale;
 
 import org.apache.maven.plugin.AbstractMojo;
 import org.apache.maven.plugin.MojoExecutionException;
@@ -18,6 +17,7 @@ import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.report.FileResult;
+import org.rsaml.report.FindingFailOn;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
@@ -60,12 +60,11 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
 
     /** {@code error}, {@code warning} or {@code never} (then {@code null}: findings never fail the build). */
     static Severity failOn(String parameter, String value) throws MojoExecutionException {
-        return switch (value == null ? "" : value.trim().toLowerCase(Locale.ROOT)) {
-            case "error" -> Severity.ERROR;
-            case "warning" -> Severity.WARNING;
-            case "never" -> null;
-            default -> throw new MojoExecutionException(parameter + " must be error, warning or never, not '" + value + "'");
-        };
+        try {
+            return FindingFailOn.parse(value).threshold();
+        } catch (IllegalArgumentException e) {
+            throw new MojoExecutionException(parameter + ": " + e.getMessage());
+        }
     }
 
     /** Every input error and finding of {@code report}, one safe line each, at its severity. */
