@@ -23,7 +23,7 @@ final class Cli {
     static final Path ROOT = TestRepository.root();
     /** This module's test inputs. */
     static final Path INPUTS = ROOT.resolve("tests/org.rsaml.cli.tests/resources/inputs");
-    static final Path JAR = Path.of(System.getProperty("rsaml.jar", ROOT + "/bundles/org.rsaml.cli/target/rsaml.jar"));
+    static final Path JAR = Path.of(System.getProperty("rsaml.jar", ROOT + "/cli/org.rsaml.cli/target/rsaml.jar"));
 
     record Result(int code, String out, String err) {
         List<String> outLines() {

@@ -40,7 +40,7 @@ class RepositoryDocsTest {
         int open = readme.indexOf("```", start);
         String block = readme.substring(open + 3, readme.indexOf("```", open + 3));
         List<String> missing = new ArrayList<>();
-        for (String parent : List.of("bundles", "tests", "features", "releng", "maven")) {
+        for (String parent : List.of("bundles", "cli", "tests", "features", "releng", "maven")) {
             assertTrue(block.contains("\n" + parent + "/"), () -> "README structure names " + parent + "/");
             for (Path dir : folders(ROOT.resolve(parent))) {
                 if (!Pattern.compile("\\n {2}" + Pattern.quote(dir.getFileName().toString()) + "/").matcher(block).find()) {
@@ -51,11 +51,68 @@ class RepositoryDocsTest {
         assertEquals(List.of(), missing, "folders missing from README's repository structure");
     }
 
+    /** The other way round: every folder the structure names below a top-level folder is there. */
+    @Test
+    void theReadmeStructureNamesOnlyFoldersThatExist() throws Exception {
+        String readme = Files.readString(ROOT.resolve("README.md"));
+        int open = readme.indexOf("```", readme.indexOf("## Repository structure"));
+        String block = readme.substring(open + 3, readme.indexOf("```", open + 3));
+        Pattern top = Pattern.compile("^([A-Za-z0-9._-]+)/\\s*$");
+        Pattern child = Pattern.compile("^ {2}([A-Za-z0-9._-]+)/\\s");
+        String parent = null;
+        List<String> absent = new ArrayList<>();
+        for (String line : block.split("\n")) {
+            Matcher t = top.matcher(line);
+            Matcher c = child.matcher(line);
+            if (t.find()) {
+                parent = t.group(1);
+            } else if (!line.startsWith(" ")) {
+                parent = null;
+            } else if (parent != null && c.find() && !Files.isDirectory(ROOT.resolve(parent).resolve(c.group(1)))) {
+                absent.add(parent + "/" + c.group(1));
+            }
+        }
+        assertEquals(List.of(), absent, "folders README's repository structure names but the repository does not have");
+    }
+
+    /**
+     * {@code bundles/} holds OSGi bundles only (a manifest each); a plain Maven artifact such as the
+     * command-line jar lives apart, as EMF, Xtext and ELK keep theirs.
+     */
+    @Test
+    void bundlesHoldsOnlyBundles() throws Exception {
+        List<String> plain = new ArrayList<>();
+        for (Path dir : folders(ROOT.resolve("bundles"))) {
+            if (!Files.exists(dir.resolve("META-INF/MANIFEST.MF"))) {
+                plain.add("bundles/" + dir.getFileName());
+            }
+        }
+        assertEquals(List.of(), plain, "folders under bundles/ without META-INF/MANIFEST.MF (not OSGi bundles)");
+    }
+
+    /** The module paths README's commands and the ./rsaml launcher build ({@code -pl a,b}) are modules of the build. */
+    @Test
+    void theCommandsBuildModulesThatExist() throws Exception {
+        Pattern pl = Pattern.compile("-pl '?([A-Za-z0-9._/,-]+)");
+        List<String> absent = new ArrayList<>();
+        for (String file : List.of("README.md", "rsaml")) {
+            Matcher m = pl.matcher(Files.readString(ROOT.resolve(file)));
+            while (m.find()) {
+                for (String module : m.group(1).split(",")) {
+                    if (module.contains("/") && !Files.exists(ROOT.resolve(module).resolve("pom.xml"))) {
+                        absent.add(file + ": -pl " + module);
+                    }
+                }
+            }
+        }
+        assertEquals(List.of(), absent, "modules named by README's and the launcher's build commands that have no pom.xml");
+    }
+
     @Test
     void theArchitecturePageDescribesEveryBundle() throws Exception {
         String page = Files.readString(ROOT.resolve("docs/architecture.md"));
         List<String> missing = new ArrayList<>();
-        for (Path dir : folders(ROOT.resolve("bundles"))) {
+        for (Path dir : Stream.concat(folders(ROOT.resolve("bundles")).stream(), folders(ROOT.resolve("cli")).stream()).toList()) {
             if (!page.contains("| `" + dir.getFileName() + "`")) {
                 missing.add(dir.getFileName().toString());
             }
@@ -77,6 +134,9 @@ class RepositoryDocsTest {
             } else {
                 declared.put(name, pomDependencies(dir.resolve("pom.xml")));
             }
+        }
+        for (Path dir : folders(ROOT.resolve("cli"))) {
+            declared.put(dir.getFileName().toString(), pomDependencies(dir.resolve("pom.xml")));
         }
         declared.put("rsaml-maven-plugin", pomDependencies(ROOT.resolve("maven/rsaml-maven-plugin/pom.xml")));
         assertEquals(declared, stated, "docs/architecture.md's dependency list against the manifests and poms");
