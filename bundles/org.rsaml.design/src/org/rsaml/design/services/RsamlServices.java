@@ -4,11 +4,14 @@
  */
 package org.rsaml.design.services;
 
+import java.util.HashSet;
+import java.util.Set;
 import java.util.stream.Collectors;
 
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.Connection;
+import org.rsaml.model.NamedElement;
 import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.DiagnosisCache;
@@ -28,6 +31,25 @@ public class RsamlServices {
             return RsamlLabels.name(link) + ", " + RsamlLabels.duration(link.getDuration(), link);
         }
         return RsamlLabels.describe(self);
+    }
+
+    /**
+     * A name for a new element of {@code container} that no element directly in it has (RSA-09 compares
+     * the names of elements of the same kind in the same container): {@code base} itself when free, else
+     * {@code base2}, {@code base3}, ...
+     */
+    public String rsamlFreshName(EObject container, String base) {
+        Set<String> taken = new HashSet<>();
+        for (EObject child : container.eContents()) {
+            if (child instanceof NamedElement named && named.getName() != null) {
+                taken.add(named.getName().trim());
+            }
+        }
+        String name = base;
+        for (int n = 2; taken.contains(name); n++) {
+            name = base + n;
+        }
+        return name;
     }
 
     /** The errors RsaML's rules find on this element itself, one per line ("RSA-08: ..."); empty when none. */

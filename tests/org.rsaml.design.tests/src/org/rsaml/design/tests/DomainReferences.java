@@ -92,18 +92,6 @@ final class DomainReferences {
         Scope scope = Scope.of("self", root);
         expression(diagram, "titleExpression", scope);
         expression(diagram, "preconditionExpression", scope);
-        EObject validation = ref(diagram, "validationSet");
-        if (validation != null) {
-            for (EObject rule : list(validation, "ownedRules")) {
-                if (is(rule, "SemanticValidationRule")) {
-                    Scope target = Scope.of("self", eClass(rule, "targetClass"));
-                    expression(rule, "message", target);
-                    for (EObject audit : list(rule, "audits")) {
-                        expression(audit, "auditExpression", target);
-                    }
-                }
-            }
-        }
         List<EObject> layers = new ArrayList<>(list(diagram, "additionalLayers"));
         if (ref(diagram, "defaultLayer") != null) {
             layers.add(0, ref(diagram, "defaultLayer"));
@@ -120,6 +108,14 @@ final class DomainReferences {
             }
             for (EObject section : list(layer, "toolSections")) {
                 toolSection(section, root);
+            }
+            EObject decorations = ref(layer, "decorationDescriptionsSet");
+            if (decorations != null) {
+                for (EObject decoration : list(decorations, "decorationDescriptions")) {
+                    Scope target = Scope.of("self", eClass(decoration, "domainClass"));
+                    expression(decoration, "preconditionExpression", target);
+                    expression(decoration, "tooltipExpression", target);
+                }
             }
         }
     }
@@ -204,8 +200,17 @@ final class DomainReferences {
             expression(tool, "precondition", Scope.of("preSource", source, "preTarget", target));
             scope = Scope.of("self", source, name(ref(tool, "sourceVariable"), "source"), source,
                     name(ref(tool, "targetVariable"), "target"), target);
+        } else if (is(tool, "DeleteElementDescription")) {
+            List<EClass> deleted = domainClasses.entrySet().stream().filter(e -> ref(e.getKey(), "deletionDescription") == tool)
+                    .map(Map.Entry::getValue).toList();
+            if (deleted.isEmpty()) {
+                problems.add(where(tool) + ": no mapping deletes its elements with this tool");
+                return;
+            }
+            EClass element = common(tool, "the elements it deletes", deleted);
+            scope = Scope.of("self", element, name(ref(tool, "element"), "element"), element);
         } else {
-            problems.add(where(tool) + ": a " + tool.eClass().getName() + " is not checked here; only creation tools are");
+            problems.add(where(tool) + ": a " + tool.eClass().getName() + " is not checked here; only creation and deletion tools are");
             return;
         }
         if (!is(tool, "EdgeCreationDescription")) {

@@ -55,7 +55,7 @@ class DomainReferencesTest {
                 tools + "/createModule/CreateInstance: 'layers' holds Layer elements, not RealTimeElement",
                 tools + "/createModule/CreateInstance: 'model.RealTimeElement' is abstract and cannot be created",
                 tools + "/createModule/SetValue featureName: Module has no feature 'lvl'",
-                "broken/Broken/Diagram/errors targetClass: 'rsaml.NamedElement' names package 'rsaml',"
+                "broken/Broken/Diagram/Default/errors domainClass: 'rsaml.NamedElement' names package 'rsaml',"
                         + " but rsaml.ecore's package is called 'model'"),
                 DomainReferences.check(loaded, RsamlServices.class));
     }

@@ -66,6 +66,9 @@ final class Expressions {
 
     private Object equality() {
         Object left = concatenation();
+        if (eat("<>")) {
+            return !same(left, concatenation());
+        }
         if (eat("=")) {
             return same(left, concatenation());
         }

@@ -1,0 +1,222 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.design.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.stream.Stream;
+
+import javax.imageio.ImageIO;
+
+import org.eclipse.sirius.common.tools.api.resource.ImageFileFormat;
+import org.eclipse.sirius.diagram.DDiagram;
+import org.eclipse.sirius.diagram.DDiagramElement;
+import org.eclipse.sirius.ui.business.api.dialect.DialectUIManager;
+import org.eclipse.sirius.ui.business.api.dialect.ExportFormat;
+import org.eclipse.sirius.ui.business.api.dialect.ExportFormat.ExportDocumentFormat;
+import org.eclipse.sirius.viewpoint.Decoration;
+import org.eclipse.sirius.viewpoint.description.DecorationDescription;
+import org.eclipse.ui.IEditorPart;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.tests.support.ExpectedFinding;
+import org.rsaml.tests.support.TestRepository;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+
+/**
+ * The RsaML diagrams as an architect meets them in Eclipse: a modeling project holding the examples, the
+ * RsaML viewpoint enabled, an architecture and a mission diagram of each example created with Sirius,
+ * opened in Sirius's editor (which lays them out), decorated with exactly the findings the model states
+ * in its {@code <!-- expect: -->} comments, and exported as images under {@code target/diagrams}. The examples drawn are
+ * {@code rsaml.diagrams.examples} (a representative set by default; {@code all} draws every one).
+ */
+class SiriusDiagramsTest {
+
+    /** The README's picture of an architecture diagram, which this test exports again. */
+    private static final String README_IMAGE = "docs/images/exp1-hybrid-sirius-architecture.png";
+
+    private static SiriusProject project;
+
+    static Stream<String> examples() throws Exception {
+        String chosen = System.getProperty("rsaml.diagrams.examples", "exp1-hybrid.rsaml,exp2-defects.rsaml");
+        if (chosen.equals("all")) {
+            try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples"))) {
+                return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted().toList().stream();
+            }
+        }
+        return Arrays.stream(chosen.split(",")).map(String::trim).filter(s -> !s.isEmpty());
+    }
+
+    private static Path output() throws Exception {
+        Path dir = Path.of(System.getProperty("rsaml.diagrams.output", "target/diagrams"));
+        Files.createDirectories(dir);
+        return dir;
+    }
+
+    @BeforeAll
+    static void modelingProjectWithTheRsamlViewpoint() throws Exception {
+        project = SiriusProject.create("rsaml-diagrams", examples().toList());
+    }
+
+    @AfterAll
+    static void closeTheProject() throws Exception {
+        if (project != null) {
+            project.delete();
+        }
+    }
+
+    /** "error hybrid/control/resourceChecker: RSA-08: ..." for each finding a decoration shows, once per element drawn. */
+    private static List<String> decorations(DDiagram diagram) {
+        List<String> shown = new ArrayList<>();
+        for (DDiagramElement element : diagram.getDiagramElements()) {
+            List<Decoration> all = new ArrayList<>(element.getDecorations());
+            all.addAll(element.getTransientDecorations());
+            for (Decoration decoration : all) {
+                DecorationDescription description = (DecorationDescription) decoration.getDescription();
+                String severity = description.getName().endsWith("Errors") ? "error" : "warning";
+                String tooltip = project.evaluate(element.getTarget(), description.getTooltipExpression());
+                for (String line : tooltip.split("\n")) {
+                    shown.add(severity + " " + RsamlLabels.qualifiedName(element.getTarget()) + ": " + line);
+                }
+            }
+        }
+        return shown;
+    }
+
+    private static String line(ExpectedFinding f) {
+        return f.severity() + " " + f.qualifiedName() + ": " + (f.message() == null ? f.ruleId() : f.ruleId() + ": " + f.message());
+    }
+
+    private static String line(Finding f) {
+        return f.severity().name().toLowerCase() + " " + f.qualifiedName() + ": " + f.ruleId() + ": " + f.message();
+    }
+
+    /** Only the rule id when the model states no wording for the finding. */
+    private static Set<String> comparable(List<String> shown, List<ExpectedFinding> stated) {
+        Set<String> result = new TreeSet<>();
+        for (String s : shown) {
+            String shortened = s;
+            for (ExpectedFinding f : stated) {
+                String prefix = f.severity() + " " + f.qualifiedName() + ": " + f.ruleId();
+                if (f.message() == null && s.startsWith(prefix + ":")) {
+                    shortened = prefix;
+                }
+            }
+            result.add(shortened);
+        }
+        return result;
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("examples")
+    void architectureAndMissionDiagramsAreDecoratedWithTheModelsFindingsAndExported(String example) throws Exception {
+        Architecture architecture = project.architecture(example);
+        List<ExpectedFinding> stated = ExpectedFinding.of(TestRepository.example(example)).stream()
+                .filter(f -> !f.severity().equals("info")).toList();
+        String base = example.replace(".rsaml", "");
+        List<String> shown = new ArrayList<>();
+        for (String kind : List.of("Architecture", "Missions")) {
+            DDiagram diagram = project.create(kind, architecture, base + " " + kind);
+            IEditorPart editor = DialectUIManager.INSTANCE.openEditor(project.session, diagram, SiriusProject.MONITOR);
+            assertNotNull(editor, "Sirius opens the " + kind + " diagram of " + example);
+            SiriusProject.flushEvents();
+            try {
+                List<String> onDiagram = decorations(diagram);
+                assertEquals(new LinkedHashSet<>(onDiagram).size(), onDiagram.size(), "each finding decorates its element once: " + onDiagram);
+                shown.addAll(onDiagram);
+                Path image = output().resolve(base + "-" + kind.toLowerCase() + ".png");
+                DialectUIManager.INSTANCE.export(diagram, project.session, new org.eclipse.core.runtime.Path(image.toString()),
+                        new ExportFormat(ExportDocumentFormat.NONE, ImageFileFormat.PNG), SiriusProject.MONITOR);
+                assertTrue(Files.size(image) > 0, "the " + kind + " diagram of " + example + " is exported to " + image);
+            } finally {
+                DialectUIManager.INSTANCE.closeEditor(editor, false);
+                SiriusProject.flushEvents();
+            }
+        }
+        assertEquals(comparable(stated.stream().map(SiriusDiagramsTest::line).toList(), stated), comparable(shown, stated),
+                "the decorations of " + example + "'s diagrams are the findings its expect comments state, each once");
+    }
+
+    /**
+     * Decorations follow the model without a manual validation: a change that breaks a rule decorates the
+     * elements concerned as soon as the change is made, and the change that repairs it removes the decorations.
+     */
+    @Test
+    void decorationsFollowModelChangesInAnOpenDiagram() throws Exception {
+        String example = examples().toList().get(0);
+        Architecture architecture = project.architecture(example);
+        DDiagram diagram = project.create("Architecture", architecture, "changes " + example);
+        IEditorPart editor = DialectUIManager.INSTANCE.openEditor(project.session, diagram, SiriusProject.MONITOR);
+        try {
+            Set<String> before = new TreeSet<>(decorations(diagram));
+            Layer layer = architecture.getLayers().stream().filter(l -> !l.getModules().isEmpty()).findFirst().orElseThrow();
+            double budget = layer.getMaxExecTime();
+            project.run("tighten " + layer.getName(), () -> layer.setMaxExecTime(0.001));
+            Set<String> expected = new TreeSet<>();
+            RsamlModelValidator.validate(architecture).stream().filter(f -> f.severity() != org.rsaml.validation.Severity.INFO)
+                    .map(SiriusDiagramsTest::line).forEach(expected::add);
+            Set<String> after = new TreeSet<>(decorations(diagram));
+            assertEquals(expected, after, "after the change the diagram shows what rsaml validate finds now");
+            for (Module module : layer.getModules()) {
+                assertTrue(after.stream().anyMatch(s -> s.startsWith("error " + RsamlLabels.qualifiedName(module) + ": ")),
+                        module.getName() + " now takes longer than its layer allows, and says so");
+            }
+            project.run("restore " + layer.getName(), () -> layer.setMaxExecTime(budget));
+            assertEquals(before, new TreeSet<>(decorations(diagram)), "restoring the layer's budget removes the decorations");
+        } finally {
+            DialectUIManager.INSTANCE.closeEditor(editor, false);
+            SiriusProject.flushEvents();
+        }
+    }
+
+    /** The README's picture of a Sirius architecture diagram is the one this test exports today. */
+    @Test
+    void theReadmesArchitectureDiagramImageIsCurrent() throws Exception {
+        assertTrue(examples().anyMatch("exp1-hybrid.rsaml"::equals), "exp1-hybrid.rsaml is among the examples drawn");
+        Path exported = output().resolve("exp1-hybrid-architecture.png");
+        if (!Files.exists(exported)) {
+            architectureAndMissionDiagramsAreDecoratedWithTheModelsFindingsAndExported("exp1-hybrid.rsaml");
+        }
+        Path committed = TestRepository.root().resolve(README_IMAGE);
+        String fix = README_IMAGE + " is out of date: copy " + exported + " over it";
+        assertTrue(Files.exists(committed), fix);
+        BufferedImage now = ImageIO.read(exported.toFile());
+        BufferedImage then = ImageIO.read(committed.toFile());
+        assertEquals(now.getWidth() + "x" + now.getHeight(), then.getWidth() + "x" + then.getHeight(), fix);
+        assertFalse(differs(now, then), fix);
+        assertTrue(Files.readString(TestRepository.root().resolve("README.md")).contains(README_IMAGE), "the README shows " + README_IMAGE);
+    }
+
+    private static boolean differs(BufferedImage a, BufferedImage b) {
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                if (a.getRGB(x, y) != b.getRGB(x, y)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+}

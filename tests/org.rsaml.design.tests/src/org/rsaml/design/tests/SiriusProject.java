@@ -1,0 +1,155 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.design.tests;
+
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.util.List;
+
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IProject;
+import org.eclipse.core.runtime.NullProgressMonitor;
+import org.eclipse.core.runtime.preferences.InstanceScope;
+import org.eclipse.emf.common.command.Command;
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.transaction.RecordingCommand;
+import org.eclipse.emf.transaction.TransactionalEditingDomain;
+import org.eclipse.sirius.business.api.componentization.ViewpointRegistry;
+import org.eclipse.sirius.business.api.dialect.DialectManager;
+import org.eclipse.sirius.business.api.modelingproject.ModelingProject;
+import org.eclipse.sirius.business.api.preferences.SiriusPreferencesKeys;
+import org.eclipse.sirius.business.api.session.Session;
+import org.eclipse.sirius.diagram.DDiagram;
+import org.eclipse.sirius.tools.api.SiriusPlugin;
+import org.eclipse.sirius.tools.api.command.semantic.AddSemanticResourceCommand;
+import org.eclipse.sirius.ui.business.api.viewpoint.ViewpointSelectionCallback;
+import org.eclipse.sirius.ui.tools.api.project.ModelingProjectManager;
+import org.eclipse.sirius.viewpoint.DRepresentation;
+import org.eclipse.sirius.viewpoint.description.RepresentationDescription;
+import org.eclipse.sirius.viewpoint.description.Viewpoint;
+import org.eclipse.swt.widgets.Display;
+import org.rsaml.model.Architecture;
+import org.rsaml.tests.support.TestRepository;
+
+/**
+ * A modeling project as a user makes one: created by Sirius, holding copies of examples as semantic
+ * resources of its session, with the RsaML viewpoint enabled. Every change goes through the session's
+ * command stack, as the diagram editor's own do.
+ */
+final class SiriusProject {
+
+    static final NullProgressMonitor MONITOR = new NullProgressMonitor();
+
+    final IProject project;
+    final Session session;
+    final Viewpoint viewpoint;
+
+    private SiriusProject(IProject project, Session session, Viewpoint viewpoint) {
+        this.project = project;
+        this.session = session;
+        this.viewpoint = viewpoint;
+    }
+
+    static SiriusProject create(String name, List<String> examples) throws Exception {
+        // What a user turns on so that open diagrams follow every model change (Sirius's default is off).
+        InstanceScope.INSTANCE.getNode(SiriusPlugin.ID).putBoolean(SiriusPreferencesKeys.PREF_AUTO_REFRESH.name(), true);
+        IProject project = ModelingProjectManager.INSTANCE.createNewModelingProject(name, true, MONITOR);
+        Session session = ModelingProject.asModelingProject(project).get().getSession();
+        assertNotNull(session, "the modeling project opens a Sirius session");
+        Viewpoint viewpoint = ViewpointRegistry.getInstance().getViewpoints().stream().filter(v -> "RsaML".equals(v.getName())).findFirst()
+                .orElseThrow(() -> new AssertionError("the RsaML viewpoint is registered"));
+        SiriusProject result = new SiriusProject(project, session, viewpoint);
+        for (String example : examples) {
+            IFile file = project.getFile(example);
+            try (InputStream in = Files.newInputStream(TestRepository.example(example))) {
+                file.create(in, true, MONITOR);
+            }
+            URI uri = result.uri(example);
+            if (session.getSemanticResources().stream().noneMatch(r -> r.getURI().equals(uri))) {
+                result.execute(new AddSemanticResourceCommand(session, uri, MONITOR));
+            }
+        }
+        result.execute(new RecordingCommand(result.domain(), "enable the RsaML viewpoint") {
+            @Override
+            protected void doExecute() {
+                new ViewpointSelectionCallback().selectViewpoint(viewpoint, session, MONITOR);
+            }
+        });
+        assertTrue(session.getSelectedViewpoints(false).stream().anyMatch(v -> "RsaML".equals(v.getName())),
+                "the RsaML viewpoint is enabled in the project: " + session.getSelectedViewpoints(false));
+        return result;
+    }
+
+    void delete() throws Exception {
+        session.close(MONITOR);
+        project.delete(true, true, MONITOR);
+    }
+
+    private URI uri(String example) {
+        return URI.createPlatformResourceURI(project.getFile(example).getFullPath().toString(), true);
+    }
+
+    TransactionalEditingDomain domain() {
+        return session.getTransactionalEditingDomain();
+    }
+
+    void execute(Command command) {
+        domain().getCommandStack().execute(command);
+        flushEvents();
+    }
+
+    void run(String label, Runnable change) {
+        execute(new RecordingCommand(domain(), label) {
+            @Override
+            protected void doExecute() {
+                change.run();
+            }
+        });
+    }
+
+    static void flushEvents() {
+        Display display = Display.getCurrent();
+        if (display != null) {
+            while (display.readAndDispatch()) {
+                // let Sirius's refresh, layout and decorators run
+            }
+        }
+    }
+
+    Architecture architecture(String example) {
+        URI uri = uri(example);
+        Resource resource = session.getSemanticResources().stream().filter(r -> r.getURI().equals(uri)).findFirst()
+                .orElseThrow(() -> new AssertionError(example + " is a semantic resource of the session"));
+        return (Architecture) resource.getContents().get(0);
+    }
+
+    /** The description as the session has it (its own copy of the viewpoint, which representations are made from). */
+    RepresentationDescription description(String name) {
+        Viewpoint selected = session.getSelectedViewpoints(false).stream().filter(v -> "RsaML".equals(v.getName())).findFirst()
+                .orElseThrow(() -> new AssertionError("the RsaML viewpoint is enabled"));
+        return selected.getOwnedRepresentations().stream().filter(r -> r.getName().equals(name)).findFirst()
+                .orElseThrow(() -> new AssertionError("the RsaML viewpoint has the " + name + " diagram"));
+    }
+
+    DDiagram create(String descriptionName, EObject root, String name) {
+        DRepresentation[] created = new DRepresentation[1];
+        run("create " + name, () -> created[0] = DialectManager.INSTANCE.createRepresentation(name, root, description(descriptionName), session, MONITOR));
+        assertNotNull(created[0], "Sirius creates the " + descriptionName + " diagram " + name);
+        return (DDiagram) created[0];
+    }
+
+    String evaluate(EObject target, String expression) {
+        try {
+            return session.getInterpreter().evaluateString(target, expression);
+        } catch (Exception e) {
+            throw new AssertionError("cannot evaluate " + expression + " on " + target, e);
+        }
+    }
+}

@@ -1,0 +1,300 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.design.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+
+import org.eclipse.emf.common.command.Command;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.sirius.diagram.DDiagram;
+import org.eclipse.sirius.diagram.DDiagramElement;
+import org.eclipse.sirius.diagram.DDiagramElementContainer;
+import org.eclipse.sirius.diagram.DNode;
+import org.eclipse.sirius.diagram.EdgeTarget;
+import org.eclipse.sirius.diagram.description.DiagramDescription;
+import org.eclipse.sirius.diagram.description.tool.ContainerCreationDescription;
+import org.eclipse.sirius.diagram.description.tool.EdgeCreationDescription;
+import org.eclipse.sirius.diagram.description.tool.NodeCreationDescription;
+import org.eclipse.sirius.diagram.tools.api.command.DiagramCommandFactoryService;
+import org.eclipse.sirius.diagram.tools.api.command.IDiagramCommandFactory;
+import org.eclipse.sirius.tools.api.command.ui.NoUICallback;
+import org.eclipse.sirius.viewpoint.description.tool.AbstractToolDescription;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Connection;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.Inhibitor;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.NamedElement;
+import org.rsaml.model.OutputPort;
+import org.rsaml.model.Port;
+import org.rsaml.model.Suppressor;
+import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.validation.Finding;
+import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Severity;
+
+/**
+ * The palette of the RsaML diagrams, tool by tool, as Sirius runs a tool the user picks: what each creates
+ * is in the model, drawn, named apart from its siblings (twice in a row), and validates as the rules say;
+ * deleting it from the diagram removes it from the model. Every change is undone after each test.
+ */
+class SiriusToolsTest {
+
+    private static final String MODEL = "exp1-hybrid.rsaml";
+
+    private static SiriusProject project;
+    private static Architecture architecture;
+    private static DDiagram architectureDiagram;
+    private static DDiagram missionDiagram;
+    private static IDiagramCommandFactory factory;
+    private int changes;
+
+    @BeforeAll
+    static void diagrams() throws Exception {
+        project = SiriusProject.create("rsaml-tools", List.of(MODEL));
+        architecture = project.architecture(MODEL);
+        architectureDiagram = project.create("Architecture", architecture, "tools architecture");
+        missionDiagram = project.create("Missions", architecture, "tools missions");
+        factory = DiagramCommandFactoryService.getInstance().getNewProvider().getCommandFactory(project.domain());
+        factory.setUserInterfaceCallBack(new NoUICallback());
+        assertEquals(Set.of(), findings(), MODEL + " is valid before any tool runs");
+    }
+
+    @AfterAll
+    static void close() throws Exception {
+        if (project != null) {
+            project.delete();
+        }
+    }
+
+    @AfterEach
+    void undo() {
+        for (; changes > 0; changes--) {
+            project.domain().getCommandStack().undo();
+        }
+        SiriusProject.flushEvents();
+        assertEquals(Set.of(), findings(), "undoing the tools restores the valid model");
+    }
+
+    /** What rsaml validate finds in the model now, one line each. */
+    private static Set<String> findings() {
+        Set<String> lines = new TreeSet<>();
+        for (Finding f : RsamlModelValidator.validate(architecture)) {
+            if (f.severity() != Severity.INFO) {
+                lines.add(f.ruleId() + " " + f.qualifiedName() + ": " + f.message());
+            }
+        }
+        return lines;
+    }
+
+    private static AbstractToolDescription tool(DDiagram diagram, String name) {
+        DiagramDescription description = diagram.getDescription();
+        return description.getDefaultLayer().getToolSections().stream().flatMap(s -> s.getOwnedTools().stream())
+                .filter(AbstractToolDescription.class::isInstance).map(AbstractToolDescription.class::cast)
+                .filter(t -> t.getName().equals(name)).findFirst()
+                .orElseThrow(() -> new AssertionError("the palette has the tool " + name));
+    }
+
+    private static DDiagramElement drawn(DDiagram diagram, EObject target) {
+        return diagram.getDiagramElements().stream().filter(d -> d.getTarget() == target).findFirst()
+                .orElseThrow(() -> new AssertionError(RsamlLabels.qualifiedName(target) + " is drawn in " + diagram.getName()));
+    }
+
+    private static <T> T only(List<T> added, String what) {
+        assertEquals(1, added.size(), "the tool adds one " + what + ": " + added);
+        return added.get(0);
+    }
+
+    /** Runs a creation tool on the element that draws {@code on} (the diagram itself when null) and returns what it added to {@code list}. */
+    private <T extends EObject> T create(DDiagram diagram, String toolName, EObject on, List<T> list, String what) {
+        List<T> before = new ArrayList<>(list);
+        AbstractToolDescription tool = tool(diagram, toolName);
+        Command command;
+        if (on == null && tool instanceof ContainerCreationDescription c) {
+            command = factory.buildCreateContainerCommandFromTool(diagram, c);
+        } else if (on == null && tool instanceof NodeCreationDescription n) {
+            command = factory.buildCreateNodeCommandFromTool(diagram, n);
+        } else if (tool instanceof ContainerCreationDescription c) {
+            command = factory.buildCreateContainerCommandFromTool((DDiagramElementContainer) drawn(diagram, on), c);
+        } else if (drawn(diagram, on) instanceof DNode node) {
+            command = factory.buildCreateNodeCommandFromTool(node, (NodeCreationDescription) tool);
+        } else {
+            command = factory.buildCreateNodeCommandFromTool((DDiagramElementContainer) drawn(diagram, on), (NodeCreationDescription) tool);
+        }
+        assertTrue(command.canExecute(), toolName + " can run on " + (on == null ? "the diagram" : RsamlLabels.qualifiedName(on)));
+        project.execute(command);
+        changes++;
+        List<T> added = new ArrayList<>(list);
+        added.removeAll(before);
+        T created = only(added, what);
+        drawn(diagram, created);
+        return created;
+    }
+
+    private <T extends EObject> T connect(DDiagram diagram, String toolName, EObject source, EObject target, List<T> list, String what) {
+        List<T> before = new ArrayList<>(list);
+        Command command = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(diagram, source), (EdgeTarget) drawn(diagram, target),
+                (EdgeCreationDescription) tool(diagram, toolName));
+        assertTrue(command.canExecute(), toolName + " can run from " + RsamlLabels.qualifiedName(source) + " to " + RsamlLabels.qualifiedName(target));
+        project.execute(command);
+        changes++;
+        List<T> added = new ArrayList<>(list);
+        added.removeAll(before);
+        T created = only(added, what);
+        drawn(diagram, created);
+        return created;
+    }
+
+    private void delete(DDiagram diagram, EObject element) {
+        Command command = factory.buildDeleteDiagramElement(drawn(diagram, element));
+        assertTrue(command.canExecute(), "deleting " + RsamlLabels.qualifiedName(element) + " can run");
+        project.execute(command);
+        changes++;
+        assertEquals(null, element.eContainer(), RsamlLabels.qualifiedName(element) + " is deleted from the model");
+        assertTrue(diagram.getDiagramElements().stream().noneMatch(d -> d.getTarget() == element), "and from the diagram");
+    }
+
+    private static void namedApart(NamedElement first, NamedElement second) {
+        assertNotNull(first.getName(), "the tool names what it creates");
+        assertNotEquals(first.getName(), second.getName(), "two elements made by one tool in one place get different names");
+    }
+
+    private static Layer layer(int level) {
+        return architecture.getLayers().stream().filter(l -> l.getLevel() == level).findFirst().orElseThrow();
+    }
+
+    private static Module moduleWith(Layer layer, Class<? extends Port> kind) {
+        return layer.getModules().stream().filter(m -> m.getPorts().stream().anyMatch(kind::isInstance)).findFirst()
+                .orElseThrow(() -> new AssertionError(layer.getName() + " has a module with an " + kind.getSimpleName()));
+    }
+
+    @Test
+    void layersAreAddedAboveTheOthersAndCounted() {
+        Layer first = create(architectureDiagram, "createLayer", architecture, architecture.getLayers(), "layer");
+        Layer second = create(architectureDiagram, "createLayer", architecture, architecture.getLayers(), "layer");
+        namedApart(first, second);
+        assertEquals(architecture.getLayers().size(), architecture.getDeclaredLayers(), "the declared number of layers follows");
+        assertEquals(Set.of(), findings(), "new layers are valid");
+        delete(architectureDiagram, second);
+        assertEquals(Set.of(), findings(), "deleting a layer leaves a valid model");
+    }
+
+    @Test
+    void modulesFunctionsAndPortsAreAddedToTheirOwnerAndDeleted() {
+        Layer layer = architecture.getLayers().get(0);
+        Module first = create(architectureDiagram, "createModule", layer, layer.getModules(), "module");
+        Module second = create(architectureDiagram, "createModule", layer, layer.getModules(), "module");
+        namedApart(first, second);
+        var f1 = create(architectureDiagram, "createFunction", first, first.getFunctions(), "function");
+        var f2 = create(architectureDiagram, "createFunction", first, first.getFunctions(), "function");
+        namedApart(f1, f2);
+        Port in1 = create(architectureDiagram, "createEntryPort", first, first.getPorts(), "entry port");
+        Port in2 = create(architectureDiagram, "createEntryPort", first, first.getPorts(), "entry port");
+        namedApart(in1, in2);
+        assertTrue(in1 instanceof EntryPort, "the entry port tool makes entry ports");
+        Port out = create(architectureDiagram, "createOutputPort", first, first.getPorts(), "output port");
+        assertTrue(out instanceof OutputPort, "the output port tool makes output ports");
+        // A new module has no period and nothing feeds it yet: RSA-19 says so on each (a warning), and nothing else is found.
+        Set<String> found = findings();
+        assertEquals(Set.of("RSA-19 " + RsamlLabels.qualifiedName(first), "RSA-19 " + RsamlLabels.qualifiedName(second)),
+                found.stream().map(f -> f.substring(0, f.indexOf(':'))).collect(java.util.stream.Collectors.toSet()),
+                "what rsaml validate finds on the new modules: " + found);
+        delete(architectureDiagram, in2);
+        delete(architectureDiagram, f2);
+        delete(architectureDiagram, second);
+        assertTrue(first.eContainer() == layer, "the other module stays");
+        assertEquals(Set.of("RSA-19 " + RsamlLabels.qualifiedName(first)),
+                findings().stream().map(f -> f.substring(0, f.indexOf(':'))).collect(java.util.stream.Collectors.toSet()),
+                "deleting the second module removes its finding");
+    }
+
+    @Test
+    void aConnectionBetweenPortsOfDifferentDataTypesIsFlaggedAtOnce() {
+        OutputPort source = null;
+        EntryPort target = null;
+        for (Module m : architecture.getLayers().stream().flatMap(l -> l.getModules().stream()).toList()) {
+            for (Port p : m.getPorts()) {
+                if (p instanceof OutputPort o && source == null) {
+                    source = o;
+                }
+            }
+        }
+        assertNotNull(source, MODEL + " has an output port");
+        final OutputPort from = source;
+        for (Module m : architecture.getLayers().stream().flatMap(l -> l.getModules().stream()).toList()) {
+            for (Port p : m.getPorts()) {
+                if (p instanceof EntryPort e && target == null && e.getModule() != from.getModule()
+                        && !RsamlLabels.dataType(e).equals(RsamlLabels.dataType(from))) {
+                    target = e;
+                }
+            }
+        }
+        assertNotNull(target, MODEL + " has an entry port whose data type differs from " + RsamlLabels.qualifiedName(from) + "'s");
+        Connection connection = connect(architectureDiagram, "createConnection", source, target, architecture.getConnections(), "connection");
+        assertEquals(source, connection.getSource(), "the connection starts at the output port");
+        assertEquals(target, connection.getTarget(), "and ends at the entry port");
+        Set<String> found = findings();
+        assertEquals(1, found.size(), "the one new finding: " + found);
+        assertTrue(found.iterator().next().startsWith("RSA-02 " + RsamlLabels.qualifiedName(connection) + ": "), "RSA-02 on the new connection: " + found);
+        DDiagramElement edge = drawn(architectureDiagram, connection);
+        assertFalse(edge.getDecorations().isEmpty() && edge.getTransientDecorations().isEmpty(), "the new connection is decorated at once");
+        delete(architectureDiagram, connection);
+    }
+
+    @Test
+    void inhibitorsAndSuppressorsActOnPortsOfTheLayerBelow() {
+        Layer top = architecture.getLayers().stream().max((a, b) -> a.getLevel() - b.getLevel()).orElseThrow();
+        Layer below = layer(top.getLevel() - 1);
+        Module actor = top.getModules().get(0);
+        Module inhibited = moduleWith(below, OutputPort.class);
+        OutputPort output = (OutputPort) inhibited.getPorts().stream().filter(OutputPort.class::isInstance).findFirst().orElseThrow();
+        Inhibitor i1 = connect(architectureDiagram, "createInhibitor", actor, output, actor.getInhibitors(), "inhibitor");
+        Inhibitor i2 = connect(architectureDiagram, "createInhibitor", actor, output, actor.getInhibitors(), "inhibitor");
+        namedApart(i1, i2);
+        assertEquals(output, i1.getTarget(), "the inhibitor acts on the output port");
+        Module suppressed = moduleWith(below, EntryPort.class);
+        EntryPort entry = (EntryPort) suppressed.getPorts().stream().filter(EntryPort.class::isInstance).findFirst().orElseThrow();
+        Suppressor s = connect(architectureDiagram, "createSuppressor", actor, entry, actor.getSuppressors(), "suppressor");
+        assertEquals(entry, s.getTarget(), "the suppressor acts on the entry port");
+        assertEquals(Set.of(), findings(), "links to the layer immediately below are valid");
+        delete(architectureDiagram, i2);
+    }
+
+    @Test
+    void missionsGoalsPlansActivitiesAndSupervisorsAreAddedAndDeleted() {
+        var m1 = create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
+        var m2 = create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
+        namedApart(m1, m2);
+        var g1 = create(missionDiagram, "createGoal", m1, m1.getGoals(), "goal");
+        var g2 = create(missionDiagram, "createGoal", m1, m1.getGoals(), "goal");
+        namedApart(g1, g2);
+        var p1 = create(missionDiagram, "createPlan", m1, m1.getPlans(), "plan");
+        var a1 = create(missionDiagram, "createActivity", p1, p1.getActivities(), "activity");
+        var a2 = create(missionDiagram, "createActivity", p1, p1.getActivities(), "activity");
+        namedApart(a1, a2);
+        var s1 = create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
+        var s2 = create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
+        namedApart(s1, s2);
+        Set<String> found = findings();
+        delete(missionDiagram, a2);
+        delete(missionDiagram, g2);
+        delete(missionDiagram, m2);
+        assertEquals(Set.of(), found, "new mission elements are valid: " + found);
+    }
+}
