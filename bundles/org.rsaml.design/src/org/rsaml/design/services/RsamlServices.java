@@ -4,14 +4,19 @@
  */
 package org.rsaml.design.services;
 
+import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 
 import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.TreeIterator;
+import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.Connection;
 import org.rsaml.model.NamedElement;
+import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.DiagnosisCache;
@@ -52,19 +57,49 @@ public class RsamlServices {
         return name;
     }
 
-    /** The errors RsaML's rules find on this element itself, one per line ("RSA-08: ..."); empty when none. */
+    /**
+     * The classes whose elements the RsaML diagrams draw (the domain classes of rsaml.odesign's mappings).
+     * The findings of anything else (actions, devices, processors, orders, databases, latency requirements)
+     * are shown on the nearest drawn element that contains it, so that the diagrams show every finding.
+     */
+    private static final Set<EClass> DRAWN = Set.of(RsamlPackage.Literals.ARCHITECTURE, RsamlPackage.Literals.LAYER,
+            RsamlPackage.Literals.MODULE, RsamlPackage.Literals.FUNCTION, RsamlPackage.Literals.ENTRY_PORT,
+            RsamlPackage.Literals.OUTPUT_PORT, RsamlPackage.Literals.CONNECTION, RsamlPackage.Literals.INHIBITOR,
+            RsamlPackage.Literals.SUPPRESSOR, RsamlPackage.Literals.MISSION, RsamlPackage.Literals.GOAL,
+            RsamlPackage.Literals.PLAN, RsamlPackage.Literals.ACTIVITY, RsamlPackage.Literals.SUPERVISOR);
+
+    /** The element whose decorations show the findings on {@code element}: itself when drawn, else its nearest drawn container. */
+    public static EObject shownOn(EObject element) {
+        EObject e = element;
+        while (e != null && !DRAWN.contains(e.eClass())) {
+            e = e.eContainer();
+        }
+        return e == null ? element : e;
+    }
+
+    /** The errors RsaML's rules find on this element, and on what it contains that no diagram draws, one per line ("RSA-08: ..."); empty when none. */
     public String rsamlErrors(EObject self) {
         return findings(self, Diagnostic.ERROR);
     }
 
-    /** The warnings RsaML's rules find on this element itself, one per line; empty when none. */
+    /** The warnings RsaML's rules find on this element, and on what it contains that no diagram draws, one per line; empty when none. */
     public String rsamlWarnings(EObject self) {
         return findings(self, Diagnostic.WARNING);
     }
 
-    /** The element's own findings (those on contained elements are shown on them), validated once per model change. */
+    /** The findings shown on the element (those on drawn elements it contains are shown on them), validated once per model change. */
     private static String findings(EObject self, int severity) {
-        return DiagnosisCache.on(self).stream()
+        List<EObject> shown = new ArrayList<>();
+        shown.add(self);
+        for (TreeIterator<EObject> i = self.eAllContents(); i.hasNext();) {
+            EObject e = i.next();
+            if (shownOn(e) == self) {
+                shown.add(e);
+            } else if (DRAWN.contains(e.eClass())) {
+                i.prune();
+            }
+        }
+        return shown.stream().flatMap(e -> DiagnosisCache.on(e).stream())
                 .filter(d -> d.getSeverity() == severity)
                 .map(Diagnostic::getMessage)
                 .collect(Collectors.joining("\n"));

@@ -54,7 +54,7 @@ class DiagramsTest {
 
     @Test
     void architectureDiagramCreatesLayersModulesPortsAndLinks() throws Exception {
-        assertEquals(Map.of("Layer", "model.Layer in layers", "Module", "model.Module in modules",
+        assertEquals(Map.of("Layer", "model.Layer in layers", "Module", "model.Module in modules", "Real-time module", "model.Module in modules",
                 "Function", "model.Function in functions", "Entry port", "model.EntryPort in ports",
                 "Output port", "model.OutputPort in ports", "Connection", "model.Connection in connections",
                 "Inhibitor", "model.Inhibitor in inhibitors", "Suppressor", "model.Suppressor in suppressors"),

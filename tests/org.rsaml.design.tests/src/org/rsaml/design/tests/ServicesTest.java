@@ -86,9 +86,9 @@ class ServicesTest {
     }
 
     /**
-     * Each element shows exactly the findings its model states for it: errors in the ERROR rule's
-     * message, warnings in the WARNING rule's, each as {@code RSA-08: ...}; every other element
-     * shows none, so the diagram decorates nothing else.
+     * Each drawn element shows exactly the findings its model states for it and for what it contains
+     * that no diagram draws (a function its actions'): errors as errors, warnings as warnings, each as
+     * {@code RSA-08: ...}; every other element shows none, so the diagram decorates nothing else.
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("models")
@@ -96,17 +96,24 @@ class ServicesTest {
         List<ExpectedFinding> stated = ExpectedFinding.of(model);
         Map<String, String> expected = new LinkedHashMap<>();
         Map<String, String> shown = new LinkedHashMap<>();
-        for (EObject e : elements(load(model))) {
+        List<EObject> all = elements(load(model));
+        // Where each stated finding is shown: on its element, or on the nearest drawn element that contains it.
+        Map<String, String> shownOn = new LinkedHashMap<>();
+        for (EObject e : all) {
+            shownOn.put(RsamlLabels.qualifiedName(e), RsamlLabels.qualifiedName(RsamlServices.shownOn(e)));
+        }
+        for (EObject e : all.stream().filter(e -> RsamlServices.shownOn(e) == e).toList()) {
             String name = RsamlLabels.qualifiedName(e);
             for (String severity : List.of("error", "warning")) {
-                String text = String.join("\n", stated.stream().filter(f -> f.qualifiedName().equals(name) && f.severity().equals(severity))
-                        .map(f -> f.message() == null ? f.ruleId() : f.ruleId() + ": " + f.message()).toList());
+                String text = String.join("\n", stated.stream()
+                        .filter(f -> name.equals(shownOn.getOrDefault(f.qualifiedName(), f.qualifiedName())) && f.severity().equals(severity))
+                        .map(f -> f.message() == null ? f.ruleId() : f.ruleId() + ": " + f.message()).sorted().toList());
                 String seen = severity.equals("error") ? services.rsamlErrors(e) : services.rsamlWarnings(e);
                 if (!text.isEmpty() || !seen.isEmpty()) {
                     expected.put(severity + " " + name, text);
                     // Only the rule ids when the model does not state the wording.
-                    shown.put(severity + " " + name, stated.stream().anyMatch(f -> f.message() == null)
-                            ? String.join("\n", seen.lines().map(l -> l.substring(0, l.indexOf(':'))).toList()) : seen);
+                    shown.put(severity + " " + name, String.join("\n", (stated.stream().anyMatch(f -> f.message() == null)
+                            ? seen.lines().map(l -> l.substring(0, l.indexOf(':'))) : seen.lines()).sorted().toList()));
                 }
             }
         }

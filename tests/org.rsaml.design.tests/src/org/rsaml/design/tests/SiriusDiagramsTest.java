@@ -22,6 +22,7 @@ import java.util.stream.Stream;
 
 import javax.imageio.ImageIO;
 
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.sirius.common.tools.api.resource.ImageFileFormat;
 import org.eclipse.sirius.diagram.DDiagram;
 import org.eclipse.sirius.diagram.DDiagramElement;
@@ -36,6 +37,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.rsaml.design.services.RsamlServices;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
@@ -105,21 +107,32 @@ class SiriusDiagramsTest {
         return shown;
     }
 
-    private static String line(ExpectedFinding f) {
-        return f.severity() + " " + f.qualifiedName() + ": " + (f.message() == null ? f.ruleId() : f.ruleId() + ": " + f.message());
+    /**
+     * The qualified name of the element whose decoration shows findings on {@code qualifiedName}: the element
+     * itself, or the nearest drawn element containing it (a function shows its actions' findings).
+     */
+    private static String shownOn(Architecture architecture, String qualifiedName) {
+        List<EObject> all = new ArrayList<>(List.of(architecture));
+        architecture.eAllContents().forEachRemaining(all::add);
+        return all.stream().filter(e -> RsamlLabels.qualifiedName(e).equals(qualifiedName)).findFirst()
+                .map(e -> RsamlLabels.qualifiedName(RsamlServices.shownOn(e))).orElse(qualifiedName);
     }
 
-    private static String line(Finding f) {
-        return f.severity().name().toLowerCase() + " " + f.qualifiedName() + ": " + f.ruleId() + ": " + f.message();
+    private static String line(Architecture architecture, ExpectedFinding f) {
+        return f.severity() + " " + shownOn(architecture, f.qualifiedName()) + ": " + (f.message() == null ? f.ruleId() : f.ruleId() + ": " + f.message());
+    }
+
+    private static String line(Architecture architecture, Finding f) {
+        return f.severity().name().toLowerCase() + " " + shownOn(architecture, f.qualifiedName()) + ": " + f.ruleId() + ": " + f.message();
     }
 
     /** Only the rule id when the model states no wording for the finding. */
-    private static Set<String> comparable(List<String> shown, List<ExpectedFinding> stated) {
+    private static Set<String> comparable(Architecture architecture, List<String> shown, List<ExpectedFinding> stated) {
         Set<String> result = new TreeSet<>();
         for (String s : shown) {
             String shortened = s;
             for (ExpectedFinding f : stated) {
-                String prefix = f.severity() + " " + f.qualifiedName() + ": " + f.ruleId();
+                String prefix = f.severity() + " " + shownOn(architecture, f.qualifiedName()) + ": " + f.ruleId();
                 if (f.message() == null && s.startsWith(prefix + ":")) {
                     shortened = prefix;
                 }
@@ -153,9 +166,10 @@ class SiriusDiagramsTest {
             } finally {
                 DialectUIManager.INSTANCE.closeEditor(editor, false);
                 SiriusProject.flushEvents();
+                project.delete(diagram);
             }
         }
-        assertEquals(comparable(stated.stream().map(SiriusDiagramsTest::line).toList(), stated), comparable(shown, stated),
+        assertEquals(comparable(architecture, stated.stream().map(f -> line(architecture, f)).toList(), stated), comparable(architecture, shown, stated),
                 "the decorations of " + example + "'s diagrams are the findings its expect comments state, each once");
     }
 
@@ -174,20 +188,24 @@ class SiriusDiagramsTest {
             Layer layer = architecture.getLayers().stream().filter(l -> !l.getModules().isEmpty()).findFirst().orElseThrow();
             double budget = layer.getMaxExecTime();
             project.run("tighten " + layer.getName(), () -> layer.setMaxExecTime(0.001));
-            Set<String> expected = new TreeSet<>();
-            RsamlModelValidator.validate(architecture).stream().filter(f -> f.severity() != org.rsaml.validation.Severity.INFO)
-                    .map(SiriusDiagramsTest::line).forEach(expected::add);
-            Set<String> after = new TreeSet<>(decorations(diagram));
-            assertEquals(expected, after, "after the change the diagram shows what rsaml validate finds now");
-            for (Module module : layer.getModules()) {
-                assertTrue(after.stream().anyMatch(s -> s.startsWith("error " + RsamlLabels.qualifiedName(module) + ": ")),
-                        module.getName() + " now takes longer than its layer allows, and says so");
+            try {
+                Set<String> expected = new TreeSet<>();
+                RsamlModelValidator.validate(architecture).stream().filter(f -> f.severity() != org.rsaml.validation.Severity.INFO)
+                        .map(f -> line(architecture, f)).forEach(expected::add);
+                Set<String> after = new TreeSet<>(decorations(diagram));
+                assertEquals(expected, after, "after the change the diagram shows what rsaml validate finds now");
+                for (Module module : layer.getModules()) {
+                    assertTrue(after.stream().anyMatch(s -> s.startsWith("error " + RsamlLabels.qualifiedName(module) + ": ")),
+                            module.getName() + " now takes longer than its layer allows, and says so");
+                }
+            } finally {
+                project.run("restore " + layer.getName(), () -> layer.setMaxExecTime(budget));
             }
-            project.run("restore " + layer.getName(), () -> layer.setMaxExecTime(budget));
             assertEquals(before, new TreeSet<>(decorations(diagram)), "restoring the layer's budget removes the decorations");
         } finally {
             DialectUIManager.INSTANCE.closeEditor(editor, false);
             SiriusProject.flushEvents();
+            project.delete(diagram);
         }
     }
 

@@ -31,6 +31,7 @@ import org.eclipse.sirius.tools.api.SiriusPlugin;
 import org.eclipse.sirius.tools.api.command.semantic.AddSemanticResourceCommand;
 import org.eclipse.sirius.ui.business.api.viewpoint.ViewpointSelectionCallback;
 import org.eclipse.sirius.ui.tools.api.project.ModelingProjectManager;
+import org.eclipse.sirius.business.api.query.DRepresentationQuery;
 import org.eclipse.sirius.viewpoint.DRepresentation;
 import org.eclipse.sirius.viewpoint.description.RepresentationDescription;
 import org.eclipse.sirius.viewpoint.description.Viewpoint;
@@ -143,6 +144,12 @@ final class SiriusProject {
         run("create " + name, () -> created[0] = DialectManager.INSTANCE.createRepresentation(name, root, description(descriptionName), session, MONITOR));
         assertNotNull(created[0], "Sirius creates the " + descriptionName + " diagram " + name);
         return (DDiagram) created[0];
+    }
+
+    /** Deletes a representation, so that later diagrams of the same element draw no link to it. */
+    void delete(DRepresentation representation) {
+        var descriptor = new DRepresentationQuery(representation).getRepresentationDescriptor();
+        run("delete " + descriptor.getName(), () -> DialectManager.INSTANCE.deleteRepresentation(descriptor, session));
     }
 
     String evaluate(EObject target, String expression) {

@@ -225,6 +225,20 @@ class SiriusToolsTest {
     }
 
     @Test
+    void realTimeModulesArePeriodicWithinTheirLayersBudget() {
+        Layer layer = architecture.getLayers().stream().filter(l -> l.getMaxExecTime() > 0).findFirst().orElseThrow();
+        Module first = create(architectureDiagram, "createRealTimeModule", layer, layer.getModules(), "real-time module");
+        Module second = create(architectureDiagram, "createRealTimeModule", layer, layer.getModules(), "real-time module");
+        namedApart(first, second);
+        assertEquals(org.rsaml.model.ElementType.REAL_TIME, first.getType(), "the module is real-time");
+        assertEquals(org.rsaml.model.ExecutionType.PERIODIC, first.getExecType(), "and periodic, so something activates it");
+        assertTrue(first.getPeriod() > 0 && first.getDelay() > 0, "it has a period and a delay, as RSA-05 asks of real-time modules");
+        assertTrue(first.getExecDuration() <= layer.getMaxExecTime(), "it takes no more than its layer allows");
+        assertEquals(Set.of(), findings(), "new real-time modules are valid");
+        delete(architectureDiagram, second);
+    }
+
+    @Test
     void aConnectionBetweenPortsOfDifferentDataTypesIsFlaggedAtOnce() {
         OutputPort source = null;
         EntryPort target = null;
