@@ -5,7 +5,6 @@
 package org.rsaml.design.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -223,18 +222,21 @@ class SiriusDiagramsTest {
         BufferedImage now = ImageIO.read(exported.toFile());
         BufferedImage then = ImageIO.read(committed.toFile());
         assertEquals(now.getWidth() + "x" + now.getHeight(), then.getWidth() + "x" + then.getHeight(), fix);
-        assertFalse(differs(now, then), fix);
+        long differing = differing(now, then);
+        // Rendering on another run may differ in a few anti-aliased pixels; any change to what is drawn changes thousands.
+        assertTrue(differing * 1000 <= (long) now.getWidth() * now.getHeight(), differing + " pixels differ: " + fix);
         assertTrue(Files.readString(TestRepository.root().resolve("README.md")).contains(README_IMAGE), "the README shows " + README_IMAGE);
     }
 
-    private static boolean differs(BufferedImage a, BufferedImage b) {
+    private static long differing(BufferedImage a, BufferedImage b) {
+        long count = 0;
         for (int y = 0; y < a.getHeight(); y++) {
             for (int x = 0; x < a.getWidth(); x++) {
                 if (a.getRGB(x, y) != b.getRGB(x, y)) {
-                    return true;
+                    count++;
                 }
             }
         }
-        return false;
+        return count;
     }
 }
