@@ -26,7 +26,8 @@ final class LoadPolicy {
 
     /** Whether RsaML may open this address at all: a local file, or a file of the Eclipse workspace. */
     static boolean isLocal(URI uri) {
-        return uri != null && (uri.isFile() && !uri.hasAuthority() || uri.isPlatformResource());
+        // file:///path (an empty authority, as editors and language clients write it) is local too; file://host/ is not.
+        return uri != null && (uri.isFile() && (!uri.hasAuthority() || uri.authority().isEmpty()) || uri.isPlatformResource());
     }
 
     /** The local file behind a file or workspace address, or null. */

@@ -355,6 +355,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 *         name=Name? 
 	 *         (
 	 *             (description=STRING | timeUnit=TimeUnit | source=[NamedElement|QualifiedName] | target=[NamedElement|QualifiedName] | kind=LatencyKind)? 
+	 *             (via+=[NamedElement|QualifiedName] via+=[NamedElement|QualifiedName]*)? 
 	 *             (maxLatency=Real timeUnit=TimeUnit)?
 	 *         )+
 	 *     )

@@ -2461,16 +2461,26 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final CrossReference cTargetNamedElementCrossReference_4_2_1_0 = (CrossReference)cTargetAssignment_4_2_1.eContents().get(0);
 		private final RuleCall cTargetNamedElementQualifiedNameParserRuleCall_4_2_1_0_1 = (RuleCall)cTargetNamedElementCrossReference_4_2_1_0.eContents().get(1);
 		private final Group cGroup_4_3 = (Group)cAlternatives_4.eContents().get(3);
-		private final Keyword cMaxLatencyKeyword_4_3_0 = (Keyword)cGroup_4_3.eContents().get(0);
-		private final Assignment cMaxLatencyAssignment_4_3_1 = (Assignment)cGroup_4_3.eContents().get(1);
-		private final RuleCall cMaxLatencyRealParserRuleCall_4_3_1_0 = (RuleCall)cMaxLatencyAssignment_4_3_1.eContents().get(0);
-		private final Assignment cTimeUnitAssignment_4_3_2 = (Assignment)cGroup_4_3.eContents().get(2);
-		private final RuleCall cTimeUnitTimeUnitEnumRuleCall_4_3_2_0 = (RuleCall)cTimeUnitAssignment_4_3_2.eContents().get(0);
+		private final Keyword cViaKeyword_4_3_0 = (Keyword)cGroup_4_3.eContents().get(0);
+		private final Assignment cViaAssignment_4_3_1 = (Assignment)cGroup_4_3.eContents().get(1);
+		private final CrossReference cViaNamedElementCrossReference_4_3_1_0 = (CrossReference)cViaAssignment_4_3_1.eContents().get(0);
+		private final RuleCall cViaNamedElementQualifiedNameParserRuleCall_4_3_1_0_1 = (RuleCall)cViaNamedElementCrossReference_4_3_1_0.eContents().get(1);
+		private final Group cGroup_4_3_2 = (Group)cGroup_4_3.eContents().get(2);
+		private final Keyword cCommaKeyword_4_3_2_0 = (Keyword)cGroup_4_3_2.eContents().get(0);
+		private final Assignment cViaAssignment_4_3_2_1 = (Assignment)cGroup_4_3_2.eContents().get(1);
+		private final CrossReference cViaNamedElementCrossReference_4_3_2_1_0 = (CrossReference)cViaAssignment_4_3_2_1.eContents().get(0);
+		private final RuleCall cViaNamedElementQualifiedNameParserRuleCall_4_3_2_1_0_1 = (RuleCall)cViaNamedElementCrossReference_4_3_2_1_0.eContents().get(1);
 		private final Group cGroup_4_4 = (Group)cAlternatives_4.eContents().get(4);
-		private final Keyword cKindKeyword_4_4_0 = (Keyword)cGroup_4_4.eContents().get(0);
-		private final Assignment cKindAssignment_4_4_1 = (Assignment)cGroup_4_4.eContents().get(1);
-		private final RuleCall cKindLatencyKindEnumRuleCall_4_4_1_0 = (RuleCall)cKindAssignment_4_4_1.eContents().get(0);
-		private final RuleCall cUnitParserRuleCall_4_5 = (RuleCall)cAlternatives_4.eContents().get(5);
+		private final Keyword cMaxLatencyKeyword_4_4_0 = (Keyword)cGroup_4_4.eContents().get(0);
+		private final Assignment cMaxLatencyAssignment_4_4_1 = (Assignment)cGroup_4_4.eContents().get(1);
+		private final RuleCall cMaxLatencyRealParserRuleCall_4_4_1_0 = (RuleCall)cMaxLatencyAssignment_4_4_1.eContents().get(0);
+		private final Assignment cTimeUnitAssignment_4_4_2 = (Assignment)cGroup_4_4.eContents().get(2);
+		private final RuleCall cTimeUnitTimeUnitEnumRuleCall_4_4_2_0 = (RuleCall)cTimeUnitAssignment_4_4_2.eContents().get(0);
+		private final Group cGroup_4_5 = (Group)cAlternatives_4.eContents().get(5);
+		private final Keyword cKindKeyword_4_5_0 = (Keyword)cGroup_4_5.eContents().get(0);
+		private final Assignment cKindAssignment_4_5_1 = (Assignment)cGroup_4_5.eContents().get(1);
+		private final RuleCall cKindLatencyKindEnumRuleCall_4_5_1_0 = (RuleCall)cKindAssignment_4_5_1.eContents().get(0);
+		private final RuleCall cUnitParserRuleCall_4_6 = (RuleCall)cAlternatives_4.eContents().get(6);
 		private final Keyword cRightCurlyBracketKeyword_5 = (Keyword)cGroup.eContents().get(5);
 		
 		//LatencyRequirement returns rsaml::LatencyRequirement:
@@ -2478,6 +2488,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    ( Described
 		//    | 'from' source=[rsaml::NamedElement|QualifiedName]
 		//    | 'to' target=[rsaml::NamedElement|QualifiedName]
+		//    | 'via' via+=[rsaml::NamedElement|QualifiedName] (',' via+=[rsaml::NamedElement|QualifiedName])*
 		//    | 'maxLatency' maxLatency=Real timeUnit=TimeUnit
 		//    | 'kind' kind=LatencyKind
 		//    | Unit
@@ -2488,6 +2499,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'from' source=[rsaml::NamedElement|QualifiedName]
 		//| 'to' target=[rsaml::NamedElement|QualifiedName]
+		//| 'via' via+=[rsaml::NamedElement|QualifiedName] (',' via+=[rsaml::NamedElement|QualifiedName])*
 		//| 'maxLatency' maxLatency=Real timeUnit=TimeUnit
 		//| 'kind' kind=LatencyKind
 		//| Unit
@@ -2512,6 +2524,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'from' source=[rsaml::NamedElement|QualifiedName]
 		//| 'to' target=[rsaml::NamedElement|QualifiedName]
+		//| 'via' via+=[rsaml::NamedElement|QualifiedName] (',' via+=[rsaml::NamedElement|QualifiedName])*
 		//| 'maxLatency' maxLatency=Real timeUnit=TimeUnit
 		//| 'kind' kind=LatencyKind
 		//| Unit
@@ -2551,38 +2564,68 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//QualifiedName
 		public RuleCall getTargetNamedElementQualifiedNameParserRuleCall_4_2_1_0_1() { return cTargetNamedElementQualifiedNameParserRuleCall_4_2_1_0_1; }
 		
-		//'maxLatency' maxLatency=Real timeUnit=TimeUnit
+		//'via' via+=[rsaml::NamedElement|QualifiedName] (',' via+=[rsaml::NamedElement|QualifiedName])*
 		public Group getGroup_4_3() { return cGroup_4_3; }
 		
-		//'maxLatency'
-		public Keyword getMaxLatencyKeyword_4_3_0() { return cMaxLatencyKeyword_4_3_0; }
+		//'via'
+		public Keyword getViaKeyword_4_3_0() { return cViaKeyword_4_3_0; }
 		
-		//maxLatency=Real
-		public Assignment getMaxLatencyAssignment_4_3_1() { return cMaxLatencyAssignment_4_3_1; }
+		//via+=[rsaml::NamedElement|QualifiedName]
+		public Assignment getViaAssignment_4_3_1() { return cViaAssignment_4_3_1; }
 		
-		//Real
-		public RuleCall getMaxLatencyRealParserRuleCall_4_3_1_0() { return cMaxLatencyRealParserRuleCall_4_3_1_0; }
+		//[rsaml::NamedElement|QualifiedName]
+		public CrossReference getViaNamedElementCrossReference_4_3_1_0() { return cViaNamedElementCrossReference_4_3_1_0; }
 		
-		//timeUnit=TimeUnit
-		public Assignment getTimeUnitAssignment_4_3_2() { return cTimeUnitAssignment_4_3_2; }
+		//QualifiedName
+		public RuleCall getViaNamedElementQualifiedNameParserRuleCall_4_3_1_0_1() { return cViaNamedElementQualifiedNameParserRuleCall_4_3_1_0_1; }
 		
-		//TimeUnit
-		public RuleCall getTimeUnitTimeUnitEnumRuleCall_4_3_2_0() { return cTimeUnitTimeUnitEnumRuleCall_4_3_2_0; }
+		//(',' via+=[rsaml::NamedElement|QualifiedName])*
+		public Group getGroup_4_3_2() { return cGroup_4_3_2; }
 		
-		//'kind' kind=LatencyKind
+		//','
+		public Keyword getCommaKeyword_4_3_2_0() { return cCommaKeyword_4_3_2_0; }
+		
+		//via+=[rsaml::NamedElement|QualifiedName]
+		public Assignment getViaAssignment_4_3_2_1() { return cViaAssignment_4_3_2_1; }
+		
+		//[rsaml::NamedElement|QualifiedName]
+		public CrossReference getViaNamedElementCrossReference_4_3_2_1_0() { return cViaNamedElementCrossReference_4_3_2_1_0; }
+		
+		//QualifiedName
+		public RuleCall getViaNamedElementQualifiedNameParserRuleCall_4_3_2_1_0_1() { return cViaNamedElementQualifiedNameParserRuleCall_4_3_2_1_0_1; }
+		
+		//'maxLatency' maxLatency=Real timeUnit=TimeUnit
 		public Group getGroup_4_4() { return cGroup_4_4; }
 		
+		//'maxLatency'
+		public Keyword getMaxLatencyKeyword_4_4_0() { return cMaxLatencyKeyword_4_4_0; }
+		
+		//maxLatency=Real
+		public Assignment getMaxLatencyAssignment_4_4_1() { return cMaxLatencyAssignment_4_4_1; }
+		
+		//Real
+		public RuleCall getMaxLatencyRealParserRuleCall_4_4_1_0() { return cMaxLatencyRealParserRuleCall_4_4_1_0; }
+		
+		//timeUnit=TimeUnit
+		public Assignment getTimeUnitAssignment_4_4_2() { return cTimeUnitAssignment_4_4_2; }
+		
+		//TimeUnit
+		public RuleCall getTimeUnitTimeUnitEnumRuleCall_4_4_2_0() { return cTimeUnitTimeUnitEnumRuleCall_4_4_2_0; }
+		
+		//'kind' kind=LatencyKind
+		public Group getGroup_4_5() { return cGroup_4_5; }
+		
 		//'kind'
-		public Keyword getKindKeyword_4_4_0() { return cKindKeyword_4_4_0; }
+		public Keyword getKindKeyword_4_5_0() { return cKindKeyword_4_5_0; }
 		
 		//kind=LatencyKind
-		public Assignment getKindAssignment_4_4_1() { return cKindAssignment_4_4_1; }
+		public Assignment getKindAssignment_4_5_1() { return cKindAssignment_4_5_1; }
 		
 		//LatencyKind
-		public RuleCall getKindLatencyKindEnumRuleCall_4_4_1_0() { return cKindLatencyKindEnumRuleCall_4_4_1_0; }
+		public RuleCall getKindLatencyKindEnumRuleCall_4_5_1_0() { return cKindLatencyKindEnumRuleCall_4_5_1_0; }
 		
 		//Unit
-		public RuleCall getUnitParserRuleCall_4_5() { return cUnitParserRuleCall_4_5; }
+		public RuleCall getUnitParserRuleCall_4_6() { return cUnitParserRuleCall_4_6; }
 		
 		//'}'
 		public Keyword getRightCurlyBracketKeyword_5() { return cRightCurlyBracketKeyword_5; }
@@ -2709,39 +2752,40 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cModulesKeyword_56 = (Keyword)cAlternatives.eContents().get(56);
 		private final Keyword cFromKeyword_57 = (Keyword)cAlternatives.eContents().get(57);
 		private final Keyword cToKeyword_58 = (Keyword)cAlternatives.eContents().get(58);
-		private final Keyword cMaxLatencyKeyword_59 = (Keyword)cAlternatives.eContents().get(59);
-		private final Keyword cCentralizedKeyword_60 = (Keyword)cAlternatives.eContents().get(60);
-		private final Keyword cHierarchicalKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
-		private final Keyword cBehavioralKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
-		private final Keyword cHybridKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
-		private final Keyword cOtherKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
-		private final Keyword cSimpleKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
-		private final Keyword cRealTimeKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
-		private final Keyword cPeriodicKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
-		private final Keyword cSporadicKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
-		private final Keyword cAperiodicKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
-		private final Keyword cNsKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
-		private final Keyword cUsKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
-		private final Keyword cMsKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
-		private final Keyword cSKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
-		private final Keyword cSynchronousKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
-		private final Keyword cAsynchronousKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
-		private final Keyword cFIFOKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
-		private final Keyword cSJFKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
-		private final Keyword cRRKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
-		private final Keyword cRMKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
-		private final Keyword cDMKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
-		private final Keyword cEDFKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
-		private final Keyword cLLFKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
-		private final Keyword cOTHERKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
-		private final Keyword cNumericKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
-		private final Keyword cAlphanumericKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
-		private final Keyword cBooleanKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
-		private final Keyword cStructuredKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
-		private final Keyword cReactionTimeKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
-		private final Keyword cDataAgeKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
-		private final Keyword cNaNKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
-		private final Keyword cInfinityKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
+		private final Keyword cViaKeyword_59 = (Keyword)cAlternatives.eContents().get(59);
+		private final Keyword cMaxLatencyKeyword_60 = (Keyword)cAlternatives.eContents().get(60);
+		private final Keyword cCentralizedKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
+		private final Keyword cHierarchicalKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
+		private final Keyword cBehavioralKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
+		private final Keyword cHybridKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
+		private final Keyword cOtherKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
+		private final Keyword cSimpleKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
+		private final Keyword cRealTimeKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
+		private final Keyword cPeriodicKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
+		private final Keyword cSporadicKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
+		private final Keyword cAperiodicKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
+		private final Keyword cNsKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
+		private final Keyword cUsKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
+		private final Keyword cMsKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
+		private final Keyword cSKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
+		private final Keyword cSynchronousKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
+		private final Keyword cAsynchronousKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
+		private final Keyword cFIFOKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
+		private final Keyword cSJFKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
+		private final Keyword cRRKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
+		private final Keyword cRMKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
+		private final Keyword cDMKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
+		private final Keyword cEDFKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
+		private final Keyword cLLFKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
+		private final Keyword cOTHERKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
+		private final Keyword cNumericKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
+		private final Keyword cAlphanumericKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
+		private final Keyword cBooleanKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
+		private final Keyword cStructuredKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
+		private final Keyword cReactionTimeKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
+		private final Keyword cDataAgeKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
+		private final Keyword cNaNKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
+		private final Keyword cInfinityKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
 		
 		//Keyword:
 		//    'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2750,7 +2794,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | 'description' | 'category' | 'declaredLayers' | 'unit' | 'type' | 'execType' | 'period' | 'deadline' | 'wcet'
 		//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//    | 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
-		//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to'
+		//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
 		//    | 'maxLatency'
 		//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
@@ -2764,7 +2808,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'description' | 'category' | 'declaredLayers' | 'unit' | 'type' | 'execType' | 'period' | 'deadline' | 'wcet'
 		//| 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//| 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
-		//| 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to'
+		//| 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
 		//| 'maxLatency'
 		//| 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//| 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
@@ -2949,104 +2993,107 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//'to'
 		public Keyword getToKeyword_58() { return cToKeyword_58; }
 		
+		//'via'
+		public Keyword getViaKeyword_59() { return cViaKeyword_59; }
+		
 		//'maxLatency'
-		public Keyword getMaxLatencyKeyword_59() { return cMaxLatencyKeyword_59; }
+		public Keyword getMaxLatencyKeyword_60() { return cMaxLatencyKeyword_60; }
 		
 		//'centralized'
-		public Keyword getCentralizedKeyword_60() { return cCentralizedKeyword_60; }
+		public Keyword getCentralizedKeyword_61() { return cCentralizedKeyword_61; }
 		
 		//'hierarchical'
-		public Keyword getHierarchicalKeyword_61() { return cHierarchicalKeyword_61; }
+		public Keyword getHierarchicalKeyword_62() { return cHierarchicalKeyword_62; }
 		
 		//'behavioral'
-		public Keyword getBehavioralKeyword_62() { return cBehavioralKeyword_62; }
+		public Keyword getBehavioralKeyword_63() { return cBehavioralKeyword_63; }
 		
 		//'hybrid'
-		public Keyword getHybridKeyword_63() { return cHybridKeyword_63; }
+		public Keyword getHybridKeyword_64() { return cHybridKeyword_64; }
 		
 		//'other'
-		public Keyword getOtherKeyword_64() { return cOtherKeyword_64; }
+		public Keyword getOtherKeyword_65() { return cOtherKeyword_65; }
 		
 		//'simple'
-		public Keyword getSimpleKeyword_65() { return cSimpleKeyword_65; }
+		public Keyword getSimpleKeyword_66() { return cSimpleKeyword_66; }
 		
 		//'realTime'
-		public Keyword getRealTimeKeyword_66() { return cRealTimeKeyword_66; }
+		public Keyword getRealTimeKeyword_67() { return cRealTimeKeyword_67; }
 		
 		//'periodic'
-		public Keyword getPeriodicKeyword_67() { return cPeriodicKeyword_67; }
+		public Keyword getPeriodicKeyword_68() { return cPeriodicKeyword_68; }
 		
 		//'sporadic'
-		public Keyword getSporadicKeyword_68() { return cSporadicKeyword_68; }
+		public Keyword getSporadicKeyword_69() { return cSporadicKeyword_69; }
 		
 		//'aperiodic'
-		public Keyword getAperiodicKeyword_69() { return cAperiodicKeyword_69; }
+		public Keyword getAperiodicKeyword_70() { return cAperiodicKeyword_70; }
 		
 		//'ns'
-		public Keyword getNsKeyword_70() { return cNsKeyword_70; }
+		public Keyword getNsKeyword_71() { return cNsKeyword_71; }
 		
 		//'us'
-		public Keyword getUsKeyword_71() { return cUsKeyword_71; }
+		public Keyword getUsKeyword_72() { return cUsKeyword_72; }
 		
 		//'ms'
-		public Keyword getMsKeyword_72() { return cMsKeyword_72; }
+		public Keyword getMsKeyword_73() { return cMsKeyword_73; }
 		
 		//'s'
-		public Keyword getSKeyword_73() { return cSKeyword_73; }
+		public Keyword getSKeyword_74() { return cSKeyword_74; }
 		
 		//'synchronous'
-		public Keyword getSynchronousKeyword_74() { return cSynchronousKeyword_74; }
+		public Keyword getSynchronousKeyword_75() { return cSynchronousKeyword_75; }
 		
 		//'asynchronous'
-		public Keyword getAsynchronousKeyword_75() { return cAsynchronousKeyword_75; }
+		public Keyword getAsynchronousKeyword_76() { return cAsynchronousKeyword_76; }
 		
 		//'FIFO'
-		public Keyword getFIFOKeyword_76() { return cFIFOKeyword_76; }
+		public Keyword getFIFOKeyword_77() { return cFIFOKeyword_77; }
 		
 		//'SJF'
-		public Keyword getSJFKeyword_77() { return cSJFKeyword_77; }
+		public Keyword getSJFKeyword_78() { return cSJFKeyword_78; }
 		
 		//'RR'
-		public Keyword getRRKeyword_78() { return cRRKeyword_78; }
+		public Keyword getRRKeyword_79() { return cRRKeyword_79; }
 		
 		//'RM'
-		public Keyword getRMKeyword_79() { return cRMKeyword_79; }
+		public Keyword getRMKeyword_80() { return cRMKeyword_80; }
 		
 		//'DM'
-		public Keyword getDMKeyword_80() { return cDMKeyword_80; }
+		public Keyword getDMKeyword_81() { return cDMKeyword_81; }
 		
 		//'EDF'
-		public Keyword getEDFKeyword_81() { return cEDFKeyword_81; }
+		public Keyword getEDFKeyword_82() { return cEDFKeyword_82; }
 		
 		//'LLF'
-		public Keyword getLLFKeyword_82() { return cLLFKeyword_82; }
+		public Keyword getLLFKeyword_83() { return cLLFKeyword_83; }
 		
 		//'OTHER'
-		public Keyword getOTHERKeyword_83() { return cOTHERKeyword_83; }
+		public Keyword getOTHERKeyword_84() { return cOTHERKeyword_84; }
 		
 		//'numeric'
-		public Keyword getNumericKeyword_84() { return cNumericKeyword_84; }
+		public Keyword getNumericKeyword_85() { return cNumericKeyword_85; }
 		
 		//'alphanumeric'
-		public Keyword getAlphanumericKeyword_85() { return cAlphanumericKeyword_85; }
+		public Keyword getAlphanumericKeyword_86() { return cAlphanumericKeyword_86; }
 		
 		//'boolean'
-		public Keyword getBooleanKeyword_86() { return cBooleanKeyword_86; }
+		public Keyword getBooleanKeyword_87() { return cBooleanKeyword_87; }
 		
 		//'structured'
-		public Keyword getStructuredKeyword_87() { return cStructuredKeyword_87; }
+		public Keyword getStructuredKeyword_88() { return cStructuredKeyword_88; }
 		
 		//'reactionTime'
-		public Keyword getReactionTimeKeyword_88() { return cReactionTimeKeyword_88; }
+		public Keyword getReactionTimeKeyword_89() { return cReactionTimeKeyword_89; }
 		
 		//'dataAge'
-		public Keyword getDataAgeKeyword_89() { return cDataAgeKeyword_89; }
+		public Keyword getDataAgeKeyword_90() { return cDataAgeKeyword_90; }
 		
 		//'NaN'
-		public Keyword getNaNKeyword_90() { return cNaNKeyword_90; }
+		public Keyword getNaNKeyword_91() { return cNaNKeyword_91; }
 		
 		//'Infinity'
-		public Keyword getInfinityKeyword_91() { return cInfinityKeyword_91; }
+		public Keyword getInfinityKeyword_92() { return cInfinityKeyword_92; }
 	}
 	public class RealElements extends AbstractParserRuleElementFinder {
 		private final ParserRule rule = (ParserRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.Real");
@@ -3859,6 +3906,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    ( Described
 	//    | 'from' source=[rsaml::NamedElement|QualifiedName]
 	//    | 'to' target=[rsaml::NamedElement|QualifiedName]
+	//    | 'via' via+=[rsaml::NamedElement|QualifiedName] (',' via+=[rsaml::NamedElement|QualifiedName])*
 	//    | 'maxLatency' maxLatency=Real timeUnit=TimeUnit
 	//    | 'kind' kind=LatencyKind
 	//    | Unit
@@ -3900,7 +3948,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | 'description' | 'category' | 'declaredLayers' | 'unit' | 'type' | 'execType' | 'period' | 'deadline' | 'wcet'
 	//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 	//    | 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
-	//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to'
+	//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
 	//    | 'maxLatency'
 	//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 	//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'

@@ -282,6 +282,7 @@ public class RsamlTextWriter {
         if (r.getTarget() != null) {
             line("to " + reference(r.getTarget(), Literals.NAMED_ELEMENT));
         }
+        references("via", r.getVia(), Literals.NAMED_ELEMENT);
         boolean timed = time(r, Literals.LATENCY_REQUIREMENT__MAX_LATENCY, "maxLatency", r.getMaxLatency());
         attribute(r, Literals.LATENCY_REQUIREMENT__KIND, "kind", () -> r.getKind().getLiteral());
         unitIfUnwritten(r, timed);

@@ -172,6 +172,7 @@ final class RandomModels {
             maybe(() -> r.setMaxLatency(number()));
             maybe(() -> r.setSource(one(named)));
             maybe(() -> r.setTarget(one(named)));
+            pick(named, 3).forEach(x -> r.getVia().add((NamedElement) x));
         }
         return a;
     }

@@ -29,7 +29,7 @@ import picocli.CommandLine.ScopeType;
  */
 @Command(name = "rsaml", mixinStandardHelpOptions = true, versionProvider = RsamlCli.Version.class,
         description = "Checks robot software architectures written in RsaML (.rsaml files) and generates their code skeletons.",
-        subcommands = { ValidateCommand.class, GenerateCommand.class, DiagramCommand.class, AnalyzeCommand.class, ConvertCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
+        subcommands = { ValidateCommand.class, GenerateCommand.class, DiagramCommand.class, AnalyzeCommand.class, ConvertCommand.class, LanguageServerCommand.class, RulesCommand.class, CommandLine.HelpCommand.class },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:clean: no finding at or above --fail-on",
                 "1:findings at or above --fail-on",

@@ -3596,16 +3596,61 @@ ruleLatencyRequirement returns [EObject current=null]
 			)
 			    |
 			(
-				otherlv_9='maxLatency'
+				otherlv_9='via'
 				{
-					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_3_0());
+					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getViaKeyword_4_3_0());
 				}
 				(
 					(
 						{
-							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_3_1_0());
+							if ($current==null) {
+								$current = createModelElement(grammarAccess.getLatencyRequirementRule());
+							}
 						}
-						lv_maxLatency_10_0=ruleReal
+						{
+							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getViaNamedElementCrossReference_4_3_1_0());
+						}
+						ruleQualifiedName
+						{
+							afterParserOrEnumRuleCall();
+						}
+					)
+				)
+				(
+					otherlv_11=','
+					{
+						newLeafNode(otherlv_11, grammarAccess.getLatencyRequirementAccess().getCommaKeyword_4_3_2_0());
+					}
+					(
+						(
+							{
+								if ($current==null) {
+									$current = createModelElement(grammarAccess.getLatencyRequirementRule());
+								}
+							}
+							{
+								newCompositeNode(grammarAccess.getLatencyRequirementAccess().getViaNamedElementCrossReference_4_3_2_1_0());
+							}
+							ruleQualifiedName
+							{
+								afterParserOrEnumRuleCall();
+							}
+						)
+					)
+				)*
+			)
+			    |
+			(
+				otherlv_13='maxLatency'
+				{
+					newLeafNode(otherlv_13, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_4_0());
+				}
+				(
+					(
+						{
+							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_4_1_0());
+						}
+						lv_maxLatency_14_0=ruleReal
 						{
 							if ($current==null) {
 								$current = createModelElementForParent(grammarAccess.getLatencyRequirementRule());
@@ -3613,7 +3658,7 @@ ruleLatencyRequirement returns [EObject current=null]
 							set(
 								$current,
 								"maxLatency",
-								lv_maxLatency_10_0,
+								lv_maxLatency_14_0,
 								"org.rsaml.text.RsamlText.Real");
 							afterParserOrEnumRuleCall();
 						}
@@ -3622,9 +3667,9 @@ ruleLatencyRequirement returns [EObject current=null]
 				(
 					(
 						{
-							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
+							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
 						}
-						lv_timeUnit_11_0=ruleTimeUnit
+						lv_timeUnit_15_0=ruleTimeUnit
 						{
 							if ($current==null) {
 								$current = createModelElementForParent(grammarAccess.getLatencyRequirementRule());
@@ -3632,7 +3677,7 @@ ruleLatencyRequirement returns [EObject current=null]
 							set(
 								$current,
 								"timeUnit",
-								lv_timeUnit_11_0,
+								lv_timeUnit_15_0,
 								"org.rsaml.text.RsamlText.TimeUnit");
 							afterParserOrEnumRuleCall();
 						}
@@ -3641,16 +3686,16 @@ ruleLatencyRequirement returns [EObject current=null]
 			)
 			    |
 			(
-				otherlv_12='kind'
+				otherlv_16='kind'
 				{
-					newLeafNode(otherlv_12, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_4_0());
+					newLeafNode(otherlv_16, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_5_0());
 				}
 				(
 					(
 						{
-							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_4_1_0());
+							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_5_1_0());
 						}
-						lv_kind_13_0=ruleLatencyKind
+						lv_kind_17_0=ruleLatencyKind
 						{
 							if ($current==null) {
 								$current = createModelElementForParent(grammarAccess.getLatencyRequirementRule());
@@ -3658,7 +3703,7 @@ ruleLatencyRequirement returns [EObject current=null]
 							set(
 								$current,
 								"kind",
-								lv_kind_13_0,
+								lv_kind_17_0,
 								"org.rsaml.text.RsamlText.LatencyKind");
 							afterParserOrEnumRuleCall();
 						}
@@ -3670,17 +3715,17 @@ ruleLatencyRequirement returns [EObject current=null]
 				if ($current==null) {
 					$current = createModelElement(grammarAccess.getLatencyRequirementRule());
 				}
-				newCompositeNode(grammarAccess.getLatencyRequirementAccess().getUnitParserRuleCall_4_5());
+				newCompositeNode(grammarAccess.getLatencyRequirementAccess().getUnitParserRuleCall_4_6());
 			}
-			this_Unit_14=ruleUnit[$current]
+			this_Unit_18=ruleUnit[$current]
 			{
-				$current = $this_Unit_14.current;
+				$current = $this_Unit_18.current;
 				afterParserOrEnumRuleCall();
 			}
 		)*
-		otherlv_15='}'
+		otherlv_19='}'
 		{
-			newLeafNode(otherlv_15, grammarAccess.getLatencyRequirementAccess().getRightCurlyBracketKeyword_5());
+			newLeafNode(otherlv_19, grammarAccess.getLatencyRequirementAccess().getRightCurlyBracketKeyword_5());
 		}
 	)
 ;
@@ -4153,202 +4198,208 @@ ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()
 			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_58());
 		}
 		    |
+		kw='via'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_59());
+		}
+		    |
 		kw='maxLatency'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_59());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60());
 		}
 		    |
 		kw='centralized'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_60());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_61());
 		}
 		    |
 		kw='hierarchical'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_61());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_62());
 		}
 		    |
 		kw='behavioral'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_62());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_63());
 		}
 		    |
 		kw='hybrid'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_63());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_64());
 		}
 		    |
 		kw='other'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_64());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_65());
 		}
 		    |
 		kw='simple'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_65());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_66());
 		}
 		    |
 		kw='realTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_66());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_67());
 		}
 		    |
 		kw='periodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_67());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_68());
 		}
 		    |
 		kw='sporadic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_68());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_69());
 		}
 		    |
 		kw='aperiodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_69());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_70());
 		}
 		    |
 		kw='ns'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_70());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_71());
 		}
 		    |
 		kw='us'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_71());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_72());
 		}
 		    |
 		kw='ms'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_72());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_73());
 		}
 		    |
 		kw='s'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_73());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_74());
 		}
 		    |
 		kw='synchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_74());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_75());
 		}
 		    |
 		kw='asynchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_75());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_76());
 		}
 		    |
 		kw='FIFO'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_76());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_77());
 		}
 		    |
 		kw='SJF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_77());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_78());
 		}
 		    |
 		kw='RR'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_78());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_79());
 		}
 		    |
 		kw='RM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_79());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_80());
 		}
 		    |
 		kw='DM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_80());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_81());
 		}
 		    |
 		kw='EDF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_81());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_82());
 		}
 		    |
 		kw='LLF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_82());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_83());
 		}
 		    |
 		kw='OTHER'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_83());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_84());
 		}
 		    |
 		kw='numeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_84());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_85());
 		}
 		    |
 		kw='alphanumeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_85());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_86());
 		}
 		    |
 		kw='boolean'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_86());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_87());
 		}
 		    |
 		kw='structured'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_87());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_88());
 		}
 		    |
 		kw='reactionTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_88());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_89());
 		}
 		    |
 		kw='dataAge'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_89());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_90());
 		}
 		    |
 		kw='NaN'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_90());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_91());
 		}
 		    |
 		kw='Infinity'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_91());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_92());
 		}
 	)
 ;

@@ -22,7 +22,7 @@ import java.util.ArrayList;
 @SuppressWarnings("all")
 public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final String[] tokenNames = new String[] {
-        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'modules'", "'latency'", "'from'", "'to'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
+        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
     };
     public static final int T__50=50;
     public static final int T__59=59;
@@ -122,6 +122,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final int T__108=108;
     public static final int T__89=89;
     public static final int T__107=107;
+    public static final int T__109=109;
     public static final int T__84=84;
     public static final int T__104=104;
     public static final int T__85=85;
@@ -274,7 +275,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt1=2;
             int LA1_0 = input.LA(1);
 
-            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=41)||(LA1_0>=43 && LA1_0<=74)||(LA1_0>=76 && LA1_0<=107)) ) {
+            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=41)||(LA1_0>=43 && LA1_0<=75)||(LA1_0>=77 && LA1_0<=108)) ) {
                 alt1=1;
             }
             switch (alt1) {
@@ -1591,7 +1592,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt4=2;
             int LA4_0 = input.LA(1);
 
-            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=41)||(LA4_0>=43 && LA4_0<=74)||(LA4_0>=76 && LA4_0<=107)) ) {
+            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=41)||(LA4_0>=43 && LA4_0<=75)||(LA4_0>=77 && LA4_0<=108)) ) {
                 alt4=1;
             }
             switch (alt4) {
@@ -1995,7 +1996,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt6=2;
             int LA6_0 = input.LA(1);
 
-            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=41)||(LA6_0>=43 && LA6_0<=74)||(LA6_0>=76 && LA6_0<=107)) ) {
+            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=41)||(LA6_0>=43 && LA6_0<=75)||(LA6_0>=77 && LA6_0<=108)) ) {
                 alt6=1;
             }
             switch (alt6) {
@@ -2604,7 +2605,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt10=2;
             int LA10_0 = input.LA(1);
 
-            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=41)||(LA10_0>=43 && LA10_0<=74)||(LA10_0>=76 && LA10_0<=107)) ) {
+            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=41)||(LA10_0>=43 && LA10_0<=75)||(LA10_0>=77 && LA10_0<=108)) ) {
                 alt10=1;
             }
             switch (alt10) {
@@ -3083,7 +3084,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt13=2;
             int LA13_0 = input.LA(1);
 
-            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=41)||(LA13_0>=43 && LA13_0<=74)||(LA13_0>=76 && LA13_0<=107)) ) {
+            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=41)||(LA13_0>=43 && LA13_0<=75)||(LA13_0>=77 && LA13_0<=108)) ) {
                 alt13=1;
             }
             switch (alt13) {
@@ -3449,7 +3450,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt16=2;
             int LA16_0 = input.LA(1);
 
-            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=41)||(LA16_0>=43 && LA16_0<=74)||(LA16_0>=76 && LA16_0<=107)) ) {
+            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=41)||(LA16_0>=43 && LA16_0<=75)||(LA16_0>=77 && LA16_0<=108)) ) {
                 alt16=1;
             }
             switch (alt16) {
@@ -3917,7 +3918,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt20=2;
             int LA20_0 = input.LA(1);
 
-            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=41)||(LA20_0>=43 && LA20_0<=74)||(LA20_0>=76 && LA20_0<=107)) ) {
+            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=41)||(LA20_0>=43 && LA20_0<=75)||(LA20_0>=77 && LA20_0<=108)) ) {
                 alt20=1;
             }
             switch (alt20) {
@@ -4320,7 +4321,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt22=2;
             int LA22_0 = input.LA(1);
 
-            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=41)||(LA22_0>=43 && LA22_0<=74)||(LA22_0>=76 && LA22_0<=107)) ) {
+            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=41)||(LA22_0>=43 && LA22_0<=75)||(LA22_0>=77 && LA22_0<=108)) ) {
                 alt22=1;
             }
             switch (alt22) {
@@ -4726,7 +4727,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt24=2;
             int LA24_0 = input.LA(1);
 
-            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=41)||(LA24_0>=43 && LA24_0<=74)||(LA24_0>=76 && LA24_0<=107)) ) {
+            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=41)||(LA24_0>=43 && LA24_0<=75)||(LA24_0>=77 && LA24_0<=108)) ) {
                 alt24=1;
             }
             switch (alt24) {
@@ -5133,7 +5134,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt26=2;
             int LA26_0 = input.LA(1);
 
-            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=41)||(LA26_0>=43 && LA26_0<=74)||(LA26_0>=76 && LA26_0<=107)) ) {
+            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=41)||(LA26_0>=43 && LA26_0<=75)||(LA26_0>=77 && LA26_0<=108)) ) {
                 alt26=1;
             }
             switch (alt26) {
@@ -5532,7 +5533,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt28=2;
             int LA28_0 = input.LA(1);
 
-            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=41)||(LA28_0>=43 && LA28_0<=74)||(LA28_0>=76 && LA28_0<=107)) ) {
+            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=41)||(LA28_0>=43 && LA28_0<=75)||(LA28_0>=77 && LA28_0<=108)) ) {
                 alt28=1;
             }
             switch (alt28) {
@@ -5808,7 +5809,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt30=2;
             int LA30_0 = input.LA(1);
 
-            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=41)||(LA30_0>=43 && LA30_0<=74)||(LA30_0>=76 && LA30_0<=107)) ) {
+            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=41)||(LA30_0>=43 && LA30_0<=75)||(LA30_0>=77 && LA30_0<=108)) ) {
                 alt30=1;
             }
             switch (alt30) {
@@ -6093,7 +6094,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt32=2;
             int LA32_0 = input.LA(1);
 
-            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=41)||(LA32_0>=43 && LA32_0<=74)||(LA32_0>=76 && LA32_0<=107)) ) {
+            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=41)||(LA32_0>=43 && LA32_0<=75)||(LA32_0>=77 && LA32_0<=108)) ) {
                 alt32=1;
             }
             switch (alt32) {
@@ -6431,7 +6432,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt35=2;
             int LA35_0 = input.LA(1);
 
-            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=41)||(LA35_0>=43 && LA35_0<=74)||(LA35_0>=76 && LA35_0<=107)) ) {
+            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=41)||(LA35_0>=43 && LA35_0<=75)||(LA35_0>=77 && LA35_0<=108)) ) {
                 alt35=1;
             }
             switch (alt35) {
@@ -6757,7 +6758,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt38=2;
             int LA38_0 = input.LA(1);
 
-            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=41)||(LA38_0>=43 && LA38_0<=74)||(LA38_0>=76 && LA38_0<=107)) ) {
+            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=41)||(LA38_0>=43 && LA38_0<=75)||(LA38_0>=77 && LA38_0<=108)) ) {
                 alt38=1;
             }
             switch (alt38) {
@@ -7102,7 +7103,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt41=2;
             int LA41_0 = input.LA(1);
 
-            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=41)||(LA41_0>=43 && LA41_0<=74)||(LA41_0>=76 && LA41_0<=107)) ) {
+            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=41)||(LA41_0>=43 && LA41_0<=75)||(LA41_0>=77 && LA41_0<=108)) ) {
                 alt41=1;
             }
             switch (alt41) {
@@ -7436,7 +7437,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt43=2;
             int LA43_0 = input.LA(1);
 
-            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=41)||(LA43_0>=43 && LA43_0<=74)||(LA43_0>=76 && LA43_0<=107)) ) {
+            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=41)||(LA43_0>=43 && LA43_0<=75)||(LA43_0>=77 && LA43_0<=108)) ) {
                 alt43=1;
             }
             switch (alt43) {
@@ -7666,7 +7667,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt45=2;
             int LA45_0 = input.LA(1);
 
-            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=41)||(LA45_0>=43 && LA45_0<=74)||(LA45_0>=76 && LA45_0<=107)) ) {
+            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=41)||(LA45_0>=43 && LA45_0<=75)||(LA45_0>=77 && LA45_0<=108)) ) {
                 alt45=1;
             }
             switch (alt45) {
@@ -8018,7 +8019,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt48=2;
             int LA48_0 = input.LA(1);
 
-            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=41)||(LA48_0>=43 && LA48_0<=74)||(LA48_0>=76 && LA48_0<=107)) ) {
+            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=41)||(LA48_0>=43 && LA48_0<=75)||(LA48_0>=77 && LA48_0<=108)) ) {
                 alt48=1;
             }
             switch (alt48) {
@@ -8373,7 +8374,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyRequirement"
-    // InternalRsamlText.g:3497:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) ) | this_Unit_14= ruleUnit[$current] )* otherlv_15= '}' ) ;
+    // InternalRsamlText.g:3497:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
     public final EObject ruleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8382,30 +8383,32 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         Token otherlv_5=null;
         Token otherlv_7=null;
         Token otherlv_9=null;
-        Token otherlv_12=null;
-        Token otherlv_15=null;
+        Token otherlv_11=null;
+        Token otherlv_13=null;
+        Token otherlv_16=null;
+        Token otherlv_19=null;
         AntlrDatatypeRuleToken lv_name_2_0 = null;
 
         EObject this_Described_4 = null;
 
-        AntlrDatatypeRuleToken lv_maxLatency_10_0 = null;
+        AntlrDatatypeRuleToken lv_maxLatency_14_0 = null;
 
-        Enumerator lv_timeUnit_11_0 = null;
+        Enumerator lv_timeUnit_15_0 = null;
 
-        Enumerator lv_kind_13_0 = null;
+        Enumerator lv_kind_17_0 = null;
 
-        EObject this_Unit_14 = null;
+        EObject this_Unit_18 = null;
 
 
 
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3503:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) ) | this_Unit_14= ruleUnit[$current] )* otherlv_15= '}' ) )
-            // InternalRsamlText.g:3504:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) ) | this_Unit_14= ruleUnit[$current] )* otherlv_15= '}' )
+            // InternalRsamlText.g:3503:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3504:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3504:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) ) | this_Unit_14= ruleUnit[$current] )* otherlv_15= '}' )
-            // InternalRsamlText.g:3505:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) ) | this_Unit_14= ruleUnit[$current] )* otherlv_15= '}'
+            // InternalRsamlText.g:3504:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3505:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
             {
             // InternalRsamlText.g:3505:3: ()
             // InternalRsamlText.g:3506:4: 
@@ -8426,7 +8429,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt51=2;
             int LA51_0 = input.LA(1);
 
-            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=41)||(LA51_0>=43 && LA51_0<=74)||(LA51_0>=76 && LA51_0<=107)) ) {
+            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=41)||(LA51_0>=43 && LA51_0<=75)||(LA51_0>=77 && LA51_0<=108)) ) {
                 alt51=1;
             }
             switch (alt51) {
@@ -8468,45 +8471,50 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getLatencyRequirementAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3539:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) ) | this_Unit_14= ruleUnit[$current] )*
-            loop52:
+            // InternalRsamlText.g:3539:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
+            loop53:
             do {
-                int alt52=7;
+                int alt53=8;
                 switch ( input.LA(1) ) {
                 case 16:
                     {
-                    alt52=1;
+                    alt53=1;
                     }
                     break;
                 case 72:
                     {
-                    alt52=2;
+                    alt53=2;
                     }
                     break;
                 case 73:
                     {
-                    alt52=3;
+                    alt53=3;
                     }
                     break;
                 case 74:
                     {
-                    alt52=4;
+                    alt53=4;
+                    }
+                    break;
+                case 75:
+                    {
+                    alt53=5;
                     }
                     break;
                 case 49:
                     {
-                    alt52=5;
+                    alt53=6;
                     }
                     break;
                 case 17:
                     {
-                    alt52=6;
+                    alt53=7;
                     }
                     break;
 
                 }
 
-                switch (alt52) {
+                switch (alt53) {
             	case 1 :
             	    // InternalRsamlText.g:3540:4: this_Described_4= ruleDescribed[$current]
             	    {
@@ -8617,26 +8625,126 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3598:4: (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3598:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3598:4: (otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:3599:5: otherlv_9= 'maxLatency' ( (lv_maxLatency_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3598:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3599:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_9=(Token)match(input,74,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,74,FOLLOW_15); 
 
-            	    					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_3_0());
+            	    					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getViaKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3603:5: ( (lv_maxLatency_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:3604:6: (lv_maxLatency_10_0= ruleReal )
+            	    // InternalRsamlText.g:3603:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3604:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3604:6: (lv_maxLatency_10_0= ruleReal )
-            	    // InternalRsamlText.g:3605:7: lv_maxLatency_10_0= ruleReal
+            	    // InternalRsamlText.g:3604:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3605:7: ruleQualifiedName
             	    {
 
-            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_3_1_0());
+            	    							if (current==null) {
+            	    								current = createModelElement(grammarAccess.getLatencyRequirementRule());
+            	    							}
+            	    						
+
+            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getViaNamedElementCrossReference_4_3_1_0());
+            	    						
+            	    pushFollow(FOLLOW_43);
+            	    ruleQualifiedName();
+
+            	    state._fsp--;
+
+
+            	    							afterParserOrEnumRuleCall();
+            	    						
+
+            	    }
+
+
+            	    }
+
+            	    // InternalRsamlText.g:3619:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    loop52:
+            	    do {
+            	        int alt52=2;
+            	        int LA52_0 = input.LA(1);
+
+            	        if ( (LA52_0==28) ) {
+            	            alt52=1;
+            	        }
+
+
+            	        switch (alt52) {
+            	    	case 1 :
+            	    	    // InternalRsamlText.g:3620:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
+            	    	    {
+            	    	    otherlv_11=(Token)match(input,28,FOLLOW_15); 
+
+            	    	    						newLeafNode(otherlv_11, grammarAccess.getLatencyRequirementAccess().getCommaKeyword_4_3_2_0());
+            	    	    					
+            	    	    // InternalRsamlText.g:3624:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3625:7: ( ruleQualifiedName )
+            	    	    {
+            	    	    // InternalRsamlText.g:3625:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3626:8: ruleQualifiedName
+            	    	    {
+
+            	    	    								if (current==null) {
+            	    	    									current = createModelElement(grammarAccess.getLatencyRequirementRule());
+            	    	    								}
+            	    	    							
+
+            	    	    								newCompositeNode(grammarAccess.getLatencyRequirementAccess().getViaNamedElementCrossReference_4_3_2_1_0());
+            	    	    							
+            	    	    pushFollow(FOLLOW_43);
+            	    	    ruleQualifiedName();
+
+            	    	    state._fsp--;
+
+
+            	    	    								afterParserOrEnumRuleCall();
+            	    	    							
+
+            	    	    }
+
+
+            	    	    }
+
+
+            	    	    }
+            	    	    break;
+
+            	    	default :
+            	    	    break loop52;
+            	        }
+            	    } while (true);
+
+
+            	    }
+
+
+            	    }
+            	    break;
+            	case 5 :
+            	    // InternalRsamlText.g:3643:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    {
+            	    // InternalRsamlText.g:3643:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3644:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    {
+            	    otherlv_13=(Token)match(input,75,FOLLOW_12); 
+
+            	    					newLeafNode(otherlv_13, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_4_0());
+            	    				
+            	    // InternalRsamlText.g:3648:5: ( (lv_maxLatency_14_0= ruleReal ) )
+            	    // InternalRsamlText.g:3649:6: (lv_maxLatency_14_0= ruleReal )
+            	    {
+            	    // InternalRsamlText.g:3649:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3650:7: lv_maxLatency_14_0= ruleReal
+            	    {
+
+            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_4_1_0());
             	    						
             	    pushFollow(FOLLOW_9);
-            	    lv_maxLatency_10_0=ruleReal();
+            	    lv_maxLatency_14_0=ruleReal();
 
             	    state._fsp--;
 
@@ -8647,7 +8755,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    							set(
             	    								current,
             	    								"maxLatency",
-            	    								lv_maxLatency_10_0,
+            	    								lv_maxLatency_14_0,
             	    								"org.rsaml.text.RsamlText.Real");
             	    							afterParserOrEnumRuleCall();
             	    						
@@ -8657,17 +8765,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3622:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:3623:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3667:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3668:6: (lv_timeUnit_15_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:3623:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:3624:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:3668:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3669:7: lv_timeUnit_15_0= ruleTimeUnit
             	    {
 
-            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
+            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
             	    						
             	    pushFollow(FOLLOW_42);
-            	    lv_timeUnit_11_0=ruleTimeUnit();
+            	    lv_timeUnit_15_0=ruleTimeUnit();
 
             	    state._fsp--;
 
@@ -8678,7 +8786,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    							set(
             	    								current,
             	    								"timeUnit",
-            	    								lv_timeUnit_11_0,
+            	    								lv_timeUnit_15_0,
             	    								"org.rsaml.text.RsamlText.TimeUnit");
             	    							afterParserOrEnumRuleCall();
             	    						
@@ -8694,27 +8802,27 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 5 :
-            	    // InternalRsamlText.g:3643:4: (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) )
+            	case 6 :
+            	    // InternalRsamlText.g:3688:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
             	    {
-            	    // InternalRsamlText.g:3643:4: (otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) ) )
-            	    // InternalRsamlText.g:3644:5: otherlv_12= 'kind' ( (lv_kind_13_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3688:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3689:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
             	    {
-            	    otherlv_12=(Token)match(input,49,FOLLOW_43); 
+            	    otherlv_16=(Token)match(input,49,FOLLOW_44); 
 
-            	    					newLeafNode(otherlv_12, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_4_0());
+            	    					newLeafNode(otherlv_16, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_5_0());
             	    				
-            	    // InternalRsamlText.g:3648:5: ( (lv_kind_13_0= ruleLatencyKind ) )
-            	    // InternalRsamlText.g:3649:6: (lv_kind_13_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3693:5: ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3694:6: (lv_kind_17_0= ruleLatencyKind )
             	    {
-            	    // InternalRsamlText.g:3649:6: (lv_kind_13_0= ruleLatencyKind )
-            	    // InternalRsamlText.g:3650:7: lv_kind_13_0= ruleLatencyKind
+            	    // InternalRsamlText.g:3694:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3695:7: lv_kind_17_0= ruleLatencyKind
             	    {
 
-            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_4_1_0());
+            	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_5_1_0());
             	    						
             	    pushFollow(FOLLOW_42);
-            	    lv_kind_13_0=ruleLatencyKind();
+            	    lv_kind_17_0=ruleLatencyKind();
 
             	    state._fsp--;
 
@@ -8725,7 +8833,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    							set(
             	    								current,
             	    								"kind",
-            	    								lv_kind_13_0,
+            	    								lv_kind_17_0,
             	    								"org.rsaml.text.RsamlText.LatencyKind");
             	    							afterParserOrEnumRuleCall();
             	    						
@@ -8741,22 +8849,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 6 :
-            	    // InternalRsamlText.g:3669:4: this_Unit_14= ruleUnit[$current]
+            	case 7 :
+            	    // InternalRsamlText.g:3714:4: this_Unit_18= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
             	    					current = createModelElement(grammarAccess.getLatencyRequirementRule());
             	    				}
-            	    				newCompositeNode(grammarAccess.getLatencyRequirementAccess().getUnitParserRuleCall_4_5());
+            	    				newCompositeNode(grammarAccess.getLatencyRequirementAccess().getUnitParserRuleCall_4_6());
             	    			
             	    pushFollow(FOLLOW_42);
-            	    this_Unit_14=ruleUnit(current);
+            	    this_Unit_18=ruleUnit(current);
 
             	    state._fsp--;
 
 
-            	    				current = this_Unit_14;
+            	    				current = this_Unit_18;
             	    				afterParserOrEnumRuleCall();
             	    			
 
@@ -8764,13 +8872,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    break;
 
             	default :
-            	    break loop52;
+            	    break loop53;
                 }
             } while (true);
 
-            otherlv_15=(Token)match(input,15,FOLLOW_2); 
+            otherlv_19=(Token)match(input,15,FOLLOW_2); 
 
-            			newLeafNode(otherlv_15, grammarAccess.getLatencyRequirementAccess().getRightCurlyBracketKeyword_5());
+            			newLeafNode(otherlv_19, grammarAccess.getLatencyRequirementAccess().getRightCurlyBracketKeyword_5());
             		
 
             }
@@ -8795,7 +8903,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleName"
-    // InternalRsamlText.g:3689:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
+    // InternalRsamlText.g:3734:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
     public final String entryRuleName() throws RecognitionException {
         String current = null;
 
@@ -8803,8 +8911,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3689:44: (iv_ruleName= ruleName EOF )
-            // InternalRsamlText.g:3690:2: iv_ruleName= ruleName EOF
+            // InternalRsamlText.g:3734:44: (iv_ruleName= ruleName EOF )
+            // InternalRsamlText.g:3735:2: iv_ruleName= ruleName EOF
             {
              newCompositeNode(grammarAccess.getNameRule()); 
             pushFollow(FOLLOW_1);
@@ -8831,7 +8939,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleName"
-    // InternalRsamlText.g:3696:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
+    // InternalRsamlText.g:3741:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
     public final AntlrDatatypeRuleToken ruleName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -8844,20 +8952,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3702:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
-            // InternalRsamlText.g:3703:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3747:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
+            // InternalRsamlText.g:3748:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             {
-            // InternalRsamlText.g:3703:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
-            int alt53=3;
+            // InternalRsamlText.g:3748:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            int alt54=3;
             switch ( input.LA(1) ) {
             case RULE_ID:
                 {
-                alt53=1;
+                alt54=1;
                 }
                 break;
             case RULE_STRING:
                 {
-                alt53=2;
+                alt54=2;
                 }
                 break;
             case 11:
@@ -8920,7 +9028,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 72:
             case 73:
             case 74:
-            case 76:
+            case 75:
             case 77:
             case 78:
             case 79:
@@ -8952,20 +9060,21 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 105:
             case 106:
             case 107:
+            case 108:
                 {
-                alt53=3;
+                alt54=3;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 53, 0, input);
+                    new NoViableAltException("", 54, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt53) {
+            switch (alt54) {
                 case 1 :
-                    // InternalRsamlText.g:3704:3: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3749:3: this_ID_0= RULE_ID
                     {
                     this_ID_0=(Token)match(input,RULE_ID,FOLLOW_2); 
 
@@ -8978,7 +9087,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3712:3: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3757:3: this_STRING_1= RULE_STRING
                     {
                     this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_2); 
 
@@ -8991,7 +9100,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3720:3: this_Keyword_2= ruleKeyword
+                    // InternalRsamlText.g:3765:3: this_Keyword_2= ruleKeyword
                     {
 
                     			newCompositeNode(grammarAccess.getNameAccess().getKeywordParserRuleCall_2());
@@ -9033,7 +9142,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleQualifiedName"
-    // InternalRsamlText.g:3734:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
+    // InternalRsamlText.g:3779:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
     public final String entryRuleQualifiedName() throws RecognitionException {
         String current = null;
 
@@ -9041,8 +9150,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3734:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
-            // InternalRsamlText.g:3735:2: iv_ruleQualifiedName= ruleQualifiedName EOF
+            // InternalRsamlText.g:3779:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
+            // InternalRsamlText.g:3780:2: iv_ruleQualifiedName= ruleQualifiedName EOF
             {
              newCompositeNode(grammarAccess.getQualifiedNameRule()); 
             pushFollow(FOLLOW_1);
@@ -9069,7 +9178,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleQualifiedName"
-    // InternalRsamlText.g:3741:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
+    // InternalRsamlText.g:3786:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
     public final AntlrDatatypeRuleToken ruleQualifiedName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9083,33 +9192,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3747:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
-            // InternalRsamlText.g:3748:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3792:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
+            // InternalRsamlText.g:3793:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
             {
-            // InternalRsamlText.g:3748:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
-            // InternalRsamlText.g:3749:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3793:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3794:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
             {
-            // InternalRsamlText.g:3749:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
-            int alt54=2;
-            int LA54_0 = input.LA(1);
+            // InternalRsamlText.g:3794:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
+            int alt55=2;
+            int LA55_0 = input.LA(1);
 
-            if ( (LA54_0==RULE_ID) ) {
-                alt54=1;
+            if ( (LA55_0==RULE_ID) ) {
+                alt55=1;
             }
-            else if ( (LA54_0==RULE_STRING) ) {
-                alt54=2;
+            else if ( (LA55_0==RULE_STRING) ) {
+                alt55=2;
             }
             else {
                 NoViableAltException nvae =
-                    new NoViableAltException("", 54, 0, input);
+                    new NoViableAltException("", 55, 0, input);
 
                 throw nvae;
             }
-            switch (alt54) {
+            switch (alt55) {
                 case 1 :
-                    // InternalRsamlText.g:3750:4: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3795:4: this_ID_0= RULE_ID
                     {
-                    this_ID_0=(Token)match(input,RULE_ID,FOLLOW_44); 
+                    this_ID_0=(Token)match(input,RULE_ID,FOLLOW_45); 
 
                     				current.merge(this_ID_0);
                     			
@@ -9120,9 +9229,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3758:4: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3803:4: this_STRING_1= RULE_STRING
                     {
-                    this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_44); 
+                    this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_45); 
 
                     				current.merge(this_STRING_1);
                     			
@@ -9135,22 +9244,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            // InternalRsamlText.g:3766:3: (kw= '.' this_Name_3= ruleName )*
-            loop55:
+            // InternalRsamlText.g:3811:3: (kw= '.' this_Name_3= ruleName )*
+            loop56:
             do {
-                int alt55=2;
-                int LA55_0 = input.LA(1);
+                int alt56=2;
+                int LA56_0 = input.LA(1);
 
-                if ( (LA55_0==75) ) {
-                    alt55=1;
+                if ( (LA56_0==76) ) {
+                    alt56=1;
                 }
 
 
-                switch (alt55) {
+                switch (alt56) {
             	case 1 :
-            	    // InternalRsamlText.g:3767:4: kw= '.' this_Name_3= ruleName
+            	    // InternalRsamlText.g:3812:4: kw= '.' this_Name_3= ruleName
             	    {
-            	    kw=(Token)match(input,75,FOLLOW_45); 
+            	    kw=(Token)match(input,76,FOLLOW_46); 
 
             	    				current.merge(kw);
             	    				newLeafNode(kw, grammarAccess.getQualifiedNameAccess().getFullStopKeyword_1_0());
@@ -9158,7 +9267,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    				newCompositeNode(grammarAccess.getQualifiedNameAccess().getNameParserRuleCall_1_1());
             	    			
-            	    pushFollow(FOLLOW_44);
+            	    pushFollow(FOLLOW_45);
             	    this_Name_3=ruleName();
 
             	    state._fsp--;
@@ -9174,7 +9283,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    break;
 
             	default :
-            	    break loop55;
+            	    break loop56;
                 }
             } while (true);
 
@@ -9201,7 +9310,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleKeyword"
-    // InternalRsamlText.g:3787:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
+    // InternalRsamlText.g:3832:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
     public final String entryRuleKeyword() throws RecognitionException {
         String current = null;
 
@@ -9209,8 +9318,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3787:47: (iv_ruleKeyword= ruleKeyword EOF )
-            // InternalRsamlText.g:3788:2: iv_ruleKeyword= ruleKeyword EOF
+            // InternalRsamlText.g:3832:47: (iv_ruleKeyword= ruleKeyword EOF )
+            // InternalRsamlText.g:3833:2: iv_ruleKeyword= ruleKeyword EOF
             {
              newCompositeNode(grammarAccess.getKeywordRule()); 
             pushFollow(FOLLOW_1);
@@ -9237,7 +9346,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleKeyword"
-    // InternalRsamlText.g:3794:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
+    // InternalRsamlText.g:3839:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
     public final AntlrDatatypeRuleToken ruleKeyword() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9247,482 +9356,487 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3800:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
-            // InternalRsamlText.g:3801:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            // InternalRsamlText.g:3845:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
+            // InternalRsamlText.g:3846:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
             {
-            // InternalRsamlText.g:3801:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
-            int alt56=92;
+            // InternalRsamlText.g:3846:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            int alt57=93;
             switch ( input.LA(1) ) {
             case 11:
                 {
-                alt56=1;
+                alt57=1;
                 }
                 break;
             case 23:
                 {
-                alt56=2;
+                alt57=2;
                 }
                 break;
             case 26:
                 {
-                alt56=3;
+                alt57=3;
                 }
                 break;
             case 30:
                 {
-                alt56=4;
+                alt57=4;
                 }
                 break;
             case 34:
                 {
-                alt56=5;
+                alt57=5;
                 }
                 break;
             case 35:
                 {
-                alt56=6;
+                alt57=6;
                 }
                 break;
             case 37:
                 {
-                alt56=7;
+                alt57=7;
                 }
                 break;
             case 38:
                 {
-                alt56=8;
+                alt57=8;
                 }
                 break;
             case 41:
                 {
-                alt56=9;
+                alt57=9;
                 }
                 break;
             case 43:
                 {
-                alt56=10;
+                alt57=10;
                 }
                 break;
             case 47:
                 {
-                alt56=11;
+                alt57=11;
                 }
                 break;
             case 48:
                 {
-                alt56=12;
+                alt57=12;
                 }
                 break;
             case 50:
                 {
-                alt56=13;
+                alt57=13;
                 }
                 break;
             case 51:
                 {
-                alt56=14;
+                alt57=14;
                 }
                 break;
             case 52:
                 {
-                alt56=15;
+                alt57=15;
                 }
                 break;
             case 54:
                 {
-                alt56=16;
+                alt57=16;
                 }
                 break;
             case 56:
                 {
-                alt56=17;
+                alt57=17;
                 }
                 break;
             case 58:
                 {
-                alt56=18;
+                alt57=18;
                 }
                 break;
             case 61:
                 {
-                alt56=19;
+                alt57=19;
                 }
                 break;
             case 65:
                 {
-                alt56=20;
+                alt57=20;
                 }
                 break;
             case 66:
                 {
-                alt56=21;
+                alt57=21;
                 }
                 break;
             case 68:
                 {
-                alt56=22;
+                alt57=22;
                 }
                 break;
             case 71:
                 {
-                alt56=23;
+                alt57=23;
                 }
                 break;
             case 16:
                 {
-                alt56=24;
+                alt57=24;
                 }
                 break;
             case 13:
                 {
-                alt56=25;
+                alt57=25;
                 }
                 break;
             case 14:
                 {
-                alt56=26;
+                alt57=26;
                 }
                 break;
             case 17:
                 {
-                alt56=27;
+                alt57=27;
                 }
                 break;
             case 18:
                 {
-                alt56=28;
+                alt57=28;
                 }
                 break;
             case 19:
                 {
-                alt56=29;
+                alt57=29;
                 }
                 break;
             case 20:
                 {
-                alt56=30;
+                alt57=30;
                 }
                 break;
             case 21:
                 {
-                alt56=31;
+                alt57=31;
                 }
                 break;
             case 22:
                 {
-                alt56=32;
+                alt57=32;
                 }
                 break;
             case 24:
                 {
-                alt56=33;
+                alt57=33;
                 }
                 break;
             case 25:
                 {
-                alt56=34;
+                alt57=34;
                 }
                 break;
             case 27:
                 {
-                alt56=35;
+                alt57=35;
                 }
                 break;
             case 29:
                 {
-                alt56=36;
+                alt57=36;
                 }
                 break;
             case 31:
                 {
-                alt56=37;
+                alt57=37;
                 }
                 break;
             case 32:
                 {
-                alt56=38;
+                alt57=38;
                 }
                 break;
             case 33:
                 {
-                alt56=39;
+                alt57=39;
                 }
                 break;
             case 36:
                 {
-                alt56=40;
+                alt57=40;
                 }
                 break;
             case 39:
                 {
-                alt56=41;
+                alt57=41;
                 }
                 break;
             case 40:
                 {
-                alt56=42;
+                alt57=42;
                 }
                 break;
             case 44:
                 {
-                alt56=43;
+                alt57=43;
                 }
                 break;
             case 45:
                 {
-                alt56=44;
+                alt57=44;
                 }
                 break;
             case 46:
                 {
-                alt56=45;
+                alt57=45;
                 }
                 break;
             case 49:
                 {
-                alt56=46;
+                alt57=46;
                 }
                 break;
             case 53:
                 {
-                alt56=47;
+                alt57=47;
                 }
                 break;
             case 55:
                 {
-                alt56=48;
+                alt57=48;
                 }
                 break;
             case 57:
                 {
-                alt56=49;
+                alt57=49;
                 }
                 break;
             case 59:
                 {
-                alt56=50;
+                alt57=50;
                 }
                 break;
             case 60:
                 {
-                alt56=51;
+                alt57=51;
                 }
                 break;
             case 62:
                 {
-                alt56=52;
+                alt57=52;
                 }
                 break;
             case 63:
                 {
-                alt56=53;
+                alt57=53;
                 }
                 break;
             case 64:
                 {
-                alt56=54;
+                alt57=54;
                 }
                 break;
             case 67:
                 {
-                alt56=55;
+                alt57=55;
                 }
                 break;
             case 69:
                 {
-                alt56=56;
+                alt57=56;
                 }
                 break;
             case 70:
                 {
-                alt56=57;
+                alt57=57;
                 }
                 break;
             case 72:
                 {
-                alt56=58;
+                alt57=58;
                 }
                 break;
             case 73:
                 {
-                alt56=59;
+                alt57=59;
                 }
                 break;
             case 74:
                 {
-                alt56=60;
+                alt57=60;
                 }
                 break;
-            case 76:
+            case 75:
                 {
-                alt56=61;
+                alt57=61;
                 }
                 break;
             case 77:
                 {
-                alt56=62;
+                alt57=62;
                 }
                 break;
             case 78:
                 {
-                alt56=63;
+                alt57=63;
                 }
                 break;
             case 79:
                 {
-                alt56=64;
+                alt57=64;
                 }
                 break;
             case 80:
                 {
-                alt56=65;
+                alt57=65;
                 }
                 break;
             case 81:
                 {
-                alt56=66;
+                alt57=66;
                 }
                 break;
             case 82:
                 {
-                alt56=67;
+                alt57=67;
                 }
                 break;
             case 83:
                 {
-                alt56=68;
+                alt57=68;
                 }
                 break;
             case 84:
                 {
-                alt56=69;
+                alt57=69;
                 }
                 break;
             case 85:
                 {
-                alt56=70;
+                alt57=70;
                 }
                 break;
             case 86:
                 {
-                alt56=71;
+                alt57=71;
                 }
                 break;
             case 87:
                 {
-                alt56=72;
+                alt57=72;
                 }
                 break;
             case 88:
                 {
-                alt56=73;
+                alt57=73;
                 }
                 break;
             case 89:
                 {
-                alt56=74;
+                alt57=74;
                 }
                 break;
             case 90:
                 {
-                alt56=75;
+                alt57=75;
                 }
                 break;
             case 91:
                 {
-                alt56=76;
+                alt57=76;
                 }
                 break;
             case 92:
                 {
-                alt56=77;
+                alt57=77;
                 }
                 break;
             case 93:
                 {
-                alt56=78;
+                alt57=78;
                 }
                 break;
             case 94:
                 {
-                alt56=79;
+                alt57=79;
                 }
                 break;
             case 95:
                 {
-                alt56=80;
+                alt57=80;
                 }
                 break;
             case 96:
                 {
-                alt56=81;
+                alt57=81;
                 }
                 break;
             case 97:
                 {
-                alt56=82;
+                alt57=82;
                 }
                 break;
             case 98:
                 {
-                alt56=83;
+                alt57=83;
                 }
                 break;
             case 99:
                 {
-                alt56=84;
+                alt57=84;
                 }
                 break;
             case 100:
                 {
-                alt56=85;
+                alt57=85;
                 }
                 break;
             case 101:
                 {
-                alt56=86;
+                alt57=86;
                 }
                 break;
             case 102:
                 {
-                alt56=87;
+                alt57=87;
                 }
                 break;
             case 103:
                 {
-                alt56=88;
+                alt57=88;
                 }
                 break;
             case 104:
                 {
-                alt56=89;
+                alt57=89;
                 }
                 break;
             case 105:
                 {
-                alt56=90;
+                alt57=90;
                 }
                 break;
             case 106:
                 {
-                alt56=91;
+                alt57=91;
                 }
                 break;
             case 107:
                 {
-                alt56=92;
+                alt57=92;
+                }
+                break;
+            case 108:
+                {
+                alt57=93;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 56, 0, input);
+                    new NoViableAltException("", 57, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt56) {
+            switch (alt57) {
                 case 1 :
-                    // InternalRsamlText.g:3802:3: kw= 'architecture'
+                    // InternalRsamlText.g:3847:3: kw= 'architecture'
                     {
                     kw=(Token)match(input,11,FOLLOW_2); 
 
@@ -9733,7 +9847,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3808:3: kw= 'layer'
+                    // InternalRsamlText.g:3853:3: kw= 'layer'
                     {
                     kw=(Token)match(input,23,FOLLOW_2); 
 
@@ -9744,7 +9858,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3814:3: kw= 'module'
+                    // InternalRsamlText.g:3859:3: kw= 'module'
                     {
                     kw=(Token)match(input,26,FOLLOW_2); 
 
@@ -9755,7 +9869,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:3820:3: kw= 'function'
+                    // InternalRsamlText.g:3865:3: kw= 'function'
                     {
                     kw=(Token)match(input,30,FOLLOW_2); 
 
@@ -9766,7 +9880,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:3826:3: kw= 'action'
+                    // InternalRsamlText.g:3871:3: kw= 'action'
                     {
                     kw=(Token)match(input,34,FOLLOW_2); 
 
@@ -9777,7 +9891,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:3832:3: kw= 'rtAction'
+                    // InternalRsamlText.g:3877:3: kw= 'rtAction'
                     {
                     kw=(Token)match(input,35,FOLLOW_2); 
 
@@ -9788,7 +9902,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:3838:3: kw= 'input'
+                    // InternalRsamlText.g:3883:3: kw= 'input'
                     {
                     kw=(Token)match(input,37,FOLLOW_2); 
 
@@ -9799,7 +9913,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:3844:3: kw= 'output'
+                    // InternalRsamlText.g:3889:3: kw= 'output'
                     {
                     kw=(Token)match(input,38,FOLLOW_2); 
 
@@ -9810,7 +9924,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 9 :
-                    // InternalRsamlText.g:3850:3: kw= 'connect'
+                    // InternalRsamlText.g:3895:3: kw= 'connect'
                     {
                     kw=(Token)match(input,41,FOLLOW_2); 
 
@@ -9821,7 +9935,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 10 :
-                    // InternalRsamlText.g:3856:3: kw= 'inhibitor'
+                    // InternalRsamlText.g:3901:3: kw= 'inhibitor'
                     {
                     kw=(Token)match(input,43,FOLLOW_2); 
 
@@ -9832,7 +9946,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 11 :
-                    // InternalRsamlText.g:3862:3: kw= 'suppressor'
+                    // InternalRsamlText.g:3907:3: kw= 'suppressor'
                     {
                     kw=(Token)match(input,47,FOLLOW_2); 
 
@@ -9843,7 +9957,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 12 :
-                    // InternalRsamlText.g:3868:3: kw= 'sensor'
+                    // InternalRsamlText.g:3913:3: kw= 'sensor'
                     {
                     kw=(Token)match(input,48,FOLLOW_2); 
 
@@ -9854,7 +9968,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 13 :
-                    // InternalRsamlText.g:3874:3: kw= 'actuator'
+                    // InternalRsamlText.g:3919:3: kw= 'actuator'
                     {
                     kw=(Token)match(input,50,FOLLOW_2); 
 
@@ -9865,7 +9979,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 14 :
-                    // InternalRsamlText.g:3880:3: kw= 'mission'
+                    // InternalRsamlText.g:3925:3: kw= 'mission'
                     {
                     kw=(Token)match(input,51,FOLLOW_2); 
 
@@ -9876,7 +9990,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 15 :
-                    // InternalRsamlText.g:3886:3: kw= 'goal'
+                    // InternalRsamlText.g:3931:3: kw= 'goal'
                     {
                     kw=(Token)match(input,52,FOLLOW_2); 
 
@@ -9887,7 +10001,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 16 :
-                    // InternalRsamlText.g:3892:3: kw= 'plan'
+                    // InternalRsamlText.g:3937:3: kw= 'plan'
                     {
                     kw=(Token)match(input,54,FOLLOW_2); 
 
@@ -9898,7 +10012,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 17 :
-                    // InternalRsamlText.g:3898:3: kw= 'activity'
+                    // InternalRsamlText.g:3943:3: kw= 'activity'
                     {
                     kw=(Token)match(input,56,FOLLOW_2); 
 
@@ -9909,7 +10023,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 18 :
-                    // InternalRsamlText.g:3904:3: kw= 'supervisor'
+                    // InternalRsamlText.g:3949:3: kw= 'supervisor'
                     {
                     kw=(Token)match(input,58,FOLLOW_2); 
 
@@ -9920,7 +10034,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 19 :
-                    // InternalRsamlText.g:3910:3: kw= 'order'
+                    // InternalRsamlText.g:3955:3: kw= 'order'
                     {
                     kw=(Token)match(input,61,FOLLOW_2); 
 
@@ -9931,7 +10045,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 20 :
-                    // InternalRsamlText.g:3916:3: kw= 'database'
+                    // InternalRsamlText.g:3961:3: kw= 'database'
                     {
                     kw=(Token)match(input,65,FOLLOW_2); 
 
@@ -9942,7 +10056,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 21 :
-                    // InternalRsamlText.g:3922:3: kw= 'knowledge'
+                    // InternalRsamlText.g:3967:3: kw= 'knowledge'
                     {
                     kw=(Token)match(input,66,FOLLOW_2); 
 
@@ -9953,7 +10067,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 22 :
-                    // InternalRsamlText.g:3928:3: kw= 'processor'
+                    // InternalRsamlText.g:3973:3: kw= 'processor'
                     {
                     kw=(Token)match(input,68,FOLLOW_2); 
 
@@ -9964,7 +10078,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 23 :
-                    // InternalRsamlText.g:3934:3: kw= 'latency'
+                    // InternalRsamlText.g:3979:3: kw= 'latency'
                     {
                     kw=(Token)match(input,71,FOLLOW_2); 
 
@@ -9975,7 +10089,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 24 :
-                    // InternalRsamlText.g:3940:3: kw= 'description'
+                    // InternalRsamlText.g:3985:3: kw= 'description'
                     {
                     kw=(Token)match(input,16,FOLLOW_2); 
 
@@ -9986,7 +10100,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 25 :
-                    // InternalRsamlText.g:3946:3: kw= 'category'
+                    // InternalRsamlText.g:3991:3: kw= 'category'
                     {
                     kw=(Token)match(input,13,FOLLOW_2); 
 
@@ -9997,7 +10111,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 26 :
-                    // InternalRsamlText.g:3952:3: kw= 'declaredLayers'
+                    // InternalRsamlText.g:3997:3: kw= 'declaredLayers'
                     {
                     kw=(Token)match(input,14,FOLLOW_2); 
 
@@ -10008,7 +10122,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 27 :
-                    // InternalRsamlText.g:3958:3: kw= 'unit'
+                    // InternalRsamlText.g:4003:3: kw= 'unit'
                     {
                     kw=(Token)match(input,17,FOLLOW_2); 
 
@@ -10019,7 +10133,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 28 :
-                    // InternalRsamlText.g:3964:3: kw= 'type'
+                    // InternalRsamlText.g:4009:3: kw= 'type'
                     {
                     kw=(Token)match(input,18,FOLLOW_2); 
 
@@ -10030,7 +10144,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 29 :
-                    // InternalRsamlText.g:3970:3: kw= 'execType'
+                    // InternalRsamlText.g:4015:3: kw= 'execType'
                     {
                     kw=(Token)match(input,19,FOLLOW_2); 
 
@@ -10041,7 +10155,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 30 :
-                    // InternalRsamlText.g:3976:3: kw= 'period'
+                    // InternalRsamlText.g:4021:3: kw= 'period'
                     {
                     kw=(Token)match(input,20,FOLLOW_2); 
 
@@ -10052,7 +10166,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 31 :
-                    // InternalRsamlText.g:3982:3: kw= 'deadline'
+                    // InternalRsamlText.g:4027:3: kw= 'deadline'
                     {
                     kw=(Token)match(input,21,FOLLOW_2); 
 
@@ -10063,7 +10177,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 32 :
-                    // InternalRsamlText.g:3988:3: kw= 'wcet'
+                    // InternalRsamlText.g:4033:3: kw= 'wcet'
                     {
                     kw=(Token)match(input,22,FOLLOW_2); 
 
@@ -10074,7 +10188,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 33 :
-                    // InternalRsamlText.g:3994:3: kw= 'level'
+                    // InternalRsamlText.g:4039:3: kw= 'level'
                     {
                     kw=(Token)match(input,24,FOLLOW_2); 
 
@@ -10085,7 +10199,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 34 :
-                    // InternalRsamlText.g:4000:3: kw= 'maxExecTime'
+                    // InternalRsamlText.g:4045:3: kw= 'maxExecTime'
                     {
                     kw=(Token)match(input,25,FOLLOW_2); 
 
@@ -10096,7 +10210,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 35 :
-                    // InternalRsamlText.g:4006:3: kw= 'sensors'
+                    // InternalRsamlText.g:4051:3: kw= 'sensors'
                     {
                     kw=(Token)match(input,27,FOLLOW_2); 
 
@@ -10107,7 +10221,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 36 :
-                    // InternalRsamlText.g:4012:3: kw= 'actuators'
+                    // InternalRsamlText.g:4057:3: kw= 'actuators'
                     {
                     kw=(Token)match(input,29,FOLLOW_2); 
 
@@ -10118,7 +10232,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 37 :
-                    // InternalRsamlText.g:4018:3: kw= 'synchroType'
+                    // InternalRsamlText.g:4063:3: kw= 'synchroType'
                     {
                     kw=(Token)match(input,31,FOLLOW_2); 
 
@@ -10129,7 +10243,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 38 :
-                    // InternalRsamlText.g:4024:3: kw= 'schedPolicy'
+                    // InternalRsamlText.g:4069:3: kw= 'schedPolicy'
                     {
                     kw=(Token)match(input,32,FOLLOW_2); 
 
@@ -10140,7 +10254,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 39 :
-                    // InternalRsamlText.g:4030:3: kw= 'otherPolicy'
+                    // InternalRsamlText.g:4075:3: kw= 'otherPolicy'
                     {
                     kw=(Token)match(input,33,FOLLOW_2); 
 
@@ -10151,7 +10265,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 40 :
-                    // InternalRsamlText.g:4036:3: kw= 'start'
+                    // InternalRsamlText.g:4081:3: kw= 'start'
                     {
                     kw=(Token)match(input,36,FOLLOW_2); 
 
@@ -10162,7 +10276,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 41 :
-                    // InternalRsamlText.g:4042:3: kw= 'dataType'
+                    // InternalRsamlText.g:4087:3: kw= 'dataType'
                     {
                     kw=(Token)match(input,39,FOLLOW_2); 
 
@@ -10173,7 +10287,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 42 :
-                    // InternalRsamlText.g:4048:3: kw= 'messageType'
+                    // InternalRsamlText.g:4093:3: kw= 'messageType'
                     {
                     kw=(Token)match(input,40,FOLLOW_2); 
 
@@ -10184,7 +10298,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 43 :
-                    // InternalRsamlText.g:4054:3: kw= 'trigger'
+                    // InternalRsamlText.g:4099:3: kw= 'trigger'
                     {
                     kw=(Token)match(input,44,FOLLOW_2); 
 
@@ -10195,7 +10309,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 44 :
-                    // InternalRsamlText.g:4060:3: kw= 'target'
+                    // InternalRsamlText.g:4105:3: kw= 'target'
                     {
                     kw=(Token)match(input,45,FOLLOW_2); 
 
@@ -10206,7 +10320,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 45 :
-                    // InternalRsamlText.g:4066:3: kw= 'duration'
+                    // InternalRsamlText.g:4111:3: kw= 'duration'
                     {
                     kw=(Token)match(input,46,FOLLOW_2); 
 
@@ -10217,7 +10331,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 46 :
-                    // InternalRsamlText.g:4072:3: kw= 'kind'
+                    // InternalRsamlText.g:4117:3: kw= 'kind'
                     {
                     kw=(Token)match(input,49,FOLLOW_2); 
 
@@ -10228,7 +10342,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 47 :
-                    // InternalRsamlText.g:4078:3: kw= 'priority'
+                    // InternalRsamlText.g:4123:3: kw= 'priority'
                     {
                     kw=(Token)match(input,53,FOLLOW_2); 
 
@@ -10239,7 +10353,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 48 :
-                    // InternalRsamlText.g:4084:3: kw= 'achieves'
+                    // InternalRsamlText.g:4129:3: kw= 'achieves'
                     {
                     kw=(Token)match(input,55,FOLLOW_2); 
 
@@ -10250,7 +10364,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 49 :
-                    // InternalRsamlText.g:4090:3: kw= 'actions'
+                    // InternalRsamlText.g:4135:3: kw= 'actions'
                     {
                     kw=(Token)match(input,57,FOLLOW_2); 
 
@@ -10261,7 +10375,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 50 :
-                    // InternalRsamlText.g:4096:3: kw= 'plans'
+                    // InternalRsamlText.g:4141:3: kw= 'plans'
                     {
                     kw=(Token)match(input,59,FOLLOW_2); 
 
@@ -10272,7 +10386,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 51 :
-                    // InternalRsamlText.g:4102:3: kw= 'realisedBy'
+                    // InternalRsamlText.g:4147:3: kw= 'realisedBy'
                     {
                     kw=(Token)match(input,60,FOLLOW_2); 
 
@@ -10283,7 +10397,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 52 :
-                    // InternalRsamlText.g:4108:3: kw= 'issuer'
+                    // InternalRsamlText.g:4153:3: kw= 'issuer'
                     {
                     kw=(Token)match(input,62,FOLLOW_2); 
 
@@ -10294,7 +10408,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 53 :
-                    // InternalRsamlText.g:4114:3: kw= 'receiver'
+                    // InternalRsamlText.g:4159:3: kw= 'receiver'
                     {
                     kw=(Token)match(input,63,FOLLOW_2); 
 
@@ -10305,7 +10419,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 54 :
-                    // InternalRsamlText.g:4120:3: kw= 'requests'
+                    // InternalRsamlText.g:4165:3: kw= 'requests'
                     {
                     kw=(Token)match(input,64,FOLLOW_2); 
 
@@ -10316,7 +10430,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 55 :
-                    // InternalRsamlText.g:4126:3: kw= 'usedBy'
+                    // InternalRsamlText.g:4171:3: kw= 'usedBy'
                     {
                     kw=(Token)match(input,67,FOLLOW_2); 
 
@@ -10327,7 +10441,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 56 :
-                    // InternalRsamlText.g:4132:3: kw= 'core'
+                    // InternalRsamlText.g:4177:3: kw= 'core'
                     {
                     kw=(Token)match(input,69,FOLLOW_2); 
 
@@ -10338,7 +10452,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 57 :
-                    // InternalRsamlText.g:4138:3: kw= 'modules'
+                    // InternalRsamlText.g:4183:3: kw= 'modules'
                     {
                     kw=(Token)match(input,70,FOLLOW_2); 
 
@@ -10349,7 +10463,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 58 :
-                    // InternalRsamlText.g:4144:3: kw= 'from'
+                    // InternalRsamlText.g:4189:3: kw= 'from'
                     {
                     kw=(Token)match(input,72,FOLLOW_2); 
 
@@ -10360,7 +10474,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 59 :
-                    // InternalRsamlText.g:4150:3: kw= 'to'
+                    // InternalRsamlText.g:4195:3: kw= 'to'
                     {
                     kw=(Token)match(input,73,FOLLOW_2); 
 
@@ -10371,364 +10485,375 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 60 :
-                    // InternalRsamlText.g:4156:3: kw= 'maxLatency'
+                    // InternalRsamlText.g:4201:3: kw= 'via'
                     {
                     kw=(Token)match(input,74,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_59());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_59());
                     		
 
                     }
                     break;
                 case 61 :
-                    // InternalRsamlText.g:4162:3: kw= 'centralized'
+                    // InternalRsamlText.g:4207:3: kw= 'maxLatency'
                     {
-                    kw=(Token)match(input,76,FOLLOW_2); 
+                    kw=(Token)match(input,75,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_60());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60());
                     		
 
                     }
                     break;
                 case 62 :
-                    // InternalRsamlText.g:4168:3: kw= 'hierarchical'
+                    // InternalRsamlText.g:4213:3: kw= 'centralized'
                     {
                     kw=(Token)match(input,77,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_61());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_61());
                     		
 
                     }
                     break;
                 case 63 :
-                    // InternalRsamlText.g:4174:3: kw= 'behavioral'
+                    // InternalRsamlText.g:4219:3: kw= 'hierarchical'
                     {
                     kw=(Token)match(input,78,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_62());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_62());
                     		
 
                     }
                     break;
                 case 64 :
-                    // InternalRsamlText.g:4180:3: kw= 'hybrid'
+                    // InternalRsamlText.g:4225:3: kw= 'behavioral'
                     {
                     kw=(Token)match(input,79,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_63());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_63());
                     		
 
                     }
                     break;
                 case 65 :
-                    // InternalRsamlText.g:4186:3: kw= 'other'
+                    // InternalRsamlText.g:4231:3: kw= 'hybrid'
                     {
                     kw=(Token)match(input,80,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_64());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_64());
                     		
 
                     }
                     break;
                 case 66 :
-                    // InternalRsamlText.g:4192:3: kw= 'simple'
+                    // InternalRsamlText.g:4237:3: kw= 'other'
                     {
                     kw=(Token)match(input,81,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_65());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_65());
                     		
 
                     }
                     break;
                 case 67 :
-                    // InternalRsamlText.g:4198:3: kw= 'realTime'
+                    // InternalRsamlText.g:4243:3: kw= 'simple'
                     {
                     kw=(Token)match(input,82,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_66());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_66());
                     		
 
                     }
                     break;
                 case 68 :
-                    // InternalRsamlText.g:4204:3: kw= 'periodic'
+                    // InternalRsamlText.g:4249:3: kw= 'realTime'
                     {
                     kw=(Token)match(input,83,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_67());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_67());
                     		
 
                     }
                     break;
                 case 69 :
-                    // InternalRsamlText.g:4210:3: kw= 'sporadic'
+                    // InternalRsamlText.g:4255:3: kw= 'periodic'
                     {
                     kw=(Token)match(input,84,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_68());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_68());
                     		
 
                     }
                     break;
                 case 70 :
-                    // InternalRsamlText.g:4216:3: kw= 'aperiodic'
+                    // InternalRsamlText.g:4261:3: kw= 'sporadic'
                     {
                     kw=(Token)match(input,85,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_69());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_69());
                     		
 
                     }
                     break;
                 case 71 :
-                    // InternalRsamlText.g:4222:3: kw= 'ns'
+                    // InternalRsamlText.g:4267:3: kw= 'aperiodic'
                     {
                     kw=(Token)match(input,86,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_70());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_70());
                     		
 
                     }
                     break;
                 case 72 :
-                    // InternalRsamlText.g:4228:3: kw= 'us'
+                    // InternalRsamlText.g:4273:3: kw= 'ns'
                     {
                     kw=(Token)match(input,87,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_71());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_71());
                     		
 
                     }
                     break;
                 case 73 :
-                    // InternalRsamlText.g:4234:3: kw= 'ms'
+                    // InternalRsamlText.g:4279:3: kw= 'us'
                     {
                     kw=(Token)match(input,88,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_72());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_72());
                     		
 
                     }
                     break;
                 case 74 :
-                    // InternalRsamlText.g:4240:3: kw= 's'
+                    // InternalRsamlText.g:4285:3: kw= 'ms'
                     {
                     kw=(Token)match(input,89,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_73());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_73());
                     		
 
                     }
                     break;
                 case 75 :
-                    // InternalRsamlText.g:4246:3: kw= 'synchronous'
+                    // InternalRsamlText.g:4291:3: kw= 's'
                     {
                     kw=(Token)match(input,90,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_74());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_74());
                     		
 
                     }
                     break;
                 case 76 :
-                    // InternalRsamlText.g:4252:3: kw= 'asynchronous'
+                    // InternalRsamlText.g:4297:3: kw= 'synchronous'
                     {
                     kw=(Token)match(input,91,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_75());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_75());
                     		
 
                     }
                     break;
                 case 77 :
-                    // InternalRsamlText.g:4258:3: kw= 'FIFO'
+                    // InternalRsamlText.g:4303:3: kw= 'asynchronous'
                     {
                     kw=(Token)match(input,92,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_76());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_76());
                     		
 
                     }
                     break;
                 case 78 :
-                    // InternalRsamlText.g:4264:3: kw= 'SJF'
+                    // InternalRsamlText.g:4309:3: kw= 'FIFO'
                     {
                     kw=(Token)match(input,93,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_77());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_77());
                     		
 
                     }
                     break;
                 case 79 :
-                    // InternalRsamlText.g:4270:3: kw= 'RR'
+                    // InternalRsamlText.g:4315:3: kw= 'SJF'
                     {
                     kw=(Token)match(input,94,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_78());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_78());
                     		
 
                     }
                     break;
                 case 80 :
-                    // InternalRsamlText.g:4276:3: kw= 'RM'
+                    // InternalRsamlText.g:4321:3: kw= 'RR'
                     {
                     kw=(Token)match(input,95,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_79());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_79());
                     		
 
                     }
                     break;
                 case 81 :
-                    // InternalRsamlText.g:4282:3: kw= 'DM'
+                    // InternalRsamlText.g:4327:3: kw= 'RM'
                     {
                     kw=(Token)match(input,96,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_80());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_80());
                     		
 
                     }
                     break;
                 case 82 :
-                    // InternalRsamlText.g:4288:3: kw= 'EDF'
+                    // InternalRsamlText.g:4333:3: kw= 'DM'
                     {
                     kw=(Token)match(input,97,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_81());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_81());
                     		
 
                     }
                     break;
                 case 83 :
-                    // InternalRsamlText.g:4294:3: kw= 'LLF'
+                    // InternalRsamlText.g:4339:3: kw= 'EDF'
                     {
                     kw=(Token)match(input,98,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_82());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_82());
                     		
 
                     }
                     break;
                 case 84 :
-                    // InternalRsamlText.g:4300:3: kw= 'OTHER'
+                    // InternalRsamlText.g:4345:3: kw= 'LLF'
                     {
                     kw=(Token)match(input,99,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_83());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_83());
                     		
 
                     }
                     break;
                 case 85 :
-                    // InternalRsamlText.g:4306:3: kw= 'numeric'
+                    // InternalRsamlText.g:4351:3: kw= 'OTHER'
                     {
                     kw=(Token)match(input,100,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_84());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_84());
                     		
 
                     }
                     break;
                 case 86 :
-                    // InternalRsamlText.g:4312:3: kw= 'alphanumeric'
+                    // InternalRsamlText.g:4357:3: kw= 'numeric'
                     {
                     kw=(Token)match(input,101,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_85());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_85());
                     		
 
                     }
                     break;
                 case 87 :
-                    // InternalRsamlText.g:4318:3: kw= 'boolean'
+                    // InternalRsamlText.g:4363:3: kw= 'alphanumeric'
                     {
                     kw=(Token)match(input,102,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_86());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_86());
                     		
 
                     }
                     break;
                 case 88 :
-                    // InternalRsamlText.g:4324:3: kw= 'structured'
+                    // InternalRsamlText.g:4369:3: kw= 'boolean'
                     {
                     kw=(Token)match(input,103,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_87());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_87());
                     		
 
                     }
                     break;
                 case 89 :
-                    // InternalRsamlText.g:4330:3: kw= 'reactionTime'
+                    // InternalRsamlText.g:4375:3: kw= 'structured'
                     {
                     kw=(Token)match(input,104,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_88());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_88());
                     		
 
                     }
                     break;
                 case 90 :
-                    // InternalRsamlText.g:4336:3: kw= 'dataAge'
+                    // InternalRsamlText.g:4381:3: kw= 'reactionTime'
                     {
                     kw=(Token)match(input,105,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_89());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_89());
                     		
 
                     }
                     break;
                 case 91 :
-                    // InternalRsamlText.g:4342:3: kw= 'NaN'
+                    // InternalRsamlText.g:4387:3: kw= 'dataAge'
                     {
                     kw=(Token)match(input,106,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_90());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_90());
                     		
 
                     }
                     break;
                 case 92 :
-                    // InternalRsamlText.g:4348:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4393:3: kw= 'NaN'
                     {
                     kw=(Token)match(input,107,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_91());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_91());
+                    		
+
+                    }
+                    break;
+                case 93 :
+                    // InternalRsamlText.g:4399:3: kw= 'Infinity'
+                    {
+                    kw=(Token)match(input,108,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_92());
                     		
 
                     }
@@ -10756,7 +10881,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleReal"
-    // InternalRsamlText.g:4357:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
+    // InternalRsamlText.g:4408:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
     public final String entryRuleReal() throws RecognitionException {
         String current = null;
 
@@ -10764,8 +10889,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4357:44: (iv_ruleReal= ruleReal EOF )
-            // InternalRsamlText.g:4358:2: iv_ruleReal= ruleReal EOF
+            // InternalRsamlText.g:4408:44: (iv_ruleReal= ruleReal EOF )
+            // InternalRsamlText.g:4409:2: iv_ruleReal= ruleReal EOF
             {
              newCompositeNode(grammarAccess.getRealRule()); 
             pushFollow(FOLLOW_1);
@@ -10792,7 +10917,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleReal"
-    // InternalRsamlText.g:4364:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
+    // InternalRsamlText.g:4415:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
     public final AntlrDatatypeRuleToken ruleReal() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -10803,42 +10928,42 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4370:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
-            // InternalRsamlText.g:4371:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4421:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
+            // InternalRsamlText.g:4422:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             {
-            // InternalRsamlText.g:4371:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
-            int alt57=4;
+            // InternalRsamlText.g:4422:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            int alt58=4;
             switch ( input.LA(1) ) {
             case RULE_NUMBER:
                 {
-                alt57=1;
-                }
-                break;
-            case 106:
-                {
-                alt57=2;
+                alt58=1;
                 }
                 break;
             case 107:
                 {
-                alt57=3;
+                alt58=2;
                 }
                 break;
             case 108:
                 {
-                alt57=4;
+                alt58=3;
+                }
+                break;
+            case 109:
+                {
+                alt58=4;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 57, 0, input);
+                    new NoViableAltException("", 58, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt57) {
+            switch (alt58) {
                 case 1 :
-                    // InternalRsamlText.g:4372:3: this_NUMBER_0= RULE_NUMBER
+                    // InternalRsamlText.g:4423:3: this_NUMBER_0= RULE_NUMBER
                     {
                     this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -10851,9 +10976,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4380:3: kw= 'NaN'
+                    // InternalRsamlText.g:4431:3: kw= 'NaN'
                     {
-                    kw=(Token)match(input,106,FOLLOW_2); 
+                    kw=(Token)match(input,107,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getNaNKeyword_1());
@@ -10862,9 +10987,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4386:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4437:3: kw= 'Infinity'
                     {
-                    kw=(Token)match(input,107,FOLLOW_2); 
+                    kw=(Token)match(input,108,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_2());
@@ -10873,17 +10998,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4392:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4443:3: (kw= '-' kw= 'Infinity' )
                     {
-                    // InternalRsamlText.g:4392:3: (kw= '-' kw= 'Infinity' )
-                    // InternalRsamlText.g:4393:4: kw= '-' kw= 'Infinity'
+                    // InternalRsamlText.g:4443:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4444:4: kw= '-' kw= 'Infinity'
                     {
-                    kw=(Token)match(input,108,FOLLOW_46); 
+                    kw=(Token)match(input,109,FOLLOW_47); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getHyphenMinusKeyword_3_0());
                     			
-                    kw=(Token)match(input,107,FOLLOW_2); 
+                    kw=(Token)match(input,108,FOLLOW_2); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_3_1());
@@ -10917,7 +11042,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleInteger"
-    // InternalRsamlText.g:4408:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
+    // InternalRsamlText.g:4459:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
     public final String entryRuleInteger() throws RecognitionException {
         String current = null;
 
@@ -10925,8 +11050,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4408:47: (iv_ruleInteger= ruleInteger EOF )
-            // InternalRsamlText.g:4409:2: iv_ruleInteger= ruleInteger EOF
+            // InternalRsamlText.g:4459:47: (iv_ruleInteger= ruleInteger EOF )
+            // InternalRsamlText.g:4460:2: iv_ruleInteger= ruleInteger EOF
             {
              newCompositeNode(grammarAccess.getIntegerRule()); 
             pushFollow(FOLLOW_1);
@@ -10953,7 +11078,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleInteger"
-    // InternalRsamlText.g:4415:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
+    // InternalRsamlText.g:4466:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
     public final AntlrDatatypeRuleToken ruleInteger() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -10963,8 +11088,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4421:2: (this_NUMBER_0= RULE_NUMBER )
-            // InternalRsamlText.g:4422:2: this_NUMBER_0= RULE_NUMBER
+            // InternalRsamlText.g:4472:2: (this_NUMBER_0= RULE_NUMBER )
+            // InternalRsamlText.g:4473:2: this_NUMBER_0= RULE_NUMBER
             {
             this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -10993,7 +11118,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleArchitectureCategory"
-    // InternalRsamlText.g:4432:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
+    // InternalRsamlText.g:4483:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
     public final Enumerator ruleArchitectureCategory() throws RecognitionException {
         Enumerator current = null;
 
@@ -11007,52 +11132,52 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4438:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
-            // InternalRsamlText.g:4439:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4489:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
+            // InternalRsamlText.g:4490:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             {
-            // InternalRsamlText.g:4439:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
-            int alt58=5;
+            // InternalRsamlText.g:4490:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            int alt59=5;
             switch ( input.LA(1) ) {
-            case 76:
-                {
-                alt58=1;
-                }
-                break;
             case 77:
                 {
-                alt58=2;
+                alt59=1;
                 }
                 break;
             case 78:
                 {
-                alt58=3;
+                alt59=2;
                 }
                 break;
             case 79:
                 {
-                alt58=4;
+                alt59=3;
                 }
                 break;
             case 80:
                 {
-                alt58=5;
+                alt59=4;
+                }
+                break;
+            case 81:
+                {
+                alt59=5;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 58, 0, input);
+                    new NoViableAltException("", 59, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt58) {
+            switch (alt59) {
                 case 1 :
-                    // InternalRsamlText.g:4440:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4491:3: (enumLiteral_0= 'centralized' )
                     {
-                    // InternalRsamlText.g:4440:3: (enumLiteral_0= 'centralized' )
-                    // InternalRsamlText.g:4441:4: enumLiteral_0= 'centralized'
+                    // InternalRsamlText.g:4491:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4492:4: enumLiteral_0= 'centralized'
                     {
-                    enumLiteral_0=(Token)match(input,76,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,77,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0());
@@ -11064,12 +11189,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4448:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4499:3: (enumLiteral_1= 'hierarchical' )
                     {
-                    // InternalRsamlText.g:4448:3: (enumLiteral_1= 'hierarchical' )
-                    // InternalRsamlText.g:4449:4: enumLiteral_1= 'hierarchical'
+                    // InternalRsamlText.g:4499:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4500:4: enumLiteral_1= 'hierarchical'
                     {
-                    enumLiteral_1=(Token)match(input,77,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,78,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1());
@@ -11081,12 +11206,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4456:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4507:3: (enumLiteral_2= 'behavioral' )
                     {
-                    // InternalRsamlText.g:4456:3: (enumLiteral_2= 'behavioral' )
-                    // InternalRsamlText.g:4457:4: enumLiteral_2= 'behavioral'
+                    // InternalRsamlText.g:4507:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4508:4: enumLiteral_2= 'behavioral'
                     {
-                    enumLiteral_2=(Token)match(input,78,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,79,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2());
@@ -11098,12 +11223,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4464:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4515:3: (enumLiteral_3= 'hybrid' )
                     {
-                    // InternalRsamlText.g:4464:3: (enumLiteral_3= 'hybrid' )
-                    // InternalRsamlText.g:4465:4: enumLiteral_3= 'hybrid'
+                    // InternalRsamlText.g:4515:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4516:4: enumLiteral_3= 'hybrid'
                     {
-                    enumLiteral_3=(Token)match(input,79,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,80,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3());
@@ -11115,12 +11240,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4472:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4523:3: (enumLiteral_4= 'other' )
                     {
-                    // InternalRsamlText.g:4472:3: (enumLiteral_4= 'other' )
-                    // InternalRsamlText.g:4473:4: enumLiteral_4= 'other'
+                    // InternalRsamlText.g:4523:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4524:4: enumLiteral_4= 'other'
                     {
-                    enumLiteral_4=(Token)match(input,80,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,81,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4());
@@ -11154,7 +11279,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleElementType"
-    // InternalRsamlText.g:4483:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
+    // InternalRsamlText.g:4534:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
     public final Enumerator ruleElementType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11165,33 +11290,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4489:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
-            // InternalRsamlText.g:4490:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4540:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
+            // InternalRsamlText.g:4541:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             {
-            // InternalRsamlText.g:4490:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
-            int alt59=2;
-            int LA59_0 = input.LA(1);
+            // InternalRsamlText.g:4541:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            int alt60=2;
+            int LA60_0 = input.LA(1);
 
-            if ( (LA59_0==81) ) {
-                alt59=1;
+            if ( (LA60_0==82) ) {
+                alt60=1;
             }
-            else if ( (LA59_0==82) ) {
-                alt59=2;
+            else if ( (LA60_0==83) ) {
+                alt60=2;
             }
             else {
                 NoViableAltException nvae =
-                    new NoViableAltException("", 59, 0, input);
+                    new NoViableAltException("", 60, 0, input);
 
                 throw nvae;
             }
-            switch (alt59) {
+            switch (alt60) {
                 case 1 :
-                    // InternalRsamlText.g:4491:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4542:3: (enumLiteral_0= 'simple' )
                     {
-                    // InternalRsamlText.g:4491:3: (enumLiteral_0= 'simple' )
-                    // InternalRsamlText.g:4492:4: enumLiteral_0= 'simple'
+                    // InternalRsamlText.g:4542:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4543:4: enumLiteral_0= 'simple'
                     {
-                    enumLiteral_0=(Token)match(input,81,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,82,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0());
@@ -11203,12 +11328,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4499:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4550:3: (enumLiteral_1= 'realTime' )
                     {
-                    // InternalRsamlText.g:4499:3: (enumLiteral_1= 'realTime' )
-                    // InternalRsamlText.g:4500:4: enumLiteral_1= 'realTime'
+                    // InternalRsamlText.g:4550:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4551:4: enumLiteral_1= 'realTime'
                     {
-                    enumLiteral_1=(Token)match(input,82,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,83,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1());
@@ -11242,7 +11367,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleExecutionType"
-    // InternalRsamlText.g:4510:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
+    // InternalRsamlText.g:4561:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
     public final Enumerator ruleExecutionType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11254,42 +11379,42 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4516:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
-            // InternalRsamlText.g:4517:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4567:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
+            // InternalRsamlText.g:4568:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             {
-            // InternalRsamlText.g:4517:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
-            int alt60=3;
+            // InternalRsamlText.g:4568:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            int alt61=3;
             switch ( input.LA(1) ) {
-            case 83:
-                {
-                alt60=1;
-                }
-                break;
             case 84:
                 {
-                alt60=2;
+                alt61=1;
                 }
                 break;
             case 85:
                 {
-                alt60=3;
+                alt61=2;
+                }
+                break;
+            case 86:
+                {
+                alt61=3;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 60, 0, input);
+                    new NoViableAltException("", 61, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt60) {
+            switch (alt61) {
                 case 1 :
-                    // InternalRsamlText.g:4518:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4569:3: (enumLiteral_0= 'periodic' )
                     {
-                    // InternalRsamlText.g:4518:3: (enumLiteral_0= 'periodic' )
-                    // InternalRsamlText.g:4519:4: enumLiteral_0= 'periodic'
+                    // InternalRsamlText.g:4569:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4570:4: enumLiteral_0= 'periodic'
                     {
-                    enumLiteral_0=(Token)match(input,83,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,84,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0());
@@ -11301,12 +11426,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4526:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4577:3: (enumLiteral_1= 'sporadic' )
                     {
-                    // InternalRsamlText.g:4526:3: (enumLiteral_1= 'sporadic' )
-                    // InternalRsamlText.g:4527:4: enumLiteral_1= 'sporadic'
+                    // InternalRsamlText.g:4577:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4578:4: enumLiteral_1= 'sporadic'
                     {
-                    enumLiteral_1=(Token)match(input,84,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,85,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1());
@@ -11318,12 +11443,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4534:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4585:3: (enumLiteral_2= 'aperiodic' )
                     {
-                    // InternalRsamlText.g:4534:3: (enumLiteral_2= 'aperiodic' )
-                    // InternalRsamlText.g:4535:4: enumLiteral_2= 'aperiodic'
+                    // InternalRsamlText.g:4585:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4586:4: enumLiteral_2= 'aperiodic'
                     {
-                    enumLiteral_2=(Token)match(input,85,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,86,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2());
@@ -11357,7 +11482,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleTimeUnit"
-    // InternalRsamlText.g:4545:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
+    // InternalRsamlText.g:4596:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
     public final Enumerator ruleTimeUnit() throws RecognitionException {
         Enumerator current = null;
 
@@ -11370,47 +11495,47 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4551:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
-            // InternalRsamlText.g:4552:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4602:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
+            // InternalRsamlText.g:4603:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             {
-            // InternalRsamlText.g:4552:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
-            int alt61=4;
+            // InternalRsamlText.g:4603:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            int alt62=4;
             switch ( input.LA(1) ) {
-            case 86:
-                {
-                alt61=1;
-                }
-                break;
             case 87:
                 {
-                alt61=2;
+                alt62=1;
                 }
                 break;
             case 88:
                 {
-                alt61=3;
+                alt62=2;
                 }
                 break;
             case 89:
                 {
-                alt61=4;
+                alt62=3;
+                }
+                break;
+            case 90:
+                {
+                alt62=4;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 61, 0, input);
+                    new NoViableAltException("", 62, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt61) {
+            switch (alt62) {
                 case 1 :
-                    // InternalRsamlText.g:4553:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4604:3: (enumLiteral_0= 'ns' )
                     {
-                    // InternalRsamlText.g:4553:3: (enumLiteral_0= 'ns' )
-                    // InternalRsamlText.g:4554:4: enumLiteral_0= 'ns'
+                    // InternalRsamlText.g:4604:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4605:4: enumLiteral_0= 'ns'
                     {
-                    enumLiteral_0=(Token)match(input,86,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,87,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0());
@@ -11422,12 +11547,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4561:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4612:3: (enumLiteral_1= 'us' )
                     {
-                    // InternalRsamlText.g:4561:3: (enumLiteral_1= 'us' )
-                    // InternalRsamlText.g:4562:4: enumLiteral_1= 'us'
+                    // InternalRsamlText.g:4612:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4613:4: enumLiteral_1= 'us'
                     {
-                    enumLiteral_1=(Token)match(input,87,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,88,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1());
@@ -11439,12 +11564,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4569:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4620:3: (enumLiteral_2= 'ms' )
                     {
-                    // InternalRsamlText.g:4569:3: (enumLiteral_2= 'ms' )
-                    // InternalRsamlText.g:4570:4: enumLiteral_2= 'ms'
+                    // InternalRsamlText.g:4620:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4621:4: enumLiteral_2= 'ms'
                     {
-                    enumLiteral_2=(Token)match(input,88,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,89,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2());
@@ -11456,12 +11581,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4577:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4628:3: (enumLiteral_3= 's' )
                     {
-                    // InternalRsamlText.g:4577:3: (enumLiteral_3= 's' )
-                    // InternalRsamlText.g:4578:4: enumLiteral_3= 's'
+                    // InternalRsamlText.g:4628:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4629:4: enumLiteral_3= 's'
                     {
-                    enumLiteral_3=(Token)match(input,89,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,90,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3());
@@ -11495,7 +11620,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSynchronisationType"
-    // InternalRsamlText.g:4588:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
+    // InternalRsamlText.g:4639:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
     public final Enumerator ruleSynchronisationType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11506,33 +11631,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4594:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
-            // InternalRsamlText.g:4595:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4645:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
+            // InternalRsamlText.g:4646:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             {
-            // InternalRsamlText.g:4595:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
-            int alt62=2;
-            int LA62_0 = input.LA(1);
+            // InternalRsamlText.g:4646:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            int alt63=2;
+            int LA63_0 = input.LA(1);
 
-            if ( (LA62_0==90) ) {
-                alt62=1;
+            if ( (LA63_0==91) ) {
+                alt63=1;
             }
-            else if ( (LA62_0==91) ) {
-                alt62=2;
+            else if ( (LA63_0==92) ) {
+                alt63=2;
             }
             else {
                 NoViableAltException nvae =
-                    new NoViableAltException("", 62, 0, input);
+                    new NoViableAltException("", 63, 0, input);
 
                 throw nvae;
             }
-            switch (alt62) {
+            switch (alt63) {
                 case 1 :
-                    // InternalRsamlText.g:4596:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4647:3: (enumLiteral_0= 'synchronous' )
                     {
-                    // InternalRsamlText.g:4596:3: (enumLiteral_0= 'synchronous' )
-                    // InternalRsamlText.g:4597:4: enumLiteral_0= 'synchronous'
+                    // InternalRsamlText.g:4647:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4648:4: enumLiteral_0= 'synchronous'
                     {
-                    enumLiteral_0=(Token)match(input,90,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,91,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0());
@@ -11544,12 +11669,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4604:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4655:3: (enumLiteral_1= 'asynchronous' )
                     {
-                    // InternalRsamlText.g:4604:3: (enumLiteral_1= 'asynchronous' )
-                    // InternalRsamlText.g:4605:4: enumLiteral_1= 'asynchronous'
+                    // InternalRsamlText.g:4655:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4656:4: enumLiteral_1= 'asynchronous'
                     {
-                    enumLiteral_1=(Token)match(input,91,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,92,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1());
@@ -11583,7 +11708,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSchedulingPolicy"
-    // InternalRsamlText.g:4615:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
+    // InternalRsamlText.g:4666:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
     public final Enumerator ruleSchedulingPolicy() throws RecognitionException {
         Enumerator current = null;
 
@@ -11600,67 +11725,67 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4621:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
-            // InternalRsamlText.g:4622:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4672:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
+            // InternalRsamlText.g:4673:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             {
-            // InternalRsamlText.g:4622:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
-            int alt63=8;
+            // InternalRsamlText.g:4673:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            int alt64=8;
             switch ( input.LA(1) ) {
-            case 92:
-                {
-                alt63=1;
-                }
-                break;
             case 93:
                 {
-                alt63=2;
+                alt64=1;
                 }
                 break;
             case 94:
                 {
-                alt63=3;
+                alt64=2;
                 }
                 break;
             case 95:
                 {
-                alt63=4;
+                alt64=3;
                 }
                 break;
             case 96:
                 {
-                alt63=5;
+                alt64=4;
                 }
                 break;
             case 97:
                 {
-                alt63=6;
+                alt64=5;
                 }
                 break;
             case 98:
                 {
-                alt63=7;
+                alt64=6;
                 }
                 break;
             case 99:
                 {
-                alt63=8;
+                alt64=7;
+                }
+                break;
+            case 100:
+                {
+                alt64=8;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 63, 0, input);
+                    new NoViableAltException("", 64, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt63) {
+            switch (alt64) {
                 case 1 :
-                    // InternalRsamlText.g:4623:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4674:3: (enumLiteral_0= 'FIFO' )
                     {
-                    // InternalRsamlText.g:4623:3: (enumLiteral_0= 'FIFO' )
-                    // InternalRsamlText.g:4624:4: enumLiteral_0= 'FIFO'
+                    // InternalRsamlText.g:4674:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4675:4: enumLiteral_0= 'FIFO'
                     {
-                    enumLiteral_0=(Token)match(input,92,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,93,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0());
@@ -11672,12 +11797,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4631:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4682:3: (enumLiteral_1= 'SJF' )
                     {
-                    // InternalRsamlText.g:4631:3: (enumLiteral_1= 'SJF' )
-                    // InternalRsamlText.g:4632:4: enumLiteral_1= 'SJF'
+                    // InternalRsamlText.g:4682:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4683:4: enumLiteral_1= 'SJF'
                     {
-                    enumLiteral_1=(Token)match(input,93,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,94,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1());
@@ -11689,12 +11814,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4639:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4690:3: (enumLiteral_2= 'RR' )
                     {
-                    // InternalRsamlText.g:4639:3: (enumLiteral_2= 'RR' )
-                    // InternalRsamlText.g:4640:4: enumLiteral_2= 'RR'
+                    // InternalRsamlText.g:4690:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4691:4: enumLiteral_2= 'RR'
                     {
-                    enumLiteral_2=(Token)match(input,94,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,95,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2());
@@ -11706,12 +11831,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4647:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4698:3: (enumLiteral_3= 'RM' )
                     {
-                    // InternalRsamlText.g:4647:3: (enumLiteral_3= 'RM' )
-                    // InternalRsamlText.g:4648:4: enumLiteral_3= 'RM'
+                    // InternalRsamlText.g:4698:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4699:4: enumLiteral_3= 'RM'
                     {
-                    enumLiteral_3=(Token)match(input,95,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,96,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3());
@@ -11723,12 +11848,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4655:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4706:3: (enumLiteral_4= 'DM' )
                     {
-                    // InternalRsamlText.g:4655:3: (enumLiteral_4= 'DM' )
-                    // InternalRsamlText.g:4656:4: enumLiteral_4= 'DM'
+                    // InternalRsamlText.g:4706:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4707:4: enumLiteral_4= 'DM'
                     {
-                    enumLiteral_4=(Token)match(input,96,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,97,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4());
@@ -11740,12 +11865,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:4663:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4714:3: (enumLiteral_5= 'EDF' )
                     {
-                    // InternalRsamlText.g:4663:3: (enumLiteral_5= 'EDF' )
-                    // InternalRsamlText.g:4664:4: enumLiteral_5= 'EDF'
+                    // InternalRsamlText.g:4714:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4715:4: enumLiteral_5= 'EDF'
                     {
-                    enumLiteral_5=(Token)match(input,97,FOLLOW_2); 
+                    enumLiteral_5=(Token)match(input,98,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_5, grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5());
@@ -11757,12 +11882,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:4671:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4722:3: (enumLiteral_6= 'LLF' )
                     {
-                    // InternalRsamlText.g:4671:3: (enumLiteral_6= 'LLF' )
-                    // InternalRsamlText.g:4672:4: enumLiteral_6= 'LLF'
+                    // InternalRsamlText.g:4722:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4723:4: enumLiteral_6= 'LLF'
                     {
-                    enumLiteral_6=(Token)match(input,98,FOLLOW_2); 
+                    enumLiteral_6=(Token)match(input,99,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_6, grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6());
@@ -11774,12 +11899,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:4679:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4730:3: (enumLiteral_7= 'OTHER' )
                     {
-                    // InternalRsamlText.g:4679:3: (enumLiteral_7= 'OTHER' )
-                    // InternalRsamlText.g:4680:4: enumLiteral_7= 'OTHER'
+                    // InternalRsamlText.g:4730:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4731:4: enumLiteral_7= 'OTHER'
                     {
-                    enumLiteral_7=(Token)match(input,99,FOLLOW_2); 
+                    enumLiteral_7=(Token)match(input,100,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_7, grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7());
@@ -11813,7 +11938,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDataType"
-    // InternalRsamlText.g:4690:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
+    // InternalRsamlText.g:4741:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
     public final Enumerator ruleDataType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11826,47 +11951,47 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4696:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
-            // InternalRsamlText.g:4697:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4747:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
+            // InternalRsamlText.g:4748:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             {
-            // InternalRsamlText.g:4697:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
-            int alt64=4;
+            // InternalRsamlText.g:4748:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            int alt65=4;
             switch ( input.LA(1) ) {
-            case 100:
-                {
-                alt64=1;
-                }
-                break;
             case 101:
                 {
-                alt64=2;
+                alt65=1;
                 }
                 break;
             case 102:
                 {
-                alt64=3;
+                alt65=2;
                 }
                 break;
             case 103:
                 {
-                alt64=4;
+                alt65=3;
+                }
+                break;
+            case 104:
+                {
+                alt65=4;
                 }
                 break;
             default:
                 NoViableAltException nvae =
-                    new NoViableAltException("", 64, 0, input);
+                    new NoViableAltException("", 65, 0, input);
 
                 throw nvae;
             }
 
-            switch (alt64) {
+            switch (alt65) {
                 case 1 :
-                    // InternalRsamlText.g:4698:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4749:3: (enumLiteral_0= 'numeric' )
                     {
-                    // InternalRsamlText.g:4698:3: (enumLiteral_0= 'numeric' )
-                    // InternalRsamlText.g:4699:4: enumLiteral_0= 'numeric'
+                    // InternalRsamlText.g:4749:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4750:4: enumLiteral_0= 'numeric'
                     {
-                    enumLiteral_0=(Token)match(input,100,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,101,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0());
@@ -11878,12 +12003,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4706:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4757:3: (enumLiteral_1= 'alphanumeric' )
                     {
-                    // InternalRsamlText.g:4706:3: (enumLiteral_1= 'alphanumeric' )
-                    // InternalRsamlText.g:4707:4: enumLiteral_1= 'alphanumeric'
+                    // InternalRsamlText.g:4757:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4758:4: enumLiteral_1= 'alphanumeric'
                     {
-                    enumLiteral_1=(Token)match(input,101,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,102,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1());
@@ -11895,12 +12020,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4714:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4765:3: (enumLiteral_2= 'boolean' )
                     {
-                    // InternalRsamlText.g:4714:3: (enumLiteral_2= 'boolean' )
-                    // InternalRsamlText.g:4715:4: enumLiteral_2= 'boolean'
+                    // InternalRsamlText.g:4765:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4766:4: enumLiteral_2= 'boolean'
                     {
-                    enumLiteral_2=(Token)match(input,102,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,103,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2());
@@ -11912,12 +12037,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4722:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4773:3: (enumLiteral_3= 'structured' )
                     {
-                    // InternalRsamlText.g:4722:3: (enumLiteral_3= 'structured' )
-                    // InternalRsamlText.g:4723:4: enumLiteral_3= 'structured'
+                    // InternalRsamlText.g:4773:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4774:4: enumLiteral_3= 'structured'
                     {
-                    enumLiteral_3=(Token)match(input,103,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,104,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3());
@@ -11951,7 +12076,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyKind"
-    // InternalRsamlText.g:4733:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
+    // InternalRsamlText.g:4784:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
     public final Enumerator ruleLatencyKind() throws RecognitionException {
         Enumerator current = null;
 
@@ -11962,33 +12087,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4739:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
-            // InternalRsamlText.g:4740:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4790:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
+            // InternalRsamlText.g:4791:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
             {
-            // InternalRsamlText.g:4740:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
-            int alt65=2;
-            int LA65_0 = input.LA(1);
+            // InternalRsamlText.g:4791:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            int alt66=2;
+            int LA66_0 = input.LA(1);
 
-            if ( (LA65_0==104) ) {
-                alt65=1;
+            if ( (LA66_0==105) ) {
+                alt66=1;
             }
-            else if ( (LA65_0==105) ) {
-                alt65=2;
+            else if ( (LA66_0==106) ) {
+                alt66=2;
             }
             else {
                 NoViableAltException nvae =
-                    new NoViableAltException("", 65, 0, input);
+                    new NoViableAltException("", 66, 0, input);
 
                 throw nvae;
             }
-            switch (alt65) {
+            switch (alt66) {
                 case 1 :
-                    // InternalRsamlText.g:4741:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4792:3: (enumLiteral_0= 'reactionTime' )
                     {
-                    // InternalRsamlText.g:4741:3: (enumLiteral_0= 'reactionTime' )
-                    // InternalRsamlText.g:4742:4: enumLiteral_0= 'reactionTime'
+                    // InternalRsamlText.g:4792:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4793:4: enumLiteral_0= 'reactionTime'
                     {
-                    enumLiteral_0=(Token)match(input,104,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,105,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0());
@@ -12000,12 +12125,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4749:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:4800:3: (enumLiteral_1= 'dataAge' )
                     {
-                    // InternalRsamlText.g:4749:3: (enumLiteral_1= 'dataAge' )
-                    // InternalRsamlText.g:4750:4: enumLiteral_1= 'dataAge'
+                    // InternalRsamlText.g:4800:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:4801:4: enumLiteral_1= 'dataAge'
                     {
-                    enumLiteral_1=(Token)match(input,105,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,106,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1());
@@ -12044,26 +12169,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
     public static final BitSet FOLLOW_1 = new BitSet(new long[]{0x0000000000000000L});
     public static final BitSet FOLLOW_2 = new BitSet(new long[]{0x0000000000000002L});
-    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFFBFFEFFF7830L,0x00000FFFFFFFF7FFL});
+    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFFBFFEFFF7830L,0x00001FFFFFFFEFFFL});
     public static final BitSet FOLLOW_4 = new BitSet(new long[]{0x0000000000001000L});
     public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x240D02000081E000L,0x0000000000000092L});
-    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x000000000001F000L});
+    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x000000000003E000L});
     public static final BitSet FOLLOW_7 = new BitSet(new long[]{0x0000000000000040L});
     public static final BitSet FOLLOW_8 = new BitSet(new long[]{0x0000000000000010L});
-    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x0000000003C00000L});
-    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x0000000000060000L});
-    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000000380000L});
-    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x00001C0000000000L});
+    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x0000000007800000L});
+    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x00000000000C0000L});
+    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000000700000L});
+    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x0000380000000000L});
     public static final BitSet FOLLOW_13 = new BitSet(new long[]{0x0000000007038000L});
     public static final BitSet FOLLOW_14 = new BitSet(new long[]{0x00008860687F8000L});
     public static final BitSet FOLLOW_15 = new BitSet(new long[]{0x0000000000000030L});
     public static final BitSet FOLLOW_16 = new BitSet(new long[]{0x00008860787F8000L});
     public static final BitSet FOLLOW_17 = new BitSet(new long[]{0x0000000F807F8000L});
-    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x000000000C000000L});
-    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x0000000FF0000000L});
+    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x0000000018000000L});
+    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x0000001FE0000000L});
     public static final BitSet FOLLOW_20 = new BitSet(new long[]{0x00000010007F8000L});
     public static final BitSet FOLLOW_21 = new BitSet(new long[]{0x0000018000018000L});
-    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x000000F000000000L});
+    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x000001E000000000L});
     public static final BitSet FOLLOW_23 = new BitSet(new long[]{0x0000040000000030L});
     public static final BitSet FOLLOW_24 = new BitSet(new long[]{0x0000040000000000L});
     public static final BitSet FOLLOW_25 = new BitSet(new long[]{0x0000000000000032L});
@@ -12083,10 +12208,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final BitSet FOLLOW_39 = new BitSet(new long[]{0x0000008010018000L,0x0000000000000008L});
     public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000000100018000L,0x0000000000000060L});
     public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000110018000L,0x0000000000000060L});
-    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0002000000038000L,0x0000000000000700L});
-    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0000000000000000L,0x0000030000000000L});
-    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000002L,0x0000000000000800L});
-    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0xFFFFFBFFEFFF6830L,0x00000FFFFFFFF7FFL});
-    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0x0000000000000000L,0x0000080000000000L});
+    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0002000000038000L,0x0000000000000F00L});
+    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0002000010038000L,0x0000000000000F00L});
+    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000000L,0x0000060000000000L});
+    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000002L,0x0000000000001000L});
+    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0xFFFFFBFFEFFF6830L,0x00001FFFFFFFEFFFL});
+    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0x0000000000000000L,0x0000100000000000L});
 
 }
