@@ -30,6 +30,10 @@ class TextMetricsTest {
         Font bold = Font.createFont(Font.TRUETYPE_FONT, FONTS.resolve("DejaVuSans-Bold.ttf").toFile()).deriveFont(1000f);
         assertTrue(TextMetrics.codePoints().size() > 300);
         for (int cp : TextMetrics.codePoints()) {
+            if (Character.getType(cp) == Character.FORMAT) {
+                // The soft hyphen (U+00AD): Java 17 measures its glyph, Java 24 and later treat it as invisible.
+                continue;
+            }
             String s = new String(Character.toChars(cp));
             int[] shipped = TextMetrics.advance(cp);
             assertEquals(Math.round(regular.getStringBounds(s, context).getWidth()), shipped[0], 0, "regular U+" + Integer.toHexString(cp));
