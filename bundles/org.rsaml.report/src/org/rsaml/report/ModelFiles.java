@@ -9,7 +9,9 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.stream.Stream;
 
 import org.rsaml.model.resource.ModelFormats;
@@ -42,7 +44,7 @@ public final class ModelFiles {
      */
     public static List<Input> select(Path base, List<Path> paths) {
         List<Input> entries = new ArrayList<>();
-        List<Path> seen = new ArrayList<>();
+        Set<Path> seen = new HashSet<>();
         for (Path named : paths) {
             String shown = display(named);
             Path path = base.resolve(named);
@@ -57,8 +59,17 @@ public final class ModelFiles {
                 if (found.isEmpty()) {
                     entries.add(unusable(shown, "no " + EXTENSION + " (or ." + ModelFormats.TEXT_EXTENSION + ") files in this directory or below it"));
                 }
+                Path folder = realPath(path);
                 for (Path file : found) {
-                    add(entries, seen, file, display(named.resolve(path.relativize(file)).normalize()));
+                    String fileShown = display(named.resolve(path.relativize(file)).normalize());
+                    Path target = realPath(file);
+                    if (folder != null && target != null && !target.startsWith(folder)) {
+                        // As for references: a folder's models are what is in the folder, not where links lead.
+                        entries.add(unusable(fileShown, "refused: a symbolic link leads out of the folder '" + shown
+                                + "' (to " + display(target) + "); name the target itself to validate it"));
+                        continue;
+                    }
+                    add(entries, seen, file, fileShown);
                 }
             } else if (Files.exists(path)) {
                 add(entries, seen, path, shown);
@@ -81,6 +92,14 @@ public final class ModelFiles {
         }
     }
 
+    private static Path realPath(Path path) {
+        try {
+            return path.toRealPath();
+        } catch (IOException e) {
+            return null; // reported when the file is read
+        }
+    }
+
     private static boolean hiddenBelow(Path root, Path p) {
         for (Path part : root.relativize(p)) {
             if (part.toString().startsWith(".")) {
@@ -90,10 +109,9 @@ public final class ModelFiles {
         return false;
     }
 
-    private static void add(List<Input> entries, List<Path> seen, Path file, String shown) {
+    private static void add(List<Input> entries, Set<Path> seen, Path file, String shown) {
         Path key = file.toAbsolutePath().normalize();
-        if (!seen.contains(key)) {
-            seen.add(key);
+        if (seen.add(key)) {
             entries.add(new Input(file, shown, null));
         }
     }

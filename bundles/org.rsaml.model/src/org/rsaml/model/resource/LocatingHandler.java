@@ -163,10 +163,16 @@ final class LocatingHandler extends SAXXMIHandler {
         openElements.push(Optional.ofNullable(created));
     }
 
-    /** Whether a heap pool is still at least 95% full after its last collection. */
+    /**
+     * Whether the heap's long-lived part is still at least 95% full after its last collection: the
+     * old generation where the collector has one (Serial, Parallel, G1, generational ZGC), the
+     * whole heap where it has not (ZGC, Shenandoah). Eden and survivor spaces say nothing here:
+     * after a minor collection they are routinely full (the parallel collector's survivor space
+     * especially), which is how the collector works, not a sign the model does not fit.
+     */
     private static boolean heapNearlyExhausted() {
         for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == MemoryType.HEAP && pool.isCollectionUsageThresholdSupported()) {
+            if (pool.getType() == MemoryType.HEAP && pool.isCollectionUsageThresholdSupported() && !youngGeneration(pool.getName())) {
                 MemoryUsage afterCollection = pool.getCollectionUsage();
                 long max = pool.getUsage().getMax();
                 if (afterCollection != null && max > 0 && afterCollection.getUsed() > max / 20 * 19) {
@@ -175,6 +181,11 @@ final class LocatingHandler extends SAXXMIHandler {
             }
         }
         return false;
+    }
+
+    /** Pools where new objects live until a minor collection moves them on, by the names HotSpot's collectors give them. */
+    private static boolean youngGeneration(String poolName) {
+        return poolName.contains("Eden") || poolName.contains("Survivor") || poolName.contains("Young") || poolName.contains("Nursery");
     }
 
     /**

@@ -236,6 +236,18 @@ public class RsamlResource extends RsamlResourceImpl implements LocatingResource
                 return new LocatingHandler(RsamlResource.this, helper, options,
                         (LocatingHandler.Context) options.get(LocatingHandler.Context.class));
             }
+
+            @Override
+            @SuppressWarnings("deprecation")
+            protected String getEncoding() throws IOException {
+                try {
+                    return super.getEncoding();
+                } catch (IndexOutOfBoundsException e) {
+                    // EMF's quick scan of the XML declaration fails on an unterminated encoding="...; the
+                    // parser reports the same declaration as a located error, so let it read the file.
+                    return null;
+                }
+            }
         };
     }
 

@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Every kind of unfit input gives one line naming the file (and the line and column where there is
@@ -98,6 +99,67 @@ class BadInputTest {
         assertEquals(2, r.code(), r::toString);
         assertTrue(r.out().contains("huge.rsaml: error: the model is too large for the available heap"), r::toString);
         assertTrue(r.out().contains("1 file checked: 0 errors, 0 warnings; 1 input could not be read"), r::toString);
+        assertNoStackTrace(r);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = { "encoding=\"", "encoding='", "encoding=\"UTF-8", "encoding='UTF-8", "encoding=\"U", "encoding=" })
+    void aMalformedEncodingDeclarationIsALocatedError(String declaration, @TempDir Path dir) throws Exception {
+        String model = Files.readString(Cli.INPUTS.resolve("clean.rsaml"));
+        String firstLine = model.substring(0, model.indexOf('\n'));
+        assertTrue(firstLine.startsWith("<?xml"), "clean.rsaml starts with an XML declaration: " + firstLine);
+        Files.writeString(dir.resolve("declared.rsaml"), "<?xml version=\"1.0\" " + declaration + "?>" + model.substring(model.indexOf('\n')));
+        Cli.Result r = Cli.runIn(dir, "validate", "declared.rsaml");
+        assertEquals(2, r.code(), r::toString);
+        // The parser reads the unterminated value up to the next quote of the file: the error is where it stopped.
+        assertTrue(r.out().matches("(?s)declared\\.rsaml:\\d+:\\d+: error: malformed XML: .*"), () -> "a located parse error\n" + r);
+        assertFalse(r.out().contains("internal error"), () -> "a fault of the file, not of RsaML\n" + r);
+        assertNoStackTrace(r);
+    }
+
+    @Test
+    void aFolderIsValidatedWithoutFollowingAFileLinkOutOfIt(@TempDir Path dir) throws Exception {
+        Path outside = Files.createDirectories(dir.resolve("elsewhere"));
+        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), outside.resolve("secret.rsaml"));
+        Path folder = Files.createDirectories(dir.resolve("models"));
+        Files.copy(Cli.INPUTS.resolve("clean.rsaml"), folder.resolve("clean.rsaml"));
+        Files.createSymbolicLink(folder.resolve("link.rsaml"), outside.resolve("secret.rsaml"));
+        Files.createDirectories(folder.resolve("sub"));
+        Files.createSymbolicLink(folder.resolve("sub/inside.rsaml"), Path.of("../clean.rsaml"));
+        Cli.Result r = Cli.runIn(dir, "validate", "models");
+        assertEquals(2, r.code(), r::toString);
+        assertTrue(r.out().contains("models/link.rsaml: error: refused: a symbolic link leads out of the folder 'models'"), r::toString);
+        assertFalse(r.out().contains("RSA-"), () -> "the link's target was not read\n" + r);
+        assertEquals("2 files checked: 0 errors, 0 warnings; 1 input could not be read", r.outLines().get(r.outLines().size() - 1),
+                () -> "the link inside the folder is followed\n" + r);
+        // Named by the user, the target is read.
+        assertEquals(1, Cli.runIn(dir, "validate", "models/link.rsaml").code(), "a file named on the command line is validated");
+        assertNoStackTrace(r);
+    }
+
+    /**
+     * A model that fits the heap is read under every collector: the check that gives up before the
+     * collector thrashes looks at what the old generation keeps after a collection, not at the young
+     * generation (the parallel collector's survivor space is routinely full after a minor collection).
+     */
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = { "-XX:+UseParallelGC", "-XX:+UseSerialGC", "-XX:+UseG1GC" })
+    void aLargeModelThatFitsIsReadUnderEveryCollector(String collector, @TempDir Path dir) throws Exception {
+        Path big = dir.resolve("large.rsaml");
+        int modules = 30_000; // 2.5 MB of XML, well within a 128 MiB heap once read
+        try (var out = Files.newBufferedWriter(big)) {
+            out.write("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rsaml:Architecture xmi:version=\"2.0\" "
+                    + "xmlns:xmi=\"http://www.omg.org/XMI\" xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"robot\" declaredLayers=\"1\">\n"
+                    + "  <layers name=\"functional\" level=\"0\">\n");
+            for (int i = 0; i < modules; i++) {
+                out.write("    <modules name=\"module" + i + "\" description=\"a module of a large model\"/>\n");
+            }
+            out.write("  </layers>\n</rsaml:Architecture>\n");
+        }
+        // Each module is never activated (a warning, RSA-19): --quiet prints nothing but a failure.
+        Cli.Result r = Cli.process(dir, Cli.java(List.of("-Xmx128m", collector), "validate", "--quiet", "large.rsaml"));
+        assertEquals(0, r.code(), () -> collector + ": a model that fits a 128 MiB heap is read and validated\n" + r);
+        assertFalse(r.out().contains("too large for the available heap"), r::toString);
         assertNoStackTrace(r);
     }
 
