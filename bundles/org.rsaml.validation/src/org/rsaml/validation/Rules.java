@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 
 import org.rsaml.validation.internal.RuleCatalog;
 import org.rsaml.validation.internal.TimingChecks;
@@ -21,6 +22,7 @@ import org.rsaml.validation.internal.TimingChecks;
 public final class Rules {
 
     private static final Map<String, Rule> BY_ID = new LinkedHashMap<>();
+    private static final Map<String, Optional<Rule>> BY_CONSTRAINT = new ConcurrentHashMap<>();
 
     static {
         for (Rule rule : RuleCatalog.load()) {
@@ -50,9 +52,19 @@ public final class Rules {
 
     /** The rule an OCL constraint of rsaml.ecore implements: {@code RSA08_layerExecutionBudget} is RSA-08. */
     public static Optional<Rule> forConstraint(String constraintName) {
-        if (constraintName == null || !constraintName.matches("RSA\\d\\d_.*")) {
+        // Asked for every constraint on every element: looked up once per name.
+        return constraintName == null ? Optional.empty() : BY_CONSTRAINT.computeIfAbsent(constraintName, Rules::ruleOfConstraint);
+    }
+
+    private static Optional<Rule> ruleOfConstraint(String constraintName) {
+        if (constraintName.length() < 6 || !constraintName.startsWith("RSA")
+                || !isDigit(constraintName.charAt(3)) || !isDigit(constraintName.charAt(4)) || constraintName.charAt(5) != '_') {
             return Optional.empty();
         }
         return byId("RSA-" + constraintName.substring(3, 5));
+    }
+
+    private static boolean isDigit(char c) {
+        return c >= '0' && c <= '9';
     }
 }

@@ -13,6 +13,7 @@ import org.eclipse.emf.common.util.DiagnosticChain;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EValidator;
+import org.rsaml.model.Module;
 import org.rsaml.model.util.RsamlValidator;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
@@ -54,7 +55,10 @@ public class RuleEValidator extends RsamlValidator {
             String validationDelegate, String constraint, String expression, int severity, String source, int code) {
         Boolean satisfied;
         try {
-            satisfied = rules.check(eClass, constraint, eObject);
+            // RSA-19's fixpoint once per validation, not one OCL closure per module (same set; see ModuleActivation).
+            satisfied = ModuleActivation.CONSTRAINT.equals(constraint) && eObject instanceof Module module
+                    ? ModuleActivation.of(context).isActivated(module)
+                    : rules.check(eClass, constraint, eObject);
         } catch (RuntimeException e) {
             if (diagnostics != null) {
                 reportConstraintDelegateException(eClass, eObject, diagnostics, context, constraint, severity, source, code, e);
