@@ -8,21 +8,22 @@ cd "$(dirname "$0")/../.."
 runs="${1:-20}"
 command -v hyperfine >/dev/null || { echo "startup.sh: needs hyperfine (apt-get install hyperfine)" >&2; exit 2; }
 [ -f bundles/org.rsaml.cli/target/rsaml.jar ] || ./mvnw -q -B -DskipTests -pl bundles/org.rsaml.cli -am package
-./rsaml validate examples/exp2-defects.rsaml >/dev/null || true   # makes the class-data archive once
+./rsaml validate examples/exp2-defects.rsaml >/dev/null || true   # makes the class-data archive once (or again, if it no longer fits)
 model=examples/exp2-defects.rsaml
 out="$(mktemp)"
 hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" \
   -n 'java -version (the floor)' 'java -version' \
-  -n './rsaml validate (launcher: CDS archive, C1, serial GC)' "./rsaml validate $model" \
+  -n './rsaml validate (launcher: CDS archive, tiered JIT, serial GC)' "./rsaml validate $model" \
   -n 'java -jar rsaml.jar validate (no tuning)' "java -jar bundles/org.rsaml.cli/target/rsaml.jar validate $model" \
   -n './rsaml --version' './rsaml --version'
 python3 - "$out" <<'PY'
 import json, sys
 results = json.load(open(sys.argv[1]))["results"]
-print("| command | median | mean ± σ | min | max |")
-print("|---|---:|---:|---:|---:|")
+floor = results[0]["median"]
+print("| command | median | ÷ java -version | mean ± σ | min | max |")
+print("|---|---:|---:|---:|---:|---:|")
 for r in results:
     ms = lambda v: f"{v * 1000:,.0f} ms"
-    print(f"| {r['command']} | {ms(r['median'])} | {ms(r['mean'])} ± {r['stddev'] * 1000:,.0f} | {ms(r['min'])} | {ms(r['max'])} |")
+    print(f"| {r['command']} | {ms(r['median'])} | {r['median'] / floor:.1f}× | {ms(r['mean'])} ± {r['stddev'] * 1000:,.0f} | {ms(r['min'])} | {ms(r['max'])} |")
 PY
 rm -f "$out"

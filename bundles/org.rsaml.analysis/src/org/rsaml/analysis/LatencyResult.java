@@ -51,7 +51,12 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
 
     /** The worst path in one line, {@code perception/filter +15 ms -> control/drive +22 ms}; empty without one. */
     public String worstPathText() {
-        return String.join(" -> ", worstPath.stream().map(h -> h.label() + " +" + Durations.format(h.totalNs())).toList());
+        return String.join(" -> ", worstPathHops());
+    }
+
+    /** Each hop of the worst path as {@link #worstPathText()} writes it, {@code perception/filter +15 ms}. */
+    public List<String> worstPathHops() {
+        return worstPath.stream().map(h -> h.label() + " +" + Durations.format(h.totalNs())).toList();
     }
 
     /** The latency the requirement bounds (-1 when not bounded). */

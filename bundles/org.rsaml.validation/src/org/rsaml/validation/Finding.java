@@ -15,9 +15,18 @@ package org.rsaml.validation;
  * @param file          the model file as the user named it, or the resource URI
  * @param line          1-based line of the element's start tag, or 0 when unknown
  * @param column        1-based column of the element's start tag, or 0 when unknown
+ * @param detail        what the message summarises, in full (an RSA-23 finding's whole worst path,
+ *                      where the message shows its ends only), or null when the message says it all;
+ *                      the JSON and SARIF reports carry it
  */
 public record Finding(Rule rule, Severity severity, String message, String qualifiedName, String uriFragment,
-        String file, int line, int column) {
+        String file, int line, int column, String detail) {
+
+    /** A finding whose message says it all. */
+    public Finding(Rule rule, Severity severity, String message, String qualifiedName, String uriFragment, String file, int line,
+            int column) {
+        this(rule, severity, message, qualifiedName, uriFragment, file, line, column, null);
+    }
 
     public String ruleId() {
         return rule.id();

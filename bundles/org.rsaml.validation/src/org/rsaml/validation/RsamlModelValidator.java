@@ -189,14 +189,14 @@ public final class RsamlModelValidator {
             String file = model != null ? model.file()
                     : element.eResource() == null ? "<memory>" : element.eResource().getURI().toString();
             findings.add(new Finding(r.rule(), r.severity(), r.message(), RsamlLabels.qualifiedName(element),
-                    element.eResource() == null ? "" : element.eResource().getURIFragment(element), file, at[0], at[1]));
+                    element.eResource() == null ? "" : element.eResource().getURIFragment(element), file, at[0], at[1], r.detail()));
         }
         findings.sort(ORDER);
         return findings;
     }
 
     /** A problem EMF's diagnostician raised on an element, read as an RsaML rule's finding. */
-    private record Raised(EObject element, Rule rule, Severity severity, String message) {
+    private record Raised(EObject element, Rule rule, Severity severity, String message, String detail) {
     }
 
     private static List<Raised> raised(Diagnostic chain) {
@@ -210,9 +210,10 @@ public final class RsamlModelValidator {
             if (child.getSeverity() != Diagnostic.OK && !child.getData().isEmpty() && child.getData().get(0) instanceof EObject element) {
                 if (RuleEValidator.SOURCE.equals(child.getSource()) && child.getData().size() >= 3) {
                     out.add(new Raised(element, (Rule) child.getData().get(1), severityOf(child.getSeverity()),
-                            (String) child.getData().get(2)));
+                            (String) child.getData().get(2),
+                            child.getData().size() >= 4 && child.getData().get(3) instanceof String d ? d : null));
                 } else {
-                    out.add(new Raised(element, Rules.STRUCTURE, severityOf(child.getSeverity()), child.getMessage()));
+                    out.add(new Raised(element, Rules.STRUCTURE, severityOf(child.getSeverity()), child.getMessage(), null));
                 }
             }
             collect(child, out);

@@ -179,22 +179,22 @@ public final class ResponseTimes {
             long worst = -1;
             long worstJob = 0;
             long steps = 0;
+            Interference interference = new Interference(period, cost, jitter, n);
+            long w = -1;
             for (long q = 0;; q++) {
                 if (q >= MAX_JOBS) {
                     return notAnalysed(task, "its busy period holds more than " + MAX_JOBS + " of its jobs");
                 }
                 long own = Math.multiplyExact(q + 1, task.cost());
-                long w = Math.addExact(own, q == 0 ? Math.max(base, seed) : base);
+                // Job q's window is at least job q-1's plus one more cost (its least fixed point is above
+                // that), so the window only grows through the busy period and the interference follows it.
+                long start = Math.addExact(own, q == 0 ? Math.max(base, seed) : base);
+                w = q == 0 ? start : Math.max(start, Math.addExact(w, task.cost()));
                 while (true) {
                     if (++steps > MAX_STEPS) {
                         return notAnalysed(task, "the response-time iteration did not settle within " + MAX_STEPS + " steps");
                     }
-                    long next = own;
-                    for (int k = 0; k < n; k++) {
-                        long x = Math.addExact(w, jitter[k]);
-                        long jobs = x / period[k] + (x % period[k] == 0 ? 0 : 1);
-                        next = Math.addExact(next, Math.multiplyExact(jobs, cost[k]));
-                    }
+                    long next = Math.addExact(own, interference.at(w));
                     if (next == w) {
                         break;
                     }
@@ -219,6 +219,94 @@ public final class ResponseTimes {
             return new TaskResult(task, r.responseTime(), r.verdict(), r.explanation() + lock, r.witness());
         } catch (ArithmeticException e) {
             return notAnalysed(task, new Arith.TooLarge().getMessage());
+        }
+    }
+
+    /**
+     * The interference sum_k ceil((w + J_k) / T_k) C_k of the entries, kept up to date as w grows:
+     * each entry waits in a heap, keyed by the largest w its job count holds for, so a step touches
+     * only the entries whose count changes (O(log n) each), not every entry. Over a whole busy
+     * period that is one heap operation per interfering job released in it, instead of one pass over
+     * all entries per step. Should w ever fall, the counts are recomputed from scratch.
+     */
+    static final class Interference {
+        private final long[] period;
+        private final long[] cost;
+        private final long[] jitter;
+        private final int n;
+        private final long[] jobs;
+        /** The entry's count holds while w &lt;= limit: ceil((w + J) / T) = jobs. */
+        private final long[] limit;
+        private final int[] heap;
+        private int size;
+        private long w = Long.MIN_VALUE;
+        private long sum;
+
+        Interference(long[] period, long[] cost, long[] jitter, int n) {
+            this.period = period;
+            this.cost = cost;
+            this.jitter = jitter;
+            this.n = n;
+            this.jobs = new long[n];
+            this.limit = new long[n];
+            this.heap = new int[n];
+        }
+
+        /** The interference in a window of length {@code window}. */
+        long at(long window) {
+            if (window < w) {
+                w = Long.MIN_VALUE;
+            }
+            if (w == Long.MIN_VALUE) {
+                w = window;
+                sum = 0;
+                size = 0;
+                for (int k = 0; k < n; k++) {
+                    if (cost[k] == 0) {
+                        continue; // contributes nothing whatever the window
+                    }
+                    long x = Math.addExact(window, jitter[k]);
+                    jobs[k] = x / period[k] + (x % period[k] == 0 ? 0 : 1);
+                    limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], period[k]), jitter[k]);
+                    sum = Math.addExact(sum, Math.multiplyExact(jobs[k], cost[k]));
+                    heap[size++] = k;
+                }
+                for (int i = size / 2 - 1; i >= 0; i--) {
+                    down(i);
+                }
+                return sum;
+            }
+            w = window;
+            while (size > 0 && limit[heap[0]] < window) {
+                int k = heap[0];
+                long x = Math.addExact(window, jitter[k]);
+                long count = x / period[k] + (x % period[k] == 0 ? 0 : 1);
+                sum = Math.addExact(sum, Math.multiplyExact(count - jobs[k], cost[k]));
+                jobs[k] = count;
+                limit[k] = Math.subtractExact(Math.multiplyExact(count, period[k]), jitter[k]);
+                down(0);
+            }
+            return sum;
+        }
+
+        private void down(int i) {
+            int k = heap[i];
+            long key = limit[k];
+            while (true) {
+                int child = 2 * i + 1;
+                if (child >= size) {
+                    break;
+                }
+                if (child + 1 < size && limit[heap[child + 1]] < limit[heap[child]]) {
+                    child++;
+                }
+                if (limit[heap[child]] >= key) {
+                    break;
+                }
+                heap[i] = heap[child];
+                i = child;
+            }
+            heap[i] = k;
         }
     }
 

@@ -41,6 +41,9 @@ public final class JsonReport {
                     json.name("rule").value(f.rule().name());
                     json.name("severity").value(f.severity().label());
                     json.name("message").value(f.message());
+                    if (f.detail() != null) {
+                        json.name("detail").value(f.detail());
+                    }
                     json.name("element").value(f.qualifiedName());
                     json.name("uriFragment").value(f.uriFragment());
                     json.name("line").value(f.line());

@@ -110,6 +110,9 @@ public final class SarifReport {
                 }
                 json.name("level").value(level(f.severity()));
                 json.name("message").beginObject().name("text").value(f.message()).endObject();
+                if (f.detail() != null) {
+                    json.name("properties").beginObject().name("detail").value(f.detail()).endObject();
+                }
                 json.name("locations").beginArray().beginObject();
                 physicalLocation(json, f.file(), f.line(), f.column(), base);
                 json.name("logicalLocations").beginArray().beginObject()

@@ -133,6 +133,11 @@ public final class OclRules {
 
     /** Whether an invariant of one of {@code ruleIds} is violated on the element, or cannot be evaluated there. */
     public boolean violatesAny(EObject object, Set<String> ruleIds) {
+        return violatesAny(object, ruleIds, null);
+    }
+
+    /** The same, telling {@code facts} each definite result. */
+    boolean violatesAny(EObject object, Set<String> ruleIds, ValidationFacts facts) {
         for (EClass eClass : TimingChecks.classes(object)) {
             Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>> byName = queries.get(eClass);
             if (byName == null) {
@@ -145,6 +150,9 @@ public final class OclRules {
                         satisfied = check(eClass, constraint, object);
                     } catch (RuntimeException e) {
                         satisfied = null;
+                    }
+                    if (facts != null && satisfied != null) {
+                        facts.invariant(object, constraint, satisfied);
                     }
                     if (!Boolean.TRUE.equals(satisfied)) {
                         return true;

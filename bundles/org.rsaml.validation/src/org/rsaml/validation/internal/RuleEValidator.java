@@ -56,9 +56,12 @@ public class RuleEValidator extends RsamlValidator {
         Boolean satisfied;
         try {
             // RSA-19's fixpoint once per validation, not one OCL closure per module (same set; see ModuleActivation).
-            satisfied = ModuleActivation.CONSTRAINT.equals(constraint) && eObject instanceof Module module
-                    ? ModuleActivation.of(context).isActivated(module)
-                    : rules.check(eClass, constraint, eObject);
+            ValidationFacts facts = ValidationFacts.of(context);
+            Boolean known = facts == null ? null : facts.invariant(eObject, constraint);
+            satisfied = known != null ? known
+                    : ModuleActivation.CONSTRAINT.equals(constraint) && eObject instanceof Module module
+                            ? ModuleActivation.of(context).isActivated(module)
+                            : rules.check(eClass, constraint, eObject);
         } catch (RuntimeException e) {
             if (diagnostics != null) {
                 reportConstraintDelegateException(eClass, eObject, diagnostics, context, constraint, severity, source, code, e);
@@ -117,6 +120,52 @@ public class RuleEValidator extends RsamlValidator {
             }
         }
         return result;
+    }
+
+    /*
+     * EMF's structural checks, skipped on an element the timing rules' prerequisite pass already found
+     * sound in this validation (see ValidationFacts): they would find nothing.
+     */
+
+    private static boolean knownSound(EObject eObject, Map<Object, Object> context) {
+        ValidationFacts facts = ValidationFacts.of(context);
+        return facts != null && facts.knownStructurallySound(eObject);
+    }
+
+    @Override
+    public boolean validate_EveryMultiplicityConforms(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_EveryMultiplicityConforms(eObject, diagnostics, context);
+    }
+
+    @Override
+    public boolean validate_EveryDataValueConforms(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_EveryDataValueConforms(eObject, diagnostics, context);
+    }
+
+    @Override
+    public boolean validate_EveryReferenceIsContained(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_EveryReferenceIsContained(eObject, diagnostics, context);
+    }
+
+    @Override
+    public boolean validate_EveryBidirectionalReferenceIsPaired(EObject eObject, DiagnosticChain diagnostics,
+            Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_EveryBidirectionalReferenceIsPaired(eObject, diagnostics, context);
+    }
+
+    @Override
+    public boolean validate_EveryProxyResolves(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_EveryProxyResolves(eObject, diagnostics, context);
+    }
+
+    @Override
+    public boolean validate_UniqueID(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_UniqueID(eObject, diagnostics, context);
+    }
+
+    @Override
+    public boolean validate_EveryMapEntryUnique(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        return knownSound(eObject, context) || super.validate_EveryMapEntryUnique(eObject, diagnostics, context);
     }
 
     /** RSA-09 reports duplicate names with a clearer message than EMF's duplicate-key check. */

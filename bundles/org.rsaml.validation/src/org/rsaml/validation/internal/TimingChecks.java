@@ -66,11 +66,18 @@ public final class TimingChecks {
      * One timing finding: the rule, the element it is on, the supplied message parameters; or, with
      * a {@code failure}, the analysis could not be run (an error, never a silent pass).
      */
-    public record Found(Rule rule, EObject element, Map<String, String> parameters, String failure) {
+    public record Found(Rule rule, EObject element, Map<String, String> parameters, String failure, String detail) {
         Found(Rule rule, EObject element, Map<String, String> parameters) {
-            this(rule, element, parameters, null);
+            this(rule, element, parameters, null, null);
+        }
+
+        Found(Rule rule, EObject element, Map<String, String> parameters, String failure) {
+            this(rule, element, parameters, failure, null);
         }
     }
+
+    /** Hops of a worst path a message shows at each end; longer paths are shortened in the middle. */
+    static final int SHOWN_HOPS = 4;
 
     /**
      * EMF's structural checks alone (RSA-00). Invariants are skipped: inside OSGi EMF would evaluate
@@ -109,12 +116,13 @@ public final class TimingChecks {
         }
         Map<EObject, List<Found>> byElement;
         if (context == null) {
-            byElement = findings(architecture, rules);
+            byElement = findings(architecture, rules, null);
         } else {
             @SuppressWarnings("unchecked")
             Map<Architecture, Map<EObject, List<Found>>> cache = (Map<Architecture, Map<EObject, List<Found>>>) context
                     .computeIfAbsent(CONTEXT_KEY, k -> new IdentityHashMap<>());
-            byElement = cache.computeIfAbsent(architecture, a -> findings(a, rules));
+            ValidationFacts facts = ValidationFacts.of(context);
+            byElement = cache.computeIfAbsent(architecture, a -> findings(a, rules, facts));
         }
         return byElement.getOrDefault(element, List.of());
     }
@@ -129,9 +137,9 @@ public final class TimingChecks {
     }
 
     /** Every timing finding of the architecture, by the element it is on. */
-    static Map<EObject, List<Found>> findings(Architecture architecture, OclRules rules) {
+    static Map<EObject, List<Found>> findings(Architecture architecture, OclRules rules, ValidationFacts facts) {
         try {
-            return analyse(architecture, rules);
+            return analyse(architecture, rules, facts);
         } catch (RuntimeException e) {
             Map<EObject, List<Found>> out = new IdentityHashMap<>();
             add(out, new Found(rule(DEADLINE), architecture, Map.of(), "the timing rules could not be evaluated on "
@@ -140,9 +148,9 @@ public final class TimingChecks {
         }
     }
 
-    private static Map<EObject, List<Found>> analyse(Architecture architecture, OclRules rules) {
+    private static Map<EObject, List<Found>> analyse(Architecture architecture, OclRules rules, ValidationFacts facts) {
         Map<EObject, List<Found>> out = new IdentityHashMap<>();
-        if (!prerequisitesHold(architecture, rules)) {
+        if (!prerequisitesHold(architecture, rules, facts)) {
             return out;
         }
         ArchitectureTiming timing;
@@ -179,8 +187,17 @@ public final class TimingChecks {
             Map<String, String> parameters = new LinkedHashMap<>();
             parameters.put("where", "");
             parameters.put("reason", reason(l.explanation()));
-            parameters.put("worstPath", l.worstPath().isEmpty() ? "" : "; worst path: " + l.worstPathText());
-            add(out, new Found(rule(l.verdict() == Verdict.MISSES ? LATENCY : NOT_ANALYSED), l.requirement(), parameters));
+            List<String> hops = l.worstPathHops();
+            String whole = String.join(" -> ", hops);
+            // A path of a thousand hops would make a line of kilobytes: the message names its ends, the
+            // finding's detail (JSON, SARIF) keeps all of it.
+            String shown = hops.size() <= 2 * SHOWN_HOPS + 1 ? whole
+                    : String.join(" -> ", hops.subList(0, SHOWN_HOPS)) + " -> ... " + (hops.size() - 2 * SHOWN_HOPS)
+                            + " more hops ... -> " + String.join(" -> ", hops.subList(hops.size() - SHOWN_HOPS, hops.size()))
+                            + " (" + hops.size() + " hops; rsaml analyze and the JSON and SARIF reports list them all)";
+            parameters.put("worstPath", hops.isEmpty() ? "" : "; worst path: " + shown);
+            add(out, new Found(rule(l.verdict() == Verdict.MISSES ? LATENCY : NOT_ANALYSED), l.requirement(), parameters, null,
+                    shown.equals(whole) ? null : "worst path: " + whole));
         }
         return out;
     }
@@ -200,13 +217,14 @@ public final class TimingChecks {
                     + f.rule().description() + "); its message could not be written: " + e;
         }
         return new BasicDiagnostic(f.rule().severity().diagnosticSeverity(), RuleEValidator.SOURCE, 0,
-                message + " (" + f.rule().id() + ")", new Object[] { on, f.rule(), message });
+                message + " (" + f.rule().id() + ")", f.detail() == null ? new Object[] { on, f.rule(), message }
+                        : new Object[] { on, f.rule(), message, f.detail() });
     }
 
     /** The timing findings of the architecture alone, as {@code rsaml analyze} reports them. */
     public static List<Found> all(Architecture architecture, OclRules rules) {
         List<Found> all = new ArrayList<>();
-        findings(architecture, rules).values().forEach(all::addAll);
+        findings(architecture, rules, null).values().forEach(all::addAll);
         return all;
     }
 
@@ -223,8 +241,8 @@ public final class TimingChecks {
     }
 
     /** No element of the architecture breaks EMF's structure or a rule of {@link #PREREQUISITES}. */
-    private static boolean prerequisitesHold(Architecture architecture, OclRules rules) {
-        return withoutTaskSet(architecture, rules) == null;
+    private static boolean prerequisitesHold(Architecture architecture, OclRules rules, ValidationFacts facts) {
+        return withoutTaskSet(architecture, rules, facts) == null;
     }
 
     /**
@@ -233,11 +251,20 @@ public final class TimingChecks {
      * none does and the architecture can be analysed.
      */
     public static EObject withoutTaskSet(Architecture architecture, OclRules rules) {
+        return withoutTaskSet(architecture, rules, null);
+    }
+
+    /** The same, recording what it checks in {@code facts} for the rest of the validation. */
+    static EObject withoutTaskSet(Architecture architecture, OclRules rules, ValidationFacts facts) {
         Map<Object, Object> context = new HashMap<>();
         for (Iterator<EObject> it = architecture.eAllContents(); ; ) {
             EObject o = it.hasNext() ? it.next() : null;
             EObject element = o == null ? architecture : o;
-            if (!STRUCTURE.validate(element.eClass(), element, null, context) || rules.violatesAny(element, PREREQUISITES)) {
+            boolean sound = STRUCTURE.validate(element.eClass(), element, null, context);
+            if (sound && facts != null) {
+                facts.structurallySound(element);
+            }
+            if (!sound || rules.violatesAny(element, PREREQUISITES, facts)) {
                 return element;
             }
             if (o == null) {

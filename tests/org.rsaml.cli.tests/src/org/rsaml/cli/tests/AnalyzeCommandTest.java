@@ -73,6 +73,36 @@ class AnalyzeCommandTest {
         assertTrue(r.out().contains("verdict: MISSES: the worst-case reaction time can reach 57 ms, more than 50 ms"), r.out());
     }
 
+    /**
+     * A model whose processors are all declared LLF (not analysed) is not proven: by default it exits 0
+     * like a proven one (nothing can be shown to miss), with --fail-on not-analysed it exits 1 in every
+     * format, while a proven model still exits 0.
+     */
+    @Test
+    void aModelNotAnalysedFailsOnlyWithFailOnNotAnalysed(@TempDir Path tmp) throws Exception {
+        String model = Files.readString(Cli.ROOT.resolve("examples/mobile-base-latency.rsaml"));
+        String llf = model.replace("core=\"0\" modules", "core=\"0\" schedPolicy=\"LLF\" modules")
+                .replace("core=\"1\" modules", "core=\"1\" schedPolicy=\"LLF\" modules");
+        assertTrue(!llf.equals(model), "both processors declared LLF");
+        Files.writeString(tmp.resolve("llf.rsaml"), llf);
+        Cli.Result plain = Cli.runIn(tmp, "analyze", "llf.rsaml");
+        assertTrue(plain.out().contains("llf.rsaml: timing not analysed"), plain::toString);
+        assertEquals(0, plain.code(), () -> "by default only a possible miss fails\n" + plain);
+        for (String format : List.of("text", "json", "sarif", "junit")) {
+            Cli.Result strict = Cli.runIn(tmp, "analyze", "--fail-on", "not-analysed", "--format", format, "llf.rsaml");
+            assertEquals(1, strict.code(), () -> format + ": not proven fails with --fail-on not-analysed\n" + strict);
+            Cli.Result never = Cli.runIn(tmp, "analyze", "--fail-on", "never", "--format", format, "llf.rsaml");
+            assertEquals(0, never.code(), () -> format + ": --fail-on never\n" + never);
+        }
+        Cli.Result proven = Cli.run("analyze", "--fail-on", "not-analysed", "examples/mobile-base-latency.rsaml");
+        assertEquals(0, proven.code(), () -> "a proven model passes\n" + proven);
+        Cli.Result missed = Cli.run("analyze", "--fail-on", "never", "examples/mobile-base-latency-missed.rsaml");
+        assertEquals(0, missed.code(), () -> "--fail-on never reports a miss without failing\n" + missed);
+        Cli.Result bad = Cli.run("analyze", "--fail-on", "warning", "examples/mobile-base-latency.rsaml");
+        assertEquals(2, bad.code(), bad::toString);
+        assertTrue(bad.err().contains("expected miss, not-analysed or never"), bad::toString);
+    }
+
     @Test
     void aMissedRequirementHasItsWorstPathAsTimeline(@TempDir Path tmp) throws Exception {
         Files.copy(Cli.ROOT.resolve("examples/mobile-base-latency-missed.rsaml"), tmp.resolve("missed.rsaml"));

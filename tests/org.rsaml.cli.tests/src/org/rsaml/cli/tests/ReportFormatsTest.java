@@ -147,6 +147,73 @@ class ReportFormatsTest {
                 .getAsJsonObject("region").get("startLine").getAsInt());
     }
 
+    /**
+     * An RSA-23 finding over a 1,000-hop path: the message (text, JSON, SARIF) names the ends of the
+     * path and how many hops it has, on one readable line; JSON and SARIF keep the whole path.
+     */
+    @Test
+    void aLongWorstPathIsSummarisedInTheMessageAndWholeInJsonAndSarif(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        int hops = 1000;
+        StringBuilder xml = new StringBuilder("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rsaml:Architecture xmi:version=\"2.0\" "
+                + "xmlns:xmi=\"http://www.omg.org/XMI\" xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+                + "xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"robot\" declaredLayers=\"1\">\n  <layers name=\"functional\" level=\"0\">\n");
+        for (int i = 0; i < hops; i++) {
+            xml.append("    <modules name=\"m").append(i).append("\" execType=\"periodic\" period=\"10.0\" execDuration=\"0.001\"")
+                    .append(i == 0 ? " sensors=\"//@sensors[name='laser']\"" : "")
+                    .append(i == hops - 1 ? " actuators=\"//@actuators[name='wheels']\"" : "").append(">\n");
+            if (i > 0) {
+                xml.append("      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\"/>\n");
+            }
+            if (i < hops - 1) {
+                xml.append("      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\"/>\n");
+            }
+            xml.append("    </modules>\n");
+        }
+        xml.append("  </layers>\n");
+        for (int i = 1; i < hops; i++) {
+            xml.append("  <connections source=\"//@layers[name='functional']/@modules[name='m").append(i - 1)
+                    .append("']/@ports[name='out']\" target=\"//@layers[name='functional']/@modules[name='m").append(i)
+                    .append("']/@ports[name='in']\"/>\n");
+        }
+        xml.append("  <sensors name=\"laser\" period=\"20.0\"/>\n  <actuators name=\"wheels\" period=\"10.0\"/>\n"
+                + "  <latencyRequirements name=\"scanToWheels\" source=\"//@sensors[name='laser']\" target=\"//@actuators[name='wheels']\" maxLatency=\"50.0\"/>\n"
+                + "</rsaml:Architecture>\n");
+        Files.writeString(dir.resolve("long-path.rsaml"), xml);
+
+        Cli.Result text = Cli.runIn(dir, "validate", "long-path.rsaml");
+        List<String> rsa23 = text.outLines().stream().filter(l -> l.contains("RSA-23")).toList();
+        assertEquals(1, rsa23.size(), text::toString);
+        String line = rsa23.get(0);
+        assertTrue(line.length() < 1000, () -> "one readable line, not " + line.length() + " characters: " + line);
+        assertTrue(line.contains("functional/m0 +") && line.contains("functional/m999 +") && line.contains("992 more hops")
+                && line.contains("1000 hops"), line);
+
+        JsonObject finding = null;
+        for (var f : JsonParser.parseString(Cli.runIn(dir, "validate", "--format", "json", "long-path.rsaml").out()).getAsJsonObject()
+                .getAsJsonArray("files").get(0).getAsJsonObject().getAsJsonArray("findings")) {
+            if (f.getAsJsonObject().get("ruleId").getAsString().equals("RSA-23")) {
+                finding = f.getAsJsonObject();
+            }
+        }
+        assertTrue(finding != null, "JSON has the RSA-23 finding");
+        String detail = finding.get("detail").getAsString();
+        for (int i = 0; i < hops; i++) {
+            assertTrue(detail.contains("functional/m" + i + " +"), "JSON detail has hop " + i);
+        }
+        assertTrue(finding.get("message").getAsString().length() < 1000, "JSON message summarised");
+
+        String sarif = Cli.runIn(dir, "validate", "--format", "sarif", "long-path.rsaml").out();
+        assertEquals(Set.of(), sarifProblems(sarif));
+        boolean whole = false;
+        for (var r : JsonParser.parseString(sarif).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject().getAsJsonArray("results")) {
+            JsonObject o = r.getAsJsonObject();
+            if (o.get("ruleId").getAsString().equals("RSA-23")) {
+                whole = o.getAsJsonObject("properties").get("detail").getAsString().equals(detail);
+            }
+        }
+        assertTrue(whole, "SARIF carries the whole path in the result's properties");
+    }
+
     @Test
     void theSchemaCheckCatchesANonConformingDocument() throws Exception {
         Cli.Result r = Cli.run("validate", "--format", "sarif", "examples/exp2-defects.rsaml");

@@ -14,24 +14,24 @@ import java.util.concurrent.Callable;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
-import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.ModelFiles;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
+import org.rsaml.report.TimingFailOn;
 import org.rsaml.report.TimingJson;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
-import org.rsaml.validation.Severity;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.ParentCommand;
 import picocli.CommandLine.Spec;
@@ -43,7 +43,8 @@ import picocli.CommandLine.Model.CommandSpec;
                 "the worst-case response time of every task, utilisation and bounds; per latency requirement the worst path.",
                 "Every verdict is 'meets' (proven), 'MISSES' (with a witness) or 'not analysed' (with the reason)." },
         exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = { "0:no deadline or requirement can be missed", "1:a deadline or a latency requirement can be missed",
+        exitCodeList = { "0:no deadline or requirement can be missed (with --fail-on not-analysed: every verdict is proven)",
+                "1:a deadline or a latency requirement can be missed (with --fail-on not-analysed: or something is not analysed)",
                 "2:usage error, a model that cannot be read or analysed, or output that cannot be written" })
 final class AnalyzeCommand implements Callable<Integer> {
 
@@ -62,6 +63,11 @@ final class AnalyzeCommand implements Callable<Integer> {
                     + "an overloaded processor's demand interval (EDF), a latency requirement's worst path.")
     Path timeline;
 
+    @Option(names = "--fail-on", defaultValue = "miss", paramLabel = "LEVEL",
+            description = { "Which verdicts make the exit code 1: miss (a deadline or requirement can be missed), not-analysed",
+                    "(also a task, processor or requirement not analysed: only a proven model exits 0) or never (default: ${DEFAULT-VALUE})." })
+    String failOn;
+
     @ParentCommand
     RsamlCli parent;
 
@@ -70,17 +76,19 @@ final class AnalyzeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new ParameterException(spec.commandLine(),
+                "Invalid value for option '--fail-on': '" + failOn + "' (expected miss, not-analysed or never)"));
         if (format == Format.sarif || format == Format.junit) {
-            Report report = ModelBatch.analyze(parent.workingDirectory, paths, Severity.ERROR);
+            Report report = ModelBatch.analyze(parent.workingDirectory, paths, level.findingThreshold());
             int code = ReportArgs.emit(report, format == Format.sarif ? ReportFormat.SARIF : ReportFormat.JUNIT, Map.of(), false,
                     parent, spec);
-            return timeline == null ? code : Math.max(code, analyse(false));
+            return timeline == null ? code : Math.max(code, analyse(false, level));
         }
-        return analyse(true);
+        return analyse(true, level);
     }
 
     /** Analyses every model; with {@code print}, writes the verdicts in the text or JSON format. */
-    private int analyse(boolean print) {
+    private int analyse(boolean print, TimingFailOn level) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         int code = ExitCodes.OK;
@@ -125,7 +133,7 @@ final class AnalyzeCommand implements Callable<Integer> {
                     code = Math.max(code, ExitCodes.INPUT_ERROR);
                 }
             }
-            if (timing.verdict() == Verdict.MISSES && code == ExitCodes.OK) {
+            if (level.fails(timing.verdict()) && code == ExitCodes.OK) {
                 code = ExitCodes.FINDINGS;
             }
         }

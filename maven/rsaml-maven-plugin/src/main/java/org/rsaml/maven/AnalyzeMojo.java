@@ -23,14 +23,15 @@ import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
+import org.rsaml.report.TimingFailOn;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
-import org.rsaml.validation.Severity;
 
 /**
  * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
- * build fails when a deadline or a latency requirement can be missed; the verdicts, with their
+ * build fails when a deadline or a latency requirement can be missed (with {@code failOn} not-analysed,
+ * also when anything is not analysed; {@link TimingFailOn} decides, as for rsaml analyze); the verdicts, with their
  * witnesses, are logged, and the timing rules' findings (RSA-22 to RSA-25) are written as reports
  * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses.
  * A model that cannot be read or analysed fails the build whatever {@code failOnMiss} says, after
@@ -47,9 +48,17 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     @Parameter(property = "rsaml.timeline")
     File timeline;
 
-    /** Log the verdicts but do not fail the build on a miss. */
+    /** Log the verdicts but do not fail the build on a miss (false is {@code failOn} never). */
     @Parameter(property = "rsaml.analysis.failOnMiss", defaultValue = "true")
     boolean failOnMiss;
+
+    /**
+     * Which verdicts fail the build, as {@code rsaml analyze --fail-on} decides its exit code: {@code miss}
+     * (a deadline or a latency requirement can be missed), {@code not-analysed} (also anything not
+     * analysed: only a proven model passes) or {@code never}.
+     */
+    @Parameter(property = "rsaml.analysis.failOn", defaultValue = "miss")
+    String failOn;
 
     /** Report formats (text, json, sarif, junit) of the timing rules' findings; empty for none. */
     @Parameter(property = "rsaml.analysis.formats", defaultValue = "sarif,junit")
@@ -68,6 +77,8 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
         List<ReportFormat> reportFormats = reportFormats("formats", formats);
+        TimingFailOn level = failOnMiss ? TimingFailOn.parse(failOn).orElseThrow(() -> new MojoExecutionException(
+                "failOn is '" + failOn + "'; it is miss, not-analysed or never")) : TimingFailOn.NEVER;
         List<String> missed = new ArrayList<>();
         List<String> unanalysed = new ArrayList<>();
         for (File model : models) {
@@ -97,13 +108,13 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
                     throw new MojoExecutionException("cannot write the timeline into " + timeline + ": " + e.getMessage());
                 }
             }
-            if (timing.verdict() == Verdict.MISSES) {
-                missed.add(shown);
+            if (level.fails(timing.verdict())) {
+                missed.add(shown + (timing.verdict() == Verdict.MISSES ? "" : " (not analysed)"));
             }
         }
         if (!reportFormats.isEmpty()) {
             Path base = baseDirectory.toPath();
-            Report report = ModelBatch.analyze(base, models.stream().map(File::toPath).toList(), Severity.ERROR);
+            Report report = ModelBatch.analyze(base, models.stream().map(File::toPath).toList(), level.findingThreshold());
             writeReports(report, reportFormats, reportDirectory, format -> format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
                     : "rsaml-timing." + format.extension());
             log.info("RsaML timing findings: " + report.summary() + "; reports in "
@@ -112,8 +123,9 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
         if (!unanalysed.isEmpty()) {
             throw new MojoFailureException("RsaML timing: cannot read or analyse " + String.join(", ", unanalysed) + "; see the errors above");
         }
-        if (!missed.isEmpty() && failOnMiss) {
-            throw new MojoFailureException("RsaML timing: a deadline or a latency requirement can be missed in " + String.join(", ", missed));
+        if (!missed.isEmpty()) {
+            throw new MojoFailureException("RsaML timing: " + (level == TimingFailOn.MISS ? "a deadline or a latency requirement can be missed in "
+                    : "the timing is not proven (failOn: " + level + ") in ") + String.join(", ", missed));
         }
     }
 }
