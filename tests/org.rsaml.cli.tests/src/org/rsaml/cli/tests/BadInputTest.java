@@ -111,8 +111,9 @@ class BadInputTest {
         Files.writeString(dir.resolve("declared.rsaml"), "<?xml version=\"1.0\" " + declaration + "?>" + model.substring(model.indexOf('\n')));
         Cli.Result r = Cli.runIn(dir, "validate", "declared.rsaml");
         assertEquals(2, r.code(), r::toString);
-        // The parser reads the unterminated value up to the next quote of the file: the error is where it stopped.
-        assertTrue(r.out().matches("(?s)declared\\.rsaml:\\d+:\\d+: error: malformed XML: .*"), () -> "a located parse error\n" + r);
+        // The parser reads the unterminated value up to the next quote of the file: the error is at the
+        // declaration (an encoding it does not know) or where the parser stopped (the file ends inside it).
+        assertTrue(r.out().matches("(?s)declared\\.rsaml:[1-9]\\d*:[1-9]\\d*: error: .*"), () -> "a located error\n" + r);
         assertFalse(r.out().contains("internal error"), () -> "a fault of the file, not of RsaML\n" + r);
         assertNoStackTrace(r);
     }
