@@ -7,14 +7,14 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs="${1:-20}"
 command -v hyperfine >/dev/null || { echo "startup.sh: needs hyperfine (apt-get install hyperfine)" >&2; exit 2; }
-[ -f bundles/org.rsaml.cli/target/rsaml.jar ] || ./mvnw -q -B -DskipTests -pl bundles/org.rsaml.cli -am package
+[ -f cli/org.rsaml.cli/target/rsaml.jar ] || ./mvnw -q -B -DskipTests -pl cli/org.rsaml.cli -am package
 ./rsaml validate examples/exp2-defects.rsaml >/dev/null || true   # makes the class-data archive once (or again, if it no longer fits)
 model=examples/exp2-defects.rsaml
 out="$(mktemp)"
 hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" \
   -n 'java -version (the floor)' 'java -version' \
   -n './rsaml validate (launcher: CDS archive, tiered JIT, serial GC)' "./rsaml validate $model" \
-  -n 'java -jar rsaml.jar validate (no tuning)' "java -jar bundles/org.rsaml.cli/target/rsaml.jar validate $model" \
+  -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model" \
   -n './rsaml --version' './rsaml --version'
 python3 - "$out" <<'PY'
 import json, sys
