@@ -53,6 +53,9 @@ import org.rsaml.validation.ModelLoader;
  */
 class Ros2Test {
 
+    /** The parameters every node gets in both launch files. */
+    static final String PARAMETERS = "[{'use_sim_time': $(use_sim_time), 'rsaml.simulated_load': ParameterValue($(simulated_load), float)}]";
+
     static List<String> models() throws Exception {
         List<String> models = new ArrayList<>(Tools.cleanExamples());
         models.add("resources/names-hostile.rsaml");
@@ -122,10 +125,17 @@ class Ros2Test {
 
         // The launch files: one container with a component per module, or a process per module.
         int modules = arch.getLayers().stream().mapToInt(l -> l.getModules().size()).sum();
+        // Every module's class is a registered component, and has an executable of its own whose
+        // main() runs that class (the executable is named as the node).
         Map<String, String> plugins = new TreeMap<>();
-        Matcher reg = Pattern.compile("rclcpp_components_register_node\\(\\$\\{PROJECT_NAME\\} PLUGIN \"([\\w:]+)\" EXECUTABLE (\\w+)\\)").matcher(cmake);
-        while (reg.find()) {
-            plugins.put(reg.group(1), reg.group(2));
+        Matcher registered = Pattern.compile("rclcpp_components_register_nodes\\(\\$\\{PROJECT_NAME\\}\\s+((?:\"[\\w:]+\"\\s+)+)\\)").matcher(cmake);
+        assertTrue(registered.find(), cmake);
+        Matcher exe = Pattern.compile("add_executable\\((\\w+) (gen/\\w+/\\w+Main\\.cpp)\\)").matcher(cmake);
+        while (exe.find()) {
+            Matcher run = Pattern.compile("run_standalone<([\\w:]+)>").matcher(Files.readString(root.resolve(exe.group(2))));
+            assertTrue(run.find(), exe.group(2));
+            assertTrue(registered.group(1).contains("\"" + run.group(1) + "\""), run.group(1) + " is not registered: " + cmake);
+            plugins.put(run.group(1), exe.group(1));
         }
         assertEquals(modules, plugins.size(), cmake);
         String composed = launch(out, root.resolve("launch/" + pkg + ".launch.py"));
@@ -133,8 +143,10 @@ class Ros2Test {
         for (String started : List.of(composed, processes)) {
             assertTrue(started.contains("argument namespace ''"), started);
             assertTrue(started.contains("argument use_sim_time 'false'"), started);
+            assertTrue(started.contains("argument simulated_load '0.0'"), started);
         }
-        assertTrue(composed.contains("container rclcpp_components component_container $(namespace)"), composed);
+        assertTrue(composed.contains("container " + pkg + " " + pkg + "_component_container $(namespace)"), composed);
+        assertTrue(cmake.contains("add_executable(" + pkg + "_component_container gen/rsaml/container.cpp)"), cmake);
         assertDeployed(arch, pkg, root, composed, processes);
         List<String> components = composed.lines().filter(l -> l.startsWith("component ")).toList();
         List<String> nodes = processes.lines().filter(l -> l.startsWith("node ")).toList();
@@ -146,10 +158,10 @@ class Ros2Test {
             assertEquals(pkg, f[1]);
             assertTrue(plugins.containsKey(f[2]), "component " + f[2] + " is not registered in CMakeLists.txt");
             assertEquals("$(namespace)", f[3], c);
-            assertTrue(c.endsWith("[{'use_sim_time': $(use_sim_time)}]"), c);
+            assertTrue(c.endsWith(PARAMETERS), c);
             nodeNames.add(f[4]);
             assertTrue(nodes.stream().anyMatch(n -> n.equals("node " + pkg + " " + plugins.get(f[2]) + " $(namespace) " + f[4]
-                    + " [{'use_sim_time': $(use_sim_time)}]")), "no process for " + c + ": " + nodes);
+                    + " " + PARAMETERS)), "no process for " + c + ": " + nodes);
         }
         assertEquals(modules, nodeNames.size(), "node names are not unique: " + components);
 
@@ -188,8 +200,12 @@ class Ros2Test {
             }
         }
 
-        // A timer per periodic function, on the node's clock, its period a parameter.
+        // A timer per periodic function, on the node's clock, its period a parameter. (The
+        // scheduling runtime in gen/rsaml/ stamps its trace lines with the steady clock; its timers
+        // are the node's.)
         String all = allText(root.resolve("gen"));
+        String scheduling = Files.readString(root.resolve("gen/rsaml/scheduling.hpp"));
+        assertTrue(scheduling.contains("rclcpp::create_timer(\n        this, this->get_clock(),"), scheduling);
         assertFalse(all.contains("create_wall_timer"), "a wall timer ignores use_sim_time");
         assertFalse(all.contains("steady_clock"), "steady_clock ignores use_sim_time");
         assertTrue(all.contains("publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();"));
@@ -201,8 +217,8 @@ class Ros2Test {
                         Matcher p = Pattern.compile("(timer_release_\\w+)_period_ = positive\\(\"([\\w.]+)\", this->declare_parameter<std::int64_t>\\(\"\\2\", "
                                 + ns + "\\)\\);").matcher(all);
                         assertTrue(p.find(), "no period parameter for " + f.getName() + " (" + ns + " ns)");
-                        assertTrue(all.contains(p.group(1) + "_ = rclcpp::create_timer(this, this->get_clock(), rclcpp::Duration::from_nanoseconds("
-                                + p.group(1) + "_period_)"), "no timer on the node's clock for " + f.getName());
+                        assertTrue(all.contains(p.group(1) + "_ = this->rsaml_add_timer("), "no timer for " + f.getName());
+                        assertTrue(all.contains(p.group(1) + "_period_, [this]"), "the timer of " + f.getName() + " does not take its period parameter");
                     }
                 }
             }
@@ -292,7 +308,7 @@ class Ros2Test {
     private static final Pattern NODE = Pattern.compile("\\* Node (\\w+): module (.+?)(?:: .*)?$", Pattern.MULTILINE);
 
     /** Node name of each module (layer/module, the model's names), as its generated base class says. */
-    private static Map<String, String> nodes(Path root) throws Exception {
+    static Map<String, String> nodes(Path root) throws Exception {
         Map<String, String> nodes = new TreeMap<>();
         for (Path p : bases(root)) {
             Matcher m = NODE.matcher(Files.readString(p));
@@ -336,7 +352,8 @@ class Ros2Test {
     private static String allText(Path dir) throws Exception {
         StringBuilder sb = new StringBuilder();
         try (Stream<Path> s = Files.walk(dir)) {
-            for (Path p : s.filter(f -> f.toString().endsWith(".hpp") || f.toString().endsWith(".cpp")).sorted().toList()) {
+            for (Path p : s.filter(f -> f.toString().endsWith(".hpp") || f.toString().endsWith(".cpp"))
+                    .filter(f -> !f.getParent().getFileName().toString().equals("rsaml")).sorted().toList()) {
                 sb.append(Files.readString(p)).append('\n');
             }
         }

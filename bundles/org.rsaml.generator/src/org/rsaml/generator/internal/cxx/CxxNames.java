@@ -37,6 +37,9 @@ public final class CxxNames {
      */
     private static final String[] CLASS_RESERVED = { "name", "system", "on_start", "publish_outputs", "run_action",
             "begin_reaction", "trace", "react", "due", "Module", "Node", "options", "publish",
+            // the ROS 2 target's ScheduledNode
+            "ScheduledNode", "rsaml_ros2", "rsaml_of", "rsaml_core", "rsaml_releases", "rsaml_add_release",
+            "rsaml_add_timer", "rsaml_add_arrivals", "rsaml_run_job", "rsaml_run_arrival",
             // rclcpp::Node
             "get_name", "get_namespace", "get_fully_qualified_name", "get_logger", "create_callback_group",
             "get_callback_groups", "for_each_callback_group", "create_publisher", "create_subscription",

@@ -71,6 +71,7 @@ public final class Ros2Names {
 
     private final String interfacesPackage;
     private final Map<PlannedModule, String> executables = new IdentityHashMap<>();
+    private final String containerExecutable;
     private final Map<PlannedPort, String> topics = new IdentityHashMap<>();
     private final Map<String, RosMessage> messages = new LinkedHashMap<>();
     private final Map<PlannedPort, Boolean> sensorTopics = new IdentityHashMap<>();
@@ -129,6 +130,7 @@ public final class Ros2Names {
         if (unallocated != null) {
             containers.add(unallocated);
         }
+        containerExecutable = executableScope.allocate(names.project() + "_component_container");
         NameScope messageScope = new NameScope(true);
         for (String key : plan.messageTypes()) {
             messages.put(key, new RosMessage(interfacesPackage, key, messageScope));
@@ -224,6 +226,11 @@ public final class Ros2Names {
 
     public String executable(PlannedModule m) {
         return executables.get(m);
+    }
+
+    /** The package's component container executable, which schedules the nodes' releases as analysed. */
+    public String containerExecutable() {
+        return containerExecutable;
     }
 
     /** The component containers the package's launch file starts, each with at least one node. */

@@ -26,7 +26,10 @@ import org.rsaml.generator.spi.TargetGenerator
  * relative topics (connected ports share one), a timer per timed release on the node's clock, the
  * model's times as parameters, subsumption links as extra subscriptions, and launch files for one
  * process or a process per node; plus an interfaces package for the structured message types the
- * model names without a ROS package. Same generation gap as the C++ target: gen/ and the build
+ * model names without a ROS package. The nodes derive from the scheduling runtime (gen/rsaml/, the
+ * files runtime/ros2/rsaml/* of this bundle): each timed release on an executor thread of its own at
+ * the analysis's real-time priority, in the package's component container or a node's own process.
+ * Same generation gap as the C++ target: gen/ and the build
  * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
  */
 class Ros2Target implements TargetGenerator {
@@ -85,9 +88,13 @@ class Ros2Files {
 		files += GeneratedFile.user(pkg + "/user.cmake", userCmake)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launchComposed)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launchProcesses)
+		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {
+			files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
+		}
 		for (m : plan.modules) {
 			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", base(m))
 			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.className + "Component.cpp", component(m))
+			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.mainName + ".cpp", nodeMain(m))
 			files += GeneratedFile.user(pkg + "/src/" + m.layerId + "/" + m.className + ".hpp", userHeader(m), m.hooks, m.stubs, CxxCode.IDENTIFIERS)
 			files += GeneratedFile.user(pkg + "/src/" + m.layerId + "/" + m.className + ".cpp", userSource(m))
 		}
@@ -116,6 +123,21 @@ class Ros2Files {
 		}
 		files += GeneratedFile.user("README.md", readme)
 		files
+	}
+
+	/**
+	 * A file of the scheduling runtime (runtime/ros2/rsaml/ of this bundle), in the package's
+	 * namespace, so that the libraries of two packages can share a process.
+	 */
+	def private runtimeFile(String file) {
+		val in = Ros2Target.getResourceAsStream("/runtime/ros2/rsaml/" + file)
+		if (in === null) {
+			throw new IllegalStateException("the ROS 2 runtime file " + file + " is missing from org.rsaml.generator")
+		}
+		val text = try new String(in.readAllBytes, java.nio.charset.StandardCharsets.UTF_8) finally in.close
+		"// " + banner + "\n" + text.replace("namespace rsaml_ros2 {", "namespace " + names.project + "::rsaml_ros2 {")
+			.replace("}  // namespace rsaml_ros2", "}  // namespace " + names.project + "::rsaml_ros2")
+			.replace("rsaml_ros2::Container", names.project + "::rsaml_ros2::Container")
 	}
 
 	/** The architect's package.user.xml of a package, or the defaults it starts with. */
@@ -291,27 +313,40 @@ class Ros2Files {
 		find_package(ament_cmake REQUIRED)
 		find_package(rclcpp REQUIRED)
 		find_package(rclcpp_components REQUIRED)
+		find_package(Threads REQUIRED)
 		«FOR p : messagePackages»
 			find_package(«p» REQUIRED)
 		«ENDFOR»
 
 		add_library(${PROJECT_NAME} SHARED
+		  gen/rsaml/scheduling.cpp
 		  «FOR m : plan.modules»
 		  	gen/«m.layerId»/«m.className»Component.cpp
 		  	src/«m.layerId»/«m.className».cpp
 		  «ENDFOR»
 		)
-		target_include_directories(${PROJECT_NAME} PRIVATE gen src)
-		target_link_libraries(${PROJECT_NAME} PRIVATE rclcpp::rclcpp rclcpp_components::component«FOR p : messagePackages» ${«p»_TARGETS}«ENDFOR»)
+		target_include_directories(${PROJECT_NAME} PUBLIC gen src)
+		target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp Threads::Threads«FOR p : messagePackages» ${«p»_TARGETS}«ENDFOR» PRIVATE rclcpp_components::component)
+		rclcpp_components_register_nodes(${PROJECT_NAME}
+		  «FOR m : plan.modules»
+		  	"«plugin(m)»"
+		  «ENDFOR»
+		)
 
+		# The component container of the launch file: each timed release on a thread at its priority.
+		add_executable(«rosNames.containerExecutable» gen/rsaml/container.cpp)
+		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
+
+		# An executable per node, scheduled as in the container.
 		«FOR m : plan.modules»
-			# Node «doc(m.qualifiedName)»
-			rclcpp_components_register_node(${PROJECT_NAME} PLUGIN "«plugin(m)»" EXECUTABLE «m.executable»)
+			add_executable(«m.executable» gen/«m.layerId»/«m.mainName».cpp)
+			target_link_libraries(«m.executable» PRIVATE ${PROJECT_NAME})
 		«ENDFOR»
 
 		include(user.cmake)
 
 		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
+		install(TARGETS «rosNames.containerExecutable»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
 		install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
 
 		ament_package()
@@ -341,11 +376,15 @@ class Ros2Files {
 		                      description='Namespace of every node and topic (a second robot: another namespace)'),
 		DeclareLaunchArgument('use_sim_time', default_value='false',
 		                      description='Run the nodes on the simulation clock (/clock)'),
+		DeclareLaunchArgument('simulated_load', default_value='0.0',
+		                      description='Busy work of every timed job, as a fraction (0 to 1) of its modeled execution time'),
 	'''
 
 	def private launchComposed() '''
 		# «banner»
-		# Starts every module of the architecture as an rclcpp component in a component container:
+		# Starts every module of the architecture as an rclcpp component in a component container
+		# («rosNames.containerExecutable»: each timed release on an executor thread of its own at the timing
+		# analysis's real-time priority, data arrivals on the main executor; see the README):
 		«IF rosNames.containers.exists[processor !== null]»
 		# one container (one process) per processor of the model's deployment, pinned with taskset to
 		# the processor's core where the model names one«IF rosNames.containers.exists[processor === null]», and one for the modules no processor names«ENDIF».
@@ -353,17 +392,20 @@ class Ros2Files {
 		# all in one process.
 		«ENDIF»
 		# «pkg»_processes.launch.py starts a process per node instead. Arguments:
-		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true.
+		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true, simulated_load:=0.9 (every
+		# timed job busy-works 90 % of its modeled execution time).
 		from launch import LaunchDescription
 		from launch.actions import DeclareLaunchArgument
 		from launch.substitutions import LaunchConfiguration
 		from launch_ros.actions import ComposableNodeContainer
 		from launch_ros.descriptions import ComposableNode
+		from launch_ros.parameter_descriptions import ParameterValue
 
 
 		def generate_launch_description():
 		    namespace = LaunchConfiguration('namespace')
-		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time')}]
+		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time'),
+		                   'rsaml.simulated_load': ParameterValue(LaunchConfiguration('simulated_load'), value_type=float)}]
 		    return LaunchDescription([
 		        «launchArguments»
 		        «FOR c : rosNames.containers»
@@ -373,8 +415,8 @@ class Ros2Files {
 		        	# The modules no processor names.
 		        	«ENDIF»
 		        	ComposableNodeContainer(
-		        	    name=«py(c.name)», namespace=namespace, package='rclcpp_components',
-		        	    executable='component_container', output='screen', parameters=parameters,«IF c.core >= 0»
+		        	    name=«py(c.name)», namespace=namespace, package=«py(pkg)»,
+		        	    executable=«py(rosNames.containerExecutable)», output='screen', parameters=parameters,«IF c.core >= 0»
 		        	    prefix=«py(taskset(c.core))»,«ENDIF»
 		        	    composable_node_descriptions=[
 		        	        «FOR m : c.modules»
@@ -401,16 +443,19 @@ class Ros2Files {
 		# «banner»
 		# Starts every module of the architecture as a node in a process of its own«IF rosNames.containers.exists[core >= 0]», pinned with
 		# taskset to the core of its processor where the model names one«ENDIF». Arguments:
-		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true.
+		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true, simulated_load:=0.9 (every
+		# timed job busy-works 90 % of its modeled execution time).
 		from launch import LaunchDescription
 		from launch.actions import DeclareLaunchArgument
 		from launch.substitutions import LaunchConfiguration
 		from launch_ros.actions import Node
+		from launch_ros.parameter_descriptions import ParameterValue
 
 
 		def generate_launch_description():
 		    namespace = LaunchConfiguration('namespace')
-		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time')}]
+		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time'),
+		                   'rsaml.simulated_load': ParameterValue(LaunchConfiguration('simulated_load'), value_type=float)}]
 		    return LaunchDescription([
 		        «launchArguments»
 		        «FOR m : plan.modules»
@@ -463,6 +508,7 @@ class Ros2Files {
 		#include <string>
 
 		#include <rclcpp/rclcpp.hpp>
+		#include "rsaml/scheduling.hpp"
 		«FOR h : headersOf(m)»
 			#include <«h»>
 		«ENDFOR»
@@ -478,10 +524,10 @@ class Ros2Files {
 		 * overridden with the qos_overrides.<topic> parameters; timers run on the node's clock
 		 * (use_sim_time).
 		 */
-		class «m.baseName» : public rclcpp::Node {
+		class «m.baseName» : public ::«names.project»::rsaml_ros2::ScheduledNode {
 		 public:
 		  explicit «m.baseName»(const rclcpp::NodeOptions& options)
-		      : rclcpp::Node(«str(m.rosNode)», options) {
+		      : ::«names.project»::rsaml_ros2::ScheduledNode(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
 		    «FOR r : m.releases»
 		    	«r.timerMember»_period_ = positive(«str(r.periodParameter)», this->declare_parameter<std::int64_t>(«str(r.periodParameter)», «r.periodNs»));
 		    «ENDFOR»
@@ -506,27 +552,32 @@ class Ros2Files {
 		    «FOR p : m.inputs»
 		    	«p.subName»_ = this->create_subscription<«p.rosType»>(
 		    	    «str(p.topic)», «p.qos»,
-		    	    [this](std::shared_ptr<const «p.rosType»> message) { this->«p.receiveName»(*message, false); },
+		    	    [this, port = this->rsaml_add_arrivals(«str(p.name)»)](std::shared_ptr<const «p.rosType»> message) {
+		    	      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(*message, false); });
+		    	    },
 		    	    subscription_options);
 		    «ENDFOR»
 		    «FOR l : linksOf(m)»
 		    	// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «doc(l.trigger.qualifiedName)».
 		    	link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
 		    	    «str(l.trigger.topic)», «l.trigger.qos»,
-		    	    [this](std::shared_ptr<const «l.trigger.rosType»> message) {
-		    	      link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
-		    	      «IF l.deliversData»
-		    	      	this->«l.target.receiveName»(*message, true);
-		    	      «ELSE»
-		    	      	(void)message;
-		    	      «ENDIF»
+		    	    [this, port = this->rsaml_add_arrivals(«str(l.qualifiedName)»)](std::shared_ptr<const «l.trigger.rosType»> message) {
+		    	      this->rsaml_run_arrival(port, [&] {
+		    	        link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
+		    	        «IF l.deliversData»
+		    	        	this->«l.target.receiveName»(*message, true);
+		    	        «ELSE»
+		    	        	(void)message;
+		    	        «ENDIF»
+		    	      });
 		    	    },
 		    	    subscription_options);
 		    «ENDFOR»
 		    «FOR r : m.releases»
-		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»)
-		    	«r.timerMember»_ = rclcpp::create_timer(this, this->get_clock(), rclcpp::Duration::from_nanoseconds(«r.timerMember»_period_),
-		    	                                  [this] { this->«r.method»(); });
+		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank», deadline «r.deadlineNs» ns, cost «r.costNs» ns
+		    	«r.timerMember»_ = this->rsaml_add_timer(
+		    	    this->rsaml_add_release(«str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs»),
+		    	    «r.timerMember»_period_, [this] { this->«r.method»(); });
 		    «ENDFOR»
 		  }
 		  «IF !m.inputs.empty»
@@ -695,6 +746,17 @@ class Ros2Files {
 		RCLCPP_COMPONENTS_REGISTER_NODE(«plugin(m)»)
 	'''
 
+	def private nodeMain(PlannedModule m) '''
+		// «banner»
+		// Executable «m.executable»: node «doc(m.rosNode)» in a process of its own, each timed release on an
+		// executor thread of its own at its real-time priority (rsaml/scheduling.hpp).
+		#include "«m.layerId»/«m.className».hpp"
+
+		int main(int argc, char** argv) {
+		  return ::«names.project»::rsaml_ros2::run_standalone<«plugin(m)»>(argc, argv);
+		}
+	'''
+
 	def private userHeader(PlannedModule m) '''
 		// Node for module «doc(m.qualifiedName)»«described(m.description)»
 		// «Templates.USER_OWNED» The generated base class («m.baseName», in
@@ -777,10 +839,21 @@ class Ros2Files {
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
 		«FOR c : rosNames.containers SEPARATOR ", "»`«c.name»` («IF c.processor === null»the modules no processor names«ELSE»processor '«doc(c.processor.name)»'«IF c.core >= 0», core «c.core»«ENDIF»«ENDIF»)«ENDFOR».
 		Processes of a processor with a core are started under `taskset -c CORE` (util-linux), in both
-		launch files; on a machine without that core they start unpinned and say so. A container runs its nodes' callbacks one at a time (ROS 2's single-threaded
-		executor) in the order they become ready, without the fixed priorities of RsaML's C++ runtime:
-		the timing analysis (`rsaml analyze`) describes the C++ runtime, not this executor.
+		launch files; on a machine without that core they start unpinned and say so.
 		«ENDIF»
+
+		The nodes are scheduled as `rsaml analyze` assumes: in the container `«rosNames.containerExecutable»`
+		(and in each node's own executable) every timed release has a callback group of its own, served
+		by a single-threaded executor on a thread of its own under `SCHED_FIFO` (`SCHED_RR` for round
+		robin) at the analysis's rank, pinned to its processor's core; data arrivals and ROS 2's services
+		run on the process's main executor at the default priority, and a node's activations hold its
+		lock, so they never run at once. Where real-time priorities are not permitted (neither root nor
+		`CAP_SYS_NICE` nor an `rtprio` limit), each release thread says so on standard output and runs at
+		the default priority: then the analysis's verdicts do not hold. Every node measures its jobs
+		(release to completion, on the node's clock), prints `miss` and `overrun` lines as they happen
+		and a `summary` line per release and per entry port at exit. The parameter
+		`rsaml.simulated_load:=0.9` makes every job busy-work 90 % of its modeled execution time, to see
+		the timing before the code is written.
 
 		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
 		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`

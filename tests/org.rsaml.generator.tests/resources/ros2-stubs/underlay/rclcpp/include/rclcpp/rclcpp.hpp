@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <map>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -126,7 +127,28 @@ class Subscription {
   using SharedPtr = std::shared_ptr<Subscription<MessageT>>;
 };
 
-// rclcpp/timer.hpp
+// rclcpp/callback_group.hpp
+enum class CallbackGroupType { MutuallyExclusive, Reentrant };
+
+class CallbackGroup {
+ public:
+  using SharedPtr = std::shared_ptr<CallbackGroup>;
+  CallbackGroup(CallbackGroupType group_type, bool automatically_add_to_executor_with_node = true)
+      : type_(group_type), automatic_(automatically_add_to_executor_with_node) {}
+  CallbackGroupType type() const { return type_; }
+  bool automatically_add_to_executor_with_node() const { return automatic_; }
+
+ private:
+  CallbackGroupType type_;
+  bool automatic_;
+};
+
+// rclcpp/timer.hpp (Jazzy and later: a callback may take the call's times)
+struct TimerInfo {
+  Time expected_call_time;
+  Time actual_call_time;
+};
+
 class TimerBase {
  public:
   using SharedPtr = std::shared_ptr<TimerBase>;
@@ -206,6 +228,11 @@ class Node : public std::enable_shared_from_this<Node> {
     return default_value;
   }
 
+  CallbackGroup::SharedPtr create_callback_group(CallbackGroupType group_type,
+                                                bool automatically_add_to_executor_with_node = true) {
+    return std::make_shared<CallbackGroup>(group_type, automatically_add_to_executor_with_node);
+  }
+
   Clock::SharedPtr get_clock() { return clock_; }
   std::shared_ptr<node_interfaces::NodeBaseInterface> get_node_base_interface() { return nullptr; }
   std::shared_ptr<node_interfaces::NodeTimersInterface> get_node_timers_interface() { return nullptr; }
@@ -217,10 +244,14 @@ class Node : public std::enable_shared_from_this<Node> {
 
 // rclcpp/create_timer.hpp: a timer on the given clock (the node's follows use_sim_time).
 template <typename NodeT, typename CallbackT>
-TimerBase::SharedPtr create_timer(NodeT node, Clock::SharedPtr clock, Duration period, CallbackT&& callback) {
+TimerBase::SharedPtr create_timer(NodeT node, Clock::SharedPtr clock, Duration period, CallbackT&& callback,
+                                  CallbackGroup::SharedPtr group = nullptr, bool autostart = true) {
   static_assert(std::is_convertible_v<NodeT, Node*> || std::is_convertible_v<NodeT, std::shared_ptr<Node>>,
                 "create_timer takes the node");
-  static_assert(std::is_invocable_v<CallbackT>, "timer callback takes no argument");
+  static_assert(std::is_invocable_v<CallbackT> || std::is_invocable_v<CallbackT, const TimerInfo&>,
+                "timer callback takes nothing or the timer's call times");
+  (void)group;
+  (void)autostart;
   // As rclcpp, through the node's interfaces.
   std::shared_ptr<node_interfaces::NodeBaseInterface> base = node->get_node_base_interface();
   std::shared_ptr<node_interfaces::NodeTimersInterface> timers = node->get_node_timers_interface();
@@ -239,5 +270,37 @@ inline void init(int argc, char const* const* argv) {
 }
 inline void spin(std::shared_ptr<Node> node) { (void)node; }
 inline bool shutdown() { return true; }
+inline bool ok() { return false; }
+
+// rclcpp/executor.hpp
+class Executor {
+ public:
+  using SharedPtr = std::shared_ptr<Executor>;
+  virtual ~Executor() = default;
+  void add_callback_group(CallbackGroup::SharedPtr group_ptr,
+                          std::shared_ptr<node_interfaces::NodeBaseInterface> node_ptr, bool notify = true) {
+    (void)group_ptr;
+    (void)node_ptr;
+    (void)notify;
+  }
+  void add_node(std::shared_ptr<Node> node_ptr, bool notify = true) {
+    (void)node_ptr;
+    (void)notify;
+  }
+  virtual void spin() = 0;
+  void cancel() {}
+  bool is_spinning() { return false; }
+};
+
+namespace executors {
+class SingleThreadedExecutor : public Executor {
+ public:
+  void spin() override {}
+};
+class MultiThreadedExecutor : public Executor {
+ public:
+  void spin() override {}
+};
+}  // namespace executors
 
 }  // namespace rclcpp

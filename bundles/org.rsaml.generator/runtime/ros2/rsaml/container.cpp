@@ -1,0 +1,63 @@
+// The component container of a processor: as rclcpp_components' component_container (a
+// single-threaded executor for ROS 2's services and the nodes' data arrivals), and each timed
+// release of a node of this package on an executor thread of its own at its real-time priority
+// (rsaml/scheduling.hpp). Components of other packages run on the main executor.
+#include <map>
+#include <memory>
+
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp_components/component_manager.hpp>
+
+#include "rsaml/scheduling.hpp"
+
+namespace rsaml_ros2 {
+namespace {
+
+class Container : public rclcpp_components::ComponentManager {
+ public:
+  using rclcpp_components::ComponentManager::ComponentManager;
+
+  ~Container() override {
+    for (auto& s : schedulers_) {
+      s.second->stop();
+    }
+  }
+
+ protected:
+  void add_node_to_executor(std::uint64_t node_id) override {
+    rclcpp_components::ComponentManager::add_node_to_executor(node_id);
+    ScheduledNode* node = ScheduledNode::rsaml_of(node_wrappers_[node_id].get_node_base_interface().get());
+    if (node != nullptr) {
+      auto scheduler = std::make_unique<Scheduler>();
+      scheduler->add(*node);
+      schedulers_[node_id] = std::move(scheduler);
+    }
+  }
+
+  void remove_node_from_executor(std::uint64_t node_id) override {
+    auto found = schedulers_.find(node_id);
+    if (found != schedulers_.end()) {
+      found->second->stop();
+      schedulers_.erase(found);
+    }
+    rclcpp_components::ComponentManager::remove_node_from_executor(node_id);
+  }
+
+ private:
+  std::map<std::uint64_t, std::unique_ptr<Scheduler>> schedulers_;
+};
+
+}  // namespace
+}  // namespace rsaml_ros2
+
+int main(int argc, char* argv[]) {
+  rclcpp::init(argc, argv);
+  {
+    auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
+    auto container = std::make_shared<rsaml_ros2::Container>(executor);
+    executor->add_node(container);
+    executor->spin();
+  }
+  rclcpp::shutdown();
+  return 0;
+}

@@ -1,0 +1,228 @@
+#include "rsaml/scheduling.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <stdexcept>
+#include <unordered_map>
+
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
+
+namespace rsaml_ros2 {
+
+namespace {
+
+const std::chrono::steady_clock::time_point trace_start = std::chrono::steady_clock::now();
+std::mutex trace_mutex;
+std::mutex registry_mutex;
+std::unordered_map<const rclcpp::node_interfaces::NodeBaseInterface*, ScheduledNode*> registry;
+
+std::string ms(std::int64_t ns) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", static_cast<double>(ns) / 1e6);
+  return text;
+}
+
+std::int64_t thread_cpu_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<std::int64_t>(t.tv_sec) * 1000000000LL + t.tv_nsec;
+}
+
+/** Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority. */
+void place(const Release& release, int core) {
+#if defined(__linux__)
+  if (core >= 0) {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    bool pinned = false;
+    if (core < CPU_SETSIZE) {
+      CPU_SET(core, &set);
+      pinned = pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0;
+    }
+    trace("cpu " + release.label + " core " + std::to_string(core) + (pinned ? "" : " not available: default"));
+  }
+  const int policy = release.round_robin ? SCHED_RR : SCHED_FIFO;
+  const int low = sched_get_priority_min(policy);
+  const int high = sched_get_priority_max(policy);
+  sched_param param{};
+  param.sched_priority = std::min(low + release.rank, high);
+  const int error = low < 0 || high < low ? EINVAL : pthread_setschedparam(pthread_self(), policy, &param);
+  if (error == 0) {
+    trace("sched " + release.label + (release.round_robin ? " SCHED_RR" : " SCHED_FIFO") + " rank " + std::to_string(release.rank));
+  } else {
+    trace("sched " + release.label + " default: real-time priority not permitted (" + std::strerror(error) +
+          "); it runs at the default priority and the timing analysis's verdicts do not hold (give the process"
+          " CAP_SYS_NICE or an rtprio limit, e.g. ulimit -r 99)");
+  }
+#else
+  (void)core;
+  trace("sched " + release.label + " default: not supported on this platform");
+#endif
+}
+
+}  // namespace
+
+void trace(const std::string& text) {
+  const double at = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - trace_start).count();
+  std::lock_guard<std::mutex> lock(trace_mutex);
+  std::fprintf(stdout, "[%10.3f ms] %s\n", at, text.c_str());
+  std::fflush(stdout);
+}
+
+ScheduledNode::ScheduledNode(const std::string& name, const rclcpp::NodeOptions& options, std::string module, int core)
+    : rclcpp::Node(name, options), module_(std::move(module)), core_(core) {
+  simulated_load_ = this->declare_parameter<double>("rsaml.simulated_load", 0.0);
+  if (!(simulated_load_ >= 0.0 && simulated_load_ <= 1.0)) {
+    throw std::invalid_argument("parameter rsaml.simulated_load must be a fraction from 0 to 1 of the modeled execution time");
+  }
+  started_ = this->now();
+  std::lock_guard<std::mutex> lock(registry_mutex);
+  registry[this->get_node_base_interface().get()] = this;
+}
+
+ScheduledNode::~ScheduledNode() {
+  {
+    std::lock_guard<std::mutex> lock(registry_mutex);
+    registry.erase(this->get_node_base_interface().get());
+  }
+  std::lock_guard<std::mutex> lock(stats_);
+  for (const Release& r : releases_) {
+    trace("summary " + r.label + " jobs " + std::to_string(r.jobs) + " released " +
+          (r.jobs > 0 ? ms(r.first_release_ns) + ".." + ms(r.last_release_ns) : std::string("none")) + " ms worst-response " +
+          ms(r.worst_response_ns) + " ms worst-execution " + ms(r.worst_execution_ns) + " ms worst-latency " + ms(r.worst_latency_ns) + " ms deadline " + ms(r.deadline_ns) +
+          " ms cost " + ms(r.cost_ns) + " ms misses " + std::to_string(r.misses) + " overruns " + std::to_string(r.overruns));
+  }
+  for (const Arrivals& a : arrivals_) {
+    trace("summary " + module_ + ":" + a.port + " messages " + std::to_string(a.messages) + " received " +
+          (a.messages > 0 ? ms(a.first_ns) + ".." + ms(a.last_ns) : std::string("none")) + " ms");
+  }
+}
+
+ScheduledNode* ScheduledNode::rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base) {
+  std::lock_guard<std::mutex> lock(registry_mutex);
+  auto found = registry.find(base);
+  return found == registry.end() ? nullptr : found->second;
+}
+
+std::size_t ScheduledNode::rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns,
+                                       std::int64_t cost_ns) {
+  Release r;
+  r.label = label;
+  r.rank = rank;
+  r.round_robin = round_robin;
+  r.deadline_ns = deadline_ns;
+  r.cost_ns = cost_ns;
+  r.group = this->create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);
+  releases_.push_back(std::move(r));
+  return releases_.size() - 1;
+}
+
+std::size_t ScheduledNode::rsaml_add_arrivals(const std::string& port) {
+  Arrivals a;
+  a.port = port;
+  arrivals_.push_back(std::move(a));
+  return arrivals_.size() - 1;
+}
+
+void ScheduledNode::busy(std::int64_t cpu_ns) const {
+  const std::int64_t until = thread_cpu_ns() + cpu_ns;
+  while (thread_cpu_ns() < until) {
+  }
+}
+
+void ScheduledNode::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
+                                  const std::function<void()>& body) {
+  Release& r = releases_[release];
+  std::int64_t execution = 0;
+  {
+    std::lock_guard<std::mutex> lock(activation_);
+    const std::int64_t cpu = thread_cpu_ns();
+    if (simulated_load_ > 0.0 && r.cost_ns > 0) {
+      busy(static_cast<std::int64_t>(static_cast<double>(r.cost_ns) * simulated_load_));
+    }
+    body();
+    execution = thread_cpu_ns() - cpu;
+  }
+  const std::int64_t response = (this->now() - released).nanoseconds();
+  const std::int64_t latency = (called - released).nanoseconds();
+  const std::int64_t at = (released - started_).nanoseconds();
+  bool missed = false;
+  bool overran = false;
+  {
+    std::lock_guard<std::mutex> lock(stats_);
+    ++r.jobs;
+    if (r.first_release_ns < 0) {
+      r.first_release_ns = at;
+    }
+    r.last_release_ns = at;
+    r.worst_response_ns = std::max(r.worst_response_ns, response);
+    r.worst_execution_ns = std::max(r.worst_execution_ns, execution);
+    r.worst_latency_ns = std::max(r.worst_latency_ns, latency);
+    missed = r.deadline_ns > 0 && response > r.deadline_ns;
+    overran = r.cost_ns > 0 && execution > r.cost_ns;
+    r.misses += missed ? 1 : 0;
+    r.overruns += overran ? 1 : 0;
+  }
+  if (missed) {
+    trace("miss " + r.label + " released " + ms(at) + " ms response " + ms(response) + " ms deadline " + ms(r.deadline_ns) + " ms");
+  }
+  if (overran) {
+    trace("overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution) + " ms modeled " + ms(r.cost_ns) + " ms");
+  }
+}
+
+void ScheduledNode::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
+  {
+    std::lock_guard<std::mutex> lock(activation_);
+    body();
+  }
+  const std::int64_t at = (this->now() - started_).nanoseconds();
+  std::lock_guard<std::mutex> lock(stats_);
+  Arrivals& a = arrivals_[port];
+  ++a.messages;
+  if (a.first_ns < 0) {
+    a.first_ns = at;
+  }
+  a.last_ns = at;
+}
+
+Scheduler::~Scheduler() { stop(); }
+
+void Scheduler::add(ScheduledNode& node) {
+  for (Release& r : node.rsaml_releases()) {
+    auto worker = std::make_unique<Worker>();
+    auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
+    executor->add_callback_group(r.group, node.get_node_base_interface());
+    worker->executor = executor;
+    const Release* release = &r;
+    const int core = node.rsaml_core();
+    worker->thread = std::thread([executor, release, core] {
+      place(*release, core);
+      executor->spin();
+    });
+    workers_.push_back(std::move(worker));
+  }
+}
+
+void Scheduler::stop() {
+  for (auto& w : workers_) {
+    while (!w->executor->is_spinning() && rclcpp::ok()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    w->executor->cancel();
+  }
+  for (auto& w : workers_) {
+    if (w->thread.joinable()) {
+      w->thread.join();
+    }
+  }
+  workers_.clear();
+}
+
+}  // namespace rsaml_ros2

@@ -1,0 +1,166 @@
+// Scheduling of the nodes of an RsaML architecture as its timing analysis assumes (docs/timing.md):
+// each timed release in a callback group of its own, served by an executor thread of its own at the
+// release's real-time priority (SCHED_FIFO or SCHED_RR, the analysis's rank) on the processor's core;
+// data arrivals (reactions, input handlers) and ROS 2's own services on the process's main executor
+// at the default priority. Every job is measured (release to completion) and reported.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <rclcpp/rclcpp.hpp>
+#include <rclcpp/version.h>
+
+namespace rsaml_ros2 {
+
+/** Prints one trace line, "[   12.345 ms] text", ms since the process started; flushed at once. */
+void trace(const std::string& text);
+
+/** A timed release of a node and what was observed of its jobs. */
+struct Release {
+  std::string label;
+  int rank = 1;
+  bool round_robin = false;
+  std::int64_t deadline_ns = 0;
+  std::int64_t cost_ns = 0;
+  rclcpp::CallbackGroup::SharedPtr group;
+  std::uint64_t jobs = 0;
+  std::uint64_t misses = 0;
+  std::uint64_t overruns = 0;
+  std::int64_t worst_response_ns = 0;
+  std::int64_t worst_execution_ns = 0;
+  std::int64_t worst_latency_ns = 0;
+  std::int64_t first_release_ns = -1;
+  std::int64_t last_release_ns = -1;
+};
+
+/** Messages received at one entry port. */
+struct Arrivals {
+  std::string port;
+  std::uint64_t messages = 0;
+  std::int64_t first_ns = -1;
+  std::int64_t last_ns = -1;
+};
+
+/**
+ * The base of every generated node: its releases, the lock its activations hold (the module's
+ * lock of the analysis: a release and a reaction of one node never run at once) and the
+ * measurements it prints at exit.
+ */
+class ScheduledNode : public rclcpp::Node {
+ public:
+  ScheduledNode(const std::string& name, const rclcpp::NodeOptions& options, std::string module, int core);
+  ~ScheduledNode() override;
+  ScheduledNode(const ScheduledNode&) = delete;
+  ScheduledNode& operator=(const ScheduledNode&) = delete;
+
+  /** The node of a node base interface, when it is a generated node of this package; else null. */
+  static ScheduledNode* rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base);
+
+  /** The CPU core of the node's processor, or -1. */
+  int rsaml_core() const { return core_; }
+  std::deque<Release>& rsaml_releases() { return releases_; }
+
+ protected:
+  /** A release at `rank`: its callback group, which only its own executor thread serves. */
+  std::size_t rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns, std::int64_t cost_ns);
+  /**
+   * The timer of a release, on the node's clock, in the release's group: each job runs `body`
+   * through rsaml_run_job(), released at the timer's expected call time (ROS 2 Jazzy and later; before,
+   * at the time the callback starts, and the release latency is not measured).
+   */
+  template <typename BodyT>
+  rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {
+#if RCLCPP_VERSION_GTE(28, 0, 0)
+    return rclcpp::create_timer(
+        this, this->get_clock(), rclcpp::Duration::from_nanoseconds(period_ns),
+        [this, release, body](const rclcpp::TimerInfo& info) {
+          this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
+        },
+        releases_[release].group);
+#else
+    return rclcpp::create_timer(
+        this, this->get_clock(), rclcpp::Duration::from_nanoseconds(period_ns),
+        [this, release, body]() {
+          const rclcpp::Time now = this->now();
+          this->rsaml_run_job(release, now, now, body);
+        },
+        releases_[release].group);
+#endif
+  }
+  std::size_t rsaml_add_arrivals(const std::string& port);
+
+  /**
+   * Runs one job of a release under the node's lock and measures it: `released` is its release
+   * time, `called` when the executor called it (the difference is the platform's release latency,
+   * with any preemption by higher priorities before the call).
+   */
+  void rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
+                     const std::function<void()>& body);
+  /** Runs a reaction to data under the node's lock. */
+  void rsaml_run_arrival(std::size_t port, const std::function<void()>& body);
+
+ private:
+  void busy(std::int64_t cpu_ns) const;
+
+  std::string module_;
+  int core_;
+  double simulated_load_;
+  rclcpp::Time started_;
+  std::mutex activation_;
+  std::mutex stats_;
+  std::deque<Release> releases_;
+  std::deque<Arrivals> arrivals_;
+};
+
+/**
+ * The executor threads of the releases of some nodes: each release's group on a single-threaded
+ * executor of its own, on a thread pinned to the node's core and at the release's real-time
+ * priority where the system permits it (else it says so, once per thread, and runs at the default
+ * priority).
+ */
+class Scheduler {
+ public:
+  Scheduler() = default;
+  ~Scheduler();
+  Scheduler(const Scheduler&) = delete;
+  Scheduler& operator=(const Scheduler&) = delete;
+
+  void add(ScheduledNode& node);
+  /** Stops and joins every thread (before the nodes are destroyed). */
+  void stop();
+
+ private:
+  struct Worker {
+    std::shared_ptr<rclcpp::Executor> executor;
+    std::thread thread;
+  };
+  std::vector<std::unique_ptr<Worker>> workers_;
+};
+
+/** main() of a node's own process: the node, its release threads and a main executor for the rest. */
+template <typename NodeT>
+int run_standalone(int argc, char** argv) {
+  rclcpp::init(argc, argv);
+  int status = 0;
+  {
+    rclcpp::executors::SingleThreadedExecutor executor;
+    auto node = std::make_shared<NodeT>(rclcpp::NodeOptions());
+    Scheduler scheduler;
+    scheduler.add(*node);
+    executor.add_node(node);
+    executor.spin();
+    scheduler.stop();
+  }
+  rclcpp::shutdown();
+  return status;
+}
+
+}  // namespace rsaml_ros2

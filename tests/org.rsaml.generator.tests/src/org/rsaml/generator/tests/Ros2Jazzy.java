@@ -1,0 +1,115 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A real ROS 2 for the tests that build and run the generated packages: the installation a user
+ * names (property {@code rsaml.ros2.setup} or environment variable {@code RSAML_ROS2_SETUP}: the
+ * {@code setup.bash} of a ROS 2 installation), or else the ROS 2 Jazzy core archive of the shared
+ * folder beside the repository ({@code ../shared/ros2/jazzy-core-debian12-amd64.tar.xz}, or the
+ * archive property {@code rsaml.ros2.archive} names), unpacked once into target/. Colcon comes from
+ * Debian ({@code colcon}, {@code python3-colcon-ros}: releng/prerequisites.txt). When neither is
+ * there, {@link #missing()} says why, and the tests that need ROS 2 are skipped with that reason.
+ */
+final class Ros2Jazzy {
+    private Ros2Jazzy() {
+    }
+
+    static final String ARCHIVE = "jazzy-core-debian12-amd64.tar.xz";
+
+    private static Path setup;
+    private static String missing;
+    private static boolean said;
+
+    /** The setup.bash to source, or null when there is no ROS 2 here (then {@link #missing()} says why). */
+    static synchronized Path setup() throws Exception {
+        if (setup != null || missing != null) {
+            return setup;
+        }
+        String named = System.getProperty("rsaml.ros2.setup", System.getenv("RSAML_ROS2_SETUP"));
+        if (named != null && !named.isBlank()) {
+            Path p = Path.of(named);
+            if (!Files.isRegularFile(p)) {
+                missing = "rsaml.ros2.setup / RSAML_ROS2_SETUP names " + p + ", which is not a file (the setup.bash of a ROS 2 installation)";
+            } else {
+                setup = p;
+            }
+        } else {
+            Path archive = Path.of(System.getProperty("rsaml.ros2.archive",
+                    Tools.root().resolve("../shared/ros2/" + ARCHIVE).normalize().toString()));
+            if (!Files.isRegularFile(archive)) {
+                missing = "no ROS 2 here: " + archive + " is missing; point the tests at a ROS 2 installation with"
+                        + " -Drsaml.ros2.setup=/opt/ros/jazzy/setup.bash (or RSAML_ROS2_SETUP)";
+            } else {
+                Path dir = Tools.root().resolve("tests/org.rsaml.generator.tests/target/ros2-jazzy");
+                Path stamp = dir.resolve("archive.stamp");
+                String id = archive.toAbsolutePath() + " " + Files.size(archive) + " " + Files.getLastModifiedTime(archive);
+                if (!(Files.exists(stamp) && Files.readString(stamp).equals(id))) {
+                    Tools.ok(Tools.root(), 60, "rm", "-rf", dir.toString());
+                    Files.createDirectories(dir);
+                    Tools.ok(dir, 600, "tar", "-xJf", archive.toString(), "-C", dir.toString());
+                    Files.writeString(stamp, id);
+                }
+                setup = dir.resolve("install/setup.bash");
+            }
+        }
+        if (setup != null && Tools.run(Tools.root(), 60, "bash", "-c", "PATH=/usr/bin:/bin:$PATH command -v colcon").exit() != 0) {
+            missing = "colcon is not installed (Debian packages colcon and python3-colcon-ros, see releng/prerequisites.txt)";
+            setup = null;
+        }
+        return setup;
+    }
+
+    /** Why there is no ROS 2, printed once per run; null when there is one. */
+    static synchronized String missing() throws Exception {
+        setup();
+        if (missing != null && !said) {
+            said = true;
+            System.err.println("Ros2LaunchTest: skipped: " + missing);
+        }
+        return missing;
+    }
+
+    /**
+     * A bash command line run with ROS 2 sourced (and the workspaces {@code overlays}), Debian's
+     * Python first on PATH (ROS 2's scripts and colcon use /usr/bin/python3).
+     */
+    static List<String> bash(String script, Path... overlays) throws Exception {
+        StringBuilder sb = new StringBuilder("set -e; export PATH=/usr/bin:/bin:$PATH; unset AMENT_PREFIX_PATH CMAKE_PREFIX_PATH COLCON_PREFIX_PATH; ");
+        sb.append("source '").append(setup()).append("'; ");
+        for (Path o : overlays) {
+            sb.append("source '").append(o.resolve("setup.bash")).append("'; ");
+        }
+        sb.append(script);
+        return new ArrayList<>(List.of("bash", "-c", sb.toString()));
+    }
+
+    /** Builds every package under {@code source} with colcon into {@code work}/install; fails with colcon's output. */
+    static Path colconBuild(Path source, Path work) throws Exception {
+        Path install = work.resolve("install");
+        Tools.Result r = Tools.run(work, 1800, bash("colcon --log-base '" + work.resolve("log") + "' build --base-paths '" + source
+                + "' --build-base '" + work.resolve("build") + "' --install-base '" + install
+                + "' --cmake-args -DPython3_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release")
+                .toArray(String[]::new));
+        assertEquals(0, r.exit(), () -> "colcon build of " + source + " failed:\n" + Tools.last(r.output(), 8000));
+        return install;
+    }
+
+    /** The environment of a launched system: discovery on the loopback only, a domain of its own. */
+    static void isolate(Map<String, String> env, int domain) {
+        env.put("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST");
+        env.put("ROS_DOMAIN_ID", Integer.toString(domain));
+        env.put("RCUTILS_COLORIZED_OUTPUT", "0");
+        env.put("PYTHONUNBUFFERED", "1");
+    }
+}
