@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // The component container of a processor: as rclcpp_components' component_container (a
 // single-threaded executor for ROS 2's services and the nodes' data arrivals), and each timed
 // release of a node of this package on an executor thread of its own at its real-time priority

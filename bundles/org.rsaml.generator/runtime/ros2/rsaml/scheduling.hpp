@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 // Scheduling of the nodes of an RsaML architecture as its timing analysis assumes (docs/timing.md):
 // each timed release in a callback group of its own, served by an executor thread of its own at the
 // release's real-time priority (SCHED_FIFO or SCHED_RR, the analysis's rank) on the processor's core;
