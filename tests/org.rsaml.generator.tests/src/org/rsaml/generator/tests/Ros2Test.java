@@ -116,7 +116,8 @@ class Ros2Test {
         // Modern CMake targets: ament_target_dependencies() is gone from Rolling.
         String cmake = Files.readString(root.resolve("CMakeLists.txt"));
         assertFalse(cmake.contains("ament_target_dependencies"), cmake);
-        assertTrue(cmake.contains("target_link_libraries(${PROJECT_NAME} PRIVATE rclcpp::rclcpp rclcpp_components::component"), cmake);
+        assertTrue(cmake.contains("target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp Threads::Threads"), cmake);
+        assertTrue(cmake.contains(" PRIVATE rclcpp_components::component)"), cmake);
 
         // Every package builds as colcon would: the real rosidl generates each .msg, the nodes
         // compile against those headers and the stand-in rclcpp, warnings as errors, and each
