@@ -17,6 +17,7 @@ import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.Witness;
 
+import com.google.gson.GsonBuilder;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 
@@ -27,6 +28,18 @@ import com.google.gson.JsonObject;
 public final class TimingJson {
 
     private TimingJson() {
+    }
+
+    /** The timing of one model, named by the {@code file} it was read from, as one entry of {@link #document}. */
+    public static JsonObject of(String file, ArchitectureTiming timing) {
+        JsonObject o = of(timing);
+        o.addProperty("file", file);
+        return o;
+    }
+
+    /** The entries of every analysed model as the JSON document written, indented. */
+    public static String document(JsonArray entries) {
+        return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(entries);
     }
 
     public static JsonObject of(ArchitectureTiming timing) {

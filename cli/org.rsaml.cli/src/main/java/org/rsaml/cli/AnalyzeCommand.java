@@ -4,7 +4,6 @@
  */
 package org.rsaml.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
@@ -12,22 +11,16 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 import org.rsaml.analysis.ArchitectureTiming;
-import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
-import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.ModelFiles;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
-import org.rsaml.report.Text;
+import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
 import org.rsaml.report.TimingJson;
-import org.rsaml.validation.ModelLoadException;
-import org.rsaml.validation.ModelLoader;
-import org.rsaml.validation.RsamlModelValidator;
 
 import com.google.gson.JsonArray;
-import com.google.gson.JsonObject;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -91,57 +84,45 @@ final class AnalyzeCommand implements Callable<Integer> {
     private int analyse(boolean print, TimingFailOn level) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        int code = ExitCodes.OK;
         JsonArray json = new JsonArray();
-        for (ModelFiles.Input input : ModelFiles.select(parent.workingDirectory, paths)) {
-            if (input.unusable() != null) {
-                if (print) {
-                    Text.lines(input.unusable()).forEach(err::println);
+        TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, timeline, level, new TimingBatch.Listener() {
+            @Override
+            public void analysed(String displayName, ArchitectureTiming timing) {
+                if (print && format == Format.text) {
+                    out.print(TimingText.render(displayName, timing));
+                } else if (print) {
+                    json.add(TimingJson.of(displayName, timing));
                 }
-                code = Math.max(code, ExitCodes.INPUT_ERROR);
-                continue;
             }
-            ArchitectureTiming timing;
-            try {
-                timing = RsamlModelValidator.analyseTiming(ModelLoader.load(input.path(), input.displayName()));
-            } catch (ModelLoadException e) {
+
+            @Override
+            public void unanalysable(List<String> lines) {
                 // Read or not, a model that cannot be analysed is an input error in every format.
                 if (print) {
-                    Text.lines(e).forEach(err::println);
-                }
-                code = Math.max(code, ExitCodes.INPUT_ERROR);
-                continue;
-            }
-            if (print && format == Format.text) {
-                out.print(TimingText.render(input.displayName(), timing));
-            } else if (print) {
-                JsonObject o = TimingJson.of(timing);
-                o.addProperty("file", input.displayName());
-                json.add(o);
-            }
-            if (timeline != null) {
-                try {
-                    List<Path> written = TimingSvg.write(parent.workingDirectory.resolve(timeline), timing);
-                    for (Path file : written) {
-                        err.println("timeline written: " + ModelFiles.display(parent.workingDirectory.relativize(file)));
-                    }
-                    if (written.isEmpty()) {
-                        err.println(input.displayName() + ": no timeline written: no missed deadline or exceeded latency requirement has a witness");
-                    }
-                } catch (IOException e) {
-                    err.println(ModelFiles.display(timeline) + ": error: cannot write the timeline: " + e.getMessage());
-                    code = Math.max(code, ExitCodes.INPUT_ERROR);
+                    lines.forEach(err::println);
                 }
             }
-            if (level.fails(timing.verdict()) && code == ExitCodes.OK) {
-                code = ExitCodes.FINDINGS;
+
+            @Override
+            public void timeline(Path file) {
+                err.println("timeline written: " + ModelFiles.display(parent.workingDirectory.relativize(file)));
             }
-        }
+
+            @Override
+            public void noTimeline(String displayName) {
+                err.println(displayName + ": no timeline written: no missed deadline or exceeded latency requirement has a witness");
+            }
+
+            @Override
+            public void timelineFailed(String line) {
+                err.println(line);
+            }
+        });
         if (print && format == Format.json) {
-            out.println(new com.google.gson.GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(json));
+            out.println(TimingJson.document(json));
         }
         out.flush();
         err.flush();
-        return code;
+        return outcome.exitCode();
     }
 }

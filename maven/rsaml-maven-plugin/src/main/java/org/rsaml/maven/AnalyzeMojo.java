@@ -16,17 +16,13 @@ import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.analysis.ArchitectureTiming;
-import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
-import org.rsaml.report.Text;
+import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
-import org.rsaml.validation.ModelLoadException;
-import org.rsaml.validation.ModelLoader;
-import org.rsaml.validation.RsamlModelValidator;
 
 /**
  * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
@@ -79,39 +75,35 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
         List<ReportFormat> reportFormats = reportFormats("formats", formats);
         TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new MojoExecutionException(
                 "failOn is '" + failOn + "'; it is miss, not-analysed or never"));
-        List<String> missed = new ArrayList<>();
-        List<String> unanalysed = new ArrayList<>();
-        for (File model : models) {
-            String shown = relative(model.toPath());
-            ArchitectureTiming timing;
-            try {
-                // The one decision whether a model can be analysed, as rsaml analyze takes it in every format.
-                timing = RsamlModelValidator.analyseTiming(ModelLoader.load(model.toPath(), shown));
-            } catch (ModelLoadException e) {
-                Text.lines(e).forEach(log::error);
-                unanalysed.add(shown);
-                continue;
-            }
-            for (String line : TimingText.render(shown, timing).split("\n")) {
-                if (timing.verdict() == Verdict.MISSES && line.contains("MISSES")) {
-                    log.error(line);
-                } else {
-                    log.info(line);
-                }
-            }
-            if (timeline != null) {
-                try {
-                    for (Path written : TimingSvg.write(timeline.toPath(), timing)) {
-                        log.info("RsaML: timeline written: " + relative(written));
+        List<Path> shown = models.stream().map(model -> Path.of(relative(model.toPath()))).toList();
+        TimingBatch.Outcome outcome = TimingBatch.run(baseDirectory.toPath(), shown, timeline == null ? null : timeline.toPath(),
+                failOnMiss ? level : TimingFailOn.NEVER, new TimingBatch.Listener() {
+                    @Override
+                    public void analysed(String displayName, ArchitectureTiming timing) {
+                        for (String line : TimingText.render(displayName, timing).split("\n")) {
+                            if (timing.verdict() == Verdict.MISSES && line.contains("MISSES")) {
+                                log.error(line);
+                            } else {
+                                log.info(line);
+                            }
+                        }
                     }
-                } catch (java.io.IOException e) {
-                    throw new MojoExecutionException("cannot write the timeline into " + timeline + ": " + e.getMessage());
-                }
-            }
-            if (failOnMiss && level.fails(timing.verdict())) {
-                missed.add(shown + (timing.verdict() == Verdict.MISSES ? "" : " (not analysed)"));
-            }
-        }
+
+                    @Override
+                    public void unanalysable(List<String> lines) {
+                        lines.forEach(log::error);
+                    }
+
+                    @Override
+                    public void timeline(Path file) {
+                        log.info("RsaML: timeline written: " + relative(file));
+                    }
+
+                    @Override
+                    public void timelineFailed(String line) {
+                        log.error(line);
+                    }
+                });
         if (!reportFormats.isEmpty()) {
             Path base = baseDirectory.toPath();
             Report report = ModelBatch.analyze(base, models.stream().map(File::toPath).toList(), level.findingThreshold());
@@ -120,12 +112,16 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
             log.info("RsaML timing findings: " + report.summary() + "; reports in "
                     + relative(reportDirectory.toPath()));
         }
-        if (!unanalysed.isEmpty()) {
-            throw new MojoFailureException("RsaML timing: cannot read or analyse " + String.join(", ", unanalysed) + "; see the errors above");
+        if (outcome.outputFailed()) {
+            throw new MojoExecutionException("RsaML timing: cannot write the timeline into " + relative(timeline.toPath()) + "; see the errors above");
         }
-        if (!missed.isEmpty()) {
+        if (!outcome.unanalysable().isEmpty()) {
+            throw new MojoFailureException("RsaML timing: cannot read or analyse " + String.join(", ", outcome.unanalysable())
+                    + "; see the errors above");
+        }
+        if (!outcome.failing().isEmpty()) {
             throw new MojoFailureException("RsaML timing: " + (level == TimingFailOn.MISS ? "a deadline or a latency requirement can be missed in "
-                    : "the timing is not proven (failOn: " + level + ") in ") + String.join(", ", missed));
+                    : "the timing is not proven (failOn: " + level + ") in ") + String.join(", ", outcome.failing()));
         }
     }
 }
