@@ -4,6 +4,8 @@
  */
 package org.rsaml.validation;
 
+import java.util.List;
+
 /**
  * One RsaML rule, as the catalogue beside {@code rsaml.ecore} defines it: a stable id used in
  * messages, reports and docs, a severity, and the text that tells a user what the rule asks, what
@@ -18,9 +20,29 @@ package org.rsaml.validation;
  * @param scope       exactly which elements are checked and which are not
  * @param message     the finding's message template, with {@code {parameter}}s
  * @param remediation what to change to satisfy it
+ * @param constraints the invariants of rsaml.ecore that implement the rule, by constraint name (none for
+ *                    EMF's structure and the timing analysis)
  */
 public record Rule(String id, String name, Severity severity, String source, String context, String description,
-        String scope, String message, String remediation) {
+        String scope, String message, String remediation, List<String> constraints) {
+
+    /** What {@code source} says of the rules the timing analysis decides (RSA-22 to RSA-25). */
+    public static final String TIMING_ANALYSIS = "timing analysis";
+
+    public Rule {
+        constraints = List.copyOf(constraints);
+    }
+
+    /** A rule implemented by no invariant. */
+    public Rule(String id, String name, Severity severity, String source, String context, String description,
+            String scope, String message, String remediation) {
+        this(id, name, severity, source, context, description, scope, message, remediation, List.of());
+    }
+
+    /** Whether the timing analysis decides the rule rather than an invariant. */
+    public boolean isTiming() {
+        return TIMING_ANALYSIS.equals(source);
+    }
 
     /** What to change to satisfy the rule, under the name SARIF gives it. */
     public String help() {

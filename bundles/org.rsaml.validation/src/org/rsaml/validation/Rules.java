@@ -4,29 +4,31 @@
  */
 package org.rsaml.validation;
 
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.ConcurrentHashMap;
 
 import org.rsaml.validation.internal.RuleCatalog;
-import org.rsaml.validation.internal.TimingChecks;
 
 /**
  * The catalogue of RsaML rules, read from {@code model/rules.properties} of the model bundle. RSA-01
  * to RSA-08 are the paper's eight semantic rules; the others are the checks an architect expects next
- * to them. Every rule but RSA-00 is an OCL invariant in {@code rsaml.ecore}, named
- * {@code RSAnn_camelCaseName}.
+ * to them. Every rule but RSA-00 and the timing analysis' (source {@code timing analysis}) is implemented
+ * by OCL invariants of {@code rsaml.ecore}, which the catalogue's {@code constraints} key names.
  */
 public final class Rules {
 
     private static final Map<String, Rule> BY_ID = new LinkedHashMap<>();
-    private static final Map<String, Optional<Rule>> BY_CONSTRAINT = new ConcurrentHashMap<>();
+    private static final Map<String, Rule> BY_CONSTRAINT = new HashMap<>();
 
     static {
         for (Rule rule : RuleCatalog.load()) {
             BY_ID.put(rule.id(), rule);
+            for (String constraint : rule.constraints()) {
+                BY_CONSTRAINT.put(constraint, rule);
+            }
         }
     }
 
@@ -43,28 +45,15 @@ public final class Rules {
 
     /** The rules of the timing analysis (RSA-22 to RSA-25), in id order. */
     public static List<Rule> timing() {
-        return BY_ID.values().stream().filter(r -> TimingChecks.RULES.contains(r.id())).toList();
+        return BY_ID.values().stream().filter(Rule::isTiming).toList();
     }
 
     public static Optional<Rule> byId(String id) {
         return Optional.ofNullable(BY_ID.get(id));
     }
 
-    /** The rule an OCL constraint of rsaml.ecore implements: {@code RSA08_layerExecutionBudget} is RSA-08. */
+    /** The rule an OCL constraint of rsaml.ecore implements, as the catalogue's {@code constraints} key binds it. */
     public static Optional<Rule> forConstraint(String constraintName) {
-        // Asked for every constraint on every element: looked up once per name.
-        return constraintName == null ? Optional.empty() : BY_CONSTRAINT.computeIfAbsent(constraintName, Rules::ruleOfConstraint);
-    }
-
-    private static Optional<Rule> ruleOfConstraint(String constraintName) {
-        if (constraintName.length() < 6 || !constraintName.startsWith("RSA")
-                || !isDigit(constraintName.charAt(3)) || !isDigit(constraintName.charAt(4)) || constraintName.charAt(5) != '_') {
-            return Optional.empty();
-        }
-        return byId("RSA-" + constraintName.substring(3, 5));
-    }
-
-    private static boolean isDigit(char c) {
-        return c >= '0' && c <= '9';
+        return constraintName == null ? Optional.empty() : Optional.ofNullable(BY_CONSTRAINT.get(constraintName));
     }
 }

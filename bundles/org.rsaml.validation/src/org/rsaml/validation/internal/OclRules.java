@@ -43,7 +43,7 @@ public final class OclRules {
     private final OCL ocl = OCL.newInstance();
     private final Map<EClass, Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>>> queries = new HashMap<>();
     private final List<String> problems = new ArrayList<>();
-    private final Set<String> constrained = new HashSet<>();
+    private final Set<String> declared = new HashSet<>();
 
     public OclRules(EPackage ePackage) {
         for (EClassifier classifier : ePackage.getEClassifiers()) {
@@ -52,6 +52,7 @@ public final class OclRules {
             }
             EAnnotation bodies = eClass.getEAnnotation(OCL_URI);
             for (String constraint : EcoreUtil.getConstraints(eClass)) {
+                declared.add(constraint);
                 Optional<Rule> catalogued = Rules.forConstraint(constraint);
                 String rule = catalogued.map(Rule::id).orElse("unknown rule");
                 if (catalogued.isEmpty() || catalogued.get().message() == null) {
@@ -59,7 +60,6 @@ public final class OclRules {
                             + ") has no entry with a message in the rule catalogue " + RuleCatalog.RESOURCE);
                     continue;
                 }
-                constrained.add(catalogued.get().id());
                 String body = bodies == null ? null : bodies.getDetails().get(constraint);
                 if (body == null) {
                     problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") has no OCL body");
@@ -78,16 +78,14 @@ public final class OclRules {
             }
         }
         if (ePackage == RsamlPackage.eINSTANCE || RsamlPackage.eNS_URI.equals(ePackage.getNsURI())) {
-            for (String id : TimingChecks.RULES) {
-                if (Rules.byId(id).map(Rule::message).isEmpty()) {
-                    problems.add(id + " is checked by the timing analysis but has no entry with a message in the rule catalogue "
-                            + RuleCatalog.RESOURCE);
-                }
-            }
             for (Rule rule : Rules.all()) {
-                if (rule.message() != null && !constrained.contains(rule.id()) && !TimingChecks.RULES.contains(rule.id())) {
+                List<String> undeclared = rule.constraints().stream().filter(c -> !declared.contains(c)).toList();
+                if (!undeclared.isEmpty()) {
                     problems.add(rule.id() + " is in the rule catalogue but no invariant of " + ePackage.getName()
-                            + " implements it (constraint " + rule.id().replace("-", "") + "_...)");
+                            + " declares the constraint " + String.join(", ", undeclared) + " it names in " + RuleCatalog.RESOURCE);
+                } else if (rule.message() != null && rule.constraints().isEmpty() && !rule.isTiming()) {
+                    problems.add(rule.id() + " is in the rule catalogue but no invariant of " + ePackage.getName()
+                            + " implements it (name its constraints under " + rule.id() + ".constraints)");
                 }
             }
         }

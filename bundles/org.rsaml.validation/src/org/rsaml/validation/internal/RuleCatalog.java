@@ -11,7 +11,9 @@ import java.io.Reader;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 import java.util.Properties;
 import java.util.Set;
@@ -38,8 +40,8 @@ public final class RuleCatalog {
     private static final Pattern PARAMETER = Pattern.compile("\\{(\\w+)}");
     private static final List<String> REQUIRED = List.of("name", "severity", "source", "context", "description", "scope",
             "remediation");
-    private static final Set<String> KNOWN = Set.of("name", "severity", "source", "context", "description", "scope",
-            "message", "remediation");
+    private static final Set<String> KNOWN = Set.of("name", "severity", "source", "constraints", "context", "description",
+            "scope", "message", "remediation");
 
     private RuleCatalog() {
     }
@@ -75,6 +77,7 @@ public final class RuleCatalog {
             }
         }
         List<Rule> rules = new ArrayList<>();
+        Map<String, String> ruleOfConstraint = new HashMap<>();
         for (String id : ids) {
             List<String> missing = new ArrayList<>();
             for (String key : REQUIRED) {
@@ -109,9 +112,18 @@ public final class RuleCatalog {
                     }
                 }
             }
+            String listed = properties.getProperty(id + ".constraints", "").strip();
+            List<String> constraints = listed.isEmpty() ? List.of() : List.of(listed.split("\\s+"));
+            for (String constraint : constraints) {
+                String other = ruleOfConstraint.putIfAbsent(constraint, id);
+                if (other != null) {
+                    problems.add(id + " and " + other + " both name the constraint " + constraint + " in the rule catalogue; "
+                            + "an invariant implements one rule");
+                }
+            }
             rules.add(new Rule(id, get(properties, id, "name"), severity, get(properties, id, "source"),
                     get(properties, id, "context"), get(properties, id, "description"), get(properties, id, "scope"),
-                    message == null ? null : message.strip(), get(properties, id, "remediation")));
+                    message == null ? null : message.strip(), get(properties, id, "remediation"), constraints));
         }
         return rules;
     }

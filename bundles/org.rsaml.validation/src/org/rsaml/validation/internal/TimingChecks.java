@@ -49,9 +49,6 @@ public final class TimingChecks {
     public static final String NOT_ANALYSED = "RSA-24";
     public static final String DEPLOYMENT = "RSA-25";
 
-    /** The rules implemented here rather than by an invariant of rsaml.ecore. */
-    public static final Set<String> RULES = Set.of(DEADLINE, LATENCY, NOT_ANALYSED, DEPLOYMENT);
-
     /** The message parameters these checks supply from the analysis' results. */
     public static final List<String> PARAMETERS = List.of("processor", "task", "reason", "worstPath", "where", "witness");
 

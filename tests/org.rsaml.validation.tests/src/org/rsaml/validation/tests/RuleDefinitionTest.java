@@ -16,6 +16,7 @@ import org.eclipse.emf.ecore.EAnnotation;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EClassifier;
 import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.EcorePackage;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.util.EcoreUtil;
@@ -52,6 +53,25 @@ class RuleDefinitionTest {
         }
         assertTrue(constraints >= 20, "rsaml.ecore declares too few constraints: " + constraints);
         assertEquals(constraints, OclRules.instance().size(), "every constraint must be parsed at start-up");
+    }
+
+    /**
+     * The catalogue binds a constraint to its rule by name, not by how the name is spelt: an invariant
+     * renamed in the .ecore is reported twice, as a constraint without a rule and as a catalogue entry
+     * naming a constraint the .ecore no longer declares.
+     */
+    @Test
+    void aRenamedConstraintIsReportedOnBothSides() {
+        EPackage copy = loadEcoreCopy();
+        EClass module = (EClass) copy.getEClassifier("Module");
+        EAnnotation declared = module.getEAnnotation(EcorePackage.eNS_URI);
+        declared.getDetails().put("constraints",
+                declared.getDetails().get("constraints").replace("RSA08_layerExecutionBudget", "RSA08_budgetOfLayer"));
+        List<String> problems = new OclRules(copy).problems();
+        assertTrue(problems.stream().anyMatch(p -> p.startsWith("RSA-08 is in the rule catalogue but no invariant of model declares the constraint RSA08_layerExecutionBudget")),
+                "the catalogue's constraint is missing from the .ecore: " + problems);
+        assertTrue(problems.stream().anyMatch(p -> p.contains("(RSA08_budgetOfLayer on Module) has no entry")),
+                "the renamed constraint belongs to no rule although its name starts with RSA08: " + problems);
     }
 
     @Test
