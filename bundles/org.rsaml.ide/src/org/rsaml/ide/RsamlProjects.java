@@ -5,7 +5,6 @@
 package org.rsaml.ide;
 
 import java.util.Arrays;
-import java.util.Locale;
 
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IProject;
@@ -14,10 +13,11 @@ import org.eclipse.core.resources.IResource;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.core.runtime.IProgressMonitor;
 import org.eclipse.core.runtime.QualifiedName;
+import org.rsaml.model.resource.ModelFormats;
 
 /**
  * Turns RsaML workspace validation on and off for a project. A project with the RsaML nature has
- * the RsaML builder, which validates its {@code .rsaml} files and reports findings as
+ * the RsaML builder, which validates its {@code .rsaml} and textual {@code .rsa} files and reports findings as
  * {@link RsamlMarkers#PROBLEM} markers.
  */
 public final class RsamlProjects {
@@ -99,9 +99,8 @@ public final class RsamlProjects {
         project.setDescription(description, monitor);
     }
 
-    /** Whether {@code resource} is an RsaML model file, judged by its extension. */
+    /** Whether {@code resource} is an RsaML model file ({@code .rsaml} or textual {@code .rsa}), judged by its extension. */
     public static boolean isModelFile(IResource resource) {
-        return resource instanceof IFile && resource.getFileExtension() != null
-                && resource.getFileExtension().toLowerCase(Locale.ROOT).equals(FILE_EXTENSION);
+        return resource instanceof IFile && ModelFormats.isModelFile(resource.getName());
     }
 }

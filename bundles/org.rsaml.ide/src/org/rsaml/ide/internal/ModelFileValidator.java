@@ -63,7 +63,7 @@ final class ModelFileValidator {
         // Not on the local file system (e.g. a virtual file system): validate a local copy of the content.
         Path copy = null;
         try (InputStream in = file.getContents(true)) {
-            copy = Files.createTempFile("rsaml-", ".rsaml");
+            copy = Files.createTempFile("rsaml-", "." + file.getFileExtension());
             Files.copy(in, copy, StandardCopyOption.REPLACE_EXISTING);
             return RsamlModelValidator.validate(copy, displayName);
         } catch (IOException e) {

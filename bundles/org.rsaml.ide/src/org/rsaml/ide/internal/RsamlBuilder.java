@@ -6,7 +6,6 @@ package org.rsaml.ide.internal;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 import org.eclipse.core.resources.IFile;
@@ -22,9 +21,10 @@ import org.eclipse.core.runtime.SubMonitor;
 import org.eclipse.core.runtime.jobs.ISchedulingRule;
 import org.rsaml.ide.RsamlMarkers;
 import org.rsaml.ide.RsamlProjects;
+import org.rsaml.model.resource.ModelFormats;
 
 /**
- * Validates the project's {@code .rsaml} files: all of them on a full build, the added and changed
+ * Validates the project's model files ({@code .rsaml} and textual {@code .rsa}): all of them on a full build, the added and changed
  * ones on an incremental build. Derived files (build output copies) are skipped, so a model is
  * reported once, where the user edits it.
  */
@@ -78,8 +78,7 @@ public final class RsamlBuilder extends IncrementalProjectBuilder {
             if (proxy.isDerived()) {
                 return false;
             }
-            if (proxy.getType() == IResource.FILE && proxy.getName().toLowerCase(Locale.ROOT)
-                    .endsWith("." + RsamlProjects.FILE_EXTENSION)) {
+            if (proxy.getType() == IResource.FILE && ModelFormats.isModelFile(proxy.getName())) {
                 out.add((IFile) proxy.requestResource());
             }
             return true;

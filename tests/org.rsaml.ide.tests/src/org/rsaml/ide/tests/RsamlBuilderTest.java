@@ -317,6 +317,32 @@ class RsamlBuilderTest {
     }
 
     @Test
+    void aTextualModelIsValidatedLikeAnXmiOneWithItsTextLine() throws Exception {
+        RsamlProjects.addNature(project, null);
+        Path source = TestRepository.resource("org.rsaml.ide.tests", "models/mismatched-scan.rsa");
+        IFile file = copy(source, "models/mismatched-scan.rsa");
+        project.build(IncrementalProjectBuilder.FULL_BUILD, null);
+
+        // The costmap's port expects PointCloud2 where the driver sends LaserScan: the connection on line 23.
+        assertEquals(List.of("RSA-02 line 23 error"), summaries(file), "the .rsa file is validated, located at its text line");
+        String expected = RsamlModelValidator.validate(source, "mismatched-scan.rsa").get(0).message();
+        assertEquals("RSA-02: " + expected, marker(file, "RSA-02").getAttribute(IMarker.MESSAGE),
+                "the same message as the command line's");
+
+        // Fixing the text clears the marker on the next incremental build.
+        String fixed = Files.readString(source).replace("\"PointCloud2\"", "\"LaserScan\"");
+        file.setContents(new ByteArrayInputStream(fixed.getBytes(StandardCharsets.UTF_8)), IResource.FORCE, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        assertEquals(List.of(), summaries(file), "the fixed text model has no finding");
+
+        // A syntax error is a load error on its line, not a stack trace.
+        file.setContents(new ByteArrayInputStream("architecture a {\n  layer l {\n    level high\n  }\n}\n"
+                .getBytes(StandardCharsets.UTF_8)), IResource.FORCE, null);
+        project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        assertEquals(List.of(RsamlMarkers.LOAD_ERROR_RULE_ID + " line 3 error"), summaries(file), "the syntax error's line");
+    }
+
+    @Test
     void onlyProjectsWithTheNatureAreValidated() throws Exception {
         IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);

@@ -19,9 +19,9 @@ abstract class AbstractModelsMojo extends AbstractRsamlMojo {
     @Parameter(property = "rsaml.modelDirectory", defaultValue = "${project.basedir}")
     File modelDirectory;
 
-    /** Ant-style patterns, relative to {@code modelDirectory}, of the models to take. */
+    /** Ant-style patterns, relative to {@code modelDirectory}, of the models to take: XMI and textual models by default. */
     @Parameter
-    List<String> includes = new ArrayList<>(List.of("**/*.rsaml"));
+    List<String> includes = new ArrayList<>(List.of("**/*.rsaml", "**/*.rsa"));
 
     /** Ant-style patterns of files to leave out; the build output folder is always left out. */
     @Parameter

@@ -36,7 +36,7 @@ import org.rsaml.report.TimingFailOn;
 @Mojo(name = "analyze", defaultPhase = LifecyclePhase.VERIFY, threadSafe = true)
 public class AnalyzeMojo extends AbstractRsamlMojo {
 
-    /** The {@code .rsaml} models to analyse. */
+    /** The models ({@code .rsaml} or textual {@code .rsa}) to analyse. */
     @Parameter(property = "rsaml.models", required = true)
     List<File> models = new ArrayList<>();
 

@@ -26,7 +26,7 @@ import org.rsaml.report.Text;
 @Mojo(name = "generate", defaultPhase = LifecyclePhase.GENERATE_SOURCES, threadSafe = true)
 public class GenerateMojo extends AbstractRsamlMojo {
 
-    /** The {@code .rsaml} model to generate from. */
+    /** The model ({@code .rsaml} or textual {@code .rsa}) to generate from. */
     @Parameter(property = "rsaml.model", required = true)
     File model;
 
