@@ -339,7 +339,12 @@ class RsamlBuilderTest {
         file.setContents(new ByteArrayInputStream("architecture a {\n  layer l {\n    level high\n  }\n}\n"
                 .getBytes(StandardCharsets.UTF_8)), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
-        assertEquals(List.of(RsamlMarkers.LOAD_ERROR_RULE_ID + " line 3 error"), summaries(file), "the syntax error's line");
+        List<String> loadErrors = summaries(file);
+        assertFalse(loadErrors.isEmpty(), "the syntax error is marked");
+        assertTrue(loadErrors.stream().allMatch((RsamlMarkers.LOAD_ERROR_RULE_ID + " line 3 error")::equals),
+                "every load error is on the line of 'level high': " + loadErrors);
+        assertTrue(markers(file).stream().anyMatch(m -> m.getAttribute(IMarker.MESSAGE, "").contains("'high'")),
+                "a marker names the offending text: " + loadErrors);
     }
 
     @Test
