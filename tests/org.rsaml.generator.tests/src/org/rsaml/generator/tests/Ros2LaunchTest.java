@@ -60,7 +60,7 @@ class Ros2LaunchTest {
     static final long RUN_MS = 5000;
 
     static List<String> models() throws Exception {
-        List<String> models = new ArrayList<>(List.of("mobile-base-latency.rsaml", "resources/ros2-preemption.rsaml"));
+        List<String> models = new ArrayList<>(List.of("mobile-base-latency.rsaml", "resources/ros2-preemption.rsaml", "resources/inhibitor-window.rsaml"));
         if ("all".equals(System.getProperty("rsaml.ros2.examples"))) {
             for (String e : Tools.cleanExamples()) {
                 if (!models.contains(e)) {
@@ -203,6 +203,16 @@ class Ros2LaunchTest {
             if (realtime) {
                 assertTrue(stop.response() < 20, "the safety stop waited for the planner: worst response " + stop.response() + " ms\n" + report);
             }
+        }
+        // A boolean trigger asserts its link only with true: the overseer sends false every 100 ms
+        // (as generated), so the inhibitor never blocks the producer, whose every message arrives.
+        if (name.endsWith("inhibitor-window.rsaml")) {
+            // (about a third of them would be blocked if any message asserted it: 30 ms of every 100)
+            double[] sink = ports.get("low/sink:in");
+            long sent = 1 + Math.round((sink[2] - sink[1]) / 10.0);
+            assertTrue(observed.get("high/overseer.watch").jobs() >= 10, "the overseer hardly ran: " + observed.get("high/overseer.watch"));
+            assertTrue(sink[0] >= 0.95 * sent, "the sink received " + (long) sink[0] + " messages from " + sink[1] + " to " + sink[2]
+                    + " ms, the producer sent about " + sent + " every 10 ms: false on the overseer's boolean trigger must not inhibit them\n" + report);
         }
         System.out.print(report);
     }

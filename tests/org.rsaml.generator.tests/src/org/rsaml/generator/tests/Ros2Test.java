@@ -226,6 +226,41 @@ class Ros2Test {
         }
     }
 
+    private static final Pattern LINK = Pattern.compile("// (?:Inhibitor|Suppressor) (\\S+), triggered by [^\\n]*\\n\\s*link_(\\w+)_sub_ = "
+            + "this->create_subscription<([\\w:]+)>\\((.*?)subscription_options\\);", Pattern.DOTALL);
+
+    /**
+     * A link's subscription to its trigger topic asserts the link as docs/timing.md says: on a
+     * boolean trigger only a true message sets the link's time (a false one returns before it,
+     * delivering nothing), on any other data kind every message does. Subsumption-brooks has both:
+     * whenlook's boolean startLook and numeric headings. (It builds in the test above.)
+     */
+    @org.junit.jupiter.api.Test
+    void linksAreAssertedOnlyByTrueOnBooleanTriggers(@TempDir Path tmp) throws Exception {
+        Path out = tmp.resolve("ws");
+        new RsamlGenerator().generate(Tools.example("subsumption-brooks.rsaml"), Target.ROS2, out, false);
+        String all = allText(out.resolve("subsumption_mobile_robot/gen"));
+        Matcher link = LINK.matcher(all);
+        Set<String> booleans = new TreeSet<>();
+        Set<String> others = new TreeSet<>();
+        while (link.find()) {
+            String body = link.group(4);
+            int set = body.indexOf("link_" + link.group(2) + "_until_ = ");
+            assertTrue(set > 0, "the subscription of " + link.group(1) + " never sets the link's time:\n" + body);
+            boolean guarded = Pattern.compile("if \\(!message->data\\) \\{\\s*return;").matcher(body.substring(0, set)).find();
+            if (link.group(3).equals("std_msgs::msg::Bool")) {
+                booleans.add(link.group(1));
+                assertTrue(guarded, "a false message on the boolean trigger of " + link.group(1) + " must not assert it:\n" + body);
+            } else {
+                others.add(link.group(1));
+                assertFalse(guarded || body.contains("message->data"), "every message on the " + link.group(3) + " trigger of "
+                        + link.group(1) + " asserts it:\n" + body);
+            }
+        }
+        assertEquals(Set.of("explore/whenlook.stopWandering"), booleans, "links with a boolean trigger");
+        assertEquals(Set.of("explore/pathplan.overrideWander", "wander/avoid.overrideRunAway"), others, "links with another trigger");
+    }
+
     /**
      * The model's deployment in the launch files: the nodes of the modules one processor runs share
      * a container of their own, the modules no processor names share the package's container, and

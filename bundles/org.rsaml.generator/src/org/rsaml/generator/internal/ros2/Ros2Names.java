@@ -285,6 +285,15 @@ public final class Ros2Names {
         return new ArrayList<>(messages.values());
     }
 
+    /**
+     * Whether a message on this trigger port asserts its links only when its value is true: a boolean
+     * port; on any other data kind every message asserts them (docs/timing.md, "Inhibitors and
+     * suppressors"; the C++ runtime's {@code asserts()}). A message that does not assert has no effect.
+     */
+    public boolean assertsOnlyWhenTrue(PlannedPort trigger) {
+        return trigger.kind() == ExecutionPlan.DataKind.BOOLEAN;
+    }
+
     public String rosType(PlannedPort p) {
         return switch (p.kind()) {
             case NUMERIC -> "std_msgs::msg::Float64";

@@ -558,11 +558,16 @@ class Ros2Files {
 		    	    subscription_options);
 		    «ENDFOR»
 		    «FOR l : linksOf(m)»
-		    	// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «doc(l.trigger.qualifiedName)».
+		    	// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «IF l.trigger.assertsOnlyWhenTrue»each true on «ELSE»each message on «ENDIF»«doc(l.trigger.qualifiedName)».
 		    	link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
 		    	    «str(l.trigger.topic)», «l.trigger.qos»,
 		    	    [this, port = this->rsaml_add_arrivals(«str(l.qualifiedName)»)](std::shared_ptr<const «l.trigger.rosType»> message) {
 		    	      this->rsaml_run_arrival(port, [&] {
+		    	        «IF l.trigger.assertsOnlyWhenTrue»
+		    	        	if (!message->data) {
+		    	        	  return;  // only true asserts the link: false neither starts nor ends it, nor is delivered
+		    	        	}
+		    	        «ENDIF»
 		    	        link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
 		    	        «IF l.deliversData»
 		    	        	this->«l.target.receiveName»(*message, true);
