@@ -252,4 +252,29 @@ class RepositoryDocsTest {
                     .sorted().toList();
         }
     }
+
+    /**
+     * The update site lists the third-party bundles it carries twice, for Java 17 (category.xml) and for the build with
+     * the editors (ide/category.xml): the second carries everything the first does, or the runtime feature cannot be
+     * installed from the full site.
+     */
+    @Test
+    void theFullUpdateSiteCarriesEveryBundleOfTheRuntimeSite() throws Exception {
+        Pattern bundle = Pattern.compile("<bundle id=\"([^\"]+)\"");
+        Path site = Cli.ROOT.resolve("releng/org.rsaml.repository");
+        Set<String> runtime = new TreeSet<>();
+        Matcher m = bundle.matcher(Files.readString(site.resolve("category.xml")));
+        while (m.find()) {
+            runtime.add(m.group(1));
+        }
+        Set<String> full = new TreeSet<>();
+        m = bundle.matcher(Files.readString(site.resolve("ide/category.xml")));
+        while (m.find()) {
+            full.add(m.group(1));
+        }
+        assertTrue(!runtime.isEmpty(), "category.xml lists the bundles the runtime needs");
+        Set<String> missing = new TreeSet<>(runtime);
+        missing.removeAll(full);
+        assertEquals(Set.of(), missing, "bundles of releng/org.rsaml.repository/category.xml missing from ide/category.xml");
+    }
 }
