@@ -24,7 +24,6 @@ public final class RsamlProjects {
 
     public static final String NATURE_ID = "org.rsaml.ide.rsamlNature";
     public static final String BUILDER_ID = "org.rsaml.ide.rsamlBuilder";
-    public static final String FILE_EXTENSION = "rsaml";
 
     /** Kept in the workspace's metadata, not in the project: a user's choice on this machine. */
     private static final QualifiedName VALIDATION = new QualifiedName("org.rsaml.ide", "validation");
