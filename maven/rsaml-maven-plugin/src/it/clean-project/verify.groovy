@@ -12,7 +12,7 @@ assert sarif.version == '2.1.0'
 assert sarif.runs[0].results.isEmpty()
 // Every rule of the catalogue, in id order, and one JUnit test case per rule.
 def catalogue = new Properties()
-new File(basedir, '../../../../../bundles/org.rsaml.model/model/rules.properties').withReader('UTF-8') { catalogue.load(it) }
+new File(basedir, '../../../../../bundles/org.rsaml.validation/rules/rules.properties').withReader('UTF-8') { catalogue.load(it) }
 def ids = catalogue.stringPropertyNames().collect { it.substring(0, it.indexOf('.')) }.unique().sort()
 assert sarif.runs[0].tool.driver.rules*.id == ids
 def junit = new groovy.xml.XmlSlurper().parse(new File(basedir, 'target/rsaml/TEST-rsaml.xml'))

@@ -72,7 +72,7 @@ public final class RsamlValidationSetup {
         private final List<String> problems;
 
         public RuleDefinitionException(List<String> problems) {
-            super("RsaML rules are broken in rsaml.ecore or model/rules.properties:\n  " + String.join("\n  ", problems));
+            super("RsaML rules are broken in rsaml.ecore or the rule catalogue rules/rules.properties:\n  " + String.join("\n  ", problems));
             this.problems = List.copyOf(problems);
         }
 

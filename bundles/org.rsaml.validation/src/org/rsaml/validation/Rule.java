@@ -22,21 +22,27 @@ import java.util.List;
  * @param remediation what to change to satisfy it
  * @param constraints the invariants of rsaml.ecore that implement the rule, by constraint name (none for
  *                    EMF's structure and the timing analysis)
+ * @param verdicts    for a rule of the timing analysis, the results of the analysis it reports, by the names
+ *                    {@code org.rsaml.validation.internal.TimingChecks} gives them (none for the other rules)
+ * @param timingPrerequisite whether an error of the rule leaves an architecture without a task set, so that
+ *                    its timing is not analysed while the error stands
  */
 public record Rule(String id, String name, Severity severity, String source, String context, String description,
-        String scope, String message, String remediation, List<String> constraints) {
+        String scope, String message, String remediation, List<String> constraints, List<String> verdicts,
+        boolean timingPrerequisite) {
 
     /** What {@code source} says of the rules the timing analysis decides (RSA-22 to RSA-25). */
     public static final String TIMING_ANALYSIS = "timing analysis";
 
     public Rule {
         constraints = List.copyOf(constraints);
+        verdicts = List.copyOf(verdicts);
     }
 
-    /** A rule implemented by no invariant. */
+    /** A rule implemented by no invariant and no verdict of the timing analysis. */
     public Rule(String id, String name, Severity severity, String source, String context, String description,
             String scope, String message, String remediation) {
-        this(id, name, severity, source, context, description, scope, message, remediation, List.of());
+        this(id, name, severity, source, context, description, scope, message, remediation, List.of(), List.of(), false);
     }
 
     /** Whether the timing analysis decides the rule rather than an invariant. */

@@ -57,7 +57,7 @@ public final class OclRules {
                 String rule = catalogued.map(Rule::id).orElse("unknown rule");
                 if (catalogued.isEmpty() || catalogued.get().message() == null) {
                     problems.add(rule + " (" + constraint + " on " + eClass.getName()
-                            + ") has no entry with a message in the rule catalogue " + RuleCatalog.RESOURCE);
+                            + ") has no entry with a message in the rule catalogue " + RuleCatalog.SOURCE_FILE);
                     continue;
                 }
                 String body = bodies == null ? null : bodies.getDetails().get(constraint);
@@ -82,12 +82,13 @@ public final class OclRules {
                 List<String> undeclared = rule.constraints().stream().filter(c -> !declared.contains(c)).toList();
                 if (!undeclared.isEmpty()) {
                     problems.add(rule.id() + " is in the rule catalogue but no invariant of " + ePackage.getName()
-                            + " declares the constraint " + String.join(", ", undeclared) + " it names in " + RuleCatalog.RESOURCE);
+                            + " declares the constraint " + String.join(", ", undeclared) + " it names in " + RuleCatalog.SOURCE_FILE);
                 } else if (rule.message() != null && rule.constraints().isEmpty() && !rule.isTiming()) {
                     problems.add(rule.id() + " is in the rule catalogue but no invariant of " + ePackage.getName()
                             + " implements it (name its constraints under " + rule.id() + ".constraints)");
                 }
             }
+            problems.addAll(TimingChecks.bindingProblems(Rules.all()));
         }
     }
 

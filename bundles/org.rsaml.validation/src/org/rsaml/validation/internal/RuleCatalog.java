@@ -11,6 +11,7 @@ import java.io.Reader;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -21,42 +22,49 @@ import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
-import org.rsaml.model.RsamlPackage;
 import org.rsaml.validation.RsamlValidationSetup.RuleDefinitionException;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Severity;
 
 /**
- * Reads the rule catalogue ({@code model/rules.properties} beside {@code rsaml.ecore}) and checks
- * that every entry is complete: a rule without a severity, a message or a remediation, or whose
- * message names an unknown parameter, stops RsaML at start-up naming the rule.
+ * Reads the rule catalogue ({@code rules/rules.properties} of this bundle) and checks that every
+ * entry is complete: a rule without a severity, a message or a remediation, or whose message names an
+ * unknown parameter, stops RsaML at start-up naming the rule. The catalogue binds rules to what
+ * implements them (constraint names, verdict names); this class checks that no name is bound twice.
  */
 public final class RuleCatalog {
 
-    /** Where the catalogue is, in the model bundle. */
-    public static final String RESOURCE = "/model/rules.properties";
+    /** Where the catalogue is, in this bundle. */
+    public static final String RESOURCE = "/rules/rules.properties";
+
+    /** The file in the source tree, for messages and tools that read it from a clone. */
+    public static final String SOURCE_FILE = "bundles/org.rsaml.validation" + RESOURCE;
+
+    /** What {@code source} says of the rule that reports EMF's structural checks. */
+    public static final String EMF = "EMF";
 
     private static final Pattern KEY = Pattern.compile("(RSA-\\d\\d)\\.(\\w+)");
     private static final Pattern PARAMETER = Pattern.compile("\\{(\\w+)}");
     private static final List<String> REQUIRED = List.of("name", "severity", "source", "context", "description", "scope",
             "remediation");
-    private static final Set<String> KNOWN = Set.of("name", "severity", "source", "constraints", "context", "description",
-            "scope", "message", "remediation");
+    private static final Set<String> KNOWN = Set.of("name", "severity", "source", "constraints", "verdicts",
+            "timingPrerequisite", "context", "description", "scope", "message", "remediation");
 
     private RuleCatalog() {
     }
 
     /** The rules of the catalogue in id order; throws {@link RuleDefinitionException} when it is incomplete. */
     public static List<Rule> load() {
-        try (InputStream in = RsamlPackage.class.getResourceAsStream(RESOURCE)) {
+        try (InputStream in = RuleCatalog.class.getResourceAsStream(RESOURCE)) {
             if (in == null) {
-                throw new RuleDefinitionException(List.of("the rule catalogue " + RESOURCE + " is missing from org.rsaml.model"));
+                throw new RuleDefinitionException(List.of("the rule catalogue " + RESOURCE + " is missing from org.rsaml.validation"));
             }
             List<String> problems = new ArrayList<>();
             List<Rule> rules = parse(new InputStreamReader(in, StandardCharsets.UTF_8), problems);
             if (!problems.isEmpty()) {
                 throw new RuleDefinitionException(problems);
             }
+            structure(rules);
             return rules;
         } catch (IOException e) {
             throw new UncheckedIOException(e);
@@ -78,6 +86,7 @@ public final class RuleCatalog {
         }
         List<Rule> rules = new ArrayList<>();
         Map<String, String> ruleOfConstraint = new HashMap<>();
+        Map<String, String> ruleOfVerdict = new HashMap<>();
         for (String id : ids) {
             List<String> missing = new ArrayList<>();
             for (String key : REQUIRED) {
@@ -88,7 +97,7 @@ public final class RuleCatalog {
             String source = properties.getProperty(id + ".source", "");
             String message = properties.getProperty(id + ".message");
             // EMF's structural findings bring their own messages; every other rule needs one.
-            if (!"EMF".equals(source.strip()) && blank(message)) {
+            if (!EMF.equals(source.strip()) && blank(message)) {
                 missing.add("message");
             }
             if (!missing.isEmpty()) {
@@ -112,20 +121,48 @@ public final class RuleCatalog {
                     }
                 }
             }
-            String listed = properties.getProperty(id + ".constraints", "").strip();
-            List<String> constraints = listed.isEmpty() ? List.of() : List.of(listed.split("\\s+"));
-            for (String constraint : constraints) {
-                String other = ruleOfConstraint.putIfAbsent(constraint, id);
-                if (other != null) {
-                    problems.add(id + " and " + other + " both name the constraint " + constraint + " in the rule catalogue; "
-                            + "an invariant implements one rule");
-                }
+            List<String> constraints = names(properties, id, "constraints", ruleOfConstraint, "an invariant implements one rule",
+                    problems);
+            List<String> verdicts = names(properties, id, "verdicts", ruleOfVerdict, "a verdict is reported as one rule",
+                    problems);
+            if (!verdicts.isEmpty() && !Rule.TIMING_ANALYSIS.equals(source.strip())) {
+                problems.add(id + " names verdicts of the timing analysis but its source is '" + source.strip() + "', not '"
+                        + Rule.TIMING_ANALYSIS + "'");
+            }
+            String prerequisite = properties.getProperty(id + ".timingPrerequisite", "false").strip();
+            if (!prerequisite.equals("true") && !prerequisite.equals("false")) {
+                problems.add(id + ".timingPrerequisite is '" + prerequisite + "' in the rule catalogue; true or false");
             }
             rules.add(new Rule(id, get(properties, id, "name"), severity, get(properties, id, "source"),
                     get(properties, id, "context"), get(properties, id, "description"), get(properties, id, "scope"),
-                    message == null ? null : message.strip(), get(properties, id, "remediation"), constraints));
+                    message == null ? null : message.strip(), get(properties, id, "remediation"), constraints, verdicts,
+                    prerequisite.equals("true")));
         }
         return rules;
+    }
+
+    /** The one rule of source {@code EMF}, which reports EMF's structural checks and unreadable models. */
+    public static Rule structure(Collection<Rule> rules) {
+        List<Rule> emf = rules.stream().filter(r -> EMF.equals(r.source())).toList();
+        if (emf.size() != 1) {
+            throw new RuleDefinitionException(List.of("the rule catalogue " + SOURCE_FILE + " has " + emf.size()
+                    + " rules of source " + EMF + "; exactly one reports EMF's structural checks"));
+        }
+        return emf.get(0);
+    }
+
+    /** The blank-separated names under {@code id.key}, each bound to one rule only. */
+    private static List<String> names(Properties properties, String id, String key, Map<String, String> ruleOfName, String why,
+            List<String> problems) {
+        String listed = properties.getProperty(id + "." + key, "").strip();
+        List<String> names = listed.isEmpty() ? List.of() : List.of(listed.split("\\s+"));
+        for (String name : names) {
+            String other = ruleOfName.putIfAbsent(name, id);
+            if (other != null) {
+                problems.add(id + " and " + other + " both name " + name + " under " + key + " in the rule catalogue; " + why);
+            }
+        }
+        return names;
     }
 
     private static String get(Properties properties, String id, String key) {

@@ -12,6 +12,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.stream.Collectors;
 
 import org.eclipse.emf.common.util.BasicDiagnostic;
 import org.eclipse.emf.common.util.Diagnostic;
@@ -40,14 +41,28 @@ import org.rsaml.validation.Rules;
 /**
  * The timing rules, which OCL cannot express: the verdicts of {@link TimingAnalysis} on the
  * architecture of an element, computed once per validation (cached in the validation context) and
- * reported on the element they concern. The rules' texts are in the catalogue like every other's.
+ * reported on the element they concern. Each kind of verdict has a name here ({@link #VERDICTS}); the
+ * catalogue's {@code verdicts} key binds it to the rule it is reported as, whose texts are in the
+ * catalogue like every other rule's.
  */
 public final class TimingChecks {
 
-    public static final String DEADLINE = "RSA-22";
-    public static final String LATENCY = "RSA-23";
-    public static final String NOT_ANALYSED = "RSA-24";
-    public static final String DEPLOYMENT = "RSA-25";
+    /** A task can miss its deadline (also: the analysis failed on the architecture). */
+    public static final String DEADLINE = "task-misses-deadline";
+    /** A latency requirement can be exceeded. */
+    public static final String LATENCY = "latency-exceeded";
+    /** A task the analysis reaches no verdict on. */
+    public static final String TASK_NOT_ANALYSED = "task-not-analysed";
+    /** A latency requirement the analysis reaches no verdict on. */
+    public static final String LATENCY_NOT_ANALYSED = "latency-not-analysed";
+    /** The analysis could not be run on the architecture (an error, never a silent pass). */
+    public static final String ANALYSIS_FAILED = "analysis-failed";
+    /** The deployment allocates a module to more than one processor. */
+    public static final String DEPLOYMENT = "inconsistent-deployment";
+
+    /** Every verdict these checks report; the catalogue binds each to exactly one rule. */
+    public static final List<String> VERDICTS = List.of(DEADLINE, ANALYSIS_FAILED, LATENCY, TASK_NOT_ANALYSED, LATENCY_NOT_ANALYSED,
+            DEPLOYMENT);
 
     /** The message parameters these checks supply from the analysis' results. */
     public static final List<String> PARAMETERS = List.of("processor", "task", "reason", "worstPath", "where", "witness");
@@ -55,9 +70,13 @@ public final class TimingChecks {
     /**
      * Rules whose errors leave the architecture without a task set (times missing, negative, beyond
      * the clock, longer than their period, references broken): while one is violated, those rules
-     * report the problem and the timing is not analysed, instead of reporting its consequences.
+     * report the problem and the timing is not analysed, instead of reporting its consequences. The
+     * catalogue marks them ({@code timingPrerequisite}). A holder: the catalogue's parser reads this
+     * class's {@link #PARAMETERS} while {@link Rules} is still being initialised.
      */
-    static final Set<String> PREREQUISITES = Set.of("RSA-10", "RSA-12", "RSA-13", "RSA-20");
+    private static final class Prerequisites {
+        static final Set<String> IDS = Rules.timingPrerequisites().stream().map(Rule::id).collect(Collectors.toUnmodifiableSet());
+    }
 
     /**
      * One timing finding: the rule, the element it is on, the supplied message parameters; or, with
@@ -97,6 +116,33 @@ public final class TimingChecks {
     private static final Object CONTEXT_KEY = TimingChecks.class;
 
     private TimingChecks() {
+    }
+
+    /**
+     * One line per broken binding between these checks' verdicts and the catalogue's timing rules: a
+     * verdict no rule reports, a timing rule that names no verdict or a verdict these checks do not have.
+     */
+    public static List<String> bindingProblems(List<Rule> rules) {
+        List<String> problems = new ArrayList<>();
+        for (String verdict : VERDICTS) {
+            if (rules.stream().noneMatch(r -> r.verdicts().contains(verdict))) {
+                problems.add("the timing analysis' verdict " + verdict + " is reported as no rule: name it under the verdicts"
+                        + " key of a rule of source '" + Rule.TIMING_ANALYSIS + "' in " + RuleCatalog.SOURCE_FILE);
+            }
+        }
+        for (Rule rule : rules) {
+            if (rule.isTiming() && rule.verdicts().isEmpty()) {
+                problems.add(rule.id() + " is a rule of the timing analysis but names no verdict under " + rule.id()
+                        + ".verdicts in " + RuleCatalog.SOURCE_FILE + "; known: " + String.join(", ", VERDICTS));
+            }
+            for (String verdict : rule.verdicts()) {
+                if (!VERDICTS.contains(verdict)) {
+                    problems.add(rule.id() + " names the verdict " + verdict + ", which the timing analysis does not report; known: "
+                            + String.join(", ", VERDICTS));
+                }
+            }
+        }
+        return problems;
     }
 
     /** Whether the timing rules may report on this element. */
@@ -139,7 +185,7 @@ public final class TimingChecks {
             return analyse(architecture, rules, facts);
         } catch (RuntimeException e) {
             Map<EObject, List<Found>> out = new IdentityHashMap<>();
-            add(out, new Found(rule(DEADLINE), architecture, Map.of(), "the timing rules could not be evaluated on "
+            add(out, new Found(rule(ANALYSIS_FAILED), architecture, Map.of(), "the timing rules could not be evaluated on "
                     + MessageParameters.element(architecture) + ": " + e));
             return out;
         }
@@ -174,7 +220,7 @@ public final class TimingChecks {
                 parameters.put("reason", reason(t.explanation()) + (s.note().isEmpty() ? "" : " (" + s.note() + ")"));
                 parameters.put("witness", t.witness() != null ? "; rsaml analyze shows the critical-instant schedule"
                         : p.result().demand() != null ? "; rsaml analyze shows the interval whose jobs need more than its length" : "");
-                add(out, new Found(rule(t.verdict() == Verdict.MISSES ? DEADLINE : NOT_ANALYSED), s.element(), parameters));
+                add(out, new Found(rule(t.verdict() == Verdict.MISSES ? DEADLINE : TASK_NOT_ANALYSED), s.element(), parameters));
             }
         }
         for (LatencyResult l : timing.latencies()) {
@@ -193,7 +239,7 @@ public final class TimingChecks {
                             + " more hops ... -> " + String.join(" -> ", hops.subList(hops.size() - SHOWN_HOPS, hops.size()))
                             + " (" + hops.size() + " hops; rsaml analyze and the JSON and SARIF reports list them all)";
             parameters.put("worstPath", hops.isEmpty() ? "" : "; worst path: " + shown);
-            add(out, new Found(rule(l.verdict() == Verdict.MISSES ? LATENCY : NOT_ANALYSED), l.requirement(), parameters, null,
+            add(out, new Found(rule(l.verdict() == Verdict.MISSES ? LATENCY : LATENCY_NOT_ANALYSED), l.requirement(), parameters, null,
                     shown.equals(whole) ? null : "worst path: " + whole));
         }
         return out;
@@ -233,18 +279,19 @@ public final class TimingChecks {
         out.computeIfAbsent(found.element(), k -> new ArrayList<>()).add(found);
     }
 
-    private static Rule rule(String id) {
-        return Rules.byId(id).orElseThrow(() -> new IllegalStateException(id + " is not in the rule catalogue"));
+    private static Rule rule(String verdict) {
+        return Rules.forVerdict(verdict).orElseThrow(() -> new IllegalStateException(
+                "no rule of the catalogue " + RuleCatalog.SOURCE_FILE + " names the verdict " + verdict + " under verdicts"));
     }
 
-    /** No element of the architecture breaks EMF's structure or a rule of {@link #PREREQUISITES}. */
+    /** No element of the architecture breaks EMF's structure or a rule of the catalogue's {@code timingPrerequisite} rules. */
     private static boolean prerequisitesHold(Architecture architecture, OclRules rules, ValidationFacts facts) {
         return withoutTaskSet(architecture, rules, facts) == null;
     }
 
     /**
      * The first element (in document order, the architecture last) that breaks EMF's structure or a
-     * rule of {@link #PREREQUISITES}, leaving the architecture without a task set; {@code null} when
+     * rule of the catalogue's {@code timingPrerequisite} rules, leaving the architecture without a task set; {@code null} when
      * none does and the architecture can be analysed.
      */
     public static EObject withoutTaskSet(Architecture architecture, OclRules rules) {
@@ -261,7 +308,7 @@ public final class TimingChecks {
             if (sound && facts != null) {
                 facts.structurallySound(element);
             }
-            if (!sound || rules.violatesAny(element, PREREQUISITES, facts)) {
+            if (!sound || rules.violatesAny(element, Prerequisites.IDS, facts)) {
                 return element;
             }
             if (o == null) {
@@ -270,9 +317,9 @@ public final class TimingChecks {
         }
     }
 
-    /** Whether a finding of this rule leaves an architecture without a task set (RSA-00 or a rule of {@link #PREREQUISITES}). */
+    /** Whether a finding of this rule leaves an architecture without a task set (the catalogue's {@code timingPrerequisite}). */
     public static boolean prerequisite(String ruleId) {
-        return PREREQUISITES.contains(ruleId) || Rules.STRUCTURE.id().equals(ruleId);
+        return Prerequisites.IDS.contains(ruleId);
     }
 
     /** The classes whose invariants apply to an element: its own and its supertypes. */

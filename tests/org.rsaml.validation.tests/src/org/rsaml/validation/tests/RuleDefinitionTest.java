@@ -5,11 +5,14 @@
 package org.rsaml.validation.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.StringReader;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EAnnotation;
@@ -28,8 +31,9 @@ import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 import org.rsaml.validation.internal.OclRules;
 import org.rsaml.validation.internal.RuleCatalog;
+import org.rsaml.validation.internal.TimingChecks;
 
-/** The rules are defined once, in rsaml.ecore, and a broken definition is caught at start-up. */
+/** The rules are defined once, in rsaml.ecore and the catalogue, and a broken definition is caught at start-up. */
 class RuleDefinitionTest {
 
     private static EPackage loadEcoreCopy() {
@@ -103,7 +107,7 @@ class RuleDefinitionTest {
         module.getEAnnotation(OclRules.OCL_URI).getDetails().put("RSA77_somethingNew", "true");
         List<String> problems = new OclRules(copy).problems();
         assertEquals(List.of("unknown rule (RSA77_somethingNew on Module) has no entry with a message in the rule catalogue "
-                + RuleCatalog.RESOURCE), problems);
+                + RuleCatalog.SOURCE_FILE), problems);
     }
 
     @Test
@@ -153,6 +157,75 @@ class RuleDefinitionTest {
                 """), problems);
         assertEquals(1, problems.size(), problems.toString());
         assertTrue(problems.get(0).startsWith("RSA-43's message names an unknown parameter {notAParameter}; known: "), problems.get(0));
+    }
+
+    /**
+     * The catalogue binds by data: every invariant of rsaml.ecore (the source file, not only the
+     * generated package) is named by exactly one rule, every verdict of the timing analysis too, and
+     * every rule names something that implements it.
+     */
+    @Test
+    void everyInvariantAndVerdictIsBoundToExactlyOneRuleAndEveryRuleIsImplemented() {
+        Map<String, List<String>> invariants = new TreeMap<>();
+        for (EClassifier c : loadEcoreCopy().getEClassifiers()) {
+            if (c instanceof EClass e) {
+                for (String name : EcoreUtil.getConstraints(e)) {
+                    invariants.computeIfAbsent(name, k -> new ArrayList<>()).add(e.getName());
+                }
+            }
+        }
+        assertFalse(invariants.isEmpty(), "rsaml.ecore declares no invariant");
+        for (String invariant : invariants.keySet()) {
+            List<String> rules = Rules.all().stream().filter(r -> r.constraints().contains(invariant)).map(Rule::id).toList();
+            assertEquals(1, rules.size(), "the invariant " + invariant + " (on " + invariants.get(invariant)
+                    + ") must be named by exactly one rule's constraints in " + RuleCatalog.SOURCE_FILE + ", is by " + rules);
+        }
+        for (String verdict : TimingChecks.VERDICTS) {
+            List<String> rules = Rules.all().stream().filter(r -> r.verdicts().contains(verdict)).map(Rule::id).toList();
+            assertEquals(1, rules.size(), "the timing analysis' verdict " + verdict + " must be named by exactly one rule's verdicts in "
+                    + RuleCatalog.SOURCE_FILE + ", is by " + rules);
+        }
+        for (Rule rule : Rules.all()) {
+            boolean emf = rule == Rules.STRUCTURE;
+            boolean ocl = !rule.constraints().isEmpty() && invariants.keySet().containsAll(rule.constraints());
+            boolean timing = rule.isTiming() && !rule.verdicts().isEmpty() && TimingChecks.VERDICTS.containsAll(rule.verdicts());
+            assertEquals(1, (emf ? 1 : 0) + (ocl ? 1 : 0) + (timing ? 1 : 0), rule.id() + " must be implemented by exactly one of"
+                    + " EMF's structural checks, invariants of rsaml.ecore " + rule.constraints() + " or verdicts of the timing analysis "
+                    + rule.verdicts() + " (declared invariants: " + invariants.keySet() + "; verdicts: " + TimingChecks.VERDICTS + ")");
+        }
+    }
+
+    @Test
+    void aVerdictOfTheTimingAnalysisThatNoRuleReportsIsNamed() throws Exception {
+        List<String> problems = new ArrayList<>();
+        List<Rule> catalogue = RuleCatalog.parse(new StringReader("""
+                RSA-90.name = only-deadlines
+                RSA-90.severity = error
+                RSA-90.source = timing analysis
+                RSA-90.verdicts = task-misses-deadline analysis-failed latency-exceeded task-not-analysed latency-not-analysed no-such-verdict
+                RSA-90.context = Module
+                RSA-90.description = Something holds.
+                RSA-90.scope = Every module.
+                RSA-90.message = {Element} misses: {reason}
+                RSA-90.remediation = Fix it.
+                RSA-91.name = twice
+                RSA-91.severity = error
+                RSA-91.source = RsaML
+                RSA-91.verdicts = task-misses-deadline
+                RSA-91.context = Module
+                RSA-91.description = Something holds.
+                RSA-91.scope = Every module.
+                RSA-91.message = {Element} misses
+                RSA-91.remediation = Fix it.
+                """), problems);
+        assertEquals(List.of("RSA-91 and RSA-90 both name task-misses-deadline under verdicts in the rule catalogue; a verdict is reported as one rule",
+                "RSA-91 names verdicts of the timing analysis but its source is 'RsaML', not 'timing analysis'"), problems,
+                "a verdict bound twice, or to a rule that is not the timing analysis', is refused");
+        assertEquals(List.of("the timing analysis' verdict inconsistent-deployment is reported as no rule: name it under the verdicts key"
+                + " of a rule of source 'timing analysis' in " + RuleCatalog.SOURCE_FILE,
+                "RSA-90 names the verdict no-such-verdict, which the timing analysis does not report; known: "
+                        + String.join(", ", TimingChecks.VERDICTS)),
+                TimingChecks.bindingProblems(catalogue.subList(0, 1)), "the unbound and the unknown verdict are both named");
     }
 
     @Test

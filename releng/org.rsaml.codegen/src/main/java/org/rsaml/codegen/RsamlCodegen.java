@@ -5,7 +5,9 @@
 package org.rsaml.codegen;
 
 import java.io.IOException;
+import java.io.Reader;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -34,9 +36,11 @@ import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.xmi.impl.EcoreResourceFactoryImpl;
 import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
+import org.rsaml.validation.RulesDocument;
 
 /**
- * Generates RsaML's EMF code (model, edit and editor) from {@code rsaml.ecore} outside Eclipse.
+ * Generates RsaML's EMF code (model, edit and editor) from {@code rsaml.ecore} outside Eclipse, and
+ * the rule table of {@code docs/rules.md} from the rule catalogue.
  *
  * <p>The genmodel is rebuilt from the current .ecore on every run (keeping its settings), so that
  * a change to the metamodel needs nothing but this command. Everything is generated into a scratch
@@ -92,6 +96,25 @@ public final class RsamlCodegen {
         } finally {
             deleteTree(scratch);
         }
+        writeRulesDocument(root);
+    }
+
+    /** Rewrites the rule table of docs/rules.md from the catalogue (the file is left alone when it is up to date). */
+    static void writeRulesDocument(Path root) throws IOException {
+        Path page = root.resolve(RulesDocument.PATH);
+        String current = Files.readString(page, StandardCharsets.UTF_8);
+        String updated = rulesDocument(root, current);
+        if (!updated.equals(current)) {
+            Files.writeString(page, updated, StandardCharsets.UTF_8);
+        }
+        System.out.println("Regenerated the rule table of " + page + " from " + root.resolve(RulesDocument.CATALOGUE));
+    }
+
+    /** The page with its rule table produced from the catalogue of the clone at {@code root}. */
+    static String rulesDocument(Path root, String page) throws IOException {
+        try (Reader catalogue = Files.newBufferedReader(root.resolve(RulesDocument.CATALOGUE), StandardCharsets.UTF_8)) {
+            return RulesDocument.update(page, RulesDocument.read(catalogue));
+        }
     }
 
     /** Regenerates into a scratch folder and lists every committed file that differs from it. */
@@ -109,6 +132,10 @@ public final class RsamlCodegen {
             }
             compare(scratch.resolve("rsaml.genmodel"), root.resolve(MODEL_DIR + "rsaml.genmodel"),
                     MODEL_DIR + "rsaml.genmodel", stale);
+            String page = Files.readString(root.resolve(RulesDocument.PATH), StandardCharsets.UTF_8);
+            if (!rulesDocument(root, page).equals(page)) {
+                stale.add(RulesDocument.PATH + " (the rule table)");
+            }
             return stale;
         } finally {
             deleteTree(scratch);
