@@ -57,12 +57,11 @@ public final class RsamlValidationSetup {
     }
 
     /**
-     * Registers the package and puts RsaML's validator in EMF's validator registry for it, in place
-     * of the generated one (which reports every invariant as an error with a generic message).
+     * Registers the package and puts RsaML's validator in EMF's validator registry for it: the only
+     * validator of the package (the generated package registers none).
      */
     public static synchronized void registerValidator() {
         registerPackage();
-        // RsamlPackage.eINSTANCE is initialised by now, so the generated registration cannot come later.
         EValidator.Registry.INSTANCE.put(RsamlPackage.eINSTANCE, RuleEValidator.DESCRIPTOR);
     }
 

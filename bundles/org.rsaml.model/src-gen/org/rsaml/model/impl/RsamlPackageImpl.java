@@ -10,7 +10,6 @@ import org.eclipse.emf.ecore.EEnum;
 import org.eclipse.emf.ecore.EOperation;
 import org.eclipse.emf.ecore.EPackage;
 import org.eclipse.emf.ecore.EReference;
-import org.eclipse.emf.ecore.EValidator;
 
 import org.eclipse.emf.ecore.impl.EPackageImpl;
 
@@ -52,8 +51,6 @@ import org.rsaml.model.Suppressor;
 import org.rsaml.model.SynchronisationType;
 import org.rsaml.model.TimeScaled;
 import org.rsaml.model.TimeUnit;
-
-import org.rsaml.model.util.RsamlValidator;
 
 /**
  * <!-- begin-user-doc -->
@@ -372,16 +369,6 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 
 		// Initialize created meta-data
 		theRsamlPackage.initializePackageContents();
-
-		// Register package validator
-		EValidator.Registry.INSTANCE.put
-			(theRsamlPackage,
-			 new EValidator.Descriptor() {
-				 @Override
-				 public EValidator getEValidator() {
-					 return RsamlValidator.INSTANCE;
-				 }
-			 });
 
 		// Mark meta-data to indicate it can't be changed
 		theRsamlPackage.freeze();
@@ -2268,8 +2255,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "invocationDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL",
-			   "settingDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL",
-			   "validationDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL"
+			   "settingDelegates", "http://www.eclipse.org/emf/2002/Ecore/OCL"
 		   });
 		addAnnotation
 		  (namedElementEClass,

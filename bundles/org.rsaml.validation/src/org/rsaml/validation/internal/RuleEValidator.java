@@ -4,29 +4,43 @@
  */
 package org.rsaml.validation.internal;
 
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 
 import org.eclipse.emf.common.util.BasicDiagnostic;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.DiagnosticChain;
+import org.eclipse.emf.ecore.EAnnotation;
 import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EClassifier;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EPackage;
 import org.eclipse.emf.ecore.EValidator;
+import org.eclipse.emf.ecore.util.EObjectValidator;
+import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.rsaml.model.Module;
-import org.rsaml.model.util.RsamlValidator;
+import org.rsaml.model.RsamlPackage;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 import org.rsaml.validation.RsamlValidationSetup;
 
 /**
- * The generated validator with RsaML's voice: a violated OCL invariant is reported with its rule's
- * id, severity and the catalogue's message naming elements and values, instead of EMF's generic
- * error. {@link RsamlValidationSetup} registers it for the RsaML package in EMF's validator
- * registry (and the bundle's component does inside OSGi), so that every EMF client — the stock
+ * RsaML's validator, the only one of the RsaML package: EMF's structural checks, every OCL invariant
+ * of rsaml.ecore reported with its rule's id, severity and the catalogue's message naming elements and
+ * values, and the timing rules. The generated package registers no validator (the code generator runs
+ * with EMF's {@code EMF_NO_CONSTRAINTS}, and the package names no validation delegate), so nothing
+ * else judges RsaML's rules; {@link RsamlValidationSetup} registers this one in EMF's validator
+ * registry (the bundle's component does inside OSGi), so that every EMF client — the stock
  * {@code Diagnostician}, the editors, Sirius — reports what {@code rsaml validate} reports.
+ *
+ * <p>Each element gets EMF's structural checks and then the invariants of its class and its supertypes,
+ * in the order EMF's generated validators use (supertypes first, each class's invariants in the order
+ * the {@code .ecore} declares them), read from the package: a new invariant needs no code here.
  */
-public class RuleEValidator extends RsamlValidator {
+public class RuleEValidator extends EObjectValidator {
 
     public static final String SOURCE = "org.rsaml.validation";
 
@@ -43,10 +57,96 @@ public class RuleEValidator extends RsamlValidator {
         }
     };
 
+    /** An invariant as an element meets it: its name, the class that declares it, its OCL text. */
+    private record Invariant(String constraint, EClass declaredOn, String expression) {
+    }
+
     private final OclRules rules;
+    private final Map<EClass, List<Invariant>> invariants = new ConcurrentHashMap<>();
 
     public RuleEValidator(OclRules rules) {
         this.rules = rules;
+    }
+
+    @Override
+    protected EPackage getEPackage() {
+        return RsamlPackage.eINSTANCE;
+    }
+
+    /** EMF's checks and the OCL invariants, then the timing rules (the catalogue's rules of source {@code timing analysis}). */
+    @Override
+    protected boolean validate(int classifierID, Object value, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        if (!(value instanceof EObject eObject)) {
+            return true; // RsaML's data types and enumerations declare no constraint
+        }
+        EClassifier classifier = getEPackage().getEClassifiers().get(classifierID);
+        boolean result = validateElement((EClass) classifier, eObject, diagnostics, context);
+        if ((result || diagnostics != null) && TimingChecks.concerns(eObject)) {
+            for (TimingChecks.Found f : TimingChecks.on(eObject, context, rules)) {
+                result = false;
+                if (diagnostics == null) {
+                    break;
+                }
+                diagnostics.add(TimingChecks.diagnostic(f));
+            }
+        }
+        return result;
+    }
+
+    private boolean validateElement(EClass eClass, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        List<Invariant> applicable = invariants.computeIfAbsent(eClass, RuleEValidator::invariantsOf);
+        if (applicable.isEmpty()) {
+            return validate_EveryDefaultConstraint(eObject, diagnostics, context);
+        }
+        if (!validate_NoCircularContainment(eObject, diagnostics, context)) {
+            return false;
+        }
+        boolean result = validate_EveryMultiplicityConforms(eObject, diagnostics, context);
+        if (result || diagnostics != null) {
+            result &= validate_EveryDataValueConforms(eObject, diagnostics, context);
+        }
+        if (result || diagnostics != null) {
+            result &= validate_EveryReferenceIsContained(eObject, diagnostics, context);
+        }
+        if (result || diagnostics != null) {
+            result &= validate_EveryBidirectionalReferenceIsPaired(eObject, diagnostics, context);
+        }
+        if (result || diagnostics != null) {
+            result &= validate_EveryProxyResolves(eObject, diagnostics, context);
+        }
+        if (result || diagnostics != null) {
+            result &= validate_UniqueID(eObject, diagnostics, context);
+        }
+        if (result || diagnostics != null) {
+            result &= validate_EveryKeyUnique(eObject, diagnostics, context);
+        }
+        if (result || diagnostics != null) {
+            result &= validate_EveryMapEntryUnique(eObject, diagnostics, context);
+        }
+        for (Invariant invariant : applicable) {
+            if (result || diagnostics != null) {
+                result &= validate(invariant.declaredOn(), eObject, diagnostics, context, OclRules.OCL_URI, invariant.constraint(),
+                        invariant.expression(), Diagnostic.ERROR, SOURCE, 0);
+            }
+        }
+        return result;
+    }
+
+    /**
+     * The invariants an element of {@code eClass} must satisfy: those of its supertypes, then its own;
+     * a class that redeclares a supertype's constraint name replaces it in place.
+     */
+    private static List<Invariant> invariantsOf(EClass eClass) {
+        List<EClass> classes = new ArrayList<>(eClass.getEAllSuperTypes());
+        classes.add(eClass);
+        Map<String, Invariant> byName = new LinkedHashMap<>();
+        for (EClass c : classes) {
+            EAnnotation bodies = c.getEAnnotation(OclRules.OCL_URI);
+            for (String constraint : EcoreUtil.getConstraints(c)) {
+                byName.put(constraint, new Invariant(constraint, c, bodies == null ? null : bodies.getDetails().get(constraint)));
+            }
+        }
+        return List.copyOf(byName.values());
     }
 
     /** Evaluates the invariant's text from rsaml.ecore with RsaML's parsed rules, not a global delegate registry. */
@@ -104,22 +204,6 @@ public class RuleEValidator extends RsamlValidator {
         String message = "Rule " + rule.id() + " could not be evaluated on " + MessageParameters.element(eObject) + ": "
                 + throwable.getLocalizedMessage();
         diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, code, message, new Object[] { eObject, rule, message }));
-    }
-
-    /** The OCL invariants and EMF's checks of the generated validator, then the timing rules (RSA-22 to RSA-25). */
-    @Override
-    protected boolean validate(int classifierID, Object value, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        boolean result = super.validate(classifierID, value, diagnostics, context);
-        if ((result || diagnostics != null) && value instanceof EObject eObject && TimingChecks.concerns(eObject)) {
-            for (TimingChecks.Found f : TimingChecks.on(eObject, context, rules)) {
-                result = false;
-                if (diagnostics == null) {
-                    break;
-                }
-                diagnostics.add(TimingChecks.diagnostic(f));
-            }
-        }
-        return result;
     }
 
     /*

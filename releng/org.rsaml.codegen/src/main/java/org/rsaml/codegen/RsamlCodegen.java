@@ -23,6 +23,7 @@ import org.eclipse.emf.codegen.ecore.generator.GeneratorAdapterFactory;
 import org.eclipse.emf.codegen.ecore.genmodel.GenModel;
 import org.eclipse.emf.codegen.ecore.genmodel.GenModelFactory;
 import org.eclipse.emf.codegen.ecore.genmodel.GenModelPackage;
+import org.eclipse.emf.codegen.ecore.genmodel.GenPackage;
 import org.eclipse.emf.codegen.ecore.genmodel.generator.GenBaseGeneratorAdapter;
 import org.eclipse.emf.codegen.ecore.genmodel.generator.GenModelGeneratorAdapterFactory;
 import org.eclipse.emf.common.util.BasicMonitor;
@@ -58,6 +59,17 @@ public final class RsamlCodegen {
             "org.rsaml.model.editor", List.of("src-gen", "plugin.properties", "icons")));
 
     static final String MODEL_DIR = "bundles/org.rsaml.model/model/";
+
+    /*
+     * The invariants of rsaml.ecore are RsaML's rules, judged by the one validator of the package,
+     * org.rsaml.validation's RuleEValidator. EMF's generator would add a validator of its own, which
+     * the generated package registers when it is initialised; its switch EMF_NO_CONSTRAINTS leaves
+     * both out (the invariants stay in the package's annotations). It is read once, when the
+     * generator's GenPackageImpl is loaded, hence here, before any generator class.
+     */
+    static {
+        System.setProperty("EMF_NO_CONSTRAINTS", "true");
+    }
 
     private RsamlCodegen() {
     }
@@ -170,6 +182,12 @@ public final class RsamlCodegen {
         genModel.getForeignModel().add("rsaml.ecore");
         genModel.setCanGenerate(true);
 
+        for (GenPackage genPackage : genModel.getGenPackages()) {
+            if (genPackage.hasConstraints()) {
+                throw new IllegalStateException("EMF's generator would generate and register a validator for "
+                        + genPackage.getPackageName() + ": EMF_NO_CONSTRAINTS was read before RsamlCodegen set it");
+            }
+        }
         Diagnostic diagnostic = genModel.diagnose();
         if (diagnostic.getSeverity() == Diagnostic.ERROR) {
             throw new IllegalStateException("rsaml.genmodel is not valid: " + diagnostic);
