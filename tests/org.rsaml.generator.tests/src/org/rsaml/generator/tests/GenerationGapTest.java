@@ -52,7 +52,9 @@ class GenerationGapTest {
         assertTrue(source.contains("void TaskInterpreter::parseTask() {}"));
         Files.writeString(cpp, source.replace("void TaskInterpreter::parseTask() {}", USER_ACTION)
                 .replace("}  // namespace", USER_FUNCTION + "\n}  // namespace"));
-        Files.writeString(hpp, Files.readString(hpp).replace("  void parseTask();", "  void parseTask();\n  void interpretTask();"));
+        String header = Files.readString(hpp);
+        assertTrue(header.contains("  void parseTask() override;"), "the architect's header does not declare the action with override:\n" + header);
+        Files.writeString(hpp, header.replace("  void parseTask() override;", "  void parseTask() override;\n  void interpretTask();"));
         Map<String, byte[]> userFiles = userFiles(out);
 
         // The model changes: a new output port and a new entry port, connected; the function is renamed.

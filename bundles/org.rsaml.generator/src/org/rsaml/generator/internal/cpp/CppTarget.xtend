@@ -13,6 +13,7 @@ import org.rsaml.generator.internal.cpp.CppNames.MessageStruct
 import org.rsaml.generator.internal.cxx.CxxCode
 import org.rsaml.generator.internal.cxx.CxxNames
 import org.rsaml.generator.internal.cxx.ReleaseBounds
+import org.rsaml.generator.internal.cxx.UserCode
 import org.rsaml.analysis.plan.ExecutionPlan
 import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction
@@ -71,6 +72,7 @@ class CppFiles {
 	val extension CppNames cppNames
 	val String banner
 	val ReleaseBounds bounds
+	val UserCode userCode
 
 	new(ExecutionPlan plan, String project) {
 		this.plan = plan
@@ -78,6 +80,10 @@ class CppFiles {
 		this.cppNames = new CppNames(plan, names)
 		this.banner = Templates.banner(plan)
 		this.bounds = ReleaseBounds.of(plan)
+		this.userCode = new UserCode(names, "Module",
+			"declares the ports and runs the functions; implement the actions and\n// input handlers here.",
+			"Inputs: in_<port>.value() is the latest value. Outputs: set out_<port>.value; it is sent after\neach activation of the module (or call out_<port>.send() to send at once).",
+			"value", [cppType])
 	}
 
 	def files() {
@@ -92,8 +98,8 @@ class CppFiles {
 		for (m : plan.modules) {
 			files += GeneratedFile.generated(baseHeaderPath(m).toString, baseHeader(m))
 			files += GeneratedFile.generated(dir(m) + m.baseName + ".cpp", baseSource(m))
-			files += GeneratedFile.user("src/" + m.layerId + "/" + m.className + ".hpp", userHeader(m), m.hooks, m.stubs, CxxCode.IDENTIFIERS)
-			files += GeneratedFile.user(userSourcePath(m).toString, userSource(m))
+			files += GeneratedFile.user("src/" + m.layerId + "/" + m.className + ".hpp", userCode.header(m), m.hooks, m.stubs, CxxCode.IDENTIFIERS)
+			files += GeneratedFile.user(userSourcePath(m).toString, userCode.source(m))
 		}
 		for (t : cppNames.messageStructs) {
 			files += GeneratedFile.user("src/" + t.cppHeader, userMessage(t))
@@ -458,60 +464,6 @@ class CppFiles {
 			'''
 		}
 	}
-
-	def private userHeader(PlannedModule m) '''
-		// Module «doc(m.qualifiedName)»«described(m.description)»
-		// «Templates.USER_OWNED» The generated base class
-		// («m.baseName», in gen/«m.layerId»/) declares the ports and runs the functions; implement the
-		// actions and input handlers here.
-		#pragma once
-
-		#include "«m.layerId»/«m.baseName».hpp"
-
-		namespace «ns(m)» {
-
-		class «m.className» : public «m.baseName» {
-		 public:
-		  using «m.baseName»::«m.baseName»;
-
-		 protected:
-		  «FOR f : m.functions.filter[!actions.empty]»
-		  	// Function «doc(f.name)»
-		  	«FOR a : f.actions»
-		  		void «a.method»();
-		  	«ENDFOR»
-		  «ENDFOR»
-		  «IF !m.inputs.empty»
-		  	// Entry ports
-		  	«FOR p : m.inputs»
-		  		void «p.onName»(const «p.cppType»& value);
-		  	«ENDFOR»
-		  «ENDIF»
-		};
-
-		}  // namespace «ns(m)»
-	'''
-
-	def private userSource(PlannedModule m) '''
-		// Module «doc(m.qualifiedName)». «Templates.USER_OWNED»
-		// Inputs: in_<port>.value() is the latest value. Outputs: set out_<port>.value; it is sent after
-		// each activation of the module (or call out_<port>.send() to send at once).
-		#include "«m.layerId»/«m.className».hpp"
-
-		namespace «ns(m)» {
-		«FOR a : m.actions»
-
-			// «doc(a.function.name)».«doc(a.name)»«described(a.description)»
-			void «m.className»::«a.method»() {}
-		«ENDFOR»
-		«FOR p : m.inputs»
-
-			// «doc(p.name)»«described(p.description)»
-			void «m.className»::«p.onName»(const «p.cppType»& value) { (void)value; }
-		«ENDFOR»
-
-		}  // namespace «ns(m)»
-	'''
 
 	def private userCmake() '''
 		# Yours: created once by RsaML, never overwritten; the generated CMakeLists.txt includes it.

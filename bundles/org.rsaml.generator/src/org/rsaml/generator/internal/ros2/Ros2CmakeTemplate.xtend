@@ -1,0 +1,125 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.internal.ros2
+
+import java.util.Set
+import org.rsaml.generator.internal.Templates
+import org.rsaml.generator.internal.cxx.CxxNames
+
+/**
+ * The CMakeLists.txt of the nodes' package and of the interfaces package, and the user.cmake each
+ * starts with (the architect's, created once).
+ */
+class Ros2CmakeTemplate extends Ros2Template {
+
+	val extension CxxNames names
+	val extension Ros2Names rosNames
+
+	new(Ros2Context context) {
+		super(context)
+		this.names = context.names
+		this.rosNames = context.rosNames
+	}
+
+	def interfacesCmake(Set<String> deps) '''
+		# «banner»
+		# Message packages your .msg files use are found when you generate again; others you need go in
+		# «Ros2Manifest.FILE» as <depend>. Interface files of your own (srv/, action/, more msg/) go in
+		# user.cmake, included below.
+		cmake_minimum_required(VERSION 3.8)
+		project(«rosNames.interfacesPackage»)
+
+		find_package(ament_cmake REQUIRED)
+		find_package(rosidl_default_generators REQUIRED)
+		«FOR d : deps»
+			find_package(«d» REQUIRED)
+		«ENDFOR»
+
+		set(RSAML_USER_INTERFACES "")
+		include(${CMAKE_CURRENT_SOURCE_DIR}/user.cmake)
+
+		rosidl_generate_interfaces(${PROJECT_NAME}
+		  «FOR t : context.generatedMessages»
+		  	"msg/«t.rosName».msg"
+		  «ENDFOR»
+		  ${RSAML_USER_INTERFACES}
+		  «IF !deps.empty»
+		  	DEPENDENCIES «deps.join(" ")»
+		  «ENDIF»
+		)
+
+		ament_export_dependencies(rosidl_default_runtime)
+		ament_package()
+	'''
+
+	def cmake() '''
+		# «banner»
+		# Every node is an rclcpp component of the shared library ${PROJECT_NAME}, and an executable of
+		# its own. Your additions go in user.cmake, included below.
+		cmake_minimum_required(VERSION 3.8)
+		project(«pkg» LANGUAGES CXX)
+
+		if(NOT CMAKE_CXX_STANDARD)
+		  set(CMAKE_CXX_STANDARD 17)
+		  set(CMAKE_CXX_STANDARD_REQUIRED ON)
+		endif()
+
+		find_package(ament_cmake REQUIRED)
+		find_package(rclcpp REQUIRED)
+		find_package(rclcpp_components REQUIRED)
+		find_package(Threads REQUIRED)
+		«FOR p : context.messagePackages»
+			find_package(«p» REQUIRED)
+		«ENDFOR»
+
+		add_library(${PROJECT_NAME} SHARED
+		  gen/rsaml/scheduling.cpp
+		  «FOR m : plan.modules»
+		  	gen/«m.layerId»/«m.className»Component.cpp
+		  	src/«m.layerId»/«m.className».cpp
+		  «ENDFOR»
+		)
+		target_include_directories(${PROJECT_NAME} PUBLIC gen src)
+		target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp Threads::Threads«FOR p : context.messagePackages» ${«p»_TARGETS}«ENDFOR» PRIVATE rclcpp_components::component)
+		rclcpp_components_register_nodes(${PROJECT_NAME}
+		  «FOR m : plan.modules»
+		  	"«context.plugin(m)»"
+		  «ENDFOR»
+		)
+
+		# The component container of the launch file: each timed release on a thread at its priority.
+		add_executable(«rosNames.containerExecutable» gen/rsaml/container.cpp)
+		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
+
+		# An executable per node, scheduled as in the container.
+		«FOR m : plan.modules»
+			add_executable(«m.executable» gen/«m.layerId»/«m.mainName».cpp)
+			target_link_libraries(«m.executable» PRIVATE ${PROJECT_NAME})
+		«ENDFOR»
+
+		include(user.cmake)
+
+		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
+		install(TARGETS «rosNames.containerExecutable»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
+		install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
+
+		ament_package()
+	'''
+
+	def interfacesUserCmake() '''
+		# «Templates.USER_OWNED» CMakeLists.txt includes it before
+		# rosidl_generate_interfaces(). Your own interface files, for example:
+		#   list(APPEND RSAML_USER_INTERFACES "srv/SetSpeed.srv" "action/Move.action")
+		# Packages their fields use go in «Ros2Manifest.FILE» (<depend>geometry_msgs</depend>).
+	'''
+
+	def userCmake() '''
+		# «Templates.USER_OWNED» CMakeLists.txt includes it before
+		# ament_package(). The nodes are the shared library ${PROJECT_NAME}; add what they need, e.g.
+		#   find_package(tf2_ros REQUIRED)
+		#   target_link_libraries(${PROJECT_NAME} PRIVATE tf2_ros::tf2_ros)
+		# and name the package in «Ros2Manifest.FILE» (<depend>tf2_ros</depend>).
+	'''
+}

@@ -1,0 +1,291 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.internal.ros2
+
+import java.util.TreeSet
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction
+import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
+import org.rsaml.analysis.plan.ExecutionPlan.Release
+import org.rsaml.generator.internal.cxx.CxxNames
+
+/**
+ * A module's node, the generated base class gen/LAYER/ModuleBase.hpp: its parameters, publishers,
+ * subscriptions (subsumption links among them) and timers on the scheduling runtime, the virtual
+ * methods the architect's class overrides, and how a release or an arrival runs them.
+ */
+class Ros2NodeTemplate extends Ros2Template {
+
+	val extension CxxNames names
+	val extension Ros2Names rosNames
+
+	new(Ros2Context context) {
+		super(context)
+		this.names = context.names
+		this.rosNames = context.rosNames
+	}
+
+	def private headersOf(PlannedModule m) {
+		val headers = new TreeSet<String>
+		for (p : m.ports) {
+			headers += p.rosHeader
+		}
+		for (p : m.inputs) {
+			for (l : p.suppressors) {
+				headers += l.trigger.rosHeader
+			}
+		}
+		for (p : m.outputs) {
+			for (l : p.inhibitors) {
+				headers += l.trigger.rosHeader
+			}
+		}
+		headers
+	}
+
+
+	def base(PlannedModule m) '''
+		// «banner»
+		#pragma once
+
+		#include <cstdint>
+		#include <memory>
+		#include <optional>
+		#include <stdexcept>
+		#include <string>
+
+		#include <rclcpp/rclcpp.hpp>
+		#include "rsaml/scheduling.hpp"
+		«FOR h : headersOf(m)»
+			#include <«h»>
+		«ENDFOR»
+
+		namespace «names.project»::«m.layerId» {
+
+		/**
+		 * Node «doc(m.rosNode)»: module «doc(m.qualifiedName)»«described(m.description)»
+		 * Timing: «doc(m.timing)».
+		 * The generated part: «m.className» (src/«m.layerId»/«m.className».hpp, yours) derives from it.
+		 * Topics are relative: the node's namespace (launch argument namespace) prefixes them all. The
+		 * model's times are parameters (nanoseconds, > 0) with the model's values as defaults; QoS can be
+		 * overridden with the qos_overrides.<topic> parameters; timers run on the node's clock
+		 * (use_sim_time).
+		 */
+		class «m.baseName» : public ::«names.project»::rsaml_ros2::ScheduledNode {
+		 public:
+		  explicit «m.baseName»(const rclcpp::NodeOptions& options)
+		      : ::«names.project»::rsaml_ros2::ScheduledNode(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
+		    «FOR r : m.releases»
+		    	«r.timerMember»_period_ = positive(«str(context.periodParameter(r))», this->declare_parameter<std::int64_t>(«str(context.periodParameter(r))», «r.periodNs»));
+		    «ENDFOR»
+		    «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
+		    	«f.lastRunMember»_interval_ = positive(«str(f.method + ".min_interval_ns")», this->declare_parameter<std::int64_t>(«str(f.method + ".min_interval_ns")», «f.minIntervalNs»));
+		    «ENDFOR»
+		    «IF m.reactive && m.reactionIntervalNs > 0»
+		    	reaction_interval_ = positive("reaction.min_interval_ns", this->declare_parameter<std::int64_t>("reaction.min_interval_ns", «m.reactionIntervalNs»));
+		    «ENDIF»
+		    «FOR l : context.linksOf(m)»
+		    	link_«l.stem»_duration_ = positive(«str(l.stem + ".duration_ns")», this->declare_parameter<std::int64_t>(«str(l.stem + ".duration_ns")», «l.durationNs»));
+		    «ENDFOR»
+		    rclcpp::PublisherOptions publisher_options;
+		    publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		    rclcpp::SubscriptionOptions subscription_options;
+		    subscription_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		    (void)publisher_options;
+		    (void)subscription_options;
+		    «FOR p : m.outputs»
+		    	«p.pubName»_ = this->create_publisher<«p.rosType»>(«str(p.topic)», «p.qos», publisher_options);
+		    «ENDFOR»
+		    «FOR p : m.inputs»
+		    	«p.subName»_ = this->create_subscription<«p.rosType»>(
+		    	    «str(p.topic)», «p.qos»,
+		    	    [this, port = this->rsaml_add_arrivals(«str(p.name)»)](std::shared_ptr<const «p.rosType»> message) {
+		    	      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(*message, false); });
+		    	    },
+		    	    subscription_options);
+		    «ENDFOR»
+		    «FOR l : context.linksOf(m)»
+		    	// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «IF l.trigger.assertsOnlyWhenTrue»each true on «ELSE»each message on «ENDIF»«doc(l.trigger.qualifiedName)».
+		    	link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
+		    	    «str(l.trigger.topic)», «l.trigger.qos»,
+		    	    [this, port = this->rsaml_add_arrivals(«str(l.qualifiedName)»)](std::shared_ptr<const «l.trigger.rosType»> message) {
+		    	      this->rsaml_run_arrival(port, [&] {
+		    	        «IF l.trigger.assertsOnlyWhenTrue»
+		    	        	if (!message->data) {
+		    	        	  return;  // only true asserts the link: false neither starts nor ends it, nor is delivered
+		    	        	}
+		    	        «ENDIF»
+		    	        link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
+		    	        «IF l.deliversData»
+		    	        	this->«l.target.receiveName»(*message, true);
+		    	        «ELSE»
+		    	        	(void)message;
+		    	        «ENDIF»
+		    	      });
+		    	    },
+		    	    subscription_options);
+		    «ENDFOR»
+		    «FOR r : m.releases»
+		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank», deadline «r.deadlineNs» ns, cost «r.costNs» ns
+		    	«r.timerMember»_ = this->rsaml_add_timer(
+		    	    this->rsaml_add_release(«str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs»),
+		    	    «r.timerMember»_period_, [this] { this->«r.method»(); });
+		    «ENDFOR»
+		  }
+		  «IF !m.inputs.empty»
+
+		  	// Entry ports: the latest message received.
+		  	«FOR p : m.inputs»
+		  		«p.rosType» «p.inName»;
+		  	«ENDFOR»
+		  «ENDIF»
+		  «IF !m.outputs.empty»
+
+		  	// Output ports: set them; they are published after each activation (or call publish_outputs()).
+		  	«FOR p : m.outputs»
+		  		«p.rosType» «p.outName»;
+		  	«ENDFOR»
+		  «ENDIF»
+
+		 protected:
+		  «FOR f : m.functions»
+		  	/** Function «doc(f.name)» («doc(f.timing)») */
+		  	virtual void «f.method»() {
+		  	  «FOR a : f.inlineActions»
+		  	  	«a.method»();
+		  	  «ENDFOR»
+		  	}
+		  	«FOR a : f.actions»
+		  		/** Action «doc(a.name)» («doc(a.timing)») */
+		  		virtual void «a.method»() {}
+		  	«ENDFOR»
+		  «ENDFOR»
+		  «FOR p : m.inputs»
+		  	/** Called on each message at «doc(p.name)», before the node reacts. */
+		  	virtual void «p.onName»(const «p.rosType»& message) { (void)message; }
+		  «ENDFOR»
+		  /** Publishes every output port (unless an inhibitor blocks it). */
+		  virtual void publish_outputs() {
+		    «FOR p : m.outputs»
+		    	«IF p.inhibitors.empty»
+		    		«p.pubName»_->publish(«p.outName»);
+		    	«ELSE»
+		    		if («FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR») {
+		    		  «p.pubName»_->publish(«p.outName»);
+		    		}
+		    	«ENDIF»
+		    «ENDFOR»
+		  }
+
+		 private:
+		  static std::int64_t positive(const char* parameter, std::int64_t value) {
+		    if (value <= 0) {
+		      throw std::invalid_argument(std::string("parameter ") + parameter + " must be a positive number of nanoseconds");
+		    }
+		    return value;
+		  }
+
+		  /** Whether a subsumption link is active now (on the node's clock). */
+		  bool active(const std::optional<rclcpp::Time>& until) { return until && this->now() < *until; }
+
+		  /** Whether `interval` has passed since `last` (on the node's clock); if so, `last` becomes now. */
+		  bool due(std::optional<rclcpp::Time>& last, std::int64_t interval) {
+		    const rclcpp::Time now = this->now();
+		    if (last && now - *last < rclcpp::Duration::from_nanoseconds(interval)) {
+		      return false;
+		    }
+		    last = now;
+		    return true;
+		  }
+		  «FOR r : m.releases»
+
+		  	void «r.method»() {
+		  	  «release(r)»
+		  	  publish_outputs();
+		  	}
+		  «ENDFOR»
+		  «FOR p : m.inputs»
+
+		  	void «p.receiveName»(const «p.rosType»& message, bool replacing) {
+		  	  «IF !p.suppressors.empty»
+		  	  	if (!replacing && («FOR l : p.suppressors SEPARATOR ' || '»active(link_«l.stem»_until_)«ENDFOR»)) {
+		  	  	  return;  // suppressed
+		  	  	}
+		  	  «ELSE»
+		  	  	(void)replacing;
+		  	  «ENDIF»
+		  	  «p.inName» = message;
+		  	  «p.onName»(message);
+		  	  «IF m.reactive»
+		  	  	«m.reactMethod»();
+		  	  «ENDIF»
+		  	}
+		  «ENDFOR»
+		  «IF m.reactive»
+
+		  	void «m.reactMethod»() {
+		  	  «IF m.reactionIntervalNs > 0»
+		  	  	if (!due(last_reaction_, reaction_interval_)) {
+		  	  	  return;  // «IF m.cycleBoundNs > 0»at most once per wave of the cycle«ELSE»sporadic: not sooner than its period«ENDIF»
+		  	  	}
+		  	  «ENDIF»
+		  	  «FOR f : m.stepFunctions»
+		  	  	«callFunction(f)»
+		  	  «ENDFOR»
+		  	  publish_outputs();
+		  	}
+		  «ENDIF»
+
+		  «FOR r : m.releases»
+		  	std::int64_t «r.timerMember»_period_;
+		  «ENDFOR»
+		  «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
+		  	std::int64_t «f.lastRunMember»_interval_;
+		  	std::optional<rclcpp::Time> «f.lastRunMember»;
+		  «ENDFOR»
+		  «IF m.reactive && m.reactionIntervalNs > 0»
+		  	std::int64_t reaction_interval_;
+		  	std::optional<rclcpp::Time> last_reaction_;
+		  «ENDIF»
+		  «FOR p : m.outputs»
+		  	rclcpp::Publisher<«p.rosType»>::SharedPtr «p.pubName»_;
+		  «ENDFOR»
+		  «FOR p : m.inputs»
+		  	rclcpp::Subscription<«p.rosType»>::SharedPtr «p.subName»_;
+		  «ENDFOR»
+		  «FOR l : context.linksOf(m)»
+		  	rclcpp::Subscription<«l.trigger.rosType»>::SharedPtr link_«l.stem»_sub_;
+		  	std::int64_t link_«l.stem»_duration_;
+		  	std::optional<rclcpp::Time> link_«l.stem»_until_;
+		  «ENDFOR»
+		  «FOR r : m.releases»
+		  	rclcpp::TimerBase::SharedPtr «r.timerMember»_;
+		  «ENDFOR»
+		};
+
+		}  // namespace «names.project»::«m.layerId»
+	'''
+
+	def private release(Release r) {
+		switch (r.kind) {
+			case FUNCTION: '''«r.function.method»();'''
+			case ACTION: '''«r.action.method»();'''
+			default: '''
+				«FOR f : r.module.stepFunctions»
+					«callFunction(f)»
+				«ENDFOR»
+			'''
+		}
+	}
+
+	def private callFunction(PlannedFunction f) '''
+		«IF f.minIntervalNs > 0»
+			if (due(«f.lastRunMember», «f.lastRunMember»_interval_)) {
+			  «f.method»();
+			}
+		«ELSE»
+			«f.method»();
+		«ENDIF»
+	'''
+}

@@ -1,0 +1,115 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.internal.ros2
+
+import java.util.Set
+import java.util.TreeSet
+import org.rsaml.generator.internal.Names
+import org.rsaml.generator.internal.cxx.CxxNames
+
+/**
+ * The package manifests (package.xml, REP 149 format 3) of the nodes' package and of the interfaces
+ * package, with what the architect's package.user.xml adds.
+ */
+class Ros2PackageTemplate extends Ros2Template {
+
+	val extension CxxNames names
+	val extension Ros2Names rosNames
+
+	new(Ros2Context context) {
+		super(context)
+		this.names = context.names
+		this.rosNames = context.rosNames
+	}
+
+	def private people(Ros2Manifest manifest) '''
+		«FOR x : manifest.xml("maintainer")»
+			«x»
+		«ENDFOR»
+		«FOR x : manifest.xml("license")»
+			«x»
+		«ENDFOR»
+		«FOR x : manifest.xml("url")»
+			«x»
+		«ENDFOR»
+		«FOR x : manifest.xml("author")»
+			«x»
+		«ENDFOR»
+	'''
+
+	def packageXml(Ros2Manifest manifest) {
+		val description = if (doc(plan.description).empty) "The RsaML architecture " + plan.name else plan.description
+		val depends = new TreeSet<String>(#{"rclcpp", "rclcpp_components"})
+		depends += context.messagePackages
+		val generated = <String>newHashSet
+		generated += "buildtool_depend ament_cmake"
+		depends.forEach[generated += "depend " + it]
+		#["launch", "launch_ros", "ros2launch"].forEach[generated += "exec_depend " + it]
+		'''
+			<?xml version="1.0"?>
+			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
+			<!-- «Names.xml(banner)» -->
+			<!-- Version, maintainers, licences, URLs, authors and further dependencies: «Ros2Manifest.FILE» (yours). -->
+			<package format="3">
+			  <name>«pkg»</name>
+			  <version>«manifest.version»</version>
+			  <description>«Names.xml(doc(description))»</description>
+			  «people(manifest)»
+
+			  <buildtool_depend>ament_cmake</buildtool_depend>
+
+			  «FOR p : depends»
+			  	<depend>«p»</depend>
+			  «ENDFOR»
+
+			  <exec_depend>launch</exec_depend>
+			  <exec_depend>launch_ros</exec_depend>
+			  <exec_depend>ros2launch</exec_depend>
+			  «FOR d : manifest.dependencies(generated)»
+			  	«d»
+			  «ENDFOR»
+
+			  <export>
+			    <build_type>ament_cmake</build_type>
+			  </export>
+			</package>
+		'''
+	}
+
+	def interfacesPackageXml(Ros2Manifest manifest, Set<String> deps) {
+		val generated = <String>newHashSet
+		generated += "buildtool_depend ament_cmake"
+		generated += "buildtool_depend rosidl_default_generators"
+		generated += "exec_depend rosidl_default_runtime"
+		deps.forEach[generated += "depend " + it]
+		'''
+			<?xml version="1.0"?>
+			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
+			<!-- «Names.xml(banner)» -->
+			<!-- Version, maintainers, licences, URLs, authors and further dependencies: «Ros2Manifest.FILE» (yours). -->
+			<package format="3">
+			  <name>«rosNames.interfacesPackage»</name>
+			  <version>«manifest.version»</version>
+			  <description>«Names.xml("Message types of the RsaML architecture " + doc(plan.name))»</description>
+			  «people(manifest)»
+
+			  <buildtool_depend>ament_cmake</buildtool_depend>
+			  <buildtool_depend>rosidl_default_generators</buildtool_depend>
+			  «FOR d : deps»
+			  	<depend>«d»</depend>
+			  «ENDFOR»
+			  <exec_depend>rosidl_default_runtime</exec_depend>
+			  «FOR d : manifest.dependencies(generated)»
+			  	«d»
+			  «ENDFOR»
+			  <member_of_group>rosidl_interface_packages</member_of_group>
+
+			  <export>
+			    <build_type>ament_cmake</build_type>
+			  </export>
+			</package>
+		'''
+	}
+}

@@ -1,0 +1,72 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.internal.ros2
+
+import org.rsaml.generator.internal.cxx.CxxNames
+
+/** The output's README.md (the architect's, created once): how to build, launch and tune the packages. */
+class Ros2ReadmeTemplate extends Ros2Template {
+
+	val extension CxxNames names
+	val extension Ros2Names rosNames
+
+	new(Ros2Context context) {
+		super(context)
+		this.names = context.names
+		this.rosNames = context.rosNames
+	}
+
+	def readme() '''
+		# «doc(plan.name)» for ROS 2
+
+		ament_cmake packages of the RsaML architecture '«doc(plan.name)»', created by
+		`rsaml generate --target ros2`, for ROS 2 Humble, Jazzy, Kilted and Rolling: a node per module,
+		each an rclcpp component of the library `«pkg»` and an executable of its own, a timer per
+		periodic function, a topic per group of connected ports. Put this directory in a colcon
+		workspace's `src/`, then:
+
+		```sh
+		colcon build
+		source install/setup.bash
+		ros2 launch «pkg» «pkg».launch.py                  # «IF rosNames.containers.size > 1»a process (component container) per processor«ELSE»all nodes in one process«ENDIF»
+		ros2 launch «pkg» «pkg»_processes.launch.py        # a process per node
+		ros2 launch «pkg» «pkg».launch.py namespace:=robot2 use_sim_time:=true
+		```
+
+		Topics are relative, so `namespace:=...` isolates a second robot. The model's periods, minimum
+		intervals and inhibitor/suppressor durations are node parameters (nanoseconds) with the model's
+		values as defaults; timers run on the node's clock, so `use_sim_time` works. Topics written by
+		modules that read sensors use the sensor data QoS (best effort), the others are reliable; both
+		can be overridden with `qos_overrides.<topic>.publisher|subscription.<policy>` parameters.
+		«IF rosNames.containers.exists[processor !== null]»
+
+		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
+		«FOR c : rosNames.containers SEPARATOR ", "»`«c.name»` («IF c.processor === null»the modules no processor names«ELSE»processor '«doc(c.processor.name)»'«IF c.core >= 0», core «c.core»«ENDIF»«ENDIF»)«ENDFOR».
+		Processes of a processor with a core are started under `taskset -c CORE` (util-linux), in both
+		launch files; on a machine without that core they start unpinned and say so.
+		«ENDIF»
+
+		The nodes are scheduled as `rsaml analyze` assumes: in the container `«rosNames.containerExecutable»`
+		(and in each node's own executable) every timed release has a callback group of its own, served
+		by a single-threaded executor on a thread of its own under `SCHED_FIFO` (`SCHED_RR` for round
+		robin) at the analysis's rank, pinned to its processor's core; data arrivals and ROS 2's services
+		run on the process's main executor at the default priority, and a node's activations hold its
+		lock, so they never run at once. Where real-time priorities are not permitted (neither root nor
+		`CAP_SYS_NICE` nor an `rtprio` limit), each release thread says so on standard output and runs at
+		the default priority: then the analysis's verdicts do not hold. Every node measures its jobs
+		(release to completion, on the node's clock), prints `miss` and `overrun` lines as they happen
+		and a `summary` line per release and per entry port at exit. The parameter
+		`rsaml.simulated_load:=0.9` makes every job busy-work 90 % of its modeled execution time, to see
+		the timing before the code is written.
+
+		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
+		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`
+		(included by its `CMakeLists.txt`; the interfaces package's also lists interface files of your
+		own, `.srv`, `.action` or more `.msg`, in `RSAML_USER_INTERFACES`) and `«Ros2Manifest.FILE»`
+		(version, maintainers, licences, URLs, authors and further dependencies, merged into
+		`package.xml`). Types of other packages used in a generated `.msg` file are found and declared
+		when you generate again.
+	'''
+}
