@@ -47,7 +47,7 @@ import org.rsaml.validation.Rules;
  */
 public final class TimingChecks {
 
-    /** A task can miss its deadline (also: the analysis failed on the architecture). */
+    /** A task can miss its deadline. */
     public static final String DEADLINE = "task-misses-deadline";
     /** A latency requirement can be exceeded. */
     public static final String LATENCY = "latency-exceeded";
@@ -284,15 +284,15 @@ public final class TimingChecks {
                 "no rule of the catalogue " + RuleCatalog.SOURCE_FILE + " names the verdict " + verdict + " under verdicts"));
     }
 
-    /** No element of the architecture breaks EMF's structure or a rule of the catalogue's {@code timingPrerequisite} rules. */
+    /** No element of the architecture breaks EMF's structure or a rule the catalogue marks {@code timingPrerequisite}. */
     private static boolean prerequisitesHold(Architecture architecture, OclRules rules, ValidationFacts facts) {
         return withoutTaskSet(architecture, rules, facts) == null;
     }
 
     /**
      * The first element (in document order, the architecture last) that breaks EMF's structure or a
-     * rule of the catalogue's {@code timingPrerequisite} rules, leaving the architecture without a task set; {@code null} when
-     * none does and the architecture can be analysed.
+     * rule the catalogue marks {@code timingPrerequisite}, leaving the architecture without a task set;
+     * {@code null} when none does and the architecture can be analysed.
      */
     public static EObject withoutTaskSet(Architecture architecture, OclRules rules) {
         return withoutTaskSet(architecture, rules, null);

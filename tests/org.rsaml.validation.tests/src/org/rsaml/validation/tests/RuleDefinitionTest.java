@@ -13,6 +13,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.regex.MatchResult;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EAnnotation;
@@ -193,6 +196,28 @@ class RuleDefinitionTest {
                     + " EMF's structural checks, invariants of rsaml.ecore " + rule.constraints() + " or verdicts of the timing analysis "
                     + rule.verdicts() + " (declared invariants: " + invariants.keySet() + "; verdicts: " + TimingChecks.VERDICTS + ")");
         }
+    }
+
+    /**
+     * The rules whose errors stop the timing analysis are marked once, by {@code timingPrerequisite}; the
+     * scopes that tell users which rules those are (RSA-22's, RSA-24's) name the same rules.
+     */
+    @Test
+    void theScopesNameTheTimingPrerequisitesTheCatalogueMarks() {
+        List<String> marked = Rules.timingPrerequisites().stream().map(Rule::id).sorted().toList();
+        assertFalse(marked.isEmpty(), "no rule is marked timingPrerequisite in " + RuleCatalog.SOURCE_FILE);
+        Pattern list = Pattern.compile("errors? of (RSA-\\d\\d(?:, RSA-\\d\\d)*(?:,? or RSA-\\d\\d)?)");
+        int lists = 0;
+        for (Rule rule : Rules.all()) {
+            Matcher m = list.matcher(rule.scope());
+            while (m.find()) {
+                lists++;
+                List<String> named = Pattern.compile("RSA-\\d\\d").matcher(m.group(1)).results().map(MatchResult::group).sorted().toList();
+                assertEquals(marked, named, rule.id() + "'s scope names other rules than those marked timingPrerequisite in "
+                        + RuleCatalog.SOURCE_FILE + ": " + rule.scope());
+            }
+        }
+        assertTrue(lists >= 2, "RSA-22's and RSA-24's scopes no longer name the rules that stop the timing analysis");
     }
 
     @Test
