@@ -9,11 +9,13 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
+import java.util.Iterator;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.linking.lazy.LazyLinkingResource;
+import org.eclipse.xtext.resource.XtextSyntaxDiagnostic;
 import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.util.CancelIndicator;
@@ -24,6 +26,7 @@ import org.rsaml.model.resource.LocatingResource;
 import org.rsaml.model.resource.ModelFormats;
 import org.rsaml.model.resource.RsamlResource;
 import org.rsaml.model.resource.SourceLocation;
+import org.rsaml.text.grammar.RsamlTextSyntaxErrors;
 import org.rsaml.text.serializer.RsamlTextWriter;
 
 import com.google.inject.Inject;
@@ -118,6 +121,21 @@ public class RsamlTextResource extends LazyLinkingResource implements LocatingRe
             }
         }
         return null;
+    }
+
+    /** The parser's errors, without those about braces that only follow from an earlier one. */
+    @Override
+    protected void addSyntaxErrors() {
+        super.addSyntaxErrors();
+        boolean earlier = false;
+        for (Iterator<Diagnostic> it = getErrors().iterator(); it.hasNext();) {
+            if (it.next() instanceof XtextSyntaxDiagnostic syntax) {
+                if (earlier && RsamlTextSyntaxErrors.UNBALANCED.equals(syntax.getCode())) {
+                    it.remove();
+                }
+                earlier = true;
+            }
+        }
     }
 
     @Override
