@@ -47,7 +47,7 @@ class TextExamplesTest {
 
     @Test
     void everyExampleHasItsTextualTwinAndNothingElseIsThere() throws IOException {
-        List<String> xmi = examples().map(n -> n + ".rsa").toList();
+        List<String> xmi = examples().map(n -> n + ".rsa").sorted().toList();
         List<String> text;
         try (Stream<Path> files = Files.list(textFolder())) {
             text = files.map(p -> p.getFileName().toString()).sorted().toList();
