@@ -66,7 +66,7 @@ public final class RsamlMarkers {
             case WARNING -> IMarker.SEVERITY_WARNING;
             case INFO -> IMarker.SEVERITY_INFO;
         });
-        attributes.put(IMarker.MESSAGE, finding.ruleId() + ": " + finding.message());
+        attributes.put(IMarker.MESSAGE, finding.text());
         if (finding.line() > 0) {
             attributes.put(IMarker.LINE_NUMBER, finding.line());
         }

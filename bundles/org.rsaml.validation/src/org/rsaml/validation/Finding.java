@@ -32,6 +32,11 @@ public record Finding(Rule rule, Severity severity, String message, String quali
         return rule.id();
     }
 
+    /** The finding as Eclipse shows it, {@code RSA-08: message} ({@link Rule#text}). */
+    public String text() {
+        return rule.text(message);
+    }
+
     /** Compiler style: {@code file:line:column: error RSA-08: message}. */
     @Override
     public String toString() {

@@ -154,7 +154,7 @@ public final class RsamlModelValidator {
                 "RsaML rules on " + RsamlLabels.qualifiedName(element), new Object[] { element });
         for (Raised r : raised) {
             result.add(new BasicDiagnostic(r.severity().diagnosticSeverity(), RuleEValidator.SOURCE, 0,
-                    r.rule().id() + ": " + r.message(), new Object[] { r.element(), r.rule(), r.message() }));
+                    r.rule().text(r.message()), new Object[] { r.element(), r.rule(), r.message() }));
         }
         return result;
     }
@@ -165,12 +165,12 @@ public final class RsamlModelValidator {
         Diagnostician diagnostician = new Diagnostician(registry) {
             @Override
             public String getObjectLabel(EObject eObject) {
-                return eObject.eClass().getName() + " '" + RsamlLabels.qualifiedName(eObject) + "'";
+                return RuleEValidator.LABELS.getObjectLabel(eObject);
             }
 
             @Override
             public String getFeatureLabel(EStructuralFeature feature) {
-                return feature.getName();
+                return RuleEValidator.LABELS.getFeatureLabel(feature);
             }
         };
         Map<Object, Object> context = diagnostician.createDefaultContext();

@@ -50,6 +50,14 @@ public record Rule(String id, String name, Severity severity, String source, Str
         return TIMING_ANALYSIS.equals(source);
     }
 
+    /**
+     * A finding of this rule as every Eclipse channel shows it — the builder's and the editors' markers, the
+     * diagrams' decorations, EMF's stock {@code Diagnostician} (Sirius's <i>Validate</i>): {@code "RSA-08: message"}.
+     */
+    public String text(String message) {
+        return id + ": " + message;
+    }
+
     /** What to change to satisfy the rule, under the name SARIF gives it. */
     public String help() {
         return remediation;

@@ -14,8 +14,11 @@ import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.TreeIterator;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
+import org.rsaml.model.Action;
+import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
 import org.rsaml.model.NamedElement;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.support.RsamlLabels;
@@ -27,8 +30,18 @@ import org.rsaml.validation.DiagnosisCache;
  */
 public class RsamlServices {
 
-    /** A diagram label: name and timing ("resourceChecker — real-time, 2.5 ms"); a connection shows its data. */
+    /**
+     * A diagram label: name and timing ("resourceChecker — real-time, 2.5 ms"); a connection shows its data, an
+     * action (listed in its module) its function first ("f0_m01 › a0_f0_m01 — ..."), a processor its policy and core.
+     */
     public String rsamlLabel(EObject self) {
+        if (self instanceof Action action && action.getFunction() != null) {
+            return RsamlLabels.name(action.getFunction()) + " \u203a " + RsamlLabels.describe(action);
+        }
+        if (self instanceof Processor processor) {
+            return RsamlLabels.name(processor) + " \u2014 " + (processor.isSetSchedPolicy() ? processor.getSchedPolicy().getLiteral() : "fixed priorities")
+                    + (processor.getCore() >= 0 ? ", core " + processor.getCore() : ", any core");
+        }
         if (self instanceof Connection connection) {
             return connection.getSource() == null ? "" : RsamlLabels.dataType(connection.getSource());
         }
@@ -57,13 +70,29 @@ public class RsamlServices {
         return name;
     }
 
+    /** The lowest CPU core no processor of the architecture claims: a new processor then shares no CPU with another. */
+    public int rsamlFreeCore(EObject architecture) {
+        Set<Integer> claimed = new HashSet<>();
+        if (architecture instanceof Architecture a) {
+            for (Processor p : a.getProcessors()) {
+                claimed.add(p.getCore());
+            }
+        }
+        int core = 0;
+        while (claimed.contains(core)) {
+            core++;
+        }
+        return core;
+    }
+
     /**
      * The classes whose elements the RsaML diagrams draw (the domain classes of rsaml.odesign's mappings).
-     * The findings of anything else (actions, devices, processors, orders, databases, latency requirements)
+     * The findings of anything else (devices, orders, databases, latency requirements)
      * are shown on the nearest drawn element that contains it, so that the diagrams show every finding.
      */
     private static final Set<EClass> DRAWN = Set.of(RsamlPackage.Literals.ARCHITECTURE, RsamlPackage.Literals.LAYER,
-            RsamlPackage.Literals.MODULE, RsamlPackage.Literals.FUNCTION, RsamlPackage.Literals.ENTRY_PORT,
+            RsamlPackage.Literals.MODULE, RsamlPackage.Literals.FUNCTION, RsamlPackage.Literals.ACTION, RsamlPackage.Literals.RT_ACTION,
+            RsamlPackage.Literals.PROCESSOR, RsamlPackage.Literals.ENTRY_PORT,
             RsamlPackage.Literals.OUTPUT_PORT, RsamlPackage.Literals.CONNECTION, RsamlPackage.Literals.INHIBITOR,
             RsamlPackage.Literals.SUPPRESSOR, RsamlPackage.Literals.MISSION, RsamlPackage.Literals.GOAL,
             RsamlPackage.Literals.PLAN, RsamlPackage.Literals.ACTIVITY, RsamlPackage.Literals.SUPERVISOR);

@@ -16,13 +16,16 @@ import org.eclipse.emf.common.util.DiagnosticChain;
 import org.eclipse.emf.ecore.EAnnotation;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EClassifier;
+import org.eclipse.emf.ecore.EDataType;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.util.EObjectValidator;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.rsaml.model.Module;
 import org.rsaml.model.RsamlPackage;
+import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 import org.rsaml.validation.RsamlValidationSetup;
@@ -61,6 +64,27 @@ public class RuleEValidator extends EObjectValidator {
     private record Invariant(String constraint, EClass declaredOn, String expression) {
     }
 
+    /**
+     * How EMF's structural findings (RSA-00) name elements and features, whichever client validates (the
+     * command line, the stock {@code Diagnostician} of Sirius's Validate): {@code Connection 'robot/c1'}.
+     */
+    public static final EValidator.SubstitutionLabelProvider LABELS = new EValidator.SubstitutionLabelProvider() {
+        @Override
+        public String getObjectLabel(EObject eObject) {
+            return eObject.eClass().getName() + " '" + RsamlLabels.qualifiedName(eObject) + "'";
+        }
+
+        @Override
+        public String getFeatureLabel(EStructuralFeature feature) {
+            return feature.getName();
+        }
+
+        @Override
+        public String getValueLabel(EDataType eDataType, Object value) {
+            return EcoreUtil.convertToString(eDataType, value);
+        }
+    };
+
     private final OclRules rules;
     private final Map<EClass, List<Invariant>> invariants = new ConcurrentHashMap<>();
 
@@ -73,14 +97,35 @@ public class RuleEValidator extends EObjectValidator {
         return RsamlPackage.eINSTANCE;
     }
 
-    /** EMF's checks and the OCL invariants, then the timing rules (the catalogue's rules of source {@code timing analysis}). */
+    /**
+     * EMF's checks and the OCL invariants, then the timing rules (the catalogue's rules of source {@code timing analysis}).
+     * EMF's own findings are reported as RSA-00, in RsaML's words ({@link #LABELS}), whichever client asked.
+     */
     @Override
     protected boolean validate(int classifierID, Object value, DiagnosticChain diagnostics, Map<Object, Object> context) {
         if (!(value instanceof EObject eObject)) {
             return true; // RsaML's data types and enumerations declare no constraint
         }
         EClassifier classifier = getEPackage().getEClassifiers().get(classifierID);
-        boolean result = validateElement((EClass) classifier, eObject, diagnostics, context);
+        BasicDiagnostic found = diagnostics == null ? null : new BasicDiagnostic();
+        Object clientLabels = context == null ? null : context.put(EValidator.SubstitutionLabelProvider.class, LABELS);
+        boolean result;
+        try {
+            result = validateElement((EClass) classifier, eObject, found, context);
+        } finally {
+            if (context != null) {
+                if (clientLabels == null) {
+                    context.remove(EValidator.SubstitutionLabelProvider.class);
+                } else {
+                    context.put(EValidator.SubstitutionLabelProvider.class, clientLabels);
+                }
+            }
+        }
+        if (found != null) {
+            for (Diagnostic d : found.getChildren()) {
+                diagnostics.add(SOURCE.equals(d.getSource()) ? d : structural(d));
+            }
+        }
         if ((result || diagnostics != null) && TimingChecks.concerns(eObject)) {
             for (TimingChecks.Found f : TimingChecks.on(eObject, context, rules)) {
                 result = false;
@@ -194,7 +239,7 @@ public class RuleEValidator extends EObjectValidator {
                     + " (" + rule.description() + "); its message could not be written: " + e;
         }
         diagnostics.add(new BasicDiagnostic(rule.severity().diagnosticSeverity(), SOURCE, code,
-                message + " (" + rule.id() + ")", new Object[] { eObject, rule, message }));
+                rule.text(message), new Object[] { eObject, rule, message }));
     }
 
     @Override
@@ -203,7 +248,18 @@ public class RuleEValidator extends EObjectValidator {
         Rule rule = Rules.forConstraint(constraint).orElse(Rules.STRUCTURE);
         String message = "Rule " + rule.id() + " could not be evaluated on " + MessageParameters.element(eObject) + ": "
                 + throwable.getLocalizedMessage();
-        diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, code, message, new Object[] { eObject, rule, message }));
+        diagnostics.add(new BasicDiagnostic(Diagnostic.ERROR, SOURCE, code, rule.text(message), new Object[] { eObject, rule, message }));
+    }
+
+    /** One of EMF's structural findings as RSA-00 reports it: {@code "RSA-00: The required feature ..."}. */
+    private static Diagnostic structural(Diagnostic emf) {
+        if (emf.getData().isEmpty() || !(emf.getData().get(0) instanceof EObject element)) {
+            return emf;
+        }
+        BasicDiagnostic result = new BasicDiagnostic(emf.getSeverity(), SOURCE, emf.getCode(), Rules.STRUCTURE.text(emf.getMessage()),
+                new Object[] { element, Rules.STRUCTURE, emf.getMessage() });
+        result.addAll(emf);
+        return result;
     }
 
     /*

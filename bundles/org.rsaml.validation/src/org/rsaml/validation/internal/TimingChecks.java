@@ -250,7 +250,7 @@ public final class TimingChecks {
         EObject on = f.element();
         if (f.failure() != null) {
             String message = MessageParameters.capitalized(f.failure());
-            return new BasicDiagnostic(Diagnostic.ERROR, RuleEValidator.SOURCE, 0, message, new Object[] { on, f.rule(), message });
+            return new BasicDiagnostic(Diagnostic.ERROR, RuleEValidator.SOURCE, 0, f.rule().text(message), new Object[] { on, f.rule(), message });
         }
         String message;
         try {
@@ -260,7 +260,7 @@ public final class TimingChecks {
                     + f.rule().description() + "); its message could not be written: " + e;
         }
         return new BasicDiagnostic(f.rule().severity().diagnosticSeverity(), RuleEValidator.SOURCE, 0,
-                message + " (" + f.rule().id() + ")", f.detail() == null ? new Object[] { on, f.rule(), message }
+                f.rule().text(message), f.detail() == null ? new Object[] { on, f.rule(), message }
                         : new Object[] { on, f.rule(), message, f.detail() });
     }
 

@@ -54,11 +54,16 @@ class DiagramsTest {
 
     @Test
     void architectureDiagramCreatesLayersModulesPortsAndLinks() throws Exception {
-        assertEquals(Map.of("Layer", "model.Layer in layers", "Module", "model.Module in modules", "Real-time module", "model.Module in modules",
-                "Function", "model.Function in functions", "Entry port", "model.EntryPort in ports",
-                "Output port", "model.OutputPort in ports", "Connection", "model.Connection in connections",
-                "Inhibitor", "model.Inhibitor in inhibitors", "Suppressor", "model.Suppressor in suppressors"),
+        assertEquals(Map.ofEntries(Map.entry("Layer", "model.Layer in layers"), Map.entry("Module", "model.Module in modules"),
+                Map.entry("Real-time module", "model.Module in modules"), Map.entry("Function", "model.Function in functions"),
+                Map.entry("Action", "model.Action in actions"), Map.entry("Real-time action", "model.RTAction in actions"),
+                Map.entry("Entry port", "model.EntryPort in ports"), Map.entry("Output port", "model.OutputPort in ports"),
+                Map.entry("Connection", "model.Connection in connections"), Map.entry("Inhibitor", "model.Inhibitor in inhibitors"),
+                Map.entry("Suppressor", "model.Suppressor in suppressors"), Map.entry("Processor", "model.Processor in processors"),
+                Map.entry("Allocation", "sets modules")),
                 creations(diagram("Architecture")));
+        assertEquals("deleteAllocation", get(ref(mapping(diagram("Architecture"), "AllocationEdge"), "deletionDescription"), "name"),
+                "deleting an allocation takes the module off the processor and deletes neither");
         assertEquals("deleteLayer", get(ref(mapping(diagram("Architecture"), "LayerRegion"), "deletionDescription"), "name"),
                 "deleting a layer goes through the tool that counts it out of declaredLayers");
     }

@@ -59,6 +59,7 @@ final class DomainReferences {
     private static final Pattern STRING_LITERAL = Pattern.compile("'(?:[^'\\\\]|\\\\.)*'");
     private static final Pattern TYPE_LITERAL = Pattern.compile("\\b([A-Za-z_]\\w*)::([A-Za-z_]\\w*)(?:::([A-Za-z_]\\w*))?");
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z_]\\w*");
+    private static final Pattern APPLIES_TO = Pattern.compile("aql:self\\.oclIsKindOf\\(model::(\\w+)\\)");
     private static final Pattern NUMBER = Pattern.compile("-?\\d+(\\.\\d+)?");
 
     private final EPackage rsaml;
@@ -148,6 +149,10 @@ final class DomainReferences {
             conforms(edge, "targetFinderExpression", expression(edge, "targetFinderExpression", own), targets);
             styles(edge, own);
         } else {
+            if (sources.size() == 1) {
+                // A relation's edge stands for its source element: that is what its delete tool gets as 'element'.
+                domainClasses.put(edge, sources.get(0));
+            }
             for (EClass source : sources) {
                 Scope own = Scope.of("self", source);
                 conforms(edge, "targetFinderExpression", expression(edge, "targetFinderExpression", own), targets);
@@ -209,8 +214,18 @@ final class DomainReferences {
             }
             EClass element = common(tool, "the elements it deletes", deleted);
             scope = Scope.of("self", element, name(ref(tool, "element"), "element"), element);
+        } else if (is(tool, "ToolDescription")) {
+            // A tool applied to the element clicked: its precondition names the class it applies to.
+            Matcher kind = APPLIES_TO.matcher(String.valueOf(get(tool, "precondition")));
+            EClassifier element = kind.matches() ? rsaml.getEClassifier(kind.group(1)) : null;
+            if (!(element instanceof EClass eClass)) {
+                problems.add(where(tool) + ": cannot tell which RsaML class the tool applies to; its precondition must be "
+                        + "'aql:self.oclIsKindOf(model::<Class>)' naming a class of rsaml.ecore");
+                return;
+            }
+            scope = Scope.of("self", eClass, name(ref(tool, "element"), "element"), eClass);
         } else {
-            problems.add(where(tool) + ": a " + tool.eClass().getName() + " is not checked here; only creation and deletion tools are");
+            problems.add(where(tool) + ": a " + tool.eClass().getName() + " is not checked here; only creation, deletion and generic tools are");
             return;
         }
         if (!is(tool, "EdgeCreationDescription")) {
@@ -247,6 +262,9 @@ final class DomainReferences {
                             + " elements, not " + type.getName());
                 }
                 inner = scope.with("self", type).with(variable(operation), type);
+            } else if (is(operation, "For")) {
+                EClassifier each = expression(operation, "expression", scope);
+                inner = scope.with(String.valueOf(get(operation, "iteratorName")), each instanceof EClass eClass ? eClass : null);
             } else if (is(operation, "SetValue")) {
                 EStructuralFeature feature = feature(operation, "featureName", scope.self());
                 EClassifier value = expression(operation, "valueExpression", scope);

@@ -22,6 +22,9 @@ import org.junit.jupiter.params.provider.MethodSource;
 import org.rsaml.design.services.RsamlServices;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Layer;
+import org.rsaml.model.Processor;
+import org.rsaml.model.RsamlFactory;
+import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.tests.support.ExpectedFinding;
 import org.rsaml.tests.support.TestRepository;
@@ -63,9 +66,22 @@ class ServicesTest {
         expected.put("hybridMobileRobot/decision/temporalExecutive", "temporalExecutive — simple, 120.0 ms");
         expected.put("hybridMobileRobot/functional/m02", "m02 — real-time, 4.0 ms every 20.0 ms");
         expected.put("hybridMobileRobot/functional/m01/f0_m01", "f0_m01 — real-time, RM, 1.0 ms every 10.0 ms");
-        expected.put("hybridMobileRobot/functional/m01/f0_m01/a1_f0_m01", "a1_f0_m01 — real-time, 0.4 ms every 10.0 ms");
+        // An action is listed in its module, after the functions: its function comes first.
+        expected.put("hybridMobileRobot/functional/m01/f0_m01/a1_f0_m01", "f0_m01 › a1_f0_m01 — real-time, 0.4 ms every 10.0 ms");
         expected.put("hybridMobileRobot/inspectionMission/inspectionPlan/scanArea", "scanArea — simple");
         assertEquals(expected, labels(TestRepository.example("exp1-hybrid.rsaml"), expected.keySet().toArray(String[]::new)));
+    }
+
+    @Test
+    void processorsShowTheirSchedulingAndCore() throws Exception {
+        Map<String, String> expected = new LinkedHashMap<>();
+        expected.put("mobileBase/core0", "core0 — fixed priorities, core 0");
+        expected.put("mobileBase/core1", "core1 — fixed priorities, core 1");
+        assertEquals(expected, labels(TestRepository.example("mobile-base-latency.rsaml"), expected.keySet().toArray(String[]::new)));
+        Processor edf = RsamlFactory.eINSTANCE.createProcessor();
+        edf.setName("cpu");
+        edf.setSchedPolicy(SchedulingPolicy.EDF);
+        assertEquals("cpu — EDF, any core", services.rsamlLabel(edf), "a set policy is named; core -1 is left to the system");
     }
 
     @Test

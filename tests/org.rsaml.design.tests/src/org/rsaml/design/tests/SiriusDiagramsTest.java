@@ -21,10 +21,16 @@ import java.util.stream.Stream;
 
 import javax.imageio.ImageIO;
 
+import org.eclipse.core.resources.IFile;
+import org.eclipse.core.resources.IMarker;
+import org.eclipse.core.resources.IResource;
+import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.gmf.runtime.diagram.ui.parts.IDiagramWorkbenchPart;
 import org.eclipse.sirius.common.tools.api.resource.ImageFileFormat;
 import org.eclipse.sirius.diagram.DDiagram;
 import org.eclipse.sirius.diagram.DDiagramElement;
+import org.eclipse.sirius.diagram.ui.part.ValidateAction;
 import org.eclipse.sirius.ui.business.api.dialect.DialectUIManager;
 import org.eclipse.sirius.ui.business.api.dialect.ExportFormat;
 import org.eclipse.sirius.ui.business.api.dialect.ExportFormat.ExportDocumentFormat;
@@ -54,6 +60,9 @@ import org.rsaml.validation.RsamlModelValidator;
  * {@code rsaml.diagrams.examples} (a representative set by default; {@code all} draws every one).
  */
 class SiriusDiagramsTest {
+
+    /** The type of the markers Sirius's Validate puts on the session's representations file. */
+    private static final String SIRIUS_MARKER = "org.eclipse.sirius.diagram.ui.diagnostic";
 
     /** The README's picture of an architecture diagram, which this test exports again. */
     private static final String README_IMAGE = "docs/images/exp1-hybrid-sirius-architecture.png";
@@ -201,6 +210,44 @@ class SiriusDiagramsTest {
                 project.run("restore " + layer.getName(), () -> layer.setMaxExecTime(budget));
             }
             assertEquals(before, new TreeSet<>(decorations(diagram)), "restoring the layer's budget removes the decorations");
+        } finally {
+            DialectUIManager.INSTANCE.closeEditor(editor, false);
+            SiriusProject.flushEvents();
+            project.delete(diagram);
+        }
+    }
+
+    /**
+     * One verdict: Sirius's own <i>Diagram &gt; Validate</i> marks exactly what {@code rsaml validate} finds, each
+     * finding once, with its severity and the text the builder's markers and the decorations show ({@code RSA-08: ...}).
+     */
+    @Test
+    void validateInTheDiagramMarksTheFindingsOfRsamlValidateOnceInItsWords() throws Exception {
+        String example = "exp2-defects.rsaml";
+        assertTrue(examples().anyMatch(example::equals), example + " is among the examples drawn");
+        Architecture architecture = project.architecture(example);
+        List<String> expected = new ArrayList<>(RsamlModelValidator.validate(architecture).stream()
+                .map(f -> f.severity().name().toLowerCase() + " " + f.text()).toList());
+        expected.sort(null);
+        assertTrue(expected.size() >= 5, example + " has its five defects: " + expected);
+        DDiagram diagram = project.create("Architecture", architecture, "validate " + example);
+        IEditorPart editor = DialectUIManager.INSTANCE.openEditor(project.session, diagram, SiriusProject.MONITOR);
+        try {
+            SiriusProject.flushEvents();
+            IDiagramWorkbenchPart part = (IDiagramWorkbenchPart) editor;
+            // What Diagram > Validate runs on the open diagram.
+            ValidateAction.runValidation(part.getDiagramEditPart(), part.getDiagram());
+            SiriusProject.flushEvents();
+            IFile aird = ResourcesPlugin.getWorkspace().getRoot()
+                    .getFile(new org.eclipse.core.runtime.Path(project.session.getSessionResource().getURI().toPlatformString(true)));
+            List<String> marked = new ArrayList<>();
+            for (IMarker marker : aird.findMarkers(SIRIUS_MARKER, true, IResource.DEPTH_ZERO)) {
+                int severity = marker.getAttribute(IMarker.SEVERITY, -1);
+                marked.add((severity == IMarker.SEVERITY_ERROR ? "error" : severity == IMarker.SEVERITY_WARNING ? "warning" : "info") + " "
+                        + marker.getAttribute(IMarker.MESSAGE, ""));
+            }
+            marked.sort(null);
+            assertEquals(expected, marked, "Validate's markers on " + aird.getName() + " are rsaml validate's findings, once each, in its words");
         } finally {
             DialectUIManager.INSTANCE.closeEditor(editor, false);
             SiriusProject.flushEvents();

@@ -18,6 +18,7 @@ import java.util.TreeSet;
 import org.eclipse.emf.common.command.Command;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.sirius.diagram.DDiagram;
+import org.eclipse.sirius.diagram.DEdge;
 import org.eclipse.sirius.diagram.DDiagramElement;
 import org.eclipse.sirius.diagram.DDiagramElementContainer;
 import org.eclipse.sirius.diagram.DNode;
@@ -30,19 +31,26 @@ import org.eclipse.sirius.diagram.tools.api.command.DiagramCommandFactoryService
 import org.eclipse.sirius.diagram.tools.api.command.IDiagramCommandFactory;
 import org.eclipse.sirius.tools.api.command.ui.NoUICallback;
 import org.eclipse.sirius.viewpoint.description.tool.AbstractToolDescription;
+import org.eclipse.sirius.viewpoint.description.tool.ToolDescription;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
+import org.rsaml.model.Action;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
+import org.rsaml.model.ElementType;
 import org.rsaml.model.EntryPort;
+import org.rsaml.model.ExecutionType;
+import org.rsaml.model.Function;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.NamedElement;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
+import org.rsaml.model.RTAction;
 import org.rsaml.model.Suppressor;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.Finding;
@@ -52,7 +60,7 @@ import org.rsaml.validation.Severity;
 /**
  * The palette of the RsaML diagrams, tool by tool, as Sirius runs a tool the user picks: what each creates
  * is in the model, drawn, named apart from its siblings (twice in a row), and validates as the rules say;
- * deleting it from the diagram removes it from the model. Every change is undone after each test.
+ * deleting it from the diagram removes it from the model (an allocation: the module from the processor). Every change is undone after each test.
  */
 class SiriusToolsTest {
 
@@ -168,6 +176,39 @@ class SiriusToolsTest {
         changes++;
         assertEquals(null, element.eContainer(), RsamlLabels.qualifiedName(element) + " is deleted from the model");
         assertTrue(diagram.getDiagramElements().stream().noneMatch(d -> d.getTarget() == element), "and from the diagram");
+    }
+
+    /** Runs a tool the user applies by clicking an element (a function, for actions) and returns what it added to {@code list}. */
+    private <T extends EObject> T apply(DDiagram diagram, String toolName, EObject on, List<T> list, String what) {
+        List<T> before = new ArrayList<>(list);
+        Command command = factory.buildGenericToolCommandFromTool(drawn(diagram, on), (ToolDescription) tool(diagram, toolName));
+        assertTrue(command.canExecute(), toolName + " can run on " + RsamlLabels.qualifiedName(on));
+        project.execute(command);
+        changes++;
+        List<T> added = new ArrayList<>(list);
+        added.removeAll(before);
+        T created = only(added, what);
+        drawn(diagram, created);
+        return created;
+    }
+
+    /** The allocation edges drawn from the module. */
+    private static List<DEdge> allocations(DDiagram diagram, Module module) {
+        return diagram.getEdges().stream().filter(e -> ((DDiagramElement) e.getSourceNode()).getTarget() == module)
+                .filter(e -> ((DDiagramElement) e.getTargetNode()).getTarget() instanceof Processor).toList();
+    }
+
+    /** Draws an allocation edge from the module to the processor with the palette's tool. */
+    private void allocate(Module module, Processor processor) {
+        Command command = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(architectureDiagram, module),
+                (EdgeTarget) drawn(architectureDiagram, processor), (EdgeCreationDescription) tool(architectureDiagram, "createAllocation"));
+        assertTrue(command.canExecute(), "the allocation tool can run from " + module.getName() + " to " + processor.getName());
+        project.execute(command);
+        changes++;
+        assertTrue(processor.getModules().contains(module), module.getName() + " is allocated to " + processor.getName());
+        List<DEdge> edges = allocations(architectureDiagram, module);
+        assertEquals(1, edges.size(), "one allocation edge is drawn from " + module.getName() + ": " + edges);
+        assertEquals(processor, ((DDiagramElement) edges.get(0).getTargetNode()).getTarget(), "it points to " + processor.getName());
     }
 
     private static void namedApart(NamedElement first, NamedElement second) {
@@ -288,6 +329,78 @@ class SiriusToolsTest {
         assertEquals(entry, s.getTarget(), "the suppressor acts on the entry port");
         assertEquals(Set.of(), findings(), "links to the layer immediately below are valid");
         delete(architectureDiagram, i2);
+    }
+
+    @Test
+    void actionsAreAddedToTheFunctionClickedAndAPlainOneInARealTimeFunctionIsFlaggedAtOnce() {
+        List<Function> functions = new ArrayList<>();
+        architecture.eAllContents().forEachRemaining(e -> {
+            if (e instanceof Function f) {
+                functions.add(f);
+            }
+        });
+        Function simple = functions.stream().filter(f -> f.getType() == ElementType.SIMPLE).findFirst()
+                .orElseThrow(() -> new AssertionError(MODEL + " has a simple function"));
+        Action a1 = apply(architectureDiagram, "createAction", simple, simple.getActions(), "action");
+        Action a2 = apply(architectureDiagram, "createAction", simple, simple.getActions(), "action");
+        namedApart(a1, a2);
+        assertEquals("Action", a1.eClass().getName(), "the action tool makes plain actions");
+        assertEquals(Set.of(), findings(), "plain actions in a simple function are valid");
+        assertFalse(factory.buildGenericToolCommandFromTool(drawn(architectureDiagram, simple.getModule()),
+                (ToolDescription) tool(architectureDiagram, "createAction")).canExecute(), "actions are added to functions, not to modules");
+
+        Function realTime = functions.stream().filter(f -> f.getType() == ElementType.REAL_TIME).findFirst()
+                .orElseThrow(() -> new AssertionError(MODEL + " has a real-time function"));
+        Action rt = apply(architectureDiagram, "createRealTimeAction", realTime, realTime.getActions(), "real-time action");
+        assertTrue(rt instanceof RTAction, "the real-time action tool makes RTActions");
+        assertEquals(ElementType.REAL_TIME, rt.getType(), "which are real-time");
+        assertEquals(ExecutionType.PERIODIC, rt.getExecType(), "and periodic");
+        assertEquals(realTime.getPeriod(), rt.getPeriod(), "with their function's period");
+        assertEquals(realTime.getDelay(), rt.getDelay(), "and delay");
+        assertEquals(realTime.getTimeUnit(), rt.getTimeUnit(), "in their function's time unit");
+        assertEquals(Set.of(), findings(), "a new real-time action in a real-time function is valid");
+
+        Action plain = apply(architectureDiagram, "createAction", realTime, realTime.getActions(), "action");
+        Set<String> found = findings();
+        assertEquals(1, found.size(), "the one new finding: " + found);
+        assertTrue(found.iterator().next().startsWith("RSA-07 " + RsamlLabels.qualifiedName(realTime) + ": "),
+                "RSA-07: the real-time function now holds a non-real-time action: " + found);
+        delete(architectureDiagram, plain);
+        delete(architectureDiagram, a2);
+        assertEquals(Set.of(), findings(), "deleting the plain action repairs the function");
+    }
+
+    @Test
+    void processorsGetCoresOfTheirOwnAndAModuleIsAllocatedToOneAtATime() {
+        Processor p1 = create(architectureDiagram, "createProcessor", null, architecture.getProcessors(), "processor");
+        Processor p2 = create(architectureDiagram, "createProcessor", null, architecture.getProcessors(), "processor");
+        namedApart(p1, p2);
+        assertTrue(p1.getCore() >= 0 && p2.getCore() >= 0 && p1.getCore() != p2.getCore(), "each processor has a CPU core of its own: "
+                + p1.getCore() + ", " + p2.getCore());
+        assertEquals(Set.of(), findings(), "processors without modules are valid");
+
+        Module module = architecture.getLayers().stream().flatMap(l -> l.getModules().stream())
+                .filter(m -> m.getType() == ElementType.REAL_TIME).findFirst()
+                .orElseThrow(() -> new AssertionError(MODEL + " has a real-time module"));
+        allocate(module, p1);
+        assertEquals(Set.of(), findings(), module.getName() + " on a core of its own is valid");
+        Command again = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(architectureDiagram, module),
+                (EdgeTarget) drawn(architectureDiagram, p1), (EdgeCreationDescription) tool(architectureDiagram, "createAllocation"));
+        assertFalse(again.canExecute(), "a module is not allocated twice to one processor");
+
+        allocate(module, p2);
+        assertFalse(p1.getModules().contains(module), "allocating a module elsewhere moves it: a module runs on one processor");
+        assertEquals(Set.of(), findings(), "the moved allocation is valid");
+
+        Command command = factory.buildDeleteDiagramElement(allocations(architectureDiagram, module).get(0));
+        assertTrue(command.canExecute(), "deleting the allocation can run");
+        project.execute(command);
+        changes++;
+        assertEquals(List.of(), p2.getModules(), "deleting the allocation takes the module off the processor");
+        assertTrue(module.eContainer() != null && p2.eContainer() == architecture, "and deletes neither the module nor the processor");
+        assertEquals(List.of(), allocations(architectureDiagram, module), "the edge is gone");
+        delete(architectureDiagram, p1);
+        assertEquals(Set.of(), findings(), "deleting a processor leaves a valid model");
     }
 
     @Test
