@@ -134,7 +134,8 @@ final class SiriusProject {
     /** The description as the session has it (its own copy of the viewpoint, which representations are made from). */
     RepresentationDescription description(String name) {
         Viewpoint selected = session.getSelectedViewpoints(false).stream().filter(v -> "RsaML".equals(v.getName())).findFirst()
-                .orElseThrow(() -> new AssertionError("the RsaML viewpoint is enabled"));
+                .orElseThrow(() -> new AssertionError("the RsaML viewpoint is enabled: open " + session.isOpen() + ", selected "
+                        + session.getSelectedViewpoints(false) + ", sessions " + org.eclipse.sirius.business.api.session.SessionManager.INSTANCE.getSessions()));
         return selected.getOwnedRepresentations().stream().filter(r -> r.getName().equals(name)).findFirst()
                 .orElseThrow(() -> new AssertionError("the RsaML viewpoint has the " + name + " diagram"));
     }
