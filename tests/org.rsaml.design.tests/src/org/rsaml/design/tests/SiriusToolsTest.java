@@ -329,6 +329,7 @@ class SiriusToolsTest {
         assertEquals(entry, s.getTarget(), "the suppressor acts on the entry port");
         assertEquals(Set.of(), findings(), "links to the layer immediately below are valid");
         delete(architectureDiagram, i2);
+        delete(architectureDiagram, s);
     }
 
     @Test
@@ -421,6 +422,8 @@ class SiriusToolsTest {
         Set<String> found = findings();
         delete(missionDiagram, a2);
         delete(missionDiagram, g2);
+        delete(missionDiagram, s2);
+        delete(missionDiagram, p1);
         delete(missionDiagram, m2);
         assertEquals(Set.of(), found, "new mission elements are valid: " + found);
     }
