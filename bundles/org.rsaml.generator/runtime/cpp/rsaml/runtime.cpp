@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 #include "rsaml/runtime.hpp"
+#include "rsaml/realtime.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -16,10 +17,6 @@
 #include <pthread.h>
 #include <sched.h>
 #define RSAML_HAS_PTHREAD 1
-#endif
-#if defined(__linux__)
-#include <sys/syscall.h>
-#include <unistd.h>
 #endif
 
 namespace rsaml {
@@ -94,35 +91,6 @@ std::string millis(Nanos t) {
   return text;
 }
 
-#if defined(__linux__)
-// SCHED_DEADLINE through the sched_setattr system call (glibc has no wrapper before 2.41).
-constexpr unsigned kSchedDeadline = 6;
-struct SchedAttr {
-  std::uint32_t size;
-  std::uint32_t sched_policy;
-  std::uint64_t sched_flags;
-  std::int32_t sched_nice;
-  std::uint32_t sched_priority;
-  std::uint64_t sched_runtime;
-  std::uint64_t sched_deadline;
-  std::uint64_t sched_period;
-};
-
-/** The calling thread's policy as the kernel reports it. */
-std::string kernel_policy() {
-  SchedAttr attr{};
-  if (syscall(SYS_sched_getattr, 0, &attr, sizeof attr, 0) != 0) {
-    return std::string("unknown (") + std::strerror(errno) + ")";
-  }
-  switch (attr.sched_policy) {
-    case SCHED_OTHER: return "SCHED_OTHER";
-    case SCHED_FIFO: return "SCHED_FIFO";
-    case SCHED_RR: return "SCHED_RR";
-    case kSchedDeadline: return "SCHED_DEADLINE";
-    default: return "policy " + std::to_string(attr.sched_policy);
-  }
-}
-#endif
 
 #if defined(__linux__)
 /** Cores as a short list: 0-3,6. */
@@ -251,7 +219,7 @@ void Module::post(std::uint64_t wave, std::function<void()> work) {
     if (stopping_) {
       return;
     }
-    mail_.push_back(Mail{wave, std::move(work)});
+    mail_.push_back(Mail{wave, Clock::now(), std::move(work)});
   }
   mail_cv_.notify_one();
 }
@@ -275,6 +243,10 @@ void Module::stop_worker() {
 }
 
 void Module::run_worker() {
+  const std::string sched = system_.schedule_worker(name_);
+  if (reactions_) {
+    reactions_->sched = sched;
+  }
   for (;;) {
     Mail mail;
     {
@@ -286,7 +258,8 @@ void Module::run_worker() {
       mail = std::move(mail_.front());
       mail_.pop_front();
     }
-    Activation activation(*this, mail.wave, false, Clock::now());
+    // A reaction's job is released by the arrival of the data that starts it.
+    Activation activation(*this, mail.wave, false, mail.arrived);
     mail.work();
   }
 }
@@ -335,14 +308,40 @@ bool Module::begin_reaction(Nanos min_interval) {
       waves_.erase(waves_.begin());
     }
   }
-  const Clock::time_point now = Clock::now();
-  if (min_interval.count() > 0 && reacted_ && now - last_reaction_ < min_interval) {
+  // Arrivals, not the worker's start times, are at least min_interval apart: the sporadic task the
+  // analysis assumes, released by the arrivals.
+  const Clock::time_point arrived = activation ? activation->release : Clock::now();
+  if (min_interval.count() > 0 && reacted_ && arrived - last_reaction_ < min_interval) {
     return false;
   }
   reacted_ = true;
-  last_reaction_ = now;
+  last_reaction_ = arrived;
   trace("react " + name_);
   return true;
+}
+
+void Module::measure_reactions(std::string label, JobBounds bounds) {
+  reactions_ = &system_.reactions(*this, std::move(label), bounds);
+}
+
+void Module::react(Nanos min_interval, const std::function<void()>& body) {
+  if (!begin_reaction(min_interval)) {
+    return;
+  }
+  Activation* activation = Activation::current();
+  const Clock::time_point arrived = activation ? activation->release : Clock::now();
+  const Clock::time_point started = Clock::now();
+  const Nanos cpu = thread_cpu_time();
+  if (reactions_) {
+    const Nanos busy = system_.busy_work(reactions_->bounds.cost);
+    if (busy.count() > 0) {
+      consume(busy);
+    }
+  }
+  body();
+  if (reactions_) {
+    system_.reaction_done(*reactions_, arrived, started, Clock::now(), thread_cpu_time() - cpu);
+  }
 }
 
 bool Module::due(Clock::time_point& last, Nanos min_interval) {
@@ -482,45 +481,31 @@ void System::schedule_self(Release& r) {
     // admits a deadline thread only where it may run on every CPU of its root domain, so one pinned
     // to its processor's core is unpinned first.
     std::string refused;
+    std::string where;
 #if defined(__linux__)
-    const long long runtime = r.bounds.cost.count();
-    if (runtime < 1024) {
-      refused = "the model gives it no execution time (SCHED_DEADLINE needs a runtime of 1 us or more)";
-    } else if (runtime > r.bounds.deadline.count() || r.bounds.deadline.count() > r.period.count()) {
-      refused = "SCHED_DEADLINE needs execution time <= deadline <= period";
-    } else {
-      std::string where;
-      if (r.module->core() >= 0 && !all_cores_.empty()) {
-        cpu_set_t set;
-        CPU_ZERO(&set);
-        for (int cpu : all_cores_) {
-          CPU_SET(cpu, &set);
-        }
-        pthread_setaffinity_np(self, sizeof(set), &set);
-        where = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->core()) +
-                " alone (the kernel admits a deadline thread only on all CPUs of its root domain)";
+    if (r.module->core() >= 0 && !all_cores_.empty()) {
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      for (int cpu : all_cores_) {
+        CPU_SET(cpu, &set);
       }
-      SchedAttr attr{};
-      attr.size = sizeof attr;
-      attr.sched_policy = kSchedDeadline;
-      attr.sched_runtime = static_cast<std::uint64_t>(runtime);
-      attr.sched_deadline = static_cast<std::uint64_t>(r.bounds.deadline.count());
-      attr.sched_period = static_cast<std::uint64_t>(r.period.count());
-      if (syscall(SYS_sched_setattr, 0, &attr, 0) == 0) {
-        r.sched = "SCHED_DEADLINE runtime " + millis(r.bounds.cost) + " deadline " + millis(r.bounds.deadline) + " period " +
-                  millis(r.period) + where + " (kernel: " + kernel_policy() + ")";
-      } else {
-        refused = std::string("the kernel refused SCHED_DEADLINE: ") + std::strerror(errno);
-        if (!where.empty() && r.module->core() < CPU_SETSIZE) {
-          cpu_set_t set;
-          CPU_ZERO(&set);
-          CPU_SET(r.module->core(), &set);
-          pthread_setaffinity_np(self, sizeof(set), &set);  // back on its core, as traced
-        }
-      }
+      pthread_setaffinity_np(self, sizeof(set), &set);
+      where = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->core()) +
+              " alone (the kernel admits a deadline thread only on all CPUs of its root domain)";
     }
-#else
-    refused = "SCHED_DEADLINE is Linux's";
+#endif
+    refused = rsaml_realtime::request_deadline(r.bounds.cost.count(), r.bounds.deadline.count(), r.period.count());
+    if (refused.empty()) {
+      r.sched = "SCHED_DEADLINE runtime " + millis(r.bounds.cost) + " deadline " + millis(r.bounds.deadline) + " period " +
+                millis(r.period) + where + " (kernel: " + rsaml_realtime::kernel_policy() + ")";
+    }
+#if defined(__linux__)
+    if (!refused.empty() && !where.empty() && r.module->core() < CPU_SETSIZE) {
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      CPU_SET(r.module->core(), &set);
+      pthread_setaffinity_np(self, sizeof(set), &set);  // back on its core, as traced
+    }
 #endif
     if (r.sched.empty()) {
       r.sched = (apply_priority(self, Policy::Fifo, r.rank) ? "SCHED_FIFO rank " + std::to_string(r.rank) : std::string("default")) +
@@ -534,9 +519,61 @@ void System::schedule_self(Release& r) {
   Trace::line("sched " + r.label + " " + r.sched);
 }
 
+std::string System::schedule_worker(const std::string& module) {
+#ifdef RSAML_HAS_PTHREAD
+  const std::thread::native_handle_type self = pthread_self();
+#else
+  const std::thread::native_handle_type self{};
+#endif
+  // Priority 0 of the analysis: the lowest real-time priority, below every release (rank 1 and up).
+  const std::string sched = options_.realtime && apply_priority(self, Policy::Fifo, 0) ? "SCHED_FIFO rank 0" : "default";
+  Trace::line("sched " + module + " worker " + sched);
+  return sched;
+}
+
+Reactions& System::reactions(Module& module, std::string label, JobBounds bounds) {
+  reactions_.push_back(std::unique_ptr<Reactions>(new Reactions{&module, std::move(label), bounds, std::string(), JobStats()}));
+  return *reactions_.back();
+}
+
+Nanos System::busy_work(Nanos cost) const {
+  // The busy work stops short of the modeled time by 5 % (at most 100 us), which the job's own
+  // bookkeeping (trace, sends, the lock) takes instead.
+  if (options_.busy_work_percent <= 0) {
+    return Nanos(0);
+  }
+  return cost * options_.busy_work_percent / 100 - std::min(cost / 20, Nanos(100000));
+}
+
+void System::reaction_done(Reactions& r, Clock::time_point arrived, Clock::time_point started, Clock::time_point done,
+                           Nanos cpu) {
+  JobStats& s = r.stats;
+  if (s.jobs++ == 0) {
+    s.first_release = arrived;
+  }
+  s.last_release = arrived;
+  const Nanos response = std::chrono::duration_cast<Nanos>(done - arrived);
+  s.worst_response = std::max(s.worst_response, response);
+  s.worst_execution = std::max(s.worst_execution, cpu);
+  s.worst_start_latency = std::max(s.worst_start_latency, std::chrono::duration_cast<Nanos>(started - arrived));
+  if (r.bounds.deadline.count() > 0 && response > r.bounds.deadline) {
+    ++s.misses;
+    Trace::report("miss " + r.label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
+                  millis(r.bounds.deadline));
+  }
+  if (r.bounds.cost.count() > 0 && cpu > r.bounds.cost) {
+    ++s.overruns;
+    Trace::report("overrun " + r.label + " job " + std::to_string(s.jobs) + " execution " + millis(cpu) + " > modeled " +
+                  millis(r.bounds.cost));
+  }
+}
+
 void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu) {
   JobStats& s = r.stats;
-  ++s.jobs;
+  if (s.jobs++ == 0) {
+    s.first_release = released;
+  }
+  s.last_release = released;
   const Nanos response = std::chrono::duration_cast<Nanos>(done - released);
   s.worst_response = std::max(s.worst_response, response);
   s.worst_execution = std::max(s.worst_execution, cpu);
@@ -562,13 +599,7 @@ void System::run_release(Release& release) {
     epoch_cv_.wait(lock, [this] { return epoch_set_; });
     next = epoch_ + release.offset;
   }
-  // The busy work stops short of the modeled time by 5 % (at most 100 us), which the job's own
-  // bookkeeping (trace, sends, the lock) takes instead.
-  Nanos busy(0);
-  if (options_.busy_work_percent > 0) {
-    busy = release.bounds.cost * options_.busy_work_percent / 100;
-    busy -= std::min(release.bounds.cost / 20, Nanos(100000));
-  }
+  const Nanos busy = busy_work(release.bounds.cost);
   // Releases stay on the grid epoch + offset + k * period, however long one of them takes.
   while (sleep_until(next)) {
     const Clock::time_point started = Clock::now();
@@ -582,20 +613,38 @@ void System::run_release(Release& release) {
   }
 }
 
+namespace {
+std::string since(Clock::time_point start, Clock::time_point t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", std::chrono::duration<double, std::milli>(t - start).count());
+  return text;
+}
+
+// One format for the C++ runtime and the ROS 2 nodes (docs/timing.md): the same keys in the same order.
+void summary(Clock::time_point start, const std::string& label, const JobStats& s, const JobBounds& b, const std::string& sched) {
+  Trace::report("summary " + label + " jobs " + std::to_string(s.jobs) + " released " +
+                (s.jobs > 0 ? since(start, s.first_release) + ".." + since(start, s.last_release) + " ms" : std::string("none")) +
+                " misses " + std::to_string(s.misses) + " overruns " +
+                std::to_string(s.overruns) + " worst-response " + millis(s.worst_response) + " bound " +
+                (b.response.count() >= 0 ? millis(b.response) : std::string("none")) + " deadline " +
+                (b.deadline.count() > 0 ? millis(b.deadline) : std::string("none")) + " worst-execution " +
+                millis(s.worst_execution) + " modeled " + millis(b.cost) + " worst-start-latency " +
+                millis(s.worst_start_latency) + " sched " + sched);
+}
+}  // namespace
+
 void System::print_summary() {
   for (auto& release : releases_) {
-    const Release& r = *release;
-    const JobStats& s = r.stats;
-    Trace::report("summary " + r.label + " jobs " + std::to_string(s.jobs) + " misses " + std::to_string(s.misses) +
-                  " overruns " + std::to_string(s.overruns) + " worst-response " + millis(s.worst_response) + " bound " +
-                  (r.bounds.response.count() >= 0 ? millis(r.bounds.response) : std::string("none")) + " deadline " +
-                  millis(r.bounds.deadline) + " worst-execution " + millis(s.worst_execution) + " modeled " +
-                  millis(r.bounds.cost) + " worst-start-latency " + millis(s.worst_start_latency) + " sched " + r.sched);
+    summary(start_, release->label, release->stats, release->bounds, release->sched);
+  }
+  for (auto& reactions : reactions_) {
+    summary(start_, reactions->label, reactions->stats, reactions->bounds, reactions->sched);
   }
 }
 
 int System::run(const Options& options) {
   const Clock::time_point start = Clock::now();
+  start_ = start;
   options_ = options;
   Trace::configure(options.trace, start);
   std::signal(SIGINT, on_signal);

@@ -57,16 +57,16 @@ class Trace {
 enum class Policy { Fifo, RoundRobin, Deadline };
 
 /**
- * What the model and the timing analysis say of each job of a timed release; the runtime measures
- * every job against it.
+ * What the model and the timing analysis say of each job of a timed release or a reaction; the
+ * runtime measures every job against it.
  */
 struct JobBounds {
-  Nanos deadline;  // relative deadline: the modeled delay, or the period
+  Nanos deadline;  // relative deadline: the modeled delay, or the period (minimum interval); 0: none
   Nanos cost;      // modeled execution time; 0 when the model gives none
   Nanos response;  // the analysis's worst-case response time; negative when it gives none
 };
 
-/** What a release thread observed of its jobs. */
+/** What a release thread (or a module's worker, of its reactions) observed of its jobs. */
 struct JobStats {
   std::uint64_t jobs = 0;
   std::uint64_t misses = 0;
@@ -74,10 +74,21 @@ struct JobStats {
   Nanos worst_response{0};
   Nanos worst_execution{0};
   Nanos worst_start_latency{0};
+  Clock::time_point first_release{};  // of the first job; the summary gives it and the last since the run's start
+  Clock::time_point last_release{};
 };
 
 class System;
 class Module;
+
+/** A module's reactions and what its worker thread observed of them. */
+struct Reactions {
+  Module* module;
+  std::string label;
+  JobBounds bounds;
+  std::string sched;  // the scheduling the worker got, as the trace says it
+  JobStats stats;
+};
 
 /**
  * An inhibitor or a suppressor: active for its duration after the last message on its trigger port
@@ -139,6 +150,16 @@ class Module {
   void start_worker();
   void stop_worker();
   void start_step(std::uint64_t wave);
+  /**
+   * Measures the module's reactions (a module that reacts to data calls it once, in its constructor):
+   * each from the arrival that starts it to its completion, against bounds.
+   */
+  void measure_reactions(std::string label, JobBounds bounds);
+  /**
+   * A reaction to the data that has arrived: runs body (the step functions and the sending of the
+   * outputs) when begin_reaction() lets it, after the busy work, and measures it.
+   */
+  void react(Nanos min_interval, const std::function<void()>& body);
   /** Runs one job of a timed release; busy: CPU time it consumes first (the --busy-work stand-in for user code). */
   void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
                      Nanos busy = Nanos(0));
@@ -152,7 +173,10 @@ class Module {
   virtual void publish_outputs() {}
   /** Runs an action; in a timed release, first waits until the action's offset in the period. */
   void run_action(const char* label, Nanos offset, const std::function<void()>& body);
-  /** Whether data arriving now starts a reaction: once per wave, and not sooner than min_interval. */
+  /**
+   * Whether the data that started the current activation starts a reaction: once per wave, and its
+   * arrival not sooner than min_interval after the arrival that started the previous reaction.
+   */
   bool begin_reaction(Nanos min_interval);
   /** Whether a sporadic function may run again (and, if so, notes that it runs now). */
   static bool due(Clock::time_point& last, Nanos min_interval);
@@ -163,6 +187,7 @@ class Module {
   friend class Activation;
   struct Mail {
     std::uint64_t wave;
+    Clock::time_point arrived;
     std::function<void()> work;
   };
   void run_worker();
@@ -181,6 +206,7 @@ class Module {
   int depth_ = 0;
   Clock::time_point last_reaction_{};
   bool reacted_ = false;
+  Reactions* reactions_ = nullptr;  // owned by the system; null when not measured
 };
 
 template <class T>
@@ -333,6 +359,18 @@ class System {
    * its analysis does not count. Says so in the trace, or why it could not.
    */
   void place(std::thread::native_handle_type thread, const std::string& label, int core);
+  /**
+   * Gives the calling worker thread of a module priority 0 of the analysis, below every release:
+   * SCHED_FIFO at the lowest real-time priority where permitted. Says which in the trace.
+   */
+  std::string schedule_worker(const std::string& module);
+  /** The record of a module's measured reactions (see Module::measure_reactions). */
+  Reactions& reactions(Module& module, std::string label, JobBounds bounds);
+  /** Measures one reaction, as job_done does a release's job. */
+  void reaction_done(Reactions& reactions, Clock::time_point arrived, Clock::time_point started, Clock::time_point done,
+                     Nanos cpu);
+  /** CPU time the --busy-work option has a job of modeled cost consume. */
+  Nanos busy_work(Nanos cost) const;
   /** Sleeps until t; false when the run is stopping. */
   bool sleep_until(Clock::time_point t);
   bool stopping() const { return stopping_.load(); }
@@ -365,7 +403,9 @@ class System {
   std::string name_;
   std::vector<Module*> modules_;
   std::vector<std::unique_ptr<Release>> releases_;
+  std::vector<std::unique_ptr<Reactions>> reactions_;
   Options options_;
+  Clock::time_point start_;  // of the run, as the trace counts it
   bool cores_claimed_ = false;
   std::vector<int> unclaimed_cores_;
   std::vector<int> all_cores_;

@@ -787,5 +787,35 @@ public final class ExecutionPlan {
         public long minIntervalNs() {
             return module.minIntervalNs;
         }
+
+        /**
+         * Relative deadline of a reaction, from the arrival that starts it: the module's delay, else
+         * its minimum interval; 0 (none) for an aperiodic module without a delay.
+         */
+        public long deadlineNs() {
+            long delay = PlanTimes.nanos(module.module.getDelay(), module.module);
+            return delay > 0 ? delay : module.minIntervalNs;
+        }
+
+        /** Modeled execution time of a reaction: the module's execDuration, else the sum of its step functions'. */
+        public long costNs() {
+            long cost = PlanTimes.nanos(module.module.getExecDuration(), module.module);
+            if (cost == 0) {
+                for (PlannedFunction f : module.stepFunctions()) {
+                    cost = Math.addExact(cost, PlanTimes.nanos(f.function.getExecDuration(), f.function));
+                }
+            }
+            return cost;
+        }
+
+        /** Whether the module gives no execution duration of its own, so that {@link #costNs()} sums its functions'. */
+        public boolean costFromFunctions() {
+            return PlanTimes.nanos(module.module.getExecDuration(), module.module) == 0;
+        }
+
+        /** What traces call it: {@code layer/module (reaction)}, as the analysis names its task. */
+        public String label() {
+            return module.qualifiedName + " (reaction)";
+        }
     }
 }

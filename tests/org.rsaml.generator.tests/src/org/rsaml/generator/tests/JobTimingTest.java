@@ -5,20 +5,16 @@
 package org.rsaml.generator.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Random;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -31,6 +27,7 @@ import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.Reaction;
 import org.rsaml.analysis.plan.ExecutionPlan.Release;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
@@ -60,39 +57,6 @@ class JobTimingTest {
     static final long ALLOWANCE_NS = 1_000_000;
 
     static final long RUN_MS = 700;
-
-    private static final Pattern SUMMARY = Pattern.compile("summary (\\S+) jobs (\\d+) misses (\\d+) overruns (\\d+)"
-            + " worst-response ([0-9.]+) ms bound (none|[0-9.]+ ms) deadline ([0-9.]+) ms worst-execution ([0-9.]+) ms"
-            + " modeled ([0-9.]+) ms worst-start-latency ([0-9.]+) ms sched (.*)");
-
-    /** One release's summary line. */
-    record Summary(String label, long jobs, long misses, long overruns, long worstNs, String bound, long deadlineNs,
-            long executionNs, long modeledNs, long latencyNs, String sched) {
-
-        /** Scheduled as the analysis assumes: real-time at its rank, or SCHED_DEADLINE for EDF. */
-        boolean asAnalysed() {
-            return (sched.startsWith("SCHED_FIFO") || sched.startsWith("SCHED_RR") || sched.startsWith("SCHED_DEADLINE"))
-                    && !sched.contains("instead of EDF");
-        }
-    }
-
-    static Map<String, Summary> summaries(String output) {
-        Map<String, Summary> all = new LinkedHashMap<>();
-        for (String line : new RunTrace(output).lines) {
-            if (line.startsWith("summary ")) {
-                Matcher m = SUMMARY.matcher(line);
-                assertTrue(m.matches(), "a summary line the test cannot read: " + line);
-                all.put(m.group(1), new Summary(m.group(1), Long.parseLong(m.group(2)), Long.parseLong(m.group(3)),
-                        Long.parseLong(m.group(4)), ns(m.group(5)), m.group(6), ns(m.group(7)), ns(m.group(8)), ns(m.group(9)),
-                        ns(m.group(10)), m.group(11)));
-            }
-        }
-        return all;
-    }
-
-    private static long ns(String ms) {
-        return Math.round(Double.parseDouble(ms) * 1e6);
-    }
 
     static String ms(long ns) {
         return String.format(Locale.ROOT, "%.3f ms", ns / 1e6);
@@ -165,6 +129,33 @@ class JobTimingTest {
     }
 
     /**
+     * A sporadic module's reactions measured from the arrival that starts one to its completion: a
+     * producer (T 10, C 2, rate monotonic) sends to a sporadic consumer (minimum interval 20 ms, C 3,
+     * delay 20 ms) on the same core. The consumer reacts to every other message (arrivals at least
+     * 20 ms apart), on its worker thread at priority 0 below the producer: its bound is 3 ms plus the
+     * producer's preemptions, 5 ms.
+     */
+    @Test
+    void aSporadicReactionIsMeasuredAgainstItsBound(@TempDir Path tmp) throws Exception {
+        String layers = module("producer", 10, 2, "RM").replace("    </modules>",
+                "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\" dataType=\"numeric\"/>\n    </modules>")
+                + "    <modules name=\"consumer\" timeUnit=\"ms\" type=\"realTime\" period=\"20.0\" delay=\"20.0\" execDuration=\"3.0\""
+                + " execType=\"sporadic\">\n      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\" dataType=\"numeric\"/>\n    </modules>\n";
+        String processors = "  <processors name=\"cpu1\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='producer']"
+                + " //@layers[name='tasks']/@modules[name='consumer']\"/>\n  <connections source=\"//@layers[name='tasks']/@modules[name='producer']/@ports[name='out']\""
+                + " target=\"//@layers[name='tasks']/@modules[name='consumer']/@ports[name='in']\"/>\n";
+        Path out = tmp.resolve("project");
+        Architecture arch = writeAndGenerate(tmp, "sporadic", layers, processors, out, false);
+        Map<String, Long> bounds = bounds(TimingAnalysis.analyse(arch));
+        assertEquals(5_000_000L, bounds.get("tasks/consumer (reaction)"), "the analysis's bound of the reaction: " + bounds);
+        JobSummary s = runAndCheck(arch, out, "sporadic").get("tasks/consumer (reaction)");
+        // a message every 10 ms, a reaction to every other one: about one every 20 ms
+        long expected = RUN_MS / 20;
+        assertTrue(s.jobs() >= expected / 2 && s.jobs() <= expected + 2, "about " + expected + " reactions in " + RUN_MS + " ms: " + s);
+        assertTrue(s.worstNs() >= s.executionNs(), "a response includes the reaction's execution: " + s);
+    }
+
+    /**
      * A processor the analysis proves overloaded: A (T 10, C 5) and B (T 14, C 6) under rate
      * monotonic; B's worst response is 16 ms, past its 14 ms deadline. Run as modeled, the program
      * reports B's misses (under real-time scheduling; A, above it, meets); with --busy-work 150 every
@@ -183,8 +174,8 @@ class JobTimingTest {
                 .findFirst().orElseThrow();
         assertEquals(Verdict.MISSES, b.verdict(), "the analysis predicts B's miss: " + b.explanation());
 
-        Map<String, Summary> asModeled = runAndCheck(arch, out, "overloaded");
-        Summary sb = asModeled.get("tasks/b.f");
+        Map<String, JobSummary> asModeled = runAndCheck(arch, out, "overloaded");
+        JobSummary sb = asModeled.get("tasks/b.f");
         if (sb.asAnalysed()) {
             assertTrue(sb.misses() > 0, "B's miss, predicted by the analysis, was not observed: " + sb);
             assertEquals(0, asModeled.get("tasks/a.f").misses(), "A has the higher priority and meets: " + asModeled.get("tasks/a.f"));
@@ -192,8 +183,8 @@ class JobTimingTest {
 
         String doubled = Tools.ok(out, 60, Tools.cmakeBuild(out, CppExamplesTest.executableName(out)).toString(), "--run-for-ms",
                 "400", "--quiet", "--busy-work", "150");
-        Map<String, Summary> over = summaries(doubled);
-        for (Summary s : over.values()) {
+        Map<String, JobSummary> over = JobSummary.of(doubled);
+        for (JobSummary s : over.values()) {
             assertTrue(s.jobs() > 0, "no job of " + s.label() + " completed:\n" + doubled);
             assertEquals(s.jobs(), s.overruns(), "every job used half as much again as its modeled time: " + s);
             assertEquals(s.overruns(), new RunTrace(doubled).matching("overrun " + s.label() + " job ").size(),
@@ -217,8 +208,8 @@ class JobTimingTest {
         Path out = tmp.resolve("project");
         Architecture arch = writeAndGenerate(tmp, "edf", layers, processors, out, false);
         assertEquals(Verdict.MEETS, TimingAnalysis.analyse(arch).verdict(), "EDF schedules A and B");
-        Map<String, Summary> run = runAndCheck(arch, out, "edf");
-        for (Summary s : run.values()) {
+        Map<String, JobSummary> run = runAndCheck(arch, out, "edf");
+        for (JobSummary s : run.values()) {
             long period = s.label().equals("tasks/a.f") ? 5 : 7;
             long cost = s.label().equals("tasks/a.f") ? 2 : 4;
             String granted = String.format(Locale.ROOT, "SCHED_DEADLINE runtime %d.000 ms deadline %d.000 ms period %d.000 ms", cost,
@@ -300,22 +291,55 @@ class JobTimingTest {
         return arch;
     }
 
+    /** The worst observed response within the bound, where the job was scheduled as analysed; else noted in unchecked. */
+    private static void checkBound(Architecture arch, org.rsaml.model.Module module, String label, JobSummary s, Long bound, String what,
+            String output, List<String> unchecked) {
+        if (bound == null) {
+            return;
+        }
+        String apart = notApart(arch, module);
+        if (!s.asAnalysed() || apart != null) {
+            unchecked.add(label + " (" + (apart != null ? apart : s.sched()) + ")");
+            return;
+        }
+        System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s, bound %s, worst start latency %s, %s%n", what,
+                label, s.jobs(), ms(s.worstNs()), ms(bound), ms(s.latencyNs()), s.sched());
+        assertTrue(s.worstNs() <= bound + ALLOWANCE_NS, what + ": " + label + " responded in " + ms(s.worstNs())
+                + ", more than the analysis's bound " + ms(bound) + " (+ " + ms(ALLOWANCE_NS) + " for the platform)\n"
+                + Tools.last(output, 3000));
+    }
+
     /**
      * Runs the program with busy work as modeled and checks every release's summary against the
      * model and the analysis; the bound itself where the release was scheduled as analysed.
      */
-    static Map<String, Summary> runAndCheck(Architecture arch, Path project, String what) throws Exception {
+    static Map<String, JobSummary> runAndCheck(Architecture arch, Path project, String what) throws Exception {
         Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
         String output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS), "--quiet", "--busy-work", "100");
-        Map<String, Summary> summaries = summaries(output);
+        Map<String, JobSummary> summaries = JobSummary.of(output);
         ExecutionPlan plan = ExecutionPlan.of(arch);
         Map<String, Long> bounds = bounds(TimingAnalysis.analyse(arch));
         RunTrace trace = new RunTrace(output);
-        assertEquals(plan.releases().stream().map(Release::label).sorted().toList(), summaries.keySet().stream().sorted().toList(),
-                what + ": a summary line per timed release\n" + Tools.last(output, 3000));
+        List<String> labels = new ArrayList<>(plan.releases().stream().map(Release::label).toList());
+        plan.reactions().forEach(x -> labels.add(x.label()));
+        assertEquals(labels.stream().sorted().toList(), summaries.keySet().stream().sorted().toList(),
+                what + ": a summary line per timed release and per reacting module\n" + Tools.last(output, 3000));
         List<String> unchecked = new ArrayList<>();
+        for (Reaction x : plan.reactions()) {
+            JobSummary s = summaries.get(x.label());
+            Long bound = bounds.get(x.label());
+            assertEquals(bound == null ? "none" : ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
+            assertEquals(x.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline of the reactions: " + s);
+            assertEquals(x.costNs(), s.modeledNs(), what + ": the modeled execution time of a reaction: " + s);
+            if (s.jobs() > 0) {
+                assertTrue(s.executionNs() >= x.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
+            }
+            assertEquals(s.misses(), trace.matching("miss " + x.label() + " job ").size(), what + ": a line per miss of " + x.label());
+            assertEquals(s.overruns(), trace.matching("overrun " + x.label() + " job ").size(), what + ": a line per overrun of " + x.label());
+            checkBound(arch, x.module().module(), x.label(), s, bound, what, output, unchecked);
+        }
         for (Release r : plan.releases()) {
-            Summary s = summaries.get(r.label());
+            JobSummary s = summaries.get(r.label());
             Long bound = bounds.get(r.label());
             assertEquals(bound == null ? "none" : ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
             assertEquals(r.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline: " + s);
@@ -326,25 +350,15 @@ class JobTimingTest {
             assertTrue(s.jobs() >= Math.max(1, expected / 2) && s.jobs() <= most,
                     what + ": " + s.jobs() + " jobs of " + r.label() + " in " + RUN_MS + " ms, expected about " + expected);
             assertTrue(s.executionNs() >= r.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
+            assertEquals((s.jobs() - 1) * r.periodNs(), s.lastNs() - s.firstNs(), 2_000,
+                    what + ": the jobs of " + r.label() + " released on its grid, one every period, none skipped: " + s);
             assertEquals(s.misses(), trace.matching("miss " + r.label() + " job ").size(), what + ": a line per miss of " + r.label());
             assertEquals(s.overruns(), trace.matching("overrun " + r.label() + " job ").size(),
                     what + ": a line per overrun of " + r.label());
             if (s.misses() > 0) {
                 assertTrue(s.worstNs() > s.deadlineNs(), what + ": a miss is a response past the deadline: " + s);
             }
-            if (bound == null) {
-                continue;
-            }
-            String apart = notApart(arch, r.module().module());
-            if (!s.asAnalysed() || apart != null) {
-                unchecked.add(r.label() + " (" + (apart != null ? apart : s.sched()) + ")");
-                continue;
-            }
-            System.out.printf(Locale.ROOT, "JobTimingTest %s: %s worst response %s, bound %s, worst start latency %s, %s%n", what,
-                    r.label(), ms(s.worstNs()), ms(bound), ms(s.latencyNs()), s.sched());
-            assertTrue(s.worstNs() <= bound + ALLOWANCE_NS, what + ": " + r.label() + " responded in " + ms(s.worstNs())
-                    + ", more than the analysis's bound " + ms(bound) + " (+ " + ms(ALLOWANCE_NS) + " for the platform)\n"
-                    + Tools.last(output, 3000));
+            checkBound(arch, r.module().module(), r.label(), s, bound, what, output, unchecked);
         }
         if (!unchecked.isEmpty()) {
             System.out.println("JobTimingTest " + what + ": not scheduled as analysed on this machine: " + unchecked

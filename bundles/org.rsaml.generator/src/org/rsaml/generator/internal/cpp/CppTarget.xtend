@@ -19,6 +19,7 @@ import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
+import org.rsaml.analysis.plan.ExecutionPlan.Reaction
 import org.rsaml.analysis.plan.ExecutionPlan.Release
 import org.rsaml.generator.spi.GeneratedFile
 import org.rsaml.generator.spi.GeneratedProject
@@ -30,7 +31,7 @@ import org.rsaml.model.SchedulingPolicy
  * The C++17 target: a CMake project with one class per module. The generated part of each module
  * (gen/LAYER/ModuleBase.*) declares its typed ports, runs its functions and is regenerated; the
  * architect's part (src/LAYER/Module.*) implements the actions and is created once. The runtime
- * (gen/rsaml/) is the same for every model: the files runtime/cpp/rsaml/* of this bundle.
+ * (gen/rsaml/) is the same for every model: the files runtime/cpp/rsaml/* of this bundle, and runtime/cxx/rsaml/realtime.hpp, which the ROS 2 nodes share.
  */
 class CppTarget implements TargetGenerator {
 
@@ -50,7 +51,15 @@ class CppTarget implements TargetGenerator {
 
 	/** The fixed runtime file at runtime/cpp/PATH in this bundle. */
 	def static String runtimeFile(String path) {
-		val in = CppTarget.getResourceAsStream("/runtime/cpp/" + path)
+		runtimeFile("cpp", path)
+	}
+
+	/**
+	 * A fixed runtime file at runtime/DIR/PATH in this bundle: cpp (the C++ runtime), cxx (shared by
+	 * the C++ runtime and the ROS 2 nodes).
+	 */
+	def static String runtimeFile(String dir, String path) {
+		val in = CppTarget.getResourceAsStream("/runtime/" + dir + "/" + path)
 		if (in === null) {
 			throw new IllegalStateException("the C++ runtime file " + path + " is missing from org.rsaml.generator")
 		}
@@ -91,6 +100,7 @@ class CppFiles {
 		files += GeneratedFile.generated("CMakeLists.txt", cmake)
 		files += GeneratedFile.generated("gen/rsaml/runtime.hpp", "// " + banner + "\n" + CppTarget.runtimeFile("rsaml/runtime.hpp"))
 		files += GeneratedFile.generated("gen/rsaml/runtime.cpp", "// " + banner + "\n" + CppTarget.runtimeFile("rsaml/runtime.cpp"))
+		files += GeneratedFile.generated("gen/rsaml/realtime.hpp", "// " + banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
 		files += GeneratedFile.generated("gen/messages.hpp", messages)
 		files += GeneratedFile.generated("gen/Architecture.hpp", architectureHeader)
 		files += GeneratedFile.generated("gen/Architecture.cpp", architectureSource)
@@ -117,10 +127,23 @@ class CppFiles {
 	}
 
 	/** The jobs' deadline, modeled cost and analysed bound, which the runtime measures each job against. */
-	def private jobBounds(Release r) '''::rsaml::JobBounds{«nanos(r.deadlineNs)», «nanos(r.costNs)», «nanos(bounds.of(r).responseNs)»}'''
+	def private jobBounds(Release r) {
+		jobBounds(r.deadlineNs, r.costNs, bounds.of(r))
+	}
+
+	def private jobBounds(long deadlineNs, long costNs, ReleaseBounds.Bound bound) '''::rsaml::JobBounds{«nanos(deadlineNs)», «nanos(costNs)», «nanos(bound.responseNs)»}'''
+
+	def private reactionBounds(Reaction x) '''
+		// reactions: from the arrival that starts one to its completion, due within «x.deadlineNs» ns (0: none),
+		// modeled to take «x.costNs» ns; «boundComment(bounds.of(x))».
+		::rsaml::Module::measure_reactions(«str(x.label)», «jobBounds(x.deadlineNs, x.costNs, bounds.of(x))»);
+	'''
 
 	def private boundComment(Release r) {
-		val bound = bounds.of(r)
+		boundComment(bounds.of(r))
+	}
+
+	def private boundComment(ReleaseBounds.Bound bound) {
 		if (bound.responseNs >= 0) '''analysed worst-case response «bound.responseNs» ns («doc(bound.why)»)'''
 		else '''no analysed bound: «doc(bound.why)»'''
 	}
@@ -384,6 +407,9 @@ class CppFiles {
 		  	system.every(*this, «str(r.label)», «nanos(r.periodNs)», «nanos(r.offsetNs)», ::rsaml::Policy::«r.posixPolicy», «r.rank»,
 		  	             «jobBounds(r)», [this] { «r.method»(); });
 		  «ENDFOR»
+		  «IF m.reactive»
+		  	«reactionBounds(m.reaction)»
+		  «ENDIF»
 		}
 		«FOR f : m.functions»
 
@@ -426,13 +452,12 @@ class CppFiles {
 		«IF m.reactive»
 
 			void «m.baseName»::«m.reactMethod»() {
-			  if (!::rsaml::Module::begin_reaction(«nanos(m.minIntervalNs)»)) {
-			    return;
-			  }
-			  «FOR f : m.stepFunctions»
-			  	«callFunction(f)»
-			  «ENDFOR»
-			  publish_outputs();
+			  ::rsaml::Module::react(«nanos(m.minIntervalNs)», [this] {
+			    «FOR f : m.stepFunctions»
+			    	«callFunction(f)»
+			    «ENDFOR»
+			    publish_outputs();
+			  });
 			}
 		«ENDIF»
 

@@ -18,12 +18,13 @@ import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.TimingModelException;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.ExecutionPlan.Reaction;
 import org.rsaml.analysis.plan.ExecutionPlan.Release;
 import org.rsaml.analysis.plan.UnplannableException;
 
 /**
- * The timing analysis's bound on each timed release's response time, as the generated programs
- * measure their jobs against it: the worst-case response time where the analysis computes one, the
+ * The timing analysis's bound on each timed release's and each reaction's response time, as the
+ * generated programs measure their jobs against it: the worst-case response time where the analysis computes one, the
  * deadline where it proves the deadline met without one (EDF), none otherwise (with the reason).
  */
 public final class ReleaseBounds {
@@ -69,7 +70,17 @@ public final class ReleaseBounds {
             case ACTION -> r.action().action();
             case MODULE -> r.module().module();
         };
-        TaskResult t = results.getOrDefault(element, Map.of()).get(r.kind().name().toLowerCase(Locale.ROOT));
+        return bound(results.getOrDefault(element, Map.of()).get(r.kind().name().toLowerCase(Locale.ROOT)));
+    }
+
+    /** The bound of a reacting module's reactions, from the arrival that starts one to its completion. */
+    public Bound of(Reaction r) {
+        Bound b = bound(results.getOrDefault(r.module().module(), Map.of()).get("reaction"));
+        return r.minIntervalNs() == 0 && b.responseNs() < 0
+                ? new Bound(-1, "aperiodic: the model bounds neither its arrivals nor its load") : b;
+    }
+
+    private Bound bound(TaskResult t) {
         if (t == null) {
             return new Bound(-1, unanalysed != null ? unanalysed : "the timing analysis has no task for it");
         }

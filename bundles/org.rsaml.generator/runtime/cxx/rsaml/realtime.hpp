@@ -1,0 +1,91 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// EDF for the releases of an EDF processor: Linux's SCHED_DEADLINE, shared by the C++ runtime and
+// the ROS 2 nodes (docs/timing.md, "EDF"). Internal linkage, so that two generated libraries in one
+// process (ROS 2 components) never mix their copies.
+#pragma once
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#if defined(__linux__)
+#include <sched.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+namespace rsaml_realtime {
+namespace {
+
+#if defined(__linux__)
+// sched_setattr and sched_getattr as system calls: glibc has no wrapper before 2.41.
+constexpr unsigned kSchedDeadline = 6;
+struct SchedAttr {
+  std::uint32_t size;
+  std::uint32_t sched_policy;
+  std::uint64_t sched_flags;
+  std::int32_t sched_nice;
+  std::uint32_t sched_priority;
+  std::uint64_t sched_runtime;
+  std::uint64_t sched_deadline;
+  std::uint64_t sched_period;
+};
+#endif
+
+/** The calling thread's policy as the kernel reports it. */
+inline std::string kernel_policy() {
+#if defined(__linux__)
+  SchedAttr attr{};
+  if (syscall(SYS_sched_getattr, 0, &attr, sizeof attr, 0) != 0) {
+    return std::string("unknown (") + std::strerror(errno) + ")";
+  }
+  switch (attr.sched_policy) {
+    case SCHED_OTHER: return "SCHED_OTHER";
+    case SCHED_FIFO: return "SCHED_FIFO";
+    case SCHED_RR: return "SCHED_RR";
+    case kSchedDeadline: return "SCHED_DEADLINE";
+    default: return "policy " + std::to_string(attr.sched_policy);
+  }
+#else
+  return "unknown";
+#endif
+}
+
+/**
+ * Puts the calling thread under SCHED_DEADLINE with runtime = the modeled execution time, and the
+ * modeled deadline and period (nanoseconds). Returns why not when it cannot ("" when granted). The
+ * kernel admits a deadline thread only where it may run on every CPU of its root domain: the caller
+ * unpins the thread first.
+ */
+inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline, std::int64_t period) {
+#if defined(__linux__)
+  if (runtime < 1024) {
+    return "the model gives it no execution time (SCHED_DEADLINE needs a runtime of 1 us or more)";
+  }
+  if (runtime > deadline || deadline > period) {
+    return "SCHED_DEADLINE needs execution time <= deadline <= period";
+  }
+  SchedAttr attr{};
+  attr.size = sizeof attr;
+  attr.sched_policy = kSchedDeadline;
+  attr.sched_runtime = static_cast<std::uint64_t>(runtime);
+  attr.sched_deadline = static_cast<std::uint64_t>(deadline);
+  attr.sched_period = static_cast<std::uint64_t>(period);
+  if (syscall(SYS_sched_setattr, 0, &attr, 0) != 0) {
+    return std::string("the kernel refused SCHED_DEADLINE: ") + std::strerror(errno);
+  }
+  return "";
+#else
+  (void)runtime;
+  (void)deadline;
+  (void)period;
+  return "SCHED_DEADLINE is Linux's";
+#endif
+}
+
+}  // namespace
+}  // namespace rsaml_realtime
