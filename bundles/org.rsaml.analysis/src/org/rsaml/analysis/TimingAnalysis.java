@@ -19,7 +19,6 @@ import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.analysis.plan.ExecutionPlan.Release;
-import org.rsaml.analysis.plan.PlanTimes;
 import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Module;
@@ -35,7 +34,7 @@ import org.rsaml.model.support.RsamlLabels;
  * <li>the releases and the reaction of one module share the module's lock (no priority
  * inheritance), so they form one lock group;</li>
  * <li>a sporadic module's reaction is a sporadic task at priority 0, below every real-time rank (it
- * runs on the module's worker thread, which has no real-time priority); an aperiodic reaction has
+ * runs on the module's worker thread, at the lowest real-time priority); an aperiodic reaction has
  * no bound on its arrivals and is excluded, said so, and the work at its level is not analysed.</li>
  * </ul>
  */
@@ -113,19 +112,19 @@ public final class TimingAnalysis {
      * Each processor is analysed as if it had a CPU to itself. The runtime pins the threads of a
      * processor with a core to that core and confines those of every processor without one (and of
      * the modules no processor names) to the cores no processor claims: domains with modules that
-     * end up on the same CPUs (two without a core, or two claiming one core) interfere, and no
-     * verdict of theirs holds. Per such domain, why.
+     * end up on the same CPUs of one host (two without a core, or two claiming one core) interfere,
+     * and no verdict of theirs holds. Processors on different hosts share nothing. Per such domain, why.
      */
     private static Map<Group, String> sharedCpus(java.util.Collection<Group> groups) {
-        Map<Integer, List<Group>> byCore = new java.util.TreeMap<>();
+        Map<String, Map<Integer, List<Group>>> byHost = new java.util.TreeMap<>();
         for (Group g : groups) {
             if (g.modules > 0) {
                 int core = g.element == null || g.element.getCore() < 0 ? -1 : g.element.getCore();
-                byCore.computeIfAbsent(core, c -> new ArrayList<>()).add(g);
+                byHost.computeIfAbsent(host(g.element), h -> new java.util.TreeMap<>()).computeIfAbsent(core, c -> new ArrayList<>()).add(g);
             }
         }
         Map<Group, String> shared = new IdentityHashMap<>();
-        byCore.forEach((core, domains) -> {
+        byHost.values().forEach(byCore -> byCore.forEach((core, domains) -> {
             if (domains.size() < 2) {
                 return;
             }
@@ -140,8 +139,13 @@ public final class TimingAnalysis {
                             + " the others, which the analysis of a processor alone does not count: give each processor a core"
                             + " of its own";
             domains.forEach(g -> shared.put(g, why));
-        });
+        }));
         return shared;
+    }
+
+    /** The machine a processor is on: its host, or "" for the architecture's main host (also the default processor's). */
+    public static String host(Processor p) {
+        return p == null || p.getHost() == null || p.getHost().isBlank() ? "" : p.getHost().strip();
     }
 
     private static String names(List<String> names) {
@@ -193,19 +197,10 @@ public final class TimingAnalysis {
     }
 
     private static TaskSource reaction(PlannedModule m) {
-        Module module = m.module();
-        long cost = PlanTimes.nanos(module.getExecDuration(), module);
-        String note = "";
-        if (cost == 0) {
-            for (ExecutionPlan.PlannedFunction f : m.stepFunctions()) {
-                cost = Math.addExact(cost, PlanTimes.nanos(f.function().getExecDuration(), f.function()));
-            }
-            note = "the module gives no execution duration: the sum of its functions' is used";
-        }
-        long delay = PlanTimes.nanos(module.getDelay(), module);
-        long deadline = delay > 0 ? delay : m.minIntervalNs();
-        Task t = new Task(m.qualifiedName() + " (reaction)", m.minIntervalNs(), deadline, cost, 0, 0, m.qualifiedName());
-        return new TaskSource(t, module, "reaction", note);
+        ExecutionPlan.Reaction r = m.reaction();
+        String note = r.costFromFunctions() ? "the module gives no execution duration: the sum of its functions' is used" : "";
+        Task t = new Task(r.label(), m.minIntervalNs(), r.deadlineNs(), r.costNs(), 0, 0, m.qualifiedName());
+        return new TaskSource(t, m.module(), "reaction", note);
     }
 
     private static String join(String a, String b) {
@@ -264,7 +259,7 @@ public final class TimingAnalysis {
             List<String> notes = new ArrayList<>();
             if (policy == SchedulingPolicy.FIXED_PRIORITY) {
                 notes.add("scheduled as the generated runtime does: one real-time thread per timed release at its rank"
-                        + " (SCHED_FIFO, SCHED_RR for round robin), reactions on non-real-time worker threads below them;"
+                        + " (SCHED_FIFO, SCHED_RR for round robin), reactions on worker threads at the lowest real-time priority below them;"
                         + " the verdict holds when the program runs with real-time priorities (not with --no-realtime)");
             } else if (policy == SchedulingPolicy.EDF) {
                 notes.add("scheduled by deadline: the generated C++ runtime runs each timed release under SCHED_DEADLINE"

@@ -12,7 +12,7 @@ import org.eclipse.emf.common.util.EList;
  * <!-- end-user-doc -->
  *
  * <!-- begin-model-doc -->
- * A scheduling domain (e.g. one CPU core) and the modules allocated to it. Every timed release and reaction of an allocated module runs there; the modules no processor names run on a processor of their own, named 'default'.
+ * A scheduling domain (e.g. one CPU core) and the modules allocated to it. Every timed release and reaction of an allocated module runs there; the modules no processor names run on a processor of their own, named 'default'. A processor may be on another machine (host), reached through a link with a latency.
  * <!-- end-model-doc -->
  *
  * <p>
@@ -22,13 +22,15 @@ import org.eclipse.emf.common.util.EList;
  *   <li>{@link org.rsaml.model.Processor#getSchedPolicy <em>Sched Policy</em>}</li>
  *   <li>{@link org.rsaml.model.Processor#getCore <em>Core</em>}</li>
  *   <li>{@link org.rsaml.model.Processor#getModules <em>Modules</em>}</li>
+ *   <li>{@link org.rsaml.model.Processor#getHost <em>Host</em>}</li>
+ *   <li>{@link org.rsaml.model.Processor#getLinkLatency <em>Link Latency</em>}</li>
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getProcessor()
  * @model
  * @generated
  */
-public interface Processor extends NamedElement {
+public interface Processor extends NamedElement, TimeScaled {
 	/**
 	 * Returns the value of the '<em><b>Sched Policy</b></em>' attribute.
 	 * The literals are from the enumeration {@link org.rsaml.model.SchedulingPolicy}.
@@ -124,5 +126,55 @@ public interface Processor extends NamedElement {
 	 * @generated
 	 */
 	EList<org.rsaml.model.Module> getModules();
+
+	/**
+	 * Returns the value of the '<em><b>Host</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The machine the processor is on (a computer, a board, a micro-controller); processors naming the same host share a machine. Not set: the architecture's main host. Data between modules on different hosts crosses their links (linkLatency).
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Host</em>' attribute.
+	 * @see #setHost(String)
+	 * @see org.rsaml.model.RsamlPackage#getProcessor_Host()
+	 * @model
+	 * @generated
+	 */
+	String getHost();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Processor#getHost <em>Host</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Host</em>' attribute.
+	 * @see #getHost()
+	 * @generated
+	 */
+	void setHost(String value);
+
+	/**
+	 * Returns the value of the '<em><b>Link Latency</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The longest a message takes through this processor's link (bus or network) to or from another host, in the processor's timeUnit; a message between modules on two different hosts takes the link latencies of both processors. 0: not counted.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Link Latency</em>' attribute.
+	 * @see #setLinkLatency(double)
+	 * @see org.rsaml.model.RsamlPackage#getProcessor_LinkLatency()
+	 * @model
+	 * @generated
+	 */
+	double getLinkLatency();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Processor#getLinkLatency <em>Link Latency</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Link Latency</em>' attribute.
+	 * @see #getLinkLatency()
+	 * @generated
+	 */
+	void setLinkLatency(double value);
 
 } // Processor

@@ -3314,13 +3314,22 @@ public interface RsamlPackage extends EPackage {
 	int PROCESSOR__DESCRIPTION = NAMED_ELEMENT__DESCRIPTION;
 
 	/**
+	 * The feature id for the '<em><b>Time Unit</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__TIME_UNIT = NAMED_ELEMENT_FEATURE_COUNT + 0;
+
+	/**
 	 * The feature id for the '<em><b>Sched Policy</b></em>' attribute.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int PROCESSOR__SCHED_POLICY = NAMED_ELEMENT_FEATURE_COUNT + 0;
+	int PROCESSOR__SCHED_POLICY = NAMED_ELEMENT_FEATURE_COUNT + 1;
 
 	/**
 	 * The feature id for the '<em><b>Core</b></em>' attribute.
@@ -3329,7 +3338,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int PROCESSOR__CORE = NAMED_ELEMENT_FEATURE_COUNT + 1;
+	int PROCESSOR__CORE = NAMED_ELEMENT_FEATURE_COUNT + 2;
 
 	/**
 	 * The feature id for the '<em><b>Modules</b></em>' reference list.
@@ -3338,7 +3347,25 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int PROCESSOR__MODULES = NAMED_ELEMENT_FEATURE_COUNT + 2;
+	int PROCESSOR__MODULES = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
+	 * The feature id for the '<em><b>Host</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__HOST = NAMED_ELEMENT_FEATURE_COUNT + 4;
+
+	/**
+	 * The feature id for the '<em><b>Link Latency</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR__LINK_LATENCY = NAMED_ELEMENT_FEATURE_COUNT + 5;
 
 	/**
 	 * The number of structural features of the '<em>Processor</em>' class.
@@ -3347,7 +3374,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int PROCESSOR_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+	int PROCESSOR_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 6;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -3359,13 +3386,49 @@ public interface RsamlPackage extends EPackage {
 	int PROCESSOR___NORMALIZED_NAME = NAMED_ELEMENT___NORMALIZED_NAME;
 
 	/**
+	 * The operation id for the '<em>To Milliseconds</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR___TO_MILLISECONDS__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 0;
+
+	/**
+	 * The operation id for the '<em>Compare Time</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
+	 * The operation id for the '<em>Representable</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR___REPRESENTABLE__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 2;
+
+	/**
+	 * The operation id for the '<em>Representable Period</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
+
+	/**
 	 * The number of operations of the '<em>Processor</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int PROCESSOR_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 0;
+	int PROCESSOR_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.LatencyRequirementImpl <em>Latency Requirement</em>}' class.
@@ -4902,6 +4965,28 @@ public interface RsamlPackage extends EPackage {
 	EReference getProcessor_Modules();
 
 	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Processor#getHost <em>Host</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Host</em>'.
+	 * @see org.rsaml.model.Processor#getHost()
+	 * @see #getProcessor()
+	 * @generated
+	 */
+	EAttribute getProcessor_Host();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Processor#getLinkLatency <em>Link Latency</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Link Latency</em>'.
+	 * @see org.rsaml.model.Processor#getLinkLatency()
+	 * @see #getProcessor()
+	 * @generated
+	 */
+	EAttribute getProcessor_LinkLatency();
+
+	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.LatencyRequirement <em>Latency Requirement</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -6100,6 +6185,22 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EReference PROCESSOR__MODULES = eINSTANCE.getProcessor_Modules();
+
+		/**
+		 * The meta object literal for the '<em><b>Host</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute PROCESSOR__HOST = eINSTANCE.getProcessor_Host();
+
+		/**
+		 * The meta object literal for the '<em><b>Link Latency</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute PROCESSOR__LINK_LATENCY = eINSTANCE.getProcessor_LinkLatency();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.LatencyRequirementImpl <em>Latency Requirement</em>}' class.

@@ -18,6 +18,7 @@ import org.rsaml.analysis.PathBound;
 import org.rsaml.analysis.ProcessorTiming;
 import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.TaskSource;
+import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.Verdict;
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.plan.ExecutionPlan;
@@ -251,11 +252,12 @@ public final class Latencies {
             final List<Step> steps;
             final int trailBefore;
             final String unboundedBefore;
-            final boolean hop;
+            /** How many hops the frame added to the path (its stage's, and a link's crossed to reach it). */
+            final int hop;
             final boolean root;
             int next;
 
-            Frame(PlannedModule module, long period, List<Step> steps, int trailBefore, String unboundedBefore, boolean hop, boolean root) {
+            Frame(PlannedModule module, long period, List<Step> steps, int trailBefore, String unboundedBefore, int hop, boolean root) {
                 this.module = module;
                 this.period = period;
                 this.steps = steps;
@@ -274,7 +276,7 @@ public final class Latencies {
          * length, no recursion).
          */
         private void enter(PlannedModule m, Stage st) {
-            push(m, st, trail.size());
+            push(m, st, trail.size(), 0);
             search();
         }
 
@@ -283,14 +285,18 @@ public final class Latencies {
             visited.add(m);
             int before = trail.size();
             trail.add(m.module());
-            stack.push(new Frame(m, stages.get(m).periodNs(), steps(m, only), before, pathUnbounded, false, true));
+            stack.push(new Frame(m, stages.get(m).periodNs(), steps(m, only), before, pathUnbounded, 0, true));
             search();
         }
 
-        /** Enters m (when the path may: not yet on it, not past the limit), recording when it drives the actuator. */
-        private void push(PlannedModule m, Stage st, int trailBefore) {
+        /**
+         * Enters m (when the path may: not yet on it, not past the limit), recording when it drives the
+         * actuator; link: the hops of the link crossed to reach m (0 or 1, already on the path).
+         */
+        private void push(PlannedModule m, Stage st, int trailBefore, int link) {
             if (paths > MAX_PATHS || !visited.add(m)) {
                 trail.subList(trailBefore, trail.size()).clear();
+                hops.subList(hops.size() - link, hops.size()).clear();
                 return;
             }
             String before = pathUnbounded;
@@ -306,7 +312,7 @@ public final class Latencies {
             if (actuator != null && m.module().getActuators().contains(actuator)) {
                 record(st.periodNs());
             }
-            stack.push(new Frame(m, st.periodNs(), steps(m, null), trailBefore, before, st.hop() != null, false));
+            stack.push(new Frame(m, st.periodNs(), steps(m, null), trailBefore, before, link + (st.hop() != null ? 1 : 0), false));
         }
 
         private void search() {
@@ -314,9 +320,7 @@ public final class Latencies {
                 Frame f = stack.peek();
                 if (f.next == f.steps.size() || paths > MAX_PATHS) {
                     stack.pop();
-                    if (f.hop) {
-                        hops.remove(hops.size() - 1);
-                    }
+                    hops.subList(hops.size() - f.hop, hops.size()).clear();
                     pathUnbounded = f.unboundedBefore;
                     visited.remove(f.module);
                     trail.subList(f.trailBefore, trail.size()).clear();
@@ -325,22 +329,29 @@ public final class Latencies {
                 Step step = f.steps.get(f.next++);
                 int before = trail.size();
                 trail.addAll(step.adds());
+                PlannedModule next = step.next();
+                Hop crossing = next == null ? null : crossing(f.module, next);
+                int link = crossing == null ? 0 : 1;
+                if (crossing != null) {
+                    hops.add(crossing);
+                }
                 if (step.arrives()) {
                     record(f.period);
                 }
-                PlannedModule next = step.next();
                 if (next == null || visited.contains(next) || !reaching.contains(next)) {
                     trail.subList(before, trail.size()).clear();
+                    hops.subList(hops.size() - link, hops.size()).clear();
                 } else if (step.inhibitor() == null) {
-                    push(next, stages.get(next), before);
+                    push(next, stages.get(next), before, link);
                 } else if (paths <= MAX_PATHS) {
-                    LinkPlan link = step.inhibitor();
+                    LinkPlan inhibitor = step.inhibitor();
                     visited.add(next);
-                    hops.add(new Hop(link.qualifiedName(), next.module(), "inhibits " + link.target().qualifiedName()
+                    hops.add(new Hop(inhibitor.qualifiedName(), next.module(), "inhibits " + inhibitor.target().qualifiedName()
                             + " from the trigger's message on, at once", 0, 0));
-                    stack.push(new Frame(next, 0, steps(next, link.target()), before, pathUnbounded, true, false));
+                    stack.push(new Frame(next, 0, steps(next, inhibitor.target()), before, pathUnbounded, link + 1, false));
                 } else {
                     trail.subList(before, trail.size()).clear();
+                    hops.subList(hops.size() - link, hops.size()).clear();
                 }
             }
         }
@@ -372,6 +383,38 @@ public final class Latencies {
                 }
             }
             return steps;
+        }
+
+        /**
+         * The link a message from module a to module b crosses when their processors are on different
+         * hosts: the link latencies of both processors (0 each when not given), as a hop of its own;
+         * null on one host or when neither processor gives a latency.
+         */
+        private static Hop crossing(PlannedModule a, PlannedModule b) {
+            String from = TimingAnalysis.host(a.processor());
+            String to = TimingAnalysis.host(b.processor());
+            if (from.equals(to)) {
+                return null;
+            }
+            long ns = Math.addExact(linkNs(a.processor()), linkNs(b.processor()));
+            if (ns == 0) {
+                return null;
+            }
+            return new Hop("link " + hostName(from) + " -> " + hostName(to), b.module(), "crosses the links between host "
+                    + hostName(from) + " and host " + hostName(to) + " (the link latencies of " + processorName(a.processor())
+                    + " and " + processorName(b.processor()) + ")", ns, 0);
+        }
+
+        private static long linkNs(org.rsaml.model.Processor p) {
+            return p == null ? 0 : PlanTimes.nanos(p.getLinkLatency(), p);
+        }
+
+        private static String hostName(String host) {
+            return host.isEmpty() ? "main" : "'" + host + "'";
+        }
+
+        private static String processorName(org.rsaml.model.Processor p) {
+            return p == null ? "the default processor" : "processor " + RsamlLabels.name(p);
         }
 
         /** The modules with a path of flows to the target (the target's own module included). */

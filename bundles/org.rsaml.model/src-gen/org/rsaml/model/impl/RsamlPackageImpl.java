@@ -1604,6 +1604,26 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EAttribute getProcessor_Host() {
+		return (EAttribute)processorEClass.getEStructuralFeatures().get(3);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EAttribute getProcessor_LinkLatency() {
+		return (EAttribute)processorEClass.getEStructuralFeatures().get(4);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EClass getLatencyRequirement() {
 		return latencyRequirementEClass;
 	}
@@ -1916,6 +1936,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEAttribute(processorEClass, PROCESSOR__SCHED_POLICY);
 		createEAttribute(processorEClass, PROCESSOR__CORE);
 		createEReference(processorEClass, PROCESSOR__MODULES);
+		createEAttribute(processorEClass, PROCESSOR__HOST);
+		createEAttribute(processorEClass, PROCESSOR__LINK_LATENCY);
 
 		latencyRequirementEClass = createEClass(LATENCY_REQUIREMENT);
 		createEReference(latencyRequirementEClass, LATENCY_REQUIREMENT__SOURCE);
@@ -1992,6 +2014,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		databaseEClass.getESuperTypes().add(this.getNamedElement());
 		knowledgeEClass.getESuperTypes().add(this.getNamedElement());
 		processorEClass.getESuperTypes().add(this.getNamedElement());
+		processorEClass.getESuperTypes().add(this.getTimeScaled());
 		latencyRequirementEClass.getESuperTypes().add(this.getNamedElement());
 		latencyRequirementEClass.getESuperTypes().add(this.getTimeScaled());
 
@@ -2177,6 +2200,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEAttribute(getProcessor_SchedPolicy(), this.getSchedulingPolicy(), "schedPolicy", null, 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getProcessor_Core(), ecorePackage.getEInt(), "core", "-1", 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getProcessor_Modules(), this.getModule(), null, "modules", null, 0, -1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getProcessor_Host(), ecorePackage.getEString(), "host", null, 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getProcessor_LinkLatency(), ecorePackage.getEDouble(), "linkLatency", null, 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
 		initEClass(latencyRequirementEClass, LatencyRequirement.class, "LatencyRequirement", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getLatencyRequirement_Source(), this.getNamedElement(), null, "source", null, 1, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);

@@ -311,6 +311,7 @@ public class RsamlSwitch<T> extends Switch<T> {
 				Processor processor = (Processor)theEObject;
 				T result = caseProcessor(processor);
 				if (result == null) result = caseNamedElement(processor);
+				if (result == null) result = caseTimeScaled(processor);
 				if (result == null) result = defaultCase(theEObject);
 				return result;
 			}

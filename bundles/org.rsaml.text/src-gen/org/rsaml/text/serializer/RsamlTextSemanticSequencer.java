@@ -105,7 +105,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 				sequence_Described_Plan(context, (Plan) semanticObject); 
 				return; 
 			case RsamlPackage.PROCESSOR:
-				sequence_Described_Processor(context, (Processor) semanticObject); 
+				sequence_Described_Processor_Unit(context, (Processor) semanticObject); 
 				return; 
 			case RsamlPackage.RT_ACTION:
 				sequence_Action_Described_RealTime_Unit(context, (RTAction) semanticObject); 
@@ -491,11 +491,15 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 * Constraint:
 	 *     (
 	 *         name=Name? 
-	 *         ((description=STRING | schedPolicy=SchedulingPolicy | core=Integer)? (modules+=[Module|QualifiedName] modules+=[Module|QualifiedName]*)?)+
+	 *         (
+	 *             (description=STRING | timeUnit=TimeUnit | schedPolicy=SchedulingPolicy | core=Integer | host=STRING)? 
+	 *             (modules+=[Module|QualifiedName] modules+=[Module|QualifiedName]*)? 
+	 *             (linkLatency=Real timeUnit=TimeUnit)?
+	 *         )+
 	 *     )
 	 * </pre>
 	 */
-	protected void sequence_Described_Processor(ISerializationContext context, Processor semanticObject) {
+	protected void sequence_Described_Processor_Unit(ISerializationContext context, Processor semanticObject) {
 		genericSequencer.createSequence(context, semanticObject);
 	}
 	

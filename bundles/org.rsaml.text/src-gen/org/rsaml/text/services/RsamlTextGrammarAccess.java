@@ -2330,15 +2330,26 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Assignment cCoreAssignment_4_2_1 = (Assignment)cGroup_4_2.eContents().get(1);
 		private final RuleCall cCoreIntegerParserRuleCall_4_2_1_0 = (RuleCall)cCoreAssignment_4_2_1.eContents().get(0);
 		private final Group cGroup_4_3 = (Group)cAlternatives_4.eContents().get(3);
-		private final Keyword cModulesKeyword_4_3_0 = (Keyword)cGroup_4_3.eContents().get(0);
-		private final Assignment cModulesAssignment_4_3_1 = (Assignment)cGroup_4_3.eContents().get(1);
-		private final CrossReference cModulesModuleCrossReference_4_3_1_0 = (CrossReference)cModulesAssignment_4_3_1.eContents().get(0);
-		private final RuleCall cModulesModuleQualifiedNameParserRuleCall_4_3_1_0_1 = (RuleCall)cModulesModuleCrossReference_4_3_1_0.eContents().get(1);
-		private final Group cGroup_4_3_2 = (Group)cGroup_4_3.eContents().get(2);
-		private final Keyword cCommaKeyword_4_3_2_0 = (Keyword)cGroup_4_3_2.eContents().get(0);
-		private final Assignment cModulesAssignment_4_3_2_1 = (Assignment)cGroup_4_3_2.eContents().get(1);
-		private final CrossReference cModulesModuleCrossReference_4_3_2_1_0 = (CrossReference)cModulesAssignment_4_3_2_1.eContents().get(0);
-		private final RuleCall cModulesModuleQualifiedNameParserRuleCall_4_3_2_1_0_1 = (RuleCall)cModulesModuleCrossReference_4_3_2_1_0.eContents().get(1);
+		private final Keyword cHostKeyword_4_3_0 = (Keyword)cGroup_4_3.eContents().get(0);
+		private final Assignment cHostAssignment_4_3_1 = (Assignment)cGroup_4_3.eContents().get(1);
+		private final RuleCall cHostSTRINGTerminalRuleCall_4_3_1_0 = (RuleCall)cHostAssignment_4_3_1.eContents().get(0);
+		private final Group cGroup_4_4 = (Group)cAlternatives_4.eContents().get(4);
+		private final Keyword cLinkLatencyKeyword_4_4_0 = (Keyword)cGroup_4_4.eContents().get(0);
+		private final Assignment cLinkLatencyAssignment_4_4_1 = (Assignment)cGroup_4_4.eContents().get(1);
+		private final RuleCall cLinkLatencyRealParserRuleCall_4_4_1_0 = (RuleCall)cLinkLatencyAssignment_4_4_1.eContents().get(0);
+		private final Assignment cTimeUnitAssignment_4_4_2 = (Assignment)cGroup_4_4.eContents().get(2);
+		private final RuleCall cTimeUnitTimeUnitEnumRuleCall_4_4_2_0 = (RuleCall)cTimeUnitAssignment_4_4_2.eContents().get(0);
+		private final RuleCall cUnitParserRuleCall_4_5 = (RuleCall)cAlternatives_4.eContents().get(5);
+		private final Group cGroup_4_6 = (Group)cAlternatives_4.eContents().get(6);
+		private final Keyword cModulesKeyword_4_6_0 = (Keyword)cGroup_4_6.eContents().get(0);
+		private final Assignment cModulesAssignment_4_6_1 = (Assignment)cGroup_4_6.eContents().get(1);
+		private final CrossReference cModulesModuleCrossReference_4_6_1_0 = (CrossReference)cModulesAssignment_4_6_1.eContents().get(0);
+		private final RuleCall cModulesModuleQualifiedNameParserRuleCall_4_6_1_0_1 = (RuleCall)cModulesModuleCrossReference_4_6_1_0.eContents().get(1);
+		private final Group cGroup_4_6_2 = (Group)cGroup_4_6.eContents().get(2);
+		private final Keyword cCommaKeyword_4_6_2_0 = (Keyword)cGroup_4_6_2.eContents().get(0);
+		private final Assignment cModulesAssignment_4_6_2_1 = (Assignment)cGroup_4_6_2.eContents().get(1);
+		private final CrossReference cModulesModuleCrossReference_4_6_2_1_0 = (CrossReference)cModulesAssignment_4_6_2_1.eContents().get(0);
+		private final RuleCall cModulesModuleQualifiedNameParserRuleCall_4_6_2_1_0_1 = (RuleCall)cModulesModuleCrossReference_4_6_2_1_0.eContents().get(1);
 		private final Keyword cRightCurlyBracketKeyword_5 = (Keyword)cGroup.eContents().get(5);
 		
 		//Processor returns rsaml::Processor:
@@ -2346,6 +2357,9 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    ( Described
 		//    | 'schedPolicy' schedPolicy=SchedulingPolicy
 		//    | 'core' core=Integer
+		//    | 'host' host=STRING
+		//    | 'linkLatency' linkLatency=Real timeUnit=TimeUnit
+		//    | Unit
 		//    | 'modules' modules+=[rsaml::Module|QualifiedName] (',' modules+=[rsaml::Module|QualifiedName])*
 		//    )* '}';
 		@Override public ParserRule getRule() { return rule; }
@@ -2354,6 +2368,9 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'schedPolicy' schedPolicy=SchedulingPolicy
 		//| 'core' core=Integer
+		//| 'host' host=STRING
+		//| 'linkLatency' linkLatency=Real timeUnit=TimeUnit
+		//| Unit
 		//| 'modules' modules+=[rsaml::Module|QualifiedName] (',' modules+=[rsaml::Module|QualifiedName])*
 		//)* '}'
 		public Group getGroup() { return cGroup; }
@@ -2376,6 +2393,9 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'schedPolicy' schedPolicy=SchedulingPolicy
 		//| 'core' core=Integer
+		//| 'host' host=STRING
+		//| 'linkLatency' linkLatency=Real timeUnit=TimeUnit
+		//| Unit
 		//| 'modules' modules+=[rsaml::Module|QualifiedName] (',' modules+=[rsaml::Module|QualifiedName])*
 		//)*
 		public Alternatives getAlternatives_4() { return cAlternatives_4; }
@@ -2407,35 +2427,68 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//Integer
 		public RuleCall getCoreIntegerParserRuleCall_4_2_1_0() { return cCoreIntegerParserRuleCall_4_2_1_0; }
 		
-		//'modules' modules+=[rsaml::Module|QualifiedName] (',' modules+=[rsaml::Module|QualifiedName])*
+		//'host' host=STRING
 		public Group getGroup_4_3() { return cGroup_4_3; }
 		
+		//'host'
+		public Keyword getHostKeyword_4_3_0() { return cHostKeyword_4_3_0; }
+		
+		//host=STRING
+		public Assignment getHostAssignment_4_3_1() { return cHostAssignment_4_3_1; }
+		
+		//STRING
+		public RuleCall getHostSTRINGTerminalRuleCall_4_3_1_0() { return cHostSTRINGTerminalRuleCall_4_3_1_0; }
+		
+		//'linkLatency' linkLatency=Real timeUnit=TimeUnit
+		public Group getGroup_4_4() { return cGroup_4_4; }
+		
+		//'linkLatency'
+		public Keyword getLinkLatencyKeyword_4_4_0() { return cLinkLatencyKeyword_4_4_0; }
+		
+		//linkLatency=Real
+		public Assignment getLinkLatencyAssignment_4_4_1() { return cLinkLatencyAssignment_4_4_1; }
+		
+		//Real
+		public RuleCall getLinkLatencyRealParserRuleCall_4_4_1_0() { return cLinkLatencyRealParserRuleCall_4_4_1_0; }
+		
+		//timeUnit=TimeUnit
+		public Assignment getTimeUnitAssignment_4_4_2() { return cTimeUnitAssignment_4_4_2; }
+		
+		//TimeUnit
+		public RuleCall getTimeUnitTimeUnitEnumRuleCall_4_4_2_0() { return cTimeUnitTimeUnitEnumRuleCall_4_4_2_0; }
+		
+		//Unit
+		public RuleCall getUnitParserRuleCall_4_5() { return cUnitParserRuleCall_4_5; }
+		
+		//'modules' modules+=[rsaml::Module|QualifiedName] (',' modules+=[rsaml::Module|QualifiedName])*
+		public Group getGroup_4_6() { return cGroup_4_6; }
+		
 		//'modules'
-		public Keyword getModulesKeyword_4_3_0() { return cModulesKeyword_4_3_0; }
+		public Keyword getModulesKeyword_4_6_0() { return cModulesKeyword_4_6_0; }
 		
 		//modules+=[rsaml::Module|QualifiedName]
-		public Assignment getModulesAssignment_4_3_1() { return cModulesAssignment_4_3_1; }
+		public Assignment getModulesAssignment_4_6_1() { return cModulesAssignment_4_6_1; }
 		
 		//[rsaml::Module|QualifiedName]
-		public CrossReference getModulesModuleCrossReference_4_3_1_0() { return cModulesModuleCrossReference_4_3_1_0; }
+		public CrossReference getModulesModuleCrossReference_4_6_1_0() { return cModulesModuleCrossReference_4_6_1_0; }
 		
 		//QualifiedName
-		public RuleCall getModulesModuleQualifiedNameParserRuleCall_4_3_1_0_1() { return cModulesModuleQualifiedNameParserRuleCall_4_3_1_0_1; }
+		public RuleCall getModulesModuleQualifiedNameParserRuleCall_4_6_1_0_1() { return cModulesModuleQualifiedNameParserRuleCall_4_6_1_0_1; }
 		
 		//(',' modules+=[rsaml::Module|QualifiedName])*
-		public Group getGroup_4_3_2() { return cGroup_4_3_2; }
+		public Group getGroup_4_6_2() { return cGroup_4_6_2; }
 		
 		//','
-		public Keyword getCommaKeyword_4_3_2_0() { return cCommaKeyword_4_3_2_0; }
+		public Keyword getCommaKeyword_4_6_2_0() { return cCommaKeyword_4_6_2_0; }
 		
 		//modules+=[rsaml::Module|QualifiedName]
-		public Assignment getModulesAssignment_4_3_2_1() { return cModulesAssignment_4_3_2_1; }
+		public Assignment getModulesAssignment_4_6_2_1() { return cModulesAssignment_4_6_2_1; }
 		
 		//[rsaml::Module|QualifiedName]
-		public CrossReference getModulesModuleCrossReference_4_3_2_1_0() { return cModulesModuleCrossReference_4_3_2_1_0; }
+		public CrossReference getModulesModuleCrossReference_4_6_2_1_0() { return cModulesModuleCrossReference_4_6_2_1_0; }
 		
 		//QualifiedName
-		public RuleCall getModulesModuleQualifiedNameParserRuleCall_4_3_2_1_0_1() { return cModulesModuleQualifiedNameParserRuleCall_4_3_2_1_0_1; }
+		public RuleCall getModulesModuleQualifiedNameParserRuleCall_4_6_2_1_0_1() { return cModulesModuleQualifiedNameParserRuleCall_4_6_2_1_0_1; }
 		
 		//'}'
 		public Keyword getRightCurlyBracketKeyword_5() { return cRightCurlyBracketKeyword_5; }
@@ -2754,38 +2807,40 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cToKeyword_58 = (Keyword)cAlternatives.eContents().get(58);
 		private final Keyword cViaKeyword_59 = (Keyword)cAlternatives.eContents().get(59);
 		private final Keyword cMaxLatencyKeyword_60 = (Keyword)cAlternatives.eContents().get(60);
-		private final Keyword cCentralizedKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
-		private final Keyword cHierarchicalKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
-		private final Keyword cBehavioralKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
-		private final Keyword cHybridKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
-		private final Keyword cOtherKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
-		private final Keyword cSimpleKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
-		private final Keyword cRealTimeKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
-		private final Keyword cPeriodicKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
-		private final Keyword cSporadicKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
-		private final Keyword cAperiodicKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
-		private final Keyword cNsKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
-		private final Keyword cUsKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
-		private final Keyword cMsKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
-		private final Keyword cSKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
-		private final Keyword cSynchronousKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
-		private final Keyword cAsynchronousKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
-		private final Keyword cFIFOKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
-		private final Keyword cSJFKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
-		private final Keyword cRRKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
-		private final Keyword cRMKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
-		private final Keyword cDMKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
-		private final Keyword cEDFKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
-		private final Keyword cLLFKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
-		private final Keyword cOTHERKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
-		private final Keyword cNumericKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
-		private final Keyword cAlphanumericKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
-		private final Keyword cBooleanKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
-		private final Keyword cStructuredKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
-		private final Keyword cReactionTimeKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
-		private final Keyword cDataAgeKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
-		private final Keyword cNaNKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
-		private final Keyword cInfinityKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
+		private final Keyword cHostKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
+		private final Keyword cLinkLatencyKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
+		private final Keyword cCentralizedKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
+		private final Keyword cHierarchicalKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
+		private final Keyword cBehavioralKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
+		private final Keyword cHybridKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
+		private final Keyword cOtherKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
+		private final Keyword cSimpleKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
+		private final Keyword cRealTimeKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
+		private final Keyword cPeriodicKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
+		private final Keyword cSporadicKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
+		private final Keyword cAperiodicKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
+		private final Keyword cNsKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
+		private final Keyword cUsKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
+		private final Keyword cMsKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
+		private final Keyword cSKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
+		private final Keyword cSynchronousKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
+		private final Keyword cAsynchronousKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
+		private final Keyword cFIFOKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
+		private final Keyword cSJFKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
+		private final Keyword cRRKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
+		private final Keyword cRMKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
+		private final Keyword cDMKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
+		private final Keyword cEDFKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
+		private final Keyword cLLFKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
+		private final Keyword cOTHERKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
+		private final Keyword cNumericKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
+		private final Keyword cAlphanumericKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
+		private final Keyword cBooleanKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
+		private final Keyword cStructuredKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
+		private final Keyword cReactionTimeKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
+		private final Keyword cDataAgeKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
+		private final Keyword cNaNKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
+		private final Keyword cInfinityKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
 		
 		//Keyword:
 		//    'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2795,7 +2850,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//    | 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-		//    | 'maxLatency'
+		//    | 'maxLatency' | 'host' | 'linkLatency'
 		//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 		//    | 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
@@ -2809,7 +2864,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//| 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//| 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-		//| 'maxLatency'
+		//| 'maxLatency' | 'host' | 'linkLatency'
 		//| 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//| 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 		//| 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
@@ -2999,101 +3054,107 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//'maxLatency'
 		public Keyword getMaxLatencyKeyword_60() { return cMaxLatencyKeyword_60; }
 		
+		//'host'
+		public Keyword getHostKeyword_61() { return cHostKeyword_61; }
+		
+		//'linkLatency'
+		public Keyword getLinkLatencyKeyword_62() { return cLinkLatencyKeyword_62; }
+		
 		//'centralized'
-		public Keyword getCentralizedKeyword_61() { return cCentralizedKeyword_61; }
+		public Keyword getCentralizedKeyword_63() { return cCentralizedKeyword_63; }
 		
 		//'hierarchical'
-		public Keyword getHierarchicalKeyword_62() { return cHierarchicalKeyword_62; }
+		public Keyword getHierarchicalKeyword_64() { return cHierarchicalKeyword_64; }
 		
 		//'behavioral'
-		public Keyword getBehavioralKeyword_63() { return cBehavioralKeyword_63; }
+		public Keyword getBehavioralKeyword_65() { return cBehavioralKeyword_65; }
 		
 		//'hybrid'
-		public Keyword getHybridKeyword_64() { return cHybridKeyword_64; }
+		public Keyword getHybridKeyword_66() { return cHybridKeyword_66; }
 		
 		//'other'
-		public Keyword getOtherKeyword_65() { return cOtherKeyword_65; }
+		public Keyword getOtherKeyword_67() { return cOtherKeyword_67; }
 		
 		//'simple'
-		public Keyword getSimpleKeyword_66() { return cSimpleKeyword_66; }
+		public Keyword getSimpleKeyword_68() { return cSimpleKeyword_68; }
 		
 		//'realTime'
-		public Keyword getRealTimeKeyword_67() { return cRealTimeKeyword_67; }
+		public Keyword getRealTimeKeyword_69() { return cRealTimeKeyword_69; }
 		
 		//'periodic'
-		public Keyword getPeriodicKeyword_68() { return cPeriodicKeyword_68; }
+		public Keyword getPeriodicKeyword_70() { return cPeriodicKeyword_70; }
 		
 		//'sporadic'
-		public Keyword getSporadicKeyword_69() { return cSporadicKeyword_69; }
+		public Keyword getSporadicKeyword_71() { return cSporadicKeyword_71; }
 		
 		//'aperiodic'
-		public Keyword getAperiodicKeyword_70() { return cAperiodicKeyword_70; }
+		public Keyword getAperiodicKeyword_72() { return cAperiodicKeyword_72; }
 		
 		//'ns'
-		public Keyword getNsKeyword_71() { return cNsKeyword_71; }
+		public Keyword getNsKeyword_73() { return cNsKeyword_73; }
 		
 		//'us'
-		public Keyword getUsKeyword_72() { return cUsKeyword_72; }
+		public Keyword getUsKeyword_74() { return cUsKeyword_74; }
 		
 		//'ms'
-		public Keyword getMsKeyword_73() { return cMsKeyword_73; }
+		public Keyword getMsKeyword_75() { return cMsKeyword_75; }
 		
 		//'s'
-		public Keyword getSKeyword_74() { return cSKeyword_74; }
+		public Keyword getSKeyword_76() { return cSKeyword_76; }
 		
 		//'synchronous'
-		public Keyword getSynchronousKeyword_75() { return cSynchronousKeyword_75; }
+		public Keyword getSynchronousKeyword_77() { return cSynchronousKeyword_77; }
 		
 		//'asynchronous'
-		public Keyword getAsynchronousKeyword_76() { return cAsynchronousKeyword_76; }
+		public Keyword getAsynchronousKeyword_78() { return cAsynchronousKeyword_78; }
 		
 		//'FIFO'
-		public Keyword getFIFOKeyword_77() { return cFIFOKeyword_77; }
+		public Keyword getFIFOKeyword_79() { return cFIFOKeyword_79; }
 		
 		//'SJF'
-		public Keyword getSJFKeyword_78() { return cSJFKeyword_78; }
+		public Keyword getSJFKeyword_80() { return cSJFKeyword_80; }
 		
 		//'RR'
-		public Keyword getRRKeyword_79() { return cRRKeyword_79; }
+		public Keyword getRRKeyword_81() { return cRRKeyword_81; }
 		
 		//'RM'
-		public Keyword getRMKeyword_80() { return cRMKeyword_80; }
+		public Keyword getRMKeyword_82() { return cRMKeyword_82; }
 		
 		//'DM'
-		public Keyword getDMKeyword_81() { return cDMKeyword_81; }
+		public Keyword getDMKeyword_83() { return cDMKeyword_83; }
 		
 		//'EDF'
-		public Keyword getEDFKeyword_82() { return cEDFKeyword_82; }
+		public Keyword getEDFKeyword_84() { return cEDFKeyword_84; }
 		
 		//'LLF'
-		public Keyword getLLFKeyword_83() { return cLLFKeyword_83; }
+		public Keyword getLLFKeyword_85() { return cLLFKeyword_85; }
 		
 		//'OTHER'
-		public Keyword getOTHERKeyword_84() { return cOTHERKeyword_84; }
+		public Keyword getOTHERKeyword_86() { return cOTHERKeyword_86; }
 		
 		//'numeric'
-		public Keyword getNumericKeyword_85() { return cNumericKeyword_85; }
+		public Keyword getNumericKeyword_87() { return cNumericKeyword_87; }
 		
 		//'alphanumeric'
-		public Keyword getAlphanumericKeyword_86() { return cAlphanumericKeyword_86; }
+		public Keyword getAlphanumericKeyword_88() { return cAlphanumericKeyword_88; }
 		
 		//'boolean'
-		public Keyword getBooleanKeyword_87() { return cBooleanKeyword_87; }
+		public Keyword getBooleanKeyword_89() { return cBooleanKeyword_89; }
 		
 		//'structured'
-		public Keyword getStructuredKeyword_88() { return cStructuredKeyword_88; }
+		public Keyword getStructuredKeyword_90() { return cStructuredKeyword_90; }
 		
 		//'reactionTime'
-		public Keyword getReactionTimeKeyword_89() { return cReactionTimeKeyword_89; }
+		public Keyword getReactionTimeKeyword_91() { return cReactionTimeKeyword_91; }
 		
 		//'dataAge'
-		public Keyword getDataAgeKeyword_90() { return cDataAgeKeyword_90; }
+		public Keyword getDataAgeKeyword_92() { return cDataAgeKeyword_92; }
 		
 		//'NaN'
-		public Keyword getNaNKeyword_91() { return cNaNKeyword_91; }
+		public Keyword getNaNKeyword_93() { return cNaNKeyword_93; }
 		
 		//'Infinity'
-		public Keyword getInfinityKeyword_92() { return cInfinityKeyword_92; }
+		public Keyword getInfinityKeyword_94() { return cInfinityKeyword_94; }
 	}
 	public class RealElements extends AbstractParserRuleElementFinder {
 		private final ParserRule rule = (ParserRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.Real");
@@ -3891,6 +3952,9 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    ( Described
 	//    | 'schedPolicy' schedPolicy=SchedulingPolicy
 	//    | 'core' core=Integer
+	//    | 'host' host=STRING
+	//    | 'linkLatency' linkLatency=Real timeUnit=TimeUnit
+	//    | Unit
 	//    | 'modules' modules+=[rsaml::Module|QualifiedName] (',' modules+=[rsaml::Module|QualifiedName])*
 	//    )* '}';
 	public ProcessorElements getProcessorAccess() {
@@ -3949,7 +4013,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 	//    | 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 	//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-	//    | 'maxLatency'
+	//    | 'maxLatency' | 'host' | 'linkLatency'
 	//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 	//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 	//    | 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'

@@ -270,6 +270,9 @@ public class RsamlTextWriter {
         open("processor", p);
         attribute(p, Literals.PROCESSOR__SCHED_POLICY, "schedPolicy", () -> p.getSchedPolicy().getLiteral());
         attribute(p, Literals.PROCESSOR__CORE, "core", () -> Integer.toString(p.getCore()));
+        attribute(p, Literals.PROCESSOR__HOST, "host", () -> RsamlTextSyntax.quote(p.getHost()));
+        boolean timed = time(p, Literals.PROCESSOR__LINK_LATENCY, "linkLatency", p.getLinkLatency());
+        unitIfUnwritten(p, timed);
         references("modules", p.getModules(), Literals.MODULE);
         close();
     }

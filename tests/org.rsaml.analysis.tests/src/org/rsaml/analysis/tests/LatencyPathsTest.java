@@ -7,9 +7,12 @@ package org.rsaml.analysis.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.Hop;
 import org.rsaml.analysis.LatencyResult;
@@ -17,6 +20,7 @@ import org.rsaml.analysis.PathBound;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
+import org.rsaml.validation.ModelLoader;
 
 /**
  * Latency requirements that name their path (via), paths through inhibitors, and every path's bound:
@@ -72,5 +76,33 @@ class LatencyPathsTest {
         assertEquals(Verdict.MISSES, none.verdict(), none.explanation());
         assertEquals("no path through deliberative/planner, then reactive/detector leads from sensor 'laser' to actuator 'wheels':"
                 + " the data never arrives that way", none.explanation());
+    }
+
+    /**
+     * The drive on another host (a board reached through a 2 ms link): every path into it crosses the
+     * link and takes 2 ms more, shown as a stage of its own; and its core 0 is not the main host's core
+     * 0, so the two processors that claim core 0 share nothing.
+     */
+    @Test
+    void aProcessorOnAnotherHostAddsItsLinkToEveryPathThatCrossesIt(@TempDir Path tmp) throws Exception {
+        Path root = Path.of(System.getProperty("rsaml.root", "../.."));
+        String text = Files.readString(root.resolve("tests/org.rsaml.analysis.tests/resources/latency-named-paths.rsaml"));
+        String drive = "<processors name=\"core0\" core=\"0\"";
+        String reactive = "<processors name=\"core1\" core=\"1\"";
+        assertTrue(text.contains(drive) && text.contains(reactive));
+        Path model = tmp.resolve("latency-on-two-hosts.rsaml");
+        Files.writeString(model, text.replace(drive, "<processors name=\"board\" core=\"0\" host=\"base-board\" linkLatency=\"2000.0\" timeUnit=\"us\"")
+                .replace(reactive, "<processors name=\"core1\" core=\"0\""));
+        ArchitectureTiming timing = TimingAnalysis.analyse(ModelLoader.load(model, model.getFileName().toString()).architecture());
+        assertTrue(timing.processors().stream().allMatch(p -> p.result().verdict() == Verdict.MEETS),
+                "core 0 of host base-board and core 0 of the main host are different CPUs: " + timing.processors());
+        LatencyResult all = requirement(timing, "scanToWheels");
+        assertEquals(List.of(1229 * MS, 134 * MS, 35 * MS), all.pathBounds().stream().map(PathBound::reactionNs).toList(),
+                "each path 2 ms longer: " + all.pathBounds());
+        assertEquals(List.of("reactive/detector", "reactive/avoid", "link main -> 'base-board'", "control/drive"), stages(all.pathBounds().get(1)),
+                "the link is a stage of its own, between the hosts");
+        Hop link = all.pathBounds().get(1).hops().get(2);
+        assertEquals(2 * MS, link.totalNs(), link.toString());
+        assertTrue(link.activation().contains("the link latencies of processor core1 and processor board"), link.activation());
     }
 }

@@ -162,6 +162,9 @@ final class RandomModels {
                 p.setSchedPolicy(org.rsaml.model.SchedulingPolicy.get(random.nextInt(8)));
             }
             maybe(() -> p.setCore(integer()));
+            maybe(() -> p.setHost(text()));
+            timeScaled(p);
+            maybe(() -> p.setLinkLatency(number()));
             pick(modules, 3).forEach(m -> p.getModules().add((Module) m));
         }
         for (int i = count(2); i > 0; i--) {

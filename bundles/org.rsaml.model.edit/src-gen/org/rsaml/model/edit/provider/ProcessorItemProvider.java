@@ -47,11 +47,36 @@ public class ProcessorItemProvider extends NamedElementItemProvider {
 		if (itemPropertyDescriptors == null) {
 			super.getPropertyDescriptors(object);
 
+			addTimeUnitPropertyDescriptor(object);
 			addSchedPolicyPropertyDescriptor(object);
 			addCorePropertyDescriptor(object);
 			addModulesPropertyDescriptor(object);
+			addHostPropertyDescriptor(object);
+			addLinkLatencyPropertyDescriptor(object);
 		}
 		return itemPropertyDescriptors;
+	}
+
+	/**
+	 * This adds a property descriptor for the Time Unit feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addTimeUnitPropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_TimeScaled_timeUnit_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_TimeScaled_timeUnit_feature", "_UI_TimeScaled_type"),
+				 RsamlPackage.Literals.TIME_SCALED__TIME_UNIT,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
+				 null,
+				 null));
 	}
 
 	/**
@@ -121,6 +146,50 @@ public class ProcessorItemProvider extends NamedElementItemProvider {
 	}
 
 	/**
+	 * This adds a property descriptor for the Host feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addHostPropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_Processor_host_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_Processor_host_feature", "_UI_Processor_type"),
+				 RsamlPackage.Literals.PROCESSOR__HOST,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
+				 null,
+				 null));
+	}
+
+	/**
+	 * This adds a property descriptor for the Link Latency feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addLinkLatencyPropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_Processor_linkLatency_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_Processor_linkLatency_feature", "_UI_Processor_type"),
+				 RsamlPackage.Literals.PROCESSOR__LINK_LATENCY,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.REAL_VALUE_IMAGE,
+				 null,
+				 null));
+	}
+
+	/**
 	 * This returns Processor.gif.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -168,8 +237,11 @@ public class ProcessorItemProvider extends NamedElementItemProvider {
 		updateChildren(notification);
 
 		switch (notification.getFeatureID(Processor.class)) {
+			case RsamlPackage.PROCESSOR__TIME_UNIT:
 			case RsamlPackage.PROCESSOR__SCHED_POLICY:
 			case RsamlPackage.PROCESSOR__CORE:
+			case RsamlPackage.PROCESSOR__HOST:
+			case RsamlPackage.PROCESSOR__LINK_LATENCY:
 				fireNotifyChanged(new ViewerNotification(notification, notification.getNotifier(), false, true));
 				return;
 		}

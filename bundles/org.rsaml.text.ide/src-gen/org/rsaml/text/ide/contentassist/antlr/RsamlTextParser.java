@@ -140,7 +140,9 @@ public class RsamlTextParser extends AbstractContentAssistParser {
 			builder.put(grammarAccess.getProcessorAccess().getGroup_4_1(), "rule__Processor__Group_4_1__0");
 			builder.put(grammarAccess.getProcessorAccess().getGroup_4_2(), "rule__Processor__Group_4_2__0");
 			builder.put(grammarAccess.getProcessorAccess().getGroup_4_3(), "rule__Processor__Group_4_3__0");
-			builder.put(grammarAccess.getProcessorAccess().getGroup_4_3_2(), "rule__Processor__Group_4_3_2__0");
+			builder.put(grammarAccess.getProcessorAccess().getGroup_4_4(), "rule__Processor__Group_4_4__0");
+			builder.put(grammarAccess.getProcessorAccess().getGroup_4_6(), "rule__Processor__Group_4_6__0");
+			builder.put(grammarAccess.getProcessorAccess().getGroup_4_6_2(), "rule__Processor__Group_4_6_2__0");
 			builder.put(grammarAccess.getLatencyRequirementAccess().getGroup(), "rule__LatencyRequirement__Group__0");
 			builder.put(grammarAccess.getLatencyRequirementAccess().getGroup_4_1(), "rule__LatencyRequirement__Group_4_1__0");
 			builder.put(grammarAccess.getLatencyRequirementAccess().getGroup_4_2(), "rule__LatencyRequirement__Group_4_2__0");
@@ -251,8 +253,11 @@ public class RsamlTextParser extends AbstractContentAssistParser {
 			builder.put(grammarAccess.getProcessorAccess().getNameAssignment_2(), "rule__Processor__NameAssignment_2");
 			builder.put(grammarAccess.getProcessorAccess().getSchedPolicyAssignment_4_1_1(), "rule__Processor__SchedPolicyAssignment_4_1_1");
 			builder.put(grammarAccess.getProcessorAccess().getCoreAssignment_4_2_1(), "rule__Processor__CoreAssignment_4_2_1");
-			builder.put(grammarAccess.getProcessorAccess().getModulesAssignment_4_3_1(), "rule__Processor__ModulesAssignment_4_3_1");
-			builder.put(grammarAccess.getProcessorAccess().getModulesAssignment_4_3_2_1(), "rule__Processor__ModulesAssignment_4_3_2_1");
+			builder.put(grammarAccess.getProcessorAccess().getHostAssignment_4_3_1(), "rule__Processor__HostAssignment_4_3_1");
+			builder.put(grammarAccess.getProcessorAccess().getLinkLatencyAssignment_4_4_1(), "rule__Processor__LinkLatencyAssignment_4_4_1");
+			builder.put(grammarAccess.getProcessorAccess().getTimeUnitAssignment_4_4_2(), "rule__Processor__TimeUnitAssignment_4_4_2");
+			builder.put(grammarAccess.getProcessorAccess().getModulesAssignment_4_6_1(), "rule__Processor__ModulesAssignment_4_6_1");
+			builder.put(grammarAccess.getProcessorAccess().getModulesAssignment_4_6_2_1(), "rule__Processor__ModulesAssignment_4_6_2_1");
 			builder.put(grammarAccess.getLatencyRequirementAccess().getNameAssignment_2(), "rule__LatencyRequirement__NameAssignment_2");
 			builder.put(grammarAccess.getLatencyRequirementAccess().getSourceAssignment_4_1_1(), "rule__LatencyRequirement__SourceAssignment_4_1_1");
 			builder.put(grammarAccess.getLatencyRequirementAccess().getTargetAssignment_4_2_1(), "rule__LatencyRequirement__TargetAssignment_4_2_1");

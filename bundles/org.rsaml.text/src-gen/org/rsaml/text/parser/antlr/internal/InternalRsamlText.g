@@ -3435,9 +3435,91 @@ ruleProcessor returns [EObject current=null]
 			)
 			    |
 			(
-				otherlv_9='modules'
+				otherlv_9='host'
 				{
-					newLeafNode(otherlv_9, grammarAccess.getProcessorAccess().getModulesKeyword_4_3_0());
+					newLeafNode(otherlv_9, grammarAccess.getProcessorAccess().getHostKeyword_4_3_0());
+				}
+				(
+					(
+						lv_host_10_0=RULE_STRING
+						{
+							newLeafNode(lv_host_10_0, grammarAccess.getProcessorAccess().getHostSTRINGTerminalRuleCall_4_3_1_0());
+						}
+						{
+							if ($current==null) {
+								$current = createModelElement(grammarAccess.getProcessorRule());
+							}
+							setWithLastConsumed(
+								$current,
+								"host",
+								lv_host_10_0,
+								"org.rsaml.text.RsamlText.STRING");
+						}
+					)
+				)
+			)
+			    |
+			(
+				otherlv_11='linkLatency'
+				{
+					newLeafNode(otherlv_11, grammarAccess.getProcessorAccess().getLinkLatencyKeyword_4_4_0());
+				}
+				(
+					(
+						{
+							newCompositeNode(grammarAccess.getProcessorAccess().getLinkLatencyRealParserRuleCall_4_4_1_0());
+						}
+						lv_linkLatency_12_0=ruleReal
+						{
+							if ($current==null) {
+								$current = createModelElementForParent(grammarAccess.getProcessorRule());
+							}
+							set(
+								$current,
+								"linkLatency",
+								lv_linkLatency_12_0,
+								"org.rsaml.text.RsamlText.Real");
+							afterParserOrEnumRuleCall();
+						}
+					)
+				)
+				(
+					(
+						{
+							newCompositeNode(grammarAccess.getProcessorAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
+						}
+						lv_timeUnit_13_0=ruleTimeUnit
+						{
+							if ($current==null) {
+								$current = createModelElementForParent(grammarAccess.getProcessorRule());
+							}
+							set(
+								$current,
+								"timeUnit",
+								lv_timeUnit_13_0,
+								"org.rsaml.text.RsamlText.TimeUnit");
+							afterParserOrEnumRuleCall();
+						}
+					)
+				)
+			)
+			    |
+			{
+				if ($current==null) {
+					$current = createModelElement(grammarAccess.getProcessorRule());
+				}
+				newCompositeNode(grammarAccess.getProcessorAccess().getUnitParserRuleCall_4_5());
+			}
+			this_Unit_14=ruleUnit[$current]
+			{
+				$current = $this_Unit_14.current;
+				afterParserOrEnumRuleCall();
+			}
+			    |
+			(
+				otherlv_15='modules'
+				{
+					newLeafNode(otherlv_15, grammarAccess.getProcessorAccess().getModulesKeyword_4_6_0());
 				}
 				(
 					(
@@ -3447,7 +3529,7 @@ ruleProcessor returns [EObject current=null]
 							}
 						}
 						{
-							newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_1_0());
+							newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_1_0());
 						}
 						ruleQualifiedName
 						{
@@ -3456,9 +3538,9 @@ ruleProcessor returns [EObject current=null]
 					)
 				)
 				(
-					otherlv_11=','
+					otherlv_17=','
 					{
-						newLeafNode(otherlv_11, grammarAccess.getProcessorAccess().getCommaKeyword_4_3_2_0());
+						newLeafNode(otherlv_17, grammarAccess.getProcessorAccess().getCommaKeyword_4_6_2_0());
 					}
 					(
 						(
@@ -3468,7 +3550,7 @@ ruleProcessor returns [EObject current=null]
 								}
 							}
 							{
-								newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_2_1_0());
+								newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_2_1_0());
 							}
 							ruleQualifiedName
 							{
@@ -3479,9 +3561,9 @@ ruleProcessor returns [EObject current=null]
 				)*
 			)
 		)*
-		otherlv_13='}'
+		otherlv_19='}'
 		{
-			newLeafNode(otherlv_13, grammarAccess.getProcessorAccess().getRightCurlyBracketKeyword_5());
+			newLeafNode(otherlv_19, grammarAccess.getProcessorAccess().getRightCurlyBracketKeyword_5());
 		}
 	)
 ;
@@ -4210,196 +4292,208 @@ ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()
 			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60());
 		}
 		    |
+		kw='host'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_61());
+		}
+		    |
+		kw='linkLatency'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62());
+		}
+		    |
 		kw='centralized'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_61());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_63());
 		}
 		    |
 		kw='hierarchical'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_62());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_64());
 		}
 		    |
 		kw='behavioral'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_63());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_65());
 		}
 		    |
 		kw='hybrid'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_64());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_66());
 		}
 		    |
 		kw='other'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_65());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_67());
 		}
 		    |
 		kw='simple'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_66());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_68());
 		}
 		    |
 		kw='realTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_67());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_69());
 		}
 		    |
 		kw='periodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_68());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_70());
 		}
 		    |
 		kw='sporadic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_69());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_71());
 		}
 		    |
 		kw='aperiodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_70());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_72());
 		}
 		    |
 		kw='ns'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_71());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_73());
 		}
 		    |
 		kw='us'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_72());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_74());
 		}
 		    |
 		kw='ms'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_73());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_75());
 		}
 		    |
 		kw='s'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_74());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_76());
 		}
 		    |
 		kw='synchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_75());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_77());
 		}
 		    |
 		kw='asynchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_76());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_78());
 		}
 		    |
 		kw='FIFO'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_77());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_79());
 		}
 		    |
 		kw='SJF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_78());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_80());
 		}
 		    |
 		kw='RR'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_79());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_81());
 		}
 		    |
 		kw='RM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_80());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_82());
 		}
 		    |
 		kw='DM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_81());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_83());
 		}
 		    |
 		kw='EDF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_82());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_84());
 		}
 		    |
 		kw='LLF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_83());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_85());
 		}
 		    |
 		kw='OTHER'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_84());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_86());
 		}
 		    |
 		kw='numeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_85());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_87());
 		}
 		    |
 		kw='alphanumeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_86());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_88());
 		}
 		    |
 		kw='boolean'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_87());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_89());
 		}
 		    |
 		kw='structured'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_88());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_90());
 		}
 		    |
 		kw='reactionTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_89());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_91());
 		}
 		    |
 		kw='dataAge'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_90());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_92());
 		}
 		    |
 		kw='NaN'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_91());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_93());
 		}
 		    |
 		kw='Infinity'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_92());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_94());
 		}
 	)
 ;

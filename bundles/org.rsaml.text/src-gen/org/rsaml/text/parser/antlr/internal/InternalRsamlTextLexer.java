@@ -100,7 +100,9 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int T__75=75;
     public static final int T__76=76;
     public static final int T__80=80;
+    public static final int T__111=111;
     public static final int T__81=81;
+    public static final int T__110=110;
     public static final int T__82=82;
     public static final int T__83=83;
     public static final int RULE_WS=9;
@@ -1374,10 +1376,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__70;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:70:7: ( 'modules' )
-            // InternalRsamlText.g:70:9: 'modules'
+            // InternalRsamlText.g:70:7: ( 'host' )
+            // InternalRsamlText.g:70:9: 'host'
             {
-            match("modules"); 
+            match("host"); 
 
 
             }
@@ -1395,10 +1397,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__71;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:71:7: ( 'latency' )
-            // InternalRsamlText.g:71:9: 'latency'
+            // InternalRsamlText.g:71:7: ( 'linkLatency' )
+            // InternalRsamlText.g:71:9: 'linkLatency'
             {
-            match("latency"); 
+            match("linkLatency"); 
 
 
             }
@@ -1416,10 +1418,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__72;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:72:7: ( 'from' )
-            // InternalRsamlText.g:72:9: 'from'
+            // InternalRsamlText.g:72:7: ( 'modules' )
+            // InternalRsamlText.g:72:9: 'modules'
             {
-            match("from"); 
+            match("modules"); 
 
 
             }
@@ -1437,10 +1439,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__73;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:73:7: ( 'to' )
-            // InternalRsamlText.g:73:9: 'to'
+            // InternalRsamlText.g:73:7: ( 'latency' )
+            // InternalRsamlText.g:73:9: 'latency'
             {
-            match("to"); 
+            match("latency"); 
 
 
             }
@@ -1458,10 +1460,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__74;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:74:7: ( 'via' )
-            // InternalRsamlText.g:74:9: 'via'
+            // InternalRsamlText.g:74:7: ( 'from' )
+            // InternalRsamlText.g:74:9: 'from'
             {
-            match("via"); 
+            match("from"); 
 
 
             }
@@ -1479,10 +1481,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__75;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:75:7: ( 'maxLatency' )
-            // InternalRsamlText.g:75:9: 'maxLatency'
+            // InternalRsamlText.g:75:7: ( 'to' )
+            // InternalRsamlText.g:75:9: 'to'
             {
-            match("maxLatency"); 
+            match("to"); 
 
 
             }
@@ -1500,10 +1502,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__76;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:76:7: ( '.' )
-            // InternalRsamlText.g:76:9: '.'
+            // InternalRsamlText.g:76:7: ( 'via' )
+            // InternalRsamlText.g:76:9: 'via'
             {
-            match('.'); 
+            match("via"); 
+
 
             }
 
@@ -1520,10 +1523,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__77;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:77:7: ( 'centralized' )
-            // InternalRsamlText.g:77:9: 'centralized'
+            // InternalRsamlText.g:77:7: ( 'maxLatency' )
+            // InternalRsamlText.g:77:9: 'maxLatency'
             {
-            match("centralized"); 
+            match("maxLatency"); 
 
 
             }
@@ -1541,11 +1544,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__78;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:78:7: ( 'hierarchical' )
-            // InternalRsamlText.g:78:9: 'hierarchical'
+            // InternalRsamlText.g:78:7: ( '.' )
+            // InternalRsamlText.g:78:9: '.'
             {
-            match("hierarchical"); 
-
+            match('.'); 
 
             }
 
@@ -1562,10 +1564,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__79;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:79:7: ( 'behavioral' )
-            // InternalRsamlText.g:79:9: 'behavioral'
+            // InternalRsamlText.g:79:7: ( 'centralized' )
+            // InternalRsamlText.g:79:9: 'centralized'
             {
-            match("behavioral"); 
+            match("centralized"); 
 
 
             }
@@ -1583,10 +1585,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__80;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:80:7: ( 'hybrid' )
-            // InternalRsamlText.g:80:9: 'hybrid'
+            // InternalRsamlText.g:80:7: ( 'hierarchical' )
+            // InternalRsamlText.g:80:9: 'hierarchical'
             {
-            match("hybrid"); 
+            match("hierarchical"); 
 
 
             }
@@ -1604,10 +1606,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__81;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:81:7: ( 'other' )
-            // InternalRsamlText.g:81:9: 'other'
+            // InternalRsamlText.g:81:7: ( 'behavioral' )
+            // InternalRsamlText.g:81:9: 'behavioral'
             {
-            match("other"); 
+            match("behavioral"); 
 
 
             }
@@ -1625,10 +1627,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__82;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:82:7: ( 'simple' )
-            // InternalRsamlText.g:82:9: 'simple'
+            // InternalRsamlText.g:82:7: ( 'hybrid' )
+            // InternalRsamlText.g:82:9: 'hybrid'
             {
-            match("simple"); 
+            match("hybrid"); 
 
 
             }
@@ -1646,10 +1648,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__83;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:83:7: ( 'realTime' )
-            // InternalRsamlText.g:83:9: 'realTime'
+            // InternalRsamlText.g:83:7: ( 'other' )
+            // InternalRsamlText.g:83:9: 'other'
             {
-            match("realTime"); 
+            match("other"); 
 
 
             }
@@ -1667,10 +1669,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__84;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:84:7: ( 'periodic' )
-            // InternalRsamlText.g:84:9: 'periodic'
+            // InternalRsamlText.g:84:7: ( 'simple' )
+            // InternalRsamlText.g:84:9: 'simple'
             {
-            match("periodic"); 
+            match("simple"); 
 
 
             }
@@ -1688,10 +1690,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__85;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:85:7: ( 'sporadic' )
-            // InternalRsamlText.g:85:9: 'sporadic'
+            // InternalRsamlText.g:85:7: ( 'realTime' )
+            // InternalRsamlText.g:85:9: 'realTime'
             {
-            match("sporadic"); 
+            match("realTime"); 
 
 
             }
@@ -1709,10 +1711,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__86;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:86:7: ( 'aperiodic' )
-            // InternalRsamlText.g:86:9: 'aperiodic'
+            // InternalRsamlText.g:86:7: ( 'periodic' )
+            // InternalRsamlText.g:86:9: 'periodic'
             {
-            match("aperiodic"); 
+            match("periodic"); 
 
 
             }
@@ -1730,10 +1732,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__87;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:87:7: ( 'ns' )
-            // InternalRsamlText.g:87:9: 'ns'
+            // InternalRsamlText.g:87:7: ( 'sporadic' )
+            // InternalRsamlText.g:87:9: 'sporadic'
             {
-            match("ns"); 
+            match("sporadic"); 
 
 
             }
@@ -1751,10 +1753,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__88;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:88:7: ( 'us' )
-            // InternalRsamlText.g:88:9: 'us'
+            // InternalRsamlText.g:88:7: ( 'aperiodic' )
+            // InternalRsamlText.g:88:9: 'aperiodic'
             {
-            match("us"); 
+            match("aperiodic"); 
 
 
             }
@@ -1772,10 +1774,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__89;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:89:7: ( 'ms' )
-            // InternalRsamlText.g:89:9: 'ms'
+            // InternalRsamlText.g:89:7: ( 'ns' )
+            // InternalRsamlText.g:89:9: 'ns'
             {
-            match("ms"); 
+            match("ns"); 
 
 
             }
@@ -1793,10 +1795,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__90;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:90:7: ( 's' )
-            // InternalRsamlText.g:90:9: 's'
+            // InternalRsamlText.g:90:7: ( 'us' )
+            // InternalRsamlText.g:90:9: 'us'
             {
-            match('s'); 
+            match("us"); 
+
 
             }
 
@@ -1813,10 +1816,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__91;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:91:7: ( 'synchronous' )
-            // InternalRsamlText.g:91:9: 'synchronous'
+            // InternalRsamlText.g:91:7: ( 'ms' )
+            // InternalRsamlText.g:91:9: 'ms'
             {
-            match("synchronous"); 
+            match("ms"); 
 
 
             }
@@ -1834,11 +1837,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__92;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:92:7: ( 'asynchronous' )
-            // InternalRsamlText.g:92:9: 'asynchronous'
+            // InternalRsamlText.g:92:7: ( 's' )
+            // InternalRsamlText.g:92:9: 's'
             {
-            match("asynchronous"); 
-
+            match('s'); 
 
             }
 
@@ -1855,10 +1857,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__93;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:93:7: ( 'FIFO' )
-            // InternalRsamlText.g:93:9: 'FIFO'
+            // InternalRsamlText.g:93:7: ( 'synchronous' )
+            // InternalRsamlText.g:93:9: 'synchronous'
             {
-            match("FIFO"); 
+            match("synchronous"); 
 
 
             }
@@ -1876,10 +1878,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__94;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:94:7: ( 'SJF' )
-            // InternalRsamlText.g:94:9: 'SJF'
+            // InternalRsamlText.g:94:7: ( 'asynchronous' )
+            // InternalRsamlText.g:94:9: 'asynchronous'
             {
-            match("SJF"); 
+            match("asynchronous"); 
 
 
             }
@@ -1897,10 +1899,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__95;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:95:7: ( 'RR' )
-            // InternalRsamlText.g:95:9: 'RR'
+            // InternalRsamlText.g:95:7: ( 'FIFO' )
+            // InternalRsamlText.g:95:9: 'FIFO'
             {
-            match("RR"); 
+            match("FIFO"); 
 
 
             }
@@ -1918,10 +1920,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__96;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:96:7: ( 'RM' )
-            // InternalRsamlText.g:96:9: 'RM'
+            // InternalRsamlText.g:96:7: ( 'SJF' )
+            // InternalRsamlText.g:96:9: 'SJF'
             {
-            match("RM"); 
+            match("SJF"); 
 
 
             }
@@ -1939,10 +1941,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__97;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:97:7: ( 'DM' )
-            // InternalRsamlText.g:97:9: 'DM'
+            // InternalRsamlText.g:97:7: ( 'RR' )
+            // InternalRsamlText.g:97:9: 'RR'
             {
-            match("DM"); 
+            match("RR"); 
 
 
             }
@@ -1960,10 +1962,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__98;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:98:7: ( 'EDF' )
-            // InternalRsamlText.g:98:9: 'EDF'
+            // InternalRsamlText.g:98:7: ( 'RM' )
+            // InternalRsamlText.g:98:9: 'RM'
             {
-            match("EDF"); 
+            match("RM"); 
 
 
             }
@@ -1981,10 +1983,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__99;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:99:7: ( 'LLF' )
-            // InternalRsamlText.g:99:9: 'LLF'
+            // InternalRsamlText.g:99:7: ( 'DM' )
+            // InternalRsamlText.g:99:9: 'DM'
             {
-            match("LLF"); 
+            match("DM"); 
 
 
             }
@@ -2002,10 +2004,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__100;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:100:8: ( 'OTHER' )
-            // InternalRsamlText.g:100:10: 'OTHER'
+            // InternalRsamlText.g:100:8: ( 'EDF' )
+            // InternalRsamlText.g:100:10: 'EDF'
             {
-            match("OTHER"); 
+            match("EDF"); 
 
 
             }
@@ -2023,10 +2025,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__101;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:101:8: ( 'numeric' )
-            // InternalRsamlText.g:101:10: 'numeric'
+            // InternalRsamlText.g:101:8: ( 'LLF' )
+            // InternalRsamlText.g:101:10: 'LLF'
             {
-            match("numeric"); 
+            match("LLF"); 
 
 
             }
@@ -2044,10 +2046,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__102;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:102:8: ( 'alphanumeric' )
-            // InternalRsamlText.g:102:10: 'alphanumeric'
+            // InternalRsamlText.g:102:8: ( 'OTHER' )
+            // InternalRsamlText.g:102:10: 'OTHER'
             {
-            match("alphanumeric"); 
+            match("OTHER"); 
 
 
             }
@@ -2065,10 +2067,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__103;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:103:8: ( 'boolean' )
-            // InternalRsamlText.g:103:10: 'boolean'
+            // InternalRsamlText.g:103:8: ( 'numeric' )
+            // InternalRsamlText.g:103:10: 'numeric'
             {
-            match("boolean"); 
+            match("numeric"); 
 
 
             }
@@ -2086,10 +2088,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__104;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:104:8: ( 'structured' )
-            // InternalRsamlText.g:104:10: 'structured'
+            // InternalRsamlText.g:104:8: ( 'alphanumeric' )
+            // InternalRsamlText.g:104:10: 'alphanumeric'
             {
-            match("structured"); 
+            match("alphanumeric"); 
 
 
             }
@@ -2107,10 +2109,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__105;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:105:8: ( 'reactionTime' )
-            // InternalRsamlText.g:105:10: 'reactionTime'
+            // InternalRsamlText.g:105:8: ( 'boolean' )
+            // InternalRsamlText.g:105:10: 'boolean'
             {
-            match("reactionTime"); 
+            match("boolean"); 
 
 
             }
@@ -2128,10 +2130,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__106;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:106:8: ( 'dataAge' )
-            // InternalRsamlText.g:106:10: 'dataAge'
+            // InternalRsamlText.g:106:8: ( 'structured' )
+            // InternalRsamlText.g:106:10: 'structured'
             {
-            match("dataAge"); 
+            match("structured"); 
 
 
             }
@@ -2149,10 +2151,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__107;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:107:8: ( 'NaN' )
-            // InternalRsamlText.g:107:10: 'NaN'
+            // InternalRsamlText.g:107:8: ( 'reactionTime' )
+            // InternalRsamlText.g:107:10: 'reactionTime'
             {
-            match("NaN"); 
+            match("reactionTime"); 
 
 
             }
@@ -2170,10 +2172,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__108;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:108:8: ( 'Infinity' )
-            // InternalRsamlText.g:108:10: 'Infinity'
+            // InternalRsamlText.g:108:8: ( 'dataAge' )
+            // InternalRsamlText.g:108:10: 'dataAge'
             {
-            match("Infinity"); 
+            match("dataAge"); 
 
 
             }
@@ -2191,10 +2193,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__109;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:109:8: ( '-' )
-            // InternalRsamlText.g:109:10: '-'
+            // InternalRsamlText.g:109:8: ( 'NaN' )
+            // InternalRsamlText.g:109:10: 'NaN'
             {
-            match('-'); 
+            match("NaN"); 
+
 
             }
 
@@ -2206,15 +2209,56 @@ public class InternalRsamlTextLexer extends Lexer {
     }
     // $ANTLR end "T__109"
 
+    // $ANTLR start "T__110"
+    public final void mT__110() throws RecognitionException {
+        try {
+            int _type = T__110;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:110:8: ( 'Infinity' )
+            // InternalRsamlText.g:110:10: 'Infinity'
+            {
+            match("Infinity"); 
+
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__110"
+
+    // $ANTLR start "T__111"
+    public final void mT__111() throws RecognitionException {
+        try {
+            int _type = T__111;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:111:8: ( '-' )
+            // InternalRsamlText.g:111:10: '-'
+            {
+            match('-'); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__111"
+
     // $ANTLR start "RULE_ID"
     public final void mRULE_ID() throws RecognitionException {
         try {
             int _type = RULE_ID;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4810:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
-            // InternalRsamlText.g:4810:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:4904:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
+            // InternalRsamlText.g:4904:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             {
-            // InternalRsamlText.g:4810:11: ( '^' )?
+            // InternalRsamlText.g:4904:11: ( '^' )?
             int alt1=2;
             int LA1_0 = input.LA(1);
 
@@ -2223,7 +2267,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt1) {
                 case 1 :
-                    // InternalRsamlText.g:4810:11: '^'
+                    // InternalRsamlText.g:4904:11: '^'
                     {
                     match('^'); 
 
@@ -2241,7 +2285,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 recover(mse);
                 throw mse;}
 
-            // InternalRsamlText.g:4810:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:4904:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             loop2:
             do {
                 int alt2=2;
@@ -2290,10 +2334,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_NUMBER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4812:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
-            // InternalRsamlText.g:4812:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:4906:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
+            // InternalRsamlText.g:4906:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             {
-            // InternalRsamlText.g:4812:15: ( '-' )?
+            // InternalRsamlText.g:4906:15: ( '-' )?
             int alt3=2;
             int LA3_0 = input.LA(1);
 
@@ -2302,7 +2346,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt3) {
                 case 1 :
-                    // InternalRsamlText.g:4812:15: '-'
+                    // InternalRsamlText.g:4906:15: '-'
                     {
                     match('-'); 
 
@@ -2311,7 +2355,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:4812:20: ( '0' .. '9' )+
+            // InternalRsamlText.g:4906:20: ( '0' .. '9' )+
             int cnt4=0;
             loop4:
             do {
@@ -2325,7 +2369,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt4) {
             	case 1 :
-            	    // InternalRsamlText.g:4812:21: '0' .. '9'
+            	    // InternalRsamlText.g:4906:21: '0' .. '9'
             	    {
             	    matchRange('0','9'); 
 
@@ -2341,7 +2385,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 cnt4++;
             } while (true);
 
-            // InternalRsamlText.g:4812:32: ( '.' ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:4906:32: ( '.' ( '0' .. '9' )+ )?
             int alt6=2;
             int LA6_0 = input.LA(1);
 
@@ -2350,10 +2394,10 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt6) {
                 case 1 :
-                    // InternalRsamlText.g:4812:33: '.' ( '0' .. '9' )+
+                    // InternalRsamlText.g:4906:33: '.' ( '0' .. '9' )+
                     {
                     match('.'); 
-                    // InternalRsamlText.g:4812:37: ( '0' .. '9' )+
+                    // InternalRsamlText.g:4906:37: ( '0' .. '9' )+
                     int cnt5=0;
                     loop5:
                     do {
@@ -2367,7 +2411,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt5) {
                     	case 1 :
-                    	    // InternalRsamlText.g:4812:38: '0' .. '9'
+                    	    // InternalRsamlText.g:4906:38: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2389,7 +2433,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:4812:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:4906:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             int alt9=2;
             int LA9_0 = input.LA(1);
 
@@ -2398,7 +2442,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt9) {
                 case 1 :
-                    // InternalRsamlText.g:4812:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
+                    // InternalRsamlText.g:4906:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
                     {
                     if ( input.LA(1)=='E'||input.LA(1)=='e' ) {
                         input.consume();
@@ -2409,7 +2453,7 @@ public class InternalRsamlTextLexer extends Lexer {
                         recover(mse);
                         throw mse;}
 
-                    // InternalRsamlText.g:4812:62: ( '+' | '-' )?
+                    // InternalRsamlText.g:4906:62: ( '+' | '-' )?
                     int alt7=2;
                     int LA7_0 = input.LA(1);
 
@@ -2435,7 +2479,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                     }
 
-                    // InternalRsamlText.g:4812:73: ( '0' .. '9' )+
+                    // InternalRsamlText.g:4906:73: ( '0' .. '9' )+
                     int cnt8=0;
                     loop8:
                     do {
@@ -2449,7 +2493,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt8) {
                     	case 1 :
-                    	    // InternalRsamlText.g:4812:74: '0' .. '9'
+                    	    // InternalRsamlText.g:4906:74: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2487,11 +2531,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_STRING;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4814:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
-            // InternalRsamlText.g:4814:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
+            // InternalRsamlText.g:4908:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
+            // InternalRsamlText.g:4908:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
             {
             match('\"'); 
-            // InternalRsamlText.g:4814:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
+            // InternalRsamlText.g:4908:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
             loop10:
             do {
                 int alt10=3;
@@ -2507,7 +2551,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt10) {
             	case 1 :
-            	    // InternalRsamlText.g:4814:20: '\\\\' .
+            	    // InternalRsamlText.g:4908:20: '\\\\' .
             	    {
             	    match('\\'); 
             	    matchAny(); 
@@ -2515,7 +2559,7 @@ public class InternalRsamlTextLexer extends Lexer {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:4814:27: ~ ( ( '\\\\' | '\"' ) )
+            	    // InternalRsamlText.g:4908:27: ~ ( ( '\\\\' | '\"' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='!')||(input.LA(1)>='#' && input.LA(1)<='[')||(input.LA(1)>=']' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2552,12 +2596,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ML_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4816:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
-            // InternalRsamlText.g:4816:19: '/*' ( options {greedy=false; } : . )* '*/'
+            // InternalRsamlText.g:4910:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
+            // InternalRsamlText.g:4910:19: '/*' ( options {greedy=false; } : . )* '*/'
             {
             match("/*"); 
 
-            // InternalRsamlText.g:4816:24: ( options {greedy=false; } : . )*
+            // InternalRsamlText.g:4910:24: ( options {greedy=false; } : . )*
             loop11:
             do {
                 int alt11=2;
@@ -2582,7 +2626,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt11) {
             	case 1 :
-            	    // InternalRsamlText.g:4816:52: .
+            	    // InternalRsamlText.g:4910:52: .
             	    {
             	    matchAny(); 
 
@@ -2612,12 +2656,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_SL_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4818:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
-            // InternalRsamlText.g:4818:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:4912:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
+            // InternalRsamlText.g:4912:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
             {
             match("//"); 
 
-            // InternalRsamlText.g:4818:24: (~ ( ( '\\n' | '\\r' ) ) )*
+            // InternalRsamlText.g:4912:24: (~ ( ( '\\n' | '\\r' ) ) )*
             loop12:
             do {
                 int alt12=2;
@@ -2630,7 +2674,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt12) {
             	case 1 :
-            	    // InternalRsamlText.g:4818:24: ~ ( ( '\\n' | '\\r' ) )
+            	    // InternalRsamlText.g:4912:24: ~ ( ( '\\n' | '\\r' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='\t')||(input.LA(1)>='\u000B' && input.LA(1)<='\f')||(input.LA(1)>='\u000E' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2650,7 +2694,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
             } while (true);
 
-            // InternalRsamlText.g:4818:40: ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:4912:40: ( ( '\\r' )? '\\n' )?
             int alt14=2;
             int LA14_0 = input.LA(1);
 
@@ -2659,9 +2703,9 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt14) {
                 case 1 :
-                    // InternalRsamlText.g:4818:41: ( '\\r' )? '\\n'
+                    // InternalRsamlText.g:4912:41: ( '\\r' )? '\\n'
                     {
-                    // InternalRsamlText.g:4818:41: ( '\\r' )?
+                    // InternalRsamlText.g:4912:41: ( '\\r' )?
                     int alt13=2;
                     int LA13_0 = input.LA(1);
 
@@ -2670,7 +2714,7 @@ public class InternalRsamlTextLexer extends Lexer {
                     }
                     switch (alt13) {
                         case 1 :
-                            // InternalRsamlText.g:4818:41: '\\r'
+                            // InternalRsamlText.g:4912:41: '\\r'
                             {
                             match('\r'); 
 
@@ -2702,10 +2746,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_WS;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4820:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
-            // InternalRsamlText.g:4820:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:4914:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
+            // InternalRsamlText.g:4914:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             {
-            // InternalRsamlText.g:4820:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:4914:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             int cnt15=0;
             loop15:
             do {
@@ -2759,8 +2803,8 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ANY_OTHER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:4822:16: ( . )
-            // InternalRsamlText.g:4822:18: .
+            // InternalRsamlText.g:4916:16: ( . )
+            // InternalRsamlText.g:4916:18: .
             {
             matchAny(); 
 
@@ -2775,8 +2819,8 @@ public class InternalRsamlTextLexer extends Lexer {
     // $ANTLR end "RULE_ANY_OTHER"
 
     public void mTokens() throws RecognitionException {
-        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
-        int alt16=106;
+        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
+        int alt16=108;
         alt16 = dfa16.predict(input);
         switch (alt16) {
             case 1 :
@@ -3473,49 +3517,63 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
                 break;
             case 100 :
-                // InternalRsamlText.g:1:614: RULE_ID
+                // InternalRsamlText.g:1:614: T__110
+                {
+                mT__110(); 
+
+                }
+                break;
+            case 101 :
+                // InternalRsamlText.g:1:621: T__111
+                {
+                mT__111(); 
+
+                }
+                break;
+            case 102 :
+                // InternalRsamlText.g:1:628: RULE_ID
                 {
                 mRULE_ID(); 
 
                 }
                 break;
-            case 101 :
-                // InternalRsamlText.g:1:622: RULE_NUMBER
+            case 103 :
+                // InternalRsamlText.g:1:636: RULE_NUMBER
                 {
                 mRULE_NUMBER(); 
 
                 }
                 break;
-            case 102 :
-                // InternalRsamlText.g:1:634: RULE_STRING
+            case 104 :
+                // InternalRsamlText.g:1:648: RULE_STRING
                 {
                 mRULE_STRING(); 
 
                 }
                 break;
-            case 103 :
-                // InternalRsamlText.g:1:646: RULE_ML_COMMENT
+            case 105 :
+                // InternalRsamlText.g:1:660: RULE_ML_COMMENT
                 {
                 mRULE_ML_COMMENT(); 
 
                 }
                 break;
-            case 104 :
-                // InternalRsamlText.g:1:662: RULE_SL_COMMENT
+            case 106 :
+                // InternalRsamlText.g:1:676: RULE_SL_COMMENT
                 {
                 mRULE_SL_COMMENT(); 
 
                 }
                 break;
-            case 105 :
-                // InternalRsamlText.g:1:678: RULE_WS
+            case 107 :
+                // InternalRsamlText.g:1:692: RULE_WS
                 {
                 mRULE_WS(); 
 
                 }
                 break;
-            case 106 :
-                // InternalRsamlText.g:1:686: RULE_ANY_OTHER
+            case 108 :
+                // InternalRsamlText.g:1:700: RULE_ANY_OTHER
                 {
                 mRULE_ANY_OTHER(); 
 
@@ -3529,19 +3587,19 @@ public class InternalRsamlTextLexer extends Lexer {
 
     protected DFA16 dfa16 = new DFA16(this);
     static final String DFA16_eotS =
-        "\1\uffff\1\60\1\uffff\2\60\1\uffff\7\60\1\122\1\uffff\4\60\1\137\3\60\1\uffff\14\60\1\52\2\uffff\2\52\2\uffff\5\60\2\uffff\6\60\1\uffff\1\60\1\u008a\3\60\1\u008e\13\60\1\u009c\7\60\2\uffff\11\60\3\uffff\4\60\1\uffff\4\60\1\u00b9\3\60\1\u00bd\1\u00be\1\u00bf\5\60\4\uffff\21\60\1\uffff\3\60\1\uffff\15\60\1\uffff\27\60\1\u0101\4\60\1\uffff\2\60\1\u0108\3\uffff\1\u0109\1\u010a\1\60\1\u010c\12\60\1\u0118\6\60\1\u0121\1\60\1\u0123\6\60\1\u012b\1\u012c\22\60\1\u013f\13\60\1\u014c\1\60\1\u014e\1\uffff\5\60\1\u0154\3\uffff\1\60\1\uffff\13\60\1\uffff\10\60\1\uffff\1\60\1\uffff\6\60\1\u0170\2\uffff\1\u0171\1\60\1\u0173\10\60\1\u017c\6\60\1\uffff\1\u0184\1\60\1\u0186\6\60\1\u018d\2\60\1\uffff\1\60\1\uffff\5\60\1\uffff\1\u0196\3\60\1\u019b\17\60\1\u01ab\1\60\1\u01ad\1\60\1\u01b0\2\60\2\uffff\1\60\1\uffff\2\60\1\u01b7\2\60\1\u01bb\2\60\1\uffff\3\60\1\u01c1\3\60\1\uffff\1\u01c5\1\uffff\6\60\1\uffff\1\60\1\u01cd\2\60\1\u01d0\3\60\1\uffff\3\60\1\u01d7\1\uffff\6\60\1\u01de\6\60\1\u01e5\1\60\1\uffff\1\u01e7\1\uffff\2\60\1\uffff\2\60\1\u01ec\2\60\1\u01ef\1\uffff\1\60\1\u01f1\1\u01f2\1\uffff\5\60\1\uffff\3\60\1\uffff\7\60\1\uffff\2\60\1\uffff\1\60\1\u0206\1\u0207\2\60\1\u020b\1\uffff\1\u020c\1\u020d\3\60\1\u0211\1\uffff\3\60\1\u0215\1\u0216\1\u0217\1\uffff\1\u0218\1\uffff\1\u0219\1\u021a\1\u021b\1\60\1\uffff\2\60\1\uffff\1\60\2\uffff\6\60\1\u0226\1\u0227\1\60\1\u0229\1\60\1\u022b\1\60\1\u022d\1\u022e\4\60\2\uffff\1\u0233\1\60\1\u0235\3\uffff\1\u0236\2\60\1\uffff\3\60\7\uffff\1\u023c\11\60\2\uffff\1\60\1\uffff\1\60\1\uffff\1\60\2\uffff\1\u0249\1\u024a\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\1\60\1\u0254\4\60\1\u0259\1\u025a\1\u025b\1\60\1\u025d\1\60\2\uffff\1\60\1\u0260\3\60\1\u0264\1\60\1\u0266\1\u0267\1\uffff\1\u0268\1\u0269\1\u026a\1\u026b\3\uffff\1\u026c\1\uffff\2\60\1\uffff\1\u026f\1\u0270\1\u0271\1\uffff\1\60\7\uffff\1\u0273\1\u0274\3\uffff\1\60\2\uffff\1\u0276\1\uffff";
+        "\1\uffff\1\60\1\uffff\2\60\1\uffff\7\60\1\123\1\uffff\4\60\1\137\4\60\1\uffff\13\60\1\52\2\uffff\2\52\2\uffff\5\60\2\uffff\6\60\1\uffff\1\60\1\u008c\3\60\1\u0090\14\60\1\u009f\7\60\2\uffff\11\60\3\uffff\7\60\1\uffff\2\60\1\u00bd\3\60\1\u00c1\1\u00c2\1\u00c3\5\60\4\uffff\21\60\1\uffff\3\60\1\uffff\16\60\1\uffff\32\60\1\u0109\2\60\1\uffff\2\60\1\u010e\3\uffff\1\u010f\1\u0110\1\60\1\u0112\12\60\1\u011e\6\60\1\u0127\1\60\1\u0129\6\60\1\u0131\1\u0132\23\60\1\u0146\13\60\1\u0153\1\60\1\u0155\1\u0156\2\60\1\uffff\3\60\1\u015c\3\uffff\1\60\1\uffff\13\60\1\uffff\10\60\1\uffff\1\60\1\uffff\6\60\1\u0178\2\uffff\1\u0179\1\60\1\u017b\11\60\1\u0185\6\60\1\uffff\1\u018d\1\60\1\u018f\6\60\1\u0196\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\1\u019f\3\60\1\u01a4\17\60\1\u01b4\1\60\1\u01b6\1\60\1\u01b9\2\60\2\uffff\1\60\1\uffff\3\60\1\u01c1\2\60\1\u01c5\2\60\1\uffff\3\60\1\u01cb\3\60\1\uffff\1\u01cf\1\uffff\6\60\1\uffff\1\60\1\u01d7\2\60\1\u01da\3\60\1\uffff\3\60\1\u01e1\1\uffff\6\60\1\u01e8\6\60\1\u01ef\1\60\1\uffff\1\u01f1\1\uffff\2\60\1\uffff\2\60\1\u01f6\3\60\1\u01fa\1\uffff\1\60\1\u01fc\1\u01fd\1\uffff\5\60\1\uffff\3\60\1\uffff\7\60\1\uffff\2\60\1\uffff\1\60\1\u0211\1\u0212\2\60\1\u0216\1\uffff\1\u0217\1\u0218\3\60\1\u021c\1\uffff\3\60\1\u0220\1\u0221\1\u0222\1\uffff\1\u0223\1\uffff\1\u0224\1\u0225\1\u0226\1\60\1\uffff\3\60\1\uffff\1\60\2\uffff\6\60\1\u0232\1\u0233\1\60\1\u0235\1\60\1\u0237\1\60\1\u0239\1\u023a\4\60\2\uffff\1\u023f\1\60\1\u0241\3\uffff\1\u0242\2\60\1\uffff\3\60\7\uffff\1\u0248\12\60\2\uffff\1\60\1\uffff\1\60\1\uffff\1\60\2\uffff\1\u0256\1\u0257\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\2\60\1\u0262\4\60\1\u0267\1\u0268\1\u0269\1\60\1\u026b\1\60\2\uffff\1\60\1\u026e\3\60\1\u0272\1\60\1\u0274\1\u0275\1\u0276\1\uffff\1\u0277\1\u0278\1\u0279\1\u027a\3\uffff\1\u027b\1\uffff\2\60\1\uffff\1\u027e\1\u027f\1\u0280\1\uffff\1\60\10\uffff\1\u0282\1\u0283\3\uffff\1\60\2\uffff\1\u0285\1\uffff";
     static final String DFA16_eofS =
-        "\u0277\uffff";
+        "\u0286\uffff";
     static final String DFA16_minS =
-        "\1\0\1\143\1\uffff\2\141\1\uffff\1\156\1\141\1\170\1\145\1\143\2\141\1\60\1\uffff\2\162\1\145\1\156\1\60\1\151\1\157\1\151\1\uffff\1\151\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\2\uffff\1\164\2\156\1\141\1\164\1\162\1\uffff\1\151\1\60\1\160\1\151\1\162\1\60\1\145\1\162\1\151\1\141\1\145\1\164\1\166\1\170\1\144\2\163\1\60\2\156\1\150\1\141\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\141\1\150\1\163\3\uffff\1\156\1\157\2\141\1\uffff\1\145\1\142\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\4\uffff\1\150\2\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\164\1\144\1\uffff\1\145\2\147\1\uffff\1\143\1\151\1\157\1\143\1\156\1\164\3\145\1\105\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\1\145\1\160\1\162\1\143\1\155\1\145\1\160\1\145\2\143\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\60\2\162\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\141\1\157\1\145\1\151\1\143\1\141\1\147\1\145\1\60\1\162\1\141\1\162\1\154\1\101\1\164\1\60\1\102\1\60\1\147\1\145\1\124\1\157\1\162\1\145\2\60\1\162\1\156\1\154\1\170\1\141\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\1\154\1\141\1\164\1\60\1\162\1\165\1\162\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\60\1\154\1\60\1\uffff\1\141\1\151\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\uffff\1\171\1\uffff\1\145\1\164\1\171\1\144\1\151\1\163\1\60\2\uffff\1\60\1\143\1\60\1\145\1\164\1\145\1\147\1\157\2\162\1\120\1\60\1\164\1\145\1\166\1\145\1\144\1\151\1\uffff\1\60\1\164\1\60\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\uffff\1\145\1\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\157\1\60\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\60\1\162\1\60\1\160\1\60\1\164\1\163\2\uffff\1\171\1\uffff\1\143\1\145\1\60\1\145\1\156\1\60\2\157\1\uffff\1\165\1\163\1\151\1\60\1\151\2\157\1\uffff\1\60\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\60\1\144\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\60\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\60\1\151\1\144\1\164\3\145\1\60\1\156\1\uffff\1\60\1\uffff\1\145\1\143\1\uffff\1\171\1\157\1\60\1\124\1\156\1\60\1\uffff\1\124\2\60\1\uffff\1\124\1\154\1\162\2\163\1\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\60\1\171\1\164\1\60\1\uffff\2\60\1\143\1\156\1\145\1\60\1\uffff\1\172\1\114\1\151\3\60\1\uffff\1\60\1\uffff\3\60\1\162\1\uffff\1\151\1\143\1\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\60\1\151\1\60\1\102\1\60\1\124\2\60\1\162\1\145\1\151\1\141\2\uffff\1\60\1\165\1\60\3\uffff\1\60\1\157\1\162\1\uffff\1\145\1\141\1\157\7\uffff\1\60\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\60\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\145\1\60\2\145\1\163\1\171\3\60\1\171\1\60\1\155\2\uffff\1\141\1\60\1\145\1\163\1\143\1\60\1\145\2\60\1\uffff\4\60\3\uffff\1\60\1\uffff\1\145\1\154\1\uffff\3\60\1\uffff\1\162\7\uffff\2\60\3\uffff\1\163\2\uffff\1\60\1\uffff";
+        "\1\0\1\143\1\uffff\2\141\1\uffff\1\156\1\141\1\170\1\145\1\143\2\141\1\60\1\uffff\2\162\1\145\1\156\1\60\1\151\1\157\2\151\1\uffff\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\2\uffff\1\164\2\156\1\141\1\164\1\162\1\uffff\1\151\1\60\1\160\1\151\1\162\1\60\1\145\1\162\1\151\1\141\1\145\1\164\1\166\1\156\1\170\1\144\2\163\1\60\2\156\1\150\1\141\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\141\1\150\1\163\3\uffff\1\156\1\157\1\141\1\163\1\145\1\142\1\141\1\uffff\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\4\uffff\1\150\2\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\164\1\144\1\uffff\1\145\2\147\1\uffff\1\143\1\151\1\157\1\143\1\156\1\164\3\145\1\153\1\105\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\1\145\1\160\1\162\1\143\1\155\1\145\1\160\1\145\2\143\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\164\2\162\1\60\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\141\1\157\1\145\1\151\1\143\1\141\1\147\1\145\1\60\1\162\1\141\1\162\1\154\1\101\1\164\1\60\1\102\1\60\1\147\1\145\1\124\1\157\1\162\1\145\2\60\1\162\1\156\1\154\1\114\1\170\1\141\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\1\154\1\141\1\164\1\60\1\162\1\165\1\162\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\60\1\154\2\60\1\141\1\151\1\uffff\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\uffff\1\171\1\uffff\1\145\1\164\1\171\1\144\1\151\1\163\1\60\2\uffff\1\60\1\143\1\60\1\141\1\145\1\164\1\145\1\147\1\157\2\162\1\120\1\60\1\164\1\145\1\166\1\145\1\144\1\151\1\uffff\1\60\1\164\1\60\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\uffff\1\145\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\157\1\60\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\60\1\162\1\60\1\160\1\60\1\164\1\163\2\uffff\1\171\1\uffff\1\164\1\143\1\145\1\60\1\145\1\156\1\60\2\157\1\uffff\1\165\1\163\1\151\1\60\1\151\2\157\1\uffff\1\60\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\60\1\144\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\60\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\60\1\151\1\144\1\164\3\145\1\60\1\156\1\uffff\1\60\1\uffff\1\145\1\143\1\uffff\1\171\1\157\1\60\1\145\1\124\1\156\1\60\1\uffff\1\124\2\60\1\uffff\1\124\1\154\1\162\2\163\1\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\60\1\171\1\164\1\60\1\uffff\2\60\1\143\1\156\1\145\1\60\1\uffff\1\172\1\114\1\151\3\60\1\uffff\1\60\1\uffff\3\60\1\162\1\uffff\1\156\1\151\1\143\1\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\60\1\151\1\60\1\102\1\60\1\124\2\60\1\162\1\145\1\151\1\141\2\uffff\1\60\1\165\1\60\3\uffff\1\60\1\157\1\162\1\uffff\1\145\1\141\1\157\7\uffff\1\60\1\143\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\60\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\171\1\145\1\60\2\145\1\163\1\171\3\60\1\171\1\60\1\155\2\uffff\1\141\1\60\1\145\1\163\1\143\1\60\1\145\3\60\1\uffff\4\60\3\uffff\1\60\1\uffff\1\145\1\154\1\uffff\3\60\1\uffff\1\162\10\uffff\2\60\3\uffff\1\163\2\uffff\1\60\1\uffff";
     static final String DFA16_maxS =
-        "\1\uffff\1\163\1\uffff\1\157\1\165\1\uffff\1\163\1\171\1\170\1\162\1\143\1\145\1\163\1\172\1\uffff\2\165\1\164\1\163\1\76\1\156\1\157\1\151\1\uffff\1\171\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\2\uffff\1\164\1\162\1\156\1\163\1\164\1\162\1\uffff\1\151\1\172\1\160\1\151\1\162\1\172\1\145\1\162\1\157\1\141\1\145\1\171\1\166\1\170\1\144\2\163\1\172\2\156\1\150\1\162\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\161\1\160\1\163\3\uffff\1\156\1\157\2\141\1\uffff\1\145\1\142\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\4\uffff\1\150\1\165\1\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\164\1\144\1\uffff\1\145\2\147\1\uffff\1\143\1\151\1\157\1\143\1\156\1\164\3\145\1\114\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\2\160\1\162\1\143\1\155\1\145\1\160\1\145\1\143\1\154\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\172\2\162\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\141\1\166\1\145\1\151\1\143\1\141\1\147\1\145\1\172\1\162\1\141\1\162\1\154\1\142\1\164\1\172\1\102\1\172\1\147\1\145\1\124\1\157\1\162\1\145\2\172\1\162\1\156\1\154\1\170\1\141\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\1\154\1\141\1\164\1\172\1\162\1\165\1\162\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\172\1\154\1\172\1\uffff\1\141\1\151\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\uffff\1\171\1\uffff\1\145\1\164\1\171\1\144\1\151\1\163\1\172\2\uffff\1\172\1\143\1\172\1\145\1\164\1\145\1\147\1\157\2\162\1\120\1\172\1\164\1\145\1\166\1\145\1\144\1\151\1\uffff\1\172\1\164\1\172\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\uffff\1\145\1\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\157\1\172\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\172\1\162\1\172\1\160\1\172\1\164\1\163\2\uffff\1\171\1\uffff\1\143\1\145\1\172\1\145\1\156\1\172\2\157\1\uffff\1\165\1\163\1\151\1\172\1\151\2\157\1\uffff\1\172\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\172\1\144\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\172\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\172\1\151\1\144\1\164\3\145\1\172\1\156\1\uffff\1\172\1\uffff\1\145\1\143\1\uffff\1\171\1\157\1\172\1\124\1\156\1\172\1\uffff\1\124\2\172\1\uffff\1\156\1\154\1\162\2\163\1\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\172\1\171\1\164\1\172\1\uffff\2\172\1\143\1\156\1\145\1\172\1\uffff\1\172\1\114\1\151\3\172\1\uffff\1\172\1\uffff\3\172\1\162\1\uffff\1\151\1\143\1\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\172\1\151\1\172\1\102\1\172\1\124\2\172\1\162\1\145\1\151\1\141\2\uffff\1\172\1\165\1\172\3\uffff\1\172\1\157\1\162\1\uffff\1\145\1\141\1\157\7\uffff\1\172\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\172\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\145\1\172\2\145\1\163\1\171\3\172\1\171\1\172\1\155\2\uffff\1\141\1\172\1\145\1\163\1\143\1\172\1\145\2\172\1\uffff\4\172\3\uffff\1\172\1\uffff\1\145\1\154\1\uffff\3\172\1\uffff\1\162\7\uffff\2\172\3\uffff\1\163\2\uffff\1\172\1\uffff";
+        "\1\uffff\1\163\1\uffff\1\157\1\165\1\uffff\1\163\1\171\1\170\1\162\1\143\1\151\1\163\1\172\1\uffff\2\165\1\164\1\163\1\76\1\156\1\157\1\171\1\151\1\uffff\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\2\uffff\1\164\1\162\1\156\1\163\1\164\1\162\1\uffff\1\151\1\172\1\160\1\151\1\162\1\172\1\145\1\162\1\157\1\141\1\145\1\171\1\166\1\156\1\170\1\144\2\163\1\172\2\156\1\150\1\162\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\161\1\160\1\163\3\uffff\1\156\1\157\1\141\1\163\1\145\1\142\1\141\1\uffff\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\4\uffff\1\150\1\165\1\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\164\1\144\1\uffff\1\145\2\147\1\uffff\1\143\1\151\1\157\1\143\1\156\1\164\3\145\1\153\1\114\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\2\160\1\162\1\143\1\155\1\145\1\160\1\145\1\143\1\154\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\164\2\162\1\172\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\141\1\166\1\145\1\151\1\143\1\141\1\147\1\145\1\172\1\162\1\141\1\162\1\154\1\142\1\164\1\172\1\102\1\172\1\147\1\145\1\124\1\157\1\162\1\145\2\172\1\162\1\156\1\154\1\114\1\170\1\141\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\1\154\1\141\1\164\1\172\1\162\1\165\1\162\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\172\1\154\2\172\1\141\1\151\1\uffff\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\uffff\1\171\1\uffff\1\145\1\164\1\171\1\144\1\151\1\163\1\172\2\uffff\1\172\1\143\1\172\1\141\1\145\1\164\1\145\1\147\1\157\2\162\1\120\1\172\1\164\1\145\1\166\1\145\1\144\1\151\1\uffff\1\172\1\164\1\172\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\uffff\1\145\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\157\1\172\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\172\1\162\1\172\1\160\1\172\1\164\1\163\2\uffff\1\171\1\uffff\1\164\1\143\1\145\1\172\1\145\1\156\1\172\2\157\1\uffff\1\165\1\163\1\151\1\172\1\151\2\157\1\uffff\1\172\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\172\1\144\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\172\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\172\1\151\1\144\1\164\3\145\1\172\1\156\1\uffff\1\172\1\uffff\1\145\1\143\1\uffff\1\171\1\157\1\172\1\145\1\124\1\156\1\172\1\uffff\1\124\2\172\1\uffff\1\156\1\154\1\162\2\163\1\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\172\1\171\1\164\1\172\1\uffff\2\172\1\143\1\156\1\145\1\172\1\uffff\1\172\1\114\1\151\3\172\1\uffff\1\172\1\uffff\3\172\1\162\1\uffff\1\156\1\151\1\143\1\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\172\1\151\1\172\1\102\1\172\1\124\2\172\1\162\1\145\1\151\1\141\2\uffff\1\172\1\165\1\172\3\uffff\1\172\1\157\1\162\1\uffff\1\145\1\141\1\157\7\uffff\1\172\1\143\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\172\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\171\1\145\1\172\2\145\1\163\1\171\3\172\1\171\1\172\1\155\2\uffff\1\141\1\172\1\145\1\163\1\143\1\172\1\145\3\172\1\uffff\4\172\3\uffff\1\172\1\uffff\1\145\1\154\1\uffff\3\172\1\uffff\1\162\10\uffff\2\172\3\uffff\1\163\2\uffff\1\172\1\uffff";
     static final String DFA16_acceptS =
-        "\2\uffff\1\2\2\uffff\1\5\10\uffff\1\22\10\uffff\1\102\15\uffff\1\144\1\145\2\uffff\1\151\1\152\5\uffff\1\144\1\2\6\uffff\1\5\31\uffff\1\120\1\22\11\uffff\1\40\1\145\1\143\4\uffff\1\102\20\uffff\1\146\1\147\1\150\1\151\21\uffff\1\116\3\uffff\1\77\15\uffff\1\117\34\uffff\1\115\3\uffff\1\125\1\126\1\127\101\uffff\1\100\6\uffff\1\124\1\130\1\131\1\uffff\1\141\13\uffff\1\73\10\uffff\1\7\1\uffff\1\10\7\uffff\1\54\1\14\22\uffff\1\76\14\uffff\1\47\1\uffff\1\52\5\uffff\1\123\33\uffff\1\61\1\15\1\uffff\1\16\10\uffff\1\32\7\uffff\1\107\1\uffff\1\63\6\uffff\1\33\10\uffff\1\132\4\uffff\1\30\17\uffff\1\71\1\uffff\1\43\2\uffff\1\12\6\uffff\1\20\3\uffff\1\46\5\uffff\1\110\3\uffff\1\34\7\uffff\1\64\2\uffff\1\106\6\uffff\1\57\6\uffff\1\37\6\uffff\1\140\1\uffff\1\42\4\uffff\1\75\2\uffff\1\74\1\uffff\1\51\1\21\23\uffff\1\135\1\133\3\uffff\1\50\1\56\1\55\3\uffff\1\3\3\uffff\1\13\1\35\1\67\1\44\1\11\1\112\1\53\12\uffff\1\113\1\24\1\uffff\1\31\1\uffff\1\111\1\uffff\1\65\1\66\4\uffff\1\142\1\uffff\1\23\1\114\5\uffff\1\72\14\uffff\1\41\1\70\11\uffff\1\101\4\uffff\1\136\1\45\1\60\1\uffff\1\62\2\uffff\1\105\3\uffff\1\103\1\uffff\1\6\1\17\1\36\1\25\1\121\1\26\1\27\2\uffff\1\1\1\122\1\134\1\uffff\1\137\1\104\1\uffff\1\4";
+        "\2\uffff\1\2\2\uffff\1\5\10\uffff\1\22\11\uffff\1\104\14\uffff\1\146\1\147\2\uffff\1\153\1\154\5\uffff\1\146\1\2\6\uffff\1\5\32\uffff\1\122\1\22\11\uffff\1\40\1\145\1\147\7\uffff\1\104\16\uffff\1\150\1\151\1\152\1\153\21\uffff\1\120\3\uffff\1\101\16\uffff\1\121\35\uffff\1\117\3\uffff\1\127\1\130\1\131\105\uffff\1\102\4\uffff\1\126\1\132\1\133\1\uffff\1\143\13\uffff\1\73\10\uffff\1\7\1\uffff\1\10\7\uffff\1\54\1\14\23\uffff\1\100\14\uffff\1\47\1\uffff\1\52\1\74\5\uffff\1\125\33\uffff\1\61\1\15\1\uffff\1\16\11\uffff\1\32\7\uffff\1\111\1\uffff\1\63\6\uffff\1\33\10\uffff\1\134\4\uffff\1\30\17\uffff\1\71\1\uffff\1\43\2\uffff\1\12\7\uffff\1\20\3\uffff\1\46\5\uffff\1\112\3\uffff\1\34\7\uffff\1\64\2\uffff\1\110\6\uffff\1\57\6\uffff\1\37\6\uffff\1\142\1\uffff\1\42\4\uffff\1\77\3\uffff\1\76\1\uffff\1\51\1\21\23\uffff\1\137\1\135\3\uffff\1\50\1\56\1\55\3\uffff\1\3\3\uffff\1\13\1\35\1\67\1\44\1\11\1\114\1\53\13\uffff\1\115\1\24\1\uffff\1\31\1\uffff\1\113\1\uffff\1\65\1\66\4\uffff\1\144\1\uffff\1\23\1\116\5\uffff\1\72\15\uffff\1\41\1\70\12\uffff\1\103\4\uffff\1\140\1\45\1\60\1\uffff\1\62\2\uffff\1\107\3\uffff\1\105\1\uffff\1\6\1\75\1\17\1\36\1\25\1\123\1\26\1\27\2\uffff\1\1\1\124\1\136\1\uffff\1\141\1\106\1\uffff\1\4";
     static final String DFA16_specialS =
-        "\1\1\46\uffff\1\0\u024f\uffff}>";
+        "\1\0\46\uffff\1\1\u025e\uffff}>";
     static final String[] DFA16_transitionS = {
-            "\11\52\2\51\2\52\1\51\22\52\1\51\1\52\1\47\11\52\1\16\1\23\1\27\1\50\12\46\7\52\3\45\1\36\1\37\1\33\2\45\1\43\2\45\1\40\1\45\1\42\1\41\2\45\1\35\1\34\7\45\3\52\1\44\1\45\1\52\1\1\1\31\1\3\1\4\1\10\1\17\1\25\1\30\1\22\1\45\1\24\1\13\1\14\1\32\1\20\1\11\1\45\1\21\1\15\1\7\1\6\1\26\1\12\3\45\1\2\1\52\1\5\uff82\52",
+            "\11\52\2\51\2\52\1\51\22\52\1\51\1\52\1\47\11\52\1\16\1\23\1\30\1\50\12\46\7\52\3\45\1\36\1\37\1\33\2\45\1\43\2\45\1\40\1\45\1\42\1\41\2\45\1\35\1\34\7\45\3\52\1\44\1\45\1\52\1\1\1\31\1\3\1\4\1\10\1\17\1\25\1\26\1\22\1\45\1\24\1\13\1\14\1\32\1\20\1\11\1\45\1\21\1\15\1\7\1\6\1\27\1\12\3\45\1\2\1\52\1\5\uff82\52",
             "\1\54\10\uffff\1\57\3\uffff\1\55\1\uffff\1\53\1\56",
             "",
             "\1\62\3\uffff\1\64\11\uffff\1\63",
@@ -3552,122 +3610,120 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\77",
             "\1\100\6\uffff\1\102\5\uffff\1\101",
             "\1\103",
-            "\1\104\3\uffff\1\105",
-            "\1\106\3\uffff\1\110\3\uffff\1\111\5\uffff\1\107\3\uffff\1\112",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\2\60\1\115\1\60\1\113\3\60\1\120\6\60\1\121\3\60\1\116\1\117\3\60\1\114\1\60",
+            "\1\104\3\uffff\1\105\3\uffff\1\106",
+            "\1\107\3\uffff\1\111\3\uffff\1\112\5\uffff\1\110\3\uffff\1\113",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\2\60\1\116\1\60\1\114\3\60\1\121\6\60\1\122\3\60\1\117\1\120\3\60\1\115\1\60",
             "",
-            "\1\125\2\uffff\1\124",
-            "\1\130\1\uffff\1\126\1\127",
-            "\1\132\16\uffff\1\131",
-            "\1\133\4\uffff\1\134",
-            "\12\136\4\uffff\1\135",
-            "\1\140\4\uffff\1\141",
-            "\1\142",
+            "\1\126\2\uffff\1\125",
+            "\1\131\1\uffff\1\127\1\130",
+            "\1\133\16\uffff\1\132",
+            "\1\134\4\uffff\1\135",
+            "\12\140\4\uffff\1\136",
+            "\1\141\4\uffff\1\142",
             "\1\143",
+            "\1\145\5\uffff\1\144\11\uffff\1\146",
+            "\1\147",
             "",
-            "\1\145\17\uffff\1\146",
-            "\1\147\11\uffff\1\150",
-            "\1\151\1\uffff\1\152",
-            "\1\153",
-            "\1\154",
-            "\1\156\4\uffff\1\155",
-            "\1\157",
-            "\1\160",
+            "\1\151\11\uffff\1\152",
+            "\1\153\1\uffff\1\154",
+            "\1\155",
+            "\1\156",
+            "\1\160\4\uffff\1\157",
             "\1\161",
             "\1\162",
             "\1\163",
             "\1\164",
+            "\1\165",
+            "\1\166",
             "\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
-            "\0\165",
-            "\1\166\4\uffff\1\167",
+            "\0\167",
+            "\1\170\4\uffff\1\171",
             "",
             "",
-            "\1\171",
-            "\1\173\13\uffff\1\172",
-            "\1\174",
-            "\1\175",
+            "\1\173",
+            "\1\175\13\uffff\1\174",
             "\1\176",
-            "",
-            "",
             "\1\177",
-            "\1\u0080\3\uffff\1\u0081",
-            "\1\u0082",
-            "\1\u0085\1\uffff\1\u0083\17\uffff\1\u0084",
-            "\1\u0086",
-            "\1\u0087",
+            "\1\u0080",
             "",
+            "",
+            "\1\u0081",
+            "\1\u0082\3\uffff\1\u0083",
+            "\1\u0084",
+            "\1\u0087\1\uffff\1\u0085\17\uffff\1\u0086",
             "\1\u0088",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u0089\25\60",
-            "\1\u008b",
-            "\1\u008c",
+            "\1\u0089",
+            "",
+            "\1\u008a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u008b\25\60",
             "\1\u008d",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u008e",
             "\1\u008f",
-            "\1\u0090",
-            "\1\u0091\5\uffff\1\u0092",
-            "\1\u0093",
-            "\1\u0094",
-            "\1\u0096\4\uffff\1\u0095",
-            "\1\u0097",
-            "\1\u0098",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0091",
+            "\1\u0092",
+            "\1\u0093\5\uffff\1\u0094",
+            "\1\u0095",
+            "\1\u0096",
+            "\1\u0098\4\uffff\1\u0097",
             "\1\u0099",
             "\1\u009a",
             "\1\u009b",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u009c",
             "\1\u009d",
             "\1\u009e",
-            "\1\u009f",
-            "\1\u00a0\20\uffff\1\u00a1",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00a0",
+            "\1\u00a1",
             "\1\u00a2",
-            "\1\u00a3",
-            "\1\u00a4",
-            "",
-            "",
+            "\1\u00a3\20\uffff\1\u00a4",
             "\1\u00a5",
             "\1\u00a6",
             "\1\u00a7",
+            "",
+            "",
             "\1\u00a8",
             "\1\u00a9",
             "\1\u00aa",
-            "\1\u00ab\1\uffff\1\u00ac\15\uffff\1\u00ad",
-            "\1\u00af\7\uffff\1\u00ae",
-            "\1\u00b0",
-            "",
-            "",
-            "",
-            "\1\u00b1",
-            "\1\u00b2",
+            "\1\u00ab",
+            "\1\u00ac",
+            "\1\u00ad",
+            "\1\u00ae\1\uffff\1\u00af\15\uffff\1\u00b0",
+            "\1\u00b2\7\uffff\1\u00b1",
             "\1\u00b3",
-            "\1\u00b4",
             "",
+            "",
+            "",
+            "\1\u00b4",
             "\1\u00b5",
             "\1\u00b6",
             "\1\u00b7",
             "\1\u00b8",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00b9",
             "\1\u00ba",
+            "",
             "\1\u00bb",
             "\1\u00bc",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00be",
+            "\1\u00bf",
             "\1\u00c0",
-            "\1\u00c1",
-            "\1\u00c2",
-            "\1\u00c3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u00c4",
-            "",
-            "",
-            "",
-            "",
             "\1\u00c5",
-            "\1\u00c7\13\uffff\1\u00c6",
+            "\1\u00c6",
+            "\1\u00c7",
             "\1\u00c8",
+            "",
+            "",
+            "",
+            "",
             "\1\u00c9",
-            "\1\u00ca",
-            "\1\u00cb",
+            "\1\u00cb\13\uffff\1\u00ca",
             "\1\u00cc",
             "\1\u00cd",
             "\1\u00ce",
@@ -3679,98 +3735,98 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00d4",
             "\1\u00d5",
             "\1\u00d6",
-            "",
             "\1\u00d7",
             "\1\u00d8",
             "\1\u00d9",
-            "",
             "\1\u00da",
+            "",
             "\1\u00db",
             "\1\u00dc",
             "\1\u00dd",
+            "",
             "\1\u00de",
             "\1\u00df",
             "\1\u00e0",
             "\1\u00e1",
             "\1\u00e2",
-            "\1\u00e3\6\uffff\1\u00e4",
+            "\1\u00e3",
+            "\1\u00e4",
             "\1\u00e5",
             "\1\u00e6",
             "\1\u00e7",
-            "",
-            "\1\u00e8",
-            "\1\u00e9",
+            "\1\u00e8\6\uffff\1\u00e9",
             "\1\u00ea",
             "\1\u00eb",
             "\1\u00ec",
-            "\1\u00ee\12\uffff\1\u00ed",
+            "",
+            "\1\u00ed",
+            "\1\u00ee",
             "\1\u00ef",
             "\1\u00f0",
             "\1\u00f1",
-            "\1\u00f2",
-            "\1\u00f3",
+            "\1\u00f3\12\uffff\1\u00f2",
             "\1\u00f4",
             "\1\u00f5",
             "\1\u00f6",
-            "\1\u00f8\10\uffff\1\u00f7",
+            "\1\u00f7",
+            "\1\u00f8",
             "\1\u00f9",
             "\1\u00fa",
             "\1\u00fb",
-            "\1\u00fc",
-            "\1\u00fd",
+            "\1\u00fd\10\uffff\1\u00fc",
             "\1\u00fe",
             "\1\u00ff",
             "\1\u0100",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0101",
             "\1\u0102",
             "\1\u0103",
             "\1\u0104",
             "\1\u0105",
-            "",
             "\1\u0106",
             "\1\u0107",
+            "\1\u0108",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u010a",
             "\1\u010b",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u010c",
             "\1\u010d",
-            "\1\u010e",
-            "\1\u010f",
-            "\1\u0110\6\uffff\1\u0111",
-            "\1\u0112",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0111",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0113",
             "\1\u0114",
             "\1\u0115",
-            "\1\u0116",
-            "\1\u0117",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0116\6\uffff\1\u0117",
+            "\1\u0118",
             "\1\u0119",
             "\1\u011a",
             "\1\u011b",
             "\1\u011c",
-            "\1\u011f\22\uffff\1\u011d\15\uffff\1\u011e",
+            "\1\u011d",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u011f",
             "\1\u0120",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0121",
             "\1\u0122",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0124",
-            "\1\u0125",
+            "\1\u0125\22\uffff\1\u0123\15\uffff\1\u0124",
             "\1\u0126",
-            "\1\u0127",
-            "\1\u0128",
-            "\1\u0129",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u012a\7\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0128",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u012a",
+            "\1\u012b",
+            "\1\u012c",
             "\1\u012d",
             "\1\u012e",
             "\1\u012f",
-            "\1\u0130",
-            "\1\u0131",
-            "\1\u0132",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0130\7\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0133",
             "\1\u0134",
             "\1\u0135",
@@ -3783,45 +3839,44 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u013c",
             "\1\u013d",
             "\1\u013e",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u013f",
             "\1\u0140",
             "\1\u0141",
             "\1\u0142",
             "\1\u0143",
-            "\1\u0145\24\uffff\1\u0144",
-            "\1\u0146",
+            "\1\u0144",
+            "\1\u0145",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0147",
             "\1\u0148",
             "\1\u0149",
             "\1\u014a",
-            "\1\u014b",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u014c\24\uffff\1\u014b",
             "\1\u014d",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u014e",
             "\1\u014f",
             "\1\u0150",
             "\1\u0151",
             "\1\u0152",
-            "\1\u0153",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0154",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0157",
+            "\1\u0158",
+            "",
+            "\1\u0159",
+            "\1\u015a",
+            "\1\u015b",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
             "",
-            "\1\u0155",
-            "",
-            "\1\u0156",
-            "\1\u0157",
-            "\1\u0158",
-            "\1\u0159",
-            "\1\u015a",
-            "\1\u015b",
-            "\1\u015c",
             "\1\u015d",
+            "",
             "\1\u015e",
             "\1\u015f",
             "\1\u0160",
-            "",
             "\1\u0161",
             "\1\u0162",
             "\1\u0163",
@@ -3832,342 +3887,360 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u0168",
             "",
             "\1\u0169",
-            "",
             "\1\u016a",
             "\1\u016b",
             "\1\u016c",
             "\1\u016d",
             "\1\u016e",
             "\1\u016f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0170",
             "",
+            "\1\u0171",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0172",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0173",
             "\1\u0174",
             "\1\u0175",
             "\1\u0176",
             "\1\u0177",
-            "\1\u0178",
-            "\1\u0179",
-            "\1\u017a",
-            "\1\u017b",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u017a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u017c",
             "\1\u017d",
             "\1\u017e",
             "\1\u017f",
             "\1\u0180",
             "\1\u0181",
             "\1\u0182",
-            "",
-            "\12\60\7\uffff\17\60\1\u0183\12\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0185",
+            "\1\u0183",
+            "\1\u0184",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0186",
             "\1\u0187",
             "\1\u0188",
             "\1\u0189",
             "\1\u018a",
             "\1\u018b",
-            "\1\u018c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\17\60\1\u018c\12\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u018e",
-            "\1\u018f",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0190",
-            "",
             "\1\u0191",
             "\1\u0192",
             "\1\u0193",
             "\1\u0194",
             "\1\u0195",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0197",
             "\1\u0198",
+            "",
             "\1\u0199",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u019a\7\60",
+            "",
+            "",
+            "\1\u019a",
+            "\1\u019b",
             "\1\u019c",
             "\1\u019d",
             "\1\u019e",
-            "\1\u019f",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01a0",
             "\1\u01a1",
             "\1\u01a2",
-            "\1\u01a3",
-            "\1\u01a4",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01a3\7\60",
             "\1\u01a5",
             "\1\u01a6",
             "\1\u01a7",
             "\1\u01a8",
             "\1\u01a9",
             "\1\u01aa",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ab",
             "\1\u01ac",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ad",
             "\1\u01ae",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01af\21\60",
+            "\1\u01af",
+            "\1\u01b0",
             "\1\u01b1",
             "\1\u01b2",
-            "",
-            "",
             "\1\u01b3",
-            "",
-            "\1\u01b4",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01b5",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01b6\7\60",
-            "\1\u01b8",
-            "\1\u01b9",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01ba\7\60",
-            "\1\u01bc",
-            "\1\u01bd",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01b7",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01b8\21\60",
+            "\1\u01ba",
+            "\1\u01bb",
             "",
+            "",
+            "\1\u01bc",
+            "",
+            "\1\u01bd",
             "\1\u01be",
             "\1\u01bf",
-            "\1\u01c0",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01c0\7\60",
             "\1\u01c2",
             "\1\u01c3",
-            "\1\u01c4",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01c4\7\60",
             "\1\u01c6",
             "\1\u01c7",
+            "",
             "\1\u01c8",
             "\1\u01c9",
             "\1\u01ca",
-            "\1\u01cb",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01cc",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01cd",
             "\1\u01ce",
-            "\1\u01cf",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u01d0",
             "\1\u01d1",
             "\1\u01d2",
             "\1\u01d3",
-            "",
             "\1\u01d4",
             "\1\u01d5",
+            "",
             "\1\u01d6",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
             "\1\u01d8",
             "\1\u01d9",
-            "\1\u01da",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01db",
             "\1\u01dc",
             "\1\u01dd",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u01de",
             "\1\u01df",
             "\1\u01e0",
-            "\1\u01e1",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\1\u01e2",
             "\1\u01e3",
             "\1\u01e4",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01e5",
             "\1\u01e6",
-            "",
+            "\1\u01e7",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\1\u01e8",
             "\1\u01e9",
-            "",
             "\1\u01ea",
             "\1\u01eb",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ec",
             "\1\u01ed",
             "\1\u01ee",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
             "\1\u01f0",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u01f3\31\uffff\1\u01f4",
+            "\1\u01f2",
+            "\1\u01f3",
+            "",
+            "\1\u01f4",
             "\1\u01f5",
-            "\1\u01f6",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01f7",
             "\1\u01f8",
-            "",
             "\1\u01f9",
-            "\1\u01fa",
-            "\1\u01fb",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u01fc",
-            "\1\u01fd",
-            "\1\u01fe",
-            "\1\u01ff",
+            "\1\u01fb",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u01fe\31\uffff\1\u01ff",
             "\1\u0200",
             "\1\u0201",
             "\1\u0202",
-            "",
             "\1\u0203",
-            "\1\u0204",
             "",
+            "\1\u0204",
             "\1\u0205",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0206",
+            "",
+            "\1\u0207",
             "\1\u0208",
             "\1\u0209",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u020a\7\60",
+            "\1\u020a",
+            "\1\u020b",
+            "\1\u020c",
+            "\1\u020d",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u020e",
             "\1\u020f",
+            "",
             "\1\u0210",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\1\u0212",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0213",
             "\1\u0214",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0215\7\60",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0219",
+            "\1\u021a",
+            "\1\u021b",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u021c",
             "",
             "\1\u021d",
             "\1\u021e",
-            "",
             "\1\u021f",
-            "",
-            "",
-            "\1\u0220",
-            "\1\u0221",
-            "\1\u0222",
-            "\1\u0223",
-            "\1\u0224",
-            "\1\u0225",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0227",
+            "",
             "\1\u0228",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0229",
             "\1\u022a",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u022b",
+            "",
+            "",
             "\1\u022c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u022d",
+            "\1\u022e",
             "\1\u022f",
             "\1\u0230",
             "\1\u0231",
-            "\1\u0232",
-            "",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0234",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
+            "\1\u0236",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0237",
             "\1\u0238",
-            "",
-            "\1\u0239",
-            "\1\u023a",
-            "\1\u023b",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u023b",
+            "\1\u023c",
             "\1\u023d",
             "\1\u023e",
-            "\1\u023f",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0240",
-            "\1\u0241",
-            "\1\u0242",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0243",
             "\1\u0244",
+            "",
             "\1\u0245",
-            "",
-            "",
             "\1\u0246",
-            "",
             "\1\u0247",
             "",
-            "\1\u0248",
+            "",
+            "",
+            "",
+            "",
             "",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0249",
+            "\1\u024a",
             "\1\u024b",
             "\1\u024c",
-            "",
             "\1\u024d",
-            "",
-            "",
             "\1\u024e",
             "\1\u024f",
             "\1\u0250",
             "\1\u0251",
             "\1\u0252",
             "",
+            "",
             "\1\u0253",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0254",
+            "",
             "\1\u0255",
-            "\1\u0256",
-            "\1\u0257",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0258",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0259",
+            "",
+            "\1\u025a",
+            "",
+            "",
+            "\1\u025b",
             "\1\u025c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u025d",
             "\1\u025e",
-            "",
-            "",
             "\1\u025f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0260",
             "\1\u0261",
-            "\1\u0262",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0263",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0264",
             "\1\u0265",
+            "\1\u0266",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u026a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u026c",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "\1\u026d",
-            "\1\u026e",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u026f",
+            "\1\u0270",
+            "\1\u0271",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0273",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u0272",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
             "",
-            "\1\u0275",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u027c",
+            "\1\u027d",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0281",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\1\u0284",
             "",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
@@ -4204,23 +4277,13 @@ public class InternalRsamlTextLexer extends Lexer {
             this.transition = DFA16_transition;
         }
         public String getDescription() {
-            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
+            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
         }
         public int specialStateTransition(int s, IntStream _input) throws NoViableAltException {
             IntStream input = _input;
         	int _s = s;
             switch ( s ) {
                     case 0 : 
-                        int LA16_39 = input.LA(1);
-
-                        s = -1;
-                        if ( ((LA16_39>='\u0000' && LA16_39<='\uFFFF')) ) {s = 117;}
-
-                        else s = 42;
-
-                        if ( s>=0 ) return s;
-                        break;
-                    case 1 : 
                         int LA16_0 = input.LA(1);
 
                         s = -1;
@@ -4266,11 +4329,11 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         else if ( (LA16_0=='g') ) {s = 21;}
 
-                        else if ( (LA16_0=='v') ) {s = 22;}
+                        else if ( (LA16_0=='h') ) {s = 22;}
 
-                        else if ( (LA16_0=='.') ) {s = 23;}
+                        else if ( (LA16_0=='v') ) {s = 23;}
 
-                        else if ( (LA16_0=='h') ) {s = 24;}
+                        else if ( (LA16_0=='.') ) {s = 24;}
 
                         else if ( (LA16_0=='b') ) {s = 25;}
 
@@ -4307,6 +4370,16 @@ public class InternalRsamlTextLexer extends Lexer {
                         else if ( ((LA16_0>='\t' && LA16_0<='\n')||LA16_0=='\r'||LA16_0==' ') ) {s = 41;}
 
                         else if ( ((LA16_0>='\u0000' && LA16_0<='\b')||(LA16_0>='\u000B' && LA16_0<='\f')||(LA16_0>='\u000E' && LA16_0<='\u001F')||LA16_0=='!'||(LA16_0>='#' && LA16_0<='+')||(LA16_0>=':' && LA16_0<='@')||(LA16_0>='[' && LA16_0<=']')||LA16_0=='`'||LA16_0=='|'||(LA16_0>='~' && LA16_0<='\uFFFF')) ) {s = 42;}
+
+                        if ( s>=0 ) return s;
+                        break;
+                    case 1 : 
+                        int LA16_39 = input.LA(1);
+
+                        s = -1;
+                        if ( ((LA16_39>='\u0000' && LA16_39<='\uFFFF')) ) {s = 119;}
+
+                        else s = 42;
 
                         if ( s>=0 ) return s;
                         break;

@@ -22,7 +22,7 @@ import java.util.ArrayList;
 @SuppressWarnings("all")
 public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final String[] tokenNames = new String[] {
-        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
+        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'host'", "'linkLatency'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
     };
     public static final int T__50=50;
     public static final int T__59=59;
@@ -112,7 +112,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final int T__75=75;
     public static final int T__76=76;
     public static final int T__80=80;
+    public static final int T__111=111;
     public static final int T__81=81;
+    public static final int T__110=110;
     public static final int T__82=82;
     public static final int T__83=83;
     public static final int RULE_WS=9;
@@ -275,7 +277,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt1=2;
             int LA1_0 = input.LA(1);
 
-            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=41)||(LA1_0>=43 && LA1_0<=75)||(LA1_0>=77 && LA1_0<=108)) ) {
+            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=41)||(LA1_0>=43 && LA1_0<=77)||(LA1_0>=79 && LA1_0<=110)) ) {
                 alt1=1;
             }
             switch (alt1) {
@@ -382,7 +384,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt2=12;
                     }
                     break;
-                case 71:
+                case 73:
                     {
                     alt2=13;
                     }
@@ -1592,7 +1594,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt4=2;
             int LA4_0 = input.LA(1);
 
-            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=41)||(LA4_0>=43 && LA4_0<=75)||(LA4_0>=77 && LA4_0<=108)) ) {
+            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=41)||(LA4_0>=43 && LA4_0<=77)||(LA4_0>=79 && LA4_0<=110)) ) {
                 alt4=1;
             }
             switch (alt4) {
@@ -1996,7 +1998,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt6=2;
             int LA6_0 = input.LA(1);
 
-            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=41)||(LA6_0>=43 && LA6_0<=75)||(LA6_0>=77 && LA6_0<=108)) ) {
+            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=41)||(LA6_0>=43 && LA6_0<=77)||(LA6_0>=79 && LA6_0<=110)) ) {
                 alt6=1;
             }
             switch (alt6) {
@@ -2605,7 +2607,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt10=2;
             int LA10_0 = input.LA(1);
 
-            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=41)||(LA10_0>=43 && LA10_0<=75)||(LA10_0>=77 && LA10_0<=108)) ) {
+            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=41)||(LA10_0>=43 && LA10_0<=77)||(LA10_0>=79 && LA10_0<=110)) ) {
                 alt10=1;
             }
             switch (alt10) {
@@ -3084,7 +3086,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt13=2;
             int LA13_0 = input.LA(1);
 
-            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=41)||(LA13_0>=43 && LA13_0<=75)||(LA13_0>=77 && LA13_0<=108)) ) {
+            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=41)||(LA13_0>=43 && LA13_0<=77)||(LA13_0>=79 && LA13_0<=110)) ) {
                 alt13=1;
             }
             switch (alt13) {
@@ -3450,7 +3452,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt16=2;
             int LA16_0 = input.LA(1);
 
-            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=41)||(LA16_0>=43 && LA16_0<=75)||(LA16_0>=77 && LA16_0<=108)) ) {
+            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=41)||(LA16_0>=43 && LA16_0<=77)||(LA16_0>=79 && LA16_0<=110)) ) {
                 alt16=1;
             }
             switch (alt16) {
@@ -3918,7 +3920,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt20=2;
             int LA20_0 = input.LA(1);
 
-            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=41)||(LA20_0>=43 && LA20_0<=75)||(LA20_0>=77 && LA20_0<=108)) ) {
+            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=41)||(LA20_0>=43 && LA20_0<=77)||(LA20_0>=79 && LA20_0<=110)) ) {
                 alt20=1;
             }
             switch (alt20) {
@@ -4321,7 +4323,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt22=2;
             int LA22_0 = input.LA(1);
 
-            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=41)||(LA22_0>=43 && LA22_0<=75)||(LA22_0>=77 && LA22_0<=108)) ) {
+            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=41)||(LA22_0>=43 && LA22_0<=77)||(LA22_0>=79 && LA22_0<=110)) ) {
                 alt22=1;
             }
             switch (alt22) {
@@ -4727,7 +4729,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt24=2;
             int LA24_0 = input.LA(1);
 
-            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=41)||(LA24_0>=43 && LA24_0<=75)||(LA24_0>=77 && LA24_0<=108)) ) {
+            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=41)||(LA24_0>=43 && LA24_0<=77)||(LA24_0>=79 && LA24_0<=110)) ) {
                 alt24=1;
             }
             switch (alt24) {
@@ -5134,7 +5136,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt26=2;
             int LA26_0 = input.LA(1);
 
-            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=41)||(LA26_0>=43 && LA26_0<=75)||(LA26_0>=77 && LA26_0<=108)) ) {
+            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=41)||(LA26_0>=43 && LA26_0<=77)||(LA26_0>=79 && LA26_0<=110)) ) {
                 alt26=1;
             }
             switch (alt26) {
@@ -5533,7 +5535,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt28=2;
             int LA28_0 = input.LA(1);
 
-            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=41)||(LA28_0>=43 && LA28_0<=75)||(LA28_0>=77 && LA28_0<=108)) ) {
+            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=41)||(LA28_0>=43 && LA28_0<=77)||(LA28_0>=79 && LA28_0<=110)) ) {
                 alt28=1;
             }
             switch (alt28) {
@@ -5809,7 +5811,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt30=2;
             int LA30_0 = input.LA(1);
 
-            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=41)||(LA30_0>=43 && LA30_0<=75)||(LA30_0>=77 && LA30_0<=108)) ) {
+            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=41)||(LA30_0>=43 && LA30_0<=77)||(LA30_0>=79 && LA30_0<=110)) ) {
                 alt30=1;
             }
             switch (alt30) {
@@ -6094,7 +6096,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt32=2;
             int LA32_0 = input.LA(1);
 
-            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=41)||(LA32_0>=43 && LA32_0<=75)||(LA32_0>=77 && LA32_0<=108)) ) {
+            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=41)||(LA32_0>=43 && LA32_0<=77)||(LA32_0>=79 && LA32_0<=110)) ) {
                 alt32=1;
             }
             switch (alt32) {
@@ -6432,7 +6434,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt35=2;
             int LA35_0 = input.LA(1);
 
-            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=41)||(LA35_0>=43 && LA35_0<=75)||(LA35_0>=77 && LA35_0<=108)) ) {
+            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=41)||(LA35_0>=43 && LA35_0<=77)||(LA35_0>=79 && LA35_0<=110)) ) {
                 alt35=1;
             }
             switch (alt35) {
@@ -6758,7 +6760,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt38=2;
             int LA38_0 = input.LA(1);
 
-            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=41)||(LA38_0>=43 && LA38_0<=75)||(LA38_0>=77 && LA38_0<=108)) ) {
+            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=41)||(LA38_0>=43 && LA38_0<=77)||(LA38_0>=79 && LA38_0<=110)) ) {
                 alt38=1;
             }
             switch (alt38) {
@@ -7103,7 +7105,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt41=2;
             int LA41_0 = input.LA(1);
 
-            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=41)||(LA41_0>=43 && LA41_0<=75)||(LA41_0>=77 && LA41_0<=108)) ) {
+            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=41)||(LA41_0>=43 && LA41_0<=77)||(LA41_0>=79 && LA41_0<=110)) ) {
                 alt41=1;
             }
             switch (alt41) {
@@ -7437,7 +7439,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt43=2;
             int LA43_0 = input.LA(1);
 
-            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=41)||(LA43_0>=43 && LA43_0<=75)||(LA43_0>=77 && LA43_0<=108)) ) {
+            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=41)||(LA43_0>=43 && LA43_0<=77)||(LA43_0>=79 && LA43_0<=110)) ) {
                 alt43=1;
             }
             switch (alt43) {
@@ -7667,7 +7669,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt45=2;
             int LA45_0 = input.LA(1);
 
-            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=41)||(LA45_0>=43 && LA45_0<=75)||(LA45_0>=77 && LA45_0<=108)) ) {
+            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=41)||(LA45_0>=43 && LA45_0<=77)||(LA45_0>=79 && LA45_0<=110)) ) {
                 alt45=1;
             }
             switch (alt45) {
@@ -7970,7 +7972,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleProcessor"
-    // InternalRsamlText.g:3330:1: ruleProcessor returns [EObject current=null] : ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:3330:1: ruleProcessor returns [EObject current=null] : ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) ;
     public final EObject ruleProcessor() throws RecognitionException {
         EObject current = null;
 
@@ -7979,8 +7981,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         Token otherlv_5=null;
         Token otherlv_7=null;
         Token otherlv_9=null;
+        Token lv_host_10_0=null;
         Token otherlv_11=null;
-        Token otherlv_13=null;
+        Token otherlv_15=null;
+        Token otherlv_17=null;
+        Token otherlv_19=null;
         AntlrDatatypeRuleToken lv_name_2_0 = null;
 
         EObject this_Described_4 = null;
@@ -7989,16 +7994,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
         AntlrDatatypeRuleToken lv_core_8_0 = null;
 
+        AntlrDatatypeRuleToken lv_linkLatency_12_0 = null;
+
+        Enumerator lv_timeUnit_13_0 = null;
+
+        EObject this_Unit_14 = null;
+
 
 
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3336:2: ( ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:3337:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_13= '}' )
+            // InternalRsamlText.g:3336:2: ( ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3337:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3337:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_13= '}' )
-            // InternalRsamlText.g:3338:3: () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_13= '}'
+            // InternalRsamlText.g:3337:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
+            // InternalRsamlText.g:3338:3: () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}'
             {
             // InternalRsamlText.g:3338:3: ()
             // InternalRsamlText.g:3339:4: 
@@ -8019,7 +8030,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt48=2;
             int LA48_0 = input.LA(1);
 
-            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=41)||(LA48_0>=43 && LA48_0<=75)||(LA48_0>=77 && LA48_0<=108)) ) {
+            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=41)||(LA48_0>=43 && LA48_0<=77)||(LA48_0>=79 && LA48_0<=110)) ) {
                 alt48=1;
             }
             switch (alt48) {
@@ -8061,10 +8072,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getProcessorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3372:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:3372:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop50:
             do {
-                int alt50=5;
+                int alt50=8;
                 switch ( input.LA(1) ) {
                 case 16:
                     {
@@ -8084,6 +8095,21 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 case 70:
                     {
                     alt50=4;
+                    }
+                    break;
+                case 71:
+                    {
+                    alt50=5;
+                    }
+                    break;
+                case 17:
+                    {
+                    alt50=6;
+                    }
+                    break;
+                case 72:
+                    {
+                    alt50=7;
                     }
                     break;
 
@@ -8206,20 +8232,161 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3437:4: (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3437:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:3437:4: (otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3438:5: otherlv_9= 'modules' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3437:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3438:5: otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) )
             	    {
-            	    otherlv_9=(Token)match(input,70,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,70,FOLLOW_8); 
 
-            	    					newLeafNode(otherlv_9, grammarAccess.getProcessorAccess().getModulesKeyword_4_3_0());
+            	    					newLeafNode(otherlv_9, grammarAccess.getProcessorAccess().getHostKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3442:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3443:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3442:5: ( (lv_host_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3443:6: (lv_host_10_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:3443:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3444:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3443:6: (lv_host_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:3444:7: lv_host_10_0= RULE_STRING
+            	    {
+            	    lv_host_10_0=(Token)match(input,RULE_STRING,FOLLOW_40); 
+
+            	    							newLeafNode(lv_host_10_0, grammarAccess.getProcessorAccess().getHostSTRINGTerminalRuleCall_4_3_1_0());
+            	    						
+
+            	    							if (current==null) {
+            	    								current = createModelElement(grammarAccess.getProcessorRule());
+            	    							}
+            	    							setWithLastConsumed(
+            	    								current,
+            	    								"host",
+            	    								lv_host_10_0,
+            	    								"org.rsaml.text.RsamlText.STRING");
+            	    						
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+            	    break;
+            	case 5 :
+            	    // InternalRsamlText.g:3462:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
+            	    {
+            	    // InternalRsamlText.g:3462:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3463:5: otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) )
+            	    {
+            	    otherlv_11=(Token)match(input,71,FOLLOW_12); 
+
+            	    					newLeafNode(otherlv_11, grammarAccess.getProcessorAccess().getLinkLatencyKeyword_4_4_0());
+            	    				
+            	    // InternalRsamlText.g:3467:5: ( (lv_linkLatency_12_0= ruleReal ) )
+            	    // InternalRsamlText.g:3468:6: (lv_linkLatency_12_0= ruleReal )
+            	    {
+            	    // InternalRsamlText.g:3468:6: (lv_linkLatency_12_0= ruleReal )
+            	    // InternalRsamlText.g:3469:7: lv_linkLatency_12_0= ruleReal
+            	    {
+
+            	    							newCompositeNode(grammarAccess.getProcessorAccess().getLinkLatencyRealParserRuleCall_4_4_1_0());
+            	    						
+            	    pushFollow(FOLLOW_9);
+            	    lv_linkLatency_12_0=ruleReal();
+
+            	    state._fsp--;
+
+
+            	    							if (current==null) {
+            	    								current = createModelElementForParent(grammarAccess.getProcessorRule());
+            	    							}
+            	    							set(
+            	    								current,
+            	    								"linkLatency",
+            	    								lv_linkLatency_12_0,
+            	    								"org.rsaml.text.RsamlText.Real");
+            	    							afterParserOrEnumRuleCall();
+            	    						
+
+            	    }
+
+
+            	    }
+
+            	    // InternalRsamlText.g:3486:5: ( (lv_timeUnit_13_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3487:6: (lv_timeUnit_13_0= ruleTimeUnit )
+            	    {
+            	    // InternalRsamlText.g:3487:6: (lv_timeUnit_13_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3488:7: lv_timeUnit_13_0= ruleTimeUnit
+            	    {
+
+            	    							newCompositeNode(grammarAccess.getProcessorAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
+            	    						
+            	    pushFollow(FOLLOW_40);
+            	    lv_timeUnit_13_0=ruleTimeUnit();
+
+            	    state._fsp--;
+
+
+            	    							if (current==null) {
+            	    								current = createModelElementForParent(grammarAccess.getProcessorRule());
+            	    							}
+            	    							set(
+            	    								current,
+            	    								"timeUnit",
+            	    								lv_timeUnit_13_0,
+            	    								"org.rsaml.text.RsamlText.TimeUnit");
+            	    							afterParserOrEnumRuleCall();
+            	    						
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+            	    break;
+            	case 6 :
+            	    // InternalRsamlText.g:3507:4: this_Unit_14= ruleUnit[$current]
+            	    {
+
+            	    				if (current==null) {
+            	    					current = createModelElement(grammarAccess.getProcessorRule());
+            	    				}
+            	    				newCompositeNode(grammarAccess.getProcessorAccess().getUnitParserRuleCall_4_5());
+            	    			
+            	    pushFollow(FOLLOW_40);
+            	    this_Unit_14=ruleUnit(current);
+
+            	    state._fsp--;
+
+
+            	    				current = this_Unit_14;
+            	    				afterParserOrEnumRuleCall();
+            	    			
+
+            	    }
+            	    break;
+            	case 7 :
+            	    // InternalRsamlText.g:3519:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
+            	    {
+            	    // InternalRsamlText.g:3519:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3520:5: otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
+            	    {
+            	    otherlv_15=(Token)match(input,72,FOLLOW_15); 
+
+            	    					newLeafNode(otherlv_15, grammarAccess.getProcessorAccess().getModulesKeyword_4_6_0());
+            	    				
+            	    // InternalRsamlText.g:3524:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3525:6: ( ruleQualifiedName )
+            	    {
+            	    // InternalRsamlText.g:3525:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3526:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8227,7 +8394,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    							}
             	    						
 
-            	    							newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_1_0());
+            	    							newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_1_0());
             	    						
             	    pushFollow(FOLLOW_41);
             	    ruleQualifiedName();
@@ -8243,7 +8410,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3458:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3540:5: (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
             	    loop49:
             	    do {
             	        int alt49=2;
@@ -8256,17 +8423,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt49) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3459:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3541:6: otherlv_17= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_11=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_17=(Token)match(input,28,FOLLOW_15); 
 
-            	    	    						newLeafNode(otherlv_11, grammarAccess.getProcessorAccess().getCommaKeyword_4_3_2_0());
+            	    	    						newLeafNode(otherlv_17, grammarAccess.getProcessorAccess().getCommaKeyword_4_6_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3463:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3464:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3545:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3546:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3464:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3465:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3546:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3547:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -8274,7 +8441,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    	    								}
             	    	    							
 
-            	    	    								newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_2_1_0());
+            	    	    								newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_2_1_0());
             	    	    							
             	    	    pushFollow(FOLLOW_41);
             	    	    ruleQualifiedName();
@@ -8311,9 +8478,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_19=(Token)match(input,15,FOLLOW_2); 
 
-            			newLeafNode(otherlv_13, grammarAccess.getProcessorAccess().getRightCurlyBracketKeyword_5());
+            			newLeafNode(otherlv_19, grammarAccess.getProcessorAccess().getRightCurlyBracketKeyword_5());
             		
 
             }
@@ -8338,7 +8505,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleLatencyRequirement"
-    // InternalRsamlText.g:3490:1: entryRuleLatencyRequirement returns [EObject current=null] : iv_ruleLatencyRequirement= ruleLatencyRequirement EOF ;
+    // InternalRsamlText.g:3572:1: entryRuleLatencyRequirement returns [EObject current=null] : iv_ruleLatencyRequirement= ruleLatencyRequirement EOF ;
     public final EObject entryRuleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8346,8 +8513,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3490:59: (iv_ruleLatencyRequirement= ruleLatencyRequirement EOF )
-            // InternalRsamlText.g:3491:2: iv_ruleLatencyRequirement= ruleLatencyRequirement EOF
+            // InternalRsamlText.g:3572:59: (iv_ruleLatencyRequirement= ruleLatencyRequirement EOF )
+            // InternalRsamlText.g:3573:2: iv_ruleLatencyRequirement= ruleLatencyRequirement EOF
             {
              newCompositeNode(grammarAccess.getLatencyRequirementRule()); 
             pushFollow(FOLLOW_1);
@@ -8374,7 +8541,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyRequirement"
-    // InternalRsamlText.g:3497:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
+    // InternalRsamlText.g:3579:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
     public final EObject ruleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8404,14 +8571,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3503:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
-            // InternalRsamlText.g:3504:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3585:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3586:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3504:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
-            // InternalRsamlText.g:3505:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
+            // InternalRsamlText.g:3586:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3587:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
             {
-            // InternalRsamlText.g:3505:3: ()
-            // InternalRsamlText.g:3506:4: 
+            // InternalRsamlText.g:3587:3: ()
+            // InternalRsamlText.g:3588:4: 
             {
 
             				current = forceCreateModelElement(
@@ -8421,23 +8588,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,71,FOLLOW_3); 
+            otherlv_1=(Token)match(input,73,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getLatencyRequirementAccess().getLatencyKeyword_1());
             		
-            // InternalRsamlText.g:3516:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3598:3: ( (lv_name_2_0= ruleName ) )?
             int alt51=2;
             int LA51_0 = input.LA(1);
 
-            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=41)||(LA51_0>=43 && LA51_0<=75)||(LA51_0>=77 && LA51_0<=108)) ) {
+            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=41)||(LA51_0>=43 && LA51_0<=77)||(LA51_0>=79 && LA51_0<=110)) ) {
                 alt51=1;
             }
             switch (alt51) {
                 case 1 :
-                    // InternalRsamlText.g:3517:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3599:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3517:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3518:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3599:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3600:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getLatencyRequirementAccess().getNameNameParserRuleCall_2_0());
@@ -8471,7 +8638,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getLatencyRequirementAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3539:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
+            // InternalRsamlText.g:3621:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
             loop53:
             do {
                 int alt53=8;
@@ -8481,22 +8648,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt53=1;
                     }
                     break;
-                case 72:
+                case 74:
                     {
                     alt53=2;
                     }
                     break;
-                case 73:
+                case 75:
                     {
                     alt53=3;
                     }
                     break;
-                case 74:
+                case 76:
                     {
                     alt53=4;
                     }
                     break;
-                case 75:
+                case 77:
                     {
                     alt53=5;
                     }
@@ -8516,7 +8683,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt53) {
             	case 1 :
-            	    // InternalRsamlText.g:3540:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3622:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -8537,20 +8704,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3552:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3634:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3552:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3553:5: otherlv_5= 'from' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3634:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3635:5: otherlv_5= 'from' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,72,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,74,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getLatencyRequirementAccess().getFromKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3557:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3558:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3639:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3640:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3558:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3559:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3640:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3641:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8581,20 +8748,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3575:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3657:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3575:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3576:5: otherlv_7= 'to' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3657:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3658:5: otherlv_7= 'to' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,73,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,75,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getLatencyRequirementAccess().getToKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3580:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3581:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3662:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3663:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3581:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3582:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3663:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3664:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8625,20 +8792,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3598:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3680:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3598:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3599:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3680:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3681:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_9=(Token)match(input,74,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,76,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getViaKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3603:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3604:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3685:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3686:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3604:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3605:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3686:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3687:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8662,7 +8829,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3619:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3701:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    loop52:
             	    do {
             	        int alt52=2;
@@ -8675,17 +8842,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt52) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3620:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3702:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_11=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_11, grammarAccess.getLatencyRequirementAccess().getCommaKeyword_4_3_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3624:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3625:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3706:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3707:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3625:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3626:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3707:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3708:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -8725,20 +8892,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:3643:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3725:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:3643:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:3644:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3725:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3726:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_13=(Token)match(input,75,FOLLOW_12); 
+            	    otherlv_13=(Token)match(input,77,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_13, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_4_0());
             	    				
-            	    // InternalRsamlText.g:3648:5: ( (lv_maxLatency_14_0= ruleReal ) )
-            	    // InternalRsamlText.g:3649:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3730:5: ( (lv_maxLatency_14_0= ruleReal ) )
+            	    // InternalRsamlText.g:3731:6: (lv_maxLatency_14_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:3649:6: (lv_maxLatency_14_0= ruleReal )
-            	    // InternalRsamlText.g:3650:7: lv_maxLatency_14_0= ruleReal
+            	    // InternalRsamlText.g:3731:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3732:7: lv_maxLatency_14_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_4_1_0());
@@ -8765,11 +8932,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3667:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:3668:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3749:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3750:6: (lv_timeUnit_15_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:3668:6: (lv_timeUnit_15_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:3669:7: lv_timeUnit_15_0= ruleTimeUnit
+            	    // InternalRsamlText.g:3750:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3751:7: lv_timeUnit_15_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
@@ -8803,20 +8970,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 6 :
-            	    // InternalRsamlText.g:3688:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3770:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
             	    {
-            	    // InternalRsamlText.g:3688:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
-            	    // InternalRsamlText.g:3689:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3770:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3771:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
             	    {
             	    otherlv_16=(Token)match(input,49,FOLLOW_44); 
 
             	    					newLeafNode(otherlv_16, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_5_0());
             	    				
-            	    // InternalRsamlText.g:3693:5: ( (lv_kind_17_0= ruleLatencyKind ) )
-            	    // InternalRsamlText.g:3694:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3775:5: ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3776:6: (lv_kind_17_0= ruleLatencyKind )
             	    {
-            	    // InternalRsamlText.g:3694:6: (lv_kind_17_0= ruleLatencyKind )
-            	    // InternalRsamlText.g:3695:7: lv_kind_17_0= ruleLatencyKind
+            	    // InternalRsamlText.g:3776:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3777:7: lv_kind_17_0= ruleLatencyKind
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_5_1_0());
@@ -8850,7 +9017,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 7 :
-            	    // InternalRsamlText.g:3714:4: this_Unit_18= ruleUnit[$current]
+            	    // InternalRsamlText.g:3796:4: this_Unit_18= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -8903,7 +9070,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleName"
-    // InternalRsamlText.g:3734:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
+    // InternalRsamlText.g:3816:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
     public final String entryRuleName() throws RecognitionException {
         String current = null;
 
@@ -8911,8 +9078,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3734:44: (iv_ruleName= ruleName EOF )
-            // InternalRsamlText.g:3735:2: iv_ruleName= ruleName EOF
+            // InternalRsamlText.g:3816:44: (iv_ruleName= ruleName EOF )
+            // InternalRsamlText.g:3817:2: iv_ruleName= ruleName EOF
             {
              newCompositeNode(grammarAccess.getNameRule()); 
             pushFollow(FOLLOW_1);
@@ -8939,7 +9106,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleName"
-    // InternalRsamlText.g:3741:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
+    // InternalRsamlText.g:3823:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
     public final AntlrDatatypeRuleToken ruleName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -8952,10 +9119,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3747:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
-            // InternalRsamlText.g:3748:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3829:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
+            // InternalRsamlText.g:3830:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             {
-            // InternalRsamlText.g:3748:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3830:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             int alt54=3;
             switch ( input.LA(1) ) {
             case RULE_ID:
@@ -9029,8 +9196,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 73:
             case 74:
             case 75:
+            case 76:
             case 77:
-            case 78:
             case 79:
             case 80:
             case 81:
@@ -9061,6 +9228,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 106:
             case 107:
             case 108:
+            case 109:
+            case 110:
                 {
                 alt54=3;
                 }
@@ -9074,7 +9243,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt54) {
                 case 1 :
-                    // InternalRsamlText.g:3749:3: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3831:3: this_ID_0= RULE_ID
                     {
                     this_ID_0=(Token)match(input,RULE_ID,FOLLOW_2); 
 
@@ -9087,7 +9256,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3757:3: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3839:3: this_STRING_1= RULE_STRING
                     {
                     this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_2); 
 
@@ -9100,7 +9269,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3765:3: this_Keyword_2= ruleKeyword
+                    // InternalRsamlText.g:3847:3: this_Keyword_2= ruleKeyword
                     {
 
                     			newCompositeNode(grammarAccess.getNameAccess().getKeywordParserRuleCall_2());
@@ -9142,7 +9311,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleQualifiedName"
-    // InternalRsamlText.g:3779:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
+    // InternalRsamlText.g:3861:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
     public final String entryRuleQualifiedName() throws RecognitionException {
         String current = null;
 
@@ -9150,8 +9319,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3779:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
-            // InternalRsamlText.g:3780:2: iv_ruleQualifiedName= ruleQualifiedName EOF
+            // InternalRsamlText.g:3861:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
+            // InternalRsamlText.g:3862:2: iv_ruleQualifiedName= ruleQualifiedName EOF
             {
              newCompositeNode(grammarAccess.getQualifiedNameRule()); 
             pushFollow(FOLLOW_1);
@@ -9178,7 +9347,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleQualifiedName"
-    // InternalRsamlText.g:3786:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
+    // InternalRsamlText.g:3868:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
     public final AntlrDatatypeRuleToken ruleQualifiedName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9192,13 +9361,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3792:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
-            // InternalRsamlText.g:3793:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3874:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
+            // InternalRsamlText.g:3875:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
             {
-            // InternalRsamlText.g:3793:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
-            // InternalRsamlText.g:3794:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3875:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3876:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
             {
-            // InternalRsamlText.g:3794:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
+            // InternalRsamlText.g:3876:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
             int alt55=2;
             int LA55_0 = input.LA(1);
 
@@ -9216,7 +9385,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt55) {
                 case 1 :
-                    // InternalRsamlText.g:3795:4: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3877:4: this_ID_0= RULE_ID
                     {
                     this_ID_0=(Token)match(input,RULE_ID,FOLLOW_45); 
 
@@ -9229,7 +9398,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3803:4: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3885:4: this_STRING_1= RULE_STRING
                     {
                     this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_45); 
 
@@ -9244,22 +9413,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            // InternalRsamlText.g:3811:3: (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3893:3: (kw= '.' this_Name_3= ruleName )*
             loop56:
             do {
                 int alt56=2;
                 int LA56_0 = input.LA(1);
 
-                if ( (LA56_0==76) ) {
+                if ( (LA56_0==78) ) {
                     alt56=1;
                 }
 
 
                 switch (alt56) {
             	case 1 :
-            	    // InternalRsamlText.g:3812:4: kw= '.' this_Name_3= ruleName
+            	    // InternalRsamlText.g:3894:4: kw= '.' this_Name_3= ruleName
             	    {
-            	    kw=(Token)match(input,76,FOLLOW_46); 
+            	    kw=(Token)match(input,78,FOLLOW_46); 
 
             	    				current.merge(kw);
             	    				newLeafNode(kw, grammarAccess.getQualifiedNameAccess().getFullStopKeyword_1_0());
@@ -9310,7 +9479,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleKeyword"
-    // InternalRsamlText.g:3832:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
+    // InternalRsamlText.g:3914:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
     public final String entryRuleKeyword() throws RecognitionException {
         String current = null;
 
@@ -9318,8 +9487,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3832:47: (iv_ruleKeyword= ruleKeyword EOF )
-            // InternalRsamlText.g:3833:2: iv_ruleKeyword= ruleKeyword EOF
+            // InternalRsamlText.g:3914:47: (iv_ruleKeyword= ruleKeyword EOF )
+            // InternalRsamlText.g:3915:2: iv_ruleKeyword= ruleKeyword EOF
             {
              newCompositeNode(grammarAccess.getKeywordRule()); 
             pushFollow(FOLLOW_1);
@@ -9346,7 +9515,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleKeyword"
-    // InternalRsamlText.g:3839:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
+    // InternalRsamlText.g:3921:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
     public final AntlrDatatypeRuleToken ruleKeyword() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9356,11 +9525,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3845:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
-            // InternalRsamlText.g:3846:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            // InternalRsamlText.g:3927:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
+            // InternalRsamlText.g:3928:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
             {
-            // InternalRsamlText.g:3846:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
-            int alt57=93;
+            // InternalRsamlText.g:3928:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            int alt57=95;
             switch ( input.LA(1) ) {
             case 11:
                 {
@@ -9472,7 +9641,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=22;
                 }
                 break;
-            case 71:
+            case 73:
                 {
                 alt57=23;
                 }
@@ -9642,37 +9811,37 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=56;
                 }
                 break;
-            case 70:
+            case 72:
                 {
                 alt57=57;
                 }
                 break;
-            case 72:
+            case 74:
                 {
                 alt57=58;
                 }
                 break;
-            case 73:
+            case 75:
                 {
                 alt57=59;
                 }
                 break;
-            case 74:
+            case 76:
                 {
                 alt57=60;
                 }
                 break;
-            case 75:
+            case 77:
                 {
                 alt57=61;
                 }
                 break;
-            case 77:
+            case 70:
                 {
                 alt57=62;
                 }
                 break;
-            case 78:
+            case 71:
                 {
                 alt57=63;
                 }
@@ -9827,6 +9996,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=93;
                 }
                 break;
+            case 109:
+                {
+                alt57=94;
+                }
+                break;
+            case 110:
+                {
+                alt57=95;
+                }
+                break;
             default:
                 NoViableAltException nvae =
                     new NoViableAltException("", 57, 0, input);
@@ -9836,7 +10015,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt57) {
                 case 1 :
-                    // InternalRsamlText.g:3847:3: kw= 'architecture'
+                    // InternalRsamlText.g:3929:3: kw= 'architecture'
                     {
                     kw=(Token)match(input,11,FOLLOW_2); 
 
@@ -9847,7 +10026,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3853:3: kw= 'layer'
+                    // InternalRsamlText.g:3935:3: kw= 'layer'
                     {
                     kw=(Token)match(input,23,FOLLOW_2); 
 
@@ -9858,7 +10037,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3859:3: kw= 'module'
+                    // InternalRsamlText.g:3941:3: kw= 'module'
                     {
                     kw=(Token)match(input,26,FOLLOW_2); 
 
@@ -9869,7 +10048,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:3865:3: kw= 'function'
+                    // InternalRsamlText.g:3947:3: kw= 'function'
                     {
                     kw=(Token)match(input,30,FOLLOW_2); 
 
@@ -9880,7 +10059,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:3871:3: kw= 'action'
+                    // InternalRsamlText.g:3953:3: kw= 'action'
                     {
                     kw=(Token)match(input,34,FOLLOW_2); 
 
@@ -9891,7 +10070,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:3877:3: kw= 'rtAction'
+                    // InternalRsamlText.g:3959:3: kw= 'rtAction'
                     {
                     kw=(Token)match(input,35,FOLLOW_2); 
 
@@ -9902,7 +10081,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:3883:3: kw= 'input'
+                    // InternalRsamlText.g:3965:3: kw= 'input'
                     {
                     kw=(Token)match(input,37,FOLLOW_2); 
 
@@ -9913,7 +10092,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:3889:3: kw= 'output'
+                    // InternalRsamlText.g:3971:3: kw= 'output'
                     {
                     kw=(Token)match(input,38,FOLLOW_2); 
 
@@ -9924,7 +10103,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 9 :
-                    // InternalRsamlText.g:3895:3: kw= 'connect'
+                    // InternalRsamlText.g:3977:3: kw= 'connect'
                     {
                     kw=(Token)match(input,41,FOLLOW_2); 
 
@@ -9935,7 +10114,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 10 :
-                    // InternalRsamlText.g:3901:3: kw= 'inhibitor'
+                    // InternalRsamlText.g:3983:3: kw= 'inhibitor'
                     {
                     kw=(Token)match(input,43,FOLLOW_2); 
 
@@ -9946,7 +10125,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 11 :
-                    // InternalRsamlText.g:3907:3: kw= 'suppressor'
+                    // InternalRsamlText.g:3989:3: kw= 'suppressor'
                     {
                     kw=(Token)match(input,47,FOLLOW_2); 
 
@@ -9957,7 +10136,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 12 :
-                    // InternalRsamlText.g:3913:3: kw= 'sensor'
+                    // InternalRsamlText.g:3995:3: kw= 'sensor'
                     {
                     kw=(Token)match(input,48,FOLLOW_2); 
 
@@ -9968,7 +10147,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 13 :
-                    // InternalRsamlText.g:3919:3: kw= 'actuator'
+                    // InternalRsamlText.g:4001:3: kw= 'actuator'
                     {
                     kw=(Token)match(input,50,FOLLOW_2); 
 
@@ -9979,7 +10158,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 14 :
-                    // InternalRsamlText.g:3925:3: kw= 'mission'
+                    // InternalRsamlText.g:4007:3: kw= 'mission'
                     {
                     kw=(Token)match(input,51,FOLLOW_2); 
 
@@ -9990,7 +10169,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 15 :
-                    // InternalRsamlText.g:3931:3: kw= 'goal'
+                    // InternalRsamlText.g:4013:3: kw= 'goal'
                     {
                     kw=(Token)match(input,52,FOLLOW_2); 
 
@@ -10001,7 +10180,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 16 :
-                    // InternalRsamlText.g:3937:3: kw= 'plan'
+                    // InternalRsamlText.g:4019:3: kw= 'plan'
                     {
                     kw=(Token)match(input,54,FOLLOW_2); 
 
@@ -10012,7 +10191,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 17 :
-                    // InternalRsamlText.g:3943:3: kw= 'activity'
+                    // InternalRsamlText.g:4025:3: kw= 'activity'
                     {
                     kw=(Token)match(input,56,FOLLOW_2); 
 
@@ -10023,7 +10202,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 18 :
-                    // InternalRsamlText.g:3949:3: kw= 'supervisor'
+                    // InternalRsamlText.g:4031:3: kw= 'supervisor'
                     {
                     kw=(Token)match(input,58,FOLLOW_2); 
 
@@ -10034,7 +10213,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 19 :
-                    // InternalRsamlText.g:3955:3: kw= 'order'
+                    // InternalRsamlText.g:4037:3: kw= 'order'
                     {
                     kw=(Token)match(input,61,FOLLOW_2); 
 
@@ -10045,7 +10224,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 20 :
-                    // InternalRsamlText.g:3961:3: kw= 'database'
+                    // InternalRsamlText.g:4043:3: kw= 'database'
                     {
                     kw=(Token)match(input,65,FOLLOW_2); 
 
@@ -10056,7 +10235,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 21 :
-                    // InternalRsamlText.g:3967:3: kw= 'knowledge'
+                    // InternalRsamlText.g:4049:3: kw= 'knowledge'
                     {
                     kw=(Token)match(input,66,FOLLOW_2); 
 
@@ -10067,7 +10246,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 22 :
-                    // InternalRsamlText.g:3973:3: kw= 'processor'
+                    // InternalRsamlText.g:4055:3: kw= 'processor'
                     {
                     kw=(Token)match(input,68,FOLLOW_2); 
 
@@ -10078,9 +10257,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 23 :
-                    // InternalRsamlText.g:3979:3: kw= 'latency'
+                    // InternalRsamlText.g:4061:3: kw= 'latency'
                     {
-                    kw=(Token)match(input,71,FOLLOW_2); 
+                    kw=(Token)match(input,73,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getLatencyKeyword_22());
@@ -10089,7 +10268,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 24 :
-                    // InternalRsamlText.g:3985:3: kw= 'description'
+                    // InternalRsamlText.g:4067:3: kw= 'description'
                     {
                     kw=(Token)match(input,16,FOLLOW_2); 
 
@@ -10100,7 +10279,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 25 :
-                    // InternalRsamlText.g:3991:3: kw= 'category'
+                    // InternalRsamlText.g:4073:3: kw= 'category'
                     {
                     kw=(Token)match(input,13,FOLLOW_2); 
 
@@ -10111,7 +10290,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 26 :
-                    // InternalRsamlText.g:3997:3: kw= 'declaredLayers'
+                    // InternalRsamlText.g:4079:3: kw= 'declaredLayers'
                     {
                     kw=(Token)match(input,14,FOLLOW_2); 
 
@@ -10122,7 +10301,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 27 :
-                    // InternalRsamlText.g:4003:3: kw= 'unit'
+                    // InternalRsamlText.g:4085:3: kw= 'unit'
                     {
                     kw=(Token)match(input,17,FOLLOW_2); 
 
@@ -10133,7 +10312,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 28 :
-                    // InternalRsamlText.g:4009:3: kw= 'type'
+                    // InternalRsamlText.g:4091:3: kw= 'type'
                     {
                     kw=(Token)match(input,18,FOLLOW_2); 
 
@@ -10144,7 +10323,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 29 :
-                    // InternalRsamlText.g:4015:3: kw= 'execType'
+                    // InternalRsamlText.g:4097:3: kw= 'execType'
                     {
                     kw=(Token)match(input,19,FOLLOW_2); 
 
@@ -10155,7 +10334,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 30 :
-                    // InternalRsamlText.g:4021:3: kw= 'period'
+                    // InternalRsamlText.g:4103:3: kw= 'period'
                     {
                     kw=(Token)match(input,20,FOLLOW_2); 
 
@@ -10166,7 +10345,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 31 :
-                    // InternalRsamlText.g:4027:3: kw= 'deadline'
+                    // InternalRsamlText.g:4109:3: kw= 'deadline'
                     {
                     kw=(Token)match(input,21,FOLLOW_2); 
 
@@ -10177,7 +10356,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 32 :
-                    // InternalRsamlText.g:4033:3: kw= 'wcet'
+                    // InternalRsamlText.g:4115:3: kw= 'wcet'
                     {
                     kw=(Token)match(input,22,FOLLOW_2); 
 
@@ -10188,7 +10367,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 33 :
-                    // InternalRsamlText.g:4039:3: kw= 'level'
+                    // InternalRsamlText.g:4121:3: kw= 'level'
                     {
                     kw=(Token)match(input,24,FOLLOW_2); 
 
@@ -10199,7 +10378,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 34 :
-                    // InternalRsamlText.g:4045:3: kw= 'maxExecTime'
+                    // InternalRsamlText.g:4127:3: kw= 'maxExecTime'
                     {
                     kw=(Token)match(input,25,FOLLOW_2); 
 
@@ -10210,7 +10389,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 35 :
-                    // InternalRsamlText.g:4051:3: kw= 'sensors'
+                    // InternalRsamlText.g:4133:3: kw= 'sensors'
                     {
                     kw=(Token)match(input,27,FOLLOW_2); 
 
@@ -10221,7 +10400,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 36 :
-                    // InternalRsamlText.g:4057:3: kw= 'actuators'
+                    // InternalRsamlText.g:4139:3: kw= 'actuators'
                     {
                     kw=(Token)match(input,29,FOLLOW_2); 
 
@@ -10232,7 +10411,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 37 :
-                    // InternalRsamlText.g:4063:3: kw= 'synchroType'
+                    // InternalRsamlText.g:4145:3: kw= 'synchroType'
                     {
                     kw=(Token)match(input,31,FOLLOW_2); 
 
@@ -10243,7 +10422,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 38 :
-                    // InternalRsamlText.g:4069:3: kw= 'schedPolicy'
+                    // InternalRsamlText.g:4151:3: kw= 'schedPolicy'
                     {
                     kw=(Token)match(input,32,FOLLOW_2); 
 
@@ -10254,7 +10433,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 39 :
-                    // InternalRsamlText.g:4075:3: kw= 'otherPolicy'
+                    // InternalRsamlText.g:4157:3: kw= 'otherPolicy'
                     {
                     kw=(Token)match(input,33,FOLLOW_2); 
 
@@ -10265,7 +10444,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 40 :
-                    // InternalRsamlText.g:4081:3: kw= 'start'
+                    // InternalRsamlText.g:4163:3: kw= 'start'
                     {
                     kw=(Token)match(input,36,FOLLOW_2); 
 
@@ -10276,7 +10455,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 41 :
-                    // InternalRsamlText.g:4087:3: kw= 'dataType'
+                    // InternalRsamlText.g:4169:3: kw= 'dataType'
                     {
                     kw=(Token)match(input,39,FOLLOW_2); 
 
@@ -10287,7 +10466,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 42 :
-                    // InternalRsamlText.g:4093:3: kw= 'messageType'
+                    // InternalRsamlText.g:4175:3: kw= 'messageType'
                     {
                     kw=(Token)match(input,40,FOLLOW_2); 
 
@@ -10298,7 +10477,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 43 :
-                    // InternalRsamlText.g:4099:3: kw= 'trigger'
+                    // InternalRsamlText.g:4181:3: kw= 'trigger'
                     {
                     kw=(Token)match(input,44,FOLLOW_2); 
 
@@ -10309,7 +10488,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 44 :
-                    // InternalRsamlText.g:4105:3: kw= 'target'
+                    // InternalRsamlText.g:4187:3: kw= 'target'
                     {
                     kw=(Token)match(input,45,FOLLOW_2); 
 
@@ -10320,7 +10499,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 45 :
-                    // InternalRsamlText.g:4111:3: kw= 'duration'
+                    // InternalRsamlText.g:4193:3: kw= 'duration'
                     {
                     kw=(Token)match(input,46,FOLLOW_2); 
 
@@ -10331,7 +10510,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 46 :
-                    // InternalRsamlText.g:4117:3: kw= 'kind'
+                    // InternalRsamlText.g:4199:3: kw= 'kind'
                     {
                     kw=(Token)match(input,49,FOLLOW_2); 
 
@@ -10342,7 +10521,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 47 :
-                    // InternalRsamlText.g:4123:3: kw= 'priority'
+                    // InternalRsamlText.g:4205:3: kw= 'priority'
                     {
                     kw=(Token)match(input,53,FOLLOW_2); 
 
@@ -10353,7 +10532,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 48 :
-                    // InternalRsamlText.g:4129:3: kw= 'achieves'
+                    // InternalRsamlText.g:4211:3: kw= 'achieves'
                     {
                     kw=(Token)match(input,55,FOLLOW_2); 
 
@@ -10364,7 +10543,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 49 :
-                    // InternalRsamlText.g:4135:3: kw= 'actions'
+                    // InternalRsamlText.g:4217:3: kw= 'actions'
                     {
                     kw=(Token)match(input,57,FOLLOW_2); 
 
@@ -10375,7 +10554,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 50 :
-                    // InternalRsamlText.g:4141:3: kw= 'plans'
+                    // InternalRsamlText.g:4223:3: kw= 'plans'
                     {
                     kw=(Token)match(input,59,FOLLOW_2); 
 
@@ -10386,7 +10565,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 51 :
-                    // InternalRsamlText.g:4147:3: kw= 'realisedBy'
+                    // InternalRsamlText.g:4229:3: kw= 'realisedBy'
                     {
                     kw=(Token)match(input,60,FOLLOW_2); 
 
@@ -10397,7 +10576,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 52 :
-                    // InternalRsamlText.g:4153:3: kw= 'issuer'
+                    // InternalRsamlText.g:4235:3: kw= 'issuer'
                     {
                     kw=(Token)match(input,62,FOLLOW_2); 
 
@@ -10408,7 +10587,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 53 :
-                    // InternalRsamlText.g:4159:3: kw= 'receiver'
+                    // InternalRsamlText.g:4241:3: kw= 'receiver'
                     {
                     kw=(Token)match(input,63,FOLLOW_2); 
 
@@ -10419,7 +10598,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 54 :
-                    // InternalRsamlText.g:4165:3: kw= 'requests'
+                    // InternalRsamlText.g:4247:3: kw= 'requests'
                     {
                     kw=(Token)match(input,64,FOLLOW_2); 
 
@@ -10430,7 +10609,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 55 :
-                    // InternalRsamlText.g:4171:3: kw= 'usedBy'
+                    // InternalRsamlText.g:4253:3: kw= 'usedBy'
                     {
                     kw=(Token)match(input,67,FOLLOW_2); 
 
@@ -10441,7 +10620,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 56 :
-                    // InternalRsamlText.g:4177:3: kw= 'core'
+                    // InternalRsamlText.g:4259:3: kw= 'core'
                     {
                     kw=(Token)match(input,69,FOLLOW_2); 
 
@@ -10452,9 +10631,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 57 :
-                    // InternalRsamlText.g:4183:3: kw= 'modules'
+                    // InternalRsamlText.g:4265:3: kw= 'modules'
                     {
-                    kw=(Token)match(input,70,FOLLOW_2); 
+                    kw=(Token)match(input,72,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getModulesKeyword_56());
@@ -10463,9 +10642,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 58 :
-                    // InternalRsamlText.g:4189:3: kw= 'from'
+                    // InternalRsamlText.g:4271:3: kw= 'from'
                     {
-                    kw=(Token)match(input,72,FOLLOW_2); 
+                    kw=(Token)match(input,74,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getFromKeyword_57());
@@ -10474,9 +10653,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 59 :
-                    // InternalRsamlText.g:4195:3: kw= 'to'
+                    // InternalRsamlText.g:4277:3: kw= 'to'
                     {
-                    kw=(Token)match(input,73,FOLLOW_2); 
+                    kw=(Token)match(input,75,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_58());
@@ -10485,9 +10664,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 60 :
-                    // InternalRsamlText.g:4201:3: kw= 'via'
+                    // InternalRsamlText.g:4283:3: kw= 'via'
                     {
-                    kw=(Token)match(input,74,FOLLOW_2); 
+                    kw=(Token)match(input,76,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_59());
@@ -10496,9 +10675,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 61 :
-                    // InternalRsamlText.g:4207:3: kw= 'maxLatency'
+                    // InternalRsamlText.g:4289:3: kw= 'maxLatency'
                     {
-                    kw=(Token)match(input,75,FOLLOW_2); 
+                    kw=(Token)match(input,77,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60());
@@ -10507,353 +10686,375 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 62 :
-                    // InternalRsamlText.g:4213:3: kw= 'centralized'
+                    // InternalRsamlText.g:4295:3: kw= 'host'
                     {
-                    kw=(Token)match(input,77,FOLLOW_2); 
+                    kw=(Token)match(input,70,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_61());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_61());
                     		
 
                     }
                     break;
                 case 63 :
-                    // InternalRsamlText.g:4219:3: kw= 'hierarchical'
+                    // InternalRsamlText.g:4301:3: kw= 'linkLatency'
                     {
-                    kw=(Token)match(input,78,FOLLOW_2); 
+                    kw=(Token)match(input,71,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_62());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62());
                     		
 
                     }
                     break;
                 case 64 :
-                    // InternalRsamlText.g:4225:3: kw= 'behavioral'
+                    // InternalRsamlText.g:4307:3: kw= 'centralized'
                     {
                     kw=(Token)match(input,79,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_63());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_63());
                     		
 
                     }
                     break;
                 case 65 :
-                    // InternalRsamlText.g:4231:3: kw= 'hybrid'
+                    // InternalRsamlText.g:4313:3: kw= 'hierarchical'
                     {
                     kw=(Token)match(input,80,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_64());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_64());
                     		
 
                     }
                     break;
                 case 66 :
-                    // InternalRsamlText.g:4237:3: kw= 'other'
+                    // InternalRsamlText.g:4319:3: kw= 'behavioral'
                     {
                     kw=(Token)match(input,81,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_65());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_65());
                     		
 
                     }
                     break;
                 case 67 :
-                    // InternalRsamlText.g:4243:3: kw= 'simple'
+                    // InternalRsamlText.g:4325:3: kw= 'hybrid'
                     {
                     kw=(Token)match(input,82,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_66());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_66());
                     		
 
                     }
                     break;
                 case 68 :
-                    // InternalRsamlText.g:4249:3: kw= 'realTime'
+                    // InternalRsamlText.g:4331:3: kw= 'other'
                     {
                     kw=(Token)match(input,83,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_67());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_67());
                     		
 
                     }
                     break;
                 case 69 :
-                    // InternalRsamlText.g:4255:3: kw= 'periodic'
+                    // InternalRsamlText.g:4337:3: kw= 'simple'
                     {
                     kw=(Token)match(input,84,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_68());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_68());
                     		
 
                     }
                     break;
                 case 70 :
-                    // InternalRsamlText.g:4261:3: kw= 'sporadic'
+                    // InternalRsamlText.g:4343:3: kw= 'realTime'
                     {
                     kw=(Token)match(input,85,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_69());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_69());
                     		
 
                     }
                     break;
                 case 71 :
-                    // InternalRsamlText.g:4267:3: kw= 'aperiodic'
+                    // InternalRsamlText.g:4349:3: kw= 'periodic'
                     {
                     kw=(Token)match(input,86,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_70());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_70());
                     		
 
                     }
                     break;
                 case 72 :
-                    // InternalRsamlText.g:4273:3: kw= 'ns'
+                    // InternalRsamlText.g:4355:3: kw= 'sporadic'
                     {
                     kw=(Token)match(input,87,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_71());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_71());
                     		
 
                     }
                     break;
                 case 73 :
-                    // InternalRsamlText.g:4279:3: kw= 'us'
+                    // InternalRsamlText.g:4361:3: kw= 'aperiodic'
                     {
                     kw=(Token)match(input,88,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_72());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_72());
                     		
 
                     }
                     break;
                 case 74 :
-                    // InternalRsamlText.g:4285:3: kw= 'ms'
+                    // InternalRsamlText.g:4367:3: kw= 'ns'
                     {
                     kw=(Token)match(input,89,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_73());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_73());
                     		
 
                     }
                     break;
                 case 75 :
-                    // InternalRsamlText.g:4291:3: kw= 's'
+                    // InternalRsamlText.g:4373:3: kw= 'us'
                     {
                     kw=(Token)match(input,90,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_74());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_74());
                     		
 
                     }
                     break;
                 case 76 :
-                    // InternalRsamlText.g:4297:3: kw= 'synchronous'
+                    // InternalRsamlText.g:4379:3: kw= 'ms'
                     {
                     kw=(Token)match(input,91,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_75());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_75());
                     		
 
                     }
                     break;
                 case 77 :
-                    // InternalRsamlText.g:4303:3: kw= 'asynchronous'
+                    // InternalRsamlText.g:4385:3: kw= 's'
                     {
                     kw=(Token)match(input,92,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_76());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_76());
                     		
 
                     }
                     break;
                 case 78 :
-                    // InternalRsamlText.g:4309:3: kw= 'FIFO'
+                    // InternalRsamlText.g:4391:3: kw= 'synchronous'
                     {
                     kw=(Token)match(input,93,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_77());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_77());
                     		
 
                     }
                     break;
                 case 79 :
-                    // InternalRsamlText.g:4315:3: kw= 'SJF'
+                    // InternalRsamlText.g:4397:3: kw= 'asynchronous'
                     {
                     kw=(Token)match(input,94,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_78());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_78());
                     		
 
                     }
                     break;
                 case 80 :
-                    // InternalRsamlText.g:4321:3: kw= 'RR'
+                    // InternalRsamlText.g:4403:3: kw= 'FIFO'
                     {
                     kw=(Token)match(input,95,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_79());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_79());
                     		
 
                     }
                     break;
                 case 81 :
-                    // InternalRsamlText.g:4327:3: kw= 'RM'
+                    // InternalRsamlText.g:4409:3: kw= 'SJF'
                     {
                     kw=(Token)match(input,96,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_80());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_80());
                     		
 
                     }
                     break;
                 case 82 :
-                    // InternalRsamlText.g:4333:3: kw= 'DM'
+                    // InternalRsamlText.g:4415:3: kw= 'RR'
                     {
                     kw=(Token)match(input,97,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_81());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_81());
                     		
 
                     }
                     break;
                 case 83 :
-                    // InternalRsamlText.g:4339:3: kw= 'EDF'
+                    // InternalRsamlText.g:4421:3: kw= 'RM'
                     {
                     kw=(Token)match(input,98,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_82());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_82());
                     		
 
                     }
                     break;
                 case 84 :
-                    // InternalRsamlText.g:4345:3: kw= 'LLF'
+                    // InternalRsamlText.g:4427:3: kw= 'DM'
                     {
                     kw=(Token)match(input,99,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_83());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_83());
                     		
 
                     }
                     break;
                 case 85 :
-                    // InternalRsamlText.g:4351:3: kw= 'OTHER'
+                    // InternalRsamlText.g:4433:3: kw= 'EDF'
                     {
                     kw=(Token)match(input,100,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_84());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_84());
                     		
 
                     }
                     break;
                 case 86 :
-                    // InternalRsamlText.g:4357:3: kw= 'numeric'
+                    // InternalRsamlText.g:4439:3: kw= 'LLF'
                     {
                     kw=(Token)match(input,101,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_85());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_85());
                     		
 
                     }
                     break;
                 case 87 :
-                    // InternalRsamlText.g:4363:3: kw= 'alphanumeric'
+                    // InternalRsamlText.g:4445:3: kw= 'OTHER'
                     {
                     kw=(Token)match(input,102,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_86());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_86());
                     		
 
                     }
                     break;
                 case 88 :
-                    // InternalRsamlText.g:4369:3: kw= 'boolean'
+                    // InternalRsamlText.g:4451:3: kw= 'numeric'
                     {
                     kw=(Token)match(input,103,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_87());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_87());
                     		
 
                     }
                     break;
                 case 89 :
-                    // InternalRsamlText.g:4375:3: kw= 'structured'
+                    // InternalRsamlText.g:4457:3: kw= 'alphanumeric'
                     {
                     kw=(Token)match(input,104,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_88());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_88());
                     		
 
                     }
                     break;
                 case 90 :
-                    // InternalRsamlText.g:4381:3: kw= 'reactionTime'
+                    // InternalRsamlText.g:4463:3: kw= 'boolean'
                     {
                     kw=(Token)match(input,105,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_89());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_89());
                     		
 
                     }
                     break;
                 case 91 :
-                    // InternalRsamlText.g:4387:3: kw= 'dataAge'
+                    // InternalRsamlText.g:4469:3: kw= 'structured'
                     {
                     kw=(Token)match(input,106,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_90());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_90());
                     		
 
                     }
                     break;
                 case 92 :
-                    // InternalRsamlText.g:4393:3: kw= 'NaN'
+                    // InternalRsamlText.g:4475:3: kw= 'reactionTime'
                     {
                     kw=(Token)match(input,107,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_91());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_91());
                     		
 
                     }
                     break;
                 case 93 :
-                    // InternalRsamlText.g:4399:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4481:3: kw= 'dataAge'
                     {
                     kw=(Token)match(input,108,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_92());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_92());
+                    		
+
+                    }
+                    break;
+                case 94 :
+                    // InternalRsamlText.g:4487:3: kw= 'NaN'
+                    {
+                    kw=(Token)match(input,109,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_93());
+                    		
+
+                    }
+                    break;
+                case 95 :
+                    // InternalRsamlText.g:4493:3: kw= 'Infinity'
+                    {
+                    kw=(Token)match(input,110,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_94());
                     		
 
                     }
@@ -10881,7 +11082,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleReal"
-    // InternalRsamlText.g:4408:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
+    // InternalRsamlText.g:4502:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
     public final String entryRuleReal() throws RecognitionException {
         String current = null;
 
@@ -10889,8 +11090,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4408:44: (iv_ruleReal= ruleReal EOF )
-            // InternalRsamlText.g:4409:2: iv_ruleReal= ruleReal EOF
+            // InternalRsamlText.g:4502:44: (iv_ruleReal= ruleReal EOF )
+            // InternalRsamlText.g:4503:2: iv_ruleReal= ruleReal EOF
             {
              newCompositeNode(grammarAccess.getRealRule()); 
             pushFollow(FOLLOW_1);
@@ -10917,7 +11118,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleReal"
-    // InternalRsamlText.g:4415:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
+    // InternalRsamlText.g:4509:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
     public final AntlrDatatypeRuleToken ruleReal() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -10928,10 +11129,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4421:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
-            // InternalRsamlText.g:4422:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4515:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
+            // InternalRsamlText.g:4516:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             {
-            // InternalRsamlText.g:4422:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4516:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             int alt58=4;
             switch ( input.LA(1) ) {
             case RULE_NUMBER:
@@ -10939,17 +11140,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt58=1;
                 }
                 break;
-            case 107:
+            case 109:
                 {
                 alt58=2;
                 }
                 break;
-            case 108:
+            case 110:
                 {
                 alt58=3;
                 }
                 break;
-            case 109:
+            case 111:
                 {
                 alt58=4;
                 }
@@ -10963,7 +11164,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt58) {
                 case 1 :
-                    // InternalRsamlText.g:4423:3: this_NUMBER_0= RULE_NUMBER
+                    // InternalRsamlText.g:4517:3: this_NUMBER_0= RULE_NUMBER
                     {
                     this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -10976,9 +11177,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4431:3: kw= 'NaN'
+                    // InternalRsamlText.g:4525:3: kw= 'NaN'
                     {
-                    kw=(Token)match(input,107,FOLLOW_2); 
+                    kw=(Token)match(input,109,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getNaNKeyword_1());
@@ -10987,9 +11188,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4437:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4531:3: kw= 'Infinity'
                     {
-                    kw=(Token)match(input,108,FOLLOW_2); 
+                    kw=(Token)match(input,110,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_2());
@@ -10998,17 +11199,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4443:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4537:3: (kw= '-' kw= 'Infinity' )
                     {
-                    // InternalRsamlText.g:4443:3: (kw= '-' kw= 'Infinity' )
-                    // InternalRsamlText.g:4444:4: kw= '-' kw= 'Infinity'
+                    // InternalRsamlText.g:4537:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4538:4: kw= '-' kw= 'Infinity'
                     {
-                    kw=(Token)match(input,109,FOLLOW_47); 
+                    kw=(Token)match(input,111,FOLLOW_47); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getHyphenMinusKeyword_3_0());
                     			
-                    kw=(Token)match(input,108,FOLLOW_2); 
+                    kw=(Token)match(input,110,FOLLOW_2); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_3_1());
@@ -11042,7 +11243,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleInteger"
-    // InternalRsamlText.g:4459:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
+    // InternalRsamlText.g:4553:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
     public final String entryRuleInteger() throws RecognitionException {
         String current = null;
 
@@ -11050,8 +11251,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4459:47: (iv_ruleInteger= ruleInteger EOF )
-            // InternalRsamlText.g:4460:2: iv_ruleInteger= ruleInteger EOF
+            // InternalRsamlText.g:4553:47: (iv_ruleInteger= ruleInteger EOF )
+            // InternalRsamlText.g:4554:2: iv_ruleInteger= ruleInteger EOF
             {
              newCompositeNode(grammarAccess.getIntegerRule()); 
             pushFollow(FOLLOW_1);
@@ -11078,7 +11279,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleInteger"
-    // InternalRsamlText.g:4466:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
+    // InternalRsamlText.g:4560:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
     public final AntlrDatatypeRuleToken ruleInteger() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -11088,8 +11289,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4472:2: (this_NUMBER_0= RULE_NUMBER )
-            // InternalRsamlText.g:4473:2: this_NUMBER_0= RULE_NUMBER
+            // InternalRsamlText.g:4566:2: (this_NUMBER_0= RULE_NUMBER )
+            // InternalRsamlText.g:4567:2: this_NUMBER_0= RULE_NUMBER
             {
             this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -11118,7 +11319,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleArchitectureCategory"
-    // InternalRsamlText.g:4483:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
+    // InternalRsamlText.g:4577:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
     public final Enumerator ruleArchitectureCategory() throws RecognitionException {
         Enumerator current = null;
 
@@ -11132,33 +11333,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4489:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
-            // InternalRsamlText.g:4490:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4583:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
+            // InternalRsamlText.g:4584:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             {
-            // InternalRsamlText.g:4490:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4584:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             int alt59=5;
             switch ( input.LA(1) ) {
-            case 77:
+            case 79:
                 {
                 alt59=1;
                 }
                 break;
-            case 78:
+            case 80:
                 {
                 alt59=2;
                 }
                 break;
-            case 79:
+            case 81:
                 {
                 alt59=3;
                 }
                 break;
-            case 80:
+            case 82:
                 {
                 alt59=4;
                 }
                 break;
-            case 81:
+            case 83:
                 {
                 alt59=5;
                 }
@@ -11172,12 +11373,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt59) {
                 case 1 :
-                    // InternalRsamlText.g:4491:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4585:3: (enumLiteral_0= 'centralized' )
                     {
-                    // InternalRsamlText.g:4491:3: (enumLiteral_0= 'centralized' )
-                    // InternalRsamlText.g:4492:4: enumLiteral_0= 'centralized'
+                    // InternalRsamlText.g:4585:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4586:4: enumLiteral_0= 'centralized'
                     {
-                    enumLiteral_0=(Token)match(input,77,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,79,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0());
@@ -11189,12 +11390,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4499:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4593:3: (enumLiteral_1= 'hierarchical' )
                     {
-                    // InternalRsamlText.g:4499:3: (enumLiteral_1= 'hierarchical' )
-                    // InternalRsamlText.g:4500:4: enumLiteral_1= 'hierarchical'
+                    // InternalRsamlText.g:4593:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4594:4: enumLiteral_1= 'hierarchical'
                     {
-                    enumLiteral_1=(Token)match(input,78,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,80,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1());
@@ -11206,12 +11407,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4507:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4601:3: (enumLiteral_2= 'behavioral' )
                     {
-                    // InternalRsamlText.g:4507:3: (enumLiteral_2= 'behavioral' )
-                    // InternalRsamlText.g:4508:4: enumLiteral_2= 'behavioral'
+                    // InternalRsamlText.g:4601:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4602:4: enumLiteral_2= 'behavioral'
                     {
-                    enumLiteral_2=(Token)match(input,79,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,81,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2());
@@ -11223,12 +11424,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4515:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4609:3: (enumLiteral_3= 'hybrid' )
                     {
-                    // InternalRsamlText.g:4515:3: (enumLiteral_3= 'hybrid' )
-                    // InternalRsamlText.g:4516:4: enumLiteral_3= 'hybrid'
+                    // InternalRsamlText.g:4609:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4610:4: enumLiteral_3= 'hybrid'
                     {
-                    enumLiteral_3=(Token)match(input,80,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,82,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3());
@@ -11240,12 +11441,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4523:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4617:3: (enumLiteral_4= 'other' )
                     {
-                    // InternalRsamlText.g:4523:3: (enumLiteral_4= 'other' )
-                    // InternalRsamlText.g:4524:4: enumLiteral_4= 'other'
+                    // InternalRsamlText.g:4617:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4618:4: enumLiteral_4= 'other'
                     {
-                    enumLiteral_4=(Token)match(input,81,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,83,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4());
@@ -11279,7 +11480,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleElementType"
-    // InternalRsamlText.g:4534:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
+    // InternalRsamlText.g:4628:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
     public final Enumerator ruleElementType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11290,17 +11491,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4540:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
-            // InternalRsamlText.g:4541:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4634:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
+            // InternalRsamlText.g:4635:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             {
-            // InternalRsamlText.g:4541:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4635:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             int alt60=2;
             int LA60_0 = input.LA(1);
 
-            if ( (LA60_0==82) ) {
+            if ( (LA60_0==84) ) {
                 alt60=1;
             }
-            else if ( (LA60_0==83) ) {
+            else if ( (LA60_0==85) ) {
                 alt60=2;
             }
             else {
@@ -11311,12 +11512,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt60) {
                 case 1 :
-                    // InternalRsamlText.g:4542:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4636:3: (enumLiteral_0= 'simple' )
                     {
-                    // InternalRsamlText.g:4542:3: (enumLiteral_0= 'simple' )
-                    // InternalRsamlText.g:4543:4: enumLiteral_0= 'simple'
+                    // InternalRsamlText.g:4636:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4637:4: enumLiteral_0= 'simple'
                     {
-                    enumLiteral_0=(Token)match(input,82,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,84,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0());
@@ -11328,12 +11529,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4550:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4644:3: (enumLiteral_1= 'realTime' )
                     {
-                    // InternalRsamlText.g:4550:3: (enumLiteral_1= 'realTime' )
-                    // InternalRsamlText.g:4551:4: enumLiteral_1= 'realTime'
+                    // InternalRsamlText.g:4644:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4645:4: enumLiteral_1= 'realTime'
                     {
-                    enumLiteral_1=(Token)match(input,83,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,85,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1());
@@ -11367,7 +11568,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleExecutionType"
-    // InternalRsamlText.g:4561:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
+    // InternalRsamlText.g:4655:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
     public final Enumerator ruleExecutionType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11379,23 +11580,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4567:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
-            // InternalRsamlText.g:4568:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4661:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
+            // InternalRsamlText.g:4662:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             {
-            // InternalRsamlText.g:4568:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4662:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             int alt61=3;
             switch ( input.LA(1) ) {
-            case 84:
+            case 86:
                 {
                 alt61=1;
                 }
                 break;
-            case 85:
+            case 87:
                 {
                 alt61=2;
                 }
                 break;
-            case 86:
+            case 88:
                 {
                 alt61=3;
                 }
@@ -11409,12 +11610,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt61) {
                 case 1 :
-                    // InternalRsamlText.g:4569:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4663:3: (enumLiteral_0= 'periodic' )
                     {
-                    // InternalRsamlText.g:4569:3: (enumLiteral_0= 'periodic' )
-                    // InternalRsamlText.g:4570:4: enumLiteral_0= 'periodic'
+                    // InternalRsamlText.g:4663:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4664:4: enumLiteral_0= 'periodic'
                     {
-                    enumLiteral_0=(Token)match(input,84,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,86,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0());
@@ -11426,12 +11627,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4577:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4671:3: (enumLiteral_1= 'sporadic' )
                     {
-                    // InternalRsamlText.g:4577:3: (enumLiteral_1= 'sporadic' )
-                    // InternalRsamlText.g:4578:4: enumLiteral_1= 'sporadic'
+                    // InternalRsamlText.g:4671:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4672:4: enumLiteral_1= 'sporadic'
                     {
-                    enumLiteral_1=(Token)match(input,85,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,87,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1());
@@ -11443,12 +11644,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4585:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4679:3: (enumLiteral_2= 'aperiodic' )
                     {
-                    // InternalRsamlText.g:4585:3: (enumLiteral_2= 'aperiodic' )
-                    // InternalRsamlText.g:4586:4: enumLiteral_2= 'aperiodic'
+                    // InternalRsamlText.g:4679:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4680:4: enumLiteral_2= 'aperiodic'
                     {
-                    enumLiteral_2=(Token)match(input,86,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,88,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2());
@@ -11482,7 +11683,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleTimeUnit"
-    // InternalRsamlText.g:4596:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
+    // InternalRsamlText.g:4690:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
     public final Enumerator ruleTimeUnit() throws RecognitionException {
         Enumerator current = null;
 
@@ -11495,28 +11696,28 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4602:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
-            // InternalRsamlText.g:4603:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4696:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
+            // InternalRsamlText.g:4697:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             {
-            // InternalRsamlText.g:4603:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4697:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             int alt62=4;
             switch ( input.LA(1) ) {
-            case 87:
+            case 89:
                 {
                 alt62=1;
                 }
                 break;
-            case 88:
+            case 90:
                 {
                 alt62=2;
                 }
                 break;
-            case 89:
+            case 91:
                 {
                 alt62=3;
                 }
                 break;
-            case 90:
+            case 92:
                 {
                 alt62=4;
                 }
@@ -11530,12 +11731,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt62) {
                 case 1 :
-                    // InternalRsamlText.g:4604:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4698:3: (enumLiteral_0= 'ns' )
                     {
-                    // InternalRsamlText.g:4604:3: (enumLiteral_0= 'ns' )
-                    // InternalRsamlText.g:4605:4: enumLiteral_0= 'ns'
+                    // InternalRsamlText.g:4698:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4699:4: enumLiteral_0= 'ns'
                     {
-                    enumLiteral_0=(Token)match(input,87,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,89,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0());
@@ -11547,12 +11748,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4612:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4706:3: (enumLiteral_1= 'us' )
                     {
-                    // InternalRsamlText.g:4612:3: (enumLiteral_1= 'us' )
-                    // InternalRsamlText.g:4613:4: enumLiteral_1= 'us'
+                    // InternalRsamlText.g:4706:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4707:4: enumLiteral_1= 'us'
                     {
-                    enumLiteral_1=(Token)match(input,88,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,90,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1());
@@ -11564,12 +11765,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4620:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4714:3: (enumLiteral_2= 'ms' )
                     {
-                    // InternalRsamlText.g:4620:3: (enumLiteral_2= 'ms' )
-                    // InternalRsamlText.g:4621:4: enumLiteral_2= 'ms'
+                    // InternalRsamlText.g:4714:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4715:4: enumLiteral_2= 'ms'
                     {
-                    enumLiteral_2=(Token)match(input,89,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,91,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2());
@@ -11581,12 +11782,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4628:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4722:3: (enumLiteral_3= 's' )
                     {
-                    // InternalRsamlText.g:4628:3: (enumLiteral_3= 's' )
-                    // InternalRsamlText.g:4629:4: enumLiteral_3= 's'
+                    // InternalRsamlText.g:4722:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4723:4: enumLiteral_3= 's'
                     {
-                    enumLiteral_3=(Token)match(input,90,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,92,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3());
@@ -11620,7 +11821,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSynchronisationType"
-    // InternalRsamlText.g:4639:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
+    // InternalRsamlText.g:4733:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
     public final Enumerator ruleSynchronisationType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11631,17 +11832,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4645:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
-            // InternalRsamlText.g:4646:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4739:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
+            // InternalRsamlText.g:4740:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             {
-            // InternalRsamlText.g:4646:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4740:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             int alt63=2;
             int LA63_0 = input.LA(1);
 
-            if ( (LA63_0==91) ) {
+            if ( (LA63_0==93) ) {
                 alt63=1;
             }
-            else if ( (LA63_0==92) ) {
+            else if ( (LA63_0==94) ) {
                 alt63=2;
             }
             else {
@@ -11652,12 +11853,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt63) {
                 case 1 :
-                    // InternalRsamlText.g:4647:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4741:3: (enumLiteral_0= 'synchronous' )
                     {
-                    // InternalRsamlText.g:4647:3: (enumLiteral_0= 'synchronous' )
-                    // InternalRsamlText.g:4648:4: enumLiteral_0= 'synchronous'
+                    // InternalRsamlText.g:4741:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4742:4: enumLiteral_0= 'synchronous'
                     {
-                    enumLiteral_0=(Token)match(input,91,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,93,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0());
@@ -11669,12 +11870,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4655:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4749:3: (enumLiteral_1= 'asynchronous' )
                     {
-                    // InternalRsamlText.g:4655:3: (enumLiteral_1= 'asynchronous' )
-                    // InternalRsamlText.g:4656:4: enumLiteral_1= 'asynchronous'
+                    // InternalRsamlText.g:4749:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4750:4: enumLiteral_1= 'asynchronous'
                     {
-                    enumLiteral_1=(Token)match(input,92,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,94,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1());
@@ -11708,7 +11909,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSchedulingPolicy"
-    // InternalRsamlText.g:4666:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
+    // InternalRsamlText.g:4760:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
     public final Enumerator ruleSchedulingPolicy() throws RecognitionException {
         Enumerator current = null;
 
@@ -11725,48 +11926,48 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4672:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
-            // InternalRsamlText.g:4673:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4766:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
+            // InternalRsamlText.g:4767:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             {
-            // InternalRsamlText.g:4673:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4767:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             int alt64=8;
             switch ( input.LA(1) ) {
-            case 93:
+            case 95:
                 {
                 alt64=1;
                 }
                 break;
-            case 94:
+            case 96:
                 {
                 alt64=2;
                 }
                 break;
-            case 95:
+            case 97:
                 {
                 alt64=3;
                 }
                 break;
-            case 96:
+            case 98:
                 {
                 alt64=4;
                 }
                 break;
-            case 97:
+            case 99:
                 {
                 alt64=5;
                 }
                 break;
-            case 98:
+            case 100:
                 {
                 alt64=6;
                 }
                 break;
-            case 99:
+            case 101:
                 {
                 alt64=7;
                 }
                 break;
-            case 100:
+            case 102:
                 {
                 alt64=8;
                 }
@@ -11780,12 +11981,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt64) {
                 case 1 :
-                    // InternalRsamlText.g:4674:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4768:3: (enumLiteral_0= 'FIFO' )
                     {
-                    // InternalRsamlText.g:4674:3: (enumLiteral_0= 'FIFO' )
-                    // InternalRsamlText.g:4675:4: enumLiteral_0= 'FIFO'
+                    // InternalRsamlText.g:4768:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4769:4: enumLiteral_0= 'FIFO'
                     {
-                    enumLiteral_0=(Token)match(input,93,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,95,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0());
@@ -11797,12 +11998,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4682:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4776:3: (enumLiteral_1= 'SJF' )
                     {
-                    // InternalRsamlText.g:4682:3: (enumLiteral_1= 'SJF' )
-                    // InternalRsamlText.g:4683:4: enumLiteral_1= 'SJF'
+                    // InternalRsamlText.g:4776:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4777:4: enumLiteral_1= 'SJF'
                     {
-                    enumLiteral_1=(Token)match(input,94,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,96,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1());
@@ -11814,12 +12015,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4690:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4784:3: (enumLiteral_2= 'RR' )
                     {
-                    // InternalRsamlText.g:4690:3: (enumLiteral_2= 'RR' )
-                    // InternalRsamlText.g:4691:4: enumLiteral_2= 'RR'
+                    // InternalRsamlText.g:4784:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4785:4: enumLiteral_2= 'RR'
                     {
-                    enumLiteral_2=(Token)match(input,95,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,97,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2());
@@ -11831,12 +12032,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4698:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4792:3: (enumLiteral_3= 'RM' )
                     {
-                    // InternalRsamlText.g:4698:3: (enumLiteral_3= 'RM' )
-                    // InternalRsamlText.g:4699:4: enumLiteral_3= 'RM'
+                    // InternalRsamlText.g:4792:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4793:4: enumLiteral_3= 'RM'
                     {
-                    enumLiteral_3=(Token)match(input,96,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,98,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3());
@@ -11848,12 +12049,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4706:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4800:3: (enumLiteral_4= 'DM' )
                     {
-                    // InternalRsamlText.g:4706:3: (enumLiteral_4= 'DM' )
-                    // InternalRsamlText.g:4707:4: enumLiteral_4= 'DM'
+                    // InternalRsamlText.g:4800:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4801:4: enumLiteral_4= 'DM'
                     {
-                    enumLiteral_4=(Token)match(input,97,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,99,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4());
@@ -11865,12 +12066,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:4714:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4808:3: (enumLiteral_5= 'EDF' )
                     {
-                    // InternalRsamlText.g:4714:3: (enumLiteral_5= 'EDF' )
-                    // InternalRsamlText.g:4715:4: enumLiteral_5= 'EDF'
+                    // InternalRsamlText.g:4808:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4809:4: enumLiteral_5= 'EDF'
                     {
-                    enumLiteral_5=(Token)match(input,98,FOLLOW_2); 
+                    enumLiteral_5=(Token)match(input,100,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_5, grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5());
@@ -11882,12 +12083,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:4722:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4816:3: (enumLiteral_6= 'LLF' )
                     {
-                    // InternalRsamlText.g:4722:3: (enumLiteral_6= 'LLF' )
-                    // InternalRsamlText.g:4723:4: enumLiteral_6= 'LLF'
+                    // InternalRsamlText.g:4816:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4817:4: enumLiteral_6= 'LLF'
                     {
-                    enumLiteral_6=(Token)match(input,99,FOLLOW_2); 
+                    enumLiteral_6=(Token)match(input,101,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_6, grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6());
@@ -11899,12 +12100,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:4730:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4824:3: (enumLiteral_7= 'OTHER' )
                     {
-                    // InternalRsamlText.g:4730:3: (enumLiteral_7= 'OTHER' )
-                    // InternalRsamlText.g:4731:4: enumLiteral_7= 'OTHER'
+                    // InternalRsamlText.g:4824:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4825:4: enumLiteral_7= 'OTHER'
                     {
-                    enumLiteral_7=(Token)match(input,100,FOLLOW_2); 
+                    enumLiteral_7=(Token)match(input,102,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_7, grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7());
@@ -11938,7 +12139,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDataType"
-    // InternalRsamlText.g:4741:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
+    // InternalRsamlText.g:4835:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
     public final Enumerator ruleDataType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11951,28 +12152,28 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4747:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
-            // InternalRsamlText.g:4748:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4841:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
+            // InternalRsamlText.g:4842:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             {
-            // InternalRsamlText.g:4748:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4842:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             int alt65=4;
             switch ( input.LA(1) ) {
-            case 101:
+            case 103:
                 {
                 alt65=1;
                 }
                 break;
-            case 102:
+            case 104:
                 {
                 alt65=2;
                 }
                 break;
-            case 103:
+            case 105:
                 {
                 alt65=3;
                 }
                 break;
-            case 104:
+            case 106:
                 {
                 alt65=4;
                 }
@@ -11986,12 +12187,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt65) {
                 case 1 :
-                    // InternalRsamlText.g:4749:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4843:3: (enumLiteral_0= 'numeric' )
                     {
-                    // InternalRsamlText.g:4749:3: (enumLiteral_0= 'numeric' )
-                    // InternalRsamlText.g:4750:4: enumLiteral_0= 'numeric'
+                    // InternalRsamlText.g:4843:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4844:4: enumLiteral_0= 'numeric'
                     {
-                    enumLiteral_0=(Token)match(input,101,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,103,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0());
@@ -12003,12 +12204,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4757:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4851:3: (enumLiteral_1= 'alphanumeric' )
                     {
-                    // InternalRsamlText.g:4757:3: (enumLiteral_1= 'alphanumeric' )
-                    // InternalRsamlText.g:4758:4: enumLiteral_1= 'alphanumeric'
+                    // InternalRsamlText.g:4851:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4852:4: enumLiteral_1= 'alphanumeric'
                     {
-                    enumLiteral_1=(Token)match(input,102,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,104,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1());
@@ -12020,12 +12221,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4765:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4859:3: (enumLiteral_2= 'boolean' )
                     {
-                    // InternalRsamlText.g:4765:3: (enumLiteral_2= 'boolean' )
-                    // InternalRsamlText.g:4766:4: enumLiteral_2= 'boolean'
+                    // InternalRsamlText.g:4859:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4860:4: enumLiteral_2= 'boolean'
                     {
-                    enumLiteral_2=(Token)match(input,103,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,105,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2());
@@ -12037,12 +12238,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4773:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4867:3: (enumLiteral_3= 'structured' )
                     {
-                    // InternalRsamlText.g:4773:3: (enumLiteral_3= 'structured' )
-                    // InternalRsamlText.g:4774:4: enumLiteral_3= 'structured'
+                    // InternalRsamlText.g:4867:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4868:4: enumLiteral_3= 'structured'
                     {
-                    enumLiteral_3=(Token)match(input,104,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,106,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3());
@@ -12076,7 +12277,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyKind"
-    // InternalRsamlText.g:4784:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
+    // InternalRsamlText.g:4878:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
     public final Enumerator ruleLatencyKind() throws RecognitionException {
         Enumerator current = null;
 
@@ -12087,17 +12288,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4790:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
-            // InternalRsamlText.g:4791:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4884:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
+            // InternalRsamlText.g:4885:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
             {
-            // InternalRsamlText.g:4791:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4885:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
             int alt66=2;
             int LA66_0 = input.LA(1);
 
-            if ( (LA66_0==105) ) {
+            if ( (LA66_0==107) ) {
                 alt66=1;
             }
-            else if ( (LA66_0==106) ) {
+            else if ( (LA66_0==108) ) {
                 alt66=2;
             }
             else {
@@ -12108,12 +12309,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt66) {
                 case 1 :
-                    // InternalRsamlText.g:4792:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4886:3: (enumLiteral_0= 'reactionTime' )
                     {
-                    // InternalRsamlText.g:4792:3: (enumLiteral_0= 'reactionTime' )
-                    // InternalRsamlText.g:4793:4: enumLiteral_0= 'reactionTime'
+                    // InternalRsamlText.g:4886:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4887:4: enumLiteral_0= 'reactionTime'
                     {
-                    enumLiteral_0=(Token)match(input,105,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,107,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0());
@@ -12125,12 +12326,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4800:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:4894:3: (enumLiteral_1= 'dataAge' )
                     {
-                    // InternalRsamlText.g:4800:3: (enumLiteral_1= 'dataAge' )
-                    // InternalRsamlText.g:4801:4: enumLiteral_1= 'dataAge'
+                    // InternalRsamlText.g:4894:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:4895:4: enumLiteral_1= 'dataAge'
                     {
-                    enumLiteral_1=(Token)match(input,106,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,108,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1());
@@ -12169,26 +12370,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
     public static final BitSet FOLLOW_1 = new BitSet(new long[]{0x0000000000000000L});
     public static final BitSet FOLLOW_2 = new BitSet(new long[]{0x0000000000000002L});
-    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFFBFFEFFF7830L,0x00001FFFFFFFEFFFL});
+    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFFBFFEFFF7830L,0x00007FFFFFFFBFFFL});
     public static final BitSet FOLLOW_4 = new BitSet(new long[]{0x0000000000001000L});
-    public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x240D02000081E000L,0x0000000000000092L});
-    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x000000000003E000L});
+    public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x240D02000081E000L,0x0000000000000212L});
+    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x00000000000F8000L});
     public static final BitSet FOLLOW_7 = new BitSet(new long[]{0x0000000000000040L});
     public static final BitSet FOLLOW_8 = new BitSet(new long[]{0x0000000000000010L});
-    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x0000000007800000L});
-    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x00000000000C0000L});
-    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000000700000L});
-    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x0000380000000000L});
+    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x000000001E000000L});
+    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x0000000000300000L});
+    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000001C00000L});
+    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x0000E00000000000L});
     public static final BitSet FOLLOW_13 = new BitSet(new long[]{0x0000000007038000L});
     public static final BitSet FOLLOW_14 = new BitSet(new long[]{0x00008860687F8000L});
     public static final BitSet FOLLOW_15 = new BitSet(new long[]{0x0000000000000030L});
     public static final BitSet FOLLOW_16 = new BitSet(new long[]{0x00008860787F8000L});
     public static final BitSet FOLLOW_17 = new BitSet(new long[]{0x0000000F807F8000L});
-    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x0000000018000000L});
-    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x0000001FE0000000L});
+    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x0000000060000000L});
+    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x0000007F80000000L});
     public static final BitSet FOLLOW_20 = new BitSet(new long[]{0x00000010007F8000L});
     public static final BitSet FOLLOW_21 = new BitSet(new long[]{0x0000018000018000L});
-    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x000001E000000000L});
+    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x0000078000000000L});
     public static final BitSet FOLLOW_23 = new BitSet(new long[]{0x0000040000000030L});
     public static final BitSet FOLLOW_24 = new BitSet(new long[]{0x0000040000000000L});
     public static final BitSet FOLLOW_25 = new BitSet(new long[]{0x0000000000000032L});
@@ -12206,13 +12407,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final BitSet FOLLOW_37 = new BitSet(new long[]{0x0000000000018000L,0x0000000000000004L});
     public static final BitSet FOLLOW_38 = new BitSet(new long[]{0x0000008000018000L,0x0000000000000008L});
     public static final BitSet FOLLOW_39 = new BitSet(new long[]{0x0000008010018000L,0x0000000000000008L});
-    public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000000100018000L,0x0000000000000060L});
-    public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000110018000L,0x0000000000000060L});
-    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0002000000038000L,0x0000000000000F00L});
-    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0002000010038000L,0x0000000000000F00L});
-    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000000L,0x0000060000000000L});
-    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000002L,0x0000000000001000L});
-    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0xFFFFFBFFEFFF6830L,0x00001FFFFFFFEFFFL});
-    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0x0000000000000000L,0x0000100000000000L});
+    public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000000100038000L,0x00000000000001E0L});
+    public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000110038000L,0x00000000000001E0L});
+    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0002000000038000L,0x0000000000003C00L});
+    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0002000010038000L,0x0000000000003C00L});
+    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000000L,0x0000180000000000L});
+    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000002L,0x0000000000004000L});
+    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0xFFFFFBFFEFFF6830L,0x00007FFFFFFFBFFFL});
+    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0x0000000000000000L,0x0000400000000000L});
 
 }

@@ -1647,6 +1647,24 @@ rule__Processor__Alternatives_4
 		(rule__Processor__Group_4_3__0)
 		{ after(grammarAccess.getProcessorAccess().getGroup_4_3()); }
 	)
+	|
+	(
+		{ before(grammarAccess.getProcessorAccess().getGroup_4_4()); }
+		(rule__Processor__Group_4_4__0)
+		{ after(grammarAccess.getProcessorAccess().getGroup_4_4()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getProcessorAccess().getUnitParserRuleCall_4_5()); }
+		ruleUnit
+		{ after(grammarAccess.getProcessorAccess().getUnitParserRuleCall_4_5()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getProcessorAccess().getGroup_4_6()); }
+		(rule__Processor__Group_4_6__0)
+		{ after(grammarAccess.getProcessorAccess().getGroup_4_6()); }
+	)
 ;
 finally {
 	restoreStackSize(stackSize);
@@ -2123,195 +2141,207 @@ rule__Keyword__Alternatives
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_61()); }
+		{ before(grammarAccess.getKeywordAccess().getHostKeyword_61()); }
+		'host'
+		{ after(grammarAccess.getKeywordAccess().getHostKeyword_61()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62()); }
+		'linkLatency'
+		{ after(grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_63()); }
 		'centralized'
-		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_61()); }
+		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_63()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_62()); }
+		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_64()); }
 		'hierarchical'
-		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_62()); }
+		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_64()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_63()); }
+		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_65()); }
 		'behavioral'
-		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_63()); }
+		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_65()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_64()); }
+		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_66()); }
 		'hybrid'
-		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_64()); }
+		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_66()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_65()); }
+		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_67()); }
 		'other'
-		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_65()); }
+		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_67()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_66()); }
+		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_68()); }
 		'simple'
-		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_66()); }
+		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_68()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_67()); }
+		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_69()); }
 		'realTime'
-		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_67()); }
+		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_69()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_68()); }
+		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_70()); }
 		'periodic'
-		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_68()); }
+		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_70()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_69()); }
+		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_71()); }
 		'sporadic'
-		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_69()); }
+		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_71()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_70()); }
+		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_72()); }
 		'aperiodic'
-		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_70()); }
+		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_72()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNsKeyword_71()); }
+		{ before(grammarAccess.getKeywordAccess().getNsKeyword_73()); }
 		'ns'
-		{ after(grammarAccess.getKeywordAccess().getNsKeyword_71()); }
+		{ after(grammarAccess.getKeywordAccess().getNsKeyword_73()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getUsKeyword_72()); }
+		{ before(grammarAccess.getKeywordAccess().getUsKeyword_74()); }
 		'us'
-		{ after(grammarAccess.getKeywordAccess().getUsKeyword_72()); }
+		{ after(grammarAccess.getKeywordAccess().getUsKeyword_74()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getMsKeyword_73()); }
+		{ before(grammarAccess.getKeywordAccess().getMsKeyword_75()); }
 		'ms'
-		{ after(grammarAccess.getKeywordAccess().getMsKeyword_73()); }
+		{ after(grammarAccess.getKeywordAccess().getMsKeyword_75()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSKeyword_74()); }
+		{ before(grammarAccess.getKeywordAccess().getSKeyword_76()); }
 		's'
-		{ after(grammarAccess.getKeywordAccess().getSKeyword_74()); }
+		{ after(grammarAccess.getKeywordAccess().getSKeyword_76()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_75()); }
+		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_77()); }
 		'synchronous'
-		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_75()); }
+		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_77()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_76()); }
+		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_78()); }
 		'asynchronous'
-		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_76()); }
+		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_78()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_77()); }
+		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_79()); }
 		'FIFO'
-		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_77()); }
+		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_79()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_78()); }
+		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_80()); }
 		'SJF'
-		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_78()); }
+		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_80()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRRKeyword_79()); }
+		{ before(grammarAccess.getKeywordAccess().getRRKeyword_81()); }
 		'RR'
-		{ after(grammarAccess.getKeywordAccess().getRRKeyword_79()); }
+		{ after(grammarAccess.getKeywordAccess().getRRKeyword_81()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRMKeyword_80()); }
+		{ before(grammarAccess.getKeywordAccess().getRMKeyword_82()); }
 		'RM'
-		{ after(grammarAccess.getKeywordAccess().getRMKeyword_80()); }
+		{ after(grammarAccess.getKeywordAccess().getRMKeyword_82()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDMKeyword_81()); }
+		{ before(grammarAccess.getKeywordAccess().getDMKeyword_83()); }
 		'DM'
-		{ after(grammarAccess.getKeywordAccess().getDMKeyword_81()); }
+		{ after(grammarAccess.getKeywordAccess().getDMKeyword_83()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_82()); }
+		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_84()); }
 		'EDF'
-		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_82()); }
+		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_84()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_83()); }
+		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_85()); }
 		'LLF'
-		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_83()); }
+		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_85()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_84()); }
+		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_86()); }
 		'OTHER'
-		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_84()); }
+		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_86()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_85()); }
+		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_87()); }
 		'numeric'
-		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_85()); }
+		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_87()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_86()); }
+		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_88()); }
 		'alphanumeric'
-		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_86()); }
+		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_88()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_87()); }
+		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_89()); }
 		'boolean'
-		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_87()); }
+		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_89()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_88()); }
+		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_90()); }
 		'structured'
-		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_88()); }
+		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_90()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_89()); }
+		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_91()); }
 		'reactionTime'
-		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_89()); }
+		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_91()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_90()); }
+		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_92()); }
 		'dataAge'
-		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_90()); }
+		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_92()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_91()); }
+		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_93()); }
 		'NaN'
-		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_91()); }
+		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_93()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_92()); }
+		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_94()); }
 		'Infinity'
-		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_92()); }
+		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_94()); }
 	)
 ;
 finally {
@@ -9047,9 +9077,9 @@ rule__Processor__Group_4_3__0__Impl
 	}
 :
 (
-	{ before(grammarAccess.getProcessorAccess().getModulesKeyword_4_3_0()); }
-	'modules'
-	{ after(grammarAccess.getProcessorAccess().getModulesKeyword_4_3_0()); }
+	{ before(grammarAccess.getProcessorAccess().getHostKeyword_4_3_0()); }
+	'host'
+	{ after(grammarAccess.getProcessorAccess().getHostKeyword_4_3_0()); }
 )
 ;
 finally {
@@ -9062,7 +9092,6 @@ rule__Processor__Group_4_3__1
 	}
 :
 	rule__Processor__Group_4_3__1__Impl
-	rule__Processor__Group_4_3__2
 ;
 finally {
 	restoreStackSize(stackSize);
@@ -9074,35 +9103,9 @@ rule__Processor__Group_4_3__1__Impl
 	}
 :
 (
-	{ before(grammarAccess.getProcessorAccess().getModulesAssignment_4_3_1()); }
-	(rule__Processor__ModulesAssignment_4_3_1)
-	{ after(grammarAccess.getProcessorAccess().getModulesAssignment_4_3_1()); }
-)
-;
-finally {
-	restoreStackSize(stackSize);
-}
-
-rule__Processor__Group_4_3__2
-	@init {
-		int stackSize = keepStackSize();
-	}
-:
-	rule__Processor__Group_4_3__2__Impl
-;
-finally {
-	restoreStackSize(stackSize);
-}
-
-rule__Processor__Group_4_3__2__Impl
-	@init {
-		int stackSize = keepStackSize();
-	}
-:
-(
-	{ before(grammarAccess.getProcessorAccess().getGroup_4_3_2()); }
-	(rule__Processor__Group_4_3_2__0)*
-	{ after(grammarAccess.getProcessorAccess().getGroup_4_3_2()); }
+	{ before(grammarAccess.getProcessorAccess().getHostAssignment_4_3_1()); }
+	(rule__Processor__HostAssignment_4_3_1)
+	{ after(grammarAccess.getProcessorAccess().getHostAssignment_4_3_1()); }
 )
 ;
 finally {
@@ -9110,53 +9113,215 @@ finally {
 }
 
 
-rule__Processor__Group_4_3_2__0
+rule__Processor__Group_4_4__0
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
-	rule__Processor__Group_4_3_2__0__Impl
-	rule__Processor__Group_4_3_2__1
+	rule__Processor__Group_4_4__0__Impl
+	rule__Processor__Group_4_4__1
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Processor__Group_4_3_2__0__Impl
+rule__Processor__Group_4_4__0__Impl
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 (
-	{ before(grammarAccess.getProcessorAccess().getCommaKeyword_4_3_2_0()); }
+	{ before(grammarAccess.getProcessorAccess().getLinkLatencyKeyword_4_4_0()); }
+	'linkLatency'
+	{ after(grammarAccess.getProcessorAccess().getLinkLatencyKeyword_4_4_0()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_4__1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Processor__Group_4_4__1__Impl
+	rule__Processor__Group_4_4__2
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_4__1__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getProcessorAccess().getLinkLatencyAssignment_4_4_1()); }
+	(rule__Processor__LinkLatencyAssignment_4_4_1)
+	{ after(grammarAccess.getProcessorAccess().getLinkLatencyAssignment_4_4_1()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_4__2
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Processor__Group_4_4__2__Impl
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_4__2__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getProcessorAccess().getTimeUnitAssignment_4_4_2()); }
+	(rule__Processor__TimeUnitAssignment_4_4_2)
+	{ after(grammarAccess.getProcessorAccess().getTimeUnitAssignment_4_4_2()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+
+rule__Processor__Group_4_6__0
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Processor__Group_4_6__0__Impl
+	rule__Processor__Group_4_6__1
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_6__0__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getProcessorAccess().getModulesKeyword_4_6_0()); }
+	'modules'
+	{ after(grammarAccess.getProcessorAccess().getModulesKeyword_4_6_0()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_6__1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Processor__Group_4_6__1__Impl
+	rule__Processor__Group_4_6__2
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_6__1__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getProcessorAccess().getModulesAssignment_4_6_1()); }
+	(rule__Processor__ModulesAssignment_4_6_1)
+	{ after(grammarAccess.getProcessorAccess().getModulesAssignment_4_6_1()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_6__2
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Processor__Group_4_6__2__Impl
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_6__2__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getProcessorAccess().getGroup_4_6_2()); }
+	(rule__Processor__Group_4_6_2__0)*
+	{ after(grammarAccess.getProcessorAccess().getGroup_4_6_2()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+
+rule__Processor__Group_4_6_2__0
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Processor__Group_4_6_2__0__Impl
+	rule__Processor__Group_4_6_2__1
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__Group_4_6_2__0__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getProcessorAccess().getCommaKeyword_4_6_2_0()); }
 	','
-	{ after(grammarAccess.getProcessorAccess().getCommaKeyword_4_3_2_0()); }
+	{ after(grammarAccess.getProcessorAccess().getCommaKeyword_4_6_2_0()); }
 )
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Processor__Group_4_3_2__1
+rule__Processor__Group_4_6_2__1
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
-	rule__Processor__Group_4_3_2__1__Impl
+	rule__Processor__Group_4_6_2__1__Impl
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Processor__Group_4_3_2__1__Impl
+rule__Processor__Group_4_6_2__1__Impl
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 (
-	{ before(grammarAccess.getProcessorAccess().getModulesAssignment_4_3_2_1()); }
-	(rule__Processor__ModulesAssignment_4_3_2_1)
-	{ after(grammarAccess.getProcessorAccess().getModulesAssignment_4_3_2_1()); }
+	{ before(grammarAccess.getProcessorAccess().getModulesAssignment_4_6_2_1()); }
+	(rule__Processor__ModulesAssignment_4_6_2_1)
+	{ after(grammarAccess.getProcessorAccess().getModulesAssignment_4_6_2_1()); }
 )
 ;
 finally {
@@ -11450,38 +11615,83 @@ finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Processor__ModulesAssignment_4_3_1
+rule__Processor__HostAssignment_4_3_1
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_1_0()); }
-		(
-			{ before(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_3_1_0_1()); }
-			ruleQualifiedName
-			{ after(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_3_1_0_1()); }
-		)
-		{ after(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_1_0()); }
+		{ before(grammarAccess.getProcessorAccess().getHostSTRINGTerminalRuleCall_4_3_1_0()); }
+		RULE_STRING
+		{ after(grammarAccess.getProcessorAccess().getHostSTRINGTerminalRuleCall_4_3_1_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Processor__ModulesAssignment_4_3_2_1
+rule__Processor__LinkLatencyAssignment_4_4_1
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_2_1_0()); }
+		{ before(grammarAccess.getProcessorAccess().getLinkLatencyRealParserRuleCall_4_4_1_0()); }
+		ruleReal
+		{ after(grammarAccess.getProcessorAccess().getLinkLatencyRealParserRuleCall_4_4_1_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__TimeUnitAssignment_4_4_2
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getProcessorAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0()); }
+		ruleTimeUnit
+		{ after(grammarAccess.getProcessorAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__ModulesAssignment_4_6_1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_1_0()); }
 		(
-			{ before(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_3_2_1_0_1()); }
+			{ before(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_6_1_0_1()); }
 			ruleQualifiedName
-			{ after(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_3_2_1_0_1()); }
+			{ after(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_6_1_0_1()); }
 		)
-		{ after(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_3_2_1_0()); }
+		{ after(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_1_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Processor__ModulesAssignment_4_6_2_1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_2_1_0()); }
+		(
+			{ before(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_6_2_1_0_1()); }
+			ruleQualifiedName
+			{ after(grammarAccess.getProcessorAccess().getModulesModuleQualifiedNameParserRuleCall_4_6_2_1_0_1()); }
+		)
+		{ after(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_2_1_0()); }
 	)
 ;
 finally {
