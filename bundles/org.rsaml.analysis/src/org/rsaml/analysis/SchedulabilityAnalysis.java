@@ -70,8 +70,9 @@ public final class SchedulabilityAnalysis {
         if (policy == SchedulingPolicy.FIXED_PRIORITY && ResponseTimes.anyBlockedByLock(tasks)) {
             lockGroups(tasks, byIndex);
         } else if (policy == SchedulingPolicy.FIXED_PRIORITY) {
-            preemptive(tasks, byIndex);
-            firstInFirstOutAtTheTop(tasks, byIndex, runToCompletion);
+            List<Integer> fifo = firstInFirstOutLevel(tasks, runToCompletion);
+            preemptive(tasks, byIndex, fifo);
+            firstInFirstOutAtTheTop(tasks, byIndex, fifo);
         } else {
             for (int i = 0; i < tasks.size(); i++) {
                 byIndex[i] = ResponseTimes.nonPreemptive(tasks, tasks.get(i));
@@ -101,7 +102,8 @@ public final class SchedulabilityAnalysis {
      * an iteration over the distinct periods, not over all tasks; and the first-job window of the
      * previous priority level seeds the next one's iteration (it is a lower bound of it).
      */
-    private static void preemptive(List<Task> tasks, TaskResult[] byIndex) {
+    private static void preemptive(List<Task> tasks, TaskResult[] byIndex, List<Integer> firstInFirstOut) {
+        Set<Integer> skipped = new HashSet<>(firstInFirstOut);
         int n = tasks.size();
         Integer[] order = new Integer[n];
         for (int i = 0; i < n; i++) {
@@ -140,6 +142,9 @@ public final class SchedulabilityAnalysis {
             long levelWindow = -1;
             for (int k = g; k < end; k++) {
                 int i = order[k];
+                if (skipped.contains(i)) {
+                    continue; // analysed first in, first out instead (the top rank: nothing above seeds the level below)
+                }
                 Task t = tasks.get(i);
                 cost[entryOf[i]] -= t.cost();
                 int lowest = priority;
@@ -199,11 +204,12 @@ public final class SchedulabilityAnalysis {
      * priorities are preempted, so they cannot block), which {@link ResponseTimes#firstInFirstOut}
      * analyses exactly.
      */
-    private static void firstInFirstOutAtTheTop(List<Task> tasks, TaskResult[] byIndex, Set<String> runToCompletion) {
-        List<Integer> level = firstInFirstOutLevel(tasks, runToCompletion);
+    private static void firstInFirstOutAtTheTop(List<Task> tasks, TaskResult[] byIndex, List<Integer> level) {
         List<Task> equals = level.stream().map(tasks::get).toList();
-        for (int i : level) {
-            TaskResult r = ResponseTimes.firstInFirstOut(equals, tasks.get(i));
+        TaskResult[] results = ResponseTimes.firstInFirstOut(equals);
+        for (int k = 0; k < level.size(); k++) {
+            int i = level.get(k);
+            TaskResult r = results[k];
             byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation()
                     + " (first in, first out among the tasks of its priority, the highest: nothing interrupts it once started)",
                     r.witness());

@@ -373,6 +373,65 @@ public final class ResponseTimes {
     }
 
     /**
+     * {@link #firstInFirstOut(List, Task)} of every task of the level, in its order, in time linear in
+     * the level's size: the worst response (the sum of the level's costs) and the level's utilisation are
+     * the same for every task, and the tasks that delay the most are one sorted list, so nothing is
+     * recomputed per task (thousands of FIFO releases at a processor's top rank cost n², not n, that way).
+     */
+    public static TaskResult[] firstInFirstOut(List<Task> level) {
+        TaskResult[] out = new TaskResult[level.size()];
+        if (level.stream().anyMatch(t -> t.jitter() > 0)) {
+            for (int i = 0; i < out.length; i++) {
+                out[i] = nonPreemptive(level, level.get(i));
+            }
+            return out;
+        }
+        if (level.isEmpty()) {
+            return out;
+        }
+        if (utilisationVersusOne(level.get(0), level.subList(1, level.size())) > 0) {
+            String overload = levelOverload(level.get(0), level.subList(1, level.size())); // the whole level's, as for each task
+            for (int i = 0; i < out.length; i++) {
+                out[i] = new TaskResult(level.get(i), OptionalLong.empty(), Verdict.MISSES, overload, null);
+            }
+            return out;
+        }
+        long sum = 0;
+        try {
+            for (Task t : level) {
+                sum = Arith.add(sum, t.cost());
+            }
+        } catch (ArithmeticException e) {
+            for (int i = 0; i < out.length; i++) {
+                out[i] = notAnalysed(level.get(i), new Arith.TooLarge().getMessage());
+            }
+            return out;
+        }
+        // the tasks that delay the most, most first (a stable sort: ties in the level's order), one more than a witness lists
+        List<Task> delaying = new ArrayList<>(level.stream().filter(t -> t.cost() > 0).toList());
+        delaying.sort((a, b) -> Long.compare(b.cost(), a.cost()));
+        List<Task> top = delaying.subList(0, Math.min(MAX_LISTED + 1, delaying.size()));
+        for (int i = 0; i < out.length; i++) {
+            Task task = level.get(i);
+            TaskResult r = result(task, sum, 0, List.of(), null, false);
+            if (r.witness() == null) {
+                out[i] = r;
+                continue;
+            }
+            java.util.Map<String, Long> listed = new java.util.LinkedHashMap<>();
+            for (Task t : top) {
+                if (t != task && listed.size() < MAX_LISTED) {
+                    listed.put(t.name(), 1L);
+                }
+            }
+            int others = delaying.size() - (task.cost() > 0 ? 1 : 0);
+            Witness w = new Witness(task.name(), 0, 0, sum, List.of(), listed, null, false, others - listed.size());
+            out[i] = new TaskResult(task, r.responseTime(), r.verdict(), r.explanation(), w);
+        }
+        return out;
+    }
+
+    /**
      * Non-preemptive fixed priority: a job, once started, runs to completion, so a lower-priority job
      * started just before can block it. Equal priorities are served first-in first-out, which the
      * analysis bounds by counting them as interfering (jobs released until the job starts, not only

@@ -251,6 +251,42 @@ class RandomTaskSetsTest {
     }
 
     /**
+     * A processor's top rank of thousands of FIFO releases is analysed in one pass over the level
+     * (worst response, utilisation and the most delaying tasks computed once): its results, witnesses
+     * included, are those of the per-task analysis that defines them, on random levels that meet, miss
+     * (short deadlines) or overload.
+     */
+    @Test
+    void firstInFirstOutLevelInOnePassEqualsThePerTaskAnalysis() {
+        Random random = new Random(SEED + 32);
+        int misses = 0;
+        int overloads = 0;
+        for (int s = 0; s < SETS; s++) {
+            List<Task> level = new ArrayList<>();
+            int n = 1 + random.nextInt(40);
+            double load = s % 5 == 0 ? 1.3 : 0.9;
+            for (int i = 0; i < n; i++) {
+                long period = (1 + random.nextInt(200)) * 1_000L;
+                long cost = random.nextInt(4) == 0 ? 0 : Math.max(1, (long) (load / n * period * random.nextDouble() * 2));
+                long deadline = random.nextBoolean() ? period : Math.max(1, cost * (1 + random.nextInt(3)));
+                level.add(new Task("t" + i, period, deadline, cost, 1));
+            }
+            TaskResult[] whole = org.rsaml.analysis.internal.ResponseTimes.firstInFirstOut(level);
+            for (int i = 0; i < n; i++) {
+                TaskResult one = org.rsaml.analysis.internal.ResponseTimes.firstInFirstOut(level, level.get(i));
+                String where = "set " + s + ", task " + level.get(i) + " among " + level;
+                assertEquals(one.responseTime(), whole[i].responseTime(), where);
+                assertEquals(one.verdict(), whole[i].verdict(), where);
+                assertEquals(one.explanation(), whole[i].explanation(), where);
+                assertEquals(one.witness(), whole[i].witness(), where);
+                misses += one.verdict() == Verdict.MISSES && one.responseTime().isPresent() ? 1 : 0;
+                overloads += one.responseTime().isEmpty() ? 1 : 0;
+            }
+        }
+        assertTrue(misses > 50 && overloads > 50, "random levels with misses (" + misses + ") and overloads (" + overloads + ")");
+    }
+
+    /**
      * The three tasks of one rank (all FIFO) from the timing documentation: C's worst response is
      * 36 ms, everything released with it (A's job of 1 ms, B's of 20 ms) and nothing released after
      * (not A's jobs at 10, 20 and 30 ms); the witness of its miss (deadline 30 ms) runs the jobs in

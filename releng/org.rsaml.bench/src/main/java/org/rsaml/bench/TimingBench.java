@@ -7,6 +7,7 @@ package org.rsaml.bench;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.Set;
 
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.LatencyResult;
@@ -28,12 +29,13 @@ import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.SchedulingPolicy;
 
 /**
- * Timing analysis figures: (1) one processor with N rate-monotonic tasks (random periods from a
- * set dividing 1.2 s, utilisation 0.8) for N = 100, 1,000 and 10,000; (2) an architecture of M
- * periodic modules on 4 processors, each module connected to the next and every 50th also three
- * ahead, with 100 latency requirements each spanning 10 modules; (3) one processor with N tasks of
- * nearly distinct periods at utilisation 0.99, many of which miss (N = 1,000 and 10,000). Prints
- * Markdown tables of medians.
+ * Timing analysis figures: (1) one processor with n tasks, n = 1,000, 10,000 and 50,000, five
+ * workloads: rate-monotonic tasks of harmonic periods at utilisation 0.99, of 12 periods dividing
+ * 1.2 s at 0.8, of nearly distinct periods at 0.8 and at 0.99 (many of the latter miss), and tasks
+ * that all share the top rank and run first in, first out; each with its growth against the same
+ * workload at the size before (1.0: linear); (2) an architecture of M periodic modules on 4
+ * processors, each module connected to the next and every 50th also three ahead, with 100 latency
+ * requirements each spanning 10 modules. Prints Markdown tables of medians.
  */
 public final class TimingBench {
 
@@ -43,53 +45,68 @@ public final class TimingBench {
     static final long MS = 1_000_000L;
     static final long[] PERIODS = { 5, 10, 20, 25, 40, 50, 100, 200, 300, 400, 600, 1200 };
 
-    /** One task set's analysis, timed: the last run's result, median CPU and wall time (ns). */
-    private record Timed(ProcessorResult result, long cpuNs, long wallNs) {
+    /** One task set's analysis, timed: the last run's result, median CPU and wall time (ns), runs. */
+    private record Timed(ProcessorResult result, long cpuNs, long wallNs, int runs) {
     }
 
-    private static Timed timed(List<Task> tasks) {
-        SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks); // JIT
+    /** A workload of the one-processor table: its task set of n tasks, and the tasks that run first in, first out. */
+    private record Workload(String name, java.util.function.IntFunction<List<Task>> tasks, boolean fifo) {
+    }
+
+    private static Timed timed(List<Task> tasks, Set<String> fifo) {
         long[] times = new long[RUNS];
         long[] cpu = new long[RUNS];
         ProcessorResult r = null;
-        for (int i = 0; i < RUNS; i++) {
+        int runs = 0;
+        // up to RUNS runs, fewer when one takes seconds (the 50,000-task sets)
+        for (long spent = 0; runs == 0 || runs < RUNS && spent < 3_000 * MS; runs++) {
             long c0 = CPU.getCurrentThreadCpuTime();
             long t0 = System.nanoTime();
-            r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks);
-            times[i] = System.nanoTime() - t0;
-            cpu[i] = CPU.getCurrentThreadCpuTime() - c0;
+            r = SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks, fifo);
+            times[runs] = System.nanoTime() - t0;
+            cpu[runs] = CPU.getCurrentThreadCpuTime() - c0;
+            spent += cpu[runs];
         }
-        return new Timed(r, GenerationBench.median(cpu), GenerationBench.median(times));
+        return new Timed(r, GenerationBench.median(java.util.Arrays.copyOf(cpu, runs)),
+                GenerationBench.median(java.util.Arrays.copyOf(times, runs)), runs);
     }
 
     public static void main(String[] args) throws Exception {
         int modules = args.length > 0 ? Integer.parseInt(args[0].trim()) : 1000;
-        System.out.println("| tasks on one processor | analysis, CPU time (median of " + RUNS + ") | wall time | verdict |");
-        System.out.println("|---:|---:|---:|---|");
-        for (int n : new int[] { 100, 1_000, 10_000 }) {
-            List<Task> tasks = taskSet(n, new Random(n));
-            Timed timed = timed(tasks);
-            ProcessorResult r = timed.result();
-            System.out.printf("| %,d | %,d ms | %,d ms | %s (U = %s) |%n", n, timed.cpuNs() / MS, timed.wallNs() / MS,
-                    r.verdict(), r.utilisationText());
-        }
         // sized with the architecture, so that the short run of TimingBenchTest stays short
-        int[] sizes = java.util.stream.IntStream.of(1_000, 10_000).filter(n -> n <= 10 * modules).toArray();
-        if (sizes.length > 0) {
-            System.out.println();
-            System.out.println("| tasks on one processor, distinct periods, U = 0.99 | analysis, CPU time (median of " + RUNS
-                    + ") | wall time | misses | critical-instant schedules (segments) |");
-            System.out.println("|---:|---:|---:|---:|---:|");
+        int[] sizes = java.util.stream.IntStream.of(1_000, 10_000, 50_000).map(n -> Math.min(n, Math.max(10, 50 * modules))).distinct()
+                .toArray();
+        List<Workload> workloads = List.of(
+                new Workload("harmonic periods (5 ms × 2^k), U = 0.99", n -> harmonic(n, 0.99, new Random(n)), false),
+                new Workload("12 periods dividing 1.2 s, U = 0.8", n -> taskSet(n, new Random(n)), false),
+                new Workload("distinct periods, U = 0.8", n -> distinctPeriods(n, 0.8, new Random(n)), false),
+                new Workload("distinct periods, U = 0.99", n -> distinctPeriods(n, 0.99, new Random(n)), false),
+                new Workload("first in, first out at the top rank (all tasks), distinct periods, U = 0.8",
+                        n -> sameRank(distinctPeriods(n, 0.8, new Random(n))), true));
+        for (Workload w : workloads) { // JIT
+            List<Task> tasks = w.tasks().apply(Math.min(1_000, sizes[0]));
+            SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks, fifo(tasks, w.fifo()));
         }
-        for (int n : sizes) {
-            List<Task> tasks = distinctPeriods(n, 0.99, new Random(n));
-            Timed timed = timed(tasks);
-            ProcessorResult r = timed.result();
-            long misses = r.tasks().stream().filter(t -> t.verdict() == Verdict.MISSES).count();
-            long schedules = r.tasks().stream().filter(t -> t.witness() != null && !t.witness().summary()).count();
-            long segments = r.tasks().stream().filter(t -> t.witness() != null).mapToLong(t -> t.witness().schedule().size()).sum();
-            System.out.printf("| %,d | %,d ms | %,d ms | %,d | %,d (%,d) |%n", n, timed.cpuNs() / MS,
-                    timed.wallNs() / MS, misses, schedules, segments);
+        System.out.println("| tasks on one processor | n | analysis, CPU time (median) | wall time | per task | growth ÷ growth of n"
+                + " (anchor: the same set at the size before) | verdict | misses | critical-instant schedules (segments) |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---|---:|---:|");
+        for (Workload w : workloads) {
+            long previous = -1;
+            int previousN = 0;
+            for (int n : sizes) {
+                List<Task> tasks = w.tasks().apply(n);
+                Timed timed = timed(tasks, fifo(tasks, w.fifo()));
+                ProcessorResult r = timed.result();
+                long misses = r.tasks().stream().filter(t -> t.verdict() == Verdict.MISSES).count();
+                long schedules = r.tasks().stream().filter(t -> t.witness() != null && !t.witness().summary()).count();
+                long segments = r.tasks().stream().filter(t -> t.witness() != null).mapToLong(t -> t.witness().schedule().size()).sum();
+                String growth = previous <= 0 ? "" : String.format("%.2f", (double) timed.cpuNs() / previous / ((double) n / previousN));
+                System.out.printf("| %s | %,d | %,d ms (%d runs) | %,d ms | %.1f µs | %s | %s (U = %s) | %,d | %,d (%,d) |%n", w.name(), n,
+                        timed.cpuNs() / MS, timed.runs(), timed.wallNs() / MS, timed.cpuNs() / 1e3 / n, growth, r.verdict(),
+                        r.utilisationText(), misses, schedules, segments);
+                previous = Math.max(1, timed.cpuNs());
+                previousN = n;
+            }
         }
         Architecture a = architecture(modules, 100);
         TimingAnalysis.analyse(a); // JIT
@@ -113,6 +130,47 @@ public final class TimingBench {
         System.out.println("|---:|---:|---:|---:|---:|---|");
         System.out.printf("| %,d | %d | %d | %,d ms | %,d ms | %s (%d requirements met) |%n", modules, timing.processors().size(),
                 timing.latencies().size(), GenerationBench.median(cpu) / MS, GenerationBench.median(times) / MS, timing.verdict(), met);
+    }
+
+    /** The names of the tasks when they run first in, first out; else none. */
+    private static Set<String> fifo(List<Task> tasks, boolean fifo) {
+        return fifo ? tasks.stream().map(Task::name).collect(java.util.stream.Collectors.toSet()) : Set.of();
+    }
+
+    /** The same tasks, all at one priority (as the runtime ranks FIFO functions and module releases). */
+    static List<Task> sameRank(List<Task> tasks) {
+        return tasks.stream().map(t -> new Task(t.name(), t.period(), t.deadline(), t.cost(), 1, t.jitter(), t.group())).toList();
+    }
+
+    /** n tasks with harmonic periods 5 ms × 2^k (k from 0 to 7), rate-monotonic priorities, utilisation about u. */
+    static List<Task> harmonic(int n, double u, Random random) {
+        long[] periods = new long[n];
+        double[] weights = new double[n];
+        double sum = 0;
+        for (int i = 0; i < n; i++) {
+            periods[i] = (5L << random.nextInt(8)) * MS;
+            weights[i] = random.nextDouble();
+            sum += weights[i];
+        }
+        return rateMonotonic(periods, weights, sum, u);
+    }
+
+    private static List<Task> rateMonotonic(long[] periods, double[] weights, double sum, double u) {
+        int n = periods.length;
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) {
+            order[i] = i;
+        }
+        java.util.Arrays.sort(order, (x, y) -> Long.compare(periods[y], periods[x]));
+        int[] priority = new int[n];
+        for (int rank = 0; rank < n; rank++) {
+            priority[order[rank]] = rank + 1;
+        }
+        List<Task> tasks = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            tasks.add(Task.implicit("t" + i, periods[i], Math.max(1, (long) (u * weights[i] / sum * periods[i])), priority[i]));
+        }
+        return tasks;
     }
 
     /** n tasks, rate-monotonic priorities (distinct, ties by index), total utilisation about 0.8. */

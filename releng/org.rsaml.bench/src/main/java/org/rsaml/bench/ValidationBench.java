@@ -5,70 +5,216 @@
 package org.rsaml.bench;
 
 import java.lang.management.ManagementFactory;
-import java.lang.management.MemoryPoolMXBean;
-import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Iterator;
 import java.util.List;
+import java.util.Map;
 
+import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Module;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.RsamlValidationSetup;
+import org.rsaml.validation.internal.ModuleActivation;
+import org.rsaml.validation.internal.OclRules;
 
 /**
- * Validation figures on synthetic architectures ({@link SyntheticArchitecture}, with defects): for
- * each size, the time to load the .rsaml file, to validate it with the OCL rules, and to run EMF's
- * structural checks alone; peak and retained heap; and the number of findings. Prints a Markdown
- * table.
+ * Validation figures on synthetic architectures ({@link SyntheticArchitecture}, with about 1% of
+ * defects), two shapes: <b>deployed</b>, the realistic one (four modules to a processor, each with a
+ * core of its own, as {@link GenerationBench} deploys them, so the timing holds), and
+ * <b>overloaded</b>, the stress case (no processor: every module on the one default processor, far
+ * beyond its capacity, so most periodic functions miss). For each shape and size, in a JVM of its own
+ * (so that its peak resident memory is its own): loading the file, the full validation, and beside
+ * it, in the same JVM, its anchor (EMF's structural checks alone) and its two other parts alone (every
+ * OCL invariant as the validation evaluates it; the timing analysis), each with its CPU time (every
+ * thread of the process, the collector's included) and its wall time. Prints a Markdown table.
  */
 public final class ValidationBench {
 
+    private static final long MS = 1_000_000L;
+    private static final String ROW = "ROW ";
+
     public static void main(String[] args) throws Exception {
-        RsamlValidationSetup.init();
-        List<String> rows = new ArrayList<>();
-        Path dir = Files.createTempDirectory("rsaml-bench");
-        for (String size : args[0].split(",")) {
-            int target = Integer.parseInt(size.trim());
-            Path file = dir.resolve("synthetic-" + target + ".rsaml");
-            SyntheticArchitecture.write(SyntheticArchitecture.of(SyntheticArchitecture.modulesFor(target), true), file);
-            long bytes = Files.size(file);
-
-            gc();
-            resetPeaks();
-            long t0 = System.nanoTime();
-            LoadedModel model = ModelLoader.load(file, file.getFileName().toString());
-            long load = System.nanoTime() - t0;
-            long peakLoad = peakHeap();
-            gc();
-            long retained = usedHeap();
-            int elements = model.elementCount();
-
-            t0 = System.nanoTime();
-            List<Finding> structural = RsamlModelValidator.validateStructure(model);
-            long structure = System.nanoTime() - t0;
-
-            resetPeaks();
-            t0 = System.nanoTime();
-            List<Finding> findings = RsamlModelValidator.validate(model);
-            long validate = System.nanoTime() - t0;
-            long peakValidate = peakHeap();
-
-            rows.add(String.format("| %,d | %.1f MB | %,d ms | %,d ms | %,d ms | %,d MB | %,d MB (%d B/element) | %,d (%,d structural) |",
-                    elements, bytes / 1e6, load / 1_000_000, validate / 1_000_000, structure / 1_000_000,
-                    Math.max(peakLoad, peakValidate) >> 20, retained >> 20, elements == 0 ? 0 : retained / elements,
-                    findings.size(), structural.size()));
-            System.out.println(rows.get(rows.size() - 1));
-            model = null;
-            Files.delete(file);
+        if (args.length == 3 && args[0].equals("--one")) {
+            one(args[1], Integer.parseInt(args[2]));
+            return;
         }
-        Files.delete(dir);
+        List<String> rows = new ArrayList<>();
+        for (String shape : new String[] { "deployed", "overloaded" }) {
+            for (String size : args[0].split(",")) {
+                String row = child(shape, Integer.parseInt(size.trim()));
+                System.out.println(row);
+                rows.add(row);
+            }
+        }
         System.out.println();
-        System.out.println("| elements | file | load | validate (OCL rules + structure) | EMF structural checks alone | peak heap | retained heap after load | findings |");
-        System.out.println("|---:|---:|---:|---:|---:|---:|---:|---:|");
+        System.out.println("Times: CPU of the whole process (wall in brackets); ratios of CPU times, measured in the same JVM.");
+        System.out.println();
+        System.out.println("| shape | elements | file | load | EMF structural checks (the anchor) | full validation | ÷ structural"
+                + " | OCL invariants alone | ÷ structural | timing analysis alone | peak RSS | findings |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         rows.forEach(System.out::println);
+    }
+
+    /** Runs one shape and size in a JVM of its own, with this JVM's options; its table row. */
+    private static String child(String shape, int size) throws Exception {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        command.addAll(ManagementFactory.getRuntimeMXBean().getInputArguments());
+        command.add("-cp");
+        command.add(System.getProperty("java.class.path"));
+        command.add(ValidationBench.class.getName());
+        command.add("--one");
+        command.add(shape);
+        command.add(Integer.toString(size));
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+        String row = null;
+        try (var out = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream()))) {
+            for (String line; (line = out.readLine()) != null;) {
+                if (line.startsWith(ROW)) {
+                    row = line.substring(ROW.length());
+                } else {
+                    System.out.println("  [" + shape + " " + size + "] " + line);
+                }
+            }
+        }
+        int exit = p.waitFor();
+        return row != null ? row : "| " + shape + " | " + size + " | failed (exit " + exit + ") | | | | | | | | | |";
+    }
+
+    private static Architecture architecture(String shape, int elements) {
+        Architecture a = SyntheticArchitecture.of(SyntheticArchitecture.modulesFor(elements), true);
+        return shape.equals("deployed") ? SyntheticArchitecture.deploy(a, 4) : a;
+    }
+
+    private static void one(String shape, int size) throws Exception {
+        RsamlValidationSetup.init();
+        OclRules.instance(); // parsed once per JVM: not part of what is measured
+        Path dir = Files.createTempDirectory("rsaml-bench");
+        // warm-up on a small model of the same shape, so that the JIT has compiled the common paths
+        Path small = dir.resolve("warm-up.rsaml");
+        SyntheticArchitecture.write(architecture(shape, 2_000), small);
+        for (int i = 0; i < 3; i++) {
+            LoadedModel m = ModelLoader.load(small, "warm-up.rsaml");
+            RsamlModelValidator.validateStructure(m);
+            RsamlModelValidator.validate(m);
+            invariants(m);
+            TimingAnalysis.analyse(m.architecture());
+        }
+        Path file = dir.resolve("synthetic-" + size + ".rsaml");
+        SyntheticArchitecture.write(architecture(shape, size), file);
+        long bytes = Files.size(file);
+
+        gc();
+        Timer t = Timer.start();
+        LoadedModel model = ModelLoader.load(file, file.getFileName().toString());
+        Timer load = t.stop();
+        int elements = model.elementCount();
+
+        gc();
+        t = Timer.start();
+        List<Finding> structural = RsamlModelValidator.validateStructure(model);
+        Timer structure = t.stop();
+
+        gc();
+        t = Timer.start();
+        List<Finding> findings = RsamlModelValidator.validate(model);
+        Timer validate = t.stop();
+
+        gc();
+        t = Timer.start();
+        int violated = invariants(model);
+        Timer ocl = t.stop();
+
+        gc();
+        t = Timer.start();
+        TimingAnalysis.analyse(model.architecture());
+        Timer timing = t.stop();
+
+        System.out.println(ROW + String.format(
+                "| %s | %,d | %.1f MB | %s | %s | %s | %.1f× | %s | %.1f× | %s | %,d MB | %,d (%,d structural, %,d invariants violated) |",
+                shape, elements, bytes / 1e6, load, structure, validate, validate.ratio(structure), ocl, ocl.ratio(structure), timing,
+                peakRss() >> 20, findings.size(), structural.size(), violated));
+        Files.delete(file);
+        Files.delete(small);
+        Files.delete(dir);
+    }
+
+    /**
+     * Every OCL invariant of rsaml.ecore on every element, as the validation evaluates it (RSA-19 by
+     * its one traversal, {@link ModuleActivation}); the number violated.
+     */
+    static int invariants(LoadedModel model) {
+        OclRules rules = OclRules.instance();
+        Map<EClass, List<EClass>> classes = new HashMap<>();
+        Map<EClass, List<String>> constraints = new HashMap<>();
+        ModuleActivation activation = new ModuleActivation();
+        int violated = 0;
+        for (EObject root : model.resource().getContents()) {
+            for (Iterator<EObject> it = EcoreUtil.getAllContents(List.of(root)); it.hasNext();) {
+                EObject o = it.next();
+                for (EClass c : classes.computeIfAbsent(o.eClass(), ValidationBench::withSupertypes)) {
+                    for (String constraint : constraints.computeIfAbsent(c, EcoreUtil::getConstraints)) {
+                        Boolean ok = ModuleActivation.CONSTRAINT.equals(constraint) && o instanceof Module m ? Boolean.valueOf(activation.isActivated(m))
+                                : rules.check(c, constraint, o);
+                        violated += Boolean.TRUE.equals(ok) ? 0 : 1;
+                    }
+                }
+            }
+        }
+        return violated;
+    }
+
+    private static List<EClass> withSupertypes(EClass eClass) {
+        List<EClass> all = new ArrayList<>(eClass.getEAllSuperTypes());
+        all.add(eClass);
+        return all;
+    }
+
+    /** CPU time of the whole process (every thread, the collector's too) and wall time of one measure. */
+    record Timer(long cpu, long wall) {
+        private static final com.sun.management.OperatingSystemMXBean OS =
+                (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
+
+        static Timer start() {
+            return new Timer(OS.getProcessCpuTime(), System.nanoTime());
+        }
+
+        Timer stop() {
+            return new Timer(OS.getProcessCpuTime() - cpu, System.nanoTime() - wall);
+        }
+
+        double ratio(Timer anchor) {
+            return (double) cpu / Math.max(1, anchor.cpu);
+        }
+
+        @Override
+        public String toString() {
+            return String.format("%,d ms (%,d)", cpu / MS, wall / MS);
+        }
+    }
+
+    /** The process's peak resident memory (VmHWM), in bytes; 0 where /proc does not tell. */
+    static long peakRss() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (line.startsWith("VmHWM:")) {
+                    return Long.parseLong(line.replaceAll("[^0-9]", "")) * 1024;
+                }
+            }
+        } catch (Exception e) {
+            // not Linux: no figure
+        }
+        return 0;
     }
 
     static void gc() throws InterruptedException {
@@ -76,18 +222,5 @@ public final class ValidationBench {
             System.gc();
             Thread.sleep(50);
         }
-    }
-
-    static void resetPeaks() {
-        ManagementFactory.getMemoryPoolMXBeans().forEach(MemoryPoolMXBean::resetPeakUsage);
-    }
-
-    static long peakHeap() {
-        return ManagementFactory.getMemoryPoolMXBeans().stream().filter(p -> p.getType() == MemoryType.HEAP)
-                .mapToLong(p -> p.getPeakUsage().getUsed()).sum();
-    }
-
-    static long usedHeap() {
-        return ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
     }
 }
