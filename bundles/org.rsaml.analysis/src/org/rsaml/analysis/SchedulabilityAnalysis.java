@@ -100,7 +100,9 @@ public final class SchedulabilityAnalysis {
      * Preemptive fixed priorities without lock waits, highest priority first. The interfering tasks
      * are kept as one entry per (period, jitter), built up as the priority falls: each task then costs
      * an iteration over the distinct periods, not over all tasks; and the first-job window of the
-     * previous priority level seeds the next one's iteration (it is a lower bound of it).
+     * previous priority level seeds the next one's iteration (it is a lower bound of it). The entries'
+     * interference, their total cost and the level's utilisation are kept up to date as tasks join,
+     * so that a task costs what its own busy period releases, not a pass over every entry.
      */
     private static void preemptive(List<Task> tasks, TaskResult[] byIndex, List<Integer> firstInFirstOut) {
         Set<Integer> skipped = new HashSet<>(firstInFirstOut);
@@ -118,6 +120,11 @@ public final class SchedulabilityAnalysis {
         int entries = 0;
         long seed = 0;
         long[] window = new long[1];
+        // what every task of a level shares: the interference of the entries, the sum of all costs at or
+        // above the level (-1 once too large to add), the utilisation of those tasks
+        ResponseTimes.Interference interference = new ResponseTimes.Interference(period, cost, jitter, 0);
+        long total = 0;
+        double utilisation = 0;
         for (int g = 0; g < n;) {
             int priority = tasks.get(order[g]).priority();
             int end = g;
@@ -135,9 +142,13 @@ public final class SchedulabilityAnalysis {
                     if (t.jitter() == 0) {
                         slot.put(t.period(), e);
                     }
+                    interference.add(e);
                 }
                 cost[e] = Math.addExact(cost[e], t.cost());
+                interference.costChanged(e, t.cost());
                 entryOf[order[k]] = e;
+                total = total < 0 || total > Long.MAX_VALUE - t.cost() ? -1 : total + t.cost();
+                utilisation += (double) t.cost() / t.period();
             }
             long levelWindow = -1;
             for (int k = g; k < end; k++) {
@@ -147,10 +158,12 @@ public final class SchedulabilityAnalysis {
                 }
                 Task t = tasks.get(i);
                 cost[entryOf[i]] -= t.cost();
+                interference.costChanged(entryOf[i], -t.cost());
                 int lowest = priority;
                 byIndex[i] = ResponseTimes.preemptive(t, priority, period, cost, jitter, entries, seed, window,
-                        () -> hp(tasks, t, lowest));
+                        () -> hp(tasks, t, lowest), interference, total < 0 ? -1 : total - t.cost(), utilisation);
                 cost[entryOf[i]] += t.cost();
+                interference.costChanged(entryOf[i], t.cost());
                 levelWindow = Math.max(levelWindow, window[0]);
             }
             // the next level's first job needs at least this level's window beyond its own cost

@@ -163,23 +163,41 @@ public final class ResponseTimes {
      */
     public static TaskResult preemptive(Task task, int effective, long[] period, long[] cost, long[] jitter, int n, long seed,
             long[] firstWindow, java.util.function.Supplier<List<Task>> interfering) {
+        return preemptive(task, effective, period, cost, jitter, n, seed, firstWindow, interfering,
+                new Interference(period, cost, jitter, n), -1, Double.NaN);
+    }
+
+    /**
+     * The same, for a caller that walks the priority levels down and keeps what does not change from
+     * task to task: the interference of the entries (kept up to date as they are added and their costs
+     * change, see {@link Interference#add} and {@link Interference#costChanged}), and, for the task's
+     * level, the sum of the entries' costs ({@code base}, or -1 to sum them here) and the utilisation of
+     * the task and the entries ({@code levelUtilisation}, or NaN; decided exactly here when near 1).
+     * Without them each task costs a pass over every entry, quadratic in the number of distinct periods.
+     */
+    public static TaskResult preemptive(Task task, int effective, long[] period, long[] cost, long[] jitter, int n, long seed,
+            long[] firstWindow, java.util.function.Supplier<List<Task>> interfering, Interference interference, long base,
+            double levelUtilisation) {
         if (firstWindow != null) {
             firstWindow[0] = -1;
         }
         Task analysed = effective == task.priority() ? task
                 : new Task(task.name(), task.period(), task.deadline(), task.cost(), effective, task.jitter(), task.group());
-        if (levelVersusOne(task, period, cost, n) > 0) {
+        int level = Double.isNaN(levelUtilisation) || Math.abs(levelUtilisation - 1) <= 1e-9 ? levelVersusOne(task, period, cost, n)
+                : levelUtilisation > 1 ? 1 : -1;
+        if (level > 0) {
             return new TaskResult(task, OptionalLong.empty(), Verdict.MISSES, levelOverload(task, interfering.get()), null);
         }
         try {
-            long base = 0;
-            for (int k = 0; k < n; k++) {
-                base = Math.addExact(base, cost[k]);
+            if (base < 0) {
+                base = 0;
+                for (int k = 0; k < n; k++) {
+                    base = Math.addExact(base, cost[k]);
+                }
             }
             long worst = -1;
             long worstJob = 0;
             long steps = 0;
-            Interference interference = new Interference(period, cost, jitter, n);
             long w = -1;
             for (long q = 0;; q++) {
                 if (q >= MAX_JOBS) {
@@ -227,13 +245,15 @@ public final class ResponseTimes {
      * each entry waits in a heap, keyed by the largest w its job count holds for, so a step touches
      * only the entries whose count changes (O(log n) each), not every entry. Over a whole busy
      * period that is one heap operation per interfering job released in it, instead of one pass over
-     * all entries per step. Should w ever fall, the counts are recomputed from scratch.
+     * all entries per step. Entries can be added and their costs changed while it is in use (a caller
+     * walking down the priority levels keeps one for all its tasks, whose windows mostly grow from task
+     * to task too); should w ever fall, the counts are recomputed from scratch.
      */
-    static final class Interference {
+    public static final class Interference {
         private final long[] period;
         private final long[] cost;
         private final long[] jitter;
-        private final int n;
+        private int n;
         private final long[] jobs;
         /** The entry's count holds while w &lt;= limit: ceil((w + J) / T) = jobs. */
         private final long[] limit;
@@ -242,48 +262,93 @@ public final class ResponseTimes {
         private long w = Long.MIN_VALUE;
         private long sum;
 
-        Interference(long[] period, long[] cost, long[] jitter, int n) {
+        /** Over the first {@code n} entries of the arrays, which may grow up to their length through {@link #add}. */
+        public Interference(long[] period, long[] cost, long[] jitter, int n) {
             this.period = period;
             this.cost = cost;
             this.jitter = jitter;
             this.n = n;
-            this.jobs = new long[n];
-            this.limit = new long[n];
-            this.heap = new int[n];
+            this.jobs = new long[period.length];
+            this.limit = new long[period.length];
+            this.heap = new int[period.length];
+        }
+
+        /** Entry {@code k}, the next one, has been filled in (its cost may still be 0). */
+        public void add(int k) {
+            if (k != n) {
+                throw new IllegalArgumentException("entries are added in order: " + k + " after " + n);
+            }
+            n++;
+            if (w == Long.MIN_VALUE) {
+                return;
+            }
+            try {
+                count(k, w);
+                sum = Math.addExact(sum, Math.multiplyExact(jobs[k], cost[k]));
+            } catch (ArithmeticException e) {
+                w = Long.MIN_VALUE; // recomputed (and reported too large) by the next at()
+                return;
+            }
+            int i = size++;
+            while (i > 0 && limit[heap[(i - 1) / 2]] > limit[k]) {
+                heap[i] = heap[(i - 1) / 2];
+                i = (i - 1) / 2;
+            }
+            heap[i] = k;
+        }
+
+        /** Entry {@code k}'s cost has just changed by {@code delta}. */
+        public void costChanged(int k, long delta) {
+            if (w == Long.MIN_VALUE) {
+                return;
+            }
+            try {
+                sum = Math.addExact(sum, Math.multiplyExact(jobs[k], delta));
+            } catch (ArithmeticException e) {
+                w = Long.MIN_VALUE;
+            }
+        }
+
+        private void count(int k, long window) {
+            long x = Math.addExact(window, jitter[k]);
+            jobs[k] = x / period[k] + (x % period[k] == 0 ? 0 : 1);
+            limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], period[k]), jitter[k]);
         }
 
         /** The interference in a window of length {@code window}. */
         long at(long window) {
+            try {
+                return advance(window);
+            } catch (ArithmeticException e) {
+                w = Long.MIN_VALUE; // the counts are half updated: recomputed next time
+                throw e;
+            }
+        }
+
+        private long advance(long window) {
             if (window < w) {
                 w = Long.MIN_VALUE;
             }
             if (w == Long.MIN_VALUE) {
-                w = window;
                 sum = 0;
                 size = 0;
                 for (int k = 0; k < n; k++) {
-                    if (cost[k] == 0) {
-                        continue; // contributes nothing whatever the window
-                    }
-                    long x = Math.addExact(window, jitter[k]);
-                    jobs[k] = x / period[k] + (x % period[k] == 0 ? 0 : 1);
-                    limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], period[k]), jitter[k]);
+                    count(k, window);
                     sum = Math.addExact(sum, Math.multiplyExact(jobs[k], cost[k]));
                     heap[size++] = k;
                 }
                 for (int i = size / 2 - 1; i >= 0; i--) {
                     down(i);
                 }
+                w = window;
                 return sum;
             }
             w = window;
             while (size > 0 && limit[heap[0]] < window) {
                 int k = heap[0];
-                long x = Math.addExact(window, jitter[k]);
-                long count = x / period[k] + (x % period[k] == 0 ? 0 : 1);
-                sum = Math.addExact(sum, Math.multiplyExact(count - jobs[k], cost[k]));
-                jobs[k] = count;
-                limit[k] = Math.subtractExact(Math.multiplyExact(count, period[k]), jitter[k]);
+                long before = jobs[k];
+                count(k, window);
+                sum = Math.addExact(sum, Math.multiplyExact(jobs[k] - before, cost[k]));
                 down(0);
             }
             return sum;
@@ -550,9 +615,20 @@ public final class ResponseTimes {
                 counts.add(new long[] { k, jobs, Arith.mul(jobs, t.cost()) });
             }
         }
-        counts.sort((a, b) -> Long.compare(b[2], a[2]));
+        // the MAX_LISTED that delay most, most first, ties in their order: as a stable sort of all would list
+        // them, without sorting thousands for each task that misses
+        java.util.Comparator<long[]> listedFirst = (a, b) -> a[2] != b[2] ? Long.compare(b[2], a[2]) : Long.compare(a[0], b[0]);
+        java.util.PriorityQueue<long[]> kept = new java.util.PriorityQueue<>(listedFirst.reversed());
+        for (long[] c : counts) {
+            kept.add(c);
+            if (kept.size() > MAX_LISTED) {
+                kept.poll();
+            }
+        }
+        List<long[]> top = new ArrayList<>(kept);
+        top.sort(listedFirst);
         java.util.Map<String, Long> listed = new java.util.LinkedHashMap<>();
-        for (long[] c : counts.subList(0, Math.min(MAX_LISTED, counts.size()))) {
+        for (long[] c : top) {
             listed.put(hp.get((int) c[0]).name(), c[1]);
         }
         return new Witness(task.name(), job, release, completion, List.of(), listed, blocker == null ? null : blocker.name(), false,
