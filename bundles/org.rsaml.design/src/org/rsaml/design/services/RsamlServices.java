@@ -17,6 +17,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.Action;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
+import org.rsaml.model.Mission;
 import org.rsaml.model.NamedElement;
 import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlPackage;
@@ -68,6 +69,15 @@ public class RsamlServices {
             name = base + n;
         }
         return name;
+    }
+
+    /** The mission an element (a goal, a sub-goal at any depth) belongs to, or null outside a mission. */
+    public EObject rsamlMission(EObject self) {
+        EObject e = self;
+        while (e != null && !(e instanceof Mission)) {
+            e = e.eContainer();
+        }
+        return e;
     }
 
     /** The lowest CPU core no processor of the architecture claims: a new processor then shares no CPU with another. */

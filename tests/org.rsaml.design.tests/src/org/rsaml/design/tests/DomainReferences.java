@@ -214,6 +214,16 @@ final class DomainReferences {
             }
             EClass element = common(tool, "the elements it deletes", deleted);
             scope = Scope.of("self", element, name(ref(tool, "element"), "element"), element);
+            // Deleting an edge: its view's ends hold the elements of its source and target mappings.
+            List<EObject> edges = domainClasses.keySet().stream().filter(m -> ref(m, "deletionDescription") == tool)
+                    .filter(m -> is(m, "EdgeMapping")).toList();
+            if (!edges.isEmpty()) {
+                String view = name(ref(tool, "elementView"), "elementView");
+                scope = scope.with(view + ".sourceNode.target", common(tool, "the sources of " + names(edges),
+                        edges.stream().flatMap(e -> mappedClasses(e, "sourceMapping").stream()).toList()));
+                scope = scope.with(view + ".targetNode.target", common(tool, "the targets of " + names(edges),
+                        edges.stream().flatMap(e -> mappedClasses(e, "targetMapping").stream()).toList()));
+            }
         } else if (is(tool, "ToolDescription")) {
             // A tool applied to the element clicked: its precondition names the class it applies to.
             Matcher kind = APPLIES_TO.matcher(String.valueOf(get(tool, "precondition")));
@@ -262,6 +272,12 @@ final class DomainReferences {
                             + " elements, not " + type.getName());
                 }
                 inner = scope.with("self", type).with(variable(operation), type);
+            } else if (is(operation, "MoveElement")) {
+                // The feature is the new container's, not the moved element's.
+                EClassifier container = expression(operation, "newContainerExpression", scope);
+                if (container instanceof EClass eClass) {
+                    feature(operation, "featureName", eClass);
+                }
             } else if (is(operation, "For")) {
                 EClassifier each = expression(operation, "expression", scope);
                 inner = scope.with(String.valueOf(get(operation, "iteratorName")), each instanceof EClass eClass ? eClass : null);
@@ -344,6 +360,9 @@ final class DomainReferences {
     }
 
     private EClassifier aql(String at, String text, String body, Scope scope) {
+        if (scope.has(body.trim())) {
+            return scope.get(body.trim()); // a view's end whose element class the tool knows (elementView.targetNode.target)
+        }
         String code = STRING_LITERAL.matcher(body).replaceAll("''");
         Matcher literal = TYPE_LITERAL.matcher(code);
         while (literal.find()) {

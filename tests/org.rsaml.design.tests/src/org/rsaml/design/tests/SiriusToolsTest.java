@@ -211,6 +211,33 @@ class SiriusToolsTest {
         assertEquals(processor, ((DDiagramElement) edges.get(0).getTargetNode()).getTarget(), "it points to " + processor.getName());
     }
 
+    /** The edges drawn from the element that draws {@code source} to the one that draws {@code target}. */
+    private static List<DEdge> edges(DDiagram diagram, EObject source, EObject target) {
+        return diagram.getEdges().stream().filter(e -> ((DDiagramElement) e.getSourceNode()).getTarget() == source)
+                .filter(e -> ((DDiagramElement) e.getTargetNode()).getTarget() == target).toList();
+    }
+
+    /** Draws a link with an edge tool and returns its one edge. */
+    private DEdge link(DDiagram diagram, String toolName, EObject source, EObject target) {
+        Command command = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(diagram, source), (EdgeTarget) drawn(diagram, target),
+                (EdgeCreationDescription) tool(diagram, toolName));
+        assertTrue(command.canExecute(), toolName + " can run from " + RsamlLabels.qualifiedName(source) + " to " + RsamlLabels.qualifiedName(target));
+        project.execute(command);
+        changes++;
+        List<DEdge> drawnEdges = edges(diagram, source, target);
+        assertEquals(1, drawnEdges.size(), toolName + " draws one edge: " + drawnEdges);
+        return drawnEdges.get(0);
+    }
+
+    /** Deletes a link's edge from the diagram. */
+    private void unlink(DDiagram diagram, EObject source, EObject target) {
+        Command command = factory.buildDeleteDiagramElement(edges(diagram, source, target).get(0));
+        assertTrue(command.canExecute(), "deleting the link can run");
+        project.execute(command);
+        changes++;
+        assertEquals(List.of(), edges(diagram, source, target), "the link is no longer drawn");
+    }
+
     private static void namedApart(NamedElement first, NamedElement second) {
         assertNotNull(first.getName(), "the tool names what it creates");
         assertNotEquals(first.getName(), second.getName(), "two elements made by one tool in one place get different names");
@@ -402,6 +429,34 @@ class SiriusToolsTest {
         assertEquals(List.of(), allocations(architectureDiagram, module), "the edge is gone");
         delete(architectureDiagram, p1);
         assertEquals(Set.of(), findings(), "deleting a processor leaves a valid model");
+    }
+
+    @Test
+    void missionLinksAreDeletedWithoutDeletingWhatTheyLink() {
+        var mission = create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
+        var goal = create(missionDiagram, "createGoal", mission, mission.getGoals(), "goal");
+        var sub = create(missionDiagram, "createGoal", mission, mission.getGoals(), "goal");
+        var plan = create(missionDiagram, "createPlan", mission, mission.getPlans(), "plan");
+        var supervisor = create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
+
+        link(missionDiagram, "createSubGoal", goal, sub);
+        assertEquals(List.of(sub), goal.getSubGoals(), "the target goal is a sub-goal of the source");
+        unlink(missionDiagram, goal, sub);
+        assertEquals(List.of(), goal.getSubGoals(), "deleting the link detaches the sub-goal");
+        assertEquals(mission, sub.eContainer(), "which is a goal of its mission again, not deleted");
+        assertEquals(mission, goal.eContainer(), "and the parent goal stays");
+
+        link(missionDiagram, "createAchieves", plan, goal);
+        assertEquals(List.of(goal), plan.getAchieves(), "the plan achieves the goal");
+        unlink(missionDiagram, plan, goal);
+        assertEquals(List.of(), plan.getAchieves(), "deleting the link: the plan no longer achieves the goal");
+        assertTrue(plan.eContainer() == mission && goal.eContainer() == mission, "both stay");
+
+        link(missionDiagram, "createSupervises", supervisor, plan);
+        assertEquals(List.of(plan), supervisor.getPlans(), "the supervisor controls the plan");
+        unlink(missionDiagram, supervisor, plan);
+        assertEquals(List.of(), supervisor.getPlans(), "deleting the link: the supervisor no longer controls the plan");
+        assertTrue(supervisor.eContainer() == architecture && plan.eContainer() == mission, "both stay");
     }
 
     @Test
