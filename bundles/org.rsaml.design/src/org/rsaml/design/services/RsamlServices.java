@@ -33,7 +33,8 @@ public class RsamlServices {
 
     /**
      * A diagram label: name and timing ("resourceChecker — real-time, 2.5 ms"); a connection shows its data, an
-     * action (listed in its module) its function first ("f0_m01 › a0_f0_m01 — ..."), a processor its policy and core.
+     * action (listed in its module) its function first ("f0_m01 › a0_f0_m01 — ..."), a processor its policy, core and
+     * host when it names one.
      */
     public String rsamlLabel(EObject self) {
         if (self instanceof Action action && action.getFunction() != null) {
@@ -41,7 +42,8 @@ public class RsamlServices {
         }
         if (self instanceof Processor processor) {
             return RsamlLabels.name(processor) + " \u2014 " + (processor.isSetSchedPolicy() ? processor.getSchedPolicy().getLiteral() : "fixed priorities")
-                    + (processor.getCore() >= 0 ? ", core " + processor.getCore() : ", any core");
+                    + (processor.getCore() >= 0 ? ", core " + processor.getCore() : ", any core")
+                    + (processor.getHost() == null || processor.getHost().isBlank() ? "" : ", on " + processor.getHost().trim());
         }
         if (self instanceof Connection connection) {
             return connection.getSource() == null ? "" : RsamlLabels.dataType(connection.getSource());

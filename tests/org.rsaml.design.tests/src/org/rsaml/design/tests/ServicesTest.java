@@ -82,6 +82,8 @@ class ServicesTest {
         edf.setName("cpu");
         edf.setSchedPolicy(SchedulingPolicy.EDF);
         assertEquals("cpu — EDF, any core", services.rsamlLabel(edf), "a set policy is named; core -1 is left to the system");
+        edf.setHost("arm-board");
+        assertEquals("cpu — EDF, any core, on arm-board", services.rsamlLabel(edf), "a processor on another machine names it");
     }
 
     @Test
