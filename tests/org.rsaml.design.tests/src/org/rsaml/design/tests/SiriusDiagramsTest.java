@@ -13,8 +13,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.stream.Stream;
@@ -57,7 +59,8 @@ import org.rsaml.validation.RsamlModelValidator;
  * RsaML viewpoint enabled, an architecture and a mission diagram of each example created with Sirius,
  * opened in Sirius's editor (which lays them out), decorated with exactly the findings the model states
  * in its {@code <!-- expect: -->} comments, marked by Sirius's <i>Validate</i> with exactly {@code rsaml validate}'s
- * findings, and exported as images under {@code target/diagrams}. The examples drawn are
+ * findings, readable (no label over another label or a node, checked on the laid-out figures' geometry:
+ * {@link DiagramGeometry}), and exported as images under {@code target/diagrams}. The examples drawn are
  * {@code rsaml.diagrams.examples} (a representative set by default; {@code all} draws every one).
  */
 class SiriusDiagramsTest {
@@ -151,14 +154,22 @@ class SiriusDiagramsTest {
         return result;
     }
 
-    @ParameterizedTest(name = "{0}")
-    @MethodSource("examples")
-    void architectureAndMissionDiagramsAreDecoratedWithTheModelsFindingsAndExported(String example) throws Exception {
+    /** What drawing an example's two diagrams showed: the decorations of both and the geometry of each. */
+    private record Drawn(List<String> decorations, List<DiagramGeometry> geometries) {
+    }
+
+    private static final Map<String, Drawn> DRAWN = new HashMap<>();
+
+    /** Draws the architecture and mission diagrams of {@code example} once, exports them, and keeps what they showed. */
+    private static Drawn drawn(String example) throws Exception {
+        Drawn done = DRAWN.get(example);
+        if (done != null) {
+            return done;
+        }
         Architecture architecture = project.architecture(example);
-        List<ExpectedFinding> stated = ExpectedFinding.of(TestRepository.example(example)).stream()
-                .filter(f -> !f.severity().equals("info")).toList();
         String base = example.replace(".rsaml", "");
         List<String> shown = new ArrayList<>();
+        List<DiagramGeometry> geometries = new ArrayList<>();
         for (String kind : List.of("Architecture", "Missions")) {
             DDiagram diagram = project.create(kind, architecture, base + " " + kind);
             IEditorPart editor = DialectUIManager.INSTANCE.openEditor(project.session, diagram, SiriusProject.MONITOR);
@@ -171,6 +182,7 @@ class SiriusDiagramsTest {
                 if (kind.equals("Architecture")) {
                     validateMarksWhatRsamlValidateFinds(architecture, (IDiagramWorkbenchPart) editor);
                 }
+                geometries.add(DiagramGeometry.of(base + " " + kind, editor));
                 Path image = output().resolve(base + "-" + kind.toLowerCase() + ".png");
                 DialectUIManager.INSTANCE.export(diagram, project.session, new org.eclipse.core.runtime.Path(image.toString()),
                         new ExportFormat(ExportDocumentFormat.NONE, ImageFileFormat.PNG), SiriusProject.MONITOR);
@@ -181,8 +193,37 @@ class SiriusDiagramsTest {
                 project.delete(diagram);
             }
         }
+        done = new Drawn(shown, geometries);
+        DRAWN.put(example, done);
+        return done;
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("examples")
+    void architectureAndMissionDiagramsAreDecoratedWithTheModelsFindingsAndExported(String example) throws Exception {
+        Architecture architecture = project.architecture(example);
+        List<ExpectedFinding> stated = ExpectedFinding.of(TestRepository.example(example)).stream()
+                .filter(f -> !f.severity().equals("info")).toList();
+        List<String> shown = drawn(example).decorations();
         assertEquals(comparable(architecture, stated.stream().map(f -> line(architecture, f)).toList(), stated), comparable(architecture, shown, stated),
                 "the decorations of " + example + "'s diagrams are the findings its expect comments state, each once");
+    }
+
+    /**
+     * The diagrams read well as laid out: no text is drawn over another (a port's name over its module's title or
+     * over another port's name), no text is cut short, no edge's label lies over a node, no port's label over
+     * another element than its port and its module. Checked on the geometry of the figures the image is exported from.
+     */
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("examples")
+    void noLabelIsDrawnOverAnotherLabelOrANode(String example) throws Exception {
+        List<String> overlaps = new ArrayList<>();
+        for (DiagramGeometry geometry : drawn(example).geometries()) {
+            // A diagram with nodes has texts (an architecture without missions draws an empty mission diagram).
+            assertTrue(geometry.nodes.isEmpty() || !geometry.labels.isEmpty(), "the labels of the diagram " + geometry.diagram + " are found");
+            geometry.overlaps().forEach(o -> overlaps.add("in " + geometry.diagram + ": " + o));
+        }
+        assertEquals("", String.join("\n", overlaps), overlaps.size() + " overlaps make the diagrams of " + example + " hard to read");
     }
 
     /**
@@ -250,9 +291,7 @@ class SiriusDiagramsTest {
     void theReadmesArchitectureDiagramImageIsCurrent() throws Exception {
         assertTrue(examples().anyMatch("exp1-hybrid.rsaml"::equals), "exp1-hybrid.rsaml is among the examples drawn");
         Path exported = output().resolve("exp1-hybrid-architecture.png");
-        if (!Files.exists(exported)) {
-            architectureAndMissionDiagramsAreDecoratedWithTheModelsFindingsAndExported("exp1-hybrid.rsaml");
-        }
+        drawn("exp1-hybrid.rsaml");
         Path committed = TestRepository.root().resolve(README_IMAGE);
         String fix = README_IMAGE + " is out of date: copy " + exported + " over it";
         assertTrue(Files.exists(committed), fix);
