@@ -149,6 +149,8 @@ final class ArchitectureArrangement {
         int tallest = 0;
         List<IGraphicalEditPart> modules = find(layer, p -> p instanceof IDiagramListEditPart && target(p) instanceof Module);
         int gap = gap(layer, modules);
+        // Below the layer's title, wherever Sirius starts the layer's contents.
+        int top = titleBand(layer) + MARGIN;
         for (IGraphicalEditPart module : modules) {
             List<IGraphicalEditPart> entries = new ArrayList<>();
             List<IGraphicalEditPart> outputs = new ArrayList<>();
@@ -164,14 +166,14 @@ final class ArchitectureArrangement {
             int width = content.width;
             int height = Math.max(content.height, portsHeight);
             x += left;
-            setBounds(module, x, MARGIN, width, height);
+            setBounds(module, x, top, width, height);
             placePorts(entries, -portSize(entries).width / 2, title + PORT_SPACING, pitch, true);
             placePorts(outputs, width - portSize(outputs).width / 2, title + PORT_SPACING, pitch, false);
             x += width + right + gap;
             tallest = Math.max(tallest, height);
         }
         int width = Math.max(x - gap + MARGIN, preferredTitleWidth(layer) + 2 * MARGIN);
-        int height = titleBand(layer) + MARGIN + tallest + LABEL_BAND;
+        int height = titleBand(layer) + top + tallest + LABEL_BAND;
         setSize(layer, width, height);
         return new Dimension(width, height);
     }

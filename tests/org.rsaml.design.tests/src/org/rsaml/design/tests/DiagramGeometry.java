@@ -10,6 +10,7 @@ import java.util.Map;
 
 import org.eclipse.draw2d.IFigure;
 import org.eclipse.draw2d.geometry.Rectangle;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.gef.EditPart;
 import org.eclipse.gef.GraphicalEditPart;
 import org.eclipse.gmf.runtime.diagram.ui.parts.IDiagramWorkbenchPart;
@@ -28,8 +29,9 @@ import org.rsaml.model.support.RsamlLabels;
 /**
  * What a reader sees of a laid-out Sirius diagram, read from the figures of its open editor (the figures the
  * exported image is painted from): every text drawn, with the bounds of the text itself, and every node's box.
- * {@link #overlaps()} lists what makes the diagram hard to read: two texts over each other, an edge's label over
- * a node, a port's label over another element.
+ * {@link #overlaps()} lists what makes the diagram hard to read: two texts over each other, a text cut short, a text
+ * and a node other than its own element or one containing it over each other (an edge's label on a module, a port's
+ * name on another port, a module over its layer's title).
  */
 final class DiagramGeometry {
 
@@ -156,23 +158,27 @@ final class DiagramGeometry {
                     found.add(a + " overlaps " + b);
                 }
             }
-            if (a.kind() == Kind.EDGE_LABEL || a.kind() == Kind.PORT_LABEL) {
-                for (Box node : nodes) {
-                    if (overlap(a.bounds(), node.bounds()) && !mayCover(a, node.element())) {
-                        found.add(a + " lies over " + node);
-                    }
+            for (Box node : nodes) {
+                if (overlap(a.bounds(), node.bounds()) && !mayCover(a, node.element())) {
+                    found.add(a + " overlaps " + node);
                 }
             }
         }
         return found;
     }
 
-    /** A port's label may touch its own port and the module whose border carries it; an edge label no node. */
+    /**
+     * A text may lie on its own element and on what contains it (a port's name on its module's border, a function
+     * in its module); never on another node: an edge's label on no node at all, a layer's title under none of its
+     * modules, a port's name over no other port or module.
+     */
     private static boolean mayCover(Label label, DDiagramElement node) {
-        if (label.kind() != Kind.PORT_LABEL) {
-            return false;
+        for (EObject e = label.owner(); e != null; e = e.eContainer()) {
+            if (e == node) {
+                return true;
+            }
         }
-        return node == label.owner() || node == label.owner().eContainer();
+        return false;
     }
 
     private static boolean overlap(Rectangle a, Rectangle b) {

@@ -211,8 +211,9 @@ class SiriusDiagramsTest {
 
     /**
      * The diagrams read well as laid out: no text is drawn over another (a port's name over its module's title or
-     * over another port's name), no text is cut short, no edge's label lies over a node, no port's label over
-     * another element than its port and its module. Checked on the geometry of the figures the image is exported from.
+     * over another port's name), no text is cut short, no text and a node other than its own element or one that
+     * contains it lie over each other (an edge's label on a module, a port's name on another module, a module on its
+     * layer's title). Checked on the geometry of the figures the image is exported from.
      */
     @ParameterizedTest(name = "{0}")
     @MethodSource("examples")
