@@ -97,8 +97,8 @@ public final class ActivationBench {
             oclColumn = t.stop() + (oclOff == off ? "" : " DIFFERS: " + oclOff + " not activated");
         }
         Files.delete(file);
-        return String.format("| %s | %,d | %,d | %s | %s | %.2f× | %s | %.1f× | %s | %,d%s |", kind, n, connections, structure, rule,
-                rule.ratio(structure), validate, validate.ratio(structure), oclColumn, off,
+        return String.format("| %s | %,d | %,d | %s | %s | %s | %s | %s | %s | %,d%s |", kind, n, connections, structure, rule,
+                rule.over(structure), validate, validate.over(structure), oclColumn, off,
                 reported == off ? "" : " (validation reported " + reported + ")");
     }
 

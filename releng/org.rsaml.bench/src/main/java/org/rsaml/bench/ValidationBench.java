@@ -141,8 +141,8 @@ public final class ValidationBench {
         Timer timing = t.stop();
 
         System.out.println(ROW + String.format(
-                "| %s | %,d | %.1f MB | %s | %s | %s | %.1f× | %s | %.1f× | %s | %,d MB | %,d (%,d structural, %,d invariants violated) |",
-                shape, elements, bytes / 1e6, load, structure, validate, validate.ratio(structure), ocl, ocl.ratio(structure), timing,
+                "| %s | %,d | %.1f MB | %s | %s | %s | %s | %s | %s | %s | %,d MB | %,d (%,d structural, %,d invariants violated) |",
+                shape, elements, bytes / 1e6, load, structure, validate, validate.over(structure), ocl, ocl.over(structure), timing,
                 peakRss() >> 20, findings.size(), structural.size(), violated));
         Files.delete(file);
         Files.delete(small);
@@ -193,8 +193,9 @@ public final class ValidationBench {
             return new Timer(OS.getProcessCpuTime() - cpu, System.nanoTime() - wall);
         }
 
-        double ratio(Timer anchor) {
-            return (double) cpu / Math.max(1, anchor.cpu);
+        /** This time over the anchor's, as text; none when the anchor is below the CPU clock's resolution (10 ms). */
+        String over(Timer anchor) {
+            return anchor.cpu < 10 * MS ? "(anchor < 10 ms)" : String.format("%.1f×", (double) cpu / anchor.cpu);
         }
 
         @Override
