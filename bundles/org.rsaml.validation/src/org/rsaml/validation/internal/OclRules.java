@@ -5,23 +5,33 @@
 package org.rsaml.validation.internal;
 
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 import org.eclipse.emf.ecore.EAnnotation;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EClassifier;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EOperation;
 import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.EStructuralFeature;
+import org.eclipse.emf.ecore.ETypedElement;
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.ocl.EvaluationEnvironment;
 import org.eclipse.ocl.ParserException;
 import org.eclipse.ocl.ecore.Constraint;
+import org.eclipse.ocl.ecore.EcoreEnvironmentFactory;
+import org.eclipse.ocl.ecore.EcoreEvaluationEnvironment;
 import org.eclipse.ocl.ecore.OCL;
 import org.eclipse.ocl.ecore.OCLExpression;
+import org.eclipse.ocl.expressions.CollectionKind;
+import org.eclipse.ocl.util.CollectionUtil;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.RsamlValidationSetup;
@@ -40,7 +50,7 @@ public final class OclRules {
 
     private static volatile OclRules instance;
 
-    private final OCL ocl = OCL.newInstance();
+    private final OCL ocl = OCL.newInstance(new CachingEnvironmentFactory());
     private final Map<EClass, Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>>> queries = new HashMap<>();
     private final List<String> problems = new ArrayList<>();
     private final Set<String> declared = new HashSet<>();
@@ -175,5 +185,59 @@ public final class OclRules {
         }
         Object result = query.evaluate(object);
         return result instanceof Boolean b ? b : null;
+    }
+
+    /**
+     * Classic OCL's Ecore environment, whose evaluation remembers the collection kind of each feature
+     * and operation. Classic OCL works it out again on every navigation of a feature and every
+     * operation's result, creating a new collection type each time (about a fifth of all evaluation
+     * time on large models); the kind belongs to the metamodel, so it never changes.
+     */
+    private static final class CachingEnvironmentFactory extends EcoreEnvironmentFactory {
+        private final Map<ETypedElement, Optional<CollectionKind>> kinds = new ConcurrentHashMap<>();
+
+        @Override
+        public EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> createEvaluationEnvironment() {
+            return new CachingEvaluationEnvironment(this);
+        }
+
+        @Override
+        public EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> createEvaluationEnvironment(
+                EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> parent) {
+            return new CachingEvaluationEnvironment(parent, this);
+        }
+    }
+
+    /** {@link EcoreEvaluationEnvironment#coerceValue} with the feature's collection kind looked up once. */
+    private static final class CachingEvaluationEnvironment extends EcoreEvaluationEnvironment {
+        private final CachingEnvironmentFactory factory;
+
+        CachingEvaluationEnvironment(CachingEnvironmentFactory factory) {
+            super(factory);
+            this.factory = factory;
+        }
+
+        CachingEvaluationEnvironment(EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> parent,
+                CachingEnvironmentFactory factory) {
+            super(parent);
+            this.factory = factory;
+        }
+
+        @Override
+        protected Object coerceValue(ETypedElement element, Object value, boolean copy) {
+            CollectionKind kind = factory.kinds.computeIfAbsent(element, e -> Optional.ofNullable(getCollectionKind(e))).orElse(null);
+            if (kind != null) {
+                if (value instanceof Collection<?> collection) {
+                    return copy ? CollectionUtil.createNewCollection(kind, collection) : collection;
+                }
+                Collection<Object> single = CollectionUtil.createNewCollection(kind);
+                single.add(value);
+                return single;
+            }
+            if (value instanceof Collection<?> collection) {
+                return collection.isEmpty() ? null : collection.iterator().next();
+            }
+            return value;
+        }
     }
 }
