@@ -20,6 +20,7 @@ import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.util.LineAndColumn;
+import org.eclipse.xtext.util.OnChangeEvictingCache;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.resource.LoadProblem;
 import org.rsaml.model.resource.LocatingResource;
@@ -74,6 +75,22 @@ public class RsamlTextResource extends LazyLinkingResource implements LocatingRe
             getContents().clear();
             getErrors().add(new LoadProblem("the model is nested too deeply to be read; RsaML reads at most "
                     + RsamlResource.MAX_DEPTH + " levels", String.valueOf(getURI()), 0, 0));
+        }
+    }
+
+    /**
+     * Resolves every reference with the scopes computed once: resolving one changes nothing a name depends on, so
+     * the scope cache is kept (Xtext would clear it at each resolution, which makes linking quadratic in the model).
+     */
+    @Override
+    public void resolveLazyCrossReferences(CancelIndicator monitor) {
+        if (getCache() instanceof OnChangeEvictingCache cache) {
+            cache.execWithoutCacheClear(this, resource -> {
+                super.resolveLazyCrossReferences(monitor);
+                return null;
+            });
+        } else {
+            super.resolveLazyCrossReferences(monitor);
         }
     }
 
