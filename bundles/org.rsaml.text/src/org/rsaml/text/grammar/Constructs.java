@@ -67,10 +67,14 @@ public final class Constructs {
         public String describe() {
             return switch (kind) {
                 case ENUM -> "one of " + String.join(", ", literals);
-                case REFERENCE -> "a reference to " + article(referenced.getName());
-                case REFERENCES -> "references to " + plural(referenced.getName()) + ", separated by commas";
+                case REFERENCE -> "a reference to " + (isAny() ? "any element" : article(referenced.getName()));
+                case REFERENCES -> "references to " + (isAny() ? "any elements" : plural(referenced.getName())) + ", separated by commas";
                 default -> kind.description();
             };
+        }
+
+        private boolean isAny() {
+            return "NamedElement".equals(referenced.getName());
         }
 
         /** A value to show in an example. */

@@ -37,11 +37,18 @@ import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.xmi.impl.EcoreResourceFactoryImpl;
 import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
+import org.eclipse.xtext.Grammar;
+import org.eclipse.xtext.XtextStandaloneSetup;
+import org.eclipse.xtext.resource.XtextResourceSet;
+import org.rsaml.model.RsamlPackage;
+import org.rsaml.text.grammar.Constructs;
+import org.rsaml.text.grammar.LanguageReference;
 import org.rsaml.validation.RulesDocument;
 
 /**
  * Generates RsaML's EMF code (model, edit and editor) from {@code rsaml.ecore} outside Eclipse, and
- * the rule table of {@code docs/rules.md} from the rule catalogue.
+ * the rule table of {@code docs/rules.md} from the rule catalogue, the language reference of
+ * {@code docs/textual-syntax.md} from the grammar of the textual syntax.
  *
  * <p>The genmodel is rebuilt from the current .ecore on every run (keeping its settings), so that
  * a change to the metamodel needs nothing but this command. Everything is generated into a scratch
@@ -109,6 +116,37 @@ public final class RsamlCodegen {
             deleteTree(scratch);
         }
         writeRulesDocument(root);
+        writeLanguageReference(root);
+    }
+
+    /** The grammar of the textual syntax as its source says (the generated parser may be older: it is regenerated after this). */
+    static Grammar grammar(Path root) {
+        RsamlPackage.eINSTANCE.eClass();
+        XtextResourceSet resources = new XtextStandaloneSetup().createInjectorAndDoEMFRegistration().getInstance(XtextResourceSet.class);
+        Resource resource = resources.getResource(URI.createFileURI(root.resolve(GRAMMAR).toAbsolutePath().toString()), true);
+        if (!resource.getErrors().isEmpty()) {
+            throw new IllegalStateException(GRAMMAR + " has errors: " + resource.getErrors());
+        }
+        return (Grammar) resource.getContents().get(0);
+    }
+
+    static final String GRAMMAR = "bundles/org.rsaml.text/src/org/rsaml/text/RsamlText.xtext";
+
+    /** Rewrites the language reference of docs/textual-syntax.md from the textual grammar and the textual examples. */
+    static void writeLanguageReference(Path root) throws IOException {
+        Path page = root.resolve(LanguageReference.PATH);
+        String current = Files.readString(page, StandardCharsets.UTF_8);
+        List<String> examples = new ArrayList<>();
+        try (Stream<Path> files = Files.list(root.resolve("examples-text"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".rsa")).sorted().toList()) {
+                examples.add(Files.readString(file, StandardCharsets.UTF_8));
+            }
+        }
+        String updated = LanguageReference.update(current, new Constructs(grammar(root)), examples);
+        if (!updated.equals(current)) {
+            Files.writeString(page, updated, StandardCharsets.UTF_8);
+        }
+        System.out.println("Regenerated the language reference of " + page + " from the grammar of the textual syntax");
     }
 
     /** Rewrites the rule table of docs/rules.md from the catalogue (the file is left alone when it is up to date). */

@@ -1,0 +1,68 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.text.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.eclipse.xtext.GrammarUtil;
+import org.junit.jupiter.api.Test;
+import org.rsaml.tests.support.TestRepository;
+import org.rsaml.text.RsamlTextStandaloneSetup;
+import org.rsaml.text.grammar.Constructs;
+import org.rsaml.text.grammar.LanguageReference;
+import org.rsaml.text.services.RsamlTextGrammarAccess;
+
+/** docs/textual-syntax.md's reference is what the regeneration command makes from the grammar, and it names every keyword. */
+class LanguageReferenceTest {
+
+    private static final RsamlTextGrammarAccess GRAMMAR = RsamlTextStandaloneSetup.injector().getInstance(RsamlTextGrammarAccess.class);
+
+    private static String page() throws Exception {
+        return Files.readString(TestRepository.root().resolve(LanguageReference.PATH), StandardCharsets.UTF_8);
+    }
+
+    private static List<String> examples() throws Exception {
+        List<String> texts = new ArrayList<>();
+        try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples-text"))) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".rsa")).sorted().toList()) {
+                texts.add(Files.readString(file, StandardCharsets.UTF_8));
+            }
+        }
+        return texts;
+    }
+
+    @Test
+    void theCommittedReferenceIsTheGeneratedOne() throws Exception {
+        String page = page();
+        assertEquals(LanguageReference.update(page, new Constructs(GRAMMAR.getGrammar()), examples()), page,
+                LanguageReference.PATH + "'s reference differs from the grammar; regenerate it with " + LanguageReference.REGENERATE);
+    }
+
+    @Test
+    void theReferenceShowsEveryKeywordAndUnitInItsTables() throws Exception {
+        String page = page();
+        String generated = page.substring(page.indexOf(LanguageReference.BEGIN), page.indexOf(LanguageReference.END));
+        List<String> missing = new ArrayList<>();
+        for (String keyword : GrammarUtil.getAllKeywords(GRAMMAR.getGrammar())) {
+            if (Character.isLetter(keyword.charAt(0)) && !generated.contains("`" + keyword + "`") && !generated.contains(" " + keyword + ",")
+                    && !generated.contains(" " + keyword + " |")) {
+                missing.add(keyword);
+            }
+        }
+        missing.removeAll(List.of("NaN", "Infinity"));
+        assertEquals(List.of(), missing, "keywords the generated reference does not show");
+        for (String unit : List.of("ns", "us", "ms", "s")) {
+            assertTrue(generated.contains("| `" + unit + "` |"), "the units table has " + unit);
+        }
+    }
+}
