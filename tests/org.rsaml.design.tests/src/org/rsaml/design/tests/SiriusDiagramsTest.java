@@ -27,15 +27,26 @@ import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IMarker;
 import org.eclipse.core.resources.IResource;
 import org.eclipse.core.resources.ResourcesPlugin;
+import org.eclipse.draw2d.IFigure;
+import org.eclipse.draw2d.Label;
 import org.eclipse.emf.ecore.EObject;
+import org.eclipse.gmf.runtime.diagram.ui.editparts.IGraphicalEditPart;
 import org.eclipse.gmf.runtime.diagram.ui.parts.IDiagramWorkbenchPart;
+import org.eclipse.sirius.business.api.session.Session;
 import org.eclipse.sirius.common.tools.api.resource.ImageFileFormat;
 import org.eclipse.sirius.diagram.DDiagram;
 import org.eclipse.sirius.diagram.DDiagramElement;
+import org.eclipse.sirius.diagram.ui.edit.api.part.IDDiagramEditPart;
+import org.eclipse.sirius.diagram.ui.edit.api.part.IDiagramElementEditPart;
 import org.eclipse.sirius.diagram.ui.part.ValidateAction;
+import org.eclipse.sirius.diagram.ui.tools.api.decoration.AbstractSiriusDecorationDescriptorProvider;
+import org.eclipse.sirius.diagram.ui.tools.api.decoration.DecorationDescriptor;
+import org.eclipse.sirius.diagram.ui.tools.api.decoration.SiriusDecorationDescriptorProvider;
+import org.eclipse.sirius.diagram.ui.tools.api.decoration.SiriusDecorationProviderRegistry;
 import org.eclipse.sirius.ui.business.api.dialect.DialectUIManager;
 import org.eclipse.sirius.ui.business.api.dialect.ExportFormat;
 import org.eclipse.sirius.ui.business.api.dialect.ExportFormat.ExportDocumentFormat;
+import org.eclipse.sirius.viewpoint.DSemanticDecorator;
 import org.eclipse.sirius.viewpoint.Decoration;
 import org.eclipse.sirius.viewpoint.description.DecorationDescription;
 import org.eclipse.ui.IEditorPart;
@@ -59,7 +70,7 @@ import org.rsaml.validation.RsamlModelValidator;
  * RsaML viewpoint enabled, an architecture and a mission diagram of each example created with Sirius,
  * opened in Sirius's editor (which lays them out), decorated with exactly the findings the model states
  * in its {@code <!-- expect: -->} comments, marked by Sirius's <i>Validate</i> with exactly {@code rsaml validate}'s
- * findings, readable (no label over another label or a node, checked on the laid-out figures' geometry:
+ * findings without a second decoration for them (what is drawn on each element stays its findings, once each), readable (no label over another label or a node, checked on the laid-out figures' geometry:
  * {@link DiagramGeometry}), and exported as images under {@code target/diagrams}. The examples drawn are
  * {@code rsaml.diagrams.examples} (a representative set by default; {@code all} draws every one).
  */
@@ -117,6 +128,79 @@ class SiriusDiagramsTest {
             }
         }
         return shown;
+    }
+
+    /**
+     * "hybrid/control/resourceChecker: RSA-08: ..." for each line of every decoration Sirius draws on the open diagram's
+     * elements, whoever provides it (RsaML's viewpoint, the decoration of Validate's markers, ...), as Sirius's decorator
+     * computes them for each edit part it decorates.
+     */
+    private static List<String> decorationsDrawn(IDiagramWorkbenchPart part) {
+        Decorable decorable = new Decorable();
+        List<String> shown = new ArrayList<>();
+        for (Object o : new LinkedHashSet<>(part.getDiagramGraphicalViewer().getEditPartRegistry().values())) {
+            if (!(o instanceof IDiagramElementEditPart editPart) || !decorable.decorates(editPart)) {
+                continue;
+            }
+            DDiagramElement element = editPart.resolveDiagramElement();
+            String on = RsamlLabels.qualifiedName(element.getTarget());
+            for (SiriusDecorationDescriptorProvider provider : List.copyOf(SiriusDecorationProviderRegistry.INSTANCE.getDecorationDescriptorProviders())) {
+                if (provider.provides(editPart)) {
+                    for (DecorationDescriptor descriptor : provider.getDecorationDescriptors(editPart, project.session)) {
+                        for (String line : lines(element, descriptor)) {
+                            shown.add(on + ": " + line);
+                        }
+                    }
+                }
+            }
+        }
+        shown.sort(null);
+        return shown;
+    }
+
+    /** The lines of a decoration's tooltip: the viewpoint's tooltip expression on the element's target, or the figure's labels. */
+    private static List<String> lines(DDiagramElement element, DecorationDescriptor descriptor) {
+        List<Decoration> all = new ArrayList<>(element.getDecorations());
+        all.addAll(element.getTransientDecorations());
+        for (Decoration decoration : all) {
+            DecorationDescription description = (DecorationDescription) decoration.getDescription();
+            if (description.getName().equals(descriptor.getName())) {
+                return List.of(project.evaluate(element.getTarget(), description.getTooltipExpression()).split("\n"));
+            }
+        }
+        List<String> lines = new ArrayList<>();
+        if (descriptor.getTooltipAsFigure() != null) {
+            labels(descriptor.getTooltipAsFigure(), lines);
+        } else if (descriptor.getTooltipAsString() != null) {
+            lines.addAll(List.of(descriptor.getTooltipAsString().split("\n")));
+        }
+        return lines.isEmpty() ? List.of("(decoration " + descriptor.getName() + ")") : lines;
+    }
+
+    private static void labels(IFigure figure, List<String> lines) {
+        if (figure instanceof Label label && !label.getText().isEmpty()) {
+            lines.add(label.getText());
+        }
+        for (Object child : figure.getChildren()) {
+            labels((IFigure) child, lines);
+        }
+    }
+
+    /** Which edit parts Sirius's decorator decorates: not labels, not a compartment showing its parent's element again. */
+    private static final class Decorable extends AbstractSiriusDecorationDescriptorProvider {
+        boolean decorates(IDiagramElementEditPart editPart) {
+            if (!shouldBeDecorated(editPart) || editPart.resolveDiagramElement() == null) {
+                return false;
+            }
+            return editPart.getParent() instanceof IDDiagramEditPart || !(editPart.getParent() instanceof IGraphicalEditPart parent)
+                    || !(parent.resolveSemanticElement() instanceof DSemanticDecorator parentElement)
+                    || parentElement.getTarget() != editPart.resolveDiagramElement().getTarget();
+        }
+
+        @Override
+        protected List<DecorationDescriptor> createDecorationDescriptors(IDiagramElementEditPart diagramEditPart, Session session) {
+            return List.of();
+        }
     }
 
     /**
@@ -180,7 +264,12 @@ class SiriusDiagramsTest {
                 assertEquals(new LinkedHashSet<>(onDiagram).size(), onDiagram.size(), "each finding decorates its element once: " + onDiagram);
                 shown.addAll(onDiagram);
                 if (kind.equals("Architecture")) {
-                    validateMarksWhatRsamlValidateFinds(architecture, (IDiagramWorkbenchPart) editor);
+                    IDiagramWorkbenchPart part = (IDiagramWorkbenchPart) editor;
+                    List<String> once = onDiagram.stream().map(s -> s.substring(s.indexOf(' ') + 1)).sorted().toList();
+                    assertEquals(once, decorationsDrawn(part), "the decorations drawn on the elements of " + example + "'s architecture diagram are its findings, once each");
+                    validateMarksWhatRsamlValidateFinds(architecture, part);
+                    assertEquals(once, decorationsDrawn(part), "after Diagram > Validate the decorations drawn on each element of " + example
+                            + "'s architecture diagram are still its findings, once each (Validate's markers add no second decoration)");
                 }
                 geometries.add(DiagramGeometry.of(base + " " + kind, editor));
                 Path image = output().resolve(base + "-" + kind.toLowerCase() + ".png");

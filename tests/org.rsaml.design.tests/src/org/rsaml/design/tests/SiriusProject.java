@@ -14,6 +14,10 @@ import java.util.List;
 import org.eclipse.core.resources.IFile;
 import org.eclipse.core.resources.IProject;
 import org.eclipse.core.runtime.NullProgressMonitor;
+import org.eclipse.core.runtime.jobs.IJobChangeEvent;
+import org.eclipse.core.runtime.jobs.IJobManager;
+import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.core.runtime.jobs.JobChangeAdapter;
 import org.eclipse.core.runtime.preferences.InstanceScope;
 import org.eclipse.emf.common.command.Command;
 import org.eclipse.emf.common.util.URI;
@@ -23,6 +27,7 @@ import org.eclipse.emf.transaction.RecordingCommand;
 import org.eclipse.emf.transaction.TransactionalEditingDomain;
 import org.eclipse.sirius.business.api.componentization.ViewpointRegistry;
 import org.eclipse.sirius.business.api.dialect.DialectManager;
+import org.eclipse.sirius.business.api.modelingproject.AbstractRepresentationsFileJob;
 import org.eclipse.sirius.business.api.modelingproject.ModelingProject;
 import org.eclipse.sirius.business.api.preferences.SiriusPreferencesKeys;
 import org.eclipse.sirius.business.api.session.Session;
@@ -72,6 +77,11 @@ final class SiriusProject {
             try (InputStream in = Files.newInputStream(TestRepository.example(example))) {
                 file.create(in, true, MONITOR);
             }
+        }
+        // Sirius attaches the models added to a modeling project to its session in a job of its own; the project is
+        // set up once that job is done, not while it changes the session under the viewpoint's selection.
+        awaitRepresentationsFileJobs();
+        for (String example : examples) {
             URI uri = result.uri(example);
             if (session.getSemanticResources().stream().noneMatch(r -> r.getURI().equals(uri))) {
                 result.execute(new AddSemanticResourceCommand(session, uri, MONITOR));
@@ -86,6 +96,38 @@ final class SiriusProject {
         assertTrue(session.getSelectedViewpoints(false).stream().anyMatch(v -> "RsaML".equals(v.getName())),
                 "the RsaML viewpoint is enabled in the project: " + session.getSelectedViewpoints(false));
         return result;
+    }
+
+    /**
+     * Waits until no job of Sirius's on representations files (opening a session, attaching semantic resources) is
+     * scheduled or running, dispatching the display's events meanwhile (those jobs may need the UI thread).
+     */
+    static void awaitRepresentationsFileJobs() throws InterruptedException {
+        IJobManager jobs = Job.getJobManager();
+        Display display = Display.getCurrent();
+        if (display == null) {
+            jobs.join(AbstractRepresentationsFileJob.FAMILY, MONITOR);
+            return;
+        }
+        JobChangeAdapter wake = new JobChangeAdapter() {
+            @Override
+            public void done(IJobChangeEvent event) {
+                if (event.getJob().belongsTo(AbstractRepresentationsFileJob.FAMILY)) {
+                    display.wake();
+                }
+            }
+        };
+        jobs.addJobChangeListener(wake);
+        try {
+            while (jobs.find(AbstractRepresentationsFileJob.FAMILY).length > 0) {
+                if (!display.readAndDispatch()) {
+                    display.sleep();
+                }
+            }
+        } finally {
+            jobs.removeJobChangeListener(wake);
+        }
+        flushEvents();
     }
 
     void delete() throws Exception {
