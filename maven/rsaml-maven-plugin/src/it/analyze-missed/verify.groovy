@@ -25,4 +25,12 @@ assert log.contains('RsaML: timeline written: target/rsaml/timeline/mobileBaseSl
 def lanes = new groovy.xml.XmlSlurper().parse(svg).'**'.findAll { it.name() == 'rect' }*.title*.text()
 assert lanes.any { it.startsWith('navigation/obstacleDetector: waits up to 40 ms') }
 assert lanes.any { it == 'control/velocityController: responds within 3 ms' }
+// The verdicts as JSON, the document rsaml analyze --format json prints: the missed requirement and its worst path.
+def json = new groovy.json.JsonSlurper().parse(new File(basedir, 'target/rsaml/timing.json'))
+assert json*.file == ['src/main/rsaml/base.rsaml']
+assert json[0].verdict == 'misses'
+def missed = json[0].latencies.find { it.requirement == 'scanToWheels' }
+assert missed.verdict == 'misses' && missed.reactionTimeNs == 57000000 && missed.maxNs == 50000000
+assert missed.worstPath*.stage == ['navigation/obstacleDetector', 'control/velocityController']
+assert log.contains('RsaML: timing analysis written: target/rsaml/timing.json')
 return true

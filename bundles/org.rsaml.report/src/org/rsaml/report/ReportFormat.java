@@ -70,4 +70,20 @@ public enum ReportFormat {
         }
         throw new IllegalArgumentException("unknown report format '" + name + "' (expected text, json, sarif or junit)");
     }
+
+    /**
+     * The format of a report file named {@code file}, told by its extension ({@code .sarif}, {@code .json},
+     * {@code .xml}, {@code .txt}).
+     *
+     * @throws IllegalArgumentException when the extension is none of them
+     */
+    public static ReportFormat ofFileName(String file) {
+        String lower = file.toLowerCase(Locale.ROOT);
+        for (ReportFormat f : values()) {
+            if (lower.endsWith("." + f.extension())) {
+                return f;
+            }
+        }
+        throw new IllegalArgumentException("cannot tell the format from the file name; write FORMAT=FILE");
+    }
 }

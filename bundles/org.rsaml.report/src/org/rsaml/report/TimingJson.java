@@ -4,6 +4,8 @@
  */
 package org.rsaml.report;
 
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.Map;
 
 import org.rsaml.analysis.ArchitectureTiming;
@@ -16,14 +18,15 @@ import org.rsaml.analysis.Segment;
 import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.Witness;
+import org.rsaml.model.support.AtomicFiles;
 
 import com.google.gson.GsonBuilder;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 
 /**
- * The timing of an architecture as JSON (what {@code rsaml analyze --format json} and the analyze
- * goal's {@code json} report write); times are integral nanoseconds.
+ * The timing of an architecture as JSON (what {@code rsaml analyze --format json} prints and the analyze
+ * goal's {@code timingJson} file holds); times are integral nanoseconds.
  */
 public final class TimingJson {
 
@@ -37,9 +40,24 @@ public final class TimingJson {
         return o;
     }
 
-    /** The entries of every analysed model as the JSON document written, indented. */
-    public static String document(JsonArray entries) {
-        return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(entries);
+    /** The document written for a run: one entry per analysed model, in the order they were analysed. */
+    public static final class Document {
+        private final JsonArray entries = new JsonArray();
+
+        /** Adds the timing of the model read from {@code file}. */
+        public void add(String file, ArchitectureTiming timing) {
+            entries.add(of(file, timing));
+        }
+
+        /** The document, indented, without a final line break. */
+        public String text() {
+            return new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create().toJson(entries);
+        }
+
+        /** Writes the document (with a final line break) to {@code file}, replaced whole or left as it was. */
+        public void write(Path file) throws IOException {
+            AtomicFiles.writeString(file, text() + "\n");
+        }
     }
 
     public static JsonObject of(ArchitectureTiming timing) {

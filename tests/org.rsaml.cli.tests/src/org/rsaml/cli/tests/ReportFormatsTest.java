@@ -48,6 +48,15 @@ class ReportFormatsTest {
         }
     }
 
+    /** The findings an example ({@code examples/x.rsaml}) states in its expect comments. */
+    private static List<ExpectedFinding> expectations(String example) {
+        try {
+            return ExpectedFinding.of(Cli.ROOT.resolve(example));
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
     static Set<ValidationMessage> sarifProblems(String sarif) throws Exception {
         if (sarifSchema == null) {
             loadSarifSchema();
@@ -244,24 +253,32 @@ class ReportFormatsTest {
         try (InputStreamReader in = new InputStreamReader(Files.newInputStream(report), StandardCharsets.UTF_8)) {
             suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(in);
         }
-        assertEquals(8, suites.size());
+        List<String> examples = ValidateCommandTest.exampleModels();
+        assertEquals(examples.size() + 1, suites.size(), "a suite per example and one for the unreadable input");
         ReportTestSuite exp2 = suites.stream().filter(s -> s.getFullClassName().equals("examples/exp2-defects.rsaml")
                 || s.getName().contains("exp2-defects")).findFirst().orElseThrow(() -> new AssertionError(suites));
-        assertEquals(Rules.all().size(), exp2.getNumberOfTests());
-        assertEquals(5, exp2.getNumberOfFailures());
+        assertEquals(Rules.all().size(), exp2.getNumberOfTests(), "a test case per rule");
+        List<ExpectedFinding> errors = ValidateCommandTest.exp2().stream().filter(e -> e.severity().equals("error")).toList();
+        assertEquals(errors.size(), exp2.getNumberOfFailures(), "a failure per error the model's expect comments state");
         List<ReportTestCase> failed = exp2.getTestCases().stream().filter(ReportTestCase::hasFailure).toList();
-        assertEquals(List.of("RSA-01", "RSA-02", "RSA-04", "RSA-07", "RSA-08"),
-                failed.stream().map(ReportTestCase::getFailureType).sorted().toList());
-        ReportTestCase budget = failed.stream().filter(c -> c.getFailureType().equals("RSA-08")).findFirst().orElseThrow();
-        assertEquals("RSA-08 layer-execution-budget (hybridMobileRobotWithDefects/control/resourceChecker)", budget.getName());
-        assertEquals("Module 'resourceChecker' takes 2.5 ms but layer 'control' allows at most 2.0 ms", budget.getFailureMessage());
-        assertTrue(budget.getFailureDetail().startsWith(ValidateCommandTest.EXP2_FINDINGS.get(2)), budget.getFailureDetail());
+        assertEquals(errors.stream().map(ExpectedFinding::ruleId).sorted().toList(),
+                failed.stream().map(ReportTestCase::getFailureType).sorted().toList(), "the failures are the stated rules");
+        for (ExpectedFinding e : errors) {
+            ReportTestCase failure = failed.stream().filter(c -> c.getName().endsWith("(" + e.qualifiedName() + ")")).findFirst()
+                    .orElseThrow(() -> new AssertionError("no failure on " + e.qualifiedName() + " among " + failed));
+            assertEquals(e.ruleId() + " " + Rules.byId(e.ruleId()).orElseThrow().name() + " (" + e.qualifiedName() + ")",
+                    failure.getName(), e.what() + ": a case named by rule and element");
+            assertEquals(e.message(), failure.getFailureMessage(), e.what() + ": the message");
+            assertTrue(failure.getFailureDetail().startsWith("examples/exp2-defects.rsaml:" + e.line() + ":" + e.column() + ": "
+                    + e.severity() + " " + e.ruleId() + ": " + e.message()), e.what() + ": the located finding: " + failure.getFailureDetail());
+        }
 
         ReportTestSuite binary = suites.stream().filter(s -> s.getNumberOfErrors() == 1).findFirst().orElseThrow();
-        assertEquals(1, binary.getNumberOfTests());
-        assertTrue(binary.getTestCases().get(0).hasError());
+        assertEquals(1, binary.getNumberOfTests(), "the unreadable input is one test case");
+        assertTrue(binary.getTestCases().get(0).hasError(), "an unreadable input is an error, not a failure");
+        long withExpectations = examples.stream().filter(m -> !expectations(m).isEmpty()).count();
         long cleanSuites = suites.stream().filter(s -> s.getNumberOfFailures() == 0 && s.getNumberOfErrors() == 0).count();
-        assertEquals(5, cleanSuites, "every example but exp2-defects and mobile-base-latency-missed is clean");
+        assertEquals(examples.size() - withExpectations, cleanSuites, "every example that states no finding is clean");
     }
 
     @Test
@@ -286,8 +303,10 @@ class ReportFormatsTest {
         assertEquals(1, r.code(), r::toString);
         assertTrue(r.out().contains("error RSA-08"), r::toString);
         assertEquals(Set.of(), sarifProblems(Files.readString(dir.resolve("reports/rsaml.sarif"))));
-        assertEquals(6, JsonParser.parseString(Files.readString(dir.resolve("reports/rsaml.json"))).getAsJsonObject()
-                .getAsJsonObject("summary").get("errors").getAsInt());
+        long errors = ValidateCommandTest.exampleModels().stream().flatMap(m -> expectations(m).stream())
+                .filter(e -> e.severity().equals("error")).count();
+        assertEquals(errors, JsonParser.parseString(Files.readString(dir.resolve("reports/rsaml.json"))).getAsJsonObject()
+                .getAsJsonObject("summary").get("errors").getAsInt(), "the JSON report counts the errors the examples state");
         assertTrue(Files.readString(dir.resolve("reports/TEST-rsaml.xml")).startsWith("<?xml"));
         try (var listing = Files.list(dir.resolve("reports"))) {
             assertEquals(3, listing.count(), "no temporary file is left behind");

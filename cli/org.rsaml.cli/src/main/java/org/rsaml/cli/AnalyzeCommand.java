@@ -20,8 +20,6 @@ import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
 import org.rsaml.report.TimingJson;
 
-import com.google.gson.JsonArray;
-
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -84,14 +82,14 @@ final class AnalyzeCommand implements Callable<Integer> {
     private int analyse(boolean print, TimingFailOn level) {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
-        JsonArray json = new JsonArray();
+        TimingJson.Document json = new TimingJson.Document();
         TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, timeline, level, new TimingBatch.Listener() {
             @Override
             public void analysed(String displayName, ArchitectureTiming timing) {
                 if (print && format == Format.text) {
                     out.print(TimingText.render(displayName, timing));
                 } else if (print) {
-                    json.add(TimingJson.of(displayName, timing));
+                    json.add(displayName, timing);
                 }
             }
 
@@ -119,7 +117,7 @@ final class AnalyzeCommand implements Callable<Integer> {
             }
         });
         if (print && format == Format.json) {
-            out.println(TimingJson.document(json));
+            out.println(json.text());
         }
         out.flush();
         err.flush();

@@ -37,11 +37,11 @@ import picocli.CommandLine.Model.CommandSpec;
         footer = { "", "Example: rsaml diagram --format html -o target/diagrams models/" })
 final class DiagramCommand implements Callable<Integer> {
 
-    @Option(names = "--view", defaultValue = "architecture", paramLabel = "VIEW", converter = ViewConverter.class,
+    @Option(names = "--view", defaultValue = "architecture", paramLabel = "VIEW",
             description = "architecture (layers, modules, ports, links, devices) or mission (missions, goals, plans, supervisors, orders); default ${DEFAULT-VALUE}.")
     DiagramView view;
 
-    @Option(names = { "-f", "--format" }, defaultValue = "svg", paramLabel = "FORMAT", converter = FormatConverter.class,
+    @Option(names = { "-f", "--format" }, defaultValue = "svg", paramLabel = "FORMAT",
             description = "svg or html; default ${DEFAULT-VALUE}.")
     DiagramFormat format;
 
@@ -97,27 +97,5 @@ final class DiagramCommand implements Callable<Integer> {
         int code = failed == 0 ? ExitCodes.OK : ExitCodes.INPUT_ERROR;
         out.flush();
         return code;
-    }
-
-    static final class ViewConverter implements CommandLine.ITypeConverter<DiagramView> {
-        @Override
-        public DiagramView convert(String value) {
-            try {
-                return DiagramView.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
-        }
-    }
-
-    static final class FormatConverter implements CommandLine.ITypeConverter<DiagramFormat> {
-        @Override
-        public DiagramFormat convert(String value) {
-            try {
-                return DiagramFormat.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
-        }
     }
 }

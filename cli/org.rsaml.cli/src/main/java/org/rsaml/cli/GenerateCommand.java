@@ -17,7 +17,6 @@ import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.RsamlValidationSetup;
 
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -35,7 +34,7 @@ import picocli.CommandLine.Model.CommandSpec;
                 "2:usage error, a model that cannot be read, or output that cannot be written" })
 final class GenerateCommand implements Callable<Integer> {
 
-    @Option(names = { "-t", "--target" }, required = true, paramLabel = "TARGET", converter = TargetConverter.class,
+    @Option(names = { "-t", "--target" }, required = true, paramLabel = "TARGET",
             description = "cpp (CMake C++17 project) or ros2 (ament_cmake packages).")
     Target target;
 
@@ -47,7 +46,6 @@ final class GenerateCommand implements Callable<Integer> {
     boolean force;
 
     @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
-            converter = ReportArgs.FormatConverter.class,
             description = "Format of the model's findings on standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).")
     ReportFormat format;
 
@@ -88,16 +86,5 @@ final class GenerateCommand implements Callable<Integer> {
         out.flush();
         err.flush();
         return outcome.exitCode();
-    }
-
-    static final class TargetConverter implements CommandLine.ITypeConverter<Target> {
-        @Override
-        public Target convert(String value) {
-            try {
-                return Target.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
-        }
     }
 }

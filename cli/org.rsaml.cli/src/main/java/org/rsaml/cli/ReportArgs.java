@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 
 import org.rsaml.report.ExitCodes;
@@ -36,7 +35,6 @@ import picocli.CommandLine.Spec;
 final class ReportArgs {
 
     @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
-            converter = FormatConverter.class,
             description = "Format written to standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).")
     ReportFormat format;
 
@@ -45,7 +43,7 @@ final class ReportArgs {
                     "A FILE alone takes its format from the extension (.sarif, .json, .xml, .txt)." })
     List<String> outputs = new ArrayList<>();
 
-    @Option(names = "--fail-on", defaultValue = "error", paramLabel = "LEVEL", converter = FailOnConverter.class,
+    @Option(names = "--fail-on", defaultValue = "error", paramLabel = "LEVEL",
             description = "Lowest severity that makes the exit code 1: error, warning or never (default: ${DEFAULT-VALUE}).")
     FindingFailOn failOn;
 
@@ -74,7 +72,7 @@ final class ReportArgs {
                     file = output.substring(eq + 1);
                 } else {
                     file = output;
-                    fmt = byExtension(file);
+                    fmt = ReportFormat.ofFileName(file);
                 }
             } catch (IllegalArgumentException e) {
                 throw new CommandLine.ParameterException(spec.commandLine(), "--output " + output + ": " + e.getMessage());
@@ -128,37 +126,5 @@ final class ReportArgs {
         }
         err.flush();
         return code;
-    }
-
-    private static ReportFormat byExtension(String file) {
-        String lower = file.toLowerCase(Locale.ROOT);
-        for (ReportFormat f : ReportFormat.values()) {
-            if (lower.endsWith("." + f.extension())) {
-                return f;
-            }
-        }
-        throw new IllegalArgumentException("cannot tell the format from the file name; write FORMAT=FILE");
-    }
-
-    static final class FormatConverter implements CommandLine.ITypeConverter<ReportFormat> {
-        @Override
-        public ReportFormat convert(String value) {
-            try {
-                return ReportFormat.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
-        }
-    }
-
-    static final class FailOnConverter implements CommandLine.ITypeConverter<FindingFailOn> {
-        @Override
-        public FindingFailOn convert(String value) {
-            try {
-                return FindingFailOn.parse(value);
-            } catch (IllegalArgumentException e) {
-                throw new CommandLine.TypeConversionException(e.getMessage());
-            }
-        }
     }
 }

@@ -13,8 +13,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Properties;
+import java.util.function.Function;
 
+import org.rsaml.diagram.DiagramFormat;
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.generator.Target;
 import org.rsaml.report.ExitCodes;
+import org.rsaml.report.FindingFailOn;
+import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
 
 import picocli.CommandLine;
@@ -72,6 +78,12 @@ public final class RsamlCli implements Runnable {
         commandLine.setOut(out);
         commandLine.setErr(err);
         commandLine.setCaseInsensitiveEnumValuesAllowed(true);
+        // Every value with a name of its own is read by its type's parse, which names the value and what it can be.
+        commandLine.registerConverter(ReportFormat.class, parsedBy(ReportFormat::parse));
+        commandLine.registerConverter(FindingFailOn.class, parsedBy(FindingFailOn::parse));
+        commandLine.registerConverter(DiagramView.class, parsedBy(DiagramView::parse));
+        commandLine.registerConverter(DiagramFormat.class, parsedBy(DiagramFormat::parse));
+        commandLine.registerConverter(Target.class, parsedBy(Target::parse));
         commandLine.setExitCodeExceptionMapper(e -> ExitCodes.INPUT_ERROR);
         commandLine.setParameterExceptionHandler((e, arguments) -> {
             CommandLine cmd = e.getCommandLine();
@@ -114,6 +126,17 @@ public final class RsamlCli implements Runnable {
             err.println("rsaml: out of memory; give the JVM more heap (RSAML_JAVA_OPTS=-Xmx4g)");
             return ExitCodes.INPUT_ERROR;
         }
+    }
+
+    /** A converter that reads a value with {@code parse}, whose {@link IllegalArgumentException} says what is wrong. */
+    private static <T> CommandLine.ITypeConverter<T> parsedBy(Function<String, T> parse) {
+        return value -> {
+            try {
+                return parse.apply(value);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.TypeConversionException(e.getMessage());
+            }
+        };
     }
 
     /** The commands or options closest to a misspelled one ({@code valdate}, {@code --fromat}), by edit distance. */

@@ -5,6 +5,7 @@
 package org.rsaml.maven;
 
 import java.io.File;
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -20,16 +21,19 @@ import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
+import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
+import org.rsaml.report.TimingJson;
 
 /**
  * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
  * build fails when a deadline or a latency requirement can be missed (with {@code failOn} not-analysed,
  * also when anything is not analysed; {@link TimingFailOn} decides, as for rsaml analyze); the verdicts, with their
  * witnesses, are logged, and the timing rules' findings (RSA-22 to RSA-25) are written as reports
- * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses.
+ * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses;
+ * {@code timingJson} names a file for the verdicts as JSON, as {@code rsaml analyze --format json} prints them.
  * A model that cannot be read or analysed fails the build whatever {@code failOnMiss} says, after
  * the reports are written, as {@code rsaml analyze} exits 2 for it in every format.
  */
@@ -43,6 +47,13 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     /** A directory for an SVG timeline of each witness: missed deadline, overloaded EDF interval, exceeded latency requirement (none when not set). */
     @Parameter(property = "rsaml.timeline")
     File timeline;
+
+    /**
+     * A file for the verdicts and witnesses as JSON, the document {@code rsaml analyze --format json} prints
+     * (none when not set).
+     */
+    @Parameter(property = "rsaml.analysis.timingJson")
+    File timingJson;
 
     /** Log the verdicts but do not fail the build on them (false: whatever {@code failOn} says, the verdicts only fail the reports' entries). */
     @Parameter(property = "rsaml.analysis.failOnMiss", defaultValue = "true")
@@ -76,10 +87,12 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
         TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new MojoExecutionException(
                 "failOn is '" + failOn + "'; it is miss, not-analysed or never"));
         List<Path> shown = models.stream().map(model -> Path.of(relative(model.toPath()))).toList();
+        TimingJson.Document json = new TimingJson.Document();
         TimingBatch.Outcome outcome = TimingBatch.run(baseDirectory.toPath(), shown, timeline == null ? null : timeline.toPath(),
                 failOnMiss ? level : TimingFailOn.NEVER, new TimingBatch.Listener() {
                     @Override
                     public void analysed(String displayName, ArchitectureTiming timing) {
+                        json.add(displayName, timing);
                         for (String line : TimingText.render(displayName, timing).split("\n")) {
                             if (timing.verdict() == Verdict.MISSES && line.contains("MISSES")) {
                                 log.error(line);
@@ -104,6 +117,15 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
                         log.error(line);
                     }
                 });
+        if (timingJson != null) {
+            try {
+                json.write(timingJson.toPath());
+                log.info("RsaML: timing analysis written: " + relative(timingJson.toPath()));
+            } catch (IOException e) {
+                throw new MojoExecutionException("Cannot write the RsaML timing analysis " + relative(timingJson.toPath()) + ": "
+                        + ReportFiles.reason(e, timingJson.toPath()), e);
+            }
+        }
         if (!reportFormats.isEmpty()) {
             Path base = baseDirectory.toPath();
             Report report = ModelBatch.analyze(base, models.stream().map(File::toPath).toList(), level.findingThreshold());

@@ -1,0 +1,85 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.report.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.diagram.DiagramFormat;
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.diagram.TimingMode;
+import org.rsaml.report.DiagramBatch;
+import org.rsaml.report.ModelFiles;
+import org.rsaml.tests.support.TestRepository;
+
+/** What {@code rsaml diagram} and the diagram goal run: the clash check first, then every model, view and format. */
+class DiagramBatchTest {
+
+    private static final DiagramBatch BOTH_VIEWS = new DiagramBatch(List.of(DiagramView.ARCHITECTURE, DiagramView.MISSION),
+            List.of(DiagramFormat.SVG, DiagramFormat.HTML), TimingMode.AUTO);
+
+    /** What a front end is told, in order. */
+    private static final class Heard implements DiagramBatch.Listener {
+        final List<Path> written = new ArrayList<>();
+        final List<String> failures = new ArrayList<>();
+
+        @Override
+        public void written(Path file) {
+            written.add(file);
+        }
+
+        @Override
+        public void failed(List<String> lines, Throwable cause) {
+            failures.addAll(lines);
+        }
+    }
+
+    @Test
+    void twoModelsThatWouldWriteOneFileAreNamedBeforeAnythingIsDrawn(@TempDir Path dir) throws Exception {
+        Files.createDirectories(dir.resolve("a"));
+        Files.createDirectories(dir.resolve("b"));
+        Files.copy(TestRepository.example("exp1-hybrid.rsaml"), dir.resolve("a/robot.rsaml"));
+        Files.copy(TestRepository.example("exp1-hybrid.rsaml"), dir.resolve("b/robot.rsaml"));
+        List<ModelFiles.Input> inputs = ModelFiles.select(dir, List.of(Path.of("a"), Path.of("b")));
+
+        Optional<String> clash = BOTH_VIEWS.clash(inputs, Path.of("out"));
+
+        assertEquals(Optional.of("a/robot.rsaml and b/robot.rsaml would both be drawn to out/robot-architecture.svg"), clash,
+                "the first clash names both models and the file, in the directory as the user spelt it");
+        assertFalse(Files.exists(dir.resolve("out")), "checking for clashes writes nothing");
+    }
+
+    @Test
+    void everyModelIsDrawnInEveryViewAndFormatAndAFailingOneCostsOnlyItself(@TempDir Path dir) throws Exception {
+        Files.copy(TestRepository.example("exp1-hybrid.rsaml"), dir.resolve("hybrid.rsaml"));
+        Files.writeString(dir.resolve("broken.rsaml"), "<not a model");
+        List<ModelFiles.Input> inputs = ModelFiles.select(dir, List.of(Path.of("broken.rsaml"), Path.of("hybrid.rsaml"),
+                Path.of("missing.rsaml")));
+        assertEquals(Optional.empty(), BOTH_VIEWS.clash(inputs, Path.of("out")), "models with different names do not clash");
+        Heard heard = new Heard();
+
+        int failed = BOTH_VIEWS.draw(inputs, dir.resolve("out"), heard);
+
+        assertEquals(2, failed, "the unparsable and the missing model fail: " + heard.failures);
+        assertTrue(heard.failures.stream().anyMatch(l -> l.startsWith("broken.rsaml:")), "the unparsable model is named: " + heard.failures);
+        assertTrue(heard.failures.stream().anyMatch(l -> l.startsWith("missing.rsaml:")), "the missing model is named: " + heard.failures);
+        List<String> names = heard.written.stream().map(p -> p.getFileName().toString()).sorted().toList();
+        assertEquals(List.of("hybrid-architecture.html", "hybrid-architecture.svg", "hybrid-mission.html", "hybrid-mission.svg"), names,
+                "the readable model is drawn in both views and both formats, after the model that failed");
+        for (Path file : heard.written) {
+            assertEquals(dir.resolve("out"), file.getParent(), "every diagram goes into the directory asked for");
+            assertTrue(Files.size(file) > 0, file + " is written");
+        }
+    }
+}

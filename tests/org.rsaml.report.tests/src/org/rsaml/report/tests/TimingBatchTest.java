@@ -1,0 +1,143 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.report.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.analysis.ArchitectureTiming;
+import org.rsaml.analysis.Verdict;
+import org.rsaml.report.ExitCodes;
+import org.rsaml.report.TimingBatch;
+import org.rsaml.report.TimingFailOn;
+import org.rsaml.report.TimingJson;
+import org.rsaml.tests.support.TestRepository;
+
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+
+/** What {@code rsaml analyze} and the analyze goal run: every model analysed, its timelines, the outcome and the JSON document. */
+class TimingBatchTest {
+
+    private static final Path MEETS = Path.of("examples/mobile-base-latency.rsaml");
+    private static final Path MISSES = Path.of("examples/mobile-base-latency-missed.rsaml");
+    private static final Path MISSING = Path.of("examples/no-such-model.rsaml");
+
+    /** What a front end is told, in order. */
+    private static final class Heard implements TimingBatch.Listener {
+        final List<String> analysed = new ArrayList<>();
+        final List<Verdict> verdicts = new ArrayList<>();
+        final List<String> unanalysable = new ArrayList<>();
+        final List<Path> timelines = new ArrayList<>();
+        final List<String> withoutTimeline = new ArrayList<>();
+        final List<String> failures = new ArrayList<>();
+        final TimingJson.Document json = new TimingJson.Document();
+
+        @Override
+        public void analysed(String displayName, ArchitectureTiming timing) {
+            analysed.add(displayName);
+            verdicts.add(timing.verdict());
+            json.add(displayName, timing);
+        }
+
+        @Override
+        public void unanalysable(List<String> lines) {
+            unanalysable.addAll(lines);
+        }
+
+        @Override
+        public void timelineFailed(String line) {
+            failures.add(line);
+        }
+
+        @Override
+        public void timeline(Path file) {
+            timelines.add(file);
+        }
+
+        @Override
+        public void noTimeline(String displayName) {
+            withoutTimeline.add(displayName);
+        }
+    }
+
+    private static TimingBatch.Outcome run(List<Path> models, Path timeline, TimingFailOn failOn, Heard heard) {
+        return TimingBatch.run(TestRepository.root(), models, timeline, failOn, heard);
+    }
+
+    @Test
+    void aMissFailsTheRunAndAModelThatCannotBeReadCostsOnlyItself() {
+        Heard heard = new Heard();
+        TimingBatch.Outcome outcome = run(List.of(MISSING, MEETS, MISSES), null, TimingFailOn.MISS, heard);
+
+        assertEquals(List.of("examples/mobile-base-latency.rsaml", "examples/mobile-base-latency-missed.rsaml"), heard.analysed,
+                "both readable models are analysed, after the missing one");
+        assertEquals(List.of(Verdict.MEETS, Verdict.MISSES), heard.verdicts, "the slow detector's requirement can be missed");
+        assertTrue(heard.unanalysable.stream().anyMatch(l -> l.startsWith(MISSING + ":")), "the missing model is named: " + heard.unanalysable);
+        assertEquals(List.of("examples/mobile-base-latency-missed.rsaml"), outcome.failing(), "only the missing requirement fails");
+        assertEquals(List.of("examples/no-such-model.rsaml"), outcome.unanalysable(), "the model that cannot be read");
+        assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "a model that cannot be read makes the exit code 2");
+    }
+
+    @Test
+    void theLevelDecidesWhatFails() {
+        assertEquals(ExitCodes.FINDINGS, run(List.of(MEETS, MISSES), null, TimingFailOn.MISS, new Heard()).exitCode(),
+                "a possible miss exits with 1");
+        assertEquals(ExitCodes.OK, run(List.of(MEETS, MISSES), null, TimingFailOn.NEVER, new Heard()).exitCode(),
+                "never: verdicts do not change the exit code");
+        assertEquals(ExitCodes.OK, run(List.of(MEETS), null, TimingFailOn.NOT_ANALYSED, new Heard()).exitCode(),
+                "a proven model passes even when anything not analysed would fail");
+    }
+
+    @Test
+    void aWitnessIsDrawnAsATimelineAndAModelWithoutOneIsSaid(@TempDir Path dir) throws Exception {
+        Heard heard = new Heard();
+        TimingBatch.Outcome outcome = run(List.of(MEETS, MISSES), dir.resolve("timeline"), TimingFailOn.MISS, heard);
+
+        assertFalse(outcome.outputFailed(), "the timelines are written: " + heard.failures);
+        assertEquals(List.of("examples/mobile-base-latency.rsaml"), heard.withoutTimeline, "the proven model has no witness to draw");
+        assertFalse(heard.timelines.isEmpty(), "the missed requirement's worst path is drawn");
+        for (Path file : heard.timelines) {
+            assertEquals(dir.resolve("timeline"), file.getParent(), "timelines go into the directory asked for");
+            assertTrue(Files.readString(file).contains("<svg"), file + " is an SVG image");
+        }
+    }
+
+    @Test
+    void aTimelineThatCannotBeWrittenIsAnOutputError(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("taken"), "a file where the directory should be");
+        Heard heard = new Heard();
+        TimingBatch.Outcome outcome = run(List.of(MISSES), dir.resolve("taken"), TimingFailOn.MISS, heard);
+
+        assertTrue(outcome.outputFailed(), "the timeline could not be written");
+        assertEquals(1, heard.failures.size(), "one line says so: " + heard.failures);
+        assertTrue(heard.failures.get(0).contains("error: cannot write the timeline"), heard.failures.get(0));
+        assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "output that cannot be written makes the exit code 2");
+    }
+
+    @Test
+    void theJsonDocumentHasAnEntryPerAnalysedModel() {
+        Heard heard = new Heard();
+        run(List.of(MEETS, MISSES), null, TimingFailOn.MISS, heard);
+
+        JsonArray document = JsonParser.parseString(heard.json.text()).getAsJsonArray();
+        assertEquals(heard.analysed.size(), document.size(), "one entry per analysed model: " + heard.json.text());
+        for (int i = 0; i < document.size(); i++) {
+            JsonObject entry = document.get(i).getAsJsonObject();
+            assertEquals(heard.analysed.get(i), entry.get("file").getAsString(), "entries in the order the models were analysed");
+            assertEquals(heard.verdicts.get(i) == Verdict.MEETS ? "meets" : "misses", entry.get("verdict").getAsString(),
+                    "the entry's verdict is the analysis's");
+        }
+    }
+}
