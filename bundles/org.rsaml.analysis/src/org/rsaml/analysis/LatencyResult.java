@@ -6,7 +6,7 @@ package org.rsaml.analysis;
 
 import java.util.List;
 
-import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.LatencyRequirement;
 
 /**
@@ -56,7 +56,7 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
 
     /** Each hop of the worst path as {@link #worstPathText()} writes it, {@code perception/filter +15 ms}. */
     public List<String> worstPathHops() {
-        return worstPath.stream().map(h -> h.label() + " +" + Durations.format(h.totalNs())).toList();
+        return worstPath.stream().map(h -> h.label() + " +" + RsamlTimes.text(h.totalNs())).toList();
     }
 
     /** The latency the requirement bounds (-1 when not bounded). */

@@ -6,7 +6,7 @@ package org.rsaml.analysis;
 
 import java.util.List;
 
-import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * One path of a latency requirement and its bounds: the stages data passes (modules, and the
@@ -26,6 +26,6 @@ public record PathBound(List<Hop> hops, long reactionNs, long dataAgeNs, String 
 
     /** The path in one line, {@code perception/filter +15 ms -> control/drive +22 ms}. */
     public String text() {
-        return String.join(" -> ", hops.stream().map(h -> h.label() + " +" + Durations.format(h.totalNs())).toList());
+        return String.join(" -> ", hops.stream().map(h -> h.label() + " +" + RsamlTimes.text(h.totalNs())).toList());
     }
 }

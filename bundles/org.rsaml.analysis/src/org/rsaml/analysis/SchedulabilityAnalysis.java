@@ -11,7 +11,7 @@ import java.util.OptionalLong;
 import java.util.Set;
 
 import org.rsaml.analysis.internal.Bounds;
-import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.analysis.internal.ProcessorDemand;
 import org.rsaml.analysis.internal.ResponseTimes;
 import org.rsaml.analysis.internal.Utilisation;
@@ -355,8 +355,8 @@ public final class SchedulabilityAnalysis {
         for (Task t : tasks) {
             if (w != null && w.jobs().containsKey(t.name())) {
                 results.add(new TaskResult(t, OptionalLong.empty(), Verdict.MISSES, "can miss its deadline: its "
-                        + w.jobs().get(t.name()) + " job(s) due within the first " + Durations.format(w.interval())
-                        + " are part of a demand of " + Durations.format(w.demand()) + " that does not fit", null));
+                        + w.jobs().get(t.name()) + " job(s) due within the first " + RsamlTimes.text(w.interval())
+                        + " are part of a demand of " + RsamlTimes.text(w.demand()) + " that does not fit", null));
             } else {
                 results.add(new TaskResult(t, OptionalLong.empty(), Verdict.NOT_ANALYSED,
                         "not analysed individually: under an EDF overload any task can be late", null));
@@ -372,8 +372,8 @@ public final class SchedulabilityAnalysis {
         if (w == null) {
             return head + ": no scheduler can meet every deadline";
         }
-        return head + ": jobs released and due within the first " + Durations.format(w.interval()) + " need "
-                + Durations.format(w.demand()) + ", so no scheduler can meet every deadline";
+        return head + ": jobs released and due within the first " + RsamlTimes.text(w.interval()) + " need "
+                + RsamlTimes.text(w.demand()) + ", so no scheduler can meet every deadline";
     }
 
     private static ProcessorResult unanalysed(String processor, SchedulingPolicy policy, List<Task> tasks, Utilisation u,

@@ -24,6 +24,7 @@ import org.rsaml.model.Architecture;
 import org.rsaml.model.Module;
 import org.rsaml.model.Processor;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * The timing of an architecture, with the tasks taken from the generator's {@link ExecutionPlan}, so
@@ -180,7 +181,7 @@ public final class TimingAnalysis {
             if (offset > 0) {
                 // the release sleeps until each action's start date: counted as execution (sound, pessimistic)
                 cost = Math.addExact(cost, offset);
-                note = "its actions' start dates (up to " + org.rsaml.analysis.internal.Durations.format(offset)
+                note = "its actions' start dates (up to " + RsamlTimes.text(offset)
                         + ") are counted as execution";
             }
         }

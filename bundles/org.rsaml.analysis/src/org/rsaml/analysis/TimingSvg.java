@@ -13,7 +13,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 
-import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.support.AtomicFiles;
 import org.rsaml.model.support.RsamlText;
 
@@ -93,13 +93,13 @@ public final class TimingSvg {
         b.append("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").append(WIDTH).append("\" height=\"").append(height)
                 .append("\" font-family=\"sans-serif\" font-size=\"12\">\n");
         b.append("<title>").append(esc(w.task() + " on " + processor + ": response time "
-                + (w.completion() < 0 ? "unbounded" : Durations.format(w.completion() - w.release())) + ", deadline "
-                + Durations.format(t.task().deadline()))).append("</title>\n");
+                + (w.completion() < 0 ? "unbounded" : RsamlTimes.text(w.completion() - w.release())) + ", deadline "
+                + RsamlTimes.text(t.task().deadline()))).append("</title>\n");
         b.append("<text x=\"10\" y=\"20\" font-weight=\"bold\">").append(esc(processor + ": " + w.task() + " misses its deadline"))
                 .append("</text>\n");
         b.append("<text x=\"10\" y=\"38\">").append(esc("critical instant at 0; job " + (w.job() + 1) + " released at "
-                + Durations.format(w.release()) + ", due at " + Durations.format(due) + ", completes at "
-                + (w.completion() < 0 ? "(cut short)" : Durations.format(w.completion())))).append("</text>\n");
+                + RsamlTimes.text(w.release()) + ", due at " + RsamlTimes.text(due) + ", completes at "
+                + (w.completion() < 0 ? "(cut short)" : RsamlTimes.text(w.completion())))).append("</text>\n");
         for (Map.Entry<String, Integer> lane : lanes.entrySet()) {
             int y = 60 + LANE * lane.getValue();
             b.append("<text x=\"10\" y=\"").append(y + 17).append("\">").append(esc(lane.getKey())).append("</text>\n");
@@ -111,14 +111,14 @@ public final class TimingSvg {
             boolean own = s.task().equals(w.task());
             b.append(String.format(Locale.ROOT, "<rect x=\"%.2f\" y=\"%d\" width=\"%.2f\" height=\"%d\" fill=\"%s\" stroke=\"#333\">",
                     LEFT + s.start() * scale, y + 4, Math.max(0.5, (s.end() - s.start()) * scale), LANE - 10, own ? "#d9534f" : "#5b9bd5"));
-            b.append("<title>").append(esc(s.task() + " job " + (s.job() + 1) + ": " + Durations.format(s.start()) + " - "
-                    + Durations.format(s.end()))).append("</title></rect>\n");
+            b.append("<title>").append(esc(s.task() + " job " + (s.job() + 1) + ": " + RsamlTimes.text(s.start()) + " - "
+                    + RsamlTimes.text(s.end()))).append("</title></rect>\n");
         }
         int bottom = 60 + LANE * lanes.size();
         b.append(String.format(Locale.ROOT, "<line x1=\"%.2f\" y1=\"50\" x2=\"%.2f\" y2=\"%d\" stroke=\"#d9534f\" stroke-dasharray=\"4 3\"/>\n",
                 LEFT + due * scale, LEFT + due * scale, bottom));
         b.append(String.format(Locale.ROOT, "<text x=\"%.2f\" y=\"%d\" fill=\"#d9534f\">deadline %s</text>\n", LEFT + due * scale + 3,
-                bottom + 14, esc(Durations.format(due))));
+                bottom + 14, esc(RsamlTimes.text(due))));
         b.append(String.format(Locale.ROOT, "<text x=\"%d\" y=\"%d\">0</text>\n", LEFT, bottom + 14));
         b.append("</svg>\n");
         return b.toString();
@@ -147,8 +147,8 @@ public final class TimingSvg {
         StringBuilder b = new StringBuilder();
         b.append("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").append(WIDTH).append("\" height=\"").append(height)
                 .append("\" font-family=\"sans-serif\" font-size=\"12\">\n");
-        String head = processor + ": the jobs released and due within the first " + Durations.format(d.interval()) + " need "
-                + Durations.format(d.demand()) + ", more than the interval holds";
+        String head = processor + ": the jobs released and due within the first " + RsamlTimes.text(d.interval()) + " need "
+                + RsamlTimes.text(d.demand()) + ", more than the interval holds";
         b.append("<title>").append(esc(head)).append("</title>\n");
         b.append("<text x=\"10\" y=\"20\" font-weight=\"bold\">").append(esc(head)).append("</text>\n");
         b.append("<text x=\"10\" y=\"38\">").append(esc("every task released at 0; light: a job's window from its release to its"
@@ -162,10 +162,10 @@ public final class TimingSvg {
                     .append("\" y2=\"").append(y + LANE - 4).append("\" stroke=\"#ccc\"/>\n");
             for (long k = 0; k < Math.min(jobs, MAX_JOBS_DRAWN); k++) {
                 long release = k * t.period();
-                String job = t.name() + " job " + (k + 1) + ": released at " + Durations.format(release) + ", due at "
-                        + Durations.format(release + t.deadline());
+                String job = t.name() + " job " + (k + 1) + ": released at " + RsamlTimes.text(release) + ", due at "
+                        + RsamlTimes.text(release + t.deadline());
                 bar(b, release, t.deadline(), y, scale, "#f0d9a8", job);
-                bar(b, release, Math.min(t.cost(), t.deadline()), y, scale, "#d9534f", job + ", needs " + Durations.format(t.cost()));
+                bar(b, release, Math.min(t.cost(), t.deadline()), y, scale, "#d9534f", job + ", needs " + RsamlTimes.text(t.cost()));
             }
             if (jobs > MAX_JOBS_DRAWN) {
                 b.append("<text x=\"").append(WIDTH - 200).append("\" y=\"").append(y + 17).append("\">")
@@ -174,13 +174,13 @@ public final class TimingSvg {
         }
         int y = 60 + LANE * tasks.size();
         b.append("<text x=\"10\" y=\"").append(y + 17).append("\">demand</text>\n");
-        bar(b, 0, d.demand(), y, scale, "#d9534f", "demand of the jobs due within " + Durations.format(d.interval()) + ": "
-                + Durations.format(d.demand()));
+        bar(b, 0, d.demand(), y, scale, "#d9534f", "demand of the jobs due within " + RsamlTimes.text(d.interval()) + ": "
+                + RsamlTimes.text(d.demand()));
         int bottom = y + LANE;
         b.append(String.format(Locale.ROOT, "<line x1=\"%.2f\" y1=\"50\" x2=\"%.2f\" y2=\"%d\" stroke=\"#d9534f\" stroke-dasharray=\"4 3\"/>\n",
                 LEFT + d.interval() * scale, LEFT + d.interval() * scale, bottom));
         b.append(String.format(Locale.ROOT, "<text x=\"%.2f\" y=\"%d\" fill=\"#d9534f\">interval %s</text>\n",
-                LEFT + d.interval() * scale + 3, bottom + 14, esc(Durations.format(d.interval()))));
+                LEFT + d.interval() * scale + 3, bottom + 14, esc(RsamlTimes.text(d.interval()))));
         b.append(String.format(Locale.ROOT, "<text x=\"%d\" y=\"%d\">0</text>\n", LEFT, bottom + 14));
         b.append("</svg>\n");
         return b.toString();
@@ -207,9 +207,9 @@ public final class TimingSvg {
         b.append("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").append(WIDTH).append("\" height=\"").append(height)
                 .append("\" font-family=\"sans-serif\" font-size=\"12\">\n");
         b.append("<title>").append(esc("latency requirement " + l.name() + ": " + kind + " up to "
-                + Durations.format(l.boundNs()) + ", at most " + Durations.format(l.maxNs()) + " allowed")).append("</title>\n");
+                + RsamlTimes.text(l.boundNs()) + ", at most " + RsamlTimes.text(l.maxNs()) + " allowed")).append("</title>\n");
         b.append("<text x=\"10\" y=\"20\" font-weight=\"bold\">").append(esc("latency requirement '" + l.name()
-                + "' can be exceeded: " + kind + " up to " + Durations.format(l.boundNs()) + ", at most " + Durations.format(l.maxNs())))
+                + "' can be exceeded: " + kind + " up to " + RsamlTimes.text(l.boundNs()) + ", at most " + RsamlTimes.text(l.maxNs())))
                 .append("</text>\n");
         b.append("<text x=\"10\" y=\"38\">").append(esc("worst of " + l.paths() + (l.paths() == 1 ? " path" : " paths") + " from "
                 + l.from() + " to " + l.to() + "; the source changes at 0; light: waiting for the stage, red: the stage responding")).append("</text>\n");
@@ -220,18 +220,18 @@ public final class TimingSvg {
             b.append("<text x=\"10\" y=\"").append(y + 17).append("\">").append(esc(h.label())).append("</text>\n");
             b.append("<line x1=\"").append(LEFT).append("\" y1=\"").append(y + LANE - 4).append("\" x2=\"").append(WIDTH - 20)
                     .append("\" y2=\"").append(y + LANE - 4).append("\" stroke=\"#ccc\"/>\n");
-            bar(b, t, h.waitNs(), y, scale, "#f0d9a8", h.label() + ": waits up to " + Durations.format(h.waitNs()) + " (" + h.activation() + ")");
-            bar(b, t + h.waitNs(), h.responseNs(), y, scale, "#d9534f", h.label() + ": responds within " + Durations.format(h.responseNs()));
+            bar(b, t, h.waitNs(), y, scale, "#f0d9a8", h.label() + ": waits up to " + RsamlTimes.text(h.waitNs()) + " (" + h.activation() + ")");
+            bar(b, t + h.waitNs(), h.responseNs(), y, scale, "#d9534f", h.label() + ": responds within " + RsamlTimes.text(h.responseNs()));
             t += h.totalNs();
             if (i == hops.size() - 1 && held > 0) {
-                bar(b, t, held, y, scale, "#bbbbbb", h.label() + ": its output stays in place up to " + Durations.format(held) + " until replaced");
+                bar(b, t, held, y, scale, "#bbbbbb", h.label() + ": its output stays in place up to " + RsamlTimes.text(held) + " until replaced");
             }
         }
         int bottom = 60 + LANE * hops.size();
         b.append(String.format(Locale.ROOT, "<line x1=\"%.2f\" y1=\"50\" x2=\"%.2f\" y2=\"%d\" stroke=\"#d9534f\" stroke-dasharray=\"4 3\"/>\n",
                 LEFT + l.maxNs() * scale, LEFT + l.maxNs() * scale, bottom));
         b.append(String.format(Locale.ROOT, "<text x=\"%.2f\" y=\"%d\" fill=\"#d9534f\">required %s</text>\n", LEFT + l.maxNs() * scale + 3,
-                bottom + 14, esc(Durations.format(l.maxNs()))));
+                bottom + 14, esc(RsamlTimes.text(l.maxNs()))));
         b.append(String.format(Locale.ROOT, "<text x=\"%d\" y=\"%d\">0</text>\n", LEFT, bottom + 14));
         b.append("</svg>\n");
         return b.toString();

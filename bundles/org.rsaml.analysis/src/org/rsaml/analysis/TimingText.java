@@ -9,7 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 
-import org.rsaml.analysis.internal.Durations;
+import org.rsaml.model.support.RsamlTimes;
 
 /** The timing of an architecture as text: a table per processor, the witnesses, the latencies. */
 public final class TimingText {
@@ -45,10 +45,10 @@ public final class TimingText {
         rows.add(new String[] { "task", "period", "deadline", "cost", "priority", "WCRT", "slack", "verdict" });
         for (TaskResult t : r.tasks()) {
             Task k = t.task();
-            rows.add(new String[] { k.name(), Durations.format(k.period()), Durations.format(k.deadline()), Durations.format(k.cost()),
+            rows.add(new String[] { k.name(), RsamlTimes.text(k.period()), RsamlTimes.text(k.deadline()), RsamlTimes.text(k.cost()),
                     r.policy() == SchedulingPolicy.EDF ? "-" : Integer.toString(k.priority()),
-                    t.responseTime().isPresent() ? Durations.format(t.responseTime().getAsLong()) : "-",
-                    t.slack().isPresent() ? Durations.format(t.slack().getAsLong()) : "-", word(t.verdict()) });
+                    t.responseTime().isPresent() ? RsamlTimes.text(t.responseTime().getAsLong()) : "-",
+                    t.slack().isPresent() ? RsamlTimes.text(t.slack().getAsLong()) : "-", word(t.verdict()) });
         }
         table(out, rows);
         for (BoundCheck b : r.bounds()) {
@@ -75,8 +75,8 @@ public final class TimingText {
         }
         if (r.demand() != null) {
             DemandWitness d = r.demand();
-            out.append("  witness: in the first ").append(Durations.format(d.interval())).append(" the jobs due need ")
-                    .append(Durations.format(d.demand())).append(": ").append(jobs(d.jobs())).append('\n');
+            out.append("  witness: in the first ").append(RsamlTimes.text(d.interval())).append(" the jobs due need ")
+                    .append(RsamlTimes.text(d.demand())).append(": ").append(jobs(d.jobs())).append('\n');
         }
         for (String n : p.notes()) {
             out.append("  note: ").append(n).append('\n');
@@ -85,8 +85,8 @@ public final class TimingText {
 
     private static void witness(StringBuilder out, Witness w) {
         out.append("    witness: critical instant at 0; job ").append(w.job() + 1).append(" of ").append(w.task()).append(" released at ")
-                .append(Durations.format(w.release())).append(w.summary() ? ", completes by " : ", completes at ")
-                .append(w.completion() < 0 ? "(cut short)" : Durations.format(w.completion()));
+                .append(RsamlTimes.text(w.release())).append(w.summary() ? ", completes by " : ", completes at ")
+                .append(w.completion() < 0 ? "(cut short)" : RsamlTimes.text(w.completion()));
         if (w.blockedBy() != null) {
             out.append(", blocked first by ").append(w.blockedBy());
         }
@@ -105,7 +105,7 @@ public final class TimingText {
                 out.append("      ... ").append(w.schedule().size() - MAX_SEGMENTS).append(" more\n");
                 break;
             }
-            out.append("      ").append(Durations.format(s.start())).append(" - ").append(Durations.format(s.end())).append("  ")
+            out.append("      ").append(RsamlTimes.text(s.start())).append(" - ").append(RsamlTimes.text(s.end())).append("  ")
                     .append(s.task()).append(" job ").append(s.job() + 1).append('\n');
         }
     }
@@ -118,16 +118,16 @@ public final class TimingText {
 
     private static void latency(StringBuilder out, LatencyResult l) {
         out.append("latency requirement '").append(l.name()).append("' from ").append(l.from()).append(" to ").append(l.to()).append(": ")
-                .append(l.dataAge() ? "data age" : "reaction time").append(" at most ").append(Durations.format(l.maxNs()))
+                .append(l.dataAge() ? "data age" : "reaction time").append(" at most ").append(RsamlTimes.text(l.maxNs()))
                 .append(l.via().isEmpty() ? "" : ", the paths through " + String.join(", then ", l.via())).append('\n');
         out.append("  verdict: ").append(word(l.verdict())).append(": ").append(l.explanation()).append('\n');
         if (!l.worstPath().isEmpty()) {
             out.append("  worst path (").append(l.paths()).append(l.paths() == 1 ? " path" : " paths").append(" examined; reaction time ")
-                    .append(l.reactionNs() < 0 ? "-" : Durations.format(l.reactionNs())).append(", data age ")
-                    .append(l.dataAgeNs() < 0 ? "-" : Durations.format(l.dataAgeNs())).append("):\n");
+                    .append(l.reactionNs() < 0 ? "-" : RsamlTimes.text(l.reactionNs())).append(", data age ")
+                    .append(l.dataAgeNs() < 0 ? "-" : RsamlTimes.text(l.dataAgeNs())).append("):\n");
             for (Hop h : l.worstPath()) {
-                out.append("    ").append(h.label()).append(": +").append(Durations.format(h.totalNs())).append(" (wait ")
-                        .append(Durations.format(h.waitNs())).append(" + response ").append(Durations.format(h.responseNs())).append("): ")
+                out.append("    ").append(h.label()).append(": +").append(RsamlTimes.text(h.totalNs())).append(" (wait ")
+                        .append(RsamlTimes.text(h.waitNs())).append(" + response ").append(RsamlTimes.text(h.responseNs())).append("): ")
                         .append(h.activation()).append('\n');
             }
         }
@@ -137,8 +137,8 @@ public final class TimingText {
             for (PathBound b : l.pathBounds()) {
                 out.append("    ").append(b.text().isEmpty() ? "(no stage)" : b.text()).append(": ");
                 if (b.bounded()) {
-                    out.append("reaction time ").append(Durations.format(b.reactionNs())).append(", data age ")
-                            .append(Durations.format(b.dataAgeNs()));
+                    out.append("reaction time ").append(RsamlTimes.text(b.reactionNs())).append(", data age ")
+                            .append(RsamlTimes.text(b.dataAgeNs()));
                 } else {
                     out.append("no bound (").append(b.unbounded()).append(')');
                 }

@@ -95,8 +95,8 @@ public final class Latencies {
             long r = t.responseTime().getAsLong();
             long wait = t.task().period();
             String how = reaction
-                    ? "reacts to the arrival (may skip arrivals within its minimum interval of " + Durations.format(wait) + ")"
-                    : "samples the latest value at its next release of " + t.task().name() + " (every " + Durations.format(wait) + ")";
+                    ? "reacts to the arrival (may skip arrivals within its minimum interval of " + RsamlTimes.text(wait) + ")"
+                    : "samples the latest value at its next release of " + t.task().name() + " (every " + RsamlTimes.text(wait) + ")";
             Stage s = new Stage(new Hop(m.qualifiedName(), m.module(), how, wait, r), t.task().period(), null);
             if (best == null || s.hop().totalNs() > best.hop().totalNs()) {
                 best = s;
@@ -158,7 +158,7 @@ public final class Latencies {
             String from = label(requirement.getSource());
             String to = label(requirement.getTarget());
             boolean age = requirement.getKind() == LatencyKind.DATA_AGE;
-            TimeUnit unit = requirement.getTimeUnit() == null ? TimeUnit.MS : requirement.getTimeUnit();
+            TimeUnit unit = RsamlTimes.unit(requirement);
             double max = requirement.getMaxLatency();
             if (!Double.isFinite(max) || max <= 0 || !RsamlTimes.representable(max, requirement)) {
                 return fail(name, from, to, 0, age, "maxLatency " + RsamlLabels.number(max) + " " + unit.getLiteral()
@@ -215,16 +215,16 @@ public final class Latencies {
                         : "no " + pathWord + " leads from " + from + " to " + to + ": the data never arrives that way";
             } else if (bound > maxNs) {
                 verdict = Verdict.MISSES;
-                explanation = "the " + what + " can reach " + Durations.format(bound) + ", more than " + Durations.format(maxNs);
+                explanation = "the " + what + " can reach " + RsamlTimes.text(bound) + ", more than " + RsamlTimes.text(maxNs);
             } else if (unbounded != null) {
                 verdict = Verdict.NOT_ANALYSED;
                 explanation = "not analysed: " + unbounded;
             } else {
                 verdict = Verdict.MEETS;
-                explanation = "the " + what + " is at most " + Durations.format(bound) + " over " + this.paths + " "
+                explanation = "the " + what + " is at most " + RsamlTimes.text(bound) + " over " + this.paths + " "
                         + (through.isEmpty() ? "path" + (this.paths == 1 ? "" : "s")
                                 : (this.paths == 1 ? "path" : "paths") + " through " + String.join(", then ", through))
-                        + ", within " + Durations.format(maxNs);
+                        + ", within " + RsamlTimes.text(maxNs);
             }
             List<PathBound> longestFirst = new ArrayList<>(listed);
             longestFirst.sort(longest.reversed());

@@ -13,6 +13,7 @@ import org.rsaml.analysis.Task;
 import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.Witness;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * Exact response-time analysis for fixed priorities, preemptive (Joseph &amp; Pandya 1986; Audsley et
@@ -586,14 +587,14 @@ public final class ResponseTimes {
                 : "job " + (job + 1) + " of its busy period (an earlier job delays it)";
         if (worst <= task.deadline()) {
             return new TaskResult(task, OptionalLong.of(worst), Verdict.MEETS,
-                    "worst-case response time " + Durations.format(worst) + " (" + where + ") within its deadline of "
-                            + Durations.format(task.deadline()),
+                    "worst-case response time " + RsamlTimes.text(worst) + " (" + where + ") within its deadline of "
+                            + RsamlTimes.text(task.deadline()),
                     null);
         }
         Witness witness = summary(task, worst, job, hp, blocker);
         return new TaskResult(task, OptionalLong.of(worst), Verdict.MISSES,
-                "worst-case response time " + Durations.format(worst) + " (" + where + ") exceeds its deadline of "
-                        + Durations.format(task.deadline()) + " by " + Durations.format(worst - task.deadline()),
+                "worst-case response time " + RsamlTimes.text(worst) + " (" + where + ") exceeds its deadline of "
+                        + RsamlTimes.text(task.deadline()) + " by " + RsamlTimes.text(worst - task.deadline()),
                 witness);
     }
 

@@ -25,6 +25,8 @@ import org.eclipse.elk.graph.ElkNode;
 import org.eclipse.elk.graph.ElkPort;
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.diagram.DiagramOverlay;
+import org.rsaml.diagram.internal.ArchitectureTexts.Item;
+import org.rsaml.diagram.internal.ArchitectureTexts.ModuleText;
 import org.rsaml.model.Action;
 import org.rsaml.model.Actuator;
 import org.rsaml.model.Architecture;
@@ -56,15 +58,7 @@ public final class ArchitectureLayout extends Layout {
     static final double PORT_PITCH = 18;
     static final double GAP = 8;
 
-    /** What a module's text looks like once measured: three columns, ports' labels outside the middle. */
-    private record ModuleText(List<Line> head, List<Item> items, double left, double middle, double right,
-            double headBadge) {
-    }
-
-    /** A function or action listed in a module. */
-    private record Item(EObject element, List<Line> lines, double badge, int depth) {
-    }
-
+    private final ArchitectureTexts texts = new ArchitectureTexts(this);
     private final Map<Module, ModuleText> moduleTexts = new IdentityHashMap<>();
     private final List<Layer> layers;
 
@@ -86,120 +80,13 @@ public final class ArchitectureLayout extends Layout {
                 || element instanceof Connection || element instanceof SubsumptionLink || element instanceof Device;
     }
 
-    // ------------------------------------------------------------ texts
-
-    private List<Line> architectureTitle() {
-        List<Line> lines = new ArrayList<>();
-        lines.add(new Line(RsamlLabels.name(architecture) + " (" + architecture.getCategory().getLiteral() + " architecture)",
-                TITLE + 2, true, "title"));
-        lines.add(new Line(architecture.getLayers().size() + " layers (" + architecture.getDeclaredLayers() + " declared), "
-                + count(Module.class) + " modules, " + architecture.getConnections().size() + " connections", BODY, false, "subtitle"));
-        lines.addAll(overlayLines(architecture));
-        return lines;
-    }
-
-    private long count(Class<?> type) {
-        long n = 0;
-        for (Layer layer : architecture.getLayers()) {
-            n += type == Module.class ? layer.getModules().size() : 0;
-        }
-        return n;
-    }
-
-    private List<Line> layerTitle(Layer layer) {
-        List<Line> lines = new ArrayList<>();
-        lines.add(new Line(RsamlLabels.name(layer), TITLE, true, "title"));
-        lines.add(new Line("level " + layer.getLevel() + (layer.getMaxExecTime() > 0
-                ? " \u00b7 budget " + RsamlLabels.duration(layer.getMaxExecTime(), layer) + " per module" : ""),
-                BODY, false, "timing"));
-        lines.addAll(overlayLines(layer));
-        return lines;
-    }
-
-    /** Period, delay and execution time with their unit: {@code periodic \u00b7 T 20.0 ms \u00b7 D 20.0 ms \u00b7 C 4.0 ms}. */
-    static String timing(org.rsaml.model.RealTimeElement e) {
-        List<String> parts = new ArrayList<>();
-        if (e.getType() == ElementType.REAL_TIME) {
-            parts.add("real-time");
-        }
-        if (e.getExecType() != null && e.getExecType() != ExecutionType.APERIODIC) {
-            parts.add(e.getExecType().getLiteral());
-        }
-        if (e.getPeriod() > 0) {
-            parts.add("T " + RsamlLabels.duration(e.getPeriod(), e));
-        }
-        if (e.getDelay() > 0) {
-            parts.add("D " + RsamlLabels.duration(e.getDelay(), e));
-        }
-        if (e.getExecDuration() > 0) {
-            parts.add("C " + RsamlLabels.duration(e.getExecDuration(), e));
-        }
-        if (e instanceof Action action && action.getStartDate() > 0) {
-            parts.add("at " + RsamlLabels.duration(action.getStartDate(), e));
-        }
-        if (e instanceof Function f && f.getSchedPolicy() != null && (e.getType() == ElementType.REAL_TIME || f.getExecType() == ExecutionType.PERIODIC)) {
-            parts.add(f.getSchedPolicy().getLiteral());
-        }
-        return parts.isEmpty() ? "no timing" : String.join(" \u00b7 ", parts);
-    }
-
-    private ModuleText measure(Module module) {
-        List<Line> head = new ArrayList<>();
-        double headBadge = titleWithBadge(module, new Line(RsamlLabels.name(module), BODY + 1, true, "title"), head);
-        head.add(new Line(timing(module), SMALL, false, "timing"));
-        head.addAll(overlayLines(module));
-        double middle = Math.max(head.get(0).width() + (headBadge > 0 ? headBadge + 4 : 0), width(head.subList(1, head.size())));
-        List<Item> items = new ArrayList<>();
-        for (Function function : module.getFunctions()) {
-            List<Line> lines = new ArrayList<>();
-            lines.add(new Line("\u0192 " + RsamlLabels.name(function), BODY, function.getExecType() == ExecutionType.PERIODIC,
-                    function.getExecType() == ExecutionType.PERIODIC ? "periodic" : "item"));
-            lines.add(new Line(timing(function), SMALL, false, "timing"));
-            lines.addAll(overlayLines(function));
-            double badge = badgeWidth(badgeText(function));
-            items.add(new Item(function, lines, badge, 0));
-            middle = Math.max(middle, Math.max(lines.get(0).width() + (badge > 0 ? badge + 4 : 0), width(lines.subList(1, lines.size()))) + 8);
-            for (Action action : function.getActions()) {
-                List<Line> al = new ArrayList<>();
-                al.add(new Line(RsamlLabels.name(action) + "  " + timing(action), SMALL, false, "action"));
-                al.addAll(overlayLines(action));
-                double ab = badgeWidth(badgeText(action));
-                items.add(new Item(action, al, ab, 1));
-                middle = Math.max(middle, width(al) + (ab > 0 ? ab + 4 : 0) + 24);
-            }
-        }
-        double left = 0;
-        double right = 0;
-        for (Port port : module.getPorts()) {
-            double w = TextMetrics.width(RsamlLabels.name(port), SMALL, false) + PORT / 2 + 4;
-            String badge = badgeText(port);
-            if (badge != null) {
-                w += badgeWidth(badge) + 4;
-            }
-            if (port instanceof EntryPort) {
-                left = Math.max(left, w);
-            } else {
-                right = Math.max(right, w);
-            }
-        }
-        return new ModuleText(head, items, left, middle, right, headBadge);
-    }
-
-    private static double itemsHeight(List<Item> items) {
-        double h = 0;
-        for (Item item : items) {
-            h += height(item.lines()) + 2;
-        }
-        return h;
-    }
-
     // ------------------------------------------------------------ graph
 
     @Override
     void build() {
         root.setProperty(CoreOptions.DIRECTION, Direction.DOWN);
         root.setProperty(CoreOptions.PARTITIONING_ACTIVATE, true);
-        List<Line> title = architectureTitle();
+        List<Line> title = texts.architectureTitle();
         padding(root, PAD * 2 + height(title), 16);
         double titleWidth = width(title) + badgeWidth(badgeText(architecture)) + 40;
         root.setProperty(CoreOptions.NODE_SIZE_CONSTRAINTS, SizeConstraint.minimumSize());
@@ -208,7 +95,7 @@ public final class ArchitectureLayout extends Layout {
 
         int partition = 0;
         for (Layer layer : layers) {
-            List<Line> lines = layerTitle(layer);
+            List<Line> lines = texts.layerTitle(layer);
             double minWidth = width(lines) + badgeWidth(badgeText(layer)) + 3 * PAD;
             ElkNode node = node(root, layer, minWidth, height(lines) + 2 * PAD);
             node.setProperty(CoreOptions.PARTITIONING_PARTITION, partition++);
@@ -290,7 +177,7 @@ public final class ArchitectureLayout extends Layout {
     }
 
     private void module(ElkNode layer, Module module) {
-        ModuleText text = measure(module);
+        ModuleText text = texts.measure(module);
         moduleTexts.put(module, text);
         double width = 2 * PAD + text.left() + GAP + text.middle() + GAP + text.right() + (text.left() == 0 ? PORT / 2 : 0)
                 + (text.right() == 0 ? PORT / 2 : 0);
@@ -303,7 +190,7 @@ public final class ArchitectureLayout extends Layout {
                 outputs++;
             }
         }
-        double height = Math.max(2 * PAD + height(text.head()) + (text.items().isEmpty() ? 0 : 4 + itemsHeight(text.items())),
+        double height = Math.max(2 * PAD + height(text.head()) + (text.items().isEmpty() ? 0 : 4 + ArchitectureTexts.itemsHeight(text.items())),
                 (Math.max(entries, outputs) + 1) * PORT_PITCH);
         ElkNode node = node(layer, module, width, height);
         node.setProperty(CoreOptions.PORT_CONSTRAINTS, PortConstraints.FIXED_SIDE);
@@ -319,26 +206,9 @@ public final class ArchitectureLayout extends Layout {
     }
 
     private ElkNode device(Device device) {
-        List<Line> lines = deviceLines(device);
+        List<Line> lines = texts.deviceLines(device);
         double badge = badgeWidth(badgeText(device));
         return node(root, device, width(lines) + (badge > 0 ? badge + 4 : 0) + 2 * PAD + 4, height(lines) + 2 * PAD);
-    }
-
-    private List<Line> deviceLines(Device device) {
-        List<Line> lines = new ArrayList<>();
-        lines.add(new Line((device instanceof Sensor ? "sensor " : "actuator ") + RsamlLabels.name(device), BODY, true, "title"));
-        List<String> facts = new ArrayList<>();
-        if (device.getKind() != null && !device.getKind().isEmpty()) {
-            facts.add(device.getKind());
-        }
-        if (device.getPeriod() > 0) {
-            facts.add("T " + RsamlLabels.duration(device.getPeriod(), device));
-        }
-        if (!facts.isEmpty()) {
-            lines.add(new Line(String.join(" \u00b7 ", facts), SMALL, false, "timing"));
-        }
-        lines.addAll(overlayLines(device));
-        return lines;
     }
 
     /**
@@ -387,15 +257,15 @@ public final class ArchitectureLayout extends Layout {
     void collect() {
         Drawing.Shape frame = shape("architecture", root, null);
         frame.form = "round";
-        place(frame.texts, architectureTitle(), frame.x + 16, frame.y + PAD, "start");
-        addBadge(frame, frame.x + 16 + width(architectureTitle().subList(0, 1)) + 8, frame.y + PAD);
+        place(frame.texts, texts.architectureTitle(), frame.x + 16, frame.y + PAD, "start");
+        addBadge(frame, frame.x + 16 + width(texts.architectureTitle().subList(0, 1)) + 8, frame.y + PAD);
         List<Drawing.Shape> ports = new ArrayList<>();
         for (Layer layer : layers) {
             ElkNode node = (ElkNode) shapeOf.get(layer);
             Drawing.Shape shape = shape("layer", node, frame);
             shape.form = "round";
             shape.classes.add("level-" + layer.getLevel());
-            List<Line> title = layerTitle(layer);
+            List<Line> title = texts.layerTitle(layer);
             place(shape.texts, title, shape.x + 10, shape.y + PAD, "start");
             addBadge(shape, shape.x + 10 + title.get(0).width() + 8, shape.y + PAD);
             for (Module module : layer.getModules()) {
@@ -417,7 +287,7 @@ public final class ArchitectureLayout extends Layout {
     private void collectDevice(Device device, Drawing.Shape frame, String kind) {
         Drawing.Shape shape = shape(kind, (org.eclipse.elk.graph.ElkShape) shapeOf.get(device), frame);
         shape.form = kind.equals("sensor") ? "round" : "rect";
-        List<Line> lines = deviceLines(device);
+        List<Line> lines = texts.deviceLines(device);
         place(shape.texts, lines, shape.x + PAD + 2, shape.y + PAD, "start");
         addBadge(shape, shape.x + PAD + 2 + lines.get(0).width() + 4, shape.y + PAD);
     }

@@ -73,7 +73,7 @@ public final class MissionLayout extends Layout {
             lines.add(new Line("plan " + RsamlLabels.name(plan), BODY, true, "title"));
         } else if (element instanceof Activity activity) {
             lines.add(new Line(RsamlLabels.name(activity), BODY, false, "title"));
-            lines.add(new Line(ArchitectureLayout.timing(activity), SMALL, false, "timing"));
+            lines.add(new Line(RsamlLabels.timingFacts(activity), SMALL, false, "timing"));
         } else if (element instanceof Supervisor supervisor) {
             lines.add(new Line("supervisor " + RsamlLabels.name(supervisor), BODY, true, "title"));
             if (supervisor.getRealisedBy() != null) {

@@ -4,7 +4,6 @@
  */
 package org.rsaml.diagram.internal;
 
-import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -37,6 +36,7 @@ import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
 import org.rsaml.model.Sensor;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * The timing analysis ({@link TimingAnalysis}) drawn over the architecture view: each processor's
@@ -108,9 +108,9 @@ public final class TimingOverlay implements DiagramOverlay {
         for (int i = 0; i < p.sources().size(); i++) {
             TaskSource s = p.sources().get(i);
             TaskResult t = r.tasks().get(i);
-            String response = t.responseTime().isPresent() ? format(t.responseTime().getAsLong()) : "unbounded";
+            String response = t.responseTime().isPresent() ? RsamlTimes.text(t.responseTime().getAsLong()) : "unbounded";
             add(RsamlLabels.qualifiedName(s.element()), new Line((s.kind().equals("reaction") ? "reaction " : "") + "WCRT " + response
-                    + " of deadline " + format(t.task().deadline()) + ": " + TimingText.word(t.verdict()), style(t.verdict())));
+                    + " of deadline " + RsamlTimes.text(t.task().deadline()) + ": " + TimingText.word(t.verdict()), style(t.verdict())));
             Module module = module(s.element());
             if (module != null) {
                 on.add(RsamlLabels.qualifiedName(module));
@@ -129,8 +129,8 @@ public final class TimingOverlay implements DiagramOverlay {
 
     private void latency(String root, Architecture architecture, LatencyResult l) {
         String what = l.dataAge() ? "data age" : "reaction time";
-        String worst = l.boundNs() < 0 ? "no bound" : "worst " + format(l.boundNs());
-        Line line = new Line("latency " + l.name() + " (" + what + " at most " + format(l.maxNs()) + "): " + worst + ": "
+        String worst = l.boundNs() < 0 ? "no bound" : "worst " + RsamlTimes.text(l.boundNs());
+        Line line = new Line("latency " + l.name() + " (" + what + " at most " + RsamlTimes.text(l.maxNs()) + "): " + worst + ": "
                 + TimingText.word(l.verdict()), style(l.verdict()));
         add(root, line);
         List<String> details = new ArrayList<>();
@@ -142,8 +142,8 @@ public final class TimingOverlay implements DiagramOverlay {
             // The analysis' own module, not one found by name: names need not tell modules apart.
             Module m = hop.module();
             hops.add(m);
-            details.add((hops.size()) + ". " + hop.label() + ": +" + format(hop.totalNs()) + " (wait " + format(hop.waitNs()) + " + response "
-                    + format(hop.responseNs()) + ")");
+            details.add((hops.size()) + ". " + hop.label() + ": +" + RsamlTimes.text(hop.totalNs()) + " (wait " + RsamlTimes.text(hop.waitNs()) + " + response "
+                    + RsamlTimes.text(hop.responseNs()) + ")");
         }
         if (!hops.isEmpty() && !hops.contains(null)) {
             Set<String> on = new LinkedHashSet<>();
@@ -162,8 +162,8 @@ public final class TimingOverlay implements DiagramOverlay {
                 Module m = hops.get(i);
                 Hop hop = l.worstPath().get(i);
                 on.add(RsamlLabels.qualifiedName(m));
-                add(RsamlLabels.qualifiedName(m), new Line(l.name() + " hop " + (i + 1) + ": +" + format(hop.totalNs()) + " (wait "
-                        + format(hop.waitNs()) + " + response " + format(hop.responseNs()) + ")", style(l.verdict())));
+                add(RsamlLabels.qualifiedName(m), new Line(l.name() + " hop " + (i + 1) + ": +" + RsamlTimes.text(hop.totalNs()) + " (wait "
+                        + RsamlTimes.text(hop.waitNs()) + " + response " + RsamlTimes.text(hop.responseNs()) + ")", style(l.verdict())));
                 if (i + 1 < hops.size()) {
                     connections(architecture, null, m, hops.get(i + 1), on);
                 }
@@ -200,8 +200,8 @@ public final class TimingOverlay implements DiagramOverlay {
             details.add("every path, the longest first" + (l.paths() > l.pathBounds().size()
                     ? " (the " + l.pathBounds().size() + " longest of " + l.paths() + ")" : "") + ":");
             for (org.rsaml.analysis.PathBound b : l.pathBounds()) {
-                details.add("- " + b.text() + ": " + (b.bounded() ? "reaction time " + format(b.reactionNs()) + ", data age "
-                        + format(b.dataAgeNs()) : "no bound (" + b.unbounded() + ")"));
+                details.add("- " + b.text() + ": " + (b.bounded() ? "reaction time " + RsamlTimes.text(b.reactionNs()) + ", data age "
+                        + RsamlTimes.text(b.dataAgeNs()) : "no bound (" + b.unbounded() + ")"));
             }
         }
         items.add(new Item(SECTION, line, details, path));
@@ -240,17 +240,5 @@ public final class TimingOverlay implements DiagramOverlay {
             case MISSES -> "overlay-misses";
             case NOT_ANALYSED -> "overlay-unknown";
         };
-    }
-
-    /** Nanoseconds in the largest unit that keeps them exact, as {@code rsaml analyze} prints them: "2.5 ms", "120 us". */
-    static String format(long ns) {
-        long[] scale = { 1_000_000_000L, 1_000_000L, 1_000L };
-        String[] unit = { "s", "ms", "us" };
-        for (int i = 0; i < scale.length; i++) {
-            if (Math.abs(ns) >= scale[i]) {
-                return BigDecimal.valueOf(ns).divide(BigDecimal.valueOf(scale[i])).stripTrailingZeros().toPlainString() + " " + unit[i];
-            }
-        }
-        return ns + " ns";
     }
 }

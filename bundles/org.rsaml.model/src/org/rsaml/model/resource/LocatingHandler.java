@@ -4,14 +4,6 @@
  */
 package org.rsaml.model.resource;
 
-import java.lang.management.ManagementFactory;
-import java.lang.management.MemoryPoolMXBean;
-import java.lang.management.MemoryType;
-import java.lang.management.MemoryUsage;
-import java.nio.ByteBuffer;
-import java.nio.charset.Charset;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
@@ -141,7 +133,7 @@ final class LocatingHandler extends SAXXMIHandler {
                     + " levels deep here; RsaML reads models up to that depth", getLocation(), tagLine, tagColumn));
             throw new SAXException("nested too deep");
         }
-        if ((++elements & 0xfff) == 0 && heapNearlyExhausted()) {
+        if ((++elements & 0xfff) == 0 && HeapWatch.nearlyExhausted()) {
             // Give up now, as the JVM would later, instead of letting the collector thrash for minutes first.
             throw new OutOfMemoryError("the heap is nearly full right after a collection");
         }
@@ -161,31 +153,6 @@ final class LocatingHandler extends SAXXMIHandler {
             pendingComments.clear();
         }
         openElements.push(Optional.ofNullable(created));
-    }
-
-    /**
-     * Whether the heap's long-lived part is still at least 95% full after its last collection: the
-     * old generation where the collector has one (Serial, Parallel, G1, generational ZGC), the
-     * whole heap where it has not (ZGC, Shenandoah). Eden and survivor spaces say nothing here:
-     * after a minor collection they are routinely full (the parallel collector's survivor space
-     * especially), which is how the collector works, not a sign the model does not fit.
-     */
-    private static boolean heapNearlyExhausted() {
-        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == MemoryType.HEAP && pool.isCollectionUsageThresholdSupported() && !youngGeneration(pool.getName())) {
-                MemoryUsage afterCollection = pool.getCollectionUsage();
-                long max = pool.getUsage().getMax();
-                if (afterCollection != null && max > 0 && afterCollection.getUsed() > max / 20 * 19) {
-                    return true;
-                }
-            }
-        }
-        return false;
-    }
-
-    /** Pools where new objects live until a minor collection moves them on, by the names HotSpot's collectors give them. */
-    private static boolean youngGeneration(String poolName) {
-        return poolName.contains("Eden") || poolName.contains("Survivor") || poolName.contains("Young") || poolName.contains("Nursery");
     }
 
     /**
@@ -210,69 +177,17 @@ final class LocatingHandler extends SAXXMIHandler {
 
     /**
      * The parser reports nothing for the XML declaration or for white space before the root, so
-     * the root's start tag is found in the bytes read so far, decoded and counted as the parser did.
+     * the root's start tag is found in the bytes read so far ({@link PrologRecorder#rootTagStart}).
      */
     private void locateRoot() {
         tagLine = locator == null ? 0 : locator.getLineNumber();
         tagColumn = locator == null ? 0 : locator.getColumnNumber();
         String version = locator instanceof Locator2 l ? l.getXMLVersion() : "1.0";
-        Charset charset;
-        try {
-            charset = context.encoding == null ? StandardCharsets.UTF_8 : Charset.forName(context.encoding);
-        } catch (RuntimeException e) {
-            return;
+        int[] start = context.prolog.rootTagStart(context.encoding, "1.1".equals(version));
+        if (start != null) {
+            tagLine = start[0];
+            tagColumn = start[1];
         }
-        String text;
-        try {
-            text = charset.newDecoder().onMalformedInput(CodingErrorAction.REPLACE)
-                    .onUnmappableCharacter(CodingErrorAction.REPLACE).decode(ByteBuffer.wrap(context.prolog.bytes())).toString();
-        } catch (java.nio.charset.CharacterCodingException e) {
-            return;
-        }
-        boolean xml11 = "1.1".equals(version);
-        int line = 1;
-        int column = 1;
-        int i = !text.isEmpty() && text.charAt(0) == '\uFEFF' ? 1 : 0;
-        while (i < text.length()) {
-            char c = text.charAt(i);
-            if (c == '<') {
-                String skipTo = text.startsWith("<?", i) ? "?>" : text.startsWith("<!--", i) ? "-->" : text.startsWith("<!", i) ? ">" : null;
-                if (skipTo == null) {
-                    tagLine = line;
-                    tagColumn = column;
-                    return;
-                }
-                int end = text.indexOf(skipTo, i);
-                if (end < 0) {
-                    return;
-                }
-                end += skipTo.length();
-                for (; i < end; i++) {
-                    int[] moved = advance(text, i, line, column, xml11);
-                    i = moved[0];
-                    line = moved[1];
-                    column = moved[2];
-                }
-                continue;
-            }
-            int[] moved = advance(text, i, line, column, xml11);
-            i = moved[0] + 1;
-            line = moved[1];
-            column = moved[2];
-        }
-    }
-
-    /** Moves past the character at {@code i}: {index of its last char, line, column} afterwards. */
-    private static int[] advance(String text, int i, int line, int column, boolean xml11) {
-        char c = text.charAt(i);
-        if (c == '\r') {
-            boolean pair = i + 1 < text.length() && (text.charAt(i + 1) == '\n' || xml11 && text.charAt(i + 1) == '\u0085');
-            return new int[] { pair ? i + 1 : i, line + 1, 1 };
-        }
-        if (c == '\n' || xml11 && (c == '\u0085' || c == '\u2028')) {
-            return new int[] { i, line + 1, 1 };
-        }
-        return new int[] { i, line, column + 1 };
     }
 
     private void countText(char[] ch, int start, int length) {

@@ -7,6 +7,10 @@ package org.rsaml.model.resource;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.charset.Charset;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
 
 /**
  * What the parser reads. Two jobs:
@@ -163,5 +167,68 @@ final class PrologRecorder extends InputStream {
 
     void stop() {
         recorded = null;
+    }
+
+    /**
+     * Where the root element's start tag begins in the bytes read, decoded in {@code encoding} (UTF-8
+     * when not known) and counted as the parser counts lines (CR, CRLF, LF; with {@code xml11} also
+     * NEL and LS): {line, column}, or {@code null} when it cannot be told.
+     */
+    int[] rootTagStart(String encoding, boolean xml11) {
+        Charset charset;
+        try {
+            charset = encoding == null ? StandardCharsets.UTF_8 : Charset.forName(encoding);
+        } catch (RuntimeException e) {
+            return null;
+        }
+        String text;
+        try {
+            text = charset.newDecoder().onMalformedInput(CodingErrorAction.REPLACE)
+                    .onUnmappableCharacter(CodingErrorAction.REPLACE).decode(ByteBuffer.wrap(bytes())).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            return null;
+        }
+        int line = 1;
+        int column = 1;
+        int i = !text.isEmpty() && text.charAt(0) == '\uFEFF' ? 1 : 0;
+        while (i < text.length()) {
+            char c = text.charAt(i);
+            if (c == '<') {
+                String skipTo = text.startsWith("<?", i) ? "?>" : text.startsWith("<!--", i) ? "-->" : text.startsWith("<!", i) ? ">" : null;
+                if (skipTo == null) {
+                    return new int[] { line, column };
+                }
+                int end = text.indexOf(skipTo, i);
+                if (end < 0) {
+                    return null;
+                }
+                end += skipTo.length();
+                for (; i < end; i++) {
+                    int[] moved = advance(text, i, line, column, xml11);
+                    i = moved[0];
+                    line = moved[1];
+                    column = moved[2];
+                }
+                continue;
+            }
+            int[] moved = advance(text, i, line, column, xml11);
+            i = moved[0] + 1;
+            line = moved[1];
+            column = moved[2];
+        }
+        return null;
+    }
+
+    /** Moves past the character at {@code i}: {index of its last char, line, column} afterwards. */
+    private static int[] advance(String text, int i, int line, int column, boolean xml11) {
+        char c = text.charAt(i);
+        if (c == '\r') {
+            boolean pair = i + 1 < text.length() && (text.charAt(i + 1) == '\n' || xml11 && text.charAt(i + 1) == '\u0085');
+            return new int[] { pair ? i + 1 : i, line + 1, 1 };
+        }
+        if (c == '\n' || xml11 && (c == '\u0085' || c == '\u2028')) {
+            return new int[] { i, line + 1, 1 };
+        }
+        return new int[] { i, line, column + 1 };
     }
 }

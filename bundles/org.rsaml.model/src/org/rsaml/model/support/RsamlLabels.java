@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.eclipse.emf.ecore.EObject;
+import org.rsaml.model.Action;
 import org.rsaml.model.Connection;
 import org.rsaml.model.DataType;
 import org.rsaml.model.ElementType;
@@ -31,7 +32,7 @@ public final class RsamlLabels {
 
     /** A time value with its unit, as the architect wrote it: {@code 2.5 ms}. */
     public static String duration(double value, TimeScaled unitOwner) {
-        return number(value) + " " + unitOwner.getTimeUnit().getLiteral();
+        return number(value) + " " + RsamlTimes.unit(unitOwner).getLiteral();
     }
 
     /** A number without a spurious exponent: {@code 2.0}, {@code 0.001}, {@code 1500.0}. */
@@ -65,7 +66,7 @@ public final class RsamlLabels {
         return String.join("/", segments);
     }
 
-    /** What the element's timing is, in a few words: {@code real-time, 1.0 ms every 20.0 ms}. */
+    /** What the element's timing is, in a few words, for prose and generated comments: {@code real-time, 1.0 ms every 20.0 ms}. */
     public static String timing(RealTimeElement element) {
         List<String> parts = new ArrayList<>();
         parts.add(element.getType() == ElementType.REAL_TIME ? "real-time" : "simple");
@@ -82,6 +83,37 @@ public final class RsamlLabels {
             parts.add(work);
         }
         return String.join(", ", parts);
+    }
+
+    /**
+     * The element's timing facts for diagram labels, each with its unit:
+     * {@code real-time \u00b7 periodic \u00b7 T 20.0 ms \u00b7 D 20.0 ms \u00b7 C 4.0 ms}, or {@code no timing}.
+     */
+    public static String timingFacts(RealTimeElement e) {
+        List<String> parts = new ArrayList<>();
+        if (e.getType() == ElementType.REAL_TIME) {
+            parts.add("real-time");
+        }
+        if (e.getExecType() != null && e.getExecType() != ExecutionType.APERIODIC) {
+            parts.add(e.getExecType().getLiteral());
+        }
+        if (e.getPeriod() > 0) {
+            parts.add("T " + duration(e.getPeriod(), e));
+        }
+        if (e.getDelay() > 0) {
+            parts.add("D " + duration(e.getDelay(), e));
+        }
+        if (e.getExecDuration() > 0) {
+            parts.add("C " + duration(e.getExecDuration(), e));
+        }
+        if (e instanceof Action action && action.getStartDate() > 0) {
+            parts.add("at " + duration(action.getStartDate(), e));
+        }
+        if (e instanceof Function f && f.getSchedPolicy() != null
+                && (e.getType() == ElementType.REAL_TIME || f.getExecType() == ExecutionType.PERIODIC)) {
+            parts.add(f.getSchedPolicy().getLiteral());
+        }
+        return parts.isEmpty() ? "no timing" : String.join(" \u00b7 ", parts);
     }
 
     /** A one-line description of the element for tree labels: {@code resourceChecker — real-time, 2.5 ms}. */

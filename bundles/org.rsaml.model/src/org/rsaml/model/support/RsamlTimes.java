@@ -88,4 +88,40 @@ public final class RsamlTimes {
     public static boolean representablePeriod(double value, TimeScaled owner) {
         return representable(value, owner) && (value <= 0 || nanoseconds(value, owner).compareTo(BigDecimal.ONE) >= 0);
     }
+
+    private static final long[] SCALE = { 1_000_000_000L, 1_000_000L, 1_000L };
+    private static final int[] DIGITS = { 9, 6, 3 };
+    private static final String[] SCALE_UNIT = { "s", "ms", "us" };
+
+    /**
+     * Nanoseconds as people read them, in the largest unit that keeps them exact: {@code 2.5 ms},
+     * {@code 120 us}, {@code 7 ns} (how the analysis, its timelines and the diagrams print times).
+     */
+    public static String text(long ns) {
+        for (int i = 0; i < SCALE.length; i++) {
+            if (Math.abs(ns) >= SCALE[i]) {
+                // in whole numbers (every response and hop is printed: no BigDecimal division)
+                long whole = ns / SCALE[i];
+                long fraction = Math.abs(ns % SCALE[i]);
+                if (fraction == 0) {
+                    return whole + " " + SCALE_UNIT[i];
+                }
+                StringBuilder digits = new StringBuilder(Long.toString(fraction));
+                while (digits.length() < DIGITS[i]) {
+                    digits.insert(0, '0');
+                }
+                int end = digits.length();
+                while (digits.charAt(end - 1) == '0') {
+                    end--;
+                }
+                return whole + "." + digits.substring(0, end) + " " + SCALE_UNIT[i];
+            }
+        }
+        return ns + " ns";
+    }
+
+    /** Nanoseconds in milliseconds, exactly, without trailing zeros: {@code 20 ms}, {@code 0.25 ms}. */
+    public static String milliseconds(long ns) {
+        return BigDecimal.valueOf(ns, 6).stripTrailingZeros().toPlainString() + " ms";
+    }
 }

@@ -26,6 +26,7 @@ import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
 import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
 import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.Processor;
 
 /**
@@ -272,8 +273,7 @@ public final class Ros2Names {
         if (ns >= ExecutionPlan.MAX_TIME_NS) {
             return "run (nothing timed feeds it)";
         }
-        java.math.BigDecimal ms = java.math.BigDecimal.valueOf(ns, 6).stripTrailingZeros();
-        return ms.toPlainString() + " ms";
+        return RsamlTimes.milliseconds(ns);
     }
 
     /** The least time between two reactions of the module: its sporadic interval or its cycle's bound. */

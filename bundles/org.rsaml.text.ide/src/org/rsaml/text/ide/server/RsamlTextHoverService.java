@@ -4,7 +4,6 @@
  */
 package org.rsaml.text.ide.server;
 
-import java.math.BigDecimal;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -20,6 +19,7 @@ import org.rsaml.model.NamedElement;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.RsamlPackage.Literals;
 import org.rsaml.model.resource.LocatingResource;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.text.naming.RsamlTextQualifiedNameProvider;
 import org.rsaml.text.serializer.RsamlTextWriter;
 import org.rsaml.validation.LoadedModel;
@@ -45,7 +45,7 @@ public class RsamlTextHoverService extends HoverService {
             parts.add(named.getDescription());
         }
         if (element instanceof RealTimeElement e) {
-            String unit = " " + e.getTimeUnit().getLiteral();
+            String unit = " " + RsamlTimes.unit(e).getLiteral();
             List<String> times = new ArrayList<>();
             times.add(e.getExecType().getLiteral() + (e.eIsSet(Literals.REAL_TIME_ELEMENT__TYPE) ? ", " + e.getType().getLiteral() : ""));
             times.add("period " + RsamlTextWriter.number(e.getPeriod()) + unit);
@@ -82,16 +82,12 @@ public class RsamlTextHoverService extends HoverService {
                             return "Timing on " + processor.name() + ": " + result.explanation();
                         }
                         return "Timing on " + processor.name() + ": worst-case response time "
-                                + milliseconds(result.responseTime().getAsLong()) + ", slack " + milliseconds(result.slack().getAsLong())
+                                + RsamlTimes.milliseconds(result.responseTime().getAsLong()) + ", slack " + RsamlTimes.milliseconds(result.slack().getAsLong())
                                 + " (" + result.verdict().toString().toLowerCase(java.util.Locale.ROOT).replace('_', ' ') + ")";
                     }
                 }
             }
         }
         return "Timing: no task of the analysis is released for this element.";
-    }
-
-    private static String milliseconds(long nanoseconds) {
-        return new BigDecimal(nanoseconds).movePointLeft(6).stripTrailingZeros().toPlainString() + " ms";
     }
 }
