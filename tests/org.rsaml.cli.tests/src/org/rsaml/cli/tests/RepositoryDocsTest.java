@@ -51,6 +51,18 @@ class RepositoryDocsTest {
         assertEquals(List.of(), missing, "folders missing from README's repository structure");
     }
 
+    /** One test bundle per production bundle ({@code bundles/x} is tested by {@code tests/x.tests}), as STYLE.md asks. */
+    @Test
+    void everyBundleHasItsTestBundle() throws Exception {
+        List<String> untested = new ArrayList<>();
+        for (Path dir : folders(ROOT.resolve("bundles"))) {
+            if (!Files.isRegularFile(ROOT.resolve("tests").resolve(dir.getFileName() + ".tests").resolve("pom.xml"))) {
+                untested.add(dir.getFileName().toString());
+            }
+        }
+        assertEquals(List.of(), untested, "bundles without a test bundle tests/<bundle>.tests");
+    }
+
     /** The other way round: every folder the structure names below a top-level folder is there. */
     @Test
     void theReadmeStructureNamesOnlyFoldersThatExist() throws Exception {
@@ -118,6 +130,52 @@ class RepositoryDocsTest {
             }
         }
         assertEquals(List.of(), missing, "bundles without a row in docs/architecture.md");
+    }
+
+    /**
+     * The classes a bundle's row names are RsaML's: {@code support.RsamlTimes} is in that bundle's package
+     * {@code ...support}, {@code ModelBatch} is a source file of some RsaML module (another framework's class is
+     * named as its, "EMF's stock {@code Diagnostician}", and not checked).
+     */
+    @Test
+    void theArchitecturePageNamesClassesThatExist() throws Exception {
+        String page = Files.readString(ROOT.resolve("docs/architecture.md"));
+        List<Path> sources = new ArrayList<>();
+        for (String top : List.of("bundles", "cli", "maven")) {
+            try (Stream<Path> files = Files.walk(ROOT.resolve(top))) {
+                files.filter(f -> f.toString().endsWith(".java") || f.toString().endsWith(".xtend"))
+                        .filter(f -> !f.toString().contains("/target/") && !f.toString().contains("/src/it/")).forEach(sources::add);
+            }
+        }
+        Pattern named = Pattern.compile("('s (?:stock )?)?`((?:[a-z][a-z0-9]*\\.)*)([A-Z][A-Za-z0-9]*)(?:\\.[A-Z][A-Za-z0-9]*)?`");
+        Matcher row = Pattern.compile("(?m)^\\| `([a-z][a-z.\\-]*)`[^|]*\\|(.*)$").matcher(page);
+        List<String> absent = new ArrayList<>();
+        int checked = 0;
+        while (row.find()) {
+            String module = row.group(1);
+            Path dir = Stream.of("bundles", "cli", "maven").map(top -> ROOT.resolve(top).resolve(module)).filter(Files::isDirectory)
+                    .findFirst().orElseThrow(() -> new AssertionError("docs/architecture.md has a row for " + module + ", which is no module"));
+            Matcher m = named.matcher(row.group(2));
+            while (m.find()) {
+                if (m.group(1) != null) {
+                    continue;
+                }
+                String qualifier = m.group(2).isEmpty() ? null : "/" + m.group(2).replace('.', '/');
+                String type = m.group(3);
+                boolean found = sources.stream().anyMatch(f -> {
+                    String name = f.getFileName().toString();
+                    boolean isType = name.equals(type + ".java") || name.equals(type + ".xtend");
+                    return isType && (qualifier == null || f.startsWith(dir) && f.getParent().toString().replace('\\', '/').endsWith(
+                            qualifier.substring(0, qualifier.length() - 1)));
+                });
+                checked++;
+                if (!found) {
+                    absent.add(module + ": " + m.group(2) + type);
+                }
+            }
+        }
+        assertTrue(checked > 0, "the page's bundle table names classes");
+        assertEquals(List.of(), absent, "classes docs/architecture.md names that are not in the module (or package) it says");
     }
 
     @Test
