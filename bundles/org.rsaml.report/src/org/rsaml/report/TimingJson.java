@@ -149,14 +149,7 @@ public final class TimingJson {
             }
             k.addProperty("paths", l.paths());
             JsonArray hops = new JsonArray();
-            for (Hop h : l.worstPath()) {
-                JsonObject hop = new JsonObject();
-                hop.addProperty("stage", h.label());
-                hop.addProperty("activation", h.activation());
-                hop.addProperty("waitNs", h.waitNs());
-                hop.addProperty("responseNs", h.responseNs());
-                hops.add(hop);
-            }
+            l.worstPath().forEach(h -> hops.add(hop(h)));
             k.add("worstPath", hops);
             JsonArray via = new JsonArray();
             l.via().forEach(via::add);
@@ -165,14 +158,7 @@ public final class TimingJson {
             for (org.rsaml.analysis.PathBound b : l.pathBounds()) {
                 JsonObject path = new JsonObject();
                 JsonArray stages = new JsonArray();
-                for (Hop h : b.hops()) {
-                    JsonObject hop = new JsonObject();
-                    hop.addProperty("stage", h.label());
-                    hop.addProperty("activation", h.activation());
-                    hop.addProperty("waitNs", h.waitNs());
-                    hop.addProperty("responseNs", h.responseNs());
-                    stages.add(hop);
-                }
+                b.hops().forEach(h -> stages.add(hop(h)));
                 path.add("stages", stages);
                 if (b.bounded()) {
                     path.addProperty("reactionTimeNs", b.reactionNs());
@@ -187,6 +173,15 @@ public final class TimingJson {
         }
         o.add("latencies", latencies);
         return o;
+    }
+
+    private static JsonObject hop(Hop h) {
+        JsonObject hop = new JsonObject();
+        hop.addProperty("stage", h.label());
+        hop.addProperty("activation", h.activation());
+        hop.addProperty("waitNs", h.waitNs());
+        hop.addProperty("responseNs", h.responseNs());
+        return hop;
     }
 
     private static JsonObject witness(Witness w) {

@@ -4,12 +4,12 @@
  */
 package org.rsaml.model.resource;
 
+import java.io.IOException;
 import java.util.Locale;
 import java.util.Map;
 import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
 
-import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 
 /**
@@ -46,11 +46,21 @@ public final class ModelFormats {
     }
 
     /**
-     * Why a file must not be opened (not a regular local file, larger than {@code maxSize} bytes), or
-     * null: the same policy for every syntax.
+     * Refuses to read a file the loading policy does not let RsaML open (not a regular local file, larger
+     * than {@link RsamlResource#OPTION_MAX_FILE_SIZE} allows): the same policy for every syntax, checked
+     * before the resource reads anything. The refusal is recorded as the resource's one error, so that
+     * whoever follows a reference to it can say why it failed, and thrown.
      */
-    public static String refuseToOpen(URI uri, long maxSize) {
-        return LoadPolicy.refuseToOpen(uri, maxSize);
+    public static void refuseUnopenable(Resource resource, Map<?, ?> options) throws IOException {
+        long limit = options != null && options.get(RsamlResource.OPTION_MAX_FILE_SIZE) instanceof Number n ? n.longValue()
+                : RsamlResource.DEFAULT_MAX_FILE_SIZE;
+        String refusal = LoadPolicy.refuseToOpen(resource.getURI(), limit);
+        if (refusal != null) {
+            resource.getErrors().clear();
+            LoadProblem problem = new LoadProblem(refusal, resource.getURI().toString(), 0, 0);
+            resource.getErrors().add(problem);
+            throw new Resource.IOWrappedException(problem);
+        }
     }
 
     /** Puts the factories of the syntaxes on the class path into the map, leaving registered ones alone. */

@@ -130,15 +130,7 @@ public class RsamlResource extends RsamlResourceImpl implements LocatingResource
     @Override
     public void load(Map<?, ?> options) throws IOException {
         if (!isLoaded()) {
-            long limit = options != null && options.get(OPTION_MAX_FILE_SIZE) instanceof Number n ? n.longValue() : DEFAULT_MAX_FILE_SIZE;
-            String refusal = LoadPolicy.refuseToOpen(getURI(), limit);
-            if (refusal != null) {
-                // Recorded so that whoever follows a reference here can say why it failed.
-                getErrors().clear();
-                LoadProblem problem = new LoadProblem(refusal, getURI().toString(), 0, 0);
-                getErrors().add(problem);
-                throw new IOWrappedException(problem);
-            }
+            ModelFormats.refuseUnopenable(this, options);
         }
         super.load(options);
     }

@@ -47,15 +47,7 @@ public class RsamlTextResource extends LazyLinkingResource implements LocatingRe
     @Override
     public void load(Map<?, ?> options) throws IOException {
         if (!isLoaded()) {
-            long limit = options != null && options.get(RsamlResource.OPTION_MAX_FILE_SIZE) instanceof Number n ? n.longValue()
-                    : RsamlResource.DEFAULT_MAX_FILE_SIZE;
-            String refusal = ModelFormats.refuseToOpen(getURI(), limit);
-            if (refusal != null) {
-                getErrors().clear();
-                LoadProblem problem = new LoadProblem(refusal, getURI().toString(), 0, 0);
-                getErrors().add(problem);
-                throw new IOWrappedException(problem);
-            }
+            ModelFormats.refuseUnopenable(this, options);
         }
         super.load(options);
     }

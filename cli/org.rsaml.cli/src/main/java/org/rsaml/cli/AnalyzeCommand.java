@@ -8,7 +8,6 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.Callable;
 
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.TimingText;
@@ -24,9 +23,6 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code rsaml analyze MODEL...}: schedulability per processor and end-to-end latency, with witnesses. */
 @Command(name = "analyze", mixinStandardHelpOptions = true, sortOptions = false,
@@ -37,7 +33,7 @@ import picocli.CommandLine.Model.CommandSpec;
         exitCodeList = { "0:no deadline or requirement can be missed (with --fail-on not-analysed: every verdict is proven)",
                 "1:a deadline or a latency requirement can be missed (with --fail-on not-analysed: or something is not analysed)",
                 "2:usage error, a model that cannot be read or analysed, or output that cannot be written" })
-final class AnalyzeCommand implements Callable<Integer> {
+final class AnalyzeCommand extends RsamlCommand {
 
     enum Format { text, json, sarif, junit }
 
@@ -59,12 +55,6 @@ final class AnalyzeCommand implements Callable<Integer> {
                     "(also a task, processor or requirement not analysed: only a proven model exits 0) or never (default: ${DEFAULT-VALUE})." })
     String failOn;
 
-    @ParentCommand
-    RsamlCli parent;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
     public Integer call() {
         TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new ParameterException(spec.commandLine(),
@@ -80,8 +70,8 @@ final class AnalyzeCommand implements Callable<Integer> {
 
     /** Analyses every model; with {@code print}, writes the verdicts in the text or JSON format. */
     private int analyse(boolean print, TimingFailOn level) {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter out = out();
+        PrintWriter err = err();
         TimingJson.Document json = new TimingJson.Document();
         TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, timeline, level, new TimingBatch.Listener() {
             @Override

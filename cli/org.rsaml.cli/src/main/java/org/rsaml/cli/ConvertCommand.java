@@ -8,7 +8,6 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
@@ -19,15 +18,12 @@ import org.rsaml.validation.ModelLoadException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code rsaml convert IN OUT}: the same model in the other syntax (.rsaml XMI, .rsa text). */
 @Command(name = "convert", mixinStandardHelpOptions = true,
         description = "Converts a model between XMI (.rsaml) and text (.rsa), losslessly; OUT's extension chooses the syntax.",
         footer = { "", "Example: rsaml convert robot.rsaml robot.rsa" })
-final class ConvertCommand implements Callable<Integer> {
+final class ConvertCommand extends RsamlCommand {
 
     @Parameters(index = "0", paramLabel = "IN", description = "The model to convert (.rsaml or .rsa).")
     Path input;
@@ -35,16 +31,10 @@ final class ConvertCommand implements Callable<Integer> {
     @Parameters(index = "1", paramLabel = "OUT", description = "The file to write: .rsa for text, .rsaml for XMI.")
     Path output;
 
-    @ParentCommand
-    RsamlCli parent;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
     public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter out = out();
+        PrintWriter err = err();
         Path in = parent.workingDirectory.resolve(input);
         Path target = parent.workingDirectory.resolve(output);
         String shownIn = ModelFiles.display(input);

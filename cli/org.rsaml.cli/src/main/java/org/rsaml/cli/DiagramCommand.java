@@ -8,7 +8,6 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.Callable;
 
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
@@ -22,9 +21,6 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code rsaml diagram [--view V] [--format F] -o DIR MODEL...}: each model drawn into DIR. */
 @Command(name = "diagram", mixinStandardHelpOptions = true, sortOptions = false,
@@ -35,7 +31,7 @@ import picocli.CommandLine.Model.CommandSpec;
         exitCodeList = { "0:every diagram written (findings do not change the exit code; see 'rsaml validate')",
                 "2:usage error, a model that cannot be read, or a diagram that cannot be written" },
         footer = { "", "Example: rsaml diagram --format html -o target/diagrams models/" })
-final class DiagramCommand implements Callable<Integer> {
+final class DiagramCommand extends RsamlCommand {
 
     @Option(names = "--view", defaultValue = "architecture", paramLabel = "VIEW",
             description = "architecture (layers, modules, ports, links, devices) or mission (missions, goals, plans, supervisors, orders); default ${DEFAULT-VALUE}.")
@@ -58,17 +54,11 @@ final class DiagramCommand implements Callable<Integer> {
     @Parameters(arity = "1..*", paramLabel = "MODEL", description = "Model files, or directories searched for *.rsaml files.")
     List<Path> models;
 
-    @ParentCommand
-    RsamlCli parent;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
     public Integer call() {
         RsamlValidationSetup.initInBackground();
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter out = out();
+        PrintWriter err = err();
         Path directory = parent.workingDirectory.resolve(output);
         if (Files.exists(directory) && !Files.isDirectory(directory)) {
             throw new CommandLine.ParameterException(spec.commandLine(),

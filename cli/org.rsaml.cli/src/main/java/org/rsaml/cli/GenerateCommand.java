@@ -7,7 +7,6 @@ package org.rsaml.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.concurrent.Callable;
 
 import org.rsaml.generator.Target;
 import org.rsaml.report.Generation;
@@ -20,9 +19,6 @@ import org.rsaml.validation.RsamlValidationSetup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code rsaml generate --target cpp|ros2 -o DIR MODEL}: the code skeleton of a valid model. */
 @Command(name = "generate", mixinStandardHelpOptions = true, sortOptions = false,
@@ -32,7 +28,7 @@ import picocli.CommandLine.Model.CommandSpec;
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:generated", "1:refused: the model has error findings",
                 "2:usage error, a model that cannot be read, or output that cannot be written" })
-final class GenerateCommand implements Callable<Integer> {
+final class GenerateCommand extends RsamlCommand {
 
     @Option(names = { "-t", "--target" }, required = true, paramLabel = "TARGET",
             description = "cpp (CMake C++17 project) or ros2 (ament_cmake packages).")
@@ -52,17 +48,11 @@ final class GenerateCommand implements Callable<Integer> {
     @Parameters(arity = "1", paramLabel = "MODEL", description = "The .rsaml model.")
     Path model;
 
-    @ParentCommand
-    RsamlCli parent;
-
-    @Spec
-    CommandSpec spec;
-
     @Override
     public Integer call() {
         RsamlValidationSetup.initInBackground();
-        PrintWriter out = spec.commandLine().getOut();
-        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter out = out();
+        PrintWriter err = err();
         String shown = ModelFiles.display(model);
         Generation.Outcome outcome = Generation.run(parent.workingDirectory.resolve(model), shown, target,
                 parent.workingDirectory.resolve(output), force, "generate anyway with --force");

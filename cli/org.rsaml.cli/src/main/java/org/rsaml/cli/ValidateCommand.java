@@ -7,7 +7,6 @@ package org.rsaml.cli;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.Callable;
 
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
@@ -17,9 +16,6 @@ import org.rsaml.validation.RsamlValidationSetup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Parameters;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
 
 /** {@code rsaml validate PATH...}: checks models against every RsaML rule and reports the findings. */
 @Command(name = "validate", mixinStandardHelpOptions = true, sortOptions = false,
@@ -30,19 +26,13 @@ import picocli.CommandLine.Model.CommandSpec;
         exitCodeList = { "0:clean: no finding at or above --fail-on",
                 "1:findings at or above --fail-on",
                 "2:usage error, or an input that could not be read" })
-final class ValidateCommand implements Callable<Integer> {
+final class ValidateCommand extends RsamlCommand {
 
     @Parameters(arity = "1..*", paramLabel = "PATH", description = "Model files and directories to validate.")
     List<Path> paths;
 
     @Mixin
     ReportArgs report;
-
-    @ParentCommand
-    RsamlCli parent;
-
-    @Spec
-    CommandSpec spec;
 
     @Override
     public Integer call() {
