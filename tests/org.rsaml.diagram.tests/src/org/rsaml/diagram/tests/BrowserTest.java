@@ -150,7 +150,7 @@ class BrowserTest {
             }
         }
         assertTrue(missed != null && missed.get("text").getAsString().endsWith(": MISSES"), "the missed requirement is listed: " + items);
-        assertTrue(missed.get("style").getAsString().contains("overlay-misses"));
+        assertTrue(missed.get("style").getAsString().contains("overlay-misses"), "the missed requirement is styled as a miss: " + missed);
         Set<String> path = new HashSet<>();
         for (JsonElement e : timing.getAsJsonArray("path")) {
             JsonObject element = e.getAsJsonObject();

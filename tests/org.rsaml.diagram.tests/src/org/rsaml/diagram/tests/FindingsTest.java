@@ -42,9 +42,11 @@ class FindingsTest {
     @Test
     void aCleanModelHasNoDecoration() throws Exception {
         Examples.Drawn drawn = Examples.draw("exp1-hybrid.rsaml", DiagramView.ARCHITECTURE);
-        assertEquals(List.of(), drawn.findings());
+        assertEquals(List.of(), drawn.findings(), "experiment 1 has no finding");
         SvgDocument svg = new SvgDocument(drawn.svg());
-        assertTrue(svg.shapes.values().stream().noneMatch(s -> s.classes().contains("error") || !s.badges().isEmpty()));
-        assertTrue(svg.links.stream().noneMatch(l -> l.classes().contains("error") || !l.badges().isEmpty()));
+        assertTrue(svg.shapes.values().stream().noneMatch(s -> s.classes().contains("error") || !s.badges().isEmpty()),
+                "no shape is marked or badged");
+        assertTrue(svg.links.stream().noneMatch(l -> l.classes().contains("error") || !l.badges().isEmpty()),
+                "no link is marked or badged");
     }
 }

@@ -36,10 +36,11 @@ class DiagnoseTest {
         LoadedModel model = ModelLoader.load(EXP2, "exp2.rsaml");
         Diagnostic diagnostic = RsamlModelValidator.diagnose(model.architecture());
 
-        assertEquals(Diagnostic.ERROR, diagnostic.getSeverity());
+        assertEquals(Diagnostic.ERROR, diagnostic.getSeverity(), "experiment 2 has errors");
         List<Finding> findings = RsamlModelValidator.validate(model);
         assertEquals(findings.stream().map(f -> f.ruleId() + ": " + f.message()).sorted().collect(Collectors.toList()),
-                diagnostic.getChildren().stream().map(Diagnostic::getMessage).sorted().collect(Collectors.toList()));
+                diagnostic.getChildren().stream().map(Diagnostic::getMessage).sorted().collect(Collectors.toList()),
+                "a child diagnostic per finding, worded as the finding");
 
         ExpectedFinding expected = ExpectedFinding.on(EXP2, CHECKER);
         Diagnostic budget = diagnostic.getChildren().stream().filter(d -> d.getMessage().equals(expected.diagnosticMessage()))
@@ -66,7 +67,7 @@ class DiagnoseTest {
         EObject root = ModelLoader.load(TestRepository.example("exp1-hybrid.rsaml"), "exp1.rsaml").architecture();
         Diagnostic diagnostic = RsamlModelValidator.diagnose(root);
         assertEquals(Diagnostic.OK, diagnostic.getSeverity(), messages(diagnostic).toString());
-        assertEquals(List.of(root), diagnostic.getData());
+        assertEquals(List.of(root), diagnostic.getData(), "the diagnostic is about the model it was asked for");
     }
 
     private static List<String> messages(Diagnostic diagnostic) {

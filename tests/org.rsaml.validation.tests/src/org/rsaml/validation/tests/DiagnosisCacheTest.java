@@ -55,9 +55,10 @@ class DiagnosisCacheTest {
 
         checker.setExecDuration(3.0);
         List<Diagnostic> again = DiagnosisCache.on(checker);
-        assertNotSame(first, again);
+        assertNotSame(first, again, "a change of the model is validated again");
         assertEquals(1, again.size(), "the budget is exceeded again: " + messages(again));
-        assertTrue(again.get(0).getMessage().startsWith("RSA-08: ") && again.get(0).getMessage().contains("takes 3.0 ms"),
+        String rule = ExpectedFinding.on(exp2, architecture + "/control/resourceChecker").ruleId();
+        assertTrue(again.get(0).getMessage().startsWith(rule + ": ") && again.get(0).getMessage().contains("takes 3.0 ms"),
                 "the new finding gives the new duration: " + messages(again));
         assertSame(again, DiagnosisCache.on(checker), "no new validation while the model is unchanged");
     }
