@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 #include "rsaml/scheduling.hpp"
+#include "rsaml/realtime.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +16,7 @@
 #if defined(__linux__)
 #include <pthread.h>
 #include <sched.h>
+#include <unistd.h>
 #endif
 
 namespace rsaml_ros2 {
@@ -38,9 +40,30 @@ std::int64_t thread_cpu_ns() {
   return static_cast<std::int64_t>(t.tv_sec) * 1000000000LL + t.tv_nsec;
 }
 
-/** Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority. */
-void place(const Release& release, int core) {
+/**
+ * Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority, or
+ * SCHED_DEADLINE for a release of an EDF processor (unpinned: the kernel admits a deadline thread
+ * only on every CPU of its root domain); says which in the trace.
+ */
+void place(Release& release, int core) {
 #if defined(__linux__)
+  if (release.edf) {
+    cpu_set_t all;
+    CPU_ZERO(&all);
+    // every CPU the process's main thread may use
+    const bool unpinned = core >= 0 && sched_getaffinity(getpid(), sizeof all, &all) == 0 &&
+                          pthread_setaffinity_np(pthread_self(), sizeof all, &all) == 0;
+    const std::string refused = rsaml_realtime::request_deadline(release.cost_ns, release.deadline_ns, release.period_ns);
+    if (refused.empty()) {
+      release.sched = "SCHED_DEADLINE runtime " + ms(release.cost_ns) + " ms deadline " + ms(release.deadline_ns) + " ms period " +
+                      ms(release.period_ns) + " ms" + (unpinned ? " on every core, not core " + std::to_string(core) + " alone" : "") +
+                      " (kernel: " + rsaml_realtime::kernel_policy() + ")";
+      trace("sched " + release.label + " " + release.sched);
+      return;
+    }
+    release.edf = false;  // a fixed-priority release at its rank, below, which its sched line says
+    release.sched = "instead of EDF: " + refused;
+  }
   if (core >= 0) {
     cpu_set_t set;
     CPU_ZERO(&set);
@@ -57,15 +80,19 @@ void place(const Release& release, int core) {
   sched_param param{};
   param.sched_priority = std::min(low + release.rank, high);
   const int error = low < 0 || high < low ? EINVAL : pthread_setschedparam(pthread_self(), policy, &param);
+  const std::string instead = release.sched.empty() ? "" : " " + release.sched;
   if (error == 0) {
-    trace("sched " + release.label + (release.round_robin ? " SCHED_RR" : " SCHED_FIFO") + " rank " + std::to_string(release.rank));
+    release.sched = std::string(release.round_robin ? "SCHED_RR" : "SCHED_FIFO") + " rank " + std::to_string(release.rank) + instead;
+    trace("sched " + release.label + " " + release.sched);
   } else {
-    trace("sched " + release.label + " default: real-time priority not permitted (" + std::strerror(error) +
+    release.sched = "default" + instead;
+    trace("sched " + release.label + " default" + instead + ": real-time priority not permitted (" + std::strerror(error) +
           "); it runs at the default priority and the timing analysis's verdicts do not hold (give the process"
           " CAP_SYS_NICE or an rtprio limit, e.g. ulimit -r 99)");
   }
 #else
   (void)core;
+  release.sched = "default";
   trace("sched " + release.label + " default: not supported on this platform");
 #endif
 }
@@ -96,11 +123,14 @@ ScheduledNode::~ScheduledNode() {
     registry.erase(this->get_node_base_interface().get());
   }
   std::lock_guard<std::mutex> lock(stats_);
+  // The C++ runtime's summary line (docs/timing.md), the same keys in the same order.
   for (const Release& r : releases_) {
     trace("summary " + r.label + " jobs " + std::to_string(r.jobs) + " released " +
-          (r.jobs > 0 ? ms(r.first_release_ns) + ".." + ms(r.last_release_ns) : std::string("none")) + " ms worst-response " +
-          ms(r.worst_response_ns) + " ms worst-execution " + ms(r.worst_execution_ns) + " ms worst-latency " + ms(r.worst_latency_ns) + " ms deadline " + ms(r.deadline_ns) +
-          " ms cost " + ms(r.cost_ns) + " ms misses " + std::to_string(r.misses) + " overruns " + std::to_string(r.overruns));
+          (r.jobs > 0 ? ms(r.first_release_ns) + ".." + ms(r.last_release_ns) + " ms" : std::string("none")) + " misses " +
+          std::to_string(r.misses) + " overruns " + std::to_string(r.overruns) + " worst-response " + ms(r.worst_response_ns) +
+          " ms bound " + (r.bound_ns >= 0 ? ms(r.bound_ns) + " ms" : std::string("none")) + " deadline " + ms(r.deadline_ns) +
+          " ms worst-execution " + ms(r.worst_execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms worst-start-latency " +
+          ms(r.worst_latency_ns) + " ms sched " + (r.sched.empty() ? std::string("default") : r.sched));
   }
   for (const Arrivals& a : arrivals_) {
     trace("summary " + module_ + ":" + a.port + " messages " + std::to_string(a.messages) + " received " +
@@ -115,13 +145,16 @@ ScheduledNode* ScheduledNode::rsaml_of(const rclcpp::node_interfaces::NodeBaseIn
 }
 
 std::size_t ScheduledNode::rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns,
-                                       std::int64_t cost_ns) {
+                                             std::int64_t cost_ns, std::int64_t period_ns, std::int64_t bound_ns, bool edf) {
   Release r;
   r.label = label;
   r.rank = rank;
   r.round_robin = round_robin;
+  r.edf = edf;
+  r.period_ns = period_ns;
   r.deadline_ns = deadline_ns;
   r.cost_ns = cost_ns;
+  r.bound_ns = bound_ns;
   r.group = this->create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);
   releases_.push_back(std::move(r));
   return releases_.size() - 1;
@@ -204,7 +237,7 @@ void Scheduler::add(ScheduledNode& node) {
     auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
     executor->add_callback_group(r.group, node.get_node_base_interface());
     worker->executor = executor;
-    const Release* release = &r;
+    Release* release = &r;
     const int core = node.rsaml_core();
     worker->thread = std::thread([executor, release, core] {
       place(*release, core);

@@ -32,8 +32,12 @@ struct Release {
   std::string label;
   int rank = 1;
   bool round_robin = false;
+  bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
+  std::int64_t period_ns = 0;
   std::int64_t deadline_ns = 0;
   std::int64_t cost_ns = 0;
+  std::int64_t bound_ns = -1;  // the timing analysis's worst-case response; negative: none
+  std::string sched;           // the scheduling its thread got, as traced
   rclcpp::CallbackGroup::SharedPtr group;
   std::uint64_t jobs = 0;
   std::uint64_t misses = 0;
@@ -73,8 +77,12 @@ class ScheduledNode : public rclcpp::Node {
   std::deque<Release>& rsaml_releases() { return releases_; }
 
  protected:
-  /** A release at `rank`: its callback group, which only its own executor thread serves. */
-  std::size_t rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns, std::int64_t cost_ns);
+  /**
+   * A release at `rank` (or, edf, under SCHED_DEADLINE): its callback group, which only its own
+   * executor thread serves; bound_ns is the timing analysis's bound on its response (negative: none).
+   */
+  std::size_t rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns, std::int64_t cost_ns,
+                                std::int64_t period_ns = 0, std::int64_t bound_ns = -1, bool edf = false);
   /**
    * The timer of a release, on the node's clock, in the release's group: each job runs `body`
    * through rsaml_run_job(), released at the timer's expected call time (ROS 2 Jazzy and later; before,

@@ -16,9 +16,10 @@ import java.util.Set;
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.internal.Latencies;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.Reaction;
+import org.rsaml.analysis.plan.PlannedAction;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.Release;
 import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Module;
@@ -198,7 +199,7 @@ public final class TimingAnalysis {
     }
 
     private static TaskSource reaction(PlannedModule m) {
-        ExecutionPlan.Reaction r = m.reaction();
+        Reaction r = m.reaction();
         String note = r.costFromFunctions() ? "the module gives no execution duration: the sum of its functions' is used" : "";
         Task t = new Task(r.label(), m.minIntervalNs(), r.deadlineNs(), r.costNs(), 0, 0, m.qualifiedName());
         return new TaskSource(t, m.module(), "reaction", note);

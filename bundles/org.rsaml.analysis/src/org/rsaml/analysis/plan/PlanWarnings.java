@@ -4,7 +4,7 @@
  */
 package org.rsaml.analysis.plan;
 
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.analysis.plan.PlannedPort;
 import org.rsaml.model.Connection;
 import org.rsaml.model.support.RsamlLabels;
 

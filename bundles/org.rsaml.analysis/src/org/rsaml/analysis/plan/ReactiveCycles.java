@@ -10,8 +10,8 @@ import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.rsaml.analysis.plan.ExecutionPlan.Flow;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.Flow;
+import org.rsaml.analysis.plan.PlannedModule;
 
 /**
  * The reactive cycles of a plan ({@link ExecutionPlan#reactiveCycles()}): the strongly connected

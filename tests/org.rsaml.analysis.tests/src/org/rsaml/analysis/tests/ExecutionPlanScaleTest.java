@@ -14,7 +14,7 @@ import org.rsaml.analysis.LatencyResult;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
+import org.rsaml.analysis.plan.PlannedModule;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
 import org.rsaml.model.EntryPort;

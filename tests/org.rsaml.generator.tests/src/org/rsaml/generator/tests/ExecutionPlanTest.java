@@ -13,9 +13,9 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.analysis.plan.ExecutionPlan.Release;
-import org.rsaml.analysis.plan.ExecutionPlan.ReleaseKind;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.Release;
+import org.rsaml.analysis.plan.ReleaseKind;
 import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.validation.ModelLoader;
 

@@ -24,13 +24,10 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.rsaml.analysis.ArchitectureTiming;
-import org.rsaml.analysis.ProcessorTiming;
-import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.Release;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
 import org.rsaml.generator.internal.Names;
@@ -43,14 +40,17 @@ import org.rsaml.validation.ModelLoader;
  * with {@code ros2 launch} on the loopback in a domain of their own, every job busy-working
  * {@link #LOAD} of its modeled execution time. Every node starts; every timed release runs at its
  * modeled period, with no job skipped (judged by the nodes' own release times); messages arrive
- * at every connected entry port at the rate their publisher is released; where the system grants
- * real-time priorities, each release's worst observed response (release to completion, measured
- * by the node) is within the timing analysis's bound, allowing only the platform's release latency
- * the analysis does not count (the worst delay before the processor's highest-priority release
- * was called, measured too); and everything exits cleanly on SIGINT. By default a representative
- * set: an example with two processors, a message type of its own and connections, and a model
- * where a long low-priority job must not delay a short high-priority one on the same core;
- * {@code -Drsaml.ros2.examples=all} runs every example without errors as well.
+ * at every connected entry port at the rate their publisher is released; every node reports the
+ * timing analysis's bound of each release (written into it by the generator); where the system
+ * grants real-time priorities, each release's worst observed response (release to completion,
+ * measured by the node on its clock) is within that bound plus {@link #PLATFORM_NS}, a fixed
+ * allowance for what the analysis does not count on ROS 2 (docs/timing.md); and everything exits
+ * cleanly on SIGINT. By default a representative set: an example with two processors, a message
+ * type of its own and connections, a model where a long low-priority job must not delay a short
+ * high-priority one on the same core, an inhibitor, and one seeded random task set (two processors
+ * of rate-monotonic tasks, as {@link JobTimingTest} runs on the C++ runtime);
+ * {@code -Drsaml.ros2.examples=all} runs every example without errors as well, and
+ * {@code -Drsaml.ros2.seeds=1,2,3} other random sets.
  */
 class Ros2LaunchTest {
 
@@ -58,6 +58,18 @@ class Ros2LaunchTest {
     static final double LOAD = 0.8;
     /** How long the system runs once every node is up. */
     static final long RUN_MS = 5000;
+    /**
+     * What the analysis does not count on ROS 2 and a job's response includes: the timer's wake-up
+     * and the executor's dispatch before the job's callback (each node reports the worst of it as
+     * worst-start-latency), and the node's bookkeeping around the user code. Fixed, not measured.
+     */
+    static final long PLATFORM_NS = 2_000_000;
+
+    /** The seeds of the random task sets run on ROS 2 (one by default; -Drsaml.ros2.seeds=1,2,3 for others). */
+    static List<Long> seeds() {
+        return java.util.Arrays.stream(System.getProperty("rsaml.ros2.seeds", "20261127").split(",")).map(String::trim)
+                .filter(x -> !x.isEmpty()).map(Long::valueOf).toList();
+    }
 
     static List<String> models() throws Exception {
         List<String> models = new ArrayList<>(List.of("mobile-base-latency.rsaml", "resources/ros2-preemption.rsaml", "resources/inhibitor-window.rsaml"));
@@ -71,19 +83,110 @@ class Ros2LaunchTest {
         return models;
     }
 
-    private static final Pattern RELEASE = Pattern.compile("summary (\\S+) jobs (\\d+) released ([\\d.]+)\\.\\.([\\d.]+) ms worst-response ([\\d.]+) ms"
-            + " worst-execution ([\\d.]+) ms worst-latency ([\\d.]+) ms");
     private static final Pattern PORT = Pattern.compile("summary (\\S+) messages (\\d+) received ([\\d.]+)\\.\\.([\\d.]+) ms");
-
-    record Observed(long jobs, double first, double last, double response, double execution, double latency) {
-    }
 
     @ParameterizedTest
     @MethodSource("models")
     void buildsStartsAndRunsAsAnalysed(String name, @TempDir Path tmp) throws Exception {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
-        Path model = Ros2Test.model(name);
+        run(Ros2Test.model(name), name, tmp);
+    }
+
+    @ParameterizedTest
+    @MethodSource("seeds")
+    void aRandomTaskSetRunsAsAnalysed(long seed, @TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        Path model = tmp.resolve("random" + seed + ".rsaml");
+        Files.writeString(model, JobTimingTest.randomTaskSet(seed));
+        run(model, model.getFileName().toString(), tmp);
+    }
+
+    /** Which containers (or nodes) a launch file starts for host:=ARG, evaluated by ROS 2's launch itself. */
+    private static final String STARTED = """
+            import importlib.util, sys
+            from launch import LaunchContext
+            from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
+            sys.dont_write_bytecode = True
+            spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
+            context = LaunchContext()
+            context.launch_configurations['host'] = sys.argv[2]
+            started = []
+            for e in m.generate_launch_description().entities:
+                if type(e).__name__ != 'DeclareLaunchArgument' and (e.condition is None or e.condition.evaluate(context)):
+                    started.append(perform_substitutions(context, normalize_to_list_of_substitutions(e._Node__node_name)))
+            print('started', ' '.join(sorted(started)))
+            """;
+
+    /**
+     * A processor on another host: mobile-base-latency with its navigation processor on the board
+     * "nav-board". Both launch files take host:=, and ROS 2's launch starts only that host's
+     * containers (or nodes): main is the processors without a host; empty, every one.
+     */
+    @org.junit.jupiter.api.Test
+    void theHostArgumentStartsOnlyTheNodesOfOneHost(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        String nav = "<processors name=\"core1\"";
+        assertTrue(text.contains(nav));
+        Path model = tmp.resolve("two-hosts.rsaml");
+        Files.writeString(model, text.replace(nav, nav + " host=\"nav-board\" linkLatency=\"2.0\""));
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        String pkg = Names.snake(ModelLoader.load(model, "two-hosts.rsaml").architecture().getName());
+        Path script = tmp.resolve("started.py");
+        Files.writeString(script, STARTED);
+        Map<String, String> expected = Map.of("", "started " + pkg + "_core0_container " + pkg + "_core1_container", "main",
+                "started " + pkg + "_core0_container", "nav-board", "started " + pkg + "_core1_container", "elsewhere", "started");
+        for (Map.Entry<String, String> e : expected.entrySet()) {
+            String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py")
+                    + "' '" + e.getKey() + "'").toArray(String[]::new));
+            assertTrue(out.strip().endsWith(e.getValue()), "host:=" + e.getKey() + " should start " + e.getValue() + ":\n" + out);
+        }
+        String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
+                + "_processes.launch.py") + "' nav-board").toArray(String[]::new));
+        assertTrue(processes.strip().endsWith("started navigation_obstacle_detector navigation_path_planner"),
+                "the navigation nodes alone:\n" + processes);
+    }
+
+    /**
+     * Real-time threads (SCHED_FIFO, SCHED_RR, SCHED_DEADLINE) of user processes other than the
+     * launched system, as "pid command": on a shared machine they take the CPUs from the system's
+     * releases at priorities the analysis does not know, so a response past the bound would say
+     * nothing about the analysis. Read from /proc (policy: field 41 of a thread's stat).
+     */
+    static java.util.Set<String> otherRealtimeThreads(ProcessHandle launched) {
+        java.util.Set<Long> ours = new java.util.HashSet<>();
+        ours.add(launched.pid());
+        launched.descendants().forEach(p -> ours.add(p.pid()));
+        java.util.Set<String> found = new java.util.TreeSet<>();
+        java.io.File[] procs = new java.io.File("/proc").listFiles((d, n) -> n.chars().allMatch(Character::isDigit));
+        for (java.io.File proc : procs == null ? new java.io.File[0] : procs) {
+            long pid = Long.parseLong(proc.getName());
+            try {
+                if (ours.contains(pid) || Files.readAllBytes(proc.toPath().resolve("cmdline")).length == 0) {
+                    continue; // the system itself, or a kernel thread
+                }
+                java.io.File[] tasks = new java.io.File(proc, "task").listFiles();
+                for (java.io.File task : tasks == null ? new java.io.File[0] : tasks) {
+                    String stat = Files.readString(task.toPath().resolve("stat"));
+                    String[] fields = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+                    int policy = Integer.parseInt(fields[38]); // field 41 of stat, counted from field 3
+                    if (policy == 1 || policy == 2 || policy == 6) {
+                        found.add(pid + " " + stat.substring(stat.indexOf('(') + 1, stat.lastIndexOf(')')));
+                        break;
+                    }
+                }
+            } catch (java.io.IOException | RuntimeException e) {
+                // the process ended while being read
+            }
+        }
+        return found;
+    }
+
+    private static void run(Path model, String name, Path tmp) throws Exception {
         Architecture arch = ModelLoader.load(model, name).architecture();
         String pkg = Names.snake(arch.getName());
         Path src = tmp.resolve("src");
@@ -98,6 +201,7 @@ class Ros2LaunchTest {
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         Ros2Jazzy.isolate(pb.environment(), domain);
         Process launch = pb.start();
+        java.util.Set<String> otherRealtime = new java.util.TreeSet<>();
         String out = "";
         try {
             long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
@@ -112,7 +216,9 @@ class Ros2LaunchTest {
                 }
                 Thread.sleep(200);
             }
-            Thread.sleep(RUN_MS);
+            for (long end = System.nanoTime() + RUN_MS * 1_000_000; System.nanoTime() < end; Thread.sleep(250)) {
+                otherRealtime.addAll(otherRealtimeThreads(launch.toHandle()));
+            }
             Tools.ok(tmp, 10, "kill", "-INT", Long.toString(launch.pid()));
             assertTrue(launch.waitFor(60, TimeUnit.SECONDS), "ros2 launch did not stop within 60 s of SIGINT");
         } finally {
@@ -126,14 +232,9 @@ class Ros2LaunchTest {
         assertEquals(containers, Pattern.compile("process has finished cleanly").matcher(out).results().count(),
                 () -> "not every container exited cleanly on SIGINT:\n" + Tools.last(trace, 6000));
 
-        Map<String, Observed> observed = new TreeMap<>();
-        Matcher m = RELEASE.matcher(out);
-        while (m.find()) {
-            observed.put(m.group(1), new Observed(Long.parseLong(m.group(2)), Double.parseDouble(m.group(3)), Double.parseDouble(m.group(4)),
-                    Double.parseDouble(m.group(5)), Double.parseDouble(m.group(6)), Double.parseDouble(m.group(7))));
-        }
+        Map<String, JobSummary> observed = JobSummary.of(out);
         Map<String, double[]> ports = new TreeMap<>();
-        m = PORT.matcher(out);
+        Matcher m = PORT.matcher(out);
         while (m.find()) {
             ports.put(m.group(1), new double[] {Long.parseLong(m.group(2)), Double.parseDouble(m.group(3)), Double.parseDouble(m.group(4))});
         }
@@ -143,13 +244,13 @@ class Ros2LaunchTest {
         StringBuilder report = new StringBuilder(name + ": observed on ROS 2 (simulated load " + LOAD + ")\n");
         for (PlannedModule pm : plan.modules()) {
             for (Release r : pm.releases()) {
-                Observed o = observed.get(r.label());
+                JobSummary o = observed.get(r.label());
                 assertNotNull(o, "no summary of release " + r.label() + ":\n" + Tools.last(trace, 6000));
                 double period = r.periodNs() / 1e6;
                 assertTrue(o.jobs() >= Math.max(2, (long) (RUN_MS * 0.8 / period)), r.label() + " ran " + o.jobs() + " jobs in a run of "
                         + RUN_MS + " ms, period " + period + " ms");
-                assertEquals((o.jobs() - 1) * period, o.last() - o.first(), 0.01,
-                        r.label() + ": " + o.jobs() + " jobs released from " + o.first() + " to " + o.last() + " ms, not every " + period + " ms");
+                assertEquals((o.jobs() - 1) * r.periodNs(), o.lastNs() - o.firstNs(), 10_000,
+                        r.label() + ": " + o.jobs() + " jobs released from " + o.firstNs() + " to " + o.lastNs() + " ns, not every " + period + " ms");
             }
         }
 
@@ -168,40 +269,43 @@ class Ros2LaunchTest {
             report.append("  ").append(port).append(": ").append((long) p[0]).append(" messages\n");
         }
 
-        // Observed response times within the analysis's bounds, where real-time priorities are granted.
-        boolean realtime = !out.contains(" default: real-time priority not permitted");
-        ArchitectureTiming timing = TimingAnalysis.analyse(arch);
-        for (ProcessorTiming pt : timing.processors()) {
-            int top = pt.result().tasks().stream().mapToInt(t -> t.task().priority()).max().orElse(0);
-            double allowance = pt.result().tasks().stream().filter(t -> t.task().priority() == top && observed.containsKey(t.task().name()))
-                    .mapToDouble(t -> observed.get(t.task().name()).latency()).min().orElse(0);
-            for (TaskResult t : pt.result().tasks()) {
-                Observed o = observed.get(t.task().name());
-                if (o == null) {
-                    continue;
-                }
-                String bound = t.responseTime().isPresent() ? t.responseTime().getAsLong() / 1e6 + " ms" : "none (" + t.verdict() + ")";
-                report.append(String.format("  %s: %d jobs, worst response %.3f ms (execution %.3f, release latency %.3f), analysed bound %s%n",
-                        t.task().name(), o.jobs(), o.response(), o.execution(), o.latency(), bound));
-                if (realtime && t.responseTime().isPresent()) {
-                    double b = t.responseTime().getAsLong() / 1e6;
-                    assertTrue(o.response() <= b + allowance, t.task().name() + ": worst observed response " + o.response()
-                            + " ms exceeds the analysed bound " + b + " ms plus the platform's release latency " + allowance + " ms\n" + report);
-                }
+        // Each node reports the analysis's bound of its releases; the observed response times are
+        // within it (plus the fixed platform allowance) where the release got the scheduling the
+        // analysis assumes.
+        Map<String, Long> bounds = JobTimingTest.bounds(TimingAnalysis.analyse(arch));
+        List<String> unchecked = new ArrayList<>();
+        for (Release r : plan.releases()) {
+            JobSummary o = observed.get(r.label());
+            long bound = bounds.getOrDefault(r.label(), -1L);
+            assertEquals(bound < 0 ? "none" : JobTimingTest.ms(bound), o.bound(), r.label() + ": the analysis's bound, written into the node: " + o);
+            assertEquals(r.deadlineNs(), o.deadlineNs(), 500, r.label() + ": the modeled deadline: " + o);
+            assertEquals(r.costNs(), o.modeledNs(), 500, r.label() + ": the modeled execution time: " + o);
+            report.append(String.format(java.util.Locale.ROOT, "  %s: %d jobs, worst response %s (execution %s, start latency %s), bound %s, %s%n",
+                    r.label(), o.jobs(), JobTimingTest.ms(o.worstNs()), JobTimingTest.ms(o.executionNs()), JobTimingTest.ms(o.latencyNs()),
+                    o.bound(), o.sched()));
+            if (bound < 0) {
+                continue;
             }
-            report.append("  processor ").append(pt.name()).append(": platform release latency ").append(allowance).append(" ms\n");
+            if (!o.asAnalysed() || !otherRealtime.isEmpty()) {
+                unchecked.add(r.label() + " (" + (o.asAnalysed() ? "other programs' real-time threads ran: " + otherRealtime : o.sched()) + ")");
+                continue;
+            }
+            assertTrue(o.worstNs() <= bound + PLATFORM_NS, r.label() + ": worst observed response " + JobTimingTest.ms(o.worstNs())
+                    + " exceeds the analysed bound " + JobTimingTest.ms(bound) + " plus " + JobTimingTest.ms(PLATFORM_NS)
+                    + " for the platform\n" + report);
         }
-        if (!realtime) {
-            report.append("  real-time priorities are not permitted here: the response times are reported, not checked against the bounds\n");
+        if (!unchecked.isEmpty()) {
+            report.append("  not scheduled as analysed here (the response times are reported, not checked against the bounds): ")
+                    .append(unchecked).append('\n');
         }
 
         // On one core, the long low-priority planning job no longer delays the short safety stop.
         if (name.endsWith("ros2-preemption.rsaml")) {
-            Observed plan150 = observed.get("planning/globalPlanner.plan");
-            Observed stop = observed.get("safety/safetyStop.check");
-            assertTrue(plan150.execution() >= 150 * LOAD * 0.9, "the planning job did not run long: " + plan150);
-            if (realtime) {
-                assertTrue(stop.response() < 20, "the safety stop waited for the planner: worst response " + stop.response() + " ms\n" + report);
+            JobSummary plan150 = observed.get("planning/globalPlanner.plan");
+            JobSummary stop = observed.get("safety/safetyStop.check");
+            assertTrue(plan150.executionNs() >= 150_000_000 * LOAD * 0.9, "the planning job did not run long: " + plan150);
+            if (stop.asAnalysed() && otherRealtime.isEmpty()) {
+                assertTrue(stop.worstNs() < 20_000_000, "the safety stop waited for the planner: " + stop + "\n" + report);
             }
         }
         // A boolean trigger asserts its link only with true: the overseer sends false every 100 ms

@@ -14,9 +14,9 @@ import org.rsaml.generator.internal.NameScope;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.generator.internal.cxx.CxxNames;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
+import org.rsaml.analysis.plan.LinkPlan;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.PlannedPort;
 
 /**
  * What only the C++ target names: the members of the generated architecture class, the data types

@@ -15,12 +15,12 @@ import org.rsaml.generator.internal.cxx.CxxNames
 import org.rsaml.generator.internal.cxx.ReleaseBounds
 import org.rsaml.generator.internal.cxx.UserCode
 import org.rsaml.analysis.plan.ExecutionPlan
-import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
-import org.rsaml.analysis.plan.ExecutionPlan.Reaction
-import org.rsaml.analysis.plan.ExecutionPlan.Release
+import org.rsaml.analysis.plan.LinkPlan
+import org.rsaml.analysis.plan.PlannedAction
+import org.rsaml.analysis.plan.PlannedFunction
+import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.Reaction
+import org.rsaml.analysis.plan.Release
 import org.rsaml.generator.spi.GeneratedFile
 import org.rsaml.generator.spi.GeneratedProject
 import org.rsaml.generator.spi.OutputContext
@@ -120,8 +120,7 @@ class CppFiles {
 	}
 
 	def private posixPolicy(Release r) {
-		val processor = r.module.processor
-		if (processor !== null && processor.isSetSchedPolicy && processor.schedPolicy == SchedulingPolicy.EDF) "Deadline"
+		if (r.edf) "Deadline"
 		else if (r.policy == SchedulingPolicy.RR) "RoundRobin"
 		else "Fifo"
 	}

@@ -13,14 +13,14 @@ import java.util.Map;
 import org.rsaml.generator.internal.NameScope;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedAction;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedLayer;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
-import org.rsaml.analysis.plan.ExecutionPlan.Release;
-import org.rsaml.analysis.plan.ExecutionPlan.ReleaseKind;
+import org.rsaml.analysis.plan.LinkPlan;
+import org.rsaml.analysis.plan.PlannedAction;
+import org.rsaml.analysis.plan.PlannedFunction;
+import org.rsaml.analysis.plan.PlannedLayer;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.PlannedPort;
+import org.rsaml.analysis.plan.Release;
+import org.rsaml.analysis.plan.ReleaseKind;
 
 /**
  * The C++ names of a plan, for the targets that emit a class per module (C++ and ROS 2): project

@@ -18,8 +18,8 @@ import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.TimingModelException;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.Reaction;
-import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.Reaction;
+import org.rsaml.analysis.plan.Release;
 import org.rsaml.analysis.plan.UnplannableException;
 
 /**

@@ -4,8 +4,8 @@
  */
 package org.rsaml.generator.internal.cxx
 
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort
+import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.PlannedPort
 import org.rsaml.generator.internal.Templates
 
 /**

@@ -6,11 +6,13 @@ package org.rsaml.generator.internal.ros2
 
 import java.util.TreeSet
 import org.rsaml.analysis.plan.ExecutionPlan
-import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
-import org.rsaml.analysis.plan.ExecutionPlan.Release
+import org.rsaml.analysis.plan.LinkPlan
+import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.Release
 import org.rsaml.generator.internal.Templates
+import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.cxx.CxxNames
+import org.rsaml.generator.internal.cxx.ReleaseBounds
 import org.rsaml.generator.spi.OutputContext
 
 /**
@@ -24,6 +26,8 @@ class Ros2Context {
 	public val CxxNames names
 	public val Ros2Names rosNames
 	public val OutputContext output
+	/** The timing analysis's bound of each release, which the nodes measure their jobs against. */
+	public val ReleaseBounds bounds
 	/** The first line of every regenerated file. */
 	public val String banner
 	/** The nodes' package (and C++ namespace). */
@@ -36,6 +40,14 @@ class Ros2Context {
 		this.output = output
 		this.pkg = names.project
 		this.banner = Templates.banner(plan)
+		this.bounds = ReleaseBounds.of(plan)
+	}
+
+	/** What the analysis says of a release's response time, for a comment. */
+	def boundComment(Release r) {
+		val bound = bounds.of(r)
+		if (bound.responseNs >= 0) "analysed worst-case response " + bound.responseNs + " ns (" + Names.comment(bound.why) + ")"
+		else "no analysed bound: " + Names.comment(bound.why)
 	}
 
 	/** The rclcpp component a module's node is registered as. */

@@ -4,6 +4,7 @@
  */
 package org.rsaml.generator.internal.ros2
 
+import org.rsaml.analysis.TimingAnalysis
 import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.cxx.CxxNames
 
@@ -52,10 +53,16 @@ class Ros2LaunchTemplate extends Ros2Template {
 			# taskset to the core of its processor where the model names one«ENDIF». Arguments:
 		«ENDIF»
 		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true, simulated_load:=0.9 (every
-		# timed job busy-works 90 % of its modeled execution time).
+		# timed job busy-works 90 % of its modeled execution time)«IF hosted», host:=NAME (only the nodes of
+		# the processors on host NAME; main: those without a host; empty, the default: every node)«ENDIF».
 		from launch import LaunchDescription
 		from launch.actions import DeclareLaunchArgument
-		from launch.substitutions import LaunchConfiguration
+		«IF hosted»
+			from launch.conditions import IfCondition
+			from launch.substitutions import LaunchConfiguration, PythonExpression
+		«ELSE»
+			from launch.substitutions import LaunchConfiguration
+		«ENDIF»
 		«IF composed»
 			from launch_ros.actions import ComposableNodeContainer
 			from launch_ros.descriptions import ComposableNode
@@ -76,6 +83,10 @@ class Ros2LaunchTemplate extends Ros2Template {
 		                              description='Run the nodes on the simulation clock (/clock)'),
 		        DeclareLaunchArgument('simulated_load', default_value='0.0',
 		                              description='Busy work of every timed job, as a fraction (0 to 1) of its modeled execution time'),
+		        «IF hosted»
+		        	DeclareLaunchArgument('host', default_value='',
+		        	                      description='Start only the nodes of this host (main: the processors without one); empty: every node'),
+		        «ENDIF»
 		        «IF composed»
 		        	«FOR c : rosNames.containers»
 		        		«IF c.processor !== null»
@@ -86,7 +97,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		ComposableNodeContainer(
 		        		    name=«py(c.name)», namespace=namespace, package=«py(pkg)»,
 		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=parameters,«IF c.core >= 0»
-		        		    prefix=«py(taskset(c.core))»,«ENDIF»
+		        		    prefix=«py(taskset(c.core))»,«ENDIF»«IF hosted»
+		        		    condition=«onHost(c.processor)»,«ENDIF»
 		        		    composable_node_descriptions=[
 		        		        «FOR m : c.modules»
 		        		        	ComposableNode(package=«py(pkg)», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
@@ -98,11 +110,23 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	«FOR m : plan.modules»
 		        		Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
 		        		     namespace=namespace, parameters=parameters, output='screen'«IF m.core >= 0»,
-		        		     prefix=«py(taskset(m.core))»«ENDIF»),
+		        		     prefix=«py(taskset(m.core))»«ENDIF»«IF hosted»,
+		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
 		        «ENDIF»
 		    ])
 	'''
+
+	/** Whether some processor is on another host: then the launch files take the argument host. */
+	def private hosted() {
+		plan.architecture.processors.exists[!TimingAnalysis.host(it).empty]
+	}
+
+	/** The condition that starts what runs on processor p's host (main: no host) when host:= names it or is empty. */
+	def private onHost(org.rsaml.model.Processor p) {
+		val host = TimingAnalysis.host(p)
+		"IfCondition(PythonExpression([\"'\", LaunchConfiguration('host'), " + py("' in ('', " + py(if (host.empty) "main" else host) + ")") + "]))"
+	}
 
 	/**
 	 * The launch prefix that pins a process (and every thread it starts) to one CPU core with

@@ -21,11 +21,12 @@ import org.rsaml.generator.internal.NameScope;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.generator.internal.cxx.CxxNames;
 import org.rsaml.analysis.plan.ExecutionPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.Flow;
-import org.rsaml.analysis.plan.ExecutionPlan.LinkPlan;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule;
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedPort;
-import org.rsaml.analysis.plan.ExecutionPlan.Release;
+import org.rsaml.analysis.plan.DataKind;
+import org.rsaml.analysis.plan.Flow;
+import org.rsaml.analysis.plan.LinkPlan;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.PlannedPort;
+import org.rsaml.analysis.plan.Release;
 import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.Processor;
 
@@ -291,7 +292,7 @@ public final class Ros2Names {
      * suppressors"; the C++ runtime's {@code asserts()}). A message that does not assert has no effect.
      */
     public boolean assertsOnlyWhenTrue(PlannedPort trigger) {
-        return trigger.kind() == ExecutionPlan.DataKind.BOOLEAN;
+        return trigger.kind() == DataKind.BOOLEAN;
     }
 
     public String rosType(PlannedPort p) {

@@ -5,9 +5,9 @@
 package org.rsaml.generator.internal.ros2
 
 import java.util.TreeSet
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedFunction
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
-import org.rsaml.analysis.plan.ExecutionPlan.Release
+import org.rsaml.analysis.plan.PlannedFunction
+import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.Release
 import org.rsaml.generator.internal.cxx.CxxNames
 
 /**
@@ -127,9 +127,11 @@ class Ros2NodeTemplate extends Ros2Template {
 		    	    subscription_options);
 		    «ENDFOR»
 		    «FOR r : m.releases»
-		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank», deadline «r.deadlineNs» ns, cost «r.costNs» ns
+		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank»«IF r.edf» (EDF: SCHED_DEADLINE)«ENDIF», deadline «r.deadlineNs» ns, cost «r.costNs» ns;
+		    	// «context.boundComment(r)»
 		    	«r.timerMember»_ = this->rsaml_add_timer(
-		    	    this->rsaml_add_release(«str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs»),
+		    	    this->rsaml_add_release(«str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs»,
+		    	                            «r.timerMember»_period_, «context.bounds.of(r).responseNs», «IF r.edf»true«ELSE»false«ENDIF»),
 		    	    «r.timerMember»_period_, [this] { this->«r.method»(); });
 		    «ENDFOR»
 		  }

@@ -6,7 +6,8 @@ package org.rsaml.generator.internal.ros2
 
 import java.util.TreeSet
 import org.rsaml.analysis.plan.ExecutionPlan
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
+import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.generator.internal.cpp.CppTarget
 import org.rsaml.generator.internal.cxx.CxxCode
 import org.rsaml.generator.internal.cxx.CxxNames
 import org.rsaml.generator.spi.GeneratedFile
@@ -88,6 +89,7 @@ class Ros2Files {
 		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {
 			files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
 		}
+		files += GeneratedFile.generated(pkg + "/gen/rsaml/realtime.hpp", "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
 		for (m : context.plan.modules) {
 			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", node.base(m))
 			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.className + "Component.cpp", component.component(m))

@@ -4,7 +4,7 @@
  */
 package org.rsaml.generator.internal.ros2
 
-import org.rsaml.analysis.plan.ExecutionPlan.PlannedModule
+import org.rsaml.analysis.plan.PlannedModule
 import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cxx.CxxNames
