@@ -21,12 +21,13 @@ package org.rsaml.model;
  *   <li>{@link org.rsaml.model.Port#getModule <em>Module</em>}</li>
  *   <li>{@link org.rsaml.model.Port#getDataType <em>Data Type</em>}</li>
  *   <li>{@link org.rsaml.model.Port#getMessageType <em>Message Type</em>}</li>
+ *   <li>{@link org.rsaml.model.Port#getTopic <em>Topic</em>}</li>
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getPort()
  * @model abstract="true"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA18_structuredPortNamesMessageType'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA18_structuredPortNamesMessageType='dataType = DataType::structured implies normalizedMessageType() &lt;&gt; null'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA18_structuredPortNamesMessageType RSA28_topicNameUsable'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA18_structuredPortNamesMessageType='dataType = DataType::structured implies normalizedMessageType() &lt;&gt; null' RSA28_topicNameUsable='topicProblem() = null'"
  * @generated
  */
 public interface Port extends NamedElement {
@@ -112,6 +113,31 @@ public interface Port extends NamedElement {
 	void setMessageType(String value);
 
 	/**
+	 * Returns the value of the '<em><b>Topic</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The ROS 2 topic the port publishes or subscribes to (for example scan, cmd_vel or /tf): relative names resolve in the nodes' namespace. Ports connected to each other share one topic, so they name the same one or one of them names it; when none does, the generated packages name it after the publishing module's path.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Topic</em>' attribute.
+	 * @see #setTopic(String)
+	 * @see org.rsaml.model.RsamlPackage#getPort_Topic()
+	 * @model
+	 * @generated
+	 */
+	String getTopic();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Port#getTopic <em>Topic</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Topic</em>' attribute.
+	 * @see #getTopic()
+	 * @generated
+	 */
+	void setTopic(String value);
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * <!-- begin-model-doc -->
@@ -121,5 +147,16 @@ public interface Port extends NamedElement {
 	 * @generated
 	 */
 	String normalizedMessageType();
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * What makes the topic this port names unusable as a ROS 2 topic (not a valid name, another name than a port it is connected to, or the name of ports it is not connected to); null when it names none or the name is usable.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	String topicProblem();
 
 } // Port

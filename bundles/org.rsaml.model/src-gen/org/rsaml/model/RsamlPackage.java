@@ -1424,13 +1424,22 @@ public interface RsamlPackage extends EPackage {
 	int PORT__MESSAGE_TYPE = NAMED_ELEMENT_FEATURE_COUNT + 2;
 
 	/**
+	 * The feature id for the '<em><b>Topic</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PORT__TOPIC = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
 	 * The number of structural features of the '<em>Port</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int PORT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 3;
+	int PORT_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -1451,13 +1460,22 @@ public interface RsamlPackage extends EPackage {
 	int PORT___NORMALIZED_MESSAGE_TYPE = NAMED_ELEMENT_OPERATION_COUNT + 0;
 
 	/**
+	 * The operation id for the '<em>Topic Problem</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PORT___TOPIC_PROBLEM = NAMED_ELEMENT_OPERATION_COUNT + 1;
+
+	/**
 	 * The number of operations of the '<em>Port</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int PORT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 1;
+	int PORT_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 2;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.EntryPortImpl <em>Entry Port</em>}' class.
@@ -1515,6 +1533,15 @@ public interface RsamlPackage extends EPackage {
 	int ENTRY_PORT__MESSAGE_TYPE = PORT__MESSAGE_TYPE;
 
 	/**
+	 * The feature id for the '<em><b>Topic</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ENTRY_PORT__TOPIC = PORT__TOPIC;
+
+	/**
 	 * The feature id for the '<em><b>Incoming</b></em>' reference list.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1558,6 +1585,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int ENTRY_PORT___NORMALIZED_MESSAGE_TYPE = PORT___NORMALIZED_MESSAGE_TYPE;
+
+	/**
+	 * The operation id for the '<em>Topic Problem</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ENTRY_PORT___TOPIC_PROBLEM = PORT___TOPIC_PROBLEM;
 
 	/**
 	 * The number of operations of the '<em>Entry Port</em>' class.
@@ -1624,6 +1660,15 @@ public interface RsamlPackage extends EPackage {
 	int OUTPUT_PORT__MESSAGE_TYPE = PORT__MESSAGE_TYPE;
 
 	/**
+	 * The feature id for the '<em><b>Topic</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int OUTPUT_PORT__TOPIC = PORT__TOPIC;
+
+	/**
 	 * The feature id for the '<em><b>Outgoing</b></em>' reference list.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -1667,6 +1712,15 @@ public interface RsamlPackage extends EPackage {
 	 * @ordered
 	 */
 	int OUTPUT_PORT___NORMALIZED_MESSAGE_TYPE = PORT___NORMALIZED_MESSAGE_TYPE;
+
+	/**
+	 * The operation id for the '<em>Topic Problem</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int OUTPUT_PORT___TOPIC_PROBLEM = PORT___TOPIC_PROBLEM;
 
 	/**
 	 * The number of operations of the '<em>Output Port</em>' class.
@@ -4258,6 +4312,17 @@ public interface RsamlPackage extends EPackage {
 	EAttribute getPort_MessageType();
 
 	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Port#getTopic <em>Topic</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Topic</em>'.
+	 * @see org.rsaml.model.Port#getTopic()
+	 * @see #getPort()
+	 * @generated
+	 */
+	EAttribute getPort_Topic();
+
+	/**
 	 * Returns the meta object for the '{@link org.rsaml.model.Port#normalizedMessageType() <em>Normalized Message Type</em>}' operation.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -4266,6 +4331,16 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EOperation getPort__NormalizedMessageType();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.Port#topicProblem() <em>Topic Problem</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Topic Problem</em>' operation.
+	 * @see org.rsaml.model.Port#topicProblem()
+	 * @generated
+	 */
+	EOperation getPort__TopicProblem();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.EntryPort <em>Entry Port</em>}'.
@@ -5623,12 +5698,28 @@ public interface RsamlPackage extends EPackage {
 		EAttribute PORT__MESSAGE_TYPE = eINSTANCE.getPort_MessageType();
 
 		/**
+		 * The meta object literal for the '<em><b>Topic</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute PORT__TOPIC = eINSTANCE.getPort_Topic();
+
+		/**
 		 * The meta object literal for the '<em><b>Normalized Message Type</b></em>' operation.
 		 * <!-- begin-user-doc -->
 		 * <!-- end-user-doc -->
 		 * @generated
 		 */
 		EOperation PORT___NORMALIZED_MESSAGE_TYPE = eINSTANCE.getPort__NormalizedMessageType();
+
+		/**
+		 * The meta object literal for the '<em><b>Topic Problem</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation PORT___TOPIC_PROBLEM = eINSTANCE.getPort__TopicProblem();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.EntryPortImpl <em>Entry Port</em>}' class.

@@ -33,6 +33,7 @@ import org.rsaml.model.RsamlPackage;
  *   <li>{@link org.rsaml.model.impl.PortImpl#getModule <em>Module</em>}</li>
  *   <li>{@link org.rsaml.model.impl.PortImpl#getDataType <em>Data Type</em>}</li>
  *   <li>{@link org.rsaml.model.impl.PortImpl#getMessageType <em>Message Type</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.PortImpl#getTopic <em>Topic</em>}</li>
  * </ul>
  *
  * @generated
@@ -77,6 +78,26 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 	 * @ordered
 	 */
 	protected String messageType = MESSAGE_TYPE_EDEFAULT;
+
+	/**
+	 * The default value of the '{@link #getTopic() <em>Topic</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getTopic()
+	 * @generated
+	 * @ordered
+	 */
+	protected static final String TOPIC_EDEFAULT = null;
+
+	/**
+	 * The cached value of the '{@link #getTopic() <em>Topic</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getTopic()
+	 * @generated
+	 * @ordered
+	 */
+	protected String topic = TOPIC_EDEFAULT;
 
 	/**
 	 * <!-- begin-user-doc -->
@@ -192,8 +213,41 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 	 * @generated
 	 */
 	@Override
+	public String getTopic() {
+		return topic;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public void setTopic(String newTopic) {
+		String oldTopic = topic;
+		topic = newTopic;
+		if (eNotificationRequired())
+			eNotify(new ENotificationImpl(this, Notification.SET, RsamlPackage.PORT__TOPIC, oldTopic, topic));
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public String normalizedMessageType() {
 		return org.rsaml.model.support.RsamlText.normalized(getMessageType());
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public String topicProblem() {
+		return org.rsaml.model.support.RsamlTopics.problem(this);
 	}
 
 	/**
@@ -254,6 +308,8 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 				return getDataType();
 			case RsamlPackage.PORT__MESSAGE_TYPE:
 				return getMessageType();
+			case RsamlPackage.PORT__TOPIC:
+				return getTopic();
 		}
 		return super.eGet(featureID, resolve, coreType);
 	}
@@ -274,6 +330,9 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 				return;
 			case RsamlPackage.PORT__MESSAGE_TYPE:
 				setMessageType((String)newValue);
+				return;
+			case RsamlPackage.PORT__TOPIC:
+				setTopic((String)newValue);
 				return;
 		}
 		super.eSet(featureID, newValue);
@@ -296,6 +355,9 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 			case RsamlPackage.PORT__MESSAGE_TYPE:
 				setMessageType(MESSAGE_TYPE_EDEFAULT);
 				return;
+			case RsamlPackage.PORT__TOPIC:
+				setTopic(TOPIC_EDEFAULT);
+				return;
 		}
 		super.eUnset(featureID);
 	}
@@ -314,6 +376,8 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 				return dataType != DATA_TYPE_EDEFAULT;
 			case RsamlPackage.PORT__MESSAGE_TYPE:
 				return MESSAGE_TYPE_EDEFAULT == null ? messageType != null : !MESSAGE_TYPE_EDEFAULT.equals(messageType);
+			case RsamlPackage.PORT__TOPIC:
+				return TOPIC_EDEFAULT == null ? topic != null : !TOPIC_EDEFAULT.equals(topic);
 		}
 		return super.eIsSet(featureID);
 	}
@@ -328,6 +392,8 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 		switch (operationID) {
 			case RsamlPackage.PORT___NORMALIZED_MESSAGE_TYPE:
 				return normalizedMessageType();
+			case RsamlPackage.PORT___TOPIC_PROBLEM:
+				return topicProblem();
 		}
 		return super.eInvoke(operationID, arguments);
 	}
@@ -346,6 +412,8 @@ public abstract class PortImpl extends NamedElementImpl implements Port {
 		result.append(dataType);
 		result.append(", messageType: ");
 		result.append(messageType);
+		result.append(", topic: ");
+		result.append(topic);
 		result.append(')');
 		return result.toString();
 	}

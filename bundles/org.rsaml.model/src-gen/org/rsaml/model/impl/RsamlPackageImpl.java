@@ -944,8 +944,28 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EAttribute getPort_Topic() {
+		return (EAttribute)portEClass.getEStructuralFeatures().get(3);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EOperation getPort__NormalizedMessageType() {
 		return portEClass.getEOperations().get(0);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EOperation getPort__TopicProblem() {
+		return portEClass.getEOperations().get(1);
 	}
 
 	/**
@@ -1852,7 +1872,9 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEReference(portEClass, PORT__MODULE);
 		createEAttribute(portEClass, PORT__DATA_TYPE);
 		createEAttribute(portEClass, PORT__MESSAGE_TYPE);
+		createEAttribute(portEClass, PORT__TOPIC);
 		createEOperation(portEClass, PORT___NORMALIZED_MESSAGE_TYPE);
+		createEOperation(portEClass, PORT___TOPIC_PROBLEM);
 
 		entryPortEClass = createEClass(ENTRY_PORT);
 		createEReference(entryPortEClass, ENTRY_PORT__INCOMING);
@@ -2110,8 +2132,11 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEReference(getPort_Module(), this.getModule(), this.getModule_Ports(), "module", null, 0, 1, Port.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getPort_DataType(), this.getDataType(), "dataType", "numeric", 0, 1, Port.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getPort_MessageType(), ecorePackage.getEString(), "messageType", null, 0, 1, Port.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getPort_Topic(), ecorePackage.getEString(), "topic", null, 0, 1, Port.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
 		initEOperation(getPort__NormalizedMessageType(), ecorePackage.getEString(), "normalizedMessageType", 0, 1, IS_UNIQUE, IS_ORDERED);
+
+		initEOperation(getPort__TopicProblem(), ecorePackage.getEString(), "topicProblem", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		initEClass(entryPortEClass, EntryPort.class, "EntryPort", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getEntryPort_Incoming(), this.getConnection(), this.getConnection_Target(), "incoming", null, 0, -1, EntryPort.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2334,7 +2359,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (portEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA18_structuredPortNamesMessageType"
+			   "constraints", "RSA18_structuredPortNamesMessageType RSA28_topicNameUsable"
 		   });
 		addAnnotation
 		  (connectionEClass,
@@ -2467,7 +2492,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (portEClass,
 		   source,
 		   new String[] {
-			   "RSA18_structuredPortNamesMessageType", "dataType = DataType::structured implies normalizedMessageType() <> null"
+			   "RSA18_structuredPortNamesMessageType", "dataType = DataType::structured implies normalizedMessageType() <> null",
+			   "RSA28_topicNameUsable", "topicProblem() = null"
 		   });
 		addAnnotation
 		  (connectionEClass,

@@ -461,7 +461,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 *     Port returns EntryPort
 	 *
 	 * Constraint:
-	 *     (name=Name? (description=STRING | dataType=DataType | messageType=STRING)*)
+	 *     (name=Name? (description=STRING | dataType=DataType | messageType=STRING | topic=STRING)*)
 	 * </pre>
 	 */
 	protected void sequence_Described_Port(ISerializationContext context, EntryPort semanticObject) {
@@ -475,7 +475,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 *     Port returns OutputPort
 	 *
 	 * Constraint:
-	 *     (name=Name? (description=STRING | dataType=DataType | messageType=STRING)*)
+	 *     (name=Name? (description=STRING | dataType=DataType | messageType=STRING | topic=STRING)*)
 	 * </pre>
 	 */
 	protected void sequence_Described_Port(ISerializationContext context, OutputPort semanticObject) {

@@ -33,7 +33,7 @@ public class RsamlTextFormatter extends AbstractJavaFormatter {
     /** The keywords that begin an attribute; each starts a line of its own. */
     private static final Set<String> LINE_STARTS = Set.of("description", "category", "declaredLayers", "unit", "type",
             "execType", "period", "deadline", "wcet", "level", "maxExecTime", "sensors", "actuators", "synchroType",
-            "schedPolicy", "otherPolicy", "start", "dataType", "messageType", "trigger", "target", "duration", "kind",
+            "schedPolicy", "otherPolicy", "start", "dataType", "messageType", "topic", "trigger", "target", "duration", "kind",
             "priority", "achieves", "actions", "plans", "realisedBy", "issuer", "receiver", "requests", "usedBy", "core",
             "modules", "from", "to", "via", "maxLatency");
 

@@ -167,6 +167,7 @@ public class RsamlTextWriter {
         open(p instanceof EntryPort ? "input" : "output", p);
         attribute(p, Literals.PORT__DATA_TYPE, "dataType", () -> p.getDataType().getLiteral());
         attribute(p, Literals.PORT__MESSAGE_TYPE, "messageType", () -> RsamlTextSyntax.quote(p.getMessageType()));
+        attribute(p, Literals.PORT__TOPIC, "topic", () -> RsamlTextSyntax.quote(p.getTopic()));
         close();
     }
 

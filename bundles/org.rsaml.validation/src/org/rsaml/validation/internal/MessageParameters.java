@@ -92,6 +92,9 @@ public final class MessageParameters {
             Connection c = (Connection) o;
             return Math.abs(c.getSource().getModule().getLayer().getLevel() - c.getTarget().getModule().getLayer().getLevel()) - 1;
         });
+        // topics
+        put("portModule", o -> "'" + name(((Port) o).getModule()) + "'");
+        put("topicProblem", o -> ((Port) o).topicProblem());
         // subsumption
         put("owner", o -> "'" + name(owner((SubsumptionLink) o)) + "'");
         put("ownerLayer", o -> layer(owner((SubsumptionLink) o).getLayer()));

@@ -33,6 +33,7 @@ import org.rsaml.generator.Target;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
+import org.rsaml.model.support.RsamlTopics;
 import org.rsaml.validation.ModelLoader;
 
 /**
@@ -44,8 +45,9 @@ import org.rsaml.validation.ModelLoader;
  * timing analysis's bound of each release (written into it by the generator); where the system
  * grants real-time priorities, each release's worst observed response (release to completion,
  * measured by the node on its clock) is within that bound plus {@link #PLATFORM_NS}, a fixed
- * allowance for what the analysis does not count on ROS 2 (docs/timing.md); and everything exits
- * cleanly on SIGINT. By default a representative set: an example with two processors, a message
+ * allowance for what the analysis does not count on ROS 2 (docs/timing.md); the topics the model
+ * names exist under those names with their publisher and subscribers (one of them renamed through
+ * its launch argument); and everything exits cleanly on SIGINT. By default a representative set: an example with two processors, a message
  * type of its own and connections, a model where a long low-priority job must not delay a short
  * high-priority one on the same core, an inhibitor, and one seeded random task set (two processors
  * of rate-monotonic tasks, as {@link JobTimingTest} runs on the C++ runtime);
@@ -197,7 +199,20 @@ class Ros2LaunchTest {
         Map<String, String> nodes = Ros2Test.nodes(src.resolve(pkg));
         Path log = tmp.resolve("launch.log");
         int domain = 1 + (int) (ProcessHandle.current().pid() % 100);
-        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + pkg + ".launch.py simulated_load:=" + LOAD, install))
+        // The topics the model names, each under its name, but one renamed through its launch argument.
+        Map<String, String> named = new TreeMap<>();
+        StringBuilder remaps = new StringBuilder();
+        for (Connection c : arch.getConnections()) {
+            String topic = RsamlTopics.sharedTopic(c.getSource());
+            if (topic != null && !named.containsKey(topic)) {
+                String as = named.isEmpty() ? "renamed/" + topic.replaceFirst("^/", "") : topic;
+                named.put(topic, as.startsWith("/") ? as : "/" + as);
+                if (!as.equals(topic)) {
+                    remaps.append(' ').append(topic.replaceFirst("^/", "").replace('/', '_')).append("_topic:=").append(as);
+                }
+            }
+        }
+        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + pkg + ".launch.py simulated_load:=" + LOAD + remaps, install))
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         Ros2Jazzy.isolate(pb.environment(), domain);
         Process launch = pb.start();
@@ -215,6 +230,12 @@ class Ros2LaunchTest {
                     fail("not every node of " + nodes.values() + " started within 120 s:\n" + Tools.last(out, 6000));
                 }
                 Thread.sleep(200);
+            }
+            for (Map.Entry<String, String> t : named.entrySet()) {
+                String script = "export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + domain + "; ros2 topic info --no-daemon --spin-time 3 " + t.getValue();
+                String info = Tools.ok(tmp, 60, Ros2Jazzy.bash(script, install).toArray(String[]::new));
+                assertTrue(info.matches("(?s).*Publisher count: [1-9].*Subscription count: [1-9].*"), "the model's topic '" + t.getKey()
+                        + "' is not " + t.getValue() + " with its publisher and subscribers:\n" + info);
             }
             for (long end = System.nanoTime() + RUN_MS * 1_000_000; System.nanoTime() < end; Thread.sleep(250)) {
                 otherRealtime.addAll(otherRealtimeThreads(launch.toHandle()));

@@ -38,6 +38,7 @@ import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
 import org.rsaml.model.Processor;
+import org.rsaml.model.support.RsamlTopics;
 import org.rsaml.validation.ModelLoader;
 
 /**
@@ -81,8 +82,12 @@ class Ros2Test {
                     print('container', e.package, e.executable, repr(e.namespace), e.name)
                     for c in e.composable_node_descriptions:
                         print('component', c.package, c.plugin, repr(c.namespace), c.name, repr(c.parameters))
+                        for r in c.remappings or []:
+                            print('remap', r[0], r[1])
                 else:
                     print('node', e.package, e.executable, repr(e.namespace), e.name, repr(e.parameters))
+                    for r in e.remappings or []:
+                        print('remap', r[0], r[1])
                 if kind != 'DeclareLaunchArgument' and e.other.get('prefix') is not None:
                     print('prefix', e.name, e.other['prefix'])
             """;
@@ -175,10 +180,29 @@ class Ros2Test {
             }
         }
 
-        // Connected ports share one topic, relative so that the launch namespace applies.
+        // Connected ports share one topic: the one the model names for them, else one of the
+        // publisher's path; relative, unless the model names an absolute one, so that the launch
+        // namespace applies. Each named topic has a launch argument that renames it in every node.
         Map<String, String> topics = topics(root);
-        for (String t : topics.values()) {
-            assertFalse(t.startsWith("/"), "absolute topic " + t);
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                for (Port p : m.getPorts()) {
+                    String t = topics.get(key(m) + (p instanceof OutputPort ? "/pub_" : "/sub_") + Names.stem(p.getName()));
+                    if (t == null) {
+                        continue; // a member named apart from its port (hostile names): its connections are checked below
+                    }
+                    String named = RsamlTopics.sharedTopic(p);
+                    assertEquals(named != null && named.startsWith("/"), t.startsWith("/"), "topic " + t + " of " + key(m) + "/" + p.getName());
+                    if (named != null) {
+                        assertEquals(named, t, "the topic " + key(m) + "/" + p.getName() + " names");
+                        String argument = named.replaceFirst("^/", "").replace('/', '_') + "_topic";
+                        for (String started : List.of(composed, processes)) {
+                            assertTrue(started.contains("argument " + argument + " '" + named + "'"), started);
+                            assertTrue(started.contains("remap " + named + " $(" + argument + ")"), started);
+                        }
+                    }
+                }
+            }
         }
         for (Connection c : arch.getConnections()) {
             String pub = topics.get(key(c.getSource().getModule()) + "/pub_" + Names.stem(c.getSource().getName()));

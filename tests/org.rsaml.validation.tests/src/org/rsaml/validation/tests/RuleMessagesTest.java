@@ -82,6 +82,22 @@ class RuleMessagesTest {
     }
 
     @Test
+    void aTopicNameThatRos2CannotUseSaysWhyAndNamesThePortItClashesWith() throws Exception {
+        assertEquals(sorted(List.of(
+                "robot/base/lidar/scan: Output port 'scan' of module 'lidar' names the topic 'scan', but entry port 'laser' of"
+                        + " module 'obstacles', connected to it, names 'laser': connected ports share one topic",
+                "robot/base/obstacles/laser: Entry port 'laser' of module 'obstacles' names the topic 'laser', but output port"
+                        + " 'scan' of module 'lidar', connected to it, names 'scan': connected ports share one topic",
+                "robot/base/odometry/pose: Output port 'pose' of module 'odometry' names the topic 'base pose', which is not a"
+                        + " ROS 2 topic name",
+                "robot/base/logger/diagnostics: Output port 'diagnostics' of module 'logger' names the topic '/diagnostics', as"
+                        + " output port 'status' of module 'monitor' does, which it is not connected to: ROS 2 would connect them",
+                "robot/base/monitor/status: Output port 'status' of module 'monitor' names the topic 'diagnostics', as output"
+                        + " port 'diagnostics' of module 'logger' does, which it is not connected to: ROS 2 would connect them")),
+                sorted(messages("rule-RSA-28-violated.rsaml", "RSA-28")));
+    }
+
+    @Test
     void timesTheGeneratedCodeCannotHoldNameTheLimit() throws Exception {
         List<String> messages = messages("rule-RSA-20-violated.rsaml", "RSA-20");
         String limit = "; times may be at most 1152921504606846976 ns (2^60, about 36.5 years) and a period above 0 at least 1 ns";

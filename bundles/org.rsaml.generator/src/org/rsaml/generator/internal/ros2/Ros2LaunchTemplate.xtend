@@ -54,7 +54,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 		«ENDIF»
 		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true, simulated_load:=0.9 (every
 		# timed job busy-works 90 % of its modeled execution time)«IF hosted», host:=NAME (only the nodes of
-		# the processors on host NAME; main: those without a host; empty, the default: every node)«ENDIF».
+		# the processors on host NAME; main: those without a host; empty, the default: every node)«ENDIF»«IF !rosNames.topicArguments.empty»;
+		# for each topic the model names, «rosNames.topicArguments.values.head»:=NAME and the like (the topic takes that name)«ENDIF».
 		from launch import LaunchDescription
 		from launch.actions import DeclareLaunchArgument
 		«IF hosted»
@@ -76,6 +77,10 @@ class Ros2LaunchTemplate extends Ros2Template {
 		    namespace = LaunchConfiguration('namespace')
 		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time'),
 		                   'rsaml.simulated_load': ParameterValue(LaunchConfiguration('simulated_load'), value_type=float)}]
+		    «IF !rosNames.topicArguments.empty»
+		    	# The topics the model names, each remapped to its argument's value (the same name by default).
+		    	remappings = [«FOR t : rosNames.topicArguments.entrySet SEPARATOR ",\n              "»(«py(t.key)», LaunchConfiguration(«py(t.value)»))«ENDFOR»]
+		    «ENDIF»
 		    return LaunchDescription([
 		        DeclareLaunchArgument('namespace', default_value='',
 		                              description='Namespace of every node and topic (a second robot: another namespace)'),
@@ -87,6 +92,10 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	DeclareLaunchArgument('host', default_value='',
 		        	                      description='Start only the nodes of this host (main: the processors without one); empty: every node'),
 		        «ENDIF»
+		        «FOR t : rosNames.topicArguments.entrySet»
+		        	DeclareLaunchArgument(«py(t.value)», default_value=«py(t.key)»,
+		        	                      description=«py("Topic '" + t.key + "' of the model: the name it takes")»),
+		        «ENDFOR»
 		        «IF composed»
 		        	«FOR c : rosNames.containers»
 		        		«IF c.processor !== null»
@@ -102,20 +111,25 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		    composable_node_descriptions=[
 		        		        «FOR m : c.modules»
 		        		        	ComposableNode(package=«py(pkg)», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
-		        		        	               namespace=namespace, parameters=parameters),
+		        		        	               namespace=namespace, parameters=parameters«remap»),
 		        		        «ENDFOR»
 		        		    ]),
 		        	«ENDFOR»
 		        «ELSE»
 		        	«FOR m : plan.modules»
 		        		Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
-		        		     namespace=namespace, parameters=parameters, output='screen'«IF m.core >= 0»,
+		        		     namespace=namespace, parameters=parameters«remap», output='screen'«IF m.core >= 0»,
 		        		     prefix=«py(taskset(m.core))»«ENDIF»«IF hosted»,
 		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
 		        «ENDIF»
 		    ])
 	'''
+
+	/** Every node takes the remappings of the topics the model names, if it names any. */
+	def private remap() {
+		if (rosNames.topicArguments.empty) "" else ", remappings=remappings"
+	}
 
 	/** Whether some processor is on another host: then the launch files take the argument host. */
 	def private hosted() {

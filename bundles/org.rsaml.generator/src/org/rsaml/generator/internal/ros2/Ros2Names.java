@@ -29,6 +29,7 @@ import org.rsaml.analysis.plan.PlannedPort;
 import org.rsaml.analysis.plan.Release;
 import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.Processor;
+import org.rsaml.model.support.RsamlTopics;
 
 /**
  * What only the ROS 2 target names and decides: node and executable names, the interfaces package
@@ -79,6 +80,7 @@ public final class Ros2Names {
     private final Map<PlannedPort, Boolean> sensorTopics = new IdentityHashMap<>();
     private final Map<PlannedModule, Long> cycleBounds = new IdentityHashMap<>();
     private final List<Container> containers = new ArrayList<>();
+    private final Map<String, String> topicArguments = new LinkedHashMap<>();
 
     /**
      * A component container: the nodes of the modules allocated to one processor, in one process
@@ -164,6 +166,13 @@ public final class Ros2Names {
         }
         Map<PlannedPort, String> topicOfRoot = new HashMap<>();
         Map<PlannedPort, Boolean> sensorOfRoot = new HashMap<>();
+        NameScope arguments = new NameScope(false, "namespace", "use_sim_time", "simulated_load");
+        for (PlannedPort p : all) {
+            String named = RsamlTopics.named(p.port());
+            if (named != null && topicOfRoot.putIfAbsent(find(parent, p), named) == null && !topicArguments.containsKey(named)) {
+                topicArguments.put(named, arguments.allocate(Names.stem(named.replaceFirst("^/", "").replace('/', '_') + "_topic")));
+            }
+        }
         for (PlannedPort p : all) {
             if (!p.entry()) {
                 topicOfRoot.putIfAbsent(find(parent, p), own.get(p));
@@ -240,12 +249,23 @@ public final class Ros2Names {
         return containers;
     }
 
+    /**
+     * The topics the model names (Port.topic), in model order, each with the launch argument that
+     * remaps it ({@code scan} -> {@code scan_topic}).
+     */
+    public Map<String, String> topicArguments() {
+        return topicArguments;
+    }
+
     /** The node's name: unique in the architecture, since all nodes share the launch namespace. */
     public String rosNode(PlannedModule m) {
         return executables.get(m);
     }
 
-    /** The port's topic, relative (resolved in the node's namespace). */
+    /**
+     * The port's topic: the one it or a port connected to it names (Port.topic, RSA-28), else one
+     * named after the publisher's module path; relative ones resolve in the node's namespace.
+     */
     public String topic(PlannedPort p) {
         return topics.get(p);
     }

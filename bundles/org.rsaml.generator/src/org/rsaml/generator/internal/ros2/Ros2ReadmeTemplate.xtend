@@ -35,7 +35,9 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		ros2 launch «pkg» «pkg».launch.py namespace:=robot2 use_sim_time:=true
 		```
 
-		Topics are relative, so `namespace:=...` isolates a second robot. The model's periods, minimum
+		Topics are relative, so `namespace:=...` isolates a second robot.«IF !rosNames.topicArguments.empty» The topics the model names
+		(«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»`«t.key»`«ENDFOR») take another name with a launch argument each
+		(«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»`«t.value»:=NAME`«ENDFOR»), in every node.«ENDIF» The model's periods, minimum
 		intervals and inhibitor/suppressor durations are node parameters (nanoseconds) with the model's
 		values as defaults; timers run on the node's clock, so `use_sim_time` works. Topics written by
 		modules that read sensors use the sensor data QoS (best effort), the others are reliable; both

@@ -49,6 +49,7 @@ public class PortItemProvider extends NamedElementItemProvider {
 
 			addDataTypePropertyDescriptor(object);
 			addMessageTypePropertyDescriptor(object);
+			addTopicPropertyDescriptor(object);
 		}
 		return itemPropertyDescriptors;
 	}
@@ -98,6 +99,28 @@ public class PortItemProvider extends NamedElementItemProvider {
 	}
 
 	/**
+	 * This adds a property descriptor for the Topic feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addTopicPropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_Port_topic_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_Port_topic_feature", "_UI_Port_type"),
+				 RsamlPackage.Literals.PORT__TOPIC,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
+				 null,
+				 null));
+	}
+
+	/**
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
@@ -136,6 +159,7 @@ public class PortItemProvider extends NamedElementItemProvider {
 		switch (notification.getFeatureID(Port.class)) {
 			case RsamlPackage.PORT__DATA_TYPE:
 			case RsamlPackage.PORT__MESSAGE_TYPE:
+			case RsamlPackage.PORT__TOPIC:
 				fireNotifyChanged(new ViewerNotification(notification, notification.getNotifier(), false, true));
 				return;
 		}

@@ -97,6 +97,7 @@ public class RsamlTextParser extends AbstractContentAssistParser {
 			builder.put(grammarAccess.getPortAccess().getGroup_0_1(), "rule__Port__Group_0_1__0");
 			builder.put(grammarAccess.getPortAccess().getGroup_3_1(), "rule__Port__Group_3_1__0");
 			builder.put(grammarAccess.getPortAccess().getGroup_3_2(), "rule__Port__Group_3_2__0");
+			builder.put(grammarAccess.getPortAccess().getGroup_3_3(), "rule__Port__Group_3_3__0");
 			builder.put(grammarAccess.getConnectionAccess().getGroup(), "rule__Connection__Group__0");
 			builder.put(grammarAccess.getInhibitorAccess().getGroup(), "rule__Inhibitor__Group__0");
 			builder.put(grammarAccess.getInhibitorAccess().getGroup_4_1(), "rule__Inhibitor__Group_4_1__0");
@@ -201,6 +202,7 @@ public class RsamlTextParser extends AbstractContentAssistParser {
 			builder.put(grammarAccess.getPortAccess().getNameAssignment_1(), "rule__Port__NameAssignment_1");
 			builder.put(grammarAccess.getPortAccess().getDataTypeAssignment_3_1_1(), "rule__Port__DataTypeAssignment_3_1_1");
 			builder.put(grammarAccess.getPortAccess().getMessageTypeAssignment_3_2_1(), "rule__Port__MessageTypeAssignment_3_2_1");
+			builder.put(grammarAccess.getPortAccess().getTopicAssignment_3_3_1(), "rule__Port__TopicAssignment_3_3_1");
 			builder.put(grammarAccess.getConnectionAccess().getSourceAssignment_2(), "rule__Connection__SourceAssignment_2");
 			builder.put(grammarAccess.getConnectionAccess().getTargetAssignment_4(), "rule__Connection__TargetAssignment_4");
 			builder.put(grammarAccess.getInhibitorAccess().getNameAssignment_2(), "rule__Inhibitor__NameAssignment_2");
