@@ -941,6 +941,10 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cMessageTypeKeyword_3_2_0 = (Keyword)cGroup_3_2.eContents().get(0);
 		private final Assignment cMessageTypeAssignment_3_2_1 = (Assignment)cGroup_3_2.eContents().get(1);
 		private final RuleCall cMessageTypeSTRINGTerminalRuleCall_3_2_1_0 = (RuleCall)cMessageTypeAssignment_3_2_1.eContents().get(0);
+		private final Group cGroup_3_3 = (Group)cAlternatives_3.eContents().get(3);
+		private final Keyword cTopicKeyword_3_3_0 = (Keyword)cGroup_3_3.eContents().get(0);
+		private final Assignment cTopicAssignment_3_3_1 = (Assignment)cGroup_3_3.eContents().get(1);
+		private final RuleCall cTopicSTRINGTerminalRuleCall_3_3_1_0 = (RuleCall)cTopicAssignment_3_3_1.eContents().get(0);
 		private final Keyword cRightCurlyBracketKeyword_4 = (Keyword)cGroup.eContents().get(4);
 		
 		//Port returns rsaml::Port:
@@ -948,6 +952,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    ( Described
 		//    | 'dataType' dataType=DataType
 		//    | 'messageType' messageType=STRING
+		//    | 'topic' topic=STRING
 		//    )* '}';
 		@Override public ParserRule getRule() { return rule; }
 		
@@ -955,6 +960,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'dataType' dataType=DataType
 		//| 'messageType' messageType=STRING
+		//| 'topic' topic=STRING
 		//)* '}'
 		public Group getGroup() { return cGroup; }
 		
@@ -991,6 +997,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'dataType' dataType=DataType
 		//| 'messageType' messageType=STRING
+		//| 'topic' topic=STRING
 		//)*
 		public Alternatives getAlternatives_3() { return cAlternatives_3; }
 		
@@ -1020,6 +1027,18 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		
 		//STRING
 		public RuleCall getMessageTypeSTRINGTerminalRuleCall_3_2_1_0() { return cMessageTypeSTRINGTerminalRuleCall_3_2_1_0; }
+		
+		//'topic' topic=STRING
+		public Group getGroup_3_3() { return cGroup_3_3; }
+		
+		//'topic'
+		public Keyword getTopicKeyword_3_3_0() { return cTopicKeyword_3_3_0; }
+		
+		//topic=STRING
+		public Assignment getTopicAssignment_3_3_1() { return cTopicAssignment_3_3_1; }
+		
+		//STRING
+		public RuleCall getTopicSTRINGTerminalRuleCall_3_3_1_0() { return cTopicSTRINGTerminalRuleCall_3_3_1_0; }
 		
 		//'}'
 		public Keyword getRightCurlyBracketKeyword_4() { return cRightCurlyBracketKeyword_4; }
@@ -2788,59 +2807,60 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cStartKeyword_39 = (Keyword)cAlternatives.eContents().get(39);
 		private final Keyword cDataTypeKeyword_40 = (Keyword)cAlternatives.eContents().get(40);
 		private final Keyword cMessageTypeKeyword_41 = (Keyword)cAlternatives.eContents().get(41);
-		private final Keyword cTriggerKeyword_42 = (Keyword)cAlternatives.eContents().get(42);
-		private final Keyword cTargetKeyword_43 = (Keyword)cAlternatives.eContents().get(43);
-		private final Keyword cDurationKeyword_44 = (Keyword)cAlternatives.eContents().get(44);
-		private final Keyword cKindKeyword_45 = (Keyword)cAlternatives.eContents().get(45);
-		private final Keyword cPriorityKeyword_46 = (Keyword)cAlternatives.eContents().get(46);
-		private final Keyword cAchievesKeyword_47 = (Keyword)cAlternatives.eContents().get(47);
-		private final Keyword cActionsKeyword_48 = (Keyword)cAlternatives.eContents().get(48);
-		private final Keyword cPlansKeyword_49 = (Keyword)cAlternatives.eContents().get(49);
-		private final Keyword cRealisedByKeyword_50 = (Keyword)cAlternatives.eContents().get(50);
-		private final Keyword cIssuerKeyword_51 = (Keyword)cAlternatives.eContents().get(51);
-		private final Keyword cReceiverKeyword_52 = (Keyword)cAlternatives.eContents().get(52);
-		private final Keyword cRequestsKeyword_53 = (Keyword)cAlternatives.eContents().get(53);
-		private final Keyword cUsedByKeyword_54 = (Keyword)cAlternatives.eContents().get(54);
-		private final Keyword cCoreKeyword_55 = (Keyword)cAlternatives.eContents().get(55);
-		private final Keyword cModulesKeyword_56 = (Keyword)cAlternatives.eContents().get(56);
-		private final Keyword cFromKeyword_57 = (Keyword)cAlternatives.eContents().get(57);
-		private final Keyword cToKeyword_58 = (Keyword)cAlternatives.eContents().get(58);
-		private final Keyword cViaKeyword_59 = (Keyword)cAlternatives.eContents().get(59);
-		private final Keyword cMaxLatencyKeyword_60 = (Keyword)cAlternatives.eContents().get(60);
-		private final Keyword cHostKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
-		private final Keyword cLinkLatencyKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
-		private final Keyword cCentralizedKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
-		private final Keyword cHierarchicalKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
-		private final Keyword cBehavioralKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
-		private final Keyword cHybridKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
-		private final Keyword cOtherKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
-		private final Keyword cSimpleKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
-		private final Keyword cRealTimeKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
-		private final Keyword cPeriodicKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
-		private final Keyword cSporadicKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
-		private final Keyword cAperiodicKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
-		private final Keyword cNsKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
-		private final Keyword cUsKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
-		private final Keyword cMsKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
-		private final Keyword cSKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
-		private final Keyword cSynchronousKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
-		private final Keyword cAsynchronousKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
-		private final Keyword cFIFOKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
-		private final Keyword cSJFKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
-		private final Keyword cRRKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
-		private final Keyword cRMKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
-		private final Keyword cDMKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
-		private final Keyword cEDFKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
-		private final Keyword cLLFKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
-		private final Keyword cOTHERKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
-		private final Keyword cNumericKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
-		private final Keyword cAlphanumericKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
-		private final Keyword cBooleanKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
-		private final Keyword cStructuredKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
-		private final Keyword cReactionTimeKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
-		private final Keyword cDataAgeKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
-		private final Keyword cNaNKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
-		private final Keyword cInfinityKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
+		private final Keyword cTopicKeyword_42 = (Keyword)cAlternatives.eContents().get(42);
+		private final Keyword cTriggerKeyword_43 = (Keyword)cAlternatives.eContents().get(43);
+		private final Keyword cTargetKeyword_44 = (Keyword)cAlternatives.eContents().get(44);
+		private final Keyword cDurationKeyword_45 = (Keyword)cAlternatives.eContents().get(45);
+		private final Keyword cKindKeyword_46 = (Keyword)cAlternatives.eContents().get(46);
+		private final Keyword cPriorityKeyword_47 = (Keyword)cAlternatives.eContents().get(47);
+		private final Keyword cAchievesKeyword_48 = (Keyword)cAlternatives.eContents().get(48);
+		private final Keyword cActionsKeyword_49 = (Keyword)cAlternatives.eContents().get(49);
+		private final Keyword cPlansKeyword_50 = (Keyword)cAlternatives.eContents().get(50);
+		private final Keyword cRealisedByKeyword_51 = (Keyword)cAlternatives.eContents().get(51);
+		private final Keyword cIssuerKeyword_52 = (Keyword)cAlternatives.eContents().get(52);
+		private final Keyword cReceiverKeyword_53 = (Keyword)cAlternatives.eContents().get(53);
+		private final Keyword cRequestsKeyword_54 = (Keyword)cAlternatives.eContents().get(54);
+		private final Keyword cUsedByKeyword_55 = (Keyword)cAlternatives.eContents().get(55);
+		private final Keyword cCoreKeyword_56 = (Keyword)cAlternatives.eContents().get(56);
+		private final Keyword cModulesKeyword_57 = (Keyword)cAlternatives.eContents().get(57);
+		private final Keyword cFromKeyword_58 = (Keyword)cAlternatives.eContents().get(58);
+		private final Keyword cToKeyword_59 = (Keyword)cAlternatives.eContents().get(59);
+		private final Keyword cViaKeyword_60 = (Keyword)cAlternatives.eContents().get(60);
+		private final Keyword cMaxLatencyKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
+		private final Keyword cHostKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
+		private final Keyword cLinkLatencyKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
+		private final Keyword cCentralizedKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
+		private final Keyword cHierarchicalKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
+		private final Keyword cBehavioralKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
+		private final Keyword cHybridKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
+		private final Keyword cOtherKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
+		private final Keyword cSimpleKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
+		private final Keyword cRealTimeKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
+		private final Keyword cPeriodicKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
+		private final Keyword cSporadicKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
+		private final Keyword cAperiodicKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
+		private final Keyword cNsKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
+		private final Keyword cUsKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
+		private final Keyword cMsKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
+		private final Keyword cSKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
+		private final Keyword cSynchronousKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
+		private final Keyword cAsynchronousKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
+		private final Keyword cFIFOKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
+		private final Keyword cSJFKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
+		private final Keyword cRRKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
+		private final Keyword cRMKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
+		private final Keyword cDMKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
+		private final Keyword cEDFKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
+		private final Keyword cLLFKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
+		private final Keyword cOTHERKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
+		private final Keyword cNumericKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
+		private final Keyword cAlphanumericKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
+		private final Keyword cBooleanKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
+		private final Keyword cStructuredKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
+		private final Keyword cReactionTimeKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
+		private final Keyword cDataAgeKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
+		private final Keyword cNaNKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
+		private final Keyword cInfinityKeyword_95 = (Keyword)cAlternatives.eContents().get(95);
 		
 		//Keyword:
 		//    'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2848,7 +2868,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | 'order' | 'database' | 'knowledge' | 'processor' | 'latency'
 		//    | 'description' | 'category' | 'declaredLayers' | 'unit' | 'type' | 'execType' | 'period' | 'deadline' | 'wcet'
 		//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
-		//    | 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
+		//    | 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
 		//    | 'maxLatency' | 'host' | 'linkLatency'
 		//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
@@ -2862,7 +2882,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'order' | 'database' | 'knowledge' | 'processor' | 'latency'
 		//| 'description' | 'category' | 'declaredLayers' | 'unit' | 'type' | 'execType' | 'period' | 'deadline' | 'wcet'
 		//| 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
-		//| 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
+		//| 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//| 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
 		//| 'maxLatency' | 'host' | 'linkLatency'
 		//| 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
@@ -2997,164 +3017,167 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//'messageType'
 		public Keyword getMessageTypeKeyword_41() { return cMessageTypeKeyword_41; }
 		
+		//'topic'
+		public Keyword getTopicKeyword_42() { return cTopicKeyword_42; }
+		
 		//'trigger'
-		public Keyword getTriggerKeyword_42() { return cTriggerKeyword_42; }
+		public Keyword getTriggerKeyword_43() { return cTriggerKeyword_43; }
 		
 		//'target'
-		public Keyword getTargetKeyword_43() { return cTargetKeyword_43; }
+		public Keyword getTargetKeyword_44() { return cTargetKeyword_44; }
 		
 		//'duration'
-		public Keyword getDurationKeyword_44() { return cDurationKeyword_44; }
+		public Keyword getDurationKeyword_45() { return cDurationKeyword_45; }
 		
 		//'kind'
-		public Keyword getKindKeyword_45() { return cKindKeyword_45; }
+		public Keyword getKindKeyword_46() { return cKindKeyword_46; }
 		
 		//'priority'
-		public Keyword getPriorityKeyword_46() { return cPriorityKeyword_46; }
+		public Keyword getPriorityKeyword_47() { return cPriorityKeyword_47; }
 		
 		//'achieves'
-		public Keyword getAchievesKeyword_47() { return cAchievesKeyword_47; }
+		public Keyword getAchievesKeyword_48() { return cAchievesKeyword_48; }
 		
 		//'actions'
-		public Keyword getActionsKeyword_48() { return cActionsKeyword_48; }
+		public Keyword getActionsKeyword_49() { return cActionsKeyword_49; }
 		
 		//'plans'
-		public Keyword getPlansKeyword_49() { return cPlansKeyword_49; }
+		public Keyword getPlansKeyword_50() { return cPlansKeyword_50; }
 		
 		//'realisedBy'
-		public Keyword getRealisedByKeyword_50() { return cRealisedByKeyword_50; }
+		public Keyword getRealisedByKeyword_51() { return cRealisedByKeyword_51; }
 		
 		//'issuer'
-		public Keyword getIssuerKeyword_51() { return cIssuerKeyword_51; }
+		public Keyword getIssuerKeyword_52() { return cIssuerKeyword_52; }
 		
 		//'receiver'
-		public Keyword getReceiverKeyword_52() { return cReceiverKeyword_52; }
+		public Keyword getReceiverKeyword_53() { return cReceiverKeyword_53; }
 		
 		//'requests'
-		public Keyword getRequestsKeyword_53() { return cRequestsKeyword_53; }
+		public Keyword getRequestsKeyword_54() { return cRequestsKeyword_54; }
 		
 		//'usedBy'
-		public Keyword getUsedByKeyword_54() { return cUsedByKeyword_54; }
+		public Keyword getUsedByKeyword_55() { return cUsedByKeyword_55; }
 		
 		//'core'
-		public Keyword getCoreKeyword_55() { return cCoreKeyword_55; }
+		public Keyword getCoreKeyword_56() { return cCoreKeyword_56; }
 		
 		//'modules'
-		public Keyword getModulesKeyword_56() { return cModulesKeyword_56; }
+		public Keyword getModulesKeyword_57() { return cModulesKeyword_57; }
 		
 		//'from'
-		public Keyword getFromKeyword_57() { return cFromKeyword_57; }
+		public Keyword getFromKeyword_58() { return cFromKeyword_58; }
 		
 		//'to'
-		public Keyword getToKeyword_58() { return cToKeyword_58; }
+		public Keyword getToKeyword_59() { return cToKeyword_59; }
 		
 		//'via'
-		public Keyword getViaKeyword_59() { return cViaKeyword_59; }
+		public Keyword getViaKeyword_60() { return cViaKeyword_60; }
 		
 		//'maxLatency'
-		public Keyword getMaxLatencyKeyword_60() { return cMaxLatencyKeyword_60; }
+		public Keyword getMaxLatencyKeyword_61() { return cMaxLatencyKeyword_61; }
 		
 		//'host'
-		public Keyword getHostKeyword_61() { return cHostKeyword_61; }
+		public Keyword getHostKeyword_62() { return cHostKeyword_62; }
 		
 		//'linkLatency'
-		public Keyword getLinkLatencyKeyword_62() { return cLinkLatencyKeyword_62; }
+		public Keyword getLinkLatencyKeyword_63() { return cLinkLatencyKeyword_63; }
 		
 		//'centralized'
-		public Keyword getCentralizedKeyword_63() { return cCentralizedKeyword_63; }
+		public Keyword getCentralizedKeyword_64() { return cCentralizedKeyword_64; }
 		
 		//'hierarchical'
-		public Keyword getHierarchicalKeyword_64() { return cHierarchicalKeyword_64; }
+		public Keyword getHierarchicalKeyword_65() { return cHierarchicalKeyword_65; }
 		
 		//'behavioral'
-		public Keyword getBehavioralKeyword_65() { return cBehavioralKeyword_65; }
+		public Keyword getBehavioralKeyword_66() { return cBehavioralKeyword_66; }
 		
 		//'hybrid'
-		public Keyword getHybridKeyword_66() { return cHybridKeyword_66; }
+		public Keyword getHybridKeyword_67() { return cHybridKeyword_67; }
 		
 		//'other'
-		public Keyword getOtherKeyword_67() { return cOtherKeyword_67; }
+		public Keyword getOtherKeyword_68() { return cOtherKeyword_68; }
 		
 		//'simple'
-		public Keyword getSimpleKeyword_68() { return cSimpleKeyword_68; }
+		public Keyword getSimpleKeyword_69() { return cSimpleKeyword_69; }
 		
 		//'realTime'
-		public Keyword getRealTimeKeyword_69() { return cRealTimeKeyword_69; }
+		public Keyword getRealTimeKeyword_70() { return cRealTimeKeyword_70; }
 		
 		//'periodic'
-		public Keyword getPeriodicKeyword_70() { return cPeriodicKeyword_70; }
+		public Keyword getPeriodicKeyword_71() { return cPeriodicKeyword_71; }
 		
 		//'sporadic'
-		public Keyword getSporadicKeyword_71() { return cSporadicKeyword_71; }
+		public Keyword getSporadicKeyword_72() { return cSporadicKeyword_72; }
 		
 		//'aperiodic'
-		public Keyword getAperiodicKeyword_72() { return cAperiodicKeyword_72; }
+		public Keyword getAperiodicKeyword_73() { return cAperiodicKeyword_73; }
 		
 		//'ns'
-		public Keyword getNsKeyword_73() { return cNsKeyword_73; }
+		public Keyword getNsKeyword_74() { return cNsKeyword_74; }
 		
 		//'us'
-		public Keyword getUsKeyword_74() { return cUsKeyword_74; }
+		public Keyword getUsKeyword_75() { return cUsKeyword_75; }
 		
 		//'ms'
-		public Keyword getMsKeyword_75() { return cMsKeyword_75; }
+		public Keyword getMsKeyword_76() { return cMsKeyword_76; }
 		
 		//'s'
-		public Keyword getSKeyword_76() { return cSKeyword_76; }
+		public Keyword getSKeyword_77() { return cSKeyword_77; }
 		
 		//'synchronous'
-		public Keyword getSynchronousKeyword_77() { return cSynchronousKeyword_77; }
+		public Keyword getSynchronousKeyword_78() { return cSynchronousKeyword_78; }
 		
 		//'asynchronous'
-		public Keyword getAsynchronousKeyword_78() { return cAsynchronousKeyword_78; }
+		public Keyword getAsynchronousKeyword_79() { return cAsynchronousKeyword_79; }
 		
 		//'FIFO'
-		public Keyword getFIFOKeyword_79() { return cFIFOKeyword_79; }
+		public Keyword getFIFOKeyword_80() { return cFIFOKeyword_80; }
 		
 		//'SJF'
-		public Keyword getSJFKeyword_80() { return cSJFKeyword_80; }
+		public Keyword getSJFKeyword_81() { return cSJFKeyword_81; }
 		
 		//'RR'
-		public Keyword getRRKeyword_81() { return cRRKeyword_81; }
+		public Keyword getRRKeyword_82() { return cRRKeyword_82; }
 		
 		//'RM'
-		public Keyword getRMKeyword_82() { return cRMKeyword_82; }
+		public Keyword getRMKeyword_83() { return cRMKeyword_83; }
 		
 		//'DM'
-		public Keyword getDMKeyword_83() { return cDMKeyword_83; }
+		public Keyword getDMKeyword_84() { return cDMKeyword_84; }
 		
 		//'EDF'
-		public Keyword getEDFKeyword_84() { return cEDFKeyword_84; }
+		public Keyword getEDFKeyword_85() { return cEDFKeyword_85; }
 		
 		//'LLF'
-		public Keyword getLLFKeyword_85() { return cLLFKeyword_85; }
+		public Keyword getLLFKeyword_86() { return cLLFKeyword_86; }
 		
 		//'OTHER'
-		public Keyword getOTHERKeyword_86() { return cOTHERKeyword_86; }
+		public Keyword getOTHERKeyword_87() { return cOTHERKeyword_87; }
 		
 		//'numeric'
-		public Keyword getNumericKeyword_87() { return cNumericKeyword_87; }
+		public Keyword getNumericKeyword_88() { return cNumericKeyword_88; }
 		
 		//'alphanumeric'
-		public Keyword getAlphanumericKeyword_88() { return cAlphanumericKeyword_88; }
+		public Keyword getAlphanumericKeyword_89() { return cAlphanumericKeyword_89; }
 		
 		//'boolean'
-		public Keyword getBooleanKeyword_89() { return cBooleanKeyword_89; }
+		public Keyword getBooleanKeyword_90() { return cBooleanKeyword_90; }
 		
 		//'structured'
-		public Keyword getStructuredKeyword_90() { return cStructuredKeyword_90; }
+		public Keyword getStructuredKeyword_91() { return cStructuredKeyword_91; }
 		
 		//'reactionTime'
-		public Keyword getReactionTimeKeyword_91() { return cReactionTimeKeyword_91; }
+		public Keyword getReactionTimeKeyword_92() { return cReactionTimeKeyword_92; }
 		
 		//'dataAge'
-		public Keyword getDataAgeKeyword_92() { return cDataAgeKeyword_92; }
+		public Keyword getDataAgeKeyword_93() { return cDataAgeKeyword_93; }
 		
 		//'NaN'
-		public Keyword getNaNKeyword_93() { return cNaNKeyword_93; }
+		public Keyword getNaNKeyword_94() { return cNaNKeyword_94; }
 		
 		//'Infinity'
-		public Keyword getInfinityKeyword_94() { return cInfinityKeyword_94; }
+		public Keyword getInfinityKeyword_95() { return cInfinityKeyword_95; }
 	}
 	public class RealElements extends AbstractParserRuleElementFinder {
 		private final ParserRule rule = (ParserRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.Real");
@@ -3752,6 +3775,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    ( Described
 	//    | 'dataType' dataType=DataType
 	//    | 'messageType' messageType=STRING
+	//    | 'topic' topic=STRING
 	//    )* '}';
 	public PortElements getPortAccess() {
 		return pPort;
@@ -4011,7 +4035,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | 'order' | 'database' | 'knowledge' | 'processor' | 'latency'
 	//    | 'description' | 'category' | 'declaredLayers' | 'unit' | 'type' | 'execType' | 'period' | 'deadline' | 'wcet'
 	//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
-	//    | 'dataType' | 'messageType' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
+	//    | 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 	//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
 	//    | 'maxLatency' | 'host' | 'linkLatency'
 	//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'

@@ -1545,10 +1545,35 @@ rulePort returns [EObject current=null]
 					)
 				)
 			)
+			    |
+			(
+				otherlv_11='topic'
+				{
+					newLeafNode(otherlv_11, grammarAccess.getPortAccess().getTopicKeyword_3_3_0());
+				}
+				(
+					(
+						lv_topic_12_0=RULE_STRING
+						{
+							newLeafNode(lv_topic_12_0, grammarAccess.getPortAccess().getTopicSTRINGTerminalRuleCall_3_3_1_0());
+						}
+						{
+							if ($current==null) {
+								$current = createModelElement(grammarAccess.getPortRule());
+							}
+							setWithLastConsumed(
+								$current,
+								"topic",
+								lv_topic_12_0,
+								"org.rsaml.text.RsamlText.STRING");
+						}
+					)
+				)
+			)
 		)*
-		otherlv_11='}'
+		otherlv_13='}'
 		{
-			newLeafNode(otherlv_11, grammarAccess.getPortAccess().getRightCurlyBracketKeyword_4());
+			newLeafNode(otherlv_13, grammarAccess.getPortAccess().getRightCurlyBracketKeyword_4());
 		}
 	)
 ;
@@ -4178,322 +4203,328 @@ ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()
 			newLeafNode(kw, grammarAccess.getKeywordAccess().getMessageTypeKeyword_41());
 		}
 		    |
+		kw='topic'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getTopicKeyword_42());
+		}
+		    |
 		kw='trigger'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getTriggerKeyword_42());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getTriggerKeyword_43());
 		}
 		    |
 		kw='target'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getTargetKeyword_43());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getTargetKeyword_44());
 		}
 		    |
 		kw='duration'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDurationKeyword_44());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDurationKeyword_45());
 		}
 		    |
 		kw='kind'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getKindKeyword_45());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getKindKeyword_46());
 		}
 		    |
 		kw='priority'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPriorityKeyword_46());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPriorityKeyword_47());
 		}
 		    |
 		kw='achieves'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAchievesKeyword_47());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAchievesKeyword_48());
 		}
 		    |
 		kw='actions'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getActionsKeyword_48());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getActionsKeyword_49());
 		}
 		    |
 		kw='plans'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlansKeyword_49());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlansKeyword_50());
 		}
 		    |
 		kw='realisedBy'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealisedByKeyword_50());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealisedByKeyword_51());
 		}
 		    |
 		kw='issuer'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getIssuerKeyword_51());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getIssuerKeyword_52());
 		}
 		    |
 		kw='receiver'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getReceiverKeyword_52());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getReceiverKeyword_53());
 		}
 		    |
 		kw='requests'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRequestsKeyword_53());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRequestsKeyword_54());
 		}
 		    |
 		kw='usedBy'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsedByKeyword_54());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsedByKeyword_55());
 		}
 		    |
 		kw='core'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getCoreKeyword_55());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getCoreKeyword_56());
 		}
 		    |
 		kw='modules'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getModulesKeyword_56());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getModulesKeyword_57());
 		}
 		    |
 		kw='from'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getFromKeyword_57());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getFromKeyword_58());
 		}
 		    |
 		kw='to'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_58());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_59());
 		}
 		    |
 		kw='via'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_59());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_60());
 		}
 		    |
 		kw='maxLatency'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_61());
 		}
 		    |
 		kw='host'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_61());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_62());
 		}
 		    |
 		kw='linkLatency'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_63());
 		}
 		    |
 		kw='centralized'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_63());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_64());
 		}
 		    |
 		kw='hierarchical'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_64());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_65());
 		}
 		    |
 		kw='behavioral'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_65());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_66());
 		}
 		    |
 		kw='hybrid'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_66());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_67());
 		}
 		    |
 		kw='other'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_67());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_68());
 		}
 		    |
 		kw='simple'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_68());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_69());
 		}
 		    |
 		kw='realTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_69());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_70());
 		}
 		    |
 		kw='periodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_70());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_71());
 		}
 		    |
 		kw='sporadic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_71());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_72());
 		}
 		    |
 		kw='aperiodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_72());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_73());
 		}
 		    |
 		kw='ns'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_73());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_74());
 		}
 		    |
 		kw='us'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_74());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_75());
 		}
 		    |
 		kw='ms'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_75());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_76());
 		}
 		    |
 		kw='s'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_76());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_77());
 		}
 		    |
 		kw='synchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_77());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_78());
 		}
 		    |
 		kw='asynchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_78());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_79());
 		}
 		    |
 		kw='FIFO'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_79());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_80());
 		}
 		    |
 		kw='SJF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_80());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_81());
 		}
 		    |
 		kw='RR'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_81());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_82());
 		}
 		    |
 		kw='RM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_82());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_83());
 		}
 		    |
 		kw='DM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_83());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_84());
 		}
 		    |
 		kw='EDF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_84());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_85());
 		}
 		    |
 		kw='LLF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_85());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_86());
 		}
 		    |
 		kw='OTHER'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_86());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_87());
 		}
 		    |
 		kw='numeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_87());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_88());
 		}
 		    |
 		kw='alphanumeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_88());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_89());
 		}
 		    |
 		kw='boolean'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_89());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_90());
 		}
 		    |
 		kw='structured'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_90());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_91());
 		}
 		    |
 		kw='reactionTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_91());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_92());
 		}
 		    |
 		kw='dataAge'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_92());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_93());
 		}
 		    |
 		kw='NaN'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_93());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_94());
 		}
 		    |
 		kw='Infinity'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_94());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_95());
 		}
 	)
 ;

@@ -22,7 +22,7 @@ import java.util.ArrayList;
 @SuppressWarnings("all")
 public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final String[] tokenNames = new String[] {
-        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'host'", "'linkLatency'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
+        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'topic'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'host'", "'linkLatency'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
     };
     public static final int T__50=50;
     public static final int T__59=59;
@@ -117,6 +117,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final int T__110=110;
     public static final int T__82=82;
     public static final int T__83=83;
+    public static final int T__112=112;
     public static final int RULE_WS=9;
     public static final int RULE_ANY_OTHER=10;
     public static final int RULE_NUMBER=6;
@@ -277,7 +278,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt1=2;
             int LA1_0 = input.LA(1);
 
-            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=41)||(LA1_0>=43 && LA1_0<=77)||(LA1_0>=79 && LA1_0<=110)) ) {
+            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=42)||(LA1_0>=44 && LA1_0<=78)||(LA1_0>=80 && LA1_0<=111)) ) {
                 alt1=1;
             }
             switch (alt1) {
@@ -344,47 +345,47 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt2=4;
                     }
                     break;
-                case 41:
+                case 42:
                     {
                     alt2=5;
                     }
                     break;
-                case 48:
+                case 49:
                     {
                     alt2=6;
                     }
                     break;
-                case 50:
+                case 51:
                     {
                     alt2=7;
                     }
                     break;
-                case 51:
+                case 52:
                     {
                     alt2=8;
                     }
                     break;
-                case 58:
+                case 59:
                     {
                     alt2=9;
                     }
                     break;
-                case 61:
+                case 62:
                     {
                     alt2=10;
                     }
                     break;
-                case 65:
+                case 66:
                     {
                     alt2=11;
                     }
                     break;
-                case 68:
+                case 69:
                     {
                     alt2=12;
                     }
                     break;
-                case 73:
+                case 74:
                     {
                     alt2=13;
                     }
@@ -1594,7 +1595,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt4=2;
             int LA4_0 = input.LA(1);
 
-            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=41)||(LA4_0>=43 && LA4_0<=77)||(LA4_0>=79 && LA4_0<=110)) ) {
+            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=42)||(LA4_0>=44 && LA4_0<=78)||(LA4_0>=80 && LA4_0<=111)) ) {
                 alt4=1;
             }
             switch (alt4) {
@@ -1998,7 +1999,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt6=2;
             int LA6_0 = input.LA(1);
 
-            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=41)||(LA6_0>=43 && LA6_0<=77)||(LA6_0>=79 && LA6_0<=110)) ) {
+            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=42)||(LA6_0>=44 && LA6_0<=78)||(LA6_0>=80 && LA6_0<=111)) ) {
                 alt6=1;
             }
             switch (alt6) {
@@ -2081,12 +2082,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt9=6;
                     }
                     break;
-                case 43:
+                case 44:
                     {
                     alt9=7;
                     }
                     break;
-                case 47:
+                case 48:
                     {
                     alt9=8;
                     }
@@ -2607,7 +2608,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt10=2;
             int LA10_0 = input.LA(1);
 
-            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=41)||(LA10_0>=43 && LA10_0<=77)||(LA10_0>=79 && LA10_0<=110)) ) {
+            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=42)||(LA10_0>=44 && LA10_0<=78)||(LA10_0>=80 && LA10_0<=111)) ) {
                 alt10=1;
             }
             switch (alt10) {
@@ -3086,7 +3087,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt13=2;
             int LA13_0 = input.LA(1);
 
-            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=41)||(LA13_0>=43 && LA13_0<=77)||(LA13_0>=79 && LA13_0<=110)) ) {
+            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=42)||(LA13_0>=44 && LA13_0<=78)||(LA13_0>=80 && LA13_0<=111)) ) {
                 alt13=1;
             }
             switch (alt13) {
@@ -3346,7 +3347,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "rulePort"
-    // InternalRsamlText.g:1425:1: rulePort returns [EObject current=null] : ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:1425:1: rulePort returns [EObject current=null] : ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' ) ;
     public final EObject rulePort() throws RecognitionException {
         EObject current = null;
 
@@ -3357,6 +3358,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         Token otherlv_9=null;
         Token lv_messageType_10_0=null;
         Token otherlv_11=null;
+        Token lv_topic_12_0=null;
+        Token otherlv_13=null;
         AntlrDatatypeRuleToken lv_name_4_0 = null;
 
         EObject this_Described_6 = null;
@@ -3368,11 +3371,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1431:2: ( ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:1432:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:1431:2: ( ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1432:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1432:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:1433:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) )* otherlv_11= '}'
+            // InternalRsamlText.g:1432:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' )
+            // InternalRsamlText.g:1433:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}'
             {
             // InternalRsamlText.g:1433:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) )
             int alt15=2;
@@ -3452,7 +3455,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt16=2;
             int LA16_0 = input.LA(1);
 
-            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=41)||(LA16_0>=43 && LA16_0<=77)||(LA16_0>=79 && LA16_0<=110)) ) {
+            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=42)||(LA16_0>=44 && LA16_0<=78)||(LA16_0>=80 && LA16_0<=111)) ) {
                 alt16=1;
             }
             switch (alt16) {
@@ -3494,10 +3497,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_5, grammarAccess.getPortAccess().getLeftCurlyBracketKeyword_2());
             		
-            // InternalRsamlText.g:1485:3: (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) )*
+            // InternalRsamlText.g:1485:3: (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )*
             loop17:
             do {
-                int alt17=4;
+                int alt17=5;
                 switch ( input.LA(1) ) {
                 case 16:
                     {
@@ -3512,6 +3515,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 case 40:
                     {
                     alt17=3;
+                    }
+                    break;
+                case 41:
+                    {
+                    alt17=4;
                     }
                     break;
 
@@ -3628,15 +3636,57 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
+            	case 4 :
+            	    // InternalRsamlText.g:1549:4: (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) )
+            	    {
+            	    // InternalRsamlText.g:1549:4: (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1550:5: otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) )
+            	    {
+            	    otherlv_11=(Token)match(input,41,FOLLOW_8); 
+
+            	    					newLeafNode(otherlv_11, grammarAccess.getPortAccess().getTopicKeyword_3_3_0());
+            	    				
+            	    // InternalRsamlText.g:1554:5: ( (lv_topic_12_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1555:6: (lv_topic_12_0= RULE_STRING )
+            	    {
+            	    // InternalRsamlText.g:1555:6: (lv_topic_12_0= RULE_STRING )
+            	    // InternalRsamlText.g:1556:7: lv_topic_12_0= RULE_STRING
+            	    {
+            	    lv_topic_12_0=(Token)match(input,RULE_STRING,FOLLOW_21); 
+
+            	    							newLeafNode(lv_topic_12_0, grammarAccess.getPortAccess().getTopicSTRINGTerminalRuleCall_3_3_1_0());
+            	    						
+
+            	    							if (current==null) {
+            	    								current = createModelElement(grammarAccess.getPortRule());
+            	    							}
+            	    							setWithLastConsumed(
+            	    								current,
+            	    								"topic",
+            	    								lv_topic_12_0,
+            	    								"org.rsaml.text.RsamlText.STRING");
+            	    						
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+            	    break;
 
             	default :
             	    break loop17;
                 }
             } while (true);
 
-            otherlv_11=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,15,FOLLOW_2); 
 
-            			newLeafNode(otherlv_11, grammarAccess.getPortAccess().getRightCurlyBracketKeyword_4());
+            			newLeafNode(otherlv_13, grammarAccess.getPortAccess().getRightCurlyBracketKeyword_4());
             		
 
             }
@@ -3661,7 +3711,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleConnection"
-    // InternalRsamlText.g:1557:1: entryRuleConnection returns [EObject current=null] : iv_ruleConnection= ruleConnection EOF ;
+    // InternalRsamlText.g:1582:1: entryRuleConnection returns [EObject current=null] : iv_ruleConnection= ruleConnection EOF ;
     public final EObject entryRuleConnection() throws RecognitionException {
         EObject current = null;
 
@@ -3669,8 +3719,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1557:51: (iv_ruleConnection= ruleConnection EOF )
-            // InternalRsamlText.g:1558:2: iv_ruleConnection= ruleConnection EOF
+            // InternalRsamlText.g:1582:51: (iv_ruleConnection= ruleConnection EOF )
+            // InternalRsamlText.g:1583:2: iv_ruleConnection= ruleConnection EOF
             {
              newCompositeNode(grammarAccess.getConnectionRule()); 
             pushFollow(FOLLOW_1);
@@ -3697,7 +3747,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleConnection"
-    // InternalRsamlText.g:1564:1: ruleConnection returns [EObject current=null] : ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) ;
+    // InternalRsamlText.g:1589:1: ruleConnection returns [EObject current=null] : ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) ;
     public final EObject ruleConnection() throws RecognitionException {
         EObject current = null;
 
@@ -3708,14 +3758,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1570:2: ( ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) )
-            // InternalRsamlText.g:1571:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
+            // InternalRsamlText.g:1595:2: ( ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) )
+            // InternalRsamlText.g:1596:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
             {
-            // InternalRsamlText.g:1571:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
-            // InternalRsamlText.g:1572:3: () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )?
+            // InternalRsamlText.g:1596:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
+            // InternalRsamlText.g:1597:3: () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )?
             {
-            // InternalRsamlText.g:1572:3: ()
-            // InternalRsamlText.g:1573:4: 
+            // InternalRsamlText.g:1597:3: ()
+            // InternalRsamlText.g:1598:4: 
             {
 
             				current = forceCreateModelElement(
@@ -3725,11 +3775,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,41,FOLLOW_23); 
+            otherlv_1=(Token)match(input,42,FOLLOW_23); 
 
             			newLeafNode(otherlv_1, grammarAccess.getConnectionAccess().getConnectKeyword_1());
             		
-            // InternalRsamlText.g:1583:3: ( ( ruleQualifiedName ) )?
+            // InternalRsamlText.g:1608:3: ( ( ruleQualifiedName ) )?
             int alt18=2;
             int LA18_0 = input.LA(1);
 
@@ -3738,10 +3788,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt18) {
                 case 1 :
-                    // InternalRsamlText.g:1584:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1609:4: ( ruleQualifiedName )
                     {
-                    // InternalRsamlText.g:1584:4: ( ruleQualifiedName )
-                    // InternalRsamlText.g:1585:5: ruleQualifiedName
+                    // InternalRsamlText.g:1609:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1610:5: ruleQualifiedName
                     {
 
                     					if (current==null) {
@@ -3768,11 +3818,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,42,FOLLOW_25); 
+            otherlv_3=(Token)match(input,43,FOLLOW_25); 
 
             			newLeafNode(otherlv_3, grammarAccess.getConnectionAccess().getHyphenMinusGreaterThanSignKeyword_3());
             		
-            // InternalRsamlText.g:1603:3: ( ( ruleQualifiedName ) )?
+            // InternalRsamlText.g:1628:3: ( ( ruleQualifiedName ) )?
             int alt19=2;
             int LA19_0 = input.LA(1);
 
@@ -3781,10 +3831,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt19) {
                 case 1 :
-                    // InternalRsamlText.g:1604:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1629:4: ( ruleQualifiedName )
                     {
-                    // InternalRsamlText.g:1604:4: ( ruleQualifiedName )
-                    // InternalRsamlText.g:1605:5: ruleQualifiedName
+                    // InternalRsamlText.g:1629:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1630:5: ruleQualifiedName
                     {
 
                     					if (current==null) {
@@ -3834,7 +3884,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleInhibitor"
-    // InternalRsamlText.g:1623:1: entryRuleInhibitor returns [EObject current=null] : iv_ruleInhibitor= ruleInhibitor EOF ;
+    // InternalRsamlText.g:1648:1: entryRuleInhibitor returns [EObject current=null] : iv_ruleInhibitor= ruleInhibitor EOF ;
     public final EObject entryRuleInhibitor() throws RecognitionException {
         EObject current = null;
 
@@ -3842,8 +3892,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1623:50: (iv_ruleInhibitor= ruleInhibitor EOF )
-            // InternalRsamlText.g:1624:2: iv_ruleInhibitor= ruleInhibitor EOF
+            // InternalRsamlText.g:1648:50: (iv_ruleInhibitor= ruleInhibitor EOF )
+            // InternalRsamlText.g:1649:2: iv_ruleInhibitor= ruleInhibitor EOF
             {
              newCompositeNode(grammarAccess.getInhibitorRule()); 
             pushFollow(FOLLOW_1);
@@ -3870,7 +3920,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleInhibitor"
-    // InternalRsamlText.g:1630:1: ruleInhibitor returns [EObject current=null] : ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:1655:1: ruleInhibitor returns [EObject current=null] : ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleInhibitor() throws RecognitionException {
         EObject current = null;
 
@@ -3895,14 +3945,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1636:2: ( ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1637:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1661:2: ( ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1662:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1637:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:1638:3: () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:1662:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1663:3: () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1638:3: ()
-            // InternalRsamlText.g:1639:4: 
+            // InternalRsamlText.g:1663:3: ()
+            // InternalRsamlText.g:1664:4: 
             {
 
             				current = forceCreateModelElement(
@@ -3912,23 +3962,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,43,FOLLOW_3); 
+            otherlv_1=(Token)match(input,44,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getInhibitorAccess().getInhibitorKeyword_1());
             		
-            // InternalRsamlText.g:1649:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:1674:3: ( (lv_name_2_0= ruleName ) )?
             int alt20=2;
             int LA20_0 = input.LA(1);
 
-            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=41)||(LA20_0>=43 && LA20_0<=77)||(LA20_0>=79 && LA20_0<=110)) ) {
+            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=42)||(LA20_0>=44 && LA20_0<=78)||(LA20_0>=80 && LA20_0<=111)) ) {
                 alt20=1;
             }
             switch (alt20) {
                 case 1 :
-                    // InternalRsamlText.g:1650:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1675:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:1650:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:1651:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:1675:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1676:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getInhibitorAccess().getNameNameParserRuleCall_2_0());
@@ -3962,7 +4012,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getInhibitorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:1672:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:1697:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop21:
             do {
                 int alt21=6;
@@ -3972,17 +4022,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt21=1;
                     }
                     break;
-                case 44:
+                case 45:
                     {
                     alt21=2;
                     }
                     break;
-                case 45:
+                case 46:
                     {
                     alt21=3;
                     }
                     break;
-                case 46:
+                case 47:
                     {
                     alt21=4;
                     }
@@ -3997,7 +4047,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt21) {
             	case 1 :
-            	    // InternalRsamlText.g:1673:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1698:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -4018,20 +4068,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1685:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1710:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1685:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1686:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1710:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1711:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,44,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,45,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getInhibitorAccess().getTriggerKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:1690:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1691:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1715:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1716:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1691:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1692:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1716:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1717:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4062,20 +4112,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1708:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1733:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1708:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1709:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1733:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1734:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,45,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,46,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getInhibitorAccess().getTargetKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:1713:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1714:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1738:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1739:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1714:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1715:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1739:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1740:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4106,20 +4156,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:1731:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1756:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:1731:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:1732:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1756:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1757:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_9=(Token)match(input,46,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,47,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getInhibitorAccess().getDurationKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:1736:5: ( (lv_duration_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:1737:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1761:5: ( (lv_duration_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:1762:6: (lv_duration_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:1737:6: (lv_duration_10_0= ruleReal )
-            	    // InternalRsamlText.g:1738:7: lv_duration_10_0= ruleReal
+            	    // InternalRsamlText.g:1762:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1763:7: lv_duration_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getInhibitorAccess().getDurationRealParserRuleCall_4_3_1_0());
@@ -4146,11 +4196,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:1755:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:1756:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1780:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1781:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:1756:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:1757:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:1781:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1782:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getInhibitorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
@@ -4184,7 +4234,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:1776:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:1801:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -4237,7 +4287,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleSuppressor"
-    // InternalRsamlText.g:1796:1: entryRuleSuppressor returns [EObject current=null] : iv_ruleSuppressor= ruleSuppressor EOF ;
+    // InternalRsamlText.g:1821:1: entryRuleSuppressor returns [EObject current=null] : iv_ruleSuppressor= ruleSuppressor EOF ;
     public final EObject entryRuleSuppressor() throws RecognitionException {
         EObject current = null;
 
@@ -4245,8 +4295,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1796:51: (iv_ruleSuppressor= ruleSuppressor EOF )
-            // InternalRsamlText.g:1797:2: iv_ruleSuppressor= ruleSuppressor EOF
+            // InternalRsamlText.g:1821:51: (iv_ruleSuppressor= ruleSuppressor EOF )
+            // InternalRsamlText.g:1822:2: iv_ruleSuppressor= ruleSuppressor EOF
             {
              newCompositeNode(grammarAccess.getSuppressorRule()); 
             pushFollow(FOLLOW_1);
@@ -4273,7 +4323,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSuppressor"
-    // InternalRsamlText.g:1803:1: ruleSuppressor returns [EObject current=null] : ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:1828:1: ruleSuppressor returns [EObject current=null] : ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleSuppressor() throws RecognitionException {
         EObject current = null;
 
@@ -4298,14 +4348,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1809:2: ( ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1810:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1834:2: ( ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1835:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1810:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:1811:3: () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:1835:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1836:3: () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1811:3: ()
-            // InternalRsamlText.g:1812:4: 
+            // InternalRsamlText.g:1836:3: ()
+            // InternalRsamlText.g:1837:4: 
             {
 
             				current = forceCreateModelElement(
@@ -4315,23 +4365,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,47,FOLLOW_3); 
+            otherlv_1=(Token)match(input,48,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getSuppressorAccess().getSuppressorKeyword_1());
             		
-            // InternalRsamlText.g:1822:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:1847:3: ( (lv_name_2_0= ruleName ) )?
             int alt22=2;
             int LA22_0 = input.LA(1);
 
-            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=41)||(LA22_0>=43 && LA22_0<=77)||(LA22_0>=79 && LA22_0<=110)) ) {
+            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=42)||(LA22_0>=44 && LA22_0<=78)||(LA22_0>=80 && LA22_0<=111)) ) {
                 alt22=1;
             }
             switch (alt22) {
                 case 1 :
-                    // InternalRsamlText.g:1823:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1848:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:1823:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:1824:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:1848:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1849:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getSuppressorAccess().getNameNameParserRuleCall_2_0());
@@ -4365,7 +4415,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getSuppressorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:1845:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:1870:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop23:
             do {
                 int alt23=6;
@@ -4375,17 +4425,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt23=1;
                     }
                     break;
-                case 44:
+                case 45:
                     {
                     alt23=2;
                     }
                     break;
-                case 45:
+                case 46:
                     {
                     alt23=3;
                     }
                     break;
-                case 46:
+                case 47:
                     {
                     alt23=4;
                     }
@@ -4400,7 +4450,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt23) {
             	case 1 :
-            	    // InternalRsamlText.g:1846:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1871:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -4421,20 +4471,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1858:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1883:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1858:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1859:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1883:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1884:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,44,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,45,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getSuppressorAccess().getTriggerKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:1863:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1864:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1888:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1889:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1864:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1865:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1889:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1890:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4465,20 +4515,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1881:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1906:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1881:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1882:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1906:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1907:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,45,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,46,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getSuppressorAccess().getTargetKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:1886:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1887:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1911:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1912:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1887:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1888:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1912:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1913:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4509,20 +4559,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:1904:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1929:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:1904:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:1905:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1929:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1930:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_9=(Token)match(input,46,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,47,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getSuppressorAccess().getDurationKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:1909:5: ( (lv_duration_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:1910:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1934:5: ( (lv_duration_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:1935:6: (lv_duration_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:1910:6: (lv_duration_10_0= ruleReal )
-            	    // InternalRsamlText.g:1911:7: lv_duration_10_0= ruleReal
+            	    // InternalRsamlText.g:1935:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1936:7: lv_duration_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getSuppressorAccess().getDurationRealParserRuleCall_4_3_1_0());
@@ -4549,11 +4599,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:1928:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:1929:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1953:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1954:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:1929:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:1930:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:1954:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1955:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getSuppressorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
@@ -4587,7 +4637,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:1949:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:1974:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -4640,7 +4690,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleSensor"
-    // InternalRsamlText.g:1969:1: entryRuleSensor returns [EObject current=null] : iv_ruleSensor= ruleSensor EOF ;
+    // InternalRsamlText.g:1994:1: entryRuleSensor returns [EObject current=null] : iv_ruleSensor= ruleSensor EOF ;
     public final EObject entryRuleSensor() throws RecognitionException {
         EObject current = null;
 
@@ -4648,8 +4698,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1969:47: (iv_ruleSensor= ruleSensor EOF )
-            // InternalRsamlText.g:1970:2: iv_ruleSensor= ruleSensor EOF
+            // InternalRsamlText.g:1994:47: (iv_ruleSensor= ruleSensor EOF )
+            // InternalRsamlText.g:1995:2: iv_ruleSensor= ruleSensor EOF
             {
              newCompositeNode(grammarAccess.getSensorRule()); 
             pushFollow(FOLLOW_1);
@@ -4676,7 +4726,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSensor"
-    // InternalRsamlText.g:1976:1: ruleSensor returns [EObject current=null] : ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:2001:1: ruleSensor returns [EObject current=null] : ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleSensor() throws RecognitionException {
         EObject current = null;
 
@@ -4704,14 +4754,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1982:2: ( ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1983:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2007:2: ( ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:2008:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1983:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:1984:3: () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:2008:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2009:3: () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1984:3: ()
-            // InternalRsamlText.g:1985:4: 
+            // InternalRsamlText.g:2009:3: ()
+            // InternalRsamlText.g:2010:4: 
             {
 
             				current = forceCreateModelElement(
@@ -4721,23 +4771,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,48,FOLLOW_3); 
+            otherlv_1=(Token)match(input,49,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getSensorAccess().getSensorKeyword_1());
             		
-            // InternalRsamlText.g:1995:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2020:3: ( (lv_name_2_0= ruleName ) )?
             int alt24=2;
             int LA24_0 = input.LA(1);
 
-            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=41)||(LA24_0>=43 && LA24_0<=77)||(LA24_0>=79 && LA24_0<=110)) ) {
+            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=42)||(LA24_0>=44 && LA24_0<=78)||(LA24_0>=80 && LA24_0<=111)) ) {
                 alt24=1;
             }
             switch (alt24) {
                 case 1 :
-                    // InternalRsamlText.g:1996:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2021:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:1996:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:1997:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2021:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2022:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getSensorAccess().getNameNameParserRuleCall_2_0());
@@ -4771,7 +4821,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getSensorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2018:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:2043:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop25:
             do {
                 int alt25=6;
@@ -4781,7 +4831,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt25=1;
                     }
                     break;
-                case 49:
+                case 50:
                     {
                     alt25=2;
                     }
@@ -4806,7 +4856,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt25) {
             	case 1 :
-            	    // InternalRsamlText.g:2019:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2044:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -4827,20 +4877,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2031:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2056:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:2031:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:2032:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2056:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2057:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
             	    {
-            	    otherlv_5=(Token)match(input,49,FOLLOW_8); 
+            	    otherlv_5=(Token)match(input,50,FOLLOW_8); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getSensorAccess().getKindKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2036:5: ( (lv_kind_6_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:2037:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2061:5: ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2062:6: (lv_kind_6_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:2037:6: (lv_kind_6_0= RULE_STRING )
-            	    // InternalRsamlText.g:2038:7: lv_kind_6_0= RULE_STRING
+            	    // InternalRsamlText.g:2062:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2063:7: lv_kind_6_0= RULE_STRING
             	    {
             	    lv_kind_6_0=(Token)match(input,RULE_STRING,FOLLOW_27); 
 
@@ -4869,20 +4919,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2056:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2081:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:2056:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:2057:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2081:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2082:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
             	    {
             	    otherlv_7=(Token)match(input,39,FOLLOW_22); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getSensorAccess().getDataTypeKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2061:5: ( (lv_dataType_8_0= ruleDataType ) )
-            	    // InternalRsamlText.g:2062:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2086:5: ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2087:6: (lv_dataType_8_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:2062:6: (lv_dataType_8_0= ruleDataType )
-            	    // InternalRsamlText.g:2063:7: lv_dataType_8_0= ruleDataType
+            	    // InternalRsamlText.g:2087:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2088:7: lv_dataType_8_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getSensorAccess().getDataTypeDataTypeEnumRuleCall_4_2_1_0());
@@ -4916,20 +4966,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:2082:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2107:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:2082:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:2083:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2107:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2108:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
             	    otherlv_9=(Token)match(input,20,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getSensorAccess().getPeriodKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:2087:5: ( (lv_period_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:2088:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2112:5: ( (lv_period_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:2113:6: (lv_period_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:2088:6: (lv_period_10_0= ruleReal )
-            	    // InternalRsamlText.g:2089:7: lv_period_10_0= ruleReal
+            	    // InternalRsamlText.g:2113:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2114:7: lv_period_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getSensorAccess().getPeriodRealParserRuleCall_4_3_1_0());
@@ -4956,11 +5006,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2106:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:2107:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2131:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2132:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:2107:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:2108:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:2132:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2133:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getSensorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
@@ -4994,7 +5044,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:2127:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:2152:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -5047,7 +5097,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleActuator"
-    // InternalRsamlText.g:2147:1: entryRuleActuator returns [EObject current=null] : iv_ruleActuator= ruleActuator EOF ;
+    // InternalRsamlText.g:2172:1: entryRuleActuator returns [EObject current=null] : iv_ruleActuator= ruleActuator EOF ;
     public final EObject entryRuleActuator() throws RecognitionException {
         EObject current = null;
 
@@ -5055,8 +5105,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2147:49: (iv_ruleActuator= ruleActuator EOF )
-            // InternalRsamlText.g:2148:2: iv_ruleActuator= ruleActuator EOF
+            // InternalRsamlText.g:2172:49: (iv_ruleActuator= ruleActuator EOF )
+            // InternalRsamlText.g:2173:2: iv_ruleActuator= ruleActuator EOF
             {
              newCompositeNode(grammarAccess.getActuatorRule()); 
             pushFollow(FOLLOW_1);
@@ -5083,7 +5133,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleActuator"
-    // InternalRsamlText.g:2154:1: ruleActuator returns [EObject current=null] : ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:2179:1: ruleActuator returns [EObject current=null] : ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleActuator() throws RecognitionException {
         EObject current = null;
 
@@ -5111,14 +5161,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2160:2: ( ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:2161:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2185:2: ( ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:2186:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:2161:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:2162:3: () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:2186:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2187:3: () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:2162:3: ()
-            // InternalRsamlText.g:2163:4: 
+            // InternalRsamlText.g:2187:3: ()
+            // InternalRsamlText.g:2188:4: 
             {
 
             				current = forceCreateModelElement(
@@ -5128,23 +5178,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,50,FOLLOW_3); 
+            otherlv_1=(Token)match(input,51,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getActuatorAccess().getActuatorKeyword_1());
             		
-            // InternalRsamlText.g:2173:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2198:3: ( (lv_name_2_0= ruleName ) )?
             int alt26=2;
             int LA26_0 = input.LA(1);
 
-            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=41)||(LA26_0>=43 && LA26_0<=77)||(LA26_0>=79 && LA26_0<=110)) ) {
+            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=42)||(LA26_0>=44 && LA26_0<=78)||(LA26_0>=80 && LA26_0<=111)) ) {
                 alt26=1;
             }
             switch (alt26) {
                 case 1 :
-                    // InternalRsamlText.g:2174:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2199:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2174:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2175:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2199:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2200:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getActuatorAccess().getNameNameParserRuleCall_2_0());
@@ -5178,7 +5228,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getActuatorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2196:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:2221:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop27:
             do {
                 int alt27=6;
@@ -5188,7 +5238,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt27=1;
                     }
                     break;
-                case 49:
+                case 50:
                     {
                     alt27=2;
                     }
@@ -5213,7 +5263,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt27) {
             	case 1 :
-            	    // InternalRsamlText.g:2197:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2222:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -5234,20 +5284,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2209:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2234:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:2209:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:2210:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2234:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2235:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
             	    {
-            	    otherlv_5=(Token)match(input,49,FOLLOW_8); 
+            	    otherlv_5=(Token)match(input,50,FOLLOW_8); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getActuatorAccess().getKindKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2214:5: ( (lv_kind_6_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:2215:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2239:5: ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2240:6: (lv_kind_6_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:2215:6: (lv_kind_6_0= RULE_STRING )
-            	    // InternalRsamlText.g:2216:7: lv_kind_6_0= RULE_STRING
+            	    // InternalRsamlText.g:2240:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2241:7: lv_kind_6_0= RULE_STRING
             	    {
             	    lv_kind_6_0=(Token)match(input,RULE_STRING,FOLLOW_27); 
 
@@ -5276,20 +5326,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2234:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2259:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:2234:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:2235:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2259:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2260:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
             	    {
             	    otherlv_7=(Token)match(input,39,FOLLOW_22); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getActuatorAccess().getDataTypeKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2239:5: ( (lv_dataType_8_0= ruleDataType ) )
-            	    // InternalRsamlText.g:2240:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2264:5: ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2265:6: (lv_dataType_8_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:2240:6: (lv_dataType_8_0= ruleDataType )
-            	    // InternalRsamlText.g:2241:7: lv_dataType_8_0= ruleDataType
+            	    // InternalRsamlText.g:2265:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2266:7: lv_dataType_8_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getActuatorAccess().getDataTypeDataTypeEnumRuleCall_4_2_1_0());
@@ -5323,20 +5373,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:2260:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2285:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:2260:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:2261:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2285:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2286:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
             	    otherlv_9=(Token)match(input,20,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getActuatorAccess().getPeriodKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:2265:5: ( (lv_period_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:2266:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2290:5: ( (lv_period_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:2291:6: (lv_period_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:2266:6: (lv_period_10_0= ruleReal )
-            	    // InternalRsamlText.g:2267:7: lv_period_10_0= ruleReal
+            	    // InternalRsamlText.g:2291:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2292:7: lv_period_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getActuatorAccess().getPeriodRealParserRuleCall_4_3_1_0());
@@ -5363,11 +5413,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2284:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:2285:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2309:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2310:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:2285:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:2286:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:2310:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2311:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getActuatorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
@@ -5401,7 +5451,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:2305:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:2330:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -5454,7 +5504,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleMission"
-    // InternalRsamlText.g:2325:1: entryRuleMission returns [EObject current=null] : iv_ruleMission= ruleMission EOF ;
+    // InternalRsamlText.g:2350:1: entryRuleMission returns [EObject current=null] : iv_ruleMission= ruleMission EOF ;
     public final EObject entryRuleMission() throws RecognitionException {
         EObject current = null;
 
@@ -5462,8 +5512,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2325:48: (iv_ruleMission= ruleMission EOF )
-            // InternalRsamlText.g:2326:2: iv_ruleMission= ruleMission EOF
+            // InternalRsamlText.g:2350:48: (iv_ruleMission= ruleMission EOF )
+            // InternalRsamlText.g:2351:2: iv_ruleMission= ruleMission EOF
             {
              newCompositeNode(grammarAccess.getMissionRule()); 
             pushFollow(FOLLOW_1);
@@ -5490,7 +5540,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleMission"
-    // InternalRsamlText.g:2332:1: ruleMission returns [EObject current=null] : ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) ;
+    // InternalRsamlText.g:2357:1: ruleMission returns [EObject current=null] : ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) ;
     public final EObject ruleMission() throws RecognitionException {
         EObject current = null;
 
@@ -5510,14 +5560,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2338:2: ( ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) )
-            // InternalRsamlText.g:2339:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
+            // InternalRsamlText.g:2363:2: ( ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) )
+            // InternalRsamlText.g:2364:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
             {
-            // InternalRsamlText.g:2339:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
-            // InternalRsamlText.g:2340:3: () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}'
+            // InternalRsamlText.g:2364:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
+            // InternalRsamlText.g:2365:3: () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}'
             {
-            // InternalRsamlText.g:2340:3: ()
-            // InternalRsamlText.g:2341:4: 
+            // InternalRsamlText.g:2365:3: ()
+            // InternalRsamlText.g:2366:4: 
             {
 
             				current = forceCreateModelElement(
@@ -5527,23 +5577,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,51,FOLLOW_3); 
+            otherlv_1=(Token)match(input,52,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getMissionAccess().getMissionKeyword_1());
             		
-            // InternalRsamlText.g:2351:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2376:3: ( (lv_name_2_0= ruleName ) )?
             int alt28=2;
             int LA28_0 = input.LA(1);
 
-            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=41)||(LA28_0>=43 && LA28_0<=77)||(LA28_0>=79 && LA28_0<=110)) ) {
+            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=42)||(LA28_0>=44 && LA28_0<=78)||(LA28_0>=80 && LA28_0<=111)) ) {
                 alt28=1;
             }
             switch (alt28) {
                 case 1 :
-                    // InternalRsamlText.g:2352:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2377:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2352:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2353:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2377:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2378:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getMissionAccess().getNameNameParserRuleCall_2_0());
@@ -5577,7 +5627,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getMissionAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2374:3: (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )*
+            // InternalRsamlText.g:2399:3: (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )*
             loop29:
             do {
                 int alt29=4;
@@ -5587,12 +5637,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt29=1;
                     }
                     break;
-                case 52:
+                case 53:
                     {
                     alt29=2;
                     }
                     break;
-                case 54:
+                case 55:
                     {
                     alt29=3;
                     }
@@ -5602,7 +5652,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt29) {
             	case 1 :
-            	    // InternalRsamlText.g:2375:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2400:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -5623,13 +5673,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2387:4: ( (lv_goals_5_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2412:4: ( (lv_goals_5_0= ruleGoal ) )
             	    {
-            	    // InternalRsamlText.g:2387:4: ( (lv_goals_5_0= ruleGoal ) )
-            	    // InternalRsamlText.g:2388:5: (lv_goals_5_0= ruleGoal )
+            	    // InternalRsamlText.g:2412:4: ( (lv_goals_5_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2413:5: (lv_goals_5_0= ruleGoal )
             	    {
-            	    // InternalRsamlText.g:2388:5: (lv_goals_5_0= ruleGoal )
-            	    // InternalRsamlText.g:2389:6: lv_goals_5_0= ruleGoal
+            	    // InternalRsamlText.g:2413:5: (lv_goals_5_0= ruleGoal )
+            	    // InternalRsamlText.g:2414:6: lv_goals_5_0= ruleGoal
             	    {
 
             	    						newCompositeNode(grammarAccess.getMissionAccess().getGoalsGoalParserRuleCall_4_1_0());
@@ -5660,13 +5710,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2407:4: ( (lv_plans_6_0= rulePlan ) )
+            	    // InternalRsamlText.g:2432:4: ( (lv_plans_6_0= rulePlan ) )
             	    {
-            	    // InternalRsamlText.g:2407:4: ( (lv_plans_6_0= rulePlan ) )
-            	    // InternalRsamlText.g:2408:5: (lv_plans_6_0= rulePlan )
+            	    // InternalRsamlText.g:2432:4: ( (lv_plans_6_0= rulePlan ) )
+            	    // InternalRsamlText.g:2433:5: (lv_plans_6_0= rulePlan )
             	    {
-            	    // InternalRsamlText.g:2408:5: (lv_plans_6_0= rulePlan )
-            	    // InternalRsamlText.g:2409:6: lv_plans_6_0= rulePlan
+            	    // InternalRsamlText.g:2433:5: (lv_plans_6_0= rulePlan )
+            	    // InternalRsamlText.g:2434:6: lv_plans_6_0= rulePlan
             	    {
 
             	    						newCompositeNode(grammarAccess.getMissionAccess().getPlansPlanParserRuleCall_4_2_0());
@@ -5729,7 +5779,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleGoal"
-    // InternalRsamlText.g:2435:1: entryRuleGoal returns [EObject current=null] : iv_ruleGoal= ruleGoal EOF ;
+    // InternalRsamlText.g:2460:1: entryRuleGoal returns [EObject current=null] : iv_ruleGoal= ruleGoal EOF ;
     public final EObject entryRuleGoal() throws RecognitionException {
         EObject current = null;
 
@@ -5737,8 +5787,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2435:45: (iv_ruleGoal= ruleGoal EOF )
-            // InternalRsamlText.g:2436:2: iv_ruleGoal= ruleGoal EOF
+            // InternalRsamlText.g:2460:45: (iv_ruleGoal= ruleGoal EOF )
+            // InternalRsamlText.g:2461:2: iv_ruleGoal= ruleGoal EOF
             {
              newCompositeNode(grammarAccess.getGoalRule()); 
             pushFollow(FOLLOW_1);
@@ -5765,7 +5815,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleGoal"
-    // InternalRsamlText.g:2442:1: ruleGoal returns [EObject current=null] : ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) ;
+    // InternalRsamlText.g:2467:1: ruleGoal returns [EObject current=null] : ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) ;
     public final EObject ruleGoal() throws RecognitionException {
         EObject current = null;
 
@@ -5786,14 +5836,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2448:2: ( ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) )
-            // InternalRsamlText.g:2449:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
+            // InternalRsamlText.g:2473:2: ( ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) )
+            // InternalRsamlText.g:2474:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
             {
-            // InternalRsamlText.g:2449:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
-            // InternalRsamlText.g:2450:3: () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}'
+            // InternalRsamlText.g:2474:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
+            // InternalRsamlText.g:2475:3: () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}'
             {
-            // InternalRsamlText.g:2450:3: ()
-            // InternalRsamlText.g:2451:4: 
+            // InternalRsamlText.g:2475:3: ()
+            // InternalRsamlText.g:2476:4: 
             {
 
             				current = forceCreateModelElement(
@@ -5803,23 +5853,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,52,FOLLOW_3); 
+            otherlv_1=(Token)match(input,53,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getGoalAccess().getGoalKeyword_1());
             		
-            // InternalRsamlText.g:2461:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2486:3: ( (lv_name_2_0= ruleName ) )?
             int alt30=2;
             int LA30_0 = input.LA(1);
 
-            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=41)||(LA30_0>=43 && LA30_0<=77)||(LA30_0>=79 && LA30_0<=110)) ) {
+            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=42)||(LA30_0>=44 && LA30_0<=78)||(LA30_0>=80 && LA30_0<=111)) ) {
                 alt30=1;
             }
             switch (alt30) {
                 case 1 :
-                    // InternalRsamlText.g:2462:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2487:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2462:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2463:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2487:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2488:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getGoalAccess().getNameNameParserRuleCall_2_0());
@@ -5853,7 +5903,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getGoalAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2484:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )*
+            // InternalRsamlText.g:2509:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )*
             loop31:
             do {
                 int alt31=4;
@@ -5863,12 +5913,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt31=1;
                     }
                     break;
-                case 53:
+                case 54:
                     {
                     alt31=2;
                     }
                     break;
-                case 52:
+                case 53:
                     {
                     alt31=3;
                     }
@@ -5878,7 +5928,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt31) {
             	case 1 :
-            	    // InternalRsamlText.g:2485:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2510:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -5899,20 +5949,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2497:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:2522:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
             	    {
-            	    // InternalRsamlText.g:2497:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
-            	    // InternalRsamlText.g:2498:5: otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) )
+            	    // InternalRsamlText.g:2522:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:2523:5: otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) )
             	    {
-            	    otherlv_5=(Token)match(input,53,FOLLOW_7); 
+            	    otherlv_5=(Token)match(input,54,FOLLOW_7); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getGoalAccess().getPriorityKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2502:5: ( (lv_priority_6_0= ruleInteger ) )
-            	    // InternalRsamlText.g:2503:6: (lv_priority_6_0= ruleInteger )
+            	    // InternalRsamlText.g:2527:5: ( (lv_priority_6_0= ruleInteger ) )
+            	    // InternalRsamlText.g:2528:6: (lv_priority_6_0= ruleInteger )
             	    {
-            	    // InternalRsamlText.g:2503:6: (lv_priority_6_0= ruleInteger )
-            	    // InternalRsamlText.g:2504:7: lv_priority_6_0= ruleInteger
+            	    // InternalRsamlText.g:2528:6: (lv_priority_6_0= ruleInteger )
+            	    // InternalRsamlText.g:2529:7: lv_priority_6_0= ruleInteger
             	    {
 
             	    							newCompositeNode(grammarAccess.getGoalAccess().getPriorityIntegerParserRuleCall_4_1_1_0());
@@ -5946,13 +5996,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2523:4: ( (lv_subGoals_7_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2548:4: ( (lv_subGoals_7_0= ruleGoal ) )
             	    {
-            	    // InternalRsamlText.g:2523:4: ( (lv_subGoals_7_0= ruleGoal ) )
-            	    // InternalRsamlText.g:2524:5: (lv_subGoals_7_0= ruleGoal )
+            	    // InternalRsamlText.g:2548:4: ( (lv_subGoals_7_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2549:5: (lv_subGoals_7_0= ruleGoal )
             	    {
-            	    // InternalRsamlText.g:2524:5: (lv_subGoals_7_0= ruleGoal )
-            	    // InternalRsamlText.g:2525:6: lv_subGoals_7_0= ruleGoal
+            	    // InternalRsamlText.g:2549:5: (lv_subGoals_7_0= ruleGoal )
+            	    // InternalRsamlText.g:2550:6: lv_subGoals_7_0= ruleGoal
             	    {
 
             	    						newCompositeNode(grammarAccess.getGoalAccess().getSubGoalsGoalParserRuleCall_4_2_0());
@@ -6015,7 +6065,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRulePlan"
-    // InternalRsamlText.g:2551:1: entryRulePlan returns [EObject current=null] : iv_rulePlan= rulePlan EOF ;
+    // InternalRsamlText.g:2576:1: entryRulePlan returns [EObject current=null] : iv_rulePlan= rulePlan EOF ;
     public final EObject entryRulePlan() throws RecognitionException {
         EObject current = null;
 
@@ -6023,8 +6073,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2551:45: (iv_rulePlan= rulePlan EOF )
-            // InternalRsamlText.g:2552:2: iv_rulePlan= rulePlan EOF
+            // InternalRsamlText.g:2576:45: (iv_rulePlan= rulePlan EOF )
+            // InternalRsamlText.g:2577:2: iv_rulePlan= rulePlan EOF
             {
              newCompositeNode(grammarAccess.getPlanRule()); 
             pushFollow(FOLLOW_1);
@@ -6051,7 +6101,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "rulePlan"
-    // InternalRsamlText.g:2558:1: rulePlan returns [EObject current=null] : ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) ;
+    // InternalRsamlText.g:2583:1: rulePlan returns [EObject current=null] : ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) ;
     public final EObject rulePlan() throws RecognitionException {
         EObject current = null;
 
@@ -6071,14 +6121,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2564:2: ( ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) )
-            // InternalRsamlText.g:2565:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2589:2: ( ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) )
+            // InternalRsamlText.g:2590:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
             {
-            // InternalRsamlText.g:2565:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
-            // InternalRsamlText.g:2566:3: () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}'
+            // InternalRsamlText.g:2590:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2591:3: () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}'
             {
-            // InternalRsamlText.g:2566:3: ()
-            // InternalRsamlText.g:2567:4: 
+            // InternalRsamlText.g:2591:3: ()
+            // InternalRsamlText.g:2592:4: 
             {
 
             				current = forceCreateModelElement(
@@ -6088,23 +6138,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,54,FOLLOW_3); 
+            otherlv_1=(Token)match(input,55,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getPlanAccess().getPlanKeyword_1());
             		
-            // InternalRsamlText.g:2577:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2602:3: ( (lv_name_2_0= ruleName ) )?
             int alt32=2;
             int LA32_0 = input.LA(1);
 
-            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=41)||(LA32_0>=43 && LA32_0<=77)||(LA32_0>=79 && LA32_0<=110)) ) {
+            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=42)||(LA32_0>=44 && LA32_0<=78)||(LA32_0>=80 && LA32_0<=111)) ) {
                 alt32=1;
             }
             switch (alt32) {
                 case 1 :
-                    // InternalRsamlText.g:2578:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2603:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2578:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2579:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2603:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2604:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getPlanAccess().getNameNameParserRuleCall_2_0());
@@ -6138,7 +6188,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getPlanAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2600:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )*
+            // InternalRsamlText.g:2625:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )*
             loop34:
             do {
                 int alt34=4;
@@ -6148,12 +6198,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt34=1;
                     }
                     break;
-                case 55:
+                case 56:
                     {
                     alt34=2;
                     }
                     break;
-                case 56:
+                case 57:
                     {
                     alt34=3;
                     }
@@ -6163,7 +6213,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt34) {
             	case 1 :
-            	    // InternalRsamlText.g:2601:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2626:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -6184,20 +6234,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2613:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2638:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:2613:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:2614:5: otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2638:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2639:5: otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_5=(Token)match(input,55,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,56,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getPlanAccess().getAchievesKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2618:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2619:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2643:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2644:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2619:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2620:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2644:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2645:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -6221,7 +6271,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2634:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2659:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    loop33:
             	    do {
             	        int alt33=2;
@@ -6234,17 +6284,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt33) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:2635:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2660:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_7=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_7, grammarAccess.getPlanAccess().getCommaKeyword_4_1_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:2639:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:2640:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2664:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2665:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:2640:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:2641:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:2665:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2666:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -6284,13 +6334,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2658:4: ( (lv_activities_9_0= ruleActivity ) )
+            	    // InternalRsamlText.g:2683:4: ( (lv_activities_9_0= ruleActivity ) )
             	    {
-            	    // InternalRsamlText.g:2658:4: ( (lv_activities_9_0= ruleActivity ) )
-            	    // InternalRsamlText.g:2659:5: (lv_activities_9_0= ruleActivity )
+            	    // InternalRsamlText.g:2683:4: ( (lv_activities_9_0= ruleActivity ) )
+            	    // InternalRsamlText.g:2684:5: (lv_activities_9_0= ruleActivity )
             	    {
-            	    // InternalRsamlText.g:2659:5: (lv_activities_9_0= ruleActivity )
-            	    // InternalRsamlText.g:2660:6: lv_activities_9_0= ruleActivity
+            	    // InternalRsamlText.g:2684:5: (lv_activities_9_0= ruleActivity )
+            	    // InternalRsamlText.g:2685:6: lv_activities_9_0= ruleActivity
             	    {
 
             	    						newCompositeNode(grammarAccess.getPlanAccess().getActivitiesActivityParserRuleCall_4_2_0());
@@ -6353,7 +6403,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleActivity"
-    // InternalRsamlText.g:2686:1: entryRuleActivity returns [EObject current=null] : iv_ruleActivity= ruleActivity EOF ;
+    // InternalRsamlText.g:2711:1: entryRuleActivity returns [EObject current=null] : iv_ruleActivity= ruleActivity EOF ;
     public final EObject entryRuleActivity() throws RecognitionException {
         EObject current = null;
 
@@ -6361,8 +6411,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2686:49: (iv_ruleActivity= ruleActivity EOF )
-            // InternalRsamlText.g:2687:2: iv_ruleActivity= ruleActivity EOF
+            // InternalRsamlText.g:2711:49: (iv_ruleActivity= ruleActivity EOF )
+            // InternalRsamlText.g:2712:2: iv_ruleActivity= ruleActivity EOF
             {
              newCompositeNode(grammarAccess.getActivityRule()); 
             pushFollow(FOLLOW_1);
@@ -6389,7 +6439,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleActivity"
-    // InternalRsamlText.g:2693:1: ruleActivity returns [EObject current=null] : ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) ;
+    // InternalRsamlText.g:2718:1: ruleActivity returns [EObject current=null] : ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) ;
     public final EObject ruleActivity() throws RecognitionException {
         EObject current = null;
 
@@ -6409,14 +6459,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2699:2: ( ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) )
-            // InternalRsamlText.g:2700:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2724:2: ( ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) )
+            // InternalRsamlText.g:2725:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
             {
-            // InternalRsamlText.g:2700:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
-            // InternalRsamlText.g:2701:3: () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}'
+            // InternalRsamlText.g:2725:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2726:3: () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}'
             {
-            // InternalRsamlText.g:2701:3: ()
-            // InternalRsamlText.g:2702:4: 
+            // InternalRsamlText.g:2726:3: ()
+            // InternalRsamlText.g:2727:4: 
             {
 
             				current = forceCreateModelElement(
@@ -6426,23 +6476,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,56,FOLLOW_3); 
+            otherlv_1=(Token)match(input,57,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getActivityAccess().getActivityKeyword_1());
             		
-            // InternalRsamlText.g:2712:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2737:3: ( (lv_name_2_0= ruleName ) )?
             int alt35=2;
             int LA35_0 = input.LA(1);
 
-            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=41)||(LA35_0>=43 && LA35_0<=77)||(LA35_0>=79 && LA35_0<=110)) ) {
+            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=42)||(LA35_0>=44 && LA35_0<=78)||(LA35_0>=80 && LA35_0<=111)) ) {
                 alt35=1;
             }
             switch (alt35) {
                 case 1 :
-                    // InternalRsamlText.g:2713:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2738:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2713:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2714:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2738:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2739:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getActivityAccess().getNameNameParserRuleCall_2_0());
@@ -6476,7 +6526,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getActivityAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2735:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:2760:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop37:
             do {
                 int alt37=4;
@@ -6496,7 +6546,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt37=2;
                     }
                     break;
-                case 57:
+                case 58:
                     {
                     alt37=3;
                     }
@@ -6506,7 +6556,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt37) {
             	case 1 :
-            	    // InternalRsamlText.g:2736:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2761:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -6527,7 +6577,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2748:4: this_RealTime_5= ruleRealTime[$current]
+            	    // InternalRsamlText.g:2773:4: this_RealTime_5= ruleRealTime[$current]
             	    {
 
             	    				if (current==null) {
@@ -6548,20 +6598,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2760:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2785:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:2760:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:2761:5: otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2785:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2786:5: otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_6=(Token)match(input,57,FOLLOW_15); 
+            	    otherlv_6=(Token)match(input,58,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_6, grammarAccess.getActivityAccess().getActionsKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2765:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2766:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2790:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2791:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2766:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2767:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2791:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2792:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -6585,7 +6635,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2781:5: (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2806:5: (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
             	    loop36:
             	    do {
             	        int alt36=2;
@@ -6598,17 +6648,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt36) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:2782:6: otherlv_8= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2807:6: otherlv_8= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_8=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_8, grammarAccess.getActivityAccess().getCommaKeyword_4_2_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:2786:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:2787:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2811:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2812:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:2787:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:2788:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:2812:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2813:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -6680,7 +6730,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleSupervisor"
-    // InternalRsamlText.g:2813:1: entryRuleSupervisor returns [EObject current=null] : iv_ruleSupervisor= ruleSupervisor EOF ;
+    // InternalRsamlText.g:2838:1: entryRuleSupervisor returns [EObject current=null] : iv_ruleSupervisor= ruleSupervisor EOF ;
     public final EObject entryRuleSupervisor() throws RecognitionException {
         EObject current = null;
 
@@ -6688,8 +6738,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2813:51: (iv_ruleSupervisor= ruleSupervisor EOF )
-            // InternalRsamlText.g:2814:2: iv_ruleSupervisor= ruleSupervisor EOF
+            // InternalRsamlText.g:2838:51: (iv_ruleSupervisor= ruleSupervisor EOF )
+            // InternalRsamlText.g:2839:2: iv_ruleSupervisor= ruleSupervisor EOF
             {
              newCompositeNode(grammarAccess.getSupervisorRule()); 
             pushFollow(FOLLOW_1);
@@ -6716,7 +6766,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSupervisor"
-    // InternalRsamlText.g:2820:1: ruleSupervisor returns [EObject current=null] : ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:2845:1: ruleSupervisor returns [EObject current=null] : ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
     public final EObject ruleSupervisor() throws RecognitionException {
         EObject current = null;
 
@@ -6735,14 +6785,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2826:2: ( ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:2827:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:2851:2: ( ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:2852:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:2827:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:2828:3: () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
+            // InternalRsamlText.g:2852:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:2853:3: () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:2828:3: ()
-            // InternalRsamlText.g:2829:4: 
+            // InternalRsamlText.g:2853:3: ()
+            // InternalRsamlText.g:2854:4: 
             {
 
             				current = forceCreateModelElement(
@@ -6752,23 +6802,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,58,FOLLOW_3); 
+            otherlv_1=(Token)match(input,59,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getSupervisorAccess().getSupervisorKeyword_1());
             		
-            // InternalRsamlText.g:2839:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2864:3: ( (lv_name_2_0= ruleName ) )?
             int alt38=2;
             int LA38_0 = input.LA(1);
 
-            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=41)||(LA38_0>=43 && LA38_0<=77)||(LA38_0>=79 && LA38_0<=110)) ) {
+            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=42)||(LA38_0>=44 && LA38_0<=78)||(LA38_0>=80 && LA38_0<=111)) ) {
                 alt38=1;
             }
             switch (alt38) {
                 case 1 :
-                    // InternalRsamlText.g:2840:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2865:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2840:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2841:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2865:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2866:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getSupervisorAccess().getNameNameParserRuleCall_2_0());
@@ -6802,7 +6852,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getSupervisorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2862:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )*
+            // InternalRsamlText.g:2887:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )*
             loop40:
             do {
                 int alt40=4;
@@ -6812,12 +6862,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt40=1;
                     }
                     break;
-                case 59:
+                case 60:
                     {
                     alt40=2;
                     }
                     break;
-                case 60:
+                case 61:
                     {
                     alt40=3;
                     }
@@ -6827,7 +6877,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt40) {
             	case 1 :
-            	    // InternalRsamlText.g:2863:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2888:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -6848,20 +6898,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2875:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2900:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:2875:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:2876:5: otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2900:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2901:5: otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_5=(Token)match(input,59,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,60,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getSupervisorAccess().getPlansKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2880:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2881:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2905:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2906:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2881:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2882:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2906:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2907:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -6885,7 +6935,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2896:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2921:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    loop39:
             	    do {
             	        int alt39=2;
@@ -6898,17 +6948,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt39) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:2897:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2922:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_7=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_7, grammarAccess.getSupervisorAccess().getCommaKeyword_4_1_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:2901:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:2902:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2926:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2927:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:2902:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:2903:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:2927:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2928:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -6948,20 +6998,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2920:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:2945:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:2920:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:2921:5: otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2945:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:2946:5: otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_9=(Token)match(input,60,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,61,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getSupervisorAccess().getRealisedByKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2925:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2926:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2950:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2951:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2926:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2927:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2951:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2952:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7024,7 +7074,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleOrder"
-    // InternalRsamlText.g:2951:1: entryRuleOrder returns [EObject current=null] : iv_ruleOrder= ruleOrder EOF ;
+    // InternalRsamlText.g:2976:1: entryRuleOrder returns [EObject current=null] : iv_ruleOrder= ruleOrder EOF ;
     public final EObject entryRuleOrder() throws RecognitionException {
         EObject current = null;
 
@@ -7032,8 +7082,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2951:46: (iv_ruleOrder= ruleOrder EOF )
-            // InternalRsamlText.g:2952:2: iv_ruleOrder= ruleOrder EOF
+            // InternalRsamlText.g:2976:46: (iv_ruleOrder= ruleOrder EOF )
+            // InternalRsamlText.g:2977:2: iv_ruleOrder= ruleOrder EOF
             {
              newCompositeNode(grammarAccess.getOrderRule()); 
             pushFollow(FOLLOW_1);
@@ -7060,7 +7110,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleOrder"
-    // InternalRsamlText.g:2958:1: ruleOrder returns [EObject current=null] : ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:2983:1: ruleOrder returns [EObject current=null] : ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
     public final EObject ruleOrder() throws RecognitionException {
         EObject current = null;
 
@@ -7080,14 +7130,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2964:2: ( ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:2965:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:2989:2: ( ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:2990:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:2965:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:2966:3: () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
+            // InternalRsamlText.g:2990:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:2991:3: () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:2966:3: ()
-            // InternalRsamlText.g:2967:4: 
+            // InternalRsamlText.g:2991:3: ()
+            // InternalRsamlText.g:2992:4: 
             {
 
             				current = forceCreateModelElement(
@@ -7097,23 +7147,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,61,FOLLOW_3); 
+            otherlv_1=(Token)match(input,62,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getOrderAccess().getOrderKeyword_1());
             		
-            // InternalRsamlText.g:2977:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3002:3: ( (lv_name_2_0= ruleName ) )?
             int alt41=2;
             int LA41_0 = input.LA(1);
 
-            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=41)||(LA41_0>=43 && LA41_0<=77)||(LA41_0>=79 && LA41_0<=110)) ) {
+            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=42)||(LA41_0>=44 && LA41_0<=78)||(LA41_0>=80 && LA41_0<=111)) ) {
                 alt41=1;
             }
             switch (alt41) {
                 case 1 :
-                    // InternalRsamlText.g:2978:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3003:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2978:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2979:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3003:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3004:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getOrderAccess().getNameNameParserRuleCall_2_0());
@@ -7147,7 +7197,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getOrderAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3000:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )*
+            // InternalRsamlText.g:3025:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )*
             loop42:
             do {
                 int alt42=5;
@@ -7157,17 +7207,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt42=1;
                     }
                     break;
-                case 62:
+                case 63:
                     {
                     alt42=2;
                     }
                     break;
-                case 63:
+                case 64:
                     {
                     alt42=3;
                     }
                     break;
-                case 64:
+                case 65:
                     {
                     alt42=4;
                     }
@@ -7177,7 +7227,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt42) {
             	case 1 :
-            	    // InternalRsamlText.g:3001:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3026:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -7198,20 +7248,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3013:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3038:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:3013:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:3014:5: otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3038:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3039:5: otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) )
             	    {
-            	    otherlv_5=(Token)match(input,62,FOLLOW_8); 
+            	    otherlv_5=(Token)match(input,63,FOLLOW_8); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getOrderAccess().getIssuerKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3018:5: ( (lv_issuer_6_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:3019:6: (lv_issuer_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:3043:5: ( (lv_issuer_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3044:6: (lv_issuer_6_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:3019:6: (lv_issuer_6_0= RULE_STRING )
-            	    // InternalRsamlText.g:3020:7: lv_issuer_6_0= RULE_STRING
+            	    // InternalRsamlText.g:3044:6: (lv_issuer_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:3045:7: lv_issuer_6_0= RULE_STRING
             	    {
             	    lv_issuer_6_0=(Token)match(input,RULE_STRING,FOLLOW_36); 
 
@@ -7240,20 +7290,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3038:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3063:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3038:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3039:5: otherlv_7= 'receiver' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3063:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3064:5: otherlv_7= 'receiver' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,63,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,64,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getOrderAccess().getReceiverKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3043:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3044:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3068:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3069:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3044:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3045:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3069:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3070:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7284,20 +7334,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3061:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3086:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3061:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3062:5: otherlv_9= 'requests' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3086:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3087:5: otherlv_9= 'requests' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_9=(Token)match(input,64,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,65,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getOrderAccess().getRequestsKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3066:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3067:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3091:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3092:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3067:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3068:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3092:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3093:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7360,7 +7410,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleDatabase"
-    // InternalRsamlText.g:3092:1: entryRuleDatabase returns [EObject current=null] : iv_ruleDatabase= ruleDatabase EOF ;
+    // InternalRsamlText.g:3117:1: entryRuleDatabase returns [EObject current=null] : iv_ruleDatabase= ruleDatabase EOF ;
     public final EObject entryRuleDatabase() throws RecognitionException {
         EObject current = null;
 
@@ -7368,8 +7418,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3092:49: (iv_ruleDatabase= ruleDatabase EOF )
-            // InternalRsamlText.g:3093:2: iv_ruleDatabase= ruleDatabase EOF
+            // InternalRsamlText.g:3117:49: (iv_ruleDatabase= ruleDatabase EOF )
+            // InternalRsamlText.g:3118:2: iv_ruleDatabase= ruleDatabase EOF
             {
              newCompositeNode(grammarAccess.getDatabaseRule()); 
             pushFollow(FOLLOW_1);
@@ -7396,7 +7446,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDatabase"
-    // InternalRsamlText.g:3099:1: ruleDatabase returns [EObject current=null] : ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) ;
+    // InternalRsamlText.g:3124:1: ruleDatabase returns [EObject current=null] : ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) ;
     public final EObject ruleDatabase() throws RecognitionException {
         EObject current = null;
 
@@ -7414,14 +7464,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3105:2: ( ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) )
-            // InternalRsamlText.g:3106:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
+            // InternalRsamlText.g:3130:2: ( ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) )
+            // InternalRsamlText.g:3131:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
             {
-            // InternalRsamlText.g:3106:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
-            // InternalRsamlText.g:3107:3: () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}'
+            // InternalRsamlText.g:3131:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
+            // InternalRsamlText.g:3132:3: () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}'
             {
-            // InternalRsamlText.g:3107:3: ()
-            // InternalRsamlText.g:3108:4: 
+            // InternalRsamlText.g:3132:3: ()
+            // InternalRsamlText.g:3133:4: 
             {
 
             				current = forceCreateModelElement(
@@ -7431,23 +7481,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,65,FOLLOW_3); 
+            otherlv_1=(Token)match(input,66,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getDatabaseAccess().getDatabaseKeyword_1());
             		
-            // InternalRsamlText.g:3118:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3143:3: ( (lv_name_2_0= ruleName ) )?
             int alt43=2;
             int LA43_0 = input.LA(1);
 
-            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=41)||(LA43_0>=43 && LA43_0<=77)||(LA43_0>=79 && LA43_0<=110)) ) {
+            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=42)||(LA43_0>=44 && LA43_0<=78)||(LA43_0>=80 && LA43_0<=111)) ) {
                 alt43=1;
             }
             switch (alt43) {
                 case 1 :
-                    // InternalRsamlText.g:3119:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3144:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3119:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3120:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3144:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3145:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getDatabaseAccess().getNameNameParserRuleCall_2_0());
@@ -7481,7 +7531,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getDatabaseAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3141:3: (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )*
+            // InternalRsamlText.g:3166:3: (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )*
             loop44:
             do {
                 int alt44=3;
@@ -7490,14 +7540,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 if ( (LA44_0==16) ) {
                     alt44=1;
                 }
-                else if ( (LA44_0==66) ) {
+                else if ( (LA44_0==67) ) {
                     alt44=2;
                 }
 
 
                 switch (alt44) {
             	case 1 :
-            	    // InternalRsamlText.g:3142:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3167:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -7518,13 +7568,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3154:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
+            	    // InternalRsamlText.g:3179:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
             	    {
-            	    // InternalRsamlText.g:3154:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
-            	    // InternalRsamlText.g:3155:5: (lv_knowledge_5_0= ruleKnowledge )
+            	    // InternalRsamlText.g:3179:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
+            	    // InternalRsamlText.g:3180:5: (lv_knowledge_5_0= ruleKnowledge )
             	    {
-            	    // InternalRsamlText.g:3155:5: (lv_knowledge_5_0= ruleKnowledge )
-            	    // InternalRsamlText.g:3156:6: lv_knowledge_5_0= ruleKnowledge
+            	    // InternalRsamlText.g:3180:5: (lv_knowledge_5_0= ruleKnowledge )
+            	    // InternalRsamlText.g:3181:6: lv_knowledge_5_0= ruleKnowledge
             	    {
 
             	    						newCompositeNode(grammarAccess.getDatabaseAccess().getKnowledgeKnowledgeParserRuleCall_4_1_0());
@@ -7587,7 +7637,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleKnowledge"
-    // InternalRsamlText.g:3182:1: entryRuleKnowledge returns [EObject current=null] : iv_ruleKnowledge= ruleKnowledge EOF ;
+    // InternalRsamlText.g:3207:1: entryRuleKnowledge returns [EObject current=null] : iv_ruleKnowledge= ruleKnowledge EOF ;
     public final EObject entryRuleKnowledge() throws RecognitionException {
         EObject current = null;
 
@@ -7595,8 +7645,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3182:50: (iv_ruleKnowledge= ruleKnowledge EOF )
-            // InternalRsamlText.g:3183:2: iv_ruleKnowledge= ruleKnowledge EOF
+            // InternalRsamlText.g:3207:50: (iv_ruleKnowledge= ruleKnowledge EOF )
+            // InternalRsamlText.g:3208:2: iv_ruleKnowledge= ruleKnowledge EOF
             {
              newCompositeNode(grammarAccess.getKnowledgeRule()); 
             pushFollow(FOLLOW_1);
@@ -7623,7 +7673,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleKnowledge"
-    // InternalRsamlText.g:3189:1: ruleKnowledge returns [EObject current=null] : ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:3214:1: ruleKnowledge returns [EObject current=null] : ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) ;
     public final EObject ruleKnowledge() throws RecognitionException {
         EObject current = null;
 
@@ -7644,14 +7694,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3195:2: ( ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:3196:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:3220:2: ( ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:3221:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:3196:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:3197:3: () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}'
+            // InternalRsamlText.g:3221:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:3222:3: () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:3197:3: ()
-            // InternalRsamlText.g:3198:4: 
+            // InternalRsamlText.g:3222:3: ()
+            // InternalRsamlText.g:3223:4: 
             {
 
             				current = forceCreateModelElement(
@@ -7661,23 +7711,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,66,FOLLOW_3); 
+            otherlv_1=(Token)match(input,67,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getKnowledgeAccess().getKnowledgeKeyword_1());
             		
-            // InternalRsamlText.g:3208:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3233:3: ( (lv_name_2_0= ruleName ) )?
             int alt45=2;
             int LA45_0 = input.LA(1);
 
-            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=41)||(LA45_0>=43 && LA45_0<=77)||(LA45_0>=79 && LA45_0<=110)) ) {
+            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=42)||(LA45_0>=44 && LA45_0<=78)||(LA45_0>=80 && LA45_0<=111)) ) {
                 alt45=1;
             }
             switch (alt45) {
                 case 1 :
-                    // InternalRsamlText.g:3209:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3234:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3209:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3210:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3234:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3235:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getKnowledgeAccess().getNameNameParserRuleCall_2_0());
@@ -7711,7 +7761,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getKnowledgeAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3231:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:3256:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop47:
             do {
                 int alt47=4;
@@ -7726,7 +7776,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt47=2;
                     }
                     break;
-                case 67:
+                case 68:
                     {
                     alt47=3;
                     }
@@ -7736,7 +7786,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt47) {
             	case 1 :
-            	    // InternalRsamlText.g:3232:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3257:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -7757,20 +7807,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3244:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:3269:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:3244:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:3245:5: otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) )
+            	    // InternalRsamlText.g:3269:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:3270:5: otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) )
             	    {
             	    otherlv_5=(Token)match(input,39,FOLLOW_22); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getKnowledgeAccess().getDataTypeKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3249:5: ( (lv_dataType_6_0= ruleDataType ) )
-            	    // InternalRsamlText.g:3250:6: (lv_dataType_6_0= ruleDataType )
+            	    // InternalRsamlText.g:3274:5: ( (lv_dataType_6_0= ruleDataType ) )
+            	    // InternalRsamlText.g:3275:6: (lv_dataType_6_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:3250:6: (lv_dataType_6_0= ruleDataType )
-            	    // InternalRsamlText.g:3251:7: lv_dataType_6_0= ruleDataType
+            	    // InternalRsamlText.g:3275:6: (lv_dataType_6_0= ruleDataType )
+            	    // InternalRsamlText.g:3276:7: lv_dataType_6_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getKnowledgeAccess().getDataTypeDataTypeEnumRuleCall_4_1_1_0());
@@ -7804,20 +7854,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3270:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3295:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3270:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3271:5: otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3295:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3296:5: otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_7=(Token)match(input,67,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,68,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getKnowledgeAccess().getUsedByKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3275:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3276:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3300:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3301:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3276:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3277:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3301:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3302:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7841,7 +7891,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3291:5: (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3316:5: (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
             	    loop46:
             	    do {
             	        int alt46=2;
@@ -7854,17 +7904,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt46) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3292:6: otherlv_9= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3317:6: otherlv_9= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_9=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_9, grammarAccess.getKnowledgeAccess().getCommaKeyword_4_2_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3296:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3297:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3321:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3322:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3297:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3298:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3322:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3323:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -7936,7 +7986,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleProcessor"
-    // InternalRsamlText.g:3323:1: entryRuleProcessor returns [EObject current=null] : iv_ruleProcessor= ruleProcessor EOF ;
+    // InternalRsamlText.g:3348:1: entryRuleProcessor returns [EObject current=null] : iv_ruleProcessor= ruleProcessor EOF ;
     public final EObject entryRuleProcessor() throws RecognitionException {
         EObject current = null;
 
@@ -7944,8 +7994,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3323:50: (iv_ruleProcessor= ruleProcessor EOF )
-            // InternalRsamlText.g:3324:2: iv_ruleProcessor= ruleProcessor EOF
+            // InternalRsamlText.g:3348:50: (iv_ruleProcessor= ruleProcessor EOF )
+            // InternalRsamlText.g:3349:2: iv_ruleProcessor= ruleProcessor EOF
             {
              newCompositeNode(grammarAccess.getProcessorRule()); 
             pushFollow(FOLLOW_1);
@@ -7972,7 +8022,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleProcessor"
-    // InternalRsamlText.g:3330:1: ruleProcessor returns [EObject current=null] : ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) ;
+    // InternalRsamlText.g:3355:1: ruleProcessor returns [EObject current=null] : ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) ;
     public final EObject ruleProcessor() throws RecognitionException {
         EObject current = null;
 
@@ -8005,14 +8055,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3336:2: ( ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) )
-            // InternalRsamlText.g:3337:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
+            // InternalRsamlText.g:3361:2: ( ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3362:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3337:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
-            // InternalRsamlText.g:3338:3: () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}'
+            // InternalRsamlText.g:3362:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
+            // InternalRsamlText.g:3363:3: () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}'
             {
-            // InternalRsamlText.g:3338:3: ()
-            // InternalRsamlText.g:3339:4: 
+            // InternalRsamlText.g:3363:3: ()
+            // InternalRsamlText.g:3364:4: 
             {
 
             				current = forceCreateModelElement(
@@ -8022,23 +8072,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,68,FOLLOW_3); 
+            otherlv_1=(Token)match(input,69,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getProcessorAccess().getProcessorKeyword_1());
             		
-            // InternalRsamlText.g:3349:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3374:3: ( (lv_name_2_0= ruleName ) )?
             int alt48=2;
             int LA48_0 = input.LA(1);
 
-            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=41)||(LA48_0>=43 && LA48_0<=77)||(LA48_0>=79 && LA48_0<=110)) ) {
+            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=42)||(LA48_0>=44 && LA48_0<=78)||(LA48_0>=80 && LA48_0<=111)) ) {
                 alt48=1;
             }
             switch (alt48) {
                 case 1 :
-                    // InternalRsamlText.g:3350:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3375:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3350:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3351:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3375:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3376:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getProcessorAccess().getNameNameParserRuleCall_2_0());
@@ -8072,7 +8122,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getProcessorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3372:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:3397:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop50:
             do {
                 int alt50=8;
@@ -8087,17 +8137,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt50=2;
                     }
                     break;
-                case 69:
+                case 70:
                     {
                     alt50=3;
                     }
                     break;
-                case 70:
+                case 71:
                     {
                     alt50=4;
                     }
                     break;
-                case 71:
+                case 72:
                     {
                     alt50=5;
                     }
@@ -8107,7 +8157,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt50=6;
                     }
                     break;
-                case 72:
+                case 73:
                     {
                     alt50=7;
                     }
@@ -8117,7 +8167,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt50) {
             	case 1 :
-            	    // InternalRsamlText.g:3373:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3398:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -8138,20 +8188,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3385:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
+            	    // InternalRsamlText.g:3410:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
             	    {
-            	    // InternalRsamlText.g:3385:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
-            	    // InternalRsamlText.g:3386:5: otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
+            	    // InternalRsamlText.g:3410:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
+            	    // InternalRsamlText.g:3411:5: otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
             	    {
             	    otherlv_5=(Token)match(input,32,FOLLOW_19); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getProcessorAccess().getSchedPolicyKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3390:5: ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
-            	    // InternalRsamlText.g:3391:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
+            	    // InternalRsamlText.g:3415:5: ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
+            	    // InternalRsamlText.g:3416:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
             	    {
-            	    // InternalRsamlText.g:3391:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
-            	    // InternalRsamlText.g:3392:7: lv_schedPolicy_6_0= ruleSchedulingPolicy
+            	    // InternalRsamlText.g:3416:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
+            	    // InternalRsamlText.g:3417:7: lv_schedPolicy_6_0= ruleSchedulingPolicy
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getSchedPolicySchedulingPolicyEnumRuleCall_4_1_1_0());
@@ -8185,20 +8235,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3411:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:3436:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
             	    {
-            	    // InternalRsamlText.g:3411:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
-            	    // InternalRsamlText.g:3412:5: otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) )
+            	    // InternalRsamlText.g:3436:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:3437:5: otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) )
             	    {
-            	    otherlv_7=(Token)match(input,69,FOLLOW_7); 
+            	    otherlv_7=(Token)match(input,70,FOLLOW_7); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getProcessorAccess().getCoreKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3416:5: ( (lv_core_8_0= ruleInteger ) )
-            	    // InternalRsamlText.g:3417:6: (lv_core_8_0= ruleInteger )
+            	    // InternalRsamlText.g:3441:5: ( (lv_core_8_0= ruleInteger ) )
+            	    // InternalRsamlText.g:3442:6: (lv_core_8_0= ruleInteger )
             	    {
-            	    // InternalRsamlText.g:3417:6: (lv_core_8_0= ruleInteger )
-            	    // InternalRsamlText.g:3418:7: lv_core_8_0= ruleInteger
+            	    // InternalRsamlText.g:3442:6: (lv_core_8_0= ruleInteger )
+            	    // InternalRsamlText.g:3443:7: lv_core_8_0= ruleInteger
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getCoreIntegerParserRuleCall_4_2_1_0());
@@ -8232,20 +8282,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3437:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3462:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:3437:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:3438:5: otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3462:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3463:5: otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) )
             	    {
-            	    otherlv_9=(Token)match(input,70,FOLLOW_8); 
+            	    otherlv_9=(Token)match(input,71,FOLLOW_8); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getProcessorAccess().getHostKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3442:5: ( (lv_host_10_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:3443:6: (lv_host_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:3467:5: ( (lv_host_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3468:6: (lv_host_10_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:3443:6: (lv_host_10_0= RULE_STRING )
-            	    // InternalRsamlText.g:3444:7: lv_host_10_0= RULE_STRING
+            	    // InternalRsamlText.g:3468:6: (lv_host_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:3469:7: lv_host_10_0= RULE_STRING
             	    {
             	    lv_host_10_0=(Token)match(input,RULE_STRING,FOLLOW_40); 
 
@@ -8274,20 +8324,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:3462:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3487:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:3462:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:3463:5: otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3487:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3488:5: otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_11=(Token)match(input,71,FOLLOW_12); 
+            	    otherlv_11=(Token)match(input,72,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_11, grammarAccess.getProcessorAccess().getLinkLatencyKeyword_4_4_0());
             	    				
-            	    // InternalRsamlText.g:3467:5: ( (lv_linkLatency_12_0= ruleReal ) )
-            	    // InternalRsamlText.g:3468:6: (lv_linkLatency_12_0= ruleReal )
+            	    // InternalRsamlText.g:3492:5: ( (lv_linkLatency_12_0= ruleReal ) )
+            	    // InternalRsamlText.g:3493:6: (lv_linkLatency_12_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:3468:6: (lv_linkLatency_12_0= ruleReal )
-            	    // InternalRsamlText.g:3469:7: lv_linkLatency_12_0= ruleReal
+            	    // InternalRsamlText.g:3493:6: (lv_linkLatency_12_0= ruleReal )
+            	    // InternalRsamlText.g:3494:7: lv_linkLatency_12_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getLinkLatencyRealParserRuleCall_4_4_1_0());
@@ -8314,11 +8364,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3486:5: ( (lv_timeUnit_13_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:3487:6: (lv_timeUnit_13_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3511:5: ( (lv_timeUnit_13_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3512:6: (lv_timeUnit_13_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:3487:6: (lv_timeUnit_13_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:3488:7: lv_timeUnit_13_0= ruleTimeUnit
+            	    // InternalRsamlText.g:3512:6: (lv_timeUnit_13_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3513:7: lv_timeUnit_13_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
@@ -8352,7 +8402,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 6 :
-            	    // InternalRsamlText.g:3507:4: this_Unit_14= ruleUnit[$current]
+            	    // InternalRsamlText.g:3532:4: this_Unit_14= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -8373,20 +8423,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 7 :
-            	    // InternalRsamlText.g:3519:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3544:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3519:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3520:5: otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3544:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3545:5: otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_15=(Token)match(input,72,FOLLOW_15); 
+            	    otherlv_15=(Token)match(input,73,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_15, grammarAccess.getProcessorAccess().getModulesKeyword_4_6_0());
             	    				
-            	    // InternalRsamlText.g:3524:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3525:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3549:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3550:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3525:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3526:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3550:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3551:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8410,7 +8460,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3540:5: (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3565:5: (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
             	    loop49:
             	    do {
             	        int alt49=2;
@@ -8423,17 +8473,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt49) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3541:6: otherlv_17= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3566:6: otherlv_17= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_17=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_17, grammarAccess.getProcessorAccess().getCommaKeyword_4_6_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3545:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3546:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3570:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3571:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3546:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3547:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3571:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3572:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -8505,7 +8555,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleLatencyRequirement"
-    // InternalRsamlText.g:3572:1: entryRuleLatencyRequirement returns [EObject current=null] : iv_ruleLatencyRequirement= ruleLatencyRequirement EOF ;
+    // InternalRsamlText.g:3597:1: entryRuleLatencyRequirement returns [EObject current=null] : iv_ruleLatencyRequirement= ruleLatencyRequirement EOF ;
     public final EObject entryRuleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8513,8 +8563,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3572:59: (iv_ruleLatencyRequirement= ruleLatencyRequirement EOF )
-            // InternalRsamlText.g:3573:2: iv_ruleLatencyRequirement= ruleLatencyRequirement EOF
+            // InternalRsamlText.g:3597:59: (iv_ruleLatencyRequirement= ruleLatencyRequirement EOF )
+            // InternalRsamlText.g:3598:2: iv_ruleLatencyRequirement= ruleLatencyRequirement EOF
             {
              newCompositeNode(grammarAccess.getLatencyRequirementRule()); 
             pushFollow(FOLLOW_1);
@@ -8541,7 +8591,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyRequirement"
-    // InternalRsamlText.g:3579:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
+    // InternalRsamlText.g:3604:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
     public final EObject ruleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8571,14 +8621,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3585:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
-            // InternalRsamlText.g:3586:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3610:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3611:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3586:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
-            // InternalRsamlText.g:3587:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
+            // InternalRsamlText.g:3611:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3612:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
             {
-            // InternalRsamlText.g:3587:3: ()
-            // InternalRsamlText.g:3588:4: 
+            // InternalRsamlText.g:3612:3: ()
+            // InternalRsamlText.g:3613:4: 
             {
 
             				current = forceCreateModelElement(
@@ -8588,23 +8638,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,73,FOLLOW_3); 
+            otherlv_1=(Token)match(input,74,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getLatencyRequirementAccess().getLatencyKeyword_1());
             		
-            // InternalRsamlText.g:3598:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3623:3: ( (lv_name_2_0= ruleName ) )?
             int alt51=2;
             int LA51_0 = input.LA(1);
 
-            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=41)||(LA51_0>=43 && LA51_0<=77)||(LA51_0>=79 && LA51_0<=110)) ) {
+            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=42)||(LA51_0>=44 && LA51_0<=78)||(LA51_0>=80 && LA51_0<=111)) ) {
                 alt51=1;
             }
             switch (alt51) {
                 case 1 :
-                    // InternalRsamlText.g:3599:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3624:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3599:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3600:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3624:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3625:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getLatencyRequirementAccess().getNameNameParserRuleCall_2_0());
@@ -8638,7 +8688,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getLatencyRequirementAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3621:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
+            // InternalRsamlText.g:3646:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
             loop53:
             do {
                 int alt53=8;
@@ -8648,27 +8698,27 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt53=1;
                     }
                     break;
-                case 74:
+                case 75:
                     {
                     alt53=2;
                     }
                     break;
-                case 75:
+                case 76:
                     {
                     alt53=3;
                     }
                     break;
-                case 76:
+                case 77:
                     {
                     alt53=4;
                     }
                     break;
-                case 77:
+                case 78:
                     {
                     alt53=5;
                     }
                     break;
-                case 49:
+                case 50:
                     {
                     alt53=6;
                     }
@@ -8683,7 +8733,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt53) {
             	case 1 :
-            	    // InternalRsamlText.g:3622:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3647:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -8704,20 +8754,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3634:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3659:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3634:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3635:5: otherlv_5= 'from' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3659:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3660:5: otherlv_5= 'from' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,74,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,75,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getLatencyRequirementAccess().getFromKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3639:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3640:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3664:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3665:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3640:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3641:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3665:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3666:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8748,20 +8798,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3657:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3682:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3657:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3658:5: otherlv_7= 'to' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3682:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3683:5: otherlv_7= 'to' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,75,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,76,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getLatencyRequirementAccess().getToKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3662:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3663:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3687:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3688:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3663:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3664:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3688:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3689:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8792,20 +8842,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3680:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3705:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3680:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3681:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3705:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3706:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_9=(Token)match(input,76,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,77,FOLLOW_15); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getViaKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3685:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3686:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3710:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3711:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3686:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3687:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3711:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3712:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8829,7 +8879,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3701:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3726:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    loop52:
             	    do {
             	        int alt52=2;
@@ -8842,17 +8892,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	        switch (alt52) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3702:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3727:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
             	    	    {
             	    	    otherlv_11=(Token)match(input,28,FOLLOW_15); 
 
             	    	    						newLeafNode(otherlv_11, grammarAccess.getLatencyRequirementAccess().getCommaKeyword_4_3_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3706:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3707:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3731:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3732:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3707:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3708:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3732:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3733:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -8892,20 +8942,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:3725:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3750:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:3725:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:3726:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3750:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3751:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_13=(Token)match(input,77,FOLLOW_12); 
+            	    otherlv_13=(Token)match(input,78,FOLLOW_12); 
 
             	    					newLeafNode(otherlv_13, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_4_0());
             	    				
-            	    // InternalRsamlText.g:3730:5: ( (lv_maxLatency_14_0= ruleReal ) )
-            	    // InternalRsamlText.g:3731:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3755:5: ( (lv_maxLatency_14_0= ruleReal ) )
+            	    // InternalRsamlText.g:3756:6: (lv_maxLatency_14_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:3731:6: (lv_maxLatency_14_0= ruleReal )
-            	    // InternalRsamlText.g:3732:7: lv_maxLatency_14_0= ruleReal
+            	    // InternalRsamlText.g:3756:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3757:7: lv_maxLatency_14_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_4_1_0());
@@ -8932,11 +8982,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3749:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:3750:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3774:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3775:6: (lv_timeUnit_15_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:3750:6: (lv_timeUnit_15_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:3751:7: lv_timeUnit_15_0= ruleTimeUnit
+            	    // InternalRsamlText.g:3775:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3776:7: lv_timeUnit_15_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
@@ -8970,20 +9020,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 6 :
-            	    // InternalRsamlText.g:3770:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3795:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
             	    {
-            	    // InternalRsamlText.g:3770:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
-            	    // InternalRsamlText.g:3771:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3795:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3796:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
             	    {
-            	    otherlv_16=(Token)match(input,49,FOLLOW_44); 
+            	    otherlv_16=(Token)match(input,50,FOLLOW_44); 
 
             	    					newLeafNode(otherlv_16, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_5_0());
             	    				
-            	    // InternalRsamlText.g:3775:5: ( (lv_kind_17_0= ruleLatencyKind ) )
-            	    // InternalRsamlText.g:3776:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3800:5: ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3801:6: (lv_kind_17_0= ruleLatencyKind )
             	    {
-            	    // InternalRsamlText.g:3776:6: (lv_kind_17_0= ruleLatencyKind )
-            	    // InternalRsamlText.g:3777:7: lv_kind_17_0= ruleLatencyKind
+            	    // InternalRsamlText.g:3801:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3802:7: lv_kind_17_0= ruleLatencyKind
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_5_1_0());
@@ -9017,7 +9067,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 7 :
-            	    // InternalRsamlText.g:3796:4: this_Unit_18= ruleUnit[$current]
+            	    // InternalRsamlText.g:3821:4: this_Unit_18= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -9070,7 +9120,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleName"
-    // InternalRsamlText.g:3816:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
+    // InternalRsamlText.g:3841:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
     public final String entryRuleName() throws RecognitionException {
         String current = null;
 
@@ -9078,8 +9128,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3816:44: (iv_ruleName= ruleName EOF )
-            // InternalRsamlText.g:3817:2: iv_ruleName= ruleName EOF
+            // InternalRsamlText.g:3841:44: (iv_ruleName= ruleName EOF )
+            // InternalRsamlText.g:3842:2: iv_ruleName= ruleName EOF
             {
              newCompositeNode(grammarAccess.getNameRule()); 
             pushFollow(FOLLOW_1);
@@ -9106,7 +9156,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleName"
-    // InternalRsamlText.g:3823:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
+    // InternalRsamlText.g:3848:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
     public final AntlrDatatypeRuleToken ruleName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9119,10 +9169,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3829:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
-            // InternalRsamlText.g:3830:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3854:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
+            // InternalRsamlText.g:3855:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             {
-            // InternalRsamlText.g:3830:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3855:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             int alt54=3;
             switch ( input.LA(1) ) {
             case RULE_ID:
@@ -9163,7 +9213,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 39:
             case 40:
             case 41:
-            case 43:
+            case 42:
             case 44:
             case 45:
             case 46:
@@ -9198,7 +9248,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 75:
             case 76:
             case 77:
-            case 79:
+            case 78:
             case 80:
             case 81:
             case 82:
@@ -9230,6 +9280,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 108:
             case 109:
             case 110:
+            case 111:
                 {
                 alt54=3;
                 }
@@ -9243,7 +9294,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt54) {
                 case 1 :
-                    // InternalRsamlText.g:3831:3: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3856:3: this_ID_0= RULE_ID
                     {
                     this_ID_0=(Token)match(input,RULE_ID,FOLLOW_2); 
 
@@ -9256,7 +9307,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3839:3: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3864:3: this_STRING_1= RULE_STRING
                     {
                     this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_2); 
 
@@ -9269,7 +9320,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3847:3: this_Keyword_2= ruleKeyword
+                    // InternalRsamlText.g:3872:3: this_Keyword_2= ruleKeyword
                     {
 
                     			newCompositeNode(grammarAccess.getNameAccess().getKeywordParserRuleCall_2());
@@ -9311,7 +9362,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleQualifiedName"
-    // InternalRsamlText.g:3861:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
+    // InternalRsamlText.g:3886:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
     public final String entryRuleQualifiedName() throws RecognitionException {
         String current = null;
 
@@ -9319,8 +9370,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3861:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
-            // InternalRsamlText.g:3862:2: iv_ruleQualifiedName= ruleQualifiedName EOF
+            // InternalRsamlText.g:3886:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
+            // InternalRsamlText.g:3887:2: iv_ruleQualifiedName= ruleQualifiedName EOF
             {
              newCompositeNode(grammarAccess.getQualifiedNameRule()); 
             pushFollow(FOLLOW_1);
@@ -9347,7 +9398,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleQualifiedName"
-    // InternalRsamlText.g:3868:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
+    // InternalRsamlText.g:3893:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
     public final AntlrDatatypeRuleToken ruleQualifiedName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9361,13 +9412,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3874:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
-            // InternalRsamlText.g:3875:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3899:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
+            // InternalRsamlText.g:3900:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
             {
-            // InternalRsamlText.g:3875:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
-            // InternalRsamlText.g:3876:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3900:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3901:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
             {
-            // InternalRsamlText.g:3876:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
+            // InternalRsamlText.g:3901:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
             int alt55=2;
             int LA55_0 = input.LA(1);
 
@@ -9385,7 +9436,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt55) {
                 case 1 :
-                    // InternalRsamlText.g:3877:4: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3902:4: this_ID_0= RULE_ID
                     {
                     this_ID_0=(Token)match(input,RULE_ID,FOLLOW_45); 
 
@@ -9398,7 +9449,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3885:4: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3910:4: this_STRING_1= RULE_STRING
                     {
                     this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_45); 
 
@@ -9413,22 +9464,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            // InternalRsamlText.g:3893:3: (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3918:3: (kw= '.' this_Name_3= ruleName )*
             loop56:
             do {
                 int alt56=2;
                 int LA56_0 = input.LA(1);
 
-                if ( (LA56_0==78) ) {
+                if ( (LA56_0==79) ) {
                     alt56=1;
                 }
 
 
                 switch (alt56) {
             	case 1 :
-            	    // InternalRsamlText.g:3894:4: kw= '.' this_Name_3= ruleName
+            	    // InternalRsamlText.g:3919:4: kw= '.' this_Name_3= ruleName
             	    {
-            	    kw=(Token)match(input,78,FOLLOW_46); 
+            	    kw=(Token)match(input,79,FOLLOW_46); 
 
             	    				current.merge(kw);
             	    				newLeafNode(kw, grammarAccess.getQualifiedNameAccess().getFullStopKeyword_1_0());
@@ -9479,7 +9530,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleKeyword"
-    // InternalRsamlText.g:3914:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
+    // InternalRsamlText.g:3939:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
     public final String entryRuleKeyword() throws RecognitionException {
         String current = null;
 
@@ -9487,8 +9538,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3914:47: (iv_ruleKeyword= ruleKeyword EOF )
-            // InternalRsamlText.g:3915:2: iv_ruleKeyword= ruleKeyword EOF
+            // InternalRsamlText.g:3939:47: (iv_ruleKeyword= ruleKeyword EOF )
+            // InternalRsamlText.g:3940:2: iv_ruleKeyword= ruleKeyword EOF
             {
              newCompositeNode(grammarAccess.getKeywordRule()); 
             pushFollow(FOLLOW_1);
@@ -9515,7 +9566,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleKeyword"
-    // InternalRsamlText.g:3921:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
+    // InternalRsamlText.g:3946:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
     public final AntlrDatatypeRuleToken ruleKeyword() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9525,11 +9576,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3927:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
-            // InternalRsamlText.g:3928:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            // InternalRsamlText.g:3952:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
+            // InternalRsamlText.g:3953:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
             {
-            // InternalRsamlText.g:3928:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
-            int alt57=95;
+            // InternalRsamlText.g:3953:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            int alt57=96;
             switch ( input.LA(1) ) {
             case 11:
                 {
@@ -9571,77 +9622,77 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=8;
                 }
                 break;
-            case 41:
+            case 42:
                 {
                 alt57=9;
                 }
                 break;
-            case 43:
+            case 44:
                 {
                 alt57=10;
                 }
                 break;
-            case 47:
+            case 48:
                 {
                 alt57=11;
                 }
                 break;
-            case 48:
+            case 49:
                 {
                 alt57=12;
                 }
                 break;
-            case 50:
+            case 51:
                 {
                 alt57=13;
                 }
                 break;
-            case 51:
+            case 52:
                 {
                 alt57=14;
                 }
                 break;
-            case 52:
+            case 53:
                 {
                 alt57=15;
                 }
                 break;
-            case 54:
+            case 55:
                 {
                 alt57=16;
                 }
                 break;
-            case 56:
+            case 57:
                 {
                 alt57=17;
                 }
                 break;
-            case 58:
+            case 59:
                 {
                 alt57=18;
                 }
                 break;
-            case 61:
+            case 62:
                 {
                 alt57=19;
                 }
                 break;
-            case 65:
+            case 66:
                 {
                 alt57=20;
                 }
                 break;
-            case 66:
+            case 67:
                 {
                 alt57=21;
                 }
                 break;
-            case 68:
+            case 69:
                 {
                 alt57=22;
                 }
                 break;
-            case 73:
+            case 74:
                 {
                 alt57=23;
                 }
@@ -9741,7 +9792,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=42;
                 }
                 break;
-            case 44:
+            case 41:
                 {
                 alt57=43;
                 }
@@ -9756,27 +9807,27 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=45;
                 }
                 break;
-            case 49:
+            case 47:
                 {
                 alt57=46;
                 }
                 break;
-            case 53:
+            case 50:
                 {
                 alt57=47;
                 }
                 break;
-            case 55:
+            case 54:
                 {
                 alt57=48;
                 }
                 break;
-            case 57:
+            case 56:
                 {
                 alt57=49;
                 }
                 break;
-            case 59:
+            case 58:
                 {
                 alt57=50;
                 }
@@ -9786,7 +9837,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=51;
                 }
                 break;
-            case 62:
+            case 61:
                 {
                 alt57=52;
                 }
@@ -9801,22 +9852,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=54;
                 }
                 break;
-            case 67:
+            case 65:
                 {
                 alt57=55;
                 }
                 break;
-            case 69:
+            case 68:
                 {
                 alt57=56;
                 }
                 break;
-            case 72:
+            case 70:
                 {
                 alt57=57;
                 }
                 break;
-            case 74:
+            case 73:
                 {
                 alt57=58;
                 }
@@ -9836,7 +9887,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=61;
                 }
                 break;
-            case 70:
+            case 78:
                 {
                 alt57=62;
                 }
@@ -9846,7 +9897,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=63;
                 }
                 break;
-            case 79:
+            case 72:
                 {
                 alt57=64;
                 }
@@ -10006,6 +10057,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=95;
                 }
                 break;
+            case 111:
+                {
+                alt57=96;
+                }
+                break;
             default:
                 NoViableAltException nvae =
                     new NoViableAltException("", 57, 0, input);
@@ -10015,7 +10071,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt57) {
                 case 1 :
-                    // InternalRsamlText.g:3929:3: kw= 'architecture'
+                    // InternalRsamlText.g:3954:3: kw= 'architecture'
                     {
                     kw=(Token)match(input,11,FOLLOW_2); 
 
@@ -10026,7 +10082,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3935:3: kw= 'layer'
+                    // InternalRsamlText.g:3960:3: kw= 'layer'
                     {
                     kw=(Token)match(input,23,FOLLOW_2); 
 
@@ -10037,7 +10093,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3941:3: kw= 'module'
+                    // InternalRsamlText.g:3966:3: kw= 'module'
                     {
                     kw=(Token)match(input,26,FOLLOW_2); 
 
@@ -10048,7 +10104,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:3947:3: kw= 'function'
+                    // InternalRsamlText.g:3972:3: kw= 'function'
                     {
                     kw=(Token)match(input,30,FOLLOW_2); 
 
@@ -10059,7 +10115,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:3953:3: kw= 'action'
+                    // InternalRsamlText.g:3978:3: kw= 'action'
                     {
                     kw=(Token)match(input,34,FOLLOW_2); 
 
@@ -10070,7 +10126,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:3959:3: kw= 'rtAction'
+                    // InternalRsamlText.g:3984:3: kw= 'rtAction'
                     {
                     kw=(Token)match(input,35,FOLLOW_2); 
 
@@ -10081,7 +10137,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:3965:3: kw= 'input'
+                    // InternalRsamlText.g:3990:3: kw= 'input'
                     {
                     kw=(Token)match(input,37,FOLLOW_2); 
 
@@ -10092,7 +10148,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:3971:3: kw= 'output'
+                    // InternalRsamlText.g:3996:3: kw= 'output'
                     {
                     kw=(Token)match(input,38,FOLLOW_2); 
 
@@ -10103,9 +10159,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 9 :
-                    // InternalRsamlText.g:3977:3: kw= 'connect'
+                    // InternalRsamlText.g:4002:3: kw= 'connect'
                     {
-                    kw=(Token)match(input,41,FOLLOW_2); 
+                    kw=(Token)match(input,42,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getConnectKeyword_8());
@@ -10114,9 +10170,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 10 :
-                    // InternalRsamlText.g:3983:3: kw= 'inhibitor'
+                    // InternalRsamlText.g:4008:3: kw= 'inhibitor'
                     {
-                    kw=(Token)match(input,43,FOLLOW_2); 
+                    kw=(Token)match(input,44,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getInhibitorKeyword_9());
@@ -10125,9 +10181,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 11 :
-                    // InternalRsamlText.g:3989:3: kw= 'suppressor'
+                    // InternalRsamlText.g:4014:3: kw= 'suppressor'
                     {
-                    kw=(Token)match(input,47,FOLLOW_2); 
+                    kw=(Token)match(input,48,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSuppressorKeyword_10());
@@ -10136,9 +10192,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 12 :
-                    // InternalRsamlText.g:3995:3: kw= 'sensor'
+                    // InternalRsamlText.g:4020:3: kw= 'sensor'
                     {
-                    kw=(Token)match(input,48,FOLLOW_2); 
+                    kw=(Token)match(input,49,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSensorKeyword_11());
@@ -10147,9 +10203,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 13 :
-                    // InternalRsamlText.g:4001:3: kw= 'actuator'
+                    // InternalRsamlText.g:4026:3: kw= 'actuator'
                     {
-                    kw=(Token)match(input,50,FOLLOW_2); 
+                    kw=(Token)match(input,51,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActuatorKeyword_12());
@@ -10158,9 +10214,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 14 :
-                    // InternalRsamlText.g:4007:3: kw= 'mission'
+                    // InternalRsamlText.g:4032:3: kw= 'mission'
                     {
-                    kw=(Token)match(input,51,FOLLOW_2); 
+                    kw=(Token)match(input,52,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getMissionKeyword_13());
@@ -10169,9 +10225,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 15 :
-                    // InternalRsamlText.g:4013:3: kw= 'goal'
+                    // InternalRsamlText.g:4038:3: kw= 'goal'
                     {
-                    kw=(Token)match(input,52,FOLLOW_2); 
+                    kw=(Token)match(input,53,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getGoalKeyword_14());
@@ -10180,9 +10236,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 16 :
-                    // InternalRsamlText.g:4019:3: kw= 'plan'
+                    // InternalRsamlText.g:4044:3: kw= 'plan'
                     {
-                    kw=(Token)match(input,54,FOLLOW_2); 
+                    kw=(Token)match(input,55,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlanKeyword_15());
@@ -10191,9 +10247,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 17 :
-                    // InternalRsamlText.g:4025:3: kw= 'activity'
+                    // InternalRsamlText.g:4050:3: kw= 'activity'
                     {
-                    kw=(Token)match(input,56,FOLLOW_2); 
+                    kw=(Token)match(input,57,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActivityKeyword_16());
@@ -10202,9 +10258,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 18 :
-                    // InternalRsamlText.g:4031:3: kw= 'supervisor'
+                    // InternalRsamlText.g:4056:3: kw= 'supervisor'
                     {
-                    kw=(Token)match(input,58,FOLLOW_2); 
+                    kw=(Token)match(input,59,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSupervisorKeyword_17());
@@ -10213,9 +10269,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 19 :
-                    // InternalRsamlText.g:4037:3: kw= 'order'
+                    // InternalRsamlText.g:4062:3: kw= 'order'
                     {
-                    kw=(Token)match(input,61,FOLLOW_2); 
+                    kw=(Token)match(input,62,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getOrderKeyword_18());
@@ -10224,9 +10280,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 20 :
-                    // InternalRsamlText.g:4043:3: kw= 'database'
+                    // InternalRsamlText.g:4068:3: kw= 'database'
                     {
-                    kw=(Token)match(input,65,FOLLOW_2); 
+                    kw=(Token)match(input,66,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getDatabaseKeyword_19());
@@ -10235,9 +10291,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 21 :
-                    // InternalRsamlText.g:4049:3: kw= 'knowledge'
+                    // InternalRsamlText.g:4074:3: kw= 'knowledge'
                     {
-                    kw=(Token)match(input,66,FOLLOW_2); 
+                    kw=(Token)match(input,67,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getKnowledgeKeyword_20());
@@ -10246,9 +10302,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 22 :
-                    // InternalRsamlText.g:4055:3: kw= 'processor'
+                    // InternalRsamlText.g:4080:3: kw= 'processor'
                     {
-                    kw=(Token)match(input,68,FOLLOW_2); 
+                    kw=(Token)match(input,69,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getProcessorKeyword_21());
@@ -10257,9 +10313,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 23 :
-                    // InternalRsamlText.g:4061:3: kw= 'latency'
+                    // InternalRsamlText.g:4086:3: kw= 'latency'
                     {
-                    kw=(Token)match(input,73,FOLLOW_2); 
+                    kw=(Token)match(input,74,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getLatencyKeyword_22());
@@ -10268,7 +10324,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 24 :
-                    // InternalRsamlText.g:4067:3: kw= 'description'
+                    // InternalRsamlText.g:4092:3: kw= 'description'
                     {
                     kw=(Token)match(input,16,FOLLOW_2); 
 
@@ -10279,7 +10335,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 25 :
-                    // InternalRsamlText.g:4073:3: kw= 'category'
+                    // InternalRsamlText.g:4098:3: kw= 'category'
                     {
                     kw=(Token)match(input,13,FOLLOW_2); 
 
@@ -10290,7 +10346,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 26 :
-                    // InternalRsamlText.g:4079:3: kw= 'declaredLayers'
+                    // InternalRsamlText.g:4104:3: kw= 'declaredLayers'
                     {
                     kw=(Token)match(input,14,FOLLOW_2); 
 
@@ -10301,7 +10357,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 27 :
-                    // InternalRsamlText.g:4085:3: kw= 'unit'
+                    // InternalRsamlText.g:4110:3: kw= 'unit'
                     {
                     kw=(Token)match(input,17,FOLLOW_2); 
 
@@ -10312,7 +10368,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 28 :
-                    // InternalRsamlText.g:4091:3: kw= 'type'
+                    // InternalRsamlText.g:4116:3: kw= 'type'
                     {
                     kw=(Token)match(input,18,FOLLOW_2); 
 
@@ -10323,7 +10379,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 29 :
-                    // InternalRsamlText.g:4097:3: kw= 'execType'
+                    // InternalRsamlText.g:4122:3: kw= 'execType'
                     {
                     kw=(Token)match(input,19,FOLLOW_2); 
 
@@ -10334,7 +10390,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 30 :
-                    // InternalRsamlText.g:4103:3: kw= 'period'
+                    // InternalRsamlText.g:4128:3: kw= 'period'
                     {
                     kw=(Token)match(input,20,FOLLOW_2); 
 
@@ -10345,7 +10401,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 31 :
-                    // InternalRsamlText.g:4109:3: kw= 'deadline'
+                    // InternalRsamlText.g:4134:3: kw= 'deadline'
                     {
                     kw=(Token)match(input,21,FOLLOW_2); 
 
@@ -10356,7 +10412,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 32 :
-                    // InternalRsamlText.g:4115:3: kw= 'wcet'
+                    // InternalRsamlText.g:4140:3: kw= 'wcet'
                     {
                     kw=(Token)match(input,22,FOLLOW_2); 
 
@@ -10367,7 +10423,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 33 :
-                    // InternalRsamlText.g:4121:3: kw= 'level'
+                    // InternalRsamlText.g:4146:3: kw= 'level'
                     {
                     kw=(Token)match(input,24,FOLLOW_2); 
 
@@ -10378,7 +10434,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 34 :
-                    // InternalRsamlText.g:4127:3: kw= 'maxExecTime'
+                    // InternalRsamlText.g:4152:3: kw= 'maxExecTime'
                     {
                     kw=(Token)match(input,25,FOLLOW_2); 
 
@@ -10389,7 +10445,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 35 :
-                    // InternalRsamlText.g:4133:3: kw= 'sensors'
+                    // InternalRsamlText.g:4158:3: kw= 'sensors'
                     {
                     kw=(Token)match(input,27,FOLLOW_2); 
 
@@ -10400,7 +10456,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 36 :
-                    // InternalRsamlText.g:4139:3: kw= 'actuators'
+                    // InternalRsamlText.g:4164:3: kw= 'actuators'
                     {
                     kw=(Token)match(input,29,FOLLOW_2); 
 
@@ -10411,7 +10467,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 37 :
-                    // InternalRsamlText.g:4145:3: kw= 'synchroType'
+                    // InternalRsamlText.g:4170:3: kw= 'synchroType'
                     {
                     kw=(Token)match(input,31,FOLLOW_2); 
 
@@ -10422,7 +10478,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 38 :
-                    // InternalRsamlText.g:4151:3: kw= 'schedPolicy'
+                    // InternalRsamlText.g:4176:3: kw= 'schedPolicy'
                     {
                     kw=(Token)match(input,32,FOLLOW_2); 
 
@@ -10433,7 +10489,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 39 :
-                    // InternalRsamlText.g:4157:3: kw= 'otherPolicy'
+                    // InternalRsamlText.g:4182:3: kw= 'otherPolicy'
                     {
                     kw=(Token)match(input,33,FOLLOW_2); 
 
@@ -10444,7 +10500,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 40 :
-                    // InternalRsamlText.g:4163:3: kw= 'start'
+                    // InternalRsamlText.g:4188:3: kw= 'start'
                     {
                     kw=(Token)match(input,36,FOLLOW_2); 
 
@@ -10455,7 +10511,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 41 :
-                    // InternalRsamlText.g:4169:3: kw= 'dataType'
+                    // InternalRsamlText.g:4194:3: kw= 'dataType'
                     {
                     kw=(Token)match(input,39,FOLLOW_2); 
 
@@ -10466,7 +10522,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 42 :
-                    // InternalRsamlText.g:4175:3: kw= 'messageType'
+                    // InternalRsamlText.g:4200:3: kw= 'messageType'
                     {
                     kw=(Token)match(input,40,FOLLOW_2); 
 
@@ -10477,584 +10533,595 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 43 :
-                    // InternalRsamlText.g:4181:3: kw= 'trigger'
+                    // InternalRsamlText.g:4206:3: kw= 'topic'
                     {
-                    kw=(Token)match(input,44,FOLLOW_2); 
+                    kw=(Token)match(input,41,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getTriggerKeyword_42());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getTopicKeyword_42());
                     		
 
                     }
                     break;
                 case 44 :
-                    // InternalRsamlText.g:4187:3: kw= 'target'
+                    // InternalRsamlText.g:4212:3: kw= 'trigger'
                     {
                     kw=(Token)match(input,45,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getTargetKeyword_43());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getTriggerKeyword_43());
                     		
 
                     }
                     break;
                 case 45 :
-                    // InternalRsamlText.g:4193:3: kw= 'duration'
+                    // InternalRsamlText.g:4218:3: kw= 'target'
                     {
                     kw=(Token)match(input,46,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDurationKeyword_44());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getTargetKeyword_44());
                     		
 
                     }
                     break;
                 case 46 :
-                    // InternalRsamlText.g:4199:3: kw= 'kind'
+                    // InternalRsamlText.g:4224:3: kw= 'duration'
                     {
-                    kw=(Token)match(input,49,FOLLOW_2); 
+                    kw=(Token)match(input,47,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getKindKeyword_45());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDurationKeyword_45());
                     		
 
                     }
                     break;
                 case 47 :
-                    // InternalRsamlText.g:4205:3: kw= 'priority'
+                    // InternalRsamlText.g:4230:3: kw= 'kind'
                     {
-                    kw=(Token)match(input,53,FOLLOW_2); 
+                    kw=(Token)match(input,50,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPriorityKeyword_46());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getKindKeyword_46());
                     		
 
                     }
                     break;
                 case 48 :
-                    // InternalRsamlText.g:4211:3: kw= 'achieves'
+                    // InternalRsamlText.g:4236:3: kw= 'priority'
                     {
-                    kw=(Token)match(input,55,FOLLOW_2); 
+                    kw=(Token)match(input,54,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAchievesKeyword_47());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPriorityKeyword_47());
                     		
 
                     }
                     break;
                 case 49 :
-                    // InternalRsamlText.g:4217:3: kw= 'actions'
+                    // InternalRsamlText.g:4242:3: kw= 'achieves'
                     {
-                    kw=(Token)match(input,57,FOLLOW_2); 
+                    kw=(Token)match(input,56,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getActionsKeyword_48());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAchievesKeyword_48());
                     		
 
                     }
                     break;
                 case 50 :
-                    // InternalRsamlText.g:4223:3: kw= 'plans'
+                    // InternalRsamlText.g:4248:3: kw= 'actions'
                     {
-                    kw=(Token)match(input,59,FOLLOW_2); 
+                    kw=(Token)match(input,58,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlansKeyword_49());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getActionsKeyword_49());
                     		
 
                     }
                     break;
                 case 51 :
-                    // InternalRsamlText.g:4229:3: kw= 'realisedBy'
+                    // InternalRsamlText.g:4254:3: kw= 'plans'
                     {
                     kw=(Token)match(input,60,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealisedByKeyword_50());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlansKeyword_50());
                     		
 
                     }
                     break;
                 case 52 :
-                    // InternalRsamlText.g:4235:3: kw= 'issuer'
+                    // InternalRsamlText.g:4260:3: kw= 'realisedBy'
                     {
-                    kw=(Token)match(input,62,FOLLOW_2); 
+                    kw=(Token)match(input,61,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getIssuerKeyword_51());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealisedByKeyword_51());
                     		
 
                     }
                     break;
                 case 53 :
-                    // InternalRsamlText.g:4241:3: kw= 'receiver'
+                    // InternalRsamlText.g:4266:3: kw= 'issuer'
                     {
                     kw=(Token)match(input,63,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReceiverKeyword_52());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getIssuerKeyword_52());
                     		
 
                     }
                     break;
                 case 54 :
-                    // InternalRsamlText.g:4247:3: kw= 'requests'
+                    // InternalRsamlText.g:4272:3: kw= 'receiver'
                     {
                     kw=(Token)match(input,64,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRequestsKeyword_53());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReceiverKeyword_53());
                     		
 
                     }
                     break;
                 case 55 :
-                    // InternalRsamlText.g:4253:3: kw= 'usedBy'
+                    // InternalRsamlText.g:4278:3: kw= 'requests'
                     {
-                    kw=(Token)match(input,67,FOLLOW_2); 
+                    kw=(Token)match(input,65,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsedByKeyword_54());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRequestsKeyword_54());
                     		
 
                     }
                     break;
                 case 56 :
-                    // InternalRsamlText.g:4259:3: kw= 'core'
+                    // InternalRsamlText.g:4284:3: kw= 'usedBy'
                     {
-                    kw=(Token)match(input,69,FOLLOW_2); 
+                    kw=(Token)match(input,68,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCoreKeyword_55());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsedByKeyword_55());
                     		
 
                     }
                     break;
                 case 57 :
-                    // InternalRsamlText.g:4265:3: kw= 'modules'
+                    // InternalRsamlText.g:4290:3: kw= 'core'
                     {
-                    kw=(Token)match(input,72,FOLLOW_2); 
+                    kw=(Token)match(input,70,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getModulesKeyword_56());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCoreKeyword_56());
                     		
 
                     }
                     break;
                 case 58 :
-                    // InternalRsamlText.g:4271:3: kw= 'from'
+                    // InternalRsamlText.g:4296:3: kw= 'modules'
                     {
-                    kw=(Token)match(input,74,FOLLOW_2); 
+                    kw=(Token)match(input,73,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFromKeyword_57());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getModulesKeyword_57());
                     		
 
                     }
                     break;
                 case 59 :
-                    // InternalRsamlText.g:4277:3: kw= 'to'
+                    // InternalRsamlText.g:4302:3: kw= 'from'
                     {
                     kw=(Token)match(input,75,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_58());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFromKeyword_58());
                     		
 
                     }
                     break;
                 case 60 :
-                    // InternalRsamlText.g:4283:3: kw= 'via'
+                    // InternalRsamlText.g:4308:3: kw= 'to'
                     {
                     kw=(Token)match(input,76,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_59());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_59());
                     		
 
                     }
                     break;
                 case 61 :
-                    // InternalRsamlText.g:4289:3: kw= 'maxLatency'
+                    // InternalRsamlText.g:4314:3: kw= 'via'
                     {
                     kw=(Token)match(input,77,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_60());
                     		
 
                     }
                     break;
                 case 62 :
-                    // InternalRsamlText.g:4295:3: kw= 'host'
+                    // InternalRsamlText.g:4320:3: kw= 'maxLatency'
                     {
-                    kw=(Token)match(input,70,FOLLOW_2); 
+                    kw=(Token)match(input,78,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_61());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_61());
                     		
 
                     }
                     break;
                 case 63 :
-                    // InternalRsamlText.g:4301:3: kw= 'linkLatency'
+                    // InternalRsamlText.g:4326:3: kw= 'host'
                     {
                     kw=(Token)match(input,71,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_62());
                     		
 
                     }
                     break;
                 case 64 :
-                    // InternalRsamlText.g:4307:3: kw= 'centralized'
+                    // InternalRsamlText.g:4332:3: kw= 'linkLatency'
                     {
-                    kw=(Token)match(input,79,FOLLOW_2); 
+                    kw=(Token)match(input,72,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_63());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_63());
                     		
 
                     }
                     break;
                 case 65 :
-                    // InternalRsamlText.g:4313:3: kw= 'hierarchical'
+                    // InternalRsamlText.g:4338:3: kw= 'centralized'
                     {
                     kw=(Token)match(input,80,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_64());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_64());
                     		
 
                     }
                     break;
                 case 66 :
-                    // InternalRsamlText.g:4319:3: kw= 'behavioral'
+                    // InternalRsamlText.g:4344:3: kw= 'hierarchical'
                     {
                     kw=(Token)match(input,81,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_65());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_65());
                     		
 
                     }
                     break;
                 case 67 :
-                    // InternalRsamlText.g:4325:3: kw= 'hybrid'
+                    // InternalRsamlText.g:4350:3: kw= 'behavioral'
                     {
                     kw=(Token)match(input,82,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_66());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_66());
                     		
 
                     }
                     break;
                 case 68 :
-                    // InternalRsamlText.g:4331:3: kw= 'other'
+                    // InternalRsamlText.g:4356:3: kw= 'hybrid'
                     {
                     kw=(Token)match(input,83,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_67());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_67());
                     		
 
                     }
                     break;
                 case 69 :
-                    // InternalRsamlText.g:4337:3: kw= 'simple'
+                    // InternalRsamlText.g:4362:3: kw= 'other'
                     {
                     kw=(Token)match(input,84,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_68());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_68());
                     		
 
                     }
                     break;
                 case 70 :
-                    // InternalRsamlText.g:4343:3: kw= 'realTime'
+                    // InternalRsamlText.g:4368:3: kw= 'simple'
                     {
                     kw=(Token)match(input,85,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_69());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_69());
                     		
 
                     }
                     break;
                 case 71 :
-                    // InternalRsamlText.g:4349:3: kw= 'periodic'
+                    // InternalRsamlText.g:4374:3: kw= 'realTime'
                     {
                     kw=(Token)match(input,86,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_70());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_70());
                     		
 
                     }
                     break;
                 case 72 :
-                    // InternalRsamlText.g:4355:3: kw= 'sporadic'
+                    // InternalRsamlText.g:4380:3: kw= 'periodic'
                     {
                     kw=(Token)match(input,87,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_71());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_71());
                     		
 
                     }
                     break;
                 case 73 :
-                    // InternalRsamlText.g:4361:3: kw= 'aperiodic'
+                    // InternalRsamlText.g:4386:3: kw= 'sporadic'
                     {
                     kw=(Token)match(input,88,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_72());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_72());
                     		
 
                     }
                     break;
                 case 74 :
-                    // InternalRsamlText.g:4367:3: kw= 'ns'
+                    // InternalRsamlText.g:4392:3: kw= 'aperiodic'
                     {
                     kw=(Token)match(input,89,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_73());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_73());
                     		
 
                     }
                     break;
                 case 75 :
-                    // InternalRsamlText.g:4373:3: kw= 'us'
+                    // InternalRsamlText.g:4398:3: kw= 'ns'
                     {
                     kw=(Token)match(input,90,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_74());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_74());
                     		
 
                     }
                     break;
                 case 76 :
-                    // InternalRsamlText.g:4379:3: kw= 'ms'
+                    // InternalRsamlText.g:4404:3: kw= 'us'
                     {
                     kw=(Token)match(input,91,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_75());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_75());
                     		
 
                     }
                     break;
                 case 77 :
-                    // InternalRsamlText.g:4385:3: kw= 's'
+                    // InternalRsamlText.g:4410:3: kw= 'ms'
                     {
                     kw=(Token)match(input,92,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_76());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_76());
                     		
 
                     }
                     break;
                 case 78 :
-                    // InternalRsamlText.g:4391:3: kw= 'synchronous'
+                    // InternalRsamlText.g:4416:3: kw= 's'
                     {
                     kw=(Token)match(input,93,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_77());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_77());
                     		
 
                     }
                     break;
                 case 79 :
-                    // InternalRsamlText.g:4397:3: kw= 'asynchronous'
+                    // InternalRsamlText.g:4422:3: kw= 'synchronous'
                     {
                     kw=(Token)match(input,94,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_78());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_78());
                     		
 
                     }
                     break;
                 case 80 :
-                    // InternalRsamlText.g:4403:3: kw= 'FIFO'
+                    // InternalRsamlText.g:4428:3: kw= 'asynchronous'
                     {
                     kw=(Token)match(input,95,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_79());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_79());
                     		
 
                     }
                     break;
                 case 81 :
-                    // InternalRsamlText.g:4409:3: kw= 'SJF'
+                    // InternalRsamlText.g:4434:3: kw= 'FIFO'
                     {
                     kw=(Token)match(input,96,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_80());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_80());
                     		
 
                     }
                     break;
                 case 82 :
-                    // InternalRsamlText.g:4415:3: kw= 'RR'
+                    // InternalRsamlText.g:4440:3: kw= 'SJF'
                     {
                     kw=(Token)match(input,97,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_81());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_81());
                     		
 
                     }
                     break;
                 case 83 :
-                    // InternalRsamlText.g:4421:3: kw= 'RM'
+                    // InternalRsamlText.g:4446:3: kw= 'RR'
                     {
                     kw=(Token)match(input,98,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_82());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_82());
                     		
 
                     }
                     break;
                 case 84 :
-                    // InternalRsamlText.g:4427:3: kw= 'DM'
+                    // InternalRsamlText.g:4452:3: kw= 'RM'
                     {
                     kw=(Token)match(input,99,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_83());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_83());
                     		
 
                     }
                     break;
                 case 85 :
-                    // InternalRsamlText.g:4433:3: kw= 'EDF'
+                    // InternalRsamlText.g:4458:3: kw= 'DM'
                     {
                     kw=(Token)match(input,100,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_84());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_84());
                     		
 
                     }
                     break;
                 case 86 :
-                    // InternalRsamlText.g:4439:3: kw= 'LLF'
+                    // InternalRsamlText.g:4464:3: kw= 'EDF'
                     {
                     kw=(Token)match(input,101,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_85());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_85());
                     		
 
                     }
                     break;
                 case 87 :
-                    // InternalRsamlText.g:4445:3: kw= 'OTHER'
+                    // InternalRsamlText.g:4470:3: kw= 'LLF'
                     {
                     kw=(Token)match(input,102,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_86());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_86());
                     		
 
                     }
                     break;
                 case 88 :
-                    // InternalRsamlText.g:4451:3: kw= 'numeric'
+                    // InternalRsamlText.g:4476:3: kw= 'OTHER'
                     {
                     kw=(Token)match(input,103,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_87());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_87());
                     		
 
                     }
                     break;
                 case 89 :
-                    // InternalRsamlText.g:4457:3: kw= 'alphanumeric'
+                    // InternalRsamlText.g:4482:3: kw= 'numeric'
                     {
                     kw=(Token)match(input,104,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_88());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_88());
                     		
 
                     }
                     break;
                 case 90 :
-                    // InternalRsamlText.g:4463:3: kw= 'boolean'
+                    // InternalRsamlText.g:4488:3: kw= 'alphanumeric'
                     {
                     kw=(Token)match(input,105,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_89());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_89());
                     		
 
                     }
                     break;
                 case 91 :
-                    // InternalRsamlText.g:4469:3: kw= 'structured'
+                    // InternalRsamlText.g:4494:3: kw= 'boolean'
                     {
                     kw=(Token)match(input,106,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_90());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_90());
                     		
 
                     }
                     break;
                 case 92 :
-                    // InternalRsamlText.g:4475:3: kw= 'reactionTime'
+                    // InternalRsamlText.g:4500:3: kw= 'structured'
                     {
                     kw=(Token)match(input,107,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_91());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_91());
                     		
 
                     }
                     break;
                 case 93 :
-                    // InternalRsamlText.g:4481:3: kw= 'dataAge'
+                    // InternalRsamlText.g:4506:3: kw= 'reactionTime'
                     {
                     kw=(Token)match(input,108,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_92());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_92());
                     		
 
                     }
                     break;
                 case 94 :
-                    // InternalRsamlText.g:4487:3: kw= 'NaN'
+                    // InternalRsamlText.g:4512:3: kw= 'dataAge'
                     {
                     kw=(Token)match(input,109,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_93());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_93());
                     		
 
                     }
                     break;
                 case 95 :
-                    // InternalRsamlText.g:4493:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4518:3: kw= 'NaN'
                     {
                     kw=(Token)match(input,110,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_94());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_94());
+                    		
+
+                    }
+                    break;
+                case 96 :
+                    // InternalRsamlText.g:4524:3: kw= 'Infinity'
+                    {
+                    kw=(Token)match(input,111,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_95());
                     		
 
                     }
@@ -11082,7 +11149,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleReal"
-    // InternalRsamlText.g:4502:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
+    // InternalRsamlText.g:4533:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
     public final String entryRuleReal() throws RecognitionException {
         String current = null;
 
@@ -11090,8 +11157,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4502:44: (iv_ruleReal= ruleReal EOF )
-            // InternalRsamlText.g:4503:2: iv_ruleReal= ruleReal EOF
+            // InternalRsamlText.g:4533:44: (iv_ruleReal= ruleReal EOF )
+            // InternalRsamlText.g:4534:2: iv_ruleReal= ruleReal EOF
             {
              newCompositeNode(grammarAccess.getRealRule()); 
             pushFollow(FOLLOW_1);
@@ -11118,7 +11185,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleReal"
-    // InternalRsamlText.g:4509:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
+    // InternalRsamlText.g:4540:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
     public final AntlrDatatypeRuleToken ruleReal() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -11129,10 +11196,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4515:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
-            // InternalRsamlText.g:4516:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4546:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
+            // InternalRsamlText.g:4547:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             {
-            // InternalRsamlText.g:4516:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4547:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             int alt58=4;
             switch ( input.LA(1) ) {
             case RULE_NUMBER:
@@ -11140,17 +11207,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt58=1;
                 }
                 break;
-            case 109:
+            case 110:
                 {
                 alt58=2;
                 }
                 break;
-            case 110:
+            case 111:
                 {
                 alt58=3;
                 }
                 break;
-            case 111:
+            case 112:
                 {
                 alt58=4;
                 }
@@ -11164,7 +11231,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt58) {
                 case 1 :
-                    // InternalRsamlText.g:4517:3: this_NUMBER_0= RULE_NUMBER
+                    // InternalRsamlText.g:4548:3: this_NUMBER_0= RULE_NUMBER
                     {
                     this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -11177,9 +11244,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4525:3: kw= 'NaN'
+                    // InternalRsamlText.g:4556:3: kw= 'NaN'
                     {
-                    kw=(Token)match(input,109,FOLLOW_2); 
+                    kw=(Token)match(input,110,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getNaNKeyword_1());
@@ -11188,9 +11255,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4531:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4562:3: kw= 'Infinity'
                     {
-                    kw=(Token)match(input,110,FOLLOW_2); 
+                    kw=(Token)match(input,111,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_2());
@@ -11199,17 +11266,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4537:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4568:3: (kw= '-' kw= 'Infinity' )
                     {
-                    // InternalRsamlText.g:4537:3: (kw= '-' kw= 'Infinity' )
-                    // InternalRsamlText.g:4538:4: kw= '-' kw= 'Infinity'
+                    // InternalRsamlText.g:4568:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4569:4: kw= '-' kw= 'Infinity'
                     {
-                    kw=(Token)match(input,111,FOLLOW_47); 
+                    kw=(Token)match(input,112,FOLLOW_47); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getHyphenMinusKeyword_3_0());
                     			
-                    kw=(Token)match(input,110,FOLLOW_2); 
+                    kw=(Token)match(input,111,FOLLOW_2); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_3_1());
@@ -11243,7 +11310,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleInteger"
-    // InternalRsamlText.g:4553:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
+    // InternalRsamlText.g:4584:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
     public final String entryRuleInteger() throws RecognitionException {
         String current = null;
 
@@ -11251,8 +11318,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4553:47: (iv_ruleInteger= ruleInteger EOF )
-            // InternalRsamlText.g:4554:2: iv_ruleInteger= ruleInteger EOF
+            // InternalRsamlText.g:4584:47: (iv_ruleInteger= ruleInteger EOF )
+            // InternalRsamlText.g:4585:2: iv_ruleInteger= ruleInteger EOF
             {
              newCompositeNode(grammarAccess.getIntegerRule()); 
             pushFollow(FOLLOW_1);
@@ -11279,7 +11346,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleInteger"
-    // InternalRsamlText.g:4560:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
+    // InternalRsamlText.g:4591:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
     public final AntlrDatatypeRuleToken ruleInteger() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -11289,8 +11356,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4566:2: (this_NUMBER_0= RULE_NUMBER )
-            // InternalRsamlText.g:4567:2: this_NUMBER_0= RULE_NUMBER
+            // InternalRsamlText.g:4597:2: (this_NUMBER_0= RULE_NUMBER )
+            // InternalRsamlText.g:4598:2: this_NUMBER_0= RULE_NUMBER
             {
             this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -11319,7 +11386,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleArchitectureCategory"
-    // InternalRsamlText.g:4577:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
+    // InternalRsamlText.g:4608:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
     public final Enumerator ruleArchitectureCategory() throws RecognitionException {
         Enumerator current = null;
 
@@ -11333,33 +11400,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4583:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
-            // InternalRsamlText.g:4584:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4614:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
+            // InternalRsamlText.g:4615:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             {
-            // InternalRsamlText.g:4584:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4615:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             int alt59=5;
             switch ( input.LA(1) ) {
-            case 79:
+            case 80:
                 {
                 alt59=1;
                 }
                 break;
-            case 80:
+            case 81:
                 {
                 alt59=2;
                 }
                 break;
-            case 81:
+            case 82:
                 {
                 alt59=3;
                 }
                 break;
-            case 82:
+            case 83:
                 {
                 alt59=4;
                 }
                 break;
-            case 83:
+            case 84:
                 {
                 alt59=5;
                 }
@@ -11373,12 +11440,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt59) {
                 case 1 :
-                    // InternalRsamlText.g:4585:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4616:3: (enumLiteral_0= 'centralized' )
                     {
-                    // InternalRsamlText.g:4585:3: (enumLiteral_0= 'centralized' )
-                    // InternalRsamlText.g:4586:4: enumLiteral_0= 'centralized'
+                    // InternalRsamlText.g:4616:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4617:4: enumLiteral_0= 'centralized'
                     {
-                    enumLiteral_0=(Token)match(input,79,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,80,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0());
@@ -11390,12 +11457,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4593:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4624:3: (enumLiteral_1= 'hierarchical' )
                     {
-                    // InternalRsamlText.g:4593:3: (enumLiteral_1= 'hierarchical' )
-                    // InternalRsamlText.g:4594:4: enumLiteral_1= 'hierarchical'
+                    // InternalRsamlText.g:4624:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4625:4: enumLiteral_1= 'hierarchical'
                     {
-                    enumLiteral_1=(Token)match(input,80,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,81,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1());
@@ -11407,12 +11474,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4601:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4632:3: (enumLiteral_2= 'behavioral' )
                     {
-                    // InternalRsamlText.g:4601:3: (enumLiteral_2= 'behavioral' )
-                    // InternalRsamlText.g:4602:4: enumLiteral_2= 'behavioral'
+                    // InternalRsamlText.g:4632:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4633:4: enumLiteral_2= 'behavioral'
                     {
-                    enumLiteral_2=(Token)match(input,81,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,82,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2());
@@ -11424,12 +11491,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4609:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4640:3: (enumLiteral_3= 'hybrid' )
                     {
-                    // InternalRsamlText.g:4609:3: (enumLiteral_3= 'hybrid' )
-                    // InternalRsamlText.g:4610:4: enumLiteral_3= 'hybrid'
+                    // InternalRsamlText.g:4640:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4641:4: enumLiteral_3= 'hybrid'
                     {
-                    enumLiteral_3=(Token)match(input,82,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,83,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3());
@@ -11441,12 +11508,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4617:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4648:3: (enumLiteral_4= 'other' )
                     {
-                    // InternalRsamlText.g:4617:3: (enumLiteral_4= 'other' )
-                    // InternalRsamlText.g:4618:4: enumLiteral_4= 'other'
+                    // InternalRsamlText.g:4648:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4649:4: enumLiteral_4= 'other'
                     {
-                    enumLiteral_4=(Token)match(input,83,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,84,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4());
@@ -11480,7 +11547,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleElementType"
-    // InternalRsamlText.g:4628:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
+    // InternalRsamlText.g:4659:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
     public final Enumerator ruleElementType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11491,17 +11558,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4634:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
-            // InternalRsamlText.g:4635:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4665:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
+            // InternalRsamlText.g:4666:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             {
-            // InternalRsamlText.g:4635:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4666:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             int alt60=2;
             int LA60_0 = input.LA(1);
 
-            if ( (LA60_0==84) ) {
+            if ( (LA60_0==85) ) {
                 alt60=1;
             }
-            else if ( (LA60_0==85) ) {
+            else if ( (LA60_0==86) ) {
                 alt60=2;
             }
             else {
@@ -11512,12 +11579,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt60) {
                 case 1 :
-                    // InternalRsamlText.g:4636:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4667:3: (enumLiteral_0= 'simple' )
                     {
-                    // InternalRsamlText.g:4636:3: (enumLiteral_0= 'simple' )
-                    // InternalRsamlText.g:4637:4: enumLiteral_0= 'simple'
+                    // InternalRsamlText.g:4667:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4668:4: enumLiteral_0= 'simple'
                     {
-                    enumLiteral_0=(Token)match(input,84,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,85,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0());
@@ -11529,12 +11596,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4644:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4675:3: (enumLiteral_1= 'realTime' )
                     {
-                    // InternalRsamlText.g:4644:3: (enumLiteral_1= 'realTime' )
-                    // InternalRsamlText.g:4645:4: enumLiteral_1= 'realTime'
+                    // InternalRsamlText.g:4675:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4676:4: enumLiteral_1= 'realTime'
                     {
-                    enumLiteral_1=(Token)match(input,85,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,86,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1());
@@ -11568,7 +11635,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleExecutionType"
-    // InternalRsamlText.g:4655:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
+    // InternalRsamlText.g:4686:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
     public final Enumerator ruleExecutionType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11580,23 +11647,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4661:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
-            // InternalRsamlText.g:4662:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4692:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
+            // InternalRsamlText.g:4693:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             {
-            // InternalRsamlText.g:4662:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4693:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             int alt61=3;
             switch ( input.LA(1) ) {
-            case 86:
+            case 87:
                 {
                 alt61=1;
                 }
                 break;
-            case 87:
+            case 88:
                 {
                 alt61=2;
                 }
                 break;
-            case 88:
+            case 89:
                 {
                 alt61=3;
                 }
@@ -11610,12 +11677,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt61) {
                 case 1 :
-                    // InternalRsamlText.g:4663:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4694:3: (enumLiteral_0= 'periodic' )
                     {
-                    // InternalRsamlText.g:4663:3: (enumLiteral_0= 'periodic' )
-                    // InternalRsamlText.g:4664:4: enumLiteral_0= 'periodic'
+                    // InternalRsamlText.g:4694:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4695:4: enumLiteral_0= 'periodic'
                     {
-                    enumLiteral_0=(Token)match(input,86,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,87,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0());
@@ -11627,12 +11694,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4671:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4702:3: (enumLiteral_1= 'sporadic' )
                     {
-                    // InternalRsamlText.g:4671:3: (enumLiteral_1= 'sporadic' )
-                    // InternalRsamlText.g:4672:4: enumLiteral_1= 'sporadic'
+                    // InternalRsamlText.g:4702:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4703:4: enumLiteral_1= 'sporadic'
                     {
-                    enumLiteral_1=(Token)match(input,87,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,88,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1());
@@ -11644,12 +11711,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4679:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4710:3: (enumLiteral_2= 'aperiodic' )
                     {
-                    // InternalRsamlText.g:4679:3: (enumLiteral_2= 'aperiodic' )
-                    // InternalRsamlText.g:4680:4: enumLiteral_2= 'aperiodic'
+                    // InternalRsamlText.g:4710:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4711:4: enumLiteral_2= 'aperiodic'
                     {
-                    enumLiteral_2=(Token)match(input,88,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,89,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2());
@@ -11683,7 +11750,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleTimeUnit"
-    // InternalRsamlText.g:4690:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
+    // InternalRsamlText.g:4721:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
     public final Enumerator ruleTimeUnit() throws RecognitionException {
         Enumerator current = null;
 
@@ -11696,28 +11763,28 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4696:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
-            // InternalRsamlText.g:4697:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4727:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
+            // InternalRsamlText.g:4728:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             {
-            // InternalRsamlText.g:4697:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4728:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             int alt62=4;
             switch ( input.LA(1) ) {
-            case 89:
+            case 90:
                 {
                 alt62=1;
                 }
                 break;
-            case 90:
+            case 91:
                 {
                 alt62=2;
                 }
                 break;
-            case 91:
+            case 92:
                 {
                 alt62=3;
                 }
                 break;
-            case 92:
+            case 93:
                 {
                 alt62=4;
                 }
@@ -11731,12 +11798,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt62) {
                 case 1 :
-                    // InternalRsamlText.g:4698:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4729:3: (enumLiteral_0= 'ns' )
                     {
-                    // InternalRsamlText.g:4698:3: (enumLiteral_0= 'ns' )
-                    // InternalRsamlText.g:4699:4: enumLiteral_0= 'ns'
+                    // InternalRsamlText.g:4729:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4730:4: enumLiteral_0= 'ns'
                     {
-                    enumLiteral_0=(Token)match(input,89,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,90,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0());
@@ -11748,12 +11815,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4706:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4737:3: (enumLiteral_1= 'us' )
                     {
-                    // InternalRsamlText.g:4706:3: (enumLiteral_1= 'us' )
-                    // InternalRsamlText.g:4707:4: enumLiteral_1= 'us'
+                    // InternalRsamlText.g:4737:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4738:4: enumLiteral_1= 'us'
                     {
-                    enumLiteral_1=(Token)match(input,90,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,91,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1());
@@ -11765,12 +11832,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4714:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4745:3: (enumLiteral_2= 'ms' )
                     {
-                    // InternalRsamlText.g:4714:3: (enumLiteral_2= 'ms' )
-                    // InternalRsamlText.g:4715:4: enumLiteral_2= 'ms'
+                    // InternalRsamlText.g:4745:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4746:4: enumLiteral_2= 'ms'
                     {
-                    enumLiteral_2=(Token)match(input,91,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,92,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2());
@@ -11782,12 +11849,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4722:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4753:3: (enumLiteral_3= 's' )
                     {
-                    // InternalRsamlText.g:4722:3: (enumLiteral_3= 's' )
-                    // InternalRsamlText.g:4723:4: enumLiteral_3= 's'
+                    // InternalRsamlText.g:4753:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4754:4: enumLiteral_3= 's'
                     {
-                    enumLiteral_3=(Token)match(input,92,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,93,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3());
@@ -11821,7 +11888,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSynchronisationType"
-    // InternalRsamlText.g:4733:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
+    // InternalRsamlText.g:4764:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
     public final Enumerator ruleSynchronisationType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11832,17 +11899,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4739:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
-            // InternalRsamlText.g:4740:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4770:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
+            // InternalRsamlText.g:4771:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             {
-            // InternalRsamlText.g:4740:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4771:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             int alt63=2;
             int LA63_0 = input.LA(1);
 
-            if ( (LA63_0==93) ) {
+            if ( (LA63_0==94) ) {
                 alt63=1;
             }
-            else if ( (LA63_0==94) ) {
+            else if ( (LA63_0==95) ) {
                 alt63=2;
             }
             else {
@@ -11853,12 +11920,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt63) {
                 case 1 :
-                    // InternalRsamlText.g:4741:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4772:3: (enumLiteral_0= 'synchronous' )
                     {
-                    // InternalRsamlText.g:4741:3: (enumLiteral_0= 'synchronous' )
-                    // InternalRsamlText.g:4742:4: enumLiteral_0= 'synchronous'
+                    // InternalRsamlText.g:4772:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4773:4: enumLiteral_0= 'synchronous'
                     {
-                    enumLiteral_0=(Token)match(input,93,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,94,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0());
@@ -11870,12 +11937,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4749:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4780:3: (enumLiteral_1= 'asynchronous' )
                     {
-                    // InternalRsamlText.g:4749:3: (enumLiteral_1= 'asynchronous' )
-                    // InternalRsamlText.g:4750:4: enumLiteral_1= 'asynchronous'
+                    // InternalRsamlText.g:4780:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4781:4: enumLiteral_1= 'asynchronous'
                     {
-                    enumLiteral_1=(Token)match(input,94,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,95,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1());
@@ -11909,7 +11976,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSchedulingPolicy"
-    // InternalRsamlText.g:4760:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
+    // InternalRsamlText.g:4791:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
     public final Enumerator ruleSchedulingPolicy() throws RecognitionException {
         Enumerator current = null;
 
@@ -11926,48 +11993,48 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4766:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
-            // InternalRsamlText.g:4767:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4797:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
+            // InternalRsamlText.g:4798:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             {
-            // InternalRsamlText.g:4767:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4798:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             int alt64=8;
             switch ( input.LA(1) ) {
-            case 95:
+            case 96:
                 {
                 alt64=1;
                 }
                 break;
-            case 96:
+            case 97:
                 {
                 alt64=2;
                 }
                 break;
-            case 97:
+            case 98:
                 {
                 alt64=3;
                 }
                 break;
-            case 98:
+            case 99:
                 {
                 alt64=4;
                 }
                 break;
-            case 99:
+            case 100:
                 {
                 alt64=5;
                 }
                 break;
-            case 100:
+            case 101:
                 {
                 alt64=6;
                 }
                 break;
-            case 101:
+            case 102:
                 {
                 alt64=7;
                 }
                 break;
-            case 102:
+            case 103:
                 {
                 alt64=8;
                 }
@@ -11981,12 +12048,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt64) {
                 case 1 :
-                    // InternalRsamlText.g:4768:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4799:3: (enumLiteral_0= 'FIFO' )
                     {
-                    // InternalRsamlText.g:4768:3: (enumLiteral_0= 'FIFO' )
-                    // InternalRsamlText.g:4769:4: enumLiteral_0= 'FIFO'
+                    // InternalRsamlText.g:4799:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4800:4: enumLiteral_0= 'FIFO'
                     {
-                    enumLiteral_0=(Token)match(input,95,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,96,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0());
@@ -11998,12 +12065,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4776:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4807:3: (enumLiteral_1= 'SJF' )
                     {
-                    // InternalRsamlText.g:4776:3: (enumLiteral_1= 'SJF' )
-                    // InternalRsamlText.g:4777:4: enumLiteral_1= 'SJF'
+                    // InternalRsamlText.g:4807:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4808:4: enumLiteral_1= 'SJF'
                     {
-                    enumLiteral_1=(Token)match(input,96,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,97,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1());
@@ -12015,12 +12082,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4784:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4815:3: (enumLiteral_2= 'RR' )
                     {
-                    // InternalRsamlText.g:4784:3: (enumLiteral_2= 'RR' )
-                    // InternalRsamlText.g:4785:4: enumLiteral_2= 'RR'
+                    // InternalRsamlText.g:4815:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4816:4: enumLiteral_2= 'RR'
                     {
-                    enumLiteral_2=(Token)match(input,97,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,98,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2());
@@ -12032,12 +12099,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4792:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4823:3: (enumLiteral_3= 'RM' )
                     {
-                    // InternalRsamlText.g:4792:3: (enumLiteral_3= 'RM' )
-                    // InternalRsamlText.g:4793:4: enumLiteral_3= 'RM'
+                    // InternalRsamlText.g:4823:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4824:4: enumLiteral_3= 'RM'
                     {
-                    enumLiteral_3=(Token)match(input,98,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,99,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3());
@@ -12049,12 +12116,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4800:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4831:3: (enumLiteral_4= 'DM' )
                     {
-                    // InternalRsamlText.g:4800:3: (enumLiteral_4= 'DM' )
-                    // InternalRsamlText.g:4801:4: enumLiteral_4= 'DM'
+                    // InternalRsamlText.g:4831:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4832:4: enumLiteral_4= 'DM'
                     {
-                    enumLiteral_4=(Token)match(input,99,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,100,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4());
@@ -12066,12 +12133,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:4808:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4839:3: (enumLiteral_5= 'EDF' )
                     {
-                    // InternalRsamlText.g:4808:3: (enumLiteral_5= 'EDF' )
-                    // InternalRsamlText.g:4809:4: enumLiteral_5= 'EDF'
+                    // InternalRsamlText.g:4839:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4840:4: enumLiteral_5= 'EDF'
                     {
-                    enumLiteral_5=(Token)match(input,100,FOLLOW_2); 
+                    enumLiteral_5=(Token)match(input,101,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_5, grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5());
@@ -12083,12 +12150,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:4816:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4847:3: (enumLiteral_6= 'LLF' )
                     {
-                    // InternalRsamlText.g:4816:3: (enumLiteral_6= 'LLF' )
-                    // InternalRsamlText.g:4817:4: enumLiteral_6= 'LLF'
+                    // InternalRsamlText.g:4847:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4848:4: enumLiteral_6= 'LLF'
                     {
-                    enumLiteral_6=(Token)match(input,101,FOLLOW_2); 
+                    enumLiteral_6=(Token)match(input,102,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_6, grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6());
@@ -12100,12 +12167,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:4824:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4855:3: (enumLiteral_7= 'OTHER' )
                     {
-                    // InternalRsamlText.g:4824:3: (enumLiteral_7= 'OTHER' )
-                    // InternalRsamlText.g:4825:4: enumLiteral_7= 'OTHER'
+                    // InternalRsamlText.g:4855:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4856:4: enumLiteral_7= 'OTHER'
                     {
-                    enumLiteral_7=(Token)match(input,102,FOLLOW_2); 
+                    enumLiteral_7=(Token)match(input,103,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_7, grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7());
@@ -12139,7 +12206,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDataType"
-    // InternalRsamlText.g:4835:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
+    // InternalRsamlText.g:4866:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
     public final Enumerator ruleDataType() throws RecognitionException {
         Enumerator current = null;
 
@@ -12152,28 +12219,28 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4841:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
-            // InternalRsamlText.g:4842:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4872:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
+            // InternalRsamlText.g:4873:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             {
-            // InternalRsamlText.g:4842:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4873:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             int alt65=4;
             switch ( input.LA(1) ) {
-            case 103:
+            case 104:
                 {
                 alt65=1;
                 }
                 break;
-            case 104:
+            case 105:
                 {
                 alt65=2;
                 }
                 break;
-            case 105:
+            case 106:
                 {
                 alt65=3;
                 }
                 break;
-            case 106:
+            case 107:
                 {
                 alt65=4;
                 }
@@ -12187,12 +12254,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt65) {
                 case 1 :
-                    // InternalRsamlText.g:4843:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4874:3: (enumLiteral_0= 'numeric' )
                     {
-                    // InternalRsamlText.g:4843:3: (enumLiteral_0= 'numeric' )
-                    // InternalRsamlText.g:4844:4: enumLiteral_0= 'numeric'
+                    // InternalRsamlText.g:4874:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4875:4: enumLiteral_0= 'numeric'
                     {
-                    enumLiteral_0=(Token)match(input,103,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,104,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0());
@@ -12204,12 +12271,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4851:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4882:3: (enumLiteral_1= 'alphanumeric' )
                     {
-                    // InternalRsamlText.g:4851:3: (enumLiteral_1= 'alphanumeric' )
-                    // InternalRsamlText.g:4852:4: enumLiteral_1= 'alphanumeric'
+                    // InternalRsamlText.g:4882:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4883:4: enumLiteral_1= 'alphanumeric'
                     {
-                    enumLiteral_1=(Token)match(input,104,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,105,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1());
@@ -12221,12 +12288,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4859:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4890:3: (enumLiteral_2= 'boolean' )
                     {
-                    // InternalRsamlText.g:4859:3: (enumLiteral_2= 'boolean' )
-                    // InternalRsamlText.g:4860:4: enumLiteral_2= 'boolean'
+                    // InternalRsamlText.g:4890:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4891:4: enumLiteral_2= 'boolean'
                     {
-                    enumLiteral_2=(Token)match(input,105,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,106,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2());
@@ -12238,12 +12305,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4867:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4898:3: (enumLiteral_3= 'structured' )
                     {
-                    // InternalRsamlText.g:4867:3: (enumLiteral_3= 'structured' )
-                    // InternalRsamlText.g:4868:4: enumLiteral_3= 'structured'
+                    // InternalRsamlText.g:4898:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4899:4: enumLiteral_3= 'structured'
                     {
-                    enumLiteral_3=(Token)match(input,106,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,107,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3());
@@ -12277,7 +12344,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyKind"
-    // InternalRsamlText.g:4878:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
+    // InternalRsamlText.g:4909:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
     public final Enumerator ruleLatencyKind() throws RecognitionException {
         Enumerator current = null;
 
@@ -12288,17 +12355,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4884:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
-            // InternalRsamlText.g:4885:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4915:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
+            // InternalRsamlText.g:4916:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
             {
-            // InternalRsamlText.g:4885:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4916:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
             int alt66=2;
             int LA66_0 = input.LA(1);
 
-            if ( (LA66_0==107) ) {
+            if ( (LA66_0==108) ) {
                 alt66=1;
             }
-            else if ( (LA66_0==108) ) {
+            else if ( (LA66_0==109) ) {
                 alt66=2;
             }
             else {
@@ -12309,12 +12376,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt66) {
                 case 1 :
-                    // InternalRsamlText.g:4886:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4917:3: (enumLiteral_0= 'reactionTime' )
                     {
-                    // InternalRsamlText.g:4886:3: (enumLiteral_0= 'reactionTime' )
-                    // InternalRsamlText.g:4887:4: enumLiteral_0= 'reactionTime'
+                    // InternalRsamlText.g:4917:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4918:4: enumLiteral_0= 'reactionTime'
                     {
-                    enumLiteral_0=(Token)match(input,107,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,108,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0());
@@ -12326,12 +12393,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4894:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:4925:3: (enumLiteral_1= 'dataAge' )
                     {
-                    // InternalRsamlText.g:4894:3: (enumLiteral_1= 'dataAge' )
-                    // InternalRsamlText.g:4895:4: enumLiteral_1= 'dataAge'
+                    // InternalRsamlText.g:4925:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:4926:4: enumLiteral_1= 'dataAge'
                     {
-                    enumLiteral_1=(Token)match(input,108,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,109,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1());
@@ -12370,50 +12437,50 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
     public static final BitSet FOLLOW_1 = new BitSet(new long[]{0x0000000000000000L});
     public static final BitSet FOLLOW_2 = new BitSet(new long[]{0x0000000000000002L});
-    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFFBFFEFFF7830L,0x00007FFFFFFFBFFFL});
+    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFF7FFEFFF7830L,0x0000FFFFFFFF7FFFL});
     public static final BitSet FOLLOW_4 = new BitSet(new long[]{0x0000000000001000L});
-    public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x240D02000081E000L,0x0000000000000212L});
-    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x00000000000F8000L});
+    public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x481A04000081E000L,0x0000000000000424L});
+    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x00000000001F0000L});
     public static final BitSet FOLLOW_7 = new BitSet(new long[]{0x0000000000000040L});
     public static final BitSet FOLLOW_8 = new BitSet(new long[]{0x0000000000000010L});
-    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x000000001E000000L});
-    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x0000000000300000L});
-    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000001C00000L});
-    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x0000E00000000000L});
+    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x000000003C000000L});
+    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x0000000000600000L});
+    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000003800000L});
+    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x0001C00000000000L});
     public static final BitSet FOLLOW_13 = new BitSet(new long[]{0x0000000007038000L});
-    public static final BitSet FOLLOW_14 = new BitSet(new long[]{0x00008860687F8000L});
+    public static final BitSet FOLLOW_14 = new BitSet(new long[]{0x00011060687F8000L});
     public static final BitSet FOLLOW_15 = new BitSet(new long[]{0x0000000000000030L});
-    public static final BitSet FOLLOW_16 = new BitSet(new long[]{0x00008860787F8000L});
+    public static final BitSet FOLLOW_16 = new BitSet(new long[]{0x00011060787F8000L});
     public static final BitSet FOLLOW_17 = new BitSet(new long[]{0x0000000F807F8000L});
-    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x0000000060000000L});
-    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x0000007F80000000L});
+    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x00000000C0000000L});
+    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x000000FF00000000L});
     public static final BitSet FOLLOW_20 = new BitSet(new long[]{0x00000010007F8000L});
-    public static final BitSet FOLLOW_21 = new BitSet(new long[]{0x0000018000018000L});
-    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x0000078000000000L});
-    public static final BitSet FOLLOW_23 = new BitSet(new long[]{0x0000040000000030L});
-    public static final BitSet FOLLOW_24 = new BitSet(new long[]{0x0000040000000000L});
+    public static final BitSet FOLLOW_21 = new BitSet(new long[]{0x0000038000018000L});
+    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x00000F0000000000L});
+    public static final BitSet FOLLOW_23 = new BitSet(new long[]{0x0000080000000030L});
+    public static final BitSet FOLLOW_24 = new BitSet(new long[]{0x0000080000000000L});
     public static final BitSet FOLLOW_25 = new BitSet(new long[]{0x0000000000000032L});
-    public static final BitSet FOLLOW_26 = new BitSet(new long[]{0x0000700000038000L});
-    public static final BitSet FOLLOW_27 = new BitSet(new long[]{0x0002008000138000L});
-    public static final BitSet FOLLOW_28 = new BitSet(new long[]{0x0050000000018000L});
-    public static final BitSet FOLLOW_29 = new BitSet(new long[]{0x0030000000018000L});
-    public static final BitSet FOLLOW_30 = new BitSet(new long[]{0x0180000000018000L});
-    public static final BitSet FOLLOW_31 = new BitSet(new long[]{0x0180000010018000L});
-    public static final BitSet FOLLOW_32 = new BitSet(new long[]{0x02000000007F8000L});
-    public static final BitSet FOLLOW_33 = new BitSet(new long[]{0x02000000107F8000L});
-    public static final BitSet FOLLOW_34 = new BitSet(new long[]{0x1800000000018000L});
-    public static final BitSet FOLLOW_35 = new BitSet(new long[]{0x1800000010018000L});
-    public static final BitSet FOLLOW_36 = new BitSet(new long[]{0xC000000000018000L,0x0000000000000001L});
-    public static final BitSet FOLLOW_37 = new BitSet(new long[]{0x0000000000018000L,0x0000000000000004L});
-    public static final BitSet FOLLOW_38 = new BitSet(new long[]{0x0000008000018000L,0x0000000000000008L});
-    public static final BitSet FOLLOW_39 = new BitSet(new long[]{0x0000008010018000L,0x0000000000000008L});
-    public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000000100038000L,0x00000000000001E0L});
-    public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000110038000L,0x00000000000001E0L});
-    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0002000000038000L,0x0000000000003C00L});
-    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0002000010038000L,0x0000000000003C00L});
-    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000000L,0x0000180000000000L});
-    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000002L,0x0000000000004000L});
-    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0xFFFFFBFFEFFF6830L,0x00007FFFFFFFBFFFL});
-    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0x0000000000000000L,0x0000400000000000L});
+    public static final BitSet FOLLOW_26 = new BitSet(new long[]{0x0000E00000038000L});
+    public static final BitSet FOLLOW_27 = new BitSet(new long[]{0x0004008000138000L});
+    public static final BitSet FOLLOW_28 = new BitSet(new long[]{0x00A0000000018000L});
+    public static final BitSet FOLLOW_29 = new BitSet(new long[]{0x0060000000018000L});
+    public static final BitSet FOLLOW_30 = new BitSet(new long[]{0x0300000000018000L});
+    public static final BitSet FOLLOW_31 = new BitSet(new long[]{0x0300000010018000L});
+    public static final BitSet FOLLOW_32 = new BitSet(new long[]{0x04000000007F8000L});
+    public static final BitSet FOLLOW_33 = new BitSet(new long[]{0x04000000107F8000L});
+    public static final BitSet FOLLOW_34 = new BitSet(new long[]{0x3000000000018000L});
+    public static final BitSet FOLLOW_35 = new BitSet(new long[]{0x3000000010018000L});
+    public static final BitSet FOLLOW_36 = new BitSet(new long[]{0x8000000000018000L,0x0000000000000003L});
+    public static final BitSet FOLLOW_37 = new BitSet(new long[]{0x0000000000018000L,0x0000000000000008L});
+    public static final BitSet FOLLOW_38 = new BitSet(new long[]{0x0000008000018000L,0x0000000000000010L});
+    public static final BitSet FOLLOW_39 = new BitSet(new long[]{0x0000008010018000L,0x0000000000000010L});
+    public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000000100038000L,0x00000000000003C0L});
+    public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000110038000L,0x00000000000003C0L});
+    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0004000000038000L,0x0000000000007800L});
+    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0004000010038000L,0x0000000000007800L});
+    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000000L,0x0000300000000000L});
+    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000002L,0x0000000000008000L});
+    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0xFFFFF7FFEFFF6830L,0x0000FFFFFFFF7FFFL});
+    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0x0000000000000000L,0x0000800000000000L});
 
 }

@@ -1242,6 +1242,12 @@ rule__Port__Alternatives_3
 		(rule__Port__Group_3_2__0)
 		{ after(grammarAccess.getPortAccess().getGroup_3_2()); }
 	)
+	|
+	(
+		{ before(grammarAccess.getPortAccess().getGroup_3_3()); }
+		(rule__Port__Group_3_3__0)
+		{ after(grammarAccess.getPortAccess().getGroup_3_3()); }
+	)
 ;
 finally {
 	restoreStackSize(stackSize);
@@ -2027,321 +2033,327 @@ rule__Keyword__Alternatives
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getTriggerKeyword_42()); }
+		{ before(grammarAccess.getKeywordAccess().getTopicKeyword_42()); }
+		'topic'
+		{ after(grammarAccess.getKeywordAccess().getTopicKeyword_42()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getTriggerKeyword_43()); }
 		'trigger'
-		{ after(grammarAccess.getKeywordAccess().getTriggerKeyword_42()); }
+		{ after(grammarAccess.getKeywordAccess().getTriggerKeyword_43()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getTargetKeyword_43()); }
+		{ before(grammarAccess.getKeywordAccess().getTargetKeyword_44()); }
 		'target'
-		{ after(grammarAccess.getKeywordAccess().getTargetKeyword_43()); }
+		{ after(grammarAccess.getKeywordAccess().getTargetKeyword_44()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDurationKeyword_44()); }
+		{ before(grammarAccess.getKeywordAccess().getDurationKeyword_45()); }
 		'duration'
-		{ after(grammarAccess.getKeywordAccess().getDurationKeyword_44()); }
+		{ after(grammarAccess.getKeywordAccess().getDurationKeyword_45()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getKindKeyword_45()); }
+		{ before(grammarAccess.getKeywordAccess().getKindKeyword_46()); }
 		'kind'
-		{ after(grammarAccess.getKeywordAccess().getKindKeyword_45()); }
+		{ after(grammarAccess.getKeywordAccess().getKindKeyword_46()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPriorityKeyword_46()); }
+		{ before(grammarAccess.getKeywordAccess().getPriorityKeyword_47()); }
 		'priority'
-		{ after(grammarAccess.getKeywordAccess().getPriorityKeyword_46()); }
+		{ after(grammarAccess.getKeywordAccess().getPriorityKeyword_47()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAchievesKeyword_47()); }
+		{ before(grammarAccess.getKeywordAccess().getAchievesKeyword_48()); }
 		'achieves'
-		{ after(grammarAccess.getKeywordAccess().getAchievesKeyword_47()); }
+		{ after(grammarAccess.getKeywordAccess().getAchievesKeyword_48()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getActionsKeyword_48()); }
+		{ before(grammarAccess.getKeywordAccess().getActionsKeyword_49()); }
 		'actions'
-		{ after(grammarAccess.getKeywordAccess().getActionsKeyword_48()); }
+		{ after(grammarAccess.getKeywordAccess().getActionsKeyword_49()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPlansKeyword_49()); }
+		{ before(grammarAccess.getKeywordAccess().getPlansKeyword_50()); }
 		'plans'
-		{ after(grammarAccess.getKeywordAccess().getPlansKeyword_49()); }
+		{ after(grammarAccess.getKeywordAccess().getPlansKeyword_50()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRealisedByKeyword_50()); }
+		{ before(grammarAccess.getKeywordAccess().getRealisedByKeyword_51()); }
 		'realisedBy'
-		{ after(grammarAccess.getKeywordAccess().getRealisedByKeyword_50()); }
+		{ after(grammarAccess.getKeywordAccess().getRealisedByKeyword_51()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getIssuerKeyword_51()); }
+		{ before(grammarAccess.getKeywordAccess().getIssuerKeyword_52()); }
 		'issuer'
-		{ after(grammarAccess.getKeywordAccess().getIssuerKeyword_51()); }
+		{ after(grammarAccess.getKeywordAccess().getIssuerKeyword_52()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getReceiverKeyword_52()); }
+		{ before(grammarAccess.getKeywordAccess().getReceiverKeyword_53()); }
 		'receiver'
-		{ after(grammarAccess.getKeywordAccess().getReceiverKeyword_52()); }
+		{ after(grammarAccess.getKeywordAccess().getReceiverKeyword_53()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRequestsKeyword_53()); }
+		{ before(grammarAccess.getKeywordAccess().getRequestsKeyword_54()); }
 		'requests'
-		{ after(grammarAccess.getKeywordAccess().getRequestsKeyword_53()); }
+		{ after(grammarAccess.getKeywordAccess().getRequestsKeyword_54()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getUsedByKeyword_54()); }
+		{ before(grammarAccess.getKeywordAccess().getUsedByKeyword_55()); }
 		'usedBy'
-		{ after(grammarAccess.getKeywordAccess().getUsedByKeyword_54()); }
+		{ after(grammarAccess.getKeywordAccess().getUsedByKeyword_55()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getCoreKeyword_55()); }
+		{ before(grammarAccess.getKeywordAccess().getCoreKeyword_56()); }
 		'core'
-		{ after(grammarAccess.getKeywordAccess().getCoreKeyword_55()); }
+		{ after(grammarAccess.getKeywordAccess().getCoreKeyword_56()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getModulesKeyword_56()); }
+		{ before(grammarAccess.getKeywordAccess().getModulesKeyword_57()); }
 		'modules'
-		{ after(grammarAccess.getKeywordAccess().getModulesKeyword_56()); }
+		{ after(grammarAccess.getKeywordAccess().getModulesKeyword_57()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getFromKeyword_57()); }
+		{ before(grammarAccess.getKeywordAccess().getFromKeyword_58()); }
 		'from'
-		{ after(grammarAccess.getKeywordAccess().getFromKeyword_57()); }
+		{ after(grammarAccess.getKeywordAccess().getFromKeyword_58()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getToKeyword_58()); }
+		{ before(grammarAccess.getKeywordAccess().getToKeyword_59()); }
 		'to'
-		{ after(grammarAccess.getKeywordAccess().getToKeyword_58()); }
+		{ after(grammarAccess.getKeywordAccess().getToKeyword_59()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getViaKeyword_59()); }
+		{ before(grammarAccess.getKeywordAccess().getViaKeyword_60()); }
 		'via'
-		{ after(grammarAccess.getKeywordAccess().getViaKeyword_59()); }
+		{ after(grammarAccess.getKeywordAccess().getViaKeyword_60()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60()); }
+		{ before(grammarAccess.getKeywordAccess().getMaxLatencyKeyword_61()); }
 		'maxLatency'
-		{ after(grammarAccess.getKeywordAccess().getMaxLatencyKeyword_60()); }
+		{ after(grammarAccess.getKeywordAccess().getMaxLatencyKeyword_61()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHostKeyword_61()); }
+		{ before(grammarAccess.getKeywordAccess().getHostKeyword_62()); }
 		'host'
-		{ after(grammarAccess.getKeywordAccess().getHostKeyword_61()); }
+		{ after(grammarAccess.getKeywordAccess().getHostKeyword_62()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62()); }
+		{ before(grammarAccess.getKeywordAccess().getLinkLatencyKeyword_63()); }
 		'linkLatency'
-		{ after(grammarAccess.getKeywordAccess().getLinkLatencyKeyword_62()); }
+		{ after(grammarAccess.getKeywordAccess().getLinkLatencyKeyword_63()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_63()); }
+		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_64()); }
 		'centralized'
-		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_63()); }
+		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_64()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_64()); }
+		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_65()); }
 		'hierarchical'
-		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_64()); }
+		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_65()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_65()); }
+		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_66()); }
 		'behavioral'
-		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_65()); }
+		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_66()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_66()); }
+		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_67()); }
 		'hybrid'
-		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_66()); }
+		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_67()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_67()); }
+		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_68()); }
 		'other'
-		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_67()); }
+		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_68()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_68()); }
+		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_69()); }
 		'simple'
-		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_68()); }
+		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_69()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_69()); }
+		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_70()); }
 		'realTime'
-		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_69()); }
+		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_70()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_70()); }
+		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_71()); }
 		'periodic'
-		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_70()); }
+		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_71()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_71()); }
+		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_72()); }
 		'sporadic'
-		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_71()); }
+		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_72()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_72()); }
+		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_73()); }
 		'aperiodic'
-		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_72()); }
+		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_73()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNsKeyword_73()); }
+		{ before(grammarAccess.getKeywordAccess().getNsKeyword_74()); }
 		'ns'
-		{ after(grammarAccess.getKeywordAccess().getNsKeyword_73()); }
+		{ after(grammarAccess.getKeywordAccess().getNsKeyword_74()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getUsKeyword_74()); }
+		{ before(grammarAccess.getKeywordAccess().getUsKeyword_75()); }
 		'us'
-		{ after(grammarAccess.getKeywordAccess().getUsKeyword_74()); }
+		{ after(grammarAccess.getKeywordAccess().getUsKeyword_75()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getMsKeyword_75()); }
+		{ before(grammarAccess.getKeywordAccess().getMsKeyword_76()); }
 		'ms'
-		{ after(grammarAccess.getKeywordAccess().getMsKeyword_75()); }
+		{ after(grammarAccess.getKeywordAccess().getMsKeyword_76()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSKeyword_76()); }
+		{ before(grammarAccess.getKeywordAccess().getSKeyword_77()); }
 		's'
-		{ after(grammarAccess.getKeywordAccess().getSKeyword_76()); }
+		{ after(grammarAccess.getKeywordAccess().getSKeyword_77()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_77()); }
+		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_78()); }
 		'synchronous'
-		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_77()); }
+		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_78()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_78()); }
+		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_79()); }
 		'asynchronous'
-		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_78()); }
+		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_79()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_79()); }
+		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_80()); }
 		'FIFO'
-		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_79()); }
+		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_80()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_80()); }
+		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_81()); }
 		'SJF'
-		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_80()); }
+		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_81()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRRKeyword_81()); }
+		{ before(grammarAccess.getKeywordAccess().getRRKeyword_82()); }
 		'RR'
-		{ after(grammarAccess.getKeywordAccess().getRRKeyword_81()); }
+		{ after(grammarAccess.getKeywordAccess().getRRKeyword_82()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRMKeyword_82()); }
+		{ before(grammarAccess.getKeywordAccess().getRMKeyword_83()); }
 		'RM'
-		{ after(grammarAccess.getKeywordAccess().getRMKeyword_82()); }
+		{ after(grammarAccess.getKeywordAccess().getRMKeyword_83()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDMKeyword_83()); }
+		{ before(grammarAccess.getKeywordAccess().getDMKeyword_84()); }
 		'DM'
-		{ after(grammarAccess.getKeywordAccess().getDMKeyword_83()); }
+		{ after(grammarAccess.getKeywordAccess().getDMKeyword_84()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_84()); }
+		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_85()); }
 		'EDF'
-		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_84()); }
+		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_85()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_85()); }
+		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_86()); }
 		'LLF'
-		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_85()); }
+		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_86()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_86()); }
+		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_87()); }
 		'OTHER'
-		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_86()); }
+		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_87()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_87()); }
+		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_88()); }
 		'numeric'
-		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_87()); }
+		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_88()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_88()); }
+		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_89()); }
 		'alphanumeric'
-		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_88()); }
+		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_89()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_89()); }
+		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_90()); }
 		'boolean'
-		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_89()); }
+		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_90()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_90()); }
+		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_91()); }
 		'structured'
-		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_90()); }
+		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_91()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_91()); }
+		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_92()); }
 		'reactionTime'
-		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_91()); }
+		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_92()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_92()); }
+		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_93()); }
 		'dataAge'
-		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_92()); }
+		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_93()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_93()); }
+		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_94()); }
 		'NaN'
-		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_93()); }
+		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_94()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_94()); }
+		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_95()); }
 		'Infinity'
-		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_94()); }
+		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_95()); }
 	)
 ;
 finally {
@@ -5083,6 +5095,60 @@ rule__Port__Group_3_2__1__Impl
 	{ before(grammarAccess.getPortAccess().getMessageTypeAssignment_3_2_1()); }
 	(rule__Port__MessageTypeAssignment_3_2_1)
 	{ after(grammarAccess.getPortAccess().getMessageTypeAssignment_3_2_1()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+
+rule__Port__Group_3_3__0
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Port__Group_3_3__0__Impl
+	rule__Port__Group_3_3__1
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Port__Group_3_3__0__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getPortAccess().getTopicKeyword_3_3_0()); }
+	'topic'
+	{ after(grammarAccess.getPortAccess().getTopicKeyword_3_3_0()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Port__Group_3_3__1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Port__Group_3_3__1__Impl
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Port__Group_3_3__1__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getPortAccess().getTopicAssignment_3_3_1()); }
+	(rule__Port__TopicAssignment_3_3_1)
+	{ after(grammarAccess.getPortAccess().getTopicAssignment_3_3_1()); }
 )
 ;
 finally {
@@ -10761,6 +10827,21 @@ rule__Port__MessageTypeAssignment_3_2_1
 		{ before(grammarAccess.getPortAccess().getMessageTypeSTRINGTerminalRuleCall_3_2_1_0()); }
 		RULE_STRING
 		{ after(grammarAccess.getPortAccess().getMessageTypeSTRINGTerminalRuleCall_3_2_1_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Port__TopicAssignment_3_3_1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getPortAccess().getTopicSTRINGTerminalRuleCall_3_3_1_0()); }
+		RULE_STRING
+		{ after(grammarAccess.getPortAccess().getTopicSTRINGTerminalRuleCall_3_3_1_0()); }
 	)
 ;
 finally {
