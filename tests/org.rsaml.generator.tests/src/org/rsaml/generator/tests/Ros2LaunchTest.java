@@ -243,6 +243,8 @@ class Ros2LaunchTest {
             Tools.ok(tmp, 10, "kill", "-INT", Long.toString(launch.pid()));
             assertTrue(launch.waitFor(60, TimeUnit.SECONDS), "ros2 launch did not stop within 60 s of SIGINT");
         } finally {
+            // on a failure, the containers go too (they do not die with ros2 launch)
+            launch.descendants().forEach(ProcessHandle::destroyForcibly);
             launch.destroyForcibly();
         }
         out = Files.readString(log, StandardCharsets.UTF_8);
