@@ -27,7 +27,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getProcessor()
- * @model
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='linkLatency &gt;= 0' RSA20_representableTimes='representable(linkLatency)'"
  * @generated
  */
 public interface Processor extends NamedElement, TimeScaled {

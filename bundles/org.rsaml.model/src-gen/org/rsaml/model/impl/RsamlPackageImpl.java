@@ -2415,6 +2415,12 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   new String[] {
 			   "constraints", "RSA09_uniqueNames"
 		   });
+		addAnnotation
+		  (processorEClass,
+		   source,
+		   new String[] {
+			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes"
+		   });
 	}
 
 	/**
@@ -2554,6 +2560,13 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "RSA09_uniqueNames", "knowledge->isUnique(normalizedName())"
+		   });
+		addAnnotation
+		  (processorEClass,
+		   source,
+		   new String[] {
+			   "RSA13_nonNegativeTimes", "linkLatency >= 0",
+			   "RSA20_representableTimes", "representable(linkLatency)"
 		   });
 	}
 

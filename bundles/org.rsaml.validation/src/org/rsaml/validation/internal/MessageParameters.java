@@ -32,6 +32,7 @@ import org.rsaml.model.Module;
 import org.rsaml.model.NamedElement;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.Suppressor;
@@ -375,6 +376,8 @@ public final class MessageParameters {
             values.put("duration", s.getDuration());
         } else if (o instanceof Device d) {
             values.put("period", d.getPeriod());
+        } else if (o instanceof Processor p) {
+            values.put("linkLatency", p.getLinkLatency());
         }
         List<String> parts = new ArrayList<>();
         values.forEach((feature, value) -> {
