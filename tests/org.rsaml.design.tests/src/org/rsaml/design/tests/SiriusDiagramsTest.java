@@ -72,7 +72,7 @@ import org.rsaml.validation.RsamlModelValidator;
  * in its {@code <!-- expect: -->} comments, marked by Sirius's <i>Validate</i> with exactly {@code rsaml validate}'s
  * findings without a second decoration for them (what is drawn on each element stays its findings, once each), readable (no label over another label or a node, checked on the laid-out figures' geometry:
  * {@link DiagramGeometry}), and exported as images under {@code target/diagrams}. The examples drawn are
- * {@code rsaml.diagrams.examples} (a representative set by default; {@code all} draws every one).
+ * {@code rsaml.diagrams.examples} ({@code all}, the default, draws every one; a comma-separated list draws those).
  */
 class SiriusDiagramsTest {
 
@@ -85,7 +85,7 @@ class SiriusDiagramsTest {
     private static SiriusProject project;
 
     static Stream<String> examples() throws Exception {
-        String chosen = System.getProperty("rsaml.diagrams.examples", "exp1-hybrid.rsaml,exp2-defects.rsaml");
+        String chosen = System.getProperty("rsaml.diagrams.examples", "all");
         if (chosen.equals("all")) {
             try (Stream<Path> files = Files.list(TestRepository.root().resolve("examples"))) {
                 return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".rsaml")).sorted().toList().stream();
