@@ -21,7 +21,7 @@ import org.rsaml.validation.LoadedModel;
 /**
  * The property behind conversion, on seeded random models: text written from a model reads back to
  * an equal model, and writing that model again gives the same text. {@code -Drsaml.text.randomModels=N}
- * checks N models (300 by default; the seed of a failure is in its message).
+ * checks N models (2,000 by default; the seed of a failure is in its message).
  */
 class RandomModelsTest {
 
@@ -30,7 +30,7 @@ class RandomModelsTest {
 
     @Test
     void randomModelsRoundTrip() throws Exception {
-        int count = Integer.getInteger("rsaml.text.randomModels", 300);
+        int count = Integer.getInteger("rsaml.text.randomModels", 2000);
         for (long seed = 1; seed <= count; seed++) {
             Architecture model = new RandomModels(seed).architecture();
             // In a resource, as a loaded model is: the writer names references within it.

@@ -27,7 +27,8 @@ import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
 
 /**
- * Every example and every model of the validation fixtures converts XMI to text and back to an equal
+ * Every example and every model of the validation fixtures and of the command line's hostile inputs (a file that does
+ * not load is refused by the converter with the loader's message) converts XMI to text and back to an equal
  * model, and text to XMI and back to the same text.
  */
 class RoundTripTest {
@@ -37,7 +38,8 @@ class RoundTripTest {
 
     static Stream<Path> models() throws IOException {
         Path root = TestRepository.root();
-        List<Path> dirs = List.of(root.resolve("examples"), root.resolve("tests/org.rsaml.validation.tests/resources"));
+        List<Path> dirs = List.of(root.resolve("examples"), root.resolve("tests/org.rsaml.validation.tests/resources"),
+                root.resolve("tests/org.rsaml.cli.tests/resources/inputs"));
         Stream<Path> all = Stream.empty();
         for (Path dir : dirs) {
             try (Stream<Path> walk = Files.walk(dir)) {
