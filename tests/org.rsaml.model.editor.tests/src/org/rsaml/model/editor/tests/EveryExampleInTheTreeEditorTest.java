@@ -1,3 +1,7 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
 package org.rsaml.model.editor.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
