@@ -53,8 +53,12 @@ import org.rsaml.validation.ModelLoader;
  */
 class JobTimingTest {
 
-    /** What the model does not count: wake-up latency, context switches, the runtime's bookkeeping. */
-    static final long ALLOWANCE_NS = 1_000_000;
+    /**
+     * What the model does not count: wake-up latency, context switches, the runtime's bookkeeping. Fixed, not
+     * measured: 2 ms, as for the ROS 2 nodes; the timer of a top-rank release, which nothing else delays, has been
+     * seen to wake 1.4 ms late on an otherwise idle two-core virtual machine.
+     */
+    static final long ALLOWANCE_NS = 2_000_000;
 
     static final long RUN_MS = 700;
 
