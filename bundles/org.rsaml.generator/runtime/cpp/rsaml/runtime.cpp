@@ -545,48 +545,41 @@ Nanos System::busy_work(Nanos cost) const {
   return cost * options_.busy_work_percent / 100 - std::min(cost / 20, Nanos(100000));
 }
 
-void System::reaction_done(Reactions& r, Clock::time_point arrived, Clock::time_point started, Clock::time_point done,
-                           Nanos cpu) {
-  JobStats& s = r.stats;
+namespace {
+
+// Counts one job (of a timed release or a reaction) that started its response at `from`: its
+// response and execution time, and a miss or an overrun as it happens.
+void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, Clock::time_point from,
+                Clock::time_point done, Nanos cpu) {
   if (s.jobs++ == 0) {
-    s.first_release = arrived;
+    s.first_release = from;
   }
-  s.last_release = arrived;
-  const Nanos response = std::chrono::duration_cast<Nanos>(done - arrived);
+  s.last_release = from;
+  const Nanos response = std::chrono::duration_cast<Nanos>(done - from);
   s.worst_response = std::max(s.worst_response, response);
   s.worst_execution = std::max(s.worst_execution, cpu);
-  s.worst_start_latency = std::max(s.worst_start_latency, std::chrono::duration_cast<Nanos>(started - arrived));
-  if (r.bounds.deadline.count() > 0 && response > r.bounds.deadline) {
+  if (bounds.deadline.count() > 0 && response > bounds.deadline) {
     ++s.misses;
-    Trace::report("miss " + r.label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
-                  millis(r.bounds.deadline));
+    Trace::report("miss " + label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
+                  millis(bounds.deadline));
   }
-  if (r.bounds.cost.count() > 0 && cpu > r.bounds.cost) {
+  if (bounds.cost.count() > 0 && cpu > bounds.cost) {
     ++s.overruns;
-    Trace::report("overrun " + r.label + " job " + std::to_string(s.jobs) + " execution " + millis(cpu) + " > modeled " +
-                  millis(r.bounds.cost));
+    Trace::report("overrun " + label + " job " + std::to_string(s.jobs) + " execution " + millis(cpu) + " > modeled " +
+                  millis(bounds.cost));
   }
 }
 
+}  // namespace
+
+void System::reaction_done(Reactions& r, Clock::time_point arrived, Clock::time_point started, Clock::time_point done,
+                           Nanos cpu) {
+  r.stats.worst_start_latency = std::max(r.stats.worst_start_latency, std::chrono::duration_cast<Nanos>(started - arrived));
+  record_job(r.stats, r.label, r.bounds, arrived, done, cpu);
+}
+
 void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu) {
-  JobStats& s = r.stats;
-  if (s.jobs++ == 0) {
-    s.first_release = released;
-  }
-  s.last_release = released;
-  const Nanos response = std::chrono::duration_cast<Nanos>(done - released);
-  s.worst_response = std::max(s.worst_response, response);
-  s.worst_execution = std::max(s.worst_execution, cpu);
-  if (response > r.bounds.deadline) {
-    ++s.misses;
-    Trace::report("miss " + r.label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
-                  millis(r.bounds.deadline));
-  }
-  if (r.bounds.cost.count() > 0 && cpu > r.bounds.cost) {
-    ++s.overruns;
-    Trace::report("overrun " + r.label + " job " + std::to_string(s.jobs) + " execution " + millis(cpu) + " > modeled " +
-                  millis(r.bounds.cost));
-  }
+  record_job(r.stats, r.label, r.bounds, released, done, cpu);
 }
 
 void System::run_release(Release& release) {
