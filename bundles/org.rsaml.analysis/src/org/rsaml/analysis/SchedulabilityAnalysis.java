@@ -11,6 +11,10 @@ import java.util.OptionalLong;
 import java.util.Set;
 
 import org.rsaml.analysis.internal.Bounds;
+import org.rsaml.analysis.internal.FirstInFirstOut;
+import org.rsaml.analysis.internal.MissWitnesses;
+import org.rsaml.analysis.internal.NonPreemptive;
+import org.rsaml.analysis.internal.PriorityLevels;
 import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.analysis.internal.ProcessorDemand;
 import org.rsaml.analysis.internal.ResponseTimes;
@@ -75,7 +79,7 @@ public final class SchedulabilityAnalysis {
             firstInFirstOutAtTheTop(tasks, byIndex, fifo);
         } else {
             for (int i = 0; i < tasks.size(); i++) {
-                byIndex[i] = ResponseTimes.nonPreemptive(tasks, tasks.get(i));
+                byIndex[i] = NonPreemptive.of(tasks, tasks.get(i));
             }
         }
         scheduleTheFirstMiss(tasks, byIndex, policy, runToCompletion);
@@ -97,79 +101,11 @@ public final class SchedulabilityAnalysis {
     }
 
     /**
-     * Preemptive fixed priorities without lock waits, highest priority first. The interfering tasks
-     * are kept as one entry per (period, jitter), built up as the priority falls: each task then costs
-     * an iteration over the distinct periods, not over all tasks; and the first-job window of the
-     * previous priority level seeds the next one's iteration (it is a lower bound of it). The entries'
-     * interference, their total cost and the level's utilisation are kept up to date as tasks join,
-     * so that a task costs what its own busy period releases, not a pass over every entry.
+     * Preemptive fixed priorities without lock waits, highest priority first, the tasks that can delay
+     * a task joining once as the priority falls ({@link PriorityLevels}).
      */
     private static void preemptive(List<Task> tasks, TaskResult[] byIndex, List<Integer> firstInFirstOut) {
-        Set<Integer> skipped = new HashSet<>(firstInFirstOut);
-        int n = tasks.size();
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        java.util.Arrays.sort(order, (a, b) -> Integer.compare(tasks.get(b).priority(), tasks.get(a).priority()));
-        java.util.Map<Long, Integer> slot = new java.util.HashMap<>();
-        long[] period = new long[n];
-        long[] cost = new long[n];
-        long[] jitter = new long[n];
-        int[] entryOf = new int[n];
-        int entries = 0;
-        long seed = 0;
-        long[] window = new long[1];
-        // what every task of a level shares: the interference of the entries, the sum of all costs at or
-        // above the level (-1 once too large to add), the utilisation of those tasks
-        ResponseTimes.Interference interference = new ResponseTimes.Interference(period, cost, jitter, 0);
-        long total = 0;
-        double utilisation = 0;
-        for (int g = 0; g < n;) {
-            int priority = tasks.get(order[g]).priority();
-            int end = g;
-            while (end < n && tasks.get(order[end]).priority() == priority) {
-                end++;
-            }
-            // the whole level first: tasks of equal priority delay each other
-            for (int k = g; k < end; k++) {
-                Task t = tasks.get(order[k]);
-                Integer e = t.jitter() == 0 ? slot.get(t.period()) : null;
-                if (e == null) {
-                    e = entries++;
-                    period[e] = t.period();
-                    jitter[e] = t.jitter();
-                    if (t.jitter() == 0) {
-                        slot.put(t.period(), e);
-                    }
-                    interference.add(e);
-                }
-                cost[e] = Math.addExact(cost[e], t.cost());
-                interference.costChanged(e, t.cost());
-                entryOf[order[k]] = e;
-                total = total < 0 || total > Long.MAX_VALUE - t.cost() ? -1 : total + t.cost();
-                utilisation += (double) t.cost() / t.period();
-            }
-            long levelWindow = -1;
-            for (int k = g; k < end; k++) {
-                int i = order[k];
-                if (skipped.contains(i)) {
-                    continue; // analysed first in, first out instead (the top rank: nothing above seeds the level below)
-                }
-                Task t = tasks.get(i);
-                cost[entryOf[i]] -= t.cost();
-                interference.costChanged(entryOf[i], -t.cost());
-                int lowest = priority;
-                byIndex[i] = ResponseTimes.preemptive(t, priority, period, cost, jitter, entries, seed, window,
-                        () -> hp(tasks, t, lowest), interference, total < 0 ? -1 : total - t.cost(), utilisation);
-                cost[entryOf[i]] += t.cost();
-                interference.costChanged(entryOf[i], t.cost());
-                levelWindow = Math.max(levelWindow, window[0]);
-            }
-            // the next level's first job needs at least this level's window beyond its own cost
-            seed = Math.max(0, levelWindow);
-            g = end;
-        }
+        PriorityLevels.analyse(tasks, new HashSet<>(firstInFirstOut), byIndex);
     }
 
     /**
@@ -206,7 +142,7 @@ public final class SchedulabilityAnalysis {
             }
         }
         byIndex[first] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation(),
-                ResponseTimes.schedule(scope, t, effective, r.witness().job(), preemptive, fifo));
+                MissWitnesses.schedule(scope, t, effective, r.witness().job(), preemptive, fifo));
     }
 
     /**
@@ -214,12 +150,12 @@ public final class SchedulabilityAnalysis {
      * released until the analysed job completes, which is sound whatever order they run in (round
      * robin included). At the highest priority, jobs that run first in, first out among their equals
      * are interrupted by nothing: a job waits only for the jobs released before or with it (lower
-     * priorities are preempted, so they cannot block), which {@link ResponseTimes#firstInFirstOut}
+     * priorities are preempted, so they cannot block), which {@link FirstInFirstOut}
      * analyses exactly.
      */
     private static void firstInFirstOutAtTheTop(List<Task> tasks, TaskResult[] byIndex, List<Integer> level) {
         List<Task> equals = level.stream().map(tasks::get).toList();
-        TaskResult[] results = ResponseTimes.firstInFirstOut(equals);
+        TaskResult[] results = FirstInFirstOut.of(equals);
         for (int k = 0; k < level.size(); k++) {
             int i = level.get(k);
             TaskResult r = results[k];
@@ -247,16 +183,6 @@ public final class SchedulabilityAnalysis {
         return level.size() < 2 ? List.of() : level;
     }
 
-    private static List<Task> hp(List<Task> tasks, Task task, int priority) {
-        List<Task> hp = new ArrayList<>();
-        for (Task t : tasks) {
-            if (t != task && t.priority() >= priority) {
-                hp.add(t);
-            }
-        }
-        return hp;
-    }
-
     /** Rounds of the jitter iteration for lock groups before giving up (said so). */
     private static final int MAX_ROUNDS = 1000;
 
@@ -271,13 +197,7 @@ public final class SchedulabilityAnalysis {
         int[] effective = ResponseTimes.effectivePriorities(tasks);
         Task[] view = tasks.toArray(new Task[0]);
         for (int round = 0; round < MAX_ROUNDS; round++) {
-            for (int i = 0; i < n; i++) {
-                Task own = tasks.get(i);
-                Task shown = view[i];
-                view[i] = own;
-                byIndex[i] = ResponseTimes.preemptive(java.util.Arrays.asList(view), own, effective[i], 0, null);
-                view[i] = shown;
-            }
+            PriorityLevels.analyse(java.util.Arrays.asList(view), tasks, effective, Set.of(), byIndex);
             boolean changed = false;
             List<Integer> late = new ArrayList<>();
             for (int j = 0; j < n; j++) {
@@ -316,11 +236,23 @@ public final class SchedulabilityAnalysis {
      */
     private static void unsettled(List<Task> tasks, TaskResult[] byIndex, int[] effective, List<Integer> late) {
         String who = "'" + tasks.get(late.get(0)).name() + "'";
-        for (int i = 0; i < tasks.size(); i++) {
-            boolean exposed = false;
-            for (int j = 0; j < tasks.size() && !exposed; j++) {
-                exposed = j != i && effective[j] < tasks.get(j).priority() && tasks.get(j).priority() >= effective[i];
+        // a task is exposed when another task held back by its lock is at or above its priority as analysed:
+        // the two highest priorities of those held back tell, for every task, in one pass
+        int first = -1;
+        int second = -1;
+        for (int j = 0; j < tasks.size(); j++) {
+            if (effective[j] < tasks.get(j).priority()) {
+                if (first < 0 || tasks.get(j).priority() > tasks.get(first).priority()) {
+                    second = first;
+                    first = j;
+                } else if (second < 0 || tasks.get(j).priority() > tasks.get(second).priority()) {
+                    second = j;
+                }
             }
+        }
+        for (int i = 0; i < tasks.size(); i++) {
+            int above = i != first ? first : second;
+            boolean exposed = above >= 0 && tasks.get(above).priority() >= effective[i];
             if (!exposed) {
                 continue;
             }

@@ -74,6 +74,11 @@ public final class CriticalInstant {
         PriorityQueue<Job> ready = new PriorityQueue<>(order);
         long[] nextRelease = new long[all.size()];
         long[] nextIndex = new long[all.size()];
+        // the tasks by their next release: an event looks only at those released by then, not at every task
+        PriorityQueue<Integer> releasing = new PriorityQueue<>(Comparator.comparingLong((Integer t) -> nextRelease[t]));
+        for (int t = 0; t < all.size(); t++) {
+            releasing.add(t);
+        }
         List<Segment> segments = new ArrayList<>();
         long targetRelease = Arith.mul(analysed.period(), job);
         long time = 0;
@@ -90,18 +95,18 @@ public final class CriticalInstant {
                 truncated = true;
                 break;
             }
-            for (int t = 0; t < all.size(); t++) {
+            // the ready queue orders jobs totally, so the order they join it in does not matter
+            while (nextRelease[releasing.peek()] <= time) {
+                int t = releasing.poll();
                 while (nextRelease[t] <= time) {
                     ready.add(new Job(t, nextIndex[t], nextRelease[t], all.get(t).cost()));
                     nextIndex[t]++;
                     nextRelease[t] = Arith.add(nextRelease[t], all.get(t).period());
                 }
+                releasing.add(t);
             }
             Job running = ready.poll();
-            long upcoming = Long.MAX_VALUE;
-            for (long r : nextRelease) {
-                upcoming = Math.min(upcoming, r);
-            }
+            long upcoming = nextRelease[releasing.peek()];
             if (running == null) {
                 time = upcoming;
                 continue;

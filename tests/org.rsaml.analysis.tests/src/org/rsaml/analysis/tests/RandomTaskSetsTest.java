@@ -271,9 +271,9 @@ class RandomTaskSetsTest {
                 long deadline = random.nextBoolean() ? period : Math.max(1, cost * (1 + random.nextInt(3)));
                 level.add(new Task("t" + i, period, deadline, cost, 1));
             }
-            TaskResult[] whole = org.rsaml.analysis.internal.ResponseTimes.firstInFirstOut(level);
+            TaskResult[] whole = org.rsaml.analysis.internal.FirstInFirstOut.of(level);
             for (int i = 0; i < n; i++) {
-                TaskResult one = org.rsaml.analysis.internal.ResponseTimes.firstInFirstOut(level, level.get(i));
+                TaskResult one = org.rsaml.analysis.internal.FirstInFirstOut.of(level, level.get(i));
                 String where = "set " + s + ", task " + level.get(i) + " among " + level;
                 assertEquals(one.responseTime(), whole[i].responseTime(), where);
                 assertEquals(one.verdict(), whole[i].verdict(), where);

@@ -1,0 +1,378 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.analysis.internal;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.Set;
+
+import org.eclipse.emf.ecore.EObject;
+import org.rsaml.analysis.Hop;
+import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.PathBound;
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.internal.Latencies.Stage;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.Flow;
+import org.rsaml.analysis.plan.LinkPlan;
+import org.rsaml.analysis.plan.PlanTimes;
+import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.PlannedPort;
+import org.rsaml.model.Actuator;
+import org.rsaml.model.EntryPort;
+import org.rsaml.model.support.RsamlLabels;
+
+/**
+ * Every path of one latency requirement, depth first with a stack of its own (a chain of any length,
+ * no recursion), only through the modules from which its target can be reached: each path's bound is
+ * the sum of its stages (and of the links it crosses between hosts), recorded when the path reaches the
+ * target through the requirement's {@code via} elements; the worst, and the longest paths for the list.
+ */
+final class PathSearch {
+
+    /** Paths examined per requirement before giving up (said so, never a silent pass). */
+    static final int MAX_PATHS = 100_000;
+
+    private final ExecutionPlan plan;
+    private final Map<PlannedModule, Stage> stages;
+    private final boolean age;
+    private final List<EObject> via;
+    private final Actuator actuator;
+    private final EntryPort entry;
+    private final Set<PlannedModule> visited = new HashSet<>();
+    private final List<Hop> hops = new ArrayList<>();
+    /** The modules, ports and links the current path has passed, for {@code via}. */
+    private final List<EObject> trail = new ArrayList<>();
+    /** Paths by their bound for the requirement's kind; a path without a bound is the longest. */
+    private final Comparator<PathBound> longest;
+    /** The longest paths found so far (the shortest of them first, to be replaced). */
+    private final PriorityQueue<PathBound> listed;
+    /** The modules from which the target can be reached: the search goes nowhere else. */
+    private final Set<PlannedModule> reaching;
+    private int paths;
+    private long worstReaction = -1;
+    private long worstAge = -1;
+    private List<Hop> worstPath = List.of();
+    private String unbounded;
+    /** Why the current path has no bound (its first stage without one), or null. */
+    private String pathUnbounded;
+
+    /**
+     * @param age      whether the requirement bounds the data age (else the reaction time)
+     * @param via      the elements its paths must pass, in order
+     * @param actuator its target when an actuator, else null
+     * @param entry    its target when an entry port, else null
+     */
+    PathSearch(ExecutionPlan plan, Map<PlannedModule, Stage> stages, boolean age, List<EObject> via, Actuator actuator,
+            EntryPort entry) {
+        this.plan = plan;
+        this.stages = stages;
+        this.age = age;
+        this.via = via;
+        this.actuator = actuator;
+        this.entry = entry;
+        this.longest = Comparator.comparingLong((PathBound b) -> b.bounded() ? (age ? b.dataAgeNs() : b.reactionNs()) : Long.MAX_VALUE);
+        this.listed = new PriorityQueue<>(longest);
+        this.reaching = reaching();
+    }
+
+    /** Whether the target can be reached from module m. */
+    boolean reaches(PlannedModule m) {
+        return reaching.contains(m);
+    }
+
+    /** How many paths reached the target (beyond {@link #MAX_PATHS}: the search stopped). */
+    int paths() {
+        return paths;
+    }
+
+    long worstReaction() {
+        return worstReaction;
+    }
+
+    long worstAge() {
+        return worstAge;
+    }
+
+    List<Hop> worstPath() {
+        return worstPath;
+    }
+
+    /** Why some path has no bound (the first found), or null. */
+    String unbounded() {
+        return unbounded;
+    }
+
+    /** The longest paths, the longest first ({@link LatencyResult#MAX_LISTED_PATHS} at most). */
+    List<PathBound> longestFirst() {
+        List<PathBound> out = new ArrayList<>(listed);
+        out.sort(longest.reversed());
+        return out;
+    }
+
+    private void list(PathBound b) {
+        listed.add(b);
+        if (listed.size() > LatencyResult.MAX_LISTED_PATHS) {
+            listed.poll();
+        }
+    }
+
+    /**
+     * One step out of a module: the trail elements it adds (the output port, the link, the entry
+     * port), whether it arrives at the target entry port, and where the path goes on: into a
+     * module's stage ({@code enter}), or past an inhibitor to the inhibited port ({@code inhibitor}).
+     */
+    private record Step(List<EObject> adds, boolean arrives, PlannedModule next, LinkPlan inhibitor) {
+    }
+
+    /** A module on the current path, with the steps out of it not taken yet. */
+    private static final class Frame {
+        final PlannedModule module;
+        final long period;
+        final List<Step> steps;
+        final int trailBefore;
+        final String unboundedBefore;
+        /** How many hops the frame added to the path (its stage's, and a link's crossed to reach it). */
+        final int hop;
+        final boolean root;
+        int next;
+
+        Frame(PlannedModule module, long period, List<Step> steps, int trailBefore, String unboundedBefore, int hop, boolean root) {
+            this.module = module;
+            this.period = period;
+            this.steps = steps;
+            this.trailBefore = trailBefore;
+            this.unboundedBefore = unboundedBefore;
+            this.hop = hop;
+            this.root = root;
+        }
+    }
+
+    private final ArrayDeque<Frame> stack = new ArrayDeque<>();
+
+    /**
+     * Data (or, through an inhibitor, control) reaches module m, which takes it through its stage
+     * st; every path on from there is followed depth first, with a stack of its own (a chain of any
+     * length, no recursion).
+     */
+    void enter(PlannedModule m, Stage st) {
+        push(m, st, trail.size(), 0);
+        search();
+    }
+
+    /** A path starting where module m's output port {@code only} sends. */
+    void start(PlannedModule m, PlannedPort only) {
+        visited.add(m);
+        int before = trail.size();
+        trail.add(m.module());
+        stack.push(new Frame(m, stages.get(m).periodNs(), steps(m, only), before, pathUnbounded, 0, true));
+        search();
+    }
+
+    /**
+     * Enters m (when the path may: not yet on it, not past the limit), recording when it drives the
+     * actuator; link: the hops of the link crossed to reach m (0 or 1, already on the path).
+     */
+    private void push(PlannedModule m, Stage st, int trailBefore, int link) {
+        if (paths > MAX_PATHS || !visited.add(m)) {
+            trail.subList(trailBefore, trail.size()).clear();
+            hops.subList(hops.size() - link, hops.size()).clear();
+            return;
+        }
+        String before = pathUnbounded;
+        trail.add(m.module());
+        if (st.hop() == null) {
+            // paths through here have no bound; they are still followed, to count those that reach the target
+            if (pathUnbounded == null) {
+                pathUnbounded = st.unbounded();
+            }
+        } else {
+            hops.add(st.hop());
+        }
+        if (actuator != null && m.module().getActuators().contains(actuator)) {
+            record(st.periodNs());
+        }
+        stack.push(new Frame(m, st.periodNs(), steps(m, null), trailBefore, before, link + (st.hop() != null ? 1 : 0), false));
+    }
+
+    private void search() {
+        while (!stack.isEmpty()) {
+            Frame f = stack.peek();
+            if (f.next == f.steps.size() || paths > MAX_PATHS) {
+                stack.pop();
+                hops.subList(hops.size() - f.hop, hops.size()).clear();
+                pathUnbounded = f.unboundedBefore;
+                visited.remove(f.module);
+                trail.subList(f.trailBefore, trail.size()).clear();
+                continue;
+            }
+            Step step = f.steps.get(f.next++);
+            int before = trail.size();
+            trail.addAll(step.adds());
+            PlannedModule next = step.next();
+            Hop crossing = next == null ? null : crossing(f.module, next);
+            int link = crossing == null ? 0 : 1;
+            if (crossing != null) {
+                hops.add(crossing);
+            }
+            if (step.arrives()) {
+                record(f.period);
+            }
+            if (next == null || visited.contains(next) || !reaching.contains(next)) {
+                trail.subList(before, trail.size()).clear();
+                hops.subList(hops.size() - link, hops.size()).clear();
+            } else if (step.inhibitor() == null) {
+                push(next, stages.get(next), before, link);
+            } else if (paths <= MAX_PATHS) {
+                LinkPlan inhibitor = step.inhibitor();
+                visited.add(next);
+                hops.add(new Hop(inhibitor.qualifiedName(), next.module(), "inhibits " + inhibitor.target().qualifiedName()
+                        + " from the trigger's message on, at once", 0, 0));
+                stack.push(new Frame(next, 0, steps(next, inhibitor.target()), before, pathUnbounded, link + 1, false));
+            } else {
+                trail.subList(before, trail.size()).clear();
+                hops.subList(hops.size() - link, hops.size()).clear();
+            }
+        }
+    }
+
+    /**
+     * What m sends (from {@code only}, or from every output port): along its flows; a suppressor's
+     * trigger message to the suppressed entry port (as data when the two carry the same data, else
+     * as control: the target's input is blocked, which its module acts on at its next activation);
+     * an inhibitor's, at once to the inhibited output port, whose module then sends nothing more
+     * there, while what it sent before still travels on.
+     */
+    private List<Step> steps(PlannedModule m, PlannedPort only) {
+        List<Step> steps = new ArrayList<>();
+        for (PlannedPort out : m.outputs()) {
+            if (only != null && out != only) {
+                continue;
+            }
+            for (Flow f : out.outgoing()) {
+                steps.add(new Step(List.of(out.port(), f.target().port()), entry != null && f.target().port() == entry,
+                        f.target().module(), null));
+            }
+            for (LinkPlan link : out.triggers()) {
+                List<EObject> adds = List.of(out.port(), link.link(), link.target().port());
+                if (link.inhibitor()) {
+                    steps.add(new Step(adds, false, link.target().module(), link));
+                } else {
+                    steps.add(new Step(adds, entry != null && link.target().port() == entry, link.target().module(), null));
+                }
+            }
+        }
+        return steps;
+    }
+
+    /**
+     * The link a message from module a to module b crosses when their processors are on different
+     * hosts: the link latencies of both processors (0 each when not given), as a hop of its own;
+     * null on one host or when neither processor gives a latency.
+     */
+    private static Hop crossing(PlannedModule a, PlannedModule b) {
+        String from = TimingAnalysis.host(a.processor());
+        String to = TimingAnalysis.host(b.processor());
+        if (from.equals(to)) {
+            return null;
+        }
+        long ns = Math.addExact(linkNs(a.processor()), linkNs(b.processor()));
+        if (ns == 0) {
+            return null;
+        }
+        return new Hop("link " + hostName(from) + " -> " + hostName(to), b.module(), "crosses the links between host "
+                + hostName(from) + " and host " + hostName(to) + " (the link latencies of " + processorName(a.processor())
+                + " and " + processorName(b.processor()) + ")", ns, 0);
+    }
+
+    private static long linkNs(org.rsaml.model.Processor p) {
+        return p == null ? 0 : PlanTimes.nanos(p.getLinkLatency(), p);
+    }
+
+    private static String hostName(String host) {
+        return host.isEmpty() ? "main" : "'" + host + "'";
+    }
+
+    private static String processorName(org.rsaml.model.Processor p) {
+        return p == null ? "the default processor" : "processor " + RsamlLabels.name(p);
+    }
+
+    /** The modules with a path of flows to the target (the target's own module included). */
+    private Set<PlannedModule> reaching() {
+        Map<PlannedModule, List<PlannedModule>> upstream = new HashMap<>();
+        List<PlannedModule> todo = new ArrayList<>();
+        for (Flow f : plan.flows()) {
+            upstream.computeIfAbsent(f.target().module(), k -> new ArrayList<>()).add(f.source().module());
+            if (entry != null && f.target().port() == entry) {
+                todo.add(f.source().module());
+            }
+        }
+        for (LinkPlan l : plan.links()) {
+            upstream.computeIfAbsent(l.target().module(), k -> new ArrayList<>()).add(l.trigger().module());
+            if (entry != null && !l.inhibitor() && l.target().port() == entry) {
+                todo.add(l.trigger().module());
+            }
+        }
+        if (actuator != null) {
+            for (PlannedModule m : plan.modules()) {
+                if (m.module().getActuators().contains(actuator)) {
+                    todo.add(m);
+                }
+            }
+        }
+        Set<PlannedModule> seen = new HashSet<>();
+        while (!todo.isEmpty()) {
+            PlannedModule m = todo.remove(todo.size() - 1);
+            if (seen.add(m)) {
+                todo.addAll(upstream.getOrDefault(m, List.of()));
+            }
+        }
+        return seen;
+    }
+
+    private void record(long lastPeriod) {
+        if (!throughVia()) {
+            return;
+        }
+        paths++;
+        if (pathUnbounded != null) {
+            if (unbounded == null) {
+                unbounded = pathUnbounded;
+            }
+            list(new PathBound(hops, -1, -1, pathUnbounded));
+            return;
+        }
+        long reaction = 0;
+        for (Hop h : hops) {
+            reaction = Math.addExact(reaction, h.totalNs());
+        }
+        long dataAge = Math.addExact(reaction, lastPeriod);
+        list(new PathBound(hops, reaction, dataAge, null));
+        if (reaction > worstReaction || dataAge > worstAge) {
+            if (age ? dataAge > worstAge : reaction > worstReaction) {
+                worstPath = List.copyOf(hops);
+            }
+            worstReaction = Math.max(worstReaction, reaction);
+            worstAge = Math.max(worstAge, dataAge);
+        }
+    }
+
+    /** Whether the current path passes the requirement's {@code via} elements in their order. */
+    private boolean throughVia() {
+        int next = 0;
+        for (int i = 0; i < trail.size() && next < via.size(); i++) {
+            if (trail.get(i) == via.get(next)) {
+                next++;
+            }
+        }
+        return next == via.size();
+    }
+}
