@@ -33,7 +33,6 @@ import org.eclipse.sirius.business.api.preferences.SiriusPreferencesKeys;
 import org.eclipse.sirius.business.api.session.Session;
 import org.eclipse.sirius.diagram.DDiagram;
 import org.eclipse.sirius.tools.api.SiriusPlugin;
-import org.eclipse.sirius.tools.api.command.semantic.AddSemanticResourceCommand;
 import org.eclipse.sirius.ui.business.api.viewpoint.ViewpointSelectionCallback;
 import org.eclipse.sirius.ui.tools.api.project.ModelingProjectManager;
 import org.eclipse.sirius.business.api.query.DRepresentationQuery;
@@ -78,15 +77,12 @@ final class SiriusProject {
                 file.create(in, true, MONITOR);
             }
         }
-        // Sirius attaches the models added to a modeling project to its session in a job of its own; the project is
-        // set up once that job is done, not while it changes the session under the viewpoint's selection.
-        awaitRepresentationsFileJobs();
-        for (String example : examples) {
-            URI uri = result.uri(example);
-            if (session.getSemanticResources().stream().noneMatch(r -> r.getURI().equals(uri))) {
-                result.execute(new AddSemanticResourceCommand(session, uri, MONITOR));
-            }
-        }
+        // Sirius attaches the models added to a modeling project to its session in a job of its own, scheduled when the
+        // workspace reports the new files. That report may come later than file.create (the workspace defers it while it
+        // is still reporting an earlier change, e.g. the representations file being saved): the project is set up once
+        // Sirius has attached every model itself. Attaching them here instead would leave Sirius's job to attach them
+        // again later, under the first diagram opened, which Sirius then draws again from scratch, unarranged.
+        result.awaitAttached(examples.stream().map(result::uri).toList());
         result.execute(new RecordingCommand(result.domain(), "enable the RsaML viewpoint") {
             @Override
             protected void doExecute() {
@@ -96,6 +92,27 @@ final class SiriusProject {
         assertTrue(session.getSelectedViewpoints(false).stream().anyMatch(v -> "RsaML".equals(v.getName())),
                 "the RsaML viewpoint is enabled in the project: " + session.getSelectedViewpoints(false));
         return result;
+    }
+
+    /** How long Sirius may take to attach the models copied into the project to its session. */
+    private static final long ATTACH_TIMEOUT_SECONDS = 120;
+
+    /** Waits until Sirius has attached each of {@code uris} to the session and none of its jobs on representations files is left. */
+    private void awaitAttached(List<URI> uris) throws InterruptedException {
+        long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(ATTACH_TIMEOUT_SECONDS);
+        while (true) {
+            awaitRepresentationsFileJobs();
+            List<URI> missing = uris.stream().filter(u -> session.getSemanticResources().stream().noneMatch(r -> r.getURI().equals(u))).toList();
+            if (missing.isEmpty() && Job.getJobManager().find(AbstractRepresentationsFileJob.FAMILY).length == 0) {
+                return;
+            }
+            if (System.nanoTime() > deadline) {
+                throw new AssertionError("Sirius has not attached " + missing + " to the session of " + project.getName() + " within "
+                        + ATTACH_TIMEOUT_SECONDS + " s of their creation in the modeling project (attached: "
+                        + session.getSemanticResources().stream().map(Resource::getURI).toList() + ")");
+            }
+            Thread.sleep(50);
+        }
     }
 
     /**
