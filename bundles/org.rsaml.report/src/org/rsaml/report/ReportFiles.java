@@ -6,6 +6,9 @@ package org.rsaml.report;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
 
 import org.rsaml.model.support.AtomicFiles;
 
@@ -22,6 +25,31 @@ public final class ReportFiles {
     /** Writes {@code report} in {@code format} to {@code file}, replacing it whole ({@link AtomicFiles}). */
     public static void write(Path file, ReportFormat format, Report report, ReportOptions options) throws IOException {
         AtomicFiles.write(file, out -> format.write(report, out, options));
+    }
+
+    /**
+     * Writes {@code report} into every report file a run asked for: what {@code rsaml validate -o} and
+     * {@code rsaml analyze} write, and the Maven goals' report files. A file that cannot be written costs
+     * that file only; every file is complete, whatever {@link ReportOptions#quiet()} says (it is read later).
+     *
+     * @param base  the directory {@code files}' paths are relative to
+     * @param files each file, as the user named it or as the build log shows it, with its format
+     * @return one line per file that could not be written ({@code FILE: error: cannot write the FORMAT report: why}),
+     *         empty when all were written
+     */
+    public static List<String> writeAll(Report report, Map<Path, ReportFormat> files, Path base, ReportOptions options) {
+        ReportOptions complete = new ReportOptions(options.toolVersion(), options.baseDir(), false);
+        List<String> failures = new ArrayList<>();
+        for (Map.Entry<Path, ReportFormat> file : files.entrySet()) {
+            Path target = base.resolve(file.getKey());
+            try {
+                write(target, file.getValue(), report, complete);
+            } catch (IOException e) {
+                failures.add(Text.line(ModelFiles.display(file.getKey()) + ": error: cannot write the " + file.getValue().id()
+                        + " report: " + reason(e, target)));
+            }
+        }
+        return List.copyOf(failures);
     }
 
     /**

@@ -5,6 +5,7 @@
 package org.rsaml.report.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -12,7 +13,9 @@ import java.io.IOException;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
@@ -61,5 +64,28 @@ class ReportFilesTest {
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(List.of(taken), files.toList(), "nothing is written beside it");
         }
+    }
+
+    @Test
+    void everyReportFileOfARunIsWrittenCompleteAndOneThatCannotBeCostsOnlyItself(@TempDir Path dir) throws Exception {
+        Files.createDirectories(dir.resolve("taken.sarif"));
+        Map<Path, ReportFormat> files = new LinkedHashMap<>();
+        files.put(Path.of("taken.sarif"), ReportFormat.SARIF);
+        files.put(Path.of("out/rsaml.txt"), ReportFormat.TEXT);
+        ReportOptions quiet = new ReportOptions(OPTIONS.toolVersion(), OPTIONS.baseDir(), true);
+
+        // Findings that fail nothing: a quiet text report leaves them out.
+        Report report = ModelBatch.validate(TestRepository.root(), List.of(Path.of("examples/exp2-defects.rsaml")), null);
+        List<String> failures = ReportFiles.writeAll(report, files, dir, quiet);
+
+        assertEquals(List.of("taken.sarif: error: cannot write the sarif report: it is a directory"), failures,
+                "the file that cannot be written is named, with the reason, as the user named it");
+        StringWriter complete = new StringWriter();
+        ReportFormat.TEXT.write(report, complete, OPTIONS);
+        StringWriter shortened = new StringWriter();
+        ReportFormat.TEXT.write(report, shortened, quiet);
+        assertNotEquals(complete.toString(), shortened.toString(), "a quiet text report leaves something out of this report");
+        assertEquals(complete.toString(), Files.readString(dir.resolve("out/rsaml.txt")),
+                "the other file is written, and complete although the run is quiet");
     }
 }

@@ -19,7 +19,6 @@ import org.rsaml.report.Report;
 import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.ReportOptions;
-import org.rsaml.report.ModelFiles;
 import org.rsaml.report.Text;
 import org.rsaml.validation.Severity;
 
@@ -111,19 +110,9 @@ final class ReportArgs {
             throw new RsamlCli.UserException("cannot write the report: " + e.getMessage());
         }
         out.flush();
-        int code = report.exitCode();
-        // A report file is for whoever reads it later: always complete, whatever --quiet says.
-        ReportOptions complete = new ReportOptions(options.toolVersion(), options.baseDir(), false);
-        for (Map.Entry<Path, ReportFormat> file : files.entrySet()) {
-            Path target = cli.workingDirectory.resolve(file.getKey());
-            try {
-                ReportFiles.write(target, file.getValue(), report, complete);
-            } catch (IOException e) {
-                err.println(Text.line(ModelFiles.display(file.getKey()) + ": error: cannot write the " + file.getValue().id()
-                        + " report: " + ReportFiles.reason(e, target)));
-                code = ExitCodes.INPUT_ERROR;
-            }
-        }
+        List<String> failures = ReportFiles.writeAll(report, files, cli.workingDirectory, options);
+        failures.forEach(err::println);
+        int code = failures.isEmpty() ? report.exitCode() : ExitCodes.INPUT_ERROR;
         err.flush();
         return code;
     }

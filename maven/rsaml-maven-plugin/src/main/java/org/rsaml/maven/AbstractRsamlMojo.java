@@ -5,11 +5,12 @@
 package org.rsaml.maven;
 
 import java.io.File;
-import java.io.IOException;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.function.Function;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
 
 import org.apache.maven.plugin.AbstractMojo;
 import org.apache.maven.plugin.MojoExecutionException;
@@ -107,15 +108,16 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
     /** Writes {@code report} in each format into {@code directory}, named by {@code fileName}. */
     void writeReports(Report report, List<ReportFormat> formats, File directory, Function<ReportFormat, String> fileName)
             throws MojoExecutionException {
-        ReportOptions options = new ReportOptions(pluginVersion, baseDirectory.toPath(), false);
+        Map<Path, ReportFormat> files = new LinkedHashMap<>();
         for (ReportFormat format : formats) {
-            Path file = directory.toPath().resolve(fileName.apply(format));
-            try {
-                ReportFiles.write(file, format, report, options);
-            } catch (IOException e) {
-                throw new MojoExecutionException("Cannot write the RsaML " + format.id() + " report " + file + ": "
-                        + ReportFiles.reason(e, file), e);
-            }
+            files.put(Path.of(relative(directory.toPath().resolve(fileName.apply(format)))), format);
+        }
+        List<String> failures = ReportFiles.writeAll(report, files, baseDirectory.toPath(),
+                new ReportOptions(pluginVersion, baseDirectory.toPath(), false));
+        if (!failures.isEmpty()) {
+            failures.forEach(getLog()::error);
+            throw new MojoExecutionException("Cannot write " + (failures.size() == 1 ? "an RsaML report" : failures.size() + " RsaML reports")
+                    + "; see the errors above");
         }
     }
 }

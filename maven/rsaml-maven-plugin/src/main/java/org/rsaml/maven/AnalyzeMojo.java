@@ -9,6 +9,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Consumer;
 
 import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
@@ -88,18 +89,17 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
                 "failOn is '" + failOn + "'; it is miss, not-analysed or never"));
         List<Path> shown = models.stream().map(model -> Path.of(relative(model.toPath()))).toList();
         TimingJson.Document json = new TimingJson.Document();
+        TimingFailOn effective = failOnMiss ? level : TimingFailOn.NEVER;
         TimingBatch.Outcome outcome = TimingBatch.run(baseDirectory.toPath(), shown, timeline == null ? null : timeline.toPath(),
-                failOnMiss ? level : TimingFailOn.NEVER, new TimingBatch.Listener() {
+                effective, new TimingBatch.Listener() {
                     @Override
                     public void analysed(String displayName, ArchitectureTiming timing) {
                         json.add(displayName, timing);
-                        for (String line : TimingText.render(displayName, timing).split("\n")) {
-                            if (timing.verdict() == Verdict.MISSES && line.contains("MISSES")) {
-                                log.error(line);
-                            } else {
-                                log.info(line);
-                            }
-                        }
+                        // The analysis's verdict chooses the level: a model that fails the build is an error,
+                        // one with a verdict short of "meets" a warning.
+                        Consumer<CharSequence> level = effective.fails(timing.verdict()) ? log::error
+                                : timing.verdict() != Verdict.MEETS ? log::warn : log::info;
+                        TimingText.render(displayName, timing).lines().forEach(level);
                     }
 
                     @Override
