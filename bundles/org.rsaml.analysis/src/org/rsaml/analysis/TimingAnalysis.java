@@ -122,7 +122,7 @@ public final class TimingAnalysis {
         for (Group g : groups) {
             if (g.modules > 0) {
                 int core = g.element == null || g.element.getCore() < 0 ? -1 : g.element.getCore();
-                byHost.computeIfAbsent(host(g.element), h -> new java.util.TreeMap<>()).computeIfAbsent(core, c -> new ArrayList<>()).add(g);
+                byHost.computeIfAbsent(RsamlLabels.host(g.element), h -> new java.util.TreeMap<>()).computeIfAbsent(core, c -> new ArrayList<>()).add(g);
             }
         }
         Map<Group, String> shared = new IdentityHashMap<>();
@@ -143,11 +143,6 @@ public final class TimingAnalysis {
             domains.forEach(g -> shared.put(g, why));
         }));
         return shared;
-    }
-
-    /** The machine a processor is on: its host, or "" for the architecture's main host (also the default processor's). */
-    public static String host(Processor p) {
-        return p == null || p.getHost() == null || p.getHost().isBlank() ? "" : p.getHost().strip();
     }
 
     private static String names(List<String> names) {

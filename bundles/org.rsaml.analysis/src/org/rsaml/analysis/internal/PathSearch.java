@@ -18,7 +18,6 @@ import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.Hop;
 import org.rsaml.analysis.LatencyResult;
 import org.rsaml.analysis.PathBound;
-import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.internal.Latencies.Stage;
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.Flow;
@@ -279,8 +278,8 @@ final class PathSearch {
      * null on one host or when neither processor gives a latency.
      */
     private static Hop crossing(PlannedModule a, PlannedModule b) {
-        String from = TimingAnalysis.host(a.processor());
-        String to = TimingAnalysis.host(b.processor());
+        String from = RsamlLabels.host(a.processor());
+        String to = RsamlLabels.host(b.processor());
         if (from.equals(to)) {
             return null;
         }

@@ -43,7 +43,7 @@ public class RsamlServices {
         if (self instanceof Processor processor) {
             return RsamlLabels.name(processor) + " \u2014 " + (processor.isSetSchedPolicy() ? processor.getSchedPolicy().getLiteral() : "fixed priorities")
                     + (processor.getCore() >= 0 ? ", core " + processor.getCore() : ", any core")
-                    + (processor.getHost() == null || processor.getHost().isBlank() ? "" : ", on " + processor.getHost().trim());
+                    + (RsamlLabels.host(processor).isEmpty() ? "" : ", on " + RsamlLabels.host(processor));
         }
         if (self instanceof Connection connection) {
             return connection.getSource() == null ? "" : RsamlLabels.dataType(connection.getSource());

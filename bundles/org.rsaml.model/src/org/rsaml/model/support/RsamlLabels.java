@@ -17,6 +17,7 @@ import org.rsaml.model.Function;
 import org.rsaml.model.Layer;
 import org.rsaml.model.NamedElement;
 import org.rsaml.model.Port;
+import org.rsaml.model.Processor;
 import org.rsaml.model.RealTimeElement;
 import org.rsaml.model.SchedulingPolicy;
 import org.rsaml.model.TimeScaled;
@@ -52,6 +53,15 @@ public final class RsamlLabels {
             return name(connection.getSource()) + " -> " + name(connection.getTarget());
         }
         return element == null ? "<none>" : "<unnamed " + element.eClass().getName() + ">";
+    }
+
+    /**
+     * The machine a processor is on: its host, stripped of surrounding white space, or "" for the architecture's main
+     * host (a processor without a host, and the default processor). Two processors with the same host share a
+     * machine; the analysis, the generated launch files and the diagrams' labels all ask here.
+     */
+    public static String host(Processor processor) {
+        return processor == null || processor.getHost() == null || processor.getHost().isBlank() ? "" : processor.getHost().strip();
     }
 
     /**

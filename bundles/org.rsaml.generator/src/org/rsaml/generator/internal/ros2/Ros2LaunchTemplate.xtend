@@ -4,8 +4,8 @@
  */
 package org.rsaml.generator.internal.ros2
 
-import org.rsaml.analysis.TimingAnalysis
 import org.rsaml.generator.internal.Names
+import org.rsaml.model.support.RsamlLabels
 import org.rsaml.generator.internal.cxx.CxxNames
 
 /**
@@ -133,12 +133,12 @@ class Ros2LaunchTemplate extends Ros2Template {
 
 	/** Whether some processor is on another host: then the launch files take the argument host. */
 	def private hosted() {
-		plan.architecture.processors.exists[!TimingAnalysis.host(it).empty]
+		plan.architecture.processors.exists[!RsamlLabels.host(it).empty]
 	}
 
 	/** The condition that starts what runs on processor p's host (main: no host) when host:= names it or is empty. */
 	def private onHost(org.rsaml.model.Processor p) {
-		val host = TimingAnalysis.host(p)
+		val host = RsamlLabels.host(p)
 		"IfCondition(PythonExpression([\"'\", LaunchConfiguration('host'), " + py("' in ('', " + py(if (host.empty) "main" else host) + ")") + "]))"
 	}
 
