@@ -24,15 +24,14 @@ import org.rsaml.text.grammar.Constructs.ValueKind;
  * The language reference of docs/textual-syntax.md, made from the grammar ({@link Constructs}) and rsaml.ecore: every
  * concept with its keyword and what its braces hold, every attribute with the feature it sets and its values, every
  * unit; each with an example, taken from the textual examples ({@code examples-text/}) where one uses the keyword,
- * else made from the grammar. {@code releng/org.rsaml.codegen} writes it between {@link #BEGIN} and {@link #END}
- * ({@link #REGENERATE}); a test checks that the committed page is what it writes.
+ * else made from the grammar. {@code releng/org.rsaml.docgen} writes it between {@link #BEGIN} and {@link #END} when
+ * the generated files are regenerated, and checks that the committed page is what it writes.
  */
 public final class LanguageReference {
 
     public static final String PATH = "docs/textual-syntax.md";
-    public static final String BEGIN = "<!-- begin: generated from RsamlText.xtext and rsaml.ecore by releng/org.rsaml.codegen; do not edit -->";
+    public static final String BEGIN = "<!-- begin: generated from RsamlText.xtext and rsaml.ecore by releng/org.rsaml.docgen; do not edit -->";
     public static final String END = "<!-- end: generated -->";
-    public static final String REGENERATE = "./mvnw -Pregenerate -pl releng/org.rsaml.codegen -am process-classes";
 
     private static final int LONGEST_EXAMPLE = 110;
 

@@ -5,9 +5,7 @@
 package org.rsaml.codegen;
 
 import java.io.IOException;
-import java.io.Reader;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -37,24 +35,27 @@ import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
 import org.eclipse.emf.ecore.xmi.impl.EcoreResourceFactoryImpl;
 import org.eclipse.emf.ecore.xmi.impl.XMIResourceFactoryImpl;
-import org.eclipse.xtext.Grammar;
-import org.eclipse.xtext.XtextStandaloneSetup;
-import org.eclipse.xtext.resource.XtextResourceSet;
-import org.rsaml.model.RsamlPackage;
-import org.rsaml.text.grammar.Constructs;
-import org.rsaml.text.grammar.LanguageReference;
-import org.rsaml.validation.RulesDocument;
 
 /**
- * Generates RsaML's EMF code (model, edit and editor) from {@code rsaml.ecore} outside Eclipse, and
- * the rule table of {@code docs/rules.md} from the rule catalogue, the language reference of
- * {@code docs/textual-syntax.md} from the grammar of the textual syntax.
+ * Generates RsaML's EMF code (model, edit and editor) from {@code rsaml.ecore} outside Eclipse.
  *
  * <p>The genmodel is rebuilt from the current .ecore on every run (keeping its settings), so that
  * a change to the metamodel needs nothing but this command. Everything is generated into a scratch
  * folder first; {@code write} then replaces the committed files, {@code check} only compares.
+ *
+ * <p>Nothing of RsaML is on this module's class path: the EMF code (and, in the same run, the Xtext code of
+ * the textual syntax, see the pom) is generated before any bundle is compiled, so it can be regenerated
+ * when the committed generated code no longer compiles. The documentation tables made from the bundles
+ * (the rule table, the language reference) are written after them, by {@code releng/org.rsaml.docgen}.
  */
 public final class RsamlCodegen {
+
+    /**
+     * The one command that regenerates everything generated from a source in the repository: the EMF code
+     * (this class), the Xtext code of the textual syntax, then the documentation tables
+     * ({@code releng/org.rsaml.docgen}, built after the bundles it reads, which compile against the new code).
+     */
+    public static final String REGENERATE = "./mvnw -Pregenerate -pl releng/org.rsaml.codegen,releng/org.rsaml.docgen -am process-classes";
 
     /**
      * What is generated, per bundle: the folders and files the generator owns. Every bundle's
@@ -82,15 +83,35 @@ public final class RsamlCodegen {
     }
 
     public static void main(String[] args) throws IOException {
+        run("RsamlCodegen", args, RsamlCodegen::write, RsamlCodegen::check);
+    }
+
+    /** A generator's writing: rewrites its generated files in the clone at {@code root}. */
+    @FunctionalInterface
+    public interface Write {
+        void apply(Path root) throws IOException;
+    }
+
+    /** A generator's check: the files of the clone at {@code root} that differ from what it would write. */
+    @FunctionalInterface
+    public interface Check {
+        List<String> apply(Path root) throws IOException;
+    }
+
+    /**
+     * The command line every generator of the regeneration command has, {@code write|check <repository root>}:
+     * {@code write} rewrites the generated files, {@code check} lists the stale ones and exits 1 when there are any.
+     */
+    public static void run(String name, String[] args, Write write, Check check) throws IOException {
         if (args.length != 2 || !(args[0].equals("write") || args[0].equals("check"))) {
-            System.err.println("usage: RsamlCodegen write|check <repository root>");
+            System.err.println("usage: " + name + " write|check <repository root>");
             System.exit(2);
         }
         Path root = Path.of(args[1]).toAbsolutePath().normalize();
         if (args[0].equals("write")) {
-            write(root);
+            write.apply(root);
         } else {
-            List<String> stale = check(root);
+            List<String> stale = check.apply(root);
             stale.forEach(s -> System.err.println("out of date: " + s));
             System.exit(stale.isEmpty() ? 0 : 1);
         }
@@ -115,56 +136,6 @@ public final class RsamlCodegen {
         } finally {
             deleteTree(scratch);
         }
-        writeRulesDocument(root);
-        writeLanguageReference(root);
-    }
-
-    /** The grammar of the textual syntax as its source says (the generated parser may be older: it is regenerated after this). */
-    static Grammar grammar(Path root) {
-        RsamlPackage.eINSTANCE.eClass();
-        XtextResourceSet resources = new XtextStandaloneSetup().createInjectorAndDoEMFRegistration().getInstance(XtextResourceSet.class);
-        Resource resource = resources.getResource(URI.createFileURI(root.resolve(GRAMMAR).toAbsolutePath().toString()), true);
-        if (!resource.getErrors().isEmpty()) {
-            throw new IllegalStateException(GRAMMAR + " has errors: " + resource.getErrors());
-        }
-        return (Grammar) resource.getContents().get(0);
-    }
-
-    static final String GRAMMAR = "bundles/org.rsaml.text/src/org/rsaml/text/RsamlText.xtext";
-
-    /** Rewrites the language reference of docs/textual-syntax.md from the textual grammar and the textual examples. */
-    static void writeLanguageReference(Path root) throws IOException {
-        Path page = root.resolve(LanguageReference.PATH);
-        String current = Files.readString(page, StandardCharsets.UTF_8);
-        List<String> examples = new ArrayList<>();
-        try (Stream<Path> files = Files.list(root.resolve("examples-text"))) {
-            for (Path file : files.filter(f -> f.toString().endsWith(".rsa")).sorted().toList()) {
-                examples.add(Files.readString(file, StandardCharsets.UTF_8));
-            }
-        }
-        String updated = LanguageReference.update(current, new Constructs(grammar(root)), examples);
-        if (!updated.equals(current)) {
-            Files.writeString(page, updated, StandardCharsets.UTF_8);
-        }
-        System.out.println("Regenerated the language reference of " + page + " from the grammar of the textual syntax");
-    }
-
-    /** Rewrites the rule table of docs/rules.md from the catalogue (the file is left alone when it is up to date). */
-    static void writeRulesDocument(Path root) throws IOException {
-        Path page = root.resolve(RulesDocument.PATH);
-        String current = Files.readString(page, StandardCharsets.UTF_8);
-        String updated = rulesDocument(root, current);
-        if (!updated.equals(current)) {
-            Files.writeString(page, updated, StandardCharsets.UTF_8);
-        }
-        System.out.println("Regenerated the rule table of " + page + " from " + root.resolve(RulesDocument.CATALOGUE));
-    }
-
-    /** The page with its rule table produced from the catalogue of the clone at {@code root}. */
-    static String rulesDocument(Path root, String page) throws IOException {
-        try (Reader catalogue = Files.newBufferedReader(root.resolve(RulesDocument.CATALOGUE), StandardCharsets.UTF_8)) {
-            return RulesDocument.update(page, RulesDocument.read(catalogue));
-        }
     }
 
     /** Regenerates into a scratch folder and lists every committed file that differs from it. */
@@ -182,10 +153,6 @@ public final class RsamlCodegen {
             }
             compare(scratch.resolve("rsaml.genmodel"), root.resolve(MODEL_DIR + "rsaml.genmodel"),
                     MODEL_DIR + "rsaml.genmodel", stale);
-            String page = Files.readString(root.resolve(RulesDocument.PATH), StandardCharsets.UTF_8);
-            if (!rulesDocument(root, page).equals(page)) {
-                stale.add(RulesDocument.PATH + " (the rule table)");
-            }
             return stale;
         } finally {
             deleteTree(scratch);

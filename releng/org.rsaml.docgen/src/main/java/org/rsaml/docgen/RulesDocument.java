@@ -2,25 +2,25 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.validation;
+package org.rsaml.docgen;
 
 import java.io.IOException;
 import java.io.Reader;
 import java.util.ArrayList;
 import java.util.List;
 
+import org.rsaml.codegen.RsamlCodegen;
 import org.rsaml.validation.RsamlValidationSetup.RuleDefinitionException;
+import org.rsaml.validation.Rule;
 import org.rsaml.validation.internal.RuleCatalog;
 
 /**
  * The rule table of {@code docs/rules.md}, produced from the rule catalogue: every column of every
- * rule, between two marker lines. {@code releng/org.rsaml.codegen} writes it with the other generated
- * files ({@link #REGENERATE}); the tests only compare.
+ * rule, between two marker lines. {@link RsamlDocgen} writes it when the generated files are regenerated
+ * ({@link RsamlCodegen#REGENERATE}); the tests only compare. A build-time writer: it is in no bundle a
+ * user installs.
  */
 public final class RulesDocument {
-
-    /** The command that regenerates the table, with the EMF and Xtext code. */
-    public static final String REGENERATE = "./mvnw -Pregenerate -pl releng/org.rsaml.codegen -am process-classes";
 
     /** The rule catalogue, relative to the repository root. */
     public static final String CATALOGUE = RuleCatalog.SOURCE_FILE;
@@ -29,7 +29,7 @@ public final class RulesDocument {
     public static final String PATH = "docs/rules.md";
 
     /** The line before the table. */
-    public static final String BEGIN = "<!-- rules: produced from " + CATALOGUE + " by " + REGENERATE + " -->";
+    public static final String BEGIN = "<!-- rules: produced from " + CATALOGUE + " by " + RsamlCodegen.REGENERATE + " -->";
 
     /** The line after the table. */
     public static final String END = "<!-- end of rules -->";
