@@ -97,9 +97,9 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
                         json.add(displayName, timing);
                         // The analysis's verdict chooses the level: a model that fails the build is an error,
                         // one with a verdict short of "meets" a warning.
-                        Consumer<CharSequence> level = effective.fails(timing.verdict()) ? log::error
+                        Consumer<CharSequence> logAt = effective.fails(timing.verdict()) ? log::error
                                 : timing.verdict() != Verdict.MEETS ? log::warn : log::info;
-                        TimingText.render(displayName, timing).lines().forEach(level);
+                        TimingText.render(displayName, timing).lines().forEach(logAt);
                     }
 
                     @Override
