@@ -21,7 +21,6 @@ import org.eclipse.xtext.resource.XtextResourceSet;
 import org.rsaml.codegen.RsamlCodegen;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.text.grammar.Constructs;
-import org.rsaml.text.grammar.LanguageReference;
 
 /**
  * Writes the documentation tables made from RsaML's sources: the rule table of {@code docs/rules.md} from the

@@ -15,7 +15,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.codegen.RsamlCodegen;
 import org.rsaml.tests.support.TestRepository;
-import org.rsaml.text.grammar.LanguageReference;
 
 /** The committed tables are what the regeneration command makes of the sources; a stale one is found and rewritten. */
 class GeneratedDocsUpToDateTest {

@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.text.grammar;
+package org.rsaml.docgen;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -16,6 +16,7 @@ import org.eclipse.emf.ecore.EEnum;
 import org.eclipse.emf.ecore.EEnumLiteral;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.rsaml.model.RsamlPackage;
+import org.rsaml.text.grammar.Constructs;
 import org.rsaml.text.grammar.Constructs.Attribute;
 import org.rsaml.text.grammar.Constructs.Construct;
 import org.rsaml.text.grammar.Constructs.ValueKind;
@@ -24,14 +25,15 @@ import org.rsaml.text.grammar.Constructs.ValueKind;
  * The language reference of docs/textual-syntax.md, made from the grammar ({@link Constructs}) and rsaml.ecore: every
  * concept with its keyword and what its braces hold, every attribute with the feature it sets and its values, every
  * unit; each with an example, taken from the textual examples ({@code examples-text/}) where one uses the keyword,
- * else made from the grammar. {@code releng/org.rsaml.docgen} writes it between {@link #BEGIN} and {@link #END} when
- * the generated files are regenerated, and checks that the committed page is what it writes.
+ * else made from the grammar. {@link RsamlDocgen} writes it between {@link #BEGIN} and {@link #END} when the
+ * generated files are regenerated, and checks that the committed page is what it writes. It lives here, not in
+ * {@code org.rsaml.text}: it is a build-time writer of a page, no part of the runtime.
  */
-public final class LanguageReference {
+final class LanguageReference {
 
-    public static final String PATH = "docs/textual-syntax.md";
-    public static final String BEGIN = "<!-- begin: generated from RsamlText.xtext and rsaml.ecore by releng/org.rsaml.docgen; do not edit -->";
-    public static final String END = "<!-- end: generated -->";
+    static final String PATH = "docs/textual-syntax.md";
+    static final String BEGIN = "<!-- begin: generated from RsamlText.xtext and rsaml.ecore by releng/org.rsaml.docgen; do not edit -->";
+    static final String END = "<!-- end: generated -->";
 
     private static final int LONGEST_EXAMPLE = 110;
 
@@ -39,7 +41,7 @@ public final class LanguageReference {
     }
 
     /** The page with its generated part replaced. */
-    public static String update(String page, Constructs constructs, List<String> exampleTexts) {
+    static String update(String page, Constructs constructs, List<String> exampleTexts) {
         int begin = page.indexOf(BEGIN);
         int end = page.indexOf(END);
         if (begin < 0 || end < begin) {
@@ -49,7 +51,7 @@ public final class LanguageReference {
     }
 
     /** The generated part: concepts, attributes, units. */
-    public static String reference(Constructs constructs, List<String> exampleTexts) {
+    static String reference(Constructs constructs, List<String> exampleTexts) {
         List<String> lines = new ArrayList<>();
         List<String> enclosing = new ArrayList<>();
         for (String text : exampleTexts) {

@@ -2,7 +2,7 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-package org.rsaml.text.tests;
+package org.rsaml.docgen;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -15,17 +15,12 @@ import java.util.List;
 import org.eclipse.xtext.GrammarUtil;
 import org.junit.jupiter.api.Test;
 import org.rsaml.tests.support.TestRepository;
-import org.rsaml.text.RsamlTextStandaloneSetup;
-import org.rsaml.text.grammar.LanguageReference;
-import org.rsaml.text.services.RsamlTextGrammarAccess;
 
 /**
- * docs/textual-syntax.md's reference names every keyword and unit of the grammar (releng/org.rsaml.docgen checks that
- * it is what the regeneration command makes of the grammar).
+ * docs/textual-syntax.md's generated reference names every keyword and unit of the grammar ({@link GeneratedDocsUpToDateTest}
+ * checks that it is what the regeneration command makes of the grammar).
  */
 class LanguageReferenceTest {
-
-    private static final RsamlTextGrammarAccess GRAMMAR = RsamlTextStandaloneSetup.injector().getInstance(RsamlTextGrammarAccess.class);
 
     private static String page() throws Exception {
         return Files.readString(TestRepository.root().resolve(LanguageReference.PATH), StandardCharsets.UTF_8);
@@ -36,7 +31,7 @@ class LanguageReferenceTest {
         String page = page();
         String generated = page.substring(page.indexOf(LanguageReference.BEGIN), page.indexOf(LanguageReference.END));
         List<String> missing = new ArrayList<>();
-        for (String keyword : GrammarUtil.getAllKeywords(GRAMMAR.getGrammar())) {
+        for (String keyword : GrammarUtil.getAllKeywords(RsamlDocgen.grammar(TestRepository.root()))) {
             if (Character.isLetter(keyword.charAt(0)) && !generated.contains("`" + keyword + "`") && !generated.contains(" " + keyword + ",")
                     && !generated.contains(" " + keyword + " |")) {
                 missing.add(keyword);
