@@ -42,12 +42,20 @@ public final class ModelConverter {
 
     /**
      * Reads {@code input} (reported as {@code inputShown}) and writes the same model to {@code output}
-     * in the syntax of the output's extension ({@code .rsa}: text, anything else: XMI).
+     * in the syntax of the output's extension ({@code .rsa}: text, anything else: XMI). An output that is a
+     * directory or the input itself is refused before anything is read; an input that is not a regular file is
+     * refused by the loader.
      *
      * @throws ModelLoadException the input cannot be read, or the model cannot be written in the output's syntax
-     * @throws IOException        the output cannot be written
+     * @throws IOException        the output cannot be written (its message says why, for the output's name to precede it)
      */
     public static void convert(Path input, String inputShown, Path output) throws ModelLoadException, IOException {
+        if (Files.isDirectory(output)) {
+            throw new IOException("is a directory; name the file to write");
+        }
+        if (Files.exists(output) && Files.exists(input) && Files.isSameFile(input, output)) {
+            throw new IOException("is the input itself; name another file");
+        }
         LoadedModel model = ModelLoader.load(input, inputShown);
         byte[] bytes;
         try {

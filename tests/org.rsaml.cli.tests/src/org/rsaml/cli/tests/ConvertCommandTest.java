@@ -64,4 +64,27 @@ class ConvertCommandTest {
         assertFalse(result.err().contains("\tat "), "no stack trace: " + result.err());
         assertFalse(Files.exists(temp.resolve("bad.rsaml")), "nothing is written");
     }
+
+    @Test
+    void aFolderOrTheInputItselfIsRefusedAsOutputAndAFolderAsInput() throws Exception {
+        Files.copy(Cli.ROOT.resolve("examples/exp1-hybrid.rsaml"), temp.resolve("exp1.rsaml"));
+        String before = Files.readString(temp.resolve("exp1.rsaml"));
+        Files.createDirectories(temp.resolve("out.rsa"));
+
+        Cli.Result folderOut = Cli.runIn(temp, "convert", "exp1.rsaml", "out.rsa");
+        assertEquals(2, folderOut.code(), folderOut.toString());
+        assertEquals("out.rsa: error: cannot be written: is a directory; name the file to write\n", folderOut.err(), folderOut.toString());
+        assertTrue(Files.isDirectory(temp.resolve("out.rsa")), "the folder is left as it was");
+
+        Cli.Result itself = Cli.runIn(temp, "convert", "exp1.rsaml", "./exp1.rsaml");
+        assertEquals(2, itself.code(), itself.toString());
+        assertEquals("./exp1.rsaml: error: cannot be written: is the input itself; name another file\n", itself.err(), itself.toString());
+        assertEquals(before, Files.readString(temp.resolve("exp1.rsaml")), "the input is left as it was");
+
+        Cli.Result folderIn = Cli.runIn(temp, "convert", "out.rsa", "x.rsaml");
+        assertEquals(2, folderIn.code(), folderIn.toString());
+        assertTrue(folderIn.err().startsWith("out.rsa") && folderIn.err().contains("is a directory"), "the input named, and why: " + folderIn);
+        assertFalse(folderIn.err().contains("\tat "), "no stack trace: " + folderIn);
+        assertFalse(Files.exists(temp.resolve("x.rsaml")), "nothing is written");
+    }
 }

@@ -6,7 +6,6 @@ package org.rsaml.cli;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 import org.rsaml.report.ExitCodes;
@@ -15,7 +14,6 @@ import org.rsaml.report.Text;
 import org.rsaml.text.convert.ModelConverter;
 import org.rsaml.validation.ModelLoadException;
 
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 
@@ -39,17 +37,7 @@ final class ConvertCommand extends RsamlCommand {
         Path target = parent.workingDirectory.resolve(output);
         String shownIn = ModelFiles.display(input);
         String shownOut = ModelFiles.display(output);
-        if (!Files.isRegularFile(in)) {
-            err.println(Text.line(shownIn + ": error: " + (Files.isDirectory(in) ? "is a directory; convert one model file at a time" : "no such file")));
-            return ExitCodes.INPUT_ERROR;
-        }
-        if (Files.isDirectory(target)) {
-            throw new CommandLine.ParameterException(spec.commandLine(), shownOut + " is a directory; OUT names the file to write");
-        }
         try {
-            if (Files.exists(target) && Files.isSameFile(in, target)) {
-                throw new CommandLine.ParameterException(spec.commandLine(), shownOut + " is the input itself; name another file");
-            }
             ModelConverter.convert(in, shownIn, target);
         } catch (ModelLoadException e) {
             Text.lines(e).forEach(err::println);
