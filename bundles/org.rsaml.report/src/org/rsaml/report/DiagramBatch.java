@@ -4,6 +4,7 @@
  */
 package org.rsaml.report;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -48,6 +49,18 @@ public final class DiagramBatch {
     }
 
     /**
+     * Why the batch will not draw into {@code directory} ({@code shownDirectory} as the user spelt it), said as the user
+     * should read it, before anything is written: the directory is a file, or two models would overwrite each other's
+     * diagram ({@link #clash}). Both front ends ask this before {@link #draw}.
+     */
+    public Optional<String> refusal(List<ModelFiles.Input> inputs, Path directory, Path shownDirectory) {
+        if (Files.exists(directory) && !Files.isDirectory(directory)) {
+            return Optional.of(ModelFiles.display(shownDirectory) + " is a file; name the directory the diagrams are written to");
+        }
+        return clash(inputs, shownDirectory).map(clash -> clash + "; draw them into different directories");
+    }
+
+    /**
      * The first pair of models that would overwrite each other's diagram, as
      * "{@code a and b would both be drawn to DIR/file}" with {@code shownDirectory} as the user spelt it.
      */
@@ -72,7 +85,7 @@ public final class DiagramBatch {
     }
 
     /**
-     * Draws every usable input into {@code directory} (call {@link #clash} first).
+     * Draws every usable input into {@code directory} (ask {@link #refusal} first).
      *
      * @return the number of inputs that could not be read or drawn
      */

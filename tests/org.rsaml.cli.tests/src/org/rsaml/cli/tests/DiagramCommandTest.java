@@ -120,7 +120,7 @@ class DiagramCommandTest {
         Files.writeString(dir.resolve("afile"), "mine");
         Cli.Result file = Cli.runIn(dir, "diagram", "-o", "afile", model);
         assertEquals(2, file.code(), file::toString);
-        assertTrue(file.err().contains("afile is a file; -o names the directory the diagrams are written to"), file::toString);
+        assertTrue(file.err().contains("afile is a file; name the directory the diagrams are written to"), file::toString);
         assertEquals("mine", Files.readString(dir.resolve("afile")));
 
         Files.createDirectories(dir.resolve("a"));

@@ -61,6 +61,22 @@ class DiagramBatchTest {
     }
 
     @Test
+    void aFileWhereTheDirectoryShouldBeAndAClashAreRefusedWithWhatToDo(@TempDir Path dir) throws Exception {
+        Files.copy(TestRepository.example("exp1-hybrid.rsaml"), dir.resolve("robot.rsaml"));
+        Files.writeString(dir.resolve("out"), "mine");
+        List<ModelFiles.Input> inputs = ModelFiles.select(dir, List.of(Path.of("robot.rsaml")));
+
+        assertEquals(Optional.of("out is a file; name the directory the diagrams are written to"),
+                BOTH_VIEWS.refusal(inputs, dir.resolve("out"), Path.of("out")), "a file is not drawn into");
+        assertEquals("mine", Files.readString(dir.resolve("out")), "the file is left as it was");
+        assertEquals(Optional.empty(), BOTH_VIEWS.refusal(inputs, dir.resolve("diagrams"), Path.of("diagrams")),
+                "a directory still to be made is fine");
+        List<ModelFiles.Input> twice = List.of(inputs.get(0), inputs.get(0));
+        assertEquals(Optional.of("robot.rsaml and robot.rsaml would both be drawn to diagrams/robot-architecture.svg; draw them into different directories"),
+                BOTH_VIEWS.refusal(twice, dir.resolve("diagrams"), Path.of("diagrams")), "a clash is refused with what to do");
+    }
+
+    @Test
     void everyModelIsDrawnInEveryViewAndFormatAndAFailingOneCostsOnlyItself(@TempDir Path dir) throws Exception {
         Files.copy(TestRepository.example("exp1-hybrid.rsaml"), dir.resolve("hybrid.rsaml"));
         Files.writeString(dir.resolve("broken.rsaml"), "<not a model");

@@ -5,7 +5,6 @@
 package org.rsaml.cli;
 
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
@@ -60,15 +59,11 @@ final class DiagramCommand extends RsamlCommand {
         PrintWriter out = out();
         PrintWriter err = err();
         Path directory = parent.workingDirectory.resolve(output);
-        if (Files.exists(directory) && !Files.isDirectory(directory)) {
-            throw new CommandLine.ParameterException(spec.commandLine(),
-                    ModelFiles.display(output) + " is a file; -o names the directory the diagrams are written to");
-        }
         DiagramBatch batch = new DiagramBatch(List.of(view), List.of(format),
                 timing == null ? TimingMode.AUTO : timing ? TimingMode.ON : TimingMode.OFF);
         List<ModelFiles.Input> inputs = ModelFiles.select(parent.workingDirectory, models);
-        batch.clash(inputs, output).ifPresent(clash -> {
-            throw new CommandLine.ParameterException(spec.commandLine(), clash + "; draw them into different directories");
+        batch.refusal(inputs, directory, output).ifPresent(refusal -> {
+            throw new CommandLine.ParameterException(spec.commandLine(), refusal);
         });
         int failed = batch.draw(inputs, directory, new DiagramBatch.Listener() {
             @Override

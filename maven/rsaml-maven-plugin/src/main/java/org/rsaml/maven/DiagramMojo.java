@@ -83,9 +83,9 @@ public class DiagramMojo extends AbstractModelsMojo {
         }
         DiagramBatch batch = new DiagramBatch(diagramViews, formats, timingMode);
         List<ModelFiles.Input> inputs = ModelFiles.select(baseDirectory.toPath(), models);
-        Optional<String> clash = batch.clash(inputs, Path.of(relative(outputDirectory.toPath())));
-        if (clash.isPresent()) {
-            throw new MojoFailureException(clash.get() + "; draw them with separate executions");
+        Optional<String> refusal = batch.refusal(inputs, outputDirectory.toPath(), Path.of(relative(outputDirectory.toPath())));
+        if (refusal.isPresent()) {
+            throw new MojoFailureException(refusal.get());
         }
         int failed = batch.draw(inputs, outputDirectory.toPath(), new DiagramBatch.Listener() {
             @Override
