@@ -126,9 +126,7 @@ public final class TimingText {
                     .append(l.reactionNs() < 0 ? "-" : RsamlTimes.text(l.reactionNs())).append(", data age ")
                     .append(l.dataAgeNs() < 0 ? "-" : RsamlTimes.text(l.dataAgeNs())).append("):\n");
             for (Hop h : l.worstPath()) {
-                out.append("    ").append(h.label()).append(": +").append(RsamlTimes.text(h.totalNs())).append(" (wait ")
-                        .append(RsamlTimes.text(h.waitNs())).append(" + response ").append(RsamlTimes.text(h.responseNs())).append("): ")
-                        .append(h.activation()).append('\n');
+                out.append("    ").append(h.label()).append(": ").append(h.contribution()).append(": ").append(h.activation()).append('\n');
             }
         }
         if (!l.pathBounds().isEmpty()) {

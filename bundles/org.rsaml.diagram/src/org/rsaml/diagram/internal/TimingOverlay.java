@@ -142,8 +142,7 @@ public final class TimingOverlay implements DiagramOverlay {
             // The analysis' own module, not one found by name: names need not tell modules apart.
             Module m = hop.module();
             hops.add(m);
-            details.add((hops.size()) + ". " + hop.label() + ": +" + RsamlTimes.text(hop.totalNs()) + " (wait " + RsamlTimes.text(hop.waitNs()) + " + response "
-                    + RsamlTimes.text(hop.responseNs()) + ")");
+            details.add((hops.size()) + ". " + hop.label() + ": " + hop.contribution());
         }
         if (!hops.isEmpty() && !hops.contains(null)) {
             Set<String> on = new LinkedHashSet<>();
@@ -162,8 +161,7 @@ public final class TimingOverlay implements DiagramOverlay {
                 Module m = hops.get(i);
                 Hop hop = l.worstPath().get(i);
                 on.add(RsamlLabels.qualifiedName(m));
-                add(RsamlLabels.qualifiedName(m), new Line(l.name() + " hop " + (i + 1) + ": +" + RsamlTimes.text(hop.totalNs()) + " (wait "
-                        + RsamlTimes.text(hop.waitNs()) + " + response " + RsamlTimes.text(hop.responseNs()) + ")", style(l.verdict())));
+                add(RsamlLabels.qualifiedName(m), new Line(l.name() + " hop " + (i + 1) + ": " + hop.contribution(), style(l.verdict())));
                 if (i + 1 < hops.size()) {
                     connections(architecture, null, m, hops.get(i + 1), on);
                 }
