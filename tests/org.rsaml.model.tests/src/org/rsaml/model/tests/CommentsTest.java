@@ -98,7 +98,7 @@ class CommentsTest {
     @Test
     void commentsAfterTheLastChildAndInAnEmptiedElementStayInside() throws Exception {
         Path file = dir.resolve("commented.rsaml");
-        Files.writeString(file, LoadingTest.model("""
+        Files.writeString(file, XmiFiles.model("""
                   <!-- the only layer -->
                   <layers name="l0" level="0">
                     <modules name="m0"/>
@@ -135,7 +135,7 @@ class CommentsTest {
     @Test
     void aDeletedElementTakesItsCommentAlong() throws Exception {
         Path file = dir.resolve("deleted.rsaml");
-        Files.writeString(file, LoadingTest.model("""
+        Files.writeString(file, XmiFiles.model("""
                   <layers name="l0" level="0">
                     <!-- m0 is obsolete -->
                     <modules name="m0"/>
@@ -153,7 +153,7 @@ class CommentsTest {
     @Test
     void locationsFollowTheSavedFile() throws Exception {
         Path file = dir.resolve("moved.rsaml");
-        Files.writeString(file, LoadingTest.model("""
+        Files.writeString(file, XmiFiles.model("""
                   <layers name="l0" level="0">
                     <modules name="m0"/>
                   </layers>

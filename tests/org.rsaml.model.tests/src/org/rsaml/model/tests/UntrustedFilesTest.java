@@ -8,8 +8,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.rsaml.model.tests.LoadingTest.errors;
-import static org.rsaml.model.tests.LoadingTest.model;
+import static org.rsaml.model.tests.XmiFiles.errors;
+import static org.rsaml.model.tests.XmiFiles.model;
 
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -43,10 +43,7 @@ class UntrustedFilesTest {
     Path dir;
 
     Path write(String name, String content) throws Exception {
-        Path file = dir.resolve(name);
-        Files.createDirectories(file.getParent());
-        Files.writeString(file, content);
-        return file;
+        return XmiFiles.write(dir, name, content);
     }
 
     /** A model whose module m uses the sensors {@code reference} names. */
@@ -57,7 +54,7 @@ class UntrustedFilesTest {
     /** Loads as any client does, then resolves every reference, as editors and validators do. */
     static Resource openAndResolve(Path file) {
         ResourceSet set = new ResourceSetImpl();
-        Resource r = LoadingTest.open(set, file);
+        Resource r = XmiFiles.open(set, file);
         EcoreUtil.resolveAll(set);
         return r;
     }
@@ -129,7 +126,7 @@ class UntrustedFilesTest {
         write("other.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
                 + "<rsaml:Architecture xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"&s;\"><sensors name=\"&s;\"/></rsaml:Architecture>\n");
         ResourceSet set = new ResourceSetImpl();
-        Resource main = LoadingTest.open(set, write("main.rsaml", referring("other.rsaml#//@sensors.0")));
+        Resource main = XmiFiles.open(set, write("main.rsaml", referring("other.rsaml#//@sensors.0")));
         assertEquals("", errors(main));
         EcoreUtil.resolveAll(set);
         Module m = ((Architecture) main.getContents().get(0)).getLayers().get(0).getModules().get(0);
@@ -142,7 +139,7 @@ class UntrustedFilesTest {
     void aReferenceInTheModelsFolderTreeResolves() throws Exception {
         write("sub/devices.rsaml", model("  <sensors name=\"lidar\"/>\n"));
         ResourceSet set = new ResourceSetImpl();
-        Resource main = LoadingTest.open(set, write("main.rsaml", referring("sub/devices.rsaml#//@sensors.0")));
+        Resource main = XmiFiles.open(set, write("main.rsaml", referring("sub/devices.rsaml#//@sensors.0")));
         EcoreUtil.resolveAll(set);
         assertEquals("", errors(main));
         Module m = ((Architecture) main.getContents().get(0)).getLayers().get(0).getModules().get(0);
@@ -182,7 +179,7 @@ class UntrustedFilesTest {
         if (Files.exists(Path.of("/dev/zero"))) {
             // Named by the user (through a link in the folder), still not read.
             Path link = Files.createSymbolicLink(dir.resolve("zero.rsaml"), Path.of("/dev/zero"));
-            Resource zero = LoadingTest.open(new ResourceSetImpl(), link);
+            Resource zero = XmiFiles.open(new ResourceSetImpl(), link);
             assertTrue(errors(zero).contains("not a regular file"), () -> errors(zero));
             Files.delete(link);
         }
@@ -198,7 +195,7 @@ class UntrustedFilesTest {
         Resource pipeRef = openAndResolve(write("pipe-ref.rsaml", referring("pipe.rsaml#//@sensors.0")));
         Resource pipe = pipeRef.getResourceSet().getResource(URI.createFileURI(fifo.toString()), false);
         assertTrue(errors(pipe).contains("is not a regular file"), () -> errors(pipe));
-        assertTrue(errors(LoadingTest.open(fifo)).contains("is not a regular file"));
+        assertTrue(errors(XmiFiles.open(fifo)).contains("is not a regular file"));
     }
 
     @Test
@@ -206,7 +203,7 @@ class UntrustedFilesTest {
         Path file = write("big.rsaml", model("  <layers name=\"a\"/>\n"));
         ResourceSet set = new ResourceSetImpl();
         set.getLoadOptions().put(org.rsaml.model.resource.RsamlResource.OPTION_MAX_FILE_SIZE, 100L);
-        Resource r = LoadingTest.open(set, file);
+        Resource r = XmiFiles.open(set, file);
         assertTrue(errors(r).contains("than the 100 bytes RsaML reads"), () -> errors(r));
     }
 }
