@@ -16,21 +16,11 @@ import java.util.Set;
 import java.util.TreeSet;
 
 import org.eclipse.emf.common.command.Command;
-import org.eclipse.emf.ecore.EObject;
 import org.eclipse.sirius.diagram.DDiagram;
 import org.eclipse.sirius.diagram.DEdge;
 import org.eclipse.sirius.diagram.DDiagramElement;
-import org.eclipse.sirius.diagram.DDiagramElementContainer;
-import org.eclipse.sirius.diagram.DNode;
 import org.eclipse.sirius.diagram.EdgeTarget;
-import org.eclipse.sirius.diagram.description.DiagramDescription;
-import org.eclipse.sirius.diagram.description.tool.ContainerCreationDescription;
 import org.eclipse.sirius.diagram.description.tool.EdgeCreationDescription;
-import org.eclipse.sirius.diagram.description.tool.NodeCreationDescription;
-import org.eclipse.sirius.diagram.tools.api.command.DiagramCommandFactoryService;
-import org.eclipse.sirius.diagram.tools.api.command.IDiagramCommandFactory;
-import org.eclipse.sirius.tools.api.command.ui.NoUICallback;
-import org.eclipse.sirius.viewpoint.description.tool.AbstractToolDescription;
 import org.eclipse.sirius.viewpoint.description.tool.ToolDescription;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.AfterEach;
@@ -70,8 +60,7 @@ class SiriusToolsTest {
     private static Architecture architecture;
     private static DDiagram architectureDiagram;
     private static DDiagram missionDiagram;
-    private static IDiagramCommandFactory factory;
-    private int changes;
+    private static Palette palette;
 
     @BeforeAll
     static void diagrams() throws Exception {
@@ -79,8 +68,7 @@ class SiriusToolsTest {
         architecture = project.architecture(MODEL);
         architectureDiagram = project.create("Architecture", architecture, "tools architecture");
         missionDiagram = project.create("Missions", architecture, "tools missions");
-        factory = DiagramCommandFactoryService.getInstance().getNewProvider().getCommandFactory(project.domain());
-        factory.setUserInterfaceCallBack(new NoUICallback());
+        palette = new Palette(project);
         assertEquals(Set.of(), findings(), MODEL + " is valid before any tool runs");
     }
 
@@ -93,9 +81,7 @@ class SiriusToolsTest {
 
     @AfterEach
     void undo() {
-        for (; changes > 0; changes--) {
-            project.domain().getCommandStack().undo();
-        }
+        palette.undoAll();
         SiriusProject.flushEvents();
         assertEquals(Set.of(), findings(), "undoing the tools restores the valid model");
     }
@@ -111,87 +97,6 @@ class SiriusToolsTest {
         return lines;
     }
 
-    private static AbstractToolDescription tool(DDiagram diagram, String name) {
-        DiagramDescription description = diagram.getDescription();
-        return description.getDefaultLayer().getToolSections().stream().flatMap(s -> s.getOwnedTools().stream())
-                .filter(AbstractToolDescription.class::isInstance).map(AbstractToolDescription.class::cast)
-                .filter(t -> t.getName().equals(name)).findFirst()
-                .orElseThrow(() -> new AssertionError("the palette has the tool " + name));
-    }
-
-    private static DDiagramElement drawn(DDiagram diagram, EObject target) {
-        return diagram.getDiagramElements().stream().filter(d -> d.getTarget() == target).findFirst()
-                .orElseThrow(() -> new AssertionError(RsamlLabels.qualifiedName(target) + " is drawn in " + diagram.getName()));
-    }
-
-    private static <T> T only(List<T> added, String what) {
-        assertEquals(1, added.size(), "the tool adds one " + what + ": " + added);
-        return added.get(0);
-    }
-
-    /** Runs a creation tool on the element that draws {@code on} (the diagram itself when null) and returns what it added to {@code list}. */
-    private <T extends EObject> T create(DDiagram diagram, String toolName, EObject on, List<T> list, String what) {
-        List<T> before = new ArrayList<>(list);
-        AbstractToolDescription tool = tool(diagram, toolName);
-        Command command;
-        if (on == null && tool instanceof ContainerCreationDescription c) {
-            command = factory.buildCreateContainerCommandFromTool(diagram, c);
-        } else if (on == null && tool instanceof NodeCreationDescription n) {
-            command = factory.buildCreateNodeCommandFromTool(diagram, n);
-        } else if (tool instanceof ContainerCreationDescription c) {
-            command = factory.buildCreateContainerCommandFromTool((DDiagramElementContainer) drawn(diagram, on), c);
-        } else if (drawn(diagram, on) instanceof DNode node) {
-            command = factory.buildCreateNodeCommandFromTool(node, (NodeCreationDescription) tool);
-        } else {
-            command = factory.buildCreateNodeCommandFromTool((DDiagramElementContainer) drawn(diagram, on), (NodeCreationDescription) tool);
-        }
-        assertTrue(command.canExecute(), toolName + " can run on " + (on == null ? "the diagram" : RsamlLabels.qualifiedName(on)));
-        project.execute(command);
-        changes++;
-        List<T> added = new ArrayList<>(list);
-        added.removeAll(before);
-        T created = only(added, what);
-        drawn(diagram, created);
-        return created;
-    }
-
-    private <T extends EObject> T connect(DDiagram diagram, String toolName, EObject source, EObject target, List<T> list, String what) {
-        List<T> before = new ArrayList<>(list);
-        Command command = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(diagram, source), (EdgeTarget) drawn(diagram, target),
-                (EdgeCreationDescription) tool(diagram, toolName));
-        assertTrue(command.canExecute(), toolName + " can run from " + RsamlLabels.qualifiedName(source) + " to " + RsamlLabels.qualifiedName(target));
-        project.execute(command);
-        changes++;
-        List<T> added = new ArrayList<>(list);
-        added.removeAll(before);
-        T created = only(added, what);
-        drawn(diagram, created);
-        return created;
-    }
-
-    private void delete(DDiagram diagram, EObject element) {
-        Command command = factory.buildDeleteDiagramElement(drawn(diagram, element));
-        assertTrue(command.canExecute(), "deleting " + RsamlLabels.qualifiedName(element) + " can run");
-        project.execute(command);
-        changes++;
-        assertEquals(null, element.eContainer(), RsamlLabels.qualifiedName(element) + " is deleted from the model");
-        assertTrue(diagram.getDiagramElements().stream().noneMatch(d -> d.getTarget() == element), "and from the diagram");
-    }
-
-    /** Runs a tool the user applies by clicking an element (a function, for actions) and returns what it added to {@code list}. */
-    private <T extends EObject> T apply(DDiagram diagram, String toolName, EObject on, List<T> list, String what) {
-        List<T> before = new ArrayList<>(list);
-        Command command = factory.buildGenericToolCommandFromTool(drawn(diagram, on), (ToolDescription) tool(diagram, toolName));
-        assertTrue(command.canExecute(), toolName + " can run on " + RsamlLabels.qualifiedName(on));
-        project.execute(command);
-        changes++;
-        List<T> added = new ArrayList<>(list);
-        added.removeAll(before);
-        T created = only(added, what);
-        drawn(diagram, created);
-        return created;
-    }
-
     /** The allocation edges drawn from the module. */
     private static List<DEdge> allocations(DDiagram diagram, Module module) {
         return diagram.getEdges().stream().filter(e -> ((DDiagramElement) e.getSourceNode()).getTarget() == module)
@@ -200,42 +105,15 @@ class SiriusToolsTest {
 
     /** Draws an allocation edge from the module to the processor with the palette's tool. */
     private void allocate(Module module, Processor processor) {
-        Command command = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(architectureDiagram, module),
-                (EdgeTarget) drawn(architectureDiagram, processor), (EdgeCreationDescription) tool(architectureDiagram, "createAllocation"));
+        Command command = palette.factory().buildCreateEdgeCommandFromTool((EdgeTarget) Palette.drawn(architectureDiagram, module),
+                (EdgeTarget) Palette.drawn(architectureDiagram, processor),
+                (EdgeCreationDescription) Palette.tool(architectureDiagram, "createAllocation"));
         assertTrue(command.canExecute(), "the allocation tool can run from " + module.getName() + " to " + processor.getName());
-        project.execute(command);
-        changes++;
+        palette.execute(command);
         assertTrue(processor.getModules().contains(module), module.getName() + " is allocated to " + processor.getName());
         List<DEdge> edges = allocations(architectureDiagram, module);
         assertEquals(1, edges.size(), "one allocation edge is drawn from " + module.getName() + ": " + edges);
         assertEquals(processor, ((DDiagramElement) edges.get(0).getTargetNode()).getTarget(), "it points to " + processor.getName());
-    }
-
-    /** The edges drawn from the element that draws {@code source} to the one that draws {@code target}. */
-    private static List<DEdge> edges(DDiagram diagram, EObject source, EObject target) {
-        return diagram.getEdges().stream().filter(e -> ((DDiagramElement) e.getSourceNode()).getTarget() == source)
-                .filter(e -> ((DDiagramElement) e.getTargetNode()).getTarget() == target).toList();
-    }
-
-    /** Draws a link with an edge tool and returns its one edge. */
-    private DEdge link(DDiagram diagram, String toolName, EObject source, EObject target) {
-        Command command = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(diagram, source), (EdgeTarget) drawn(diagram, target),
-                (EdgeCreationDescription) tool(diagram, toolName));
-        assertTrue(command.canExecute(), toolName + " can run from " + RsamlLabels.qualifiedName(source) + " to " + RsamlLabels.qualifiedName(target));
-        project.execute(command);
-        changes++;
-        List<DEdge> drawnEdges = edges(diagram, source, target);
-        assertEquals(1, drawnEdges.size(), toolName + " draws one edge: " + drawnEdges);
-        return drawnEdges.get(0);
-    }
-
-    /** Deletes a link's edge from the diagram. */
-    private void unlink(DDiagram diagram, EObject source, EObject target) {
-        Command command = factory.buildDeleteDiagramElement(edges(diagram, source, target).get(0));
-        assertTrue(command.canExecute(), "deleting the link can run");
-        project.execute(command);
-        changes++;
-        assertEquals(List.of(), edges(diagram, source, target), "the link is no longer drawn");
     }
 
     private static void namedApart(NamedElement first, NamedElement second) {
@@ -254,38 +132,38 @@ class SiriusToolsTest {
 
     @Test
     void layersAreAddedAboveTheOthersAndCounted() {
-        Layer first = create(architectureDiagram, "createLayer", architecture, architecture.getLayers(), "layer");
-        Layer second = create(architectureDiagram, "createLayer", architecture, architecture.getLayers(), "layer");
+        Layer first = palette.create(architectureDiagram, "createLayer", architecture, architecture.getLayers(), "layer");
+        Layer second = palette.create(architectureDiagram, "createLayer", architecture, architecture.getLayers(), "layer");
         namedApart(first, second);
         assertEquals(architecture.getLayers().size(), architecture.getDeclaredLayers(), "the declared number of layers follows");
         assertEquals(Set.of(), findings(), "new layers are valid");
-        delete(architectureDiagram, second);
+        palette.delete(architectureDiagram, second);
         assertEquals(Set.of(), findings(), "deleting a layer leaves a valid model");
     }
 
     @Test
     void modulesFunctionsAndPortsAreAddedToTheirOwnerAndDeleted() {
         Layer layer = architecture.getLayers().get(0);
-        Module first = create(architectureDiagram, "createModule", layer, layer.getModules(), "module");
-        Module second = create(architectureDiagram, "createModule", layer, layer.getModules(), "module");
+        Module first = palette.create(architectureDiagram, "createModule", layer, layer.getModules(), "module");
+        Module second = palette.create(architectureDiagram, "createModule", layer, layer.getModules(), "module");
         namedApart(first, second);
-        var f1 = create(architectureDiagram, "createFunction", first, first.getFunctions(), "function");
-        var f2 = create(architectureDiagram, "createFunction", first, first.getFunctions(), "function");
+        var f1 = palette.create(architectureDiagram, "createFunction", first, first.getFunctions(), "function");
+        var f2 = palette.create(architectureDiagram, "createFunction", first, first.getFunctions(), "function");
         namedApart(f1, f2);
-        Port in1 = create(architectureDiagram, "createEntryPort", first, first.getPorts(), "entry port");
-        Port in2 = create(architectureDiagram, "createEntryPort", first, first.getPorts(), "entry port");
+        Port in1 = palette.create(architectureDiagram, "createEntryPort", first, first.getPorts(), "entry port");
+        Port in2 = palette.create(architectureDiagram, "createEntryPort", first, first.getPorts(), "entry port");
         namedApart(in1, in2);
         assertTrue(in1 instanceof EntryPort, "the entry port tool makes entry ports");
-        Port out = create(architectureDiagram, "createOutputPort", first, first.getPorts(), "output port");
+        Port out = palette.create(architectureDiagram, "createOutputPort", first, first.getPorts(), "output port");
         assertTrue(out instanceof OutputPort, "the output port tool makes output ports");
         // A new module has no period and nothing feeds it yet: RSA-19 says so on each (a warning), and nothing else is found.
         Set<String> found = findings();
         assertEquals(Set.of("RSA-19 " + RsamlLabels.qualifiedName(first), "RSA-19 " + RsamlLabels.qualifiedName(second)),
                 found.stream().map(f -> f.substring(0, f.indexOf(':'))).collect(java.util.stream.Collectors.toSet()),
                 "what rsaml validate finds on the new modules: " + found);
-        delete(architectureDiagram, in2);
-        delete(architectureDiagram, f2);
-        delete(architectureDiagram, second);
+        palette.delete(architectureDiagram, in2);
+        palette.delete(architectureDiagram, f2);
+        palette.delete(architectureDiagram, second);
         assertTrue(first.eContainer() == layer, "the other module stays");
         assertEquals(Set.of("RSA-19 " + RsamlLabels.qualifiedName(first)),
                 findings().stream().map(f -> f.substring(0, f.indexOf(':'))).collect(java.util.stream.Collectors.toSet()),
@@ -295,15 +173,15 @@ class SiriusToolsTest {
     @Test
     void realTimeModulesArePeriodicWithinTheirLayersBudget() {
         Layer layer = architecture.getLayers().stream().filter(l -> l.getMaxExecTime() > 0).findFirst().orElseThrow();
-        Module first = create(architectureDiagram, "createRealTimeModule", layer, layer.getModules(), "real-time module");
-        Module second = create(architectureDiagram, "createRealTimeModule", layer, layer.getModules(), "real-time module");
+        Module first = palette.create(architectureDiagram, "createRealTimeModule", layer, layer.getModules(), "real-time module");
+        Module second = palette.create(architectureDiagram, "createRealTimeModule", layer, layer.getModules(), "real-time module");
         namedApart(first, second);
         assertEquals(org.rsaml.model.ElementType.REAL_TIME, first.getType(), "the module is real-time");
         assertEquals(org.rsaml.model.ExecutionType.PERIODIC, first.getExecType(), "and periodic, so something activates it");
         assertTrue(first.getPeriod() > 0 && first.getDelay() > 0, "it has a period and a delay, as RSA-05 asks of real-time modules");
         assertTrue(first.getExecDuration() <= layer.getMaxExecTime(), "it takes no more than its layer allows");
         assertEquals(Set.of(), findings(), "new real-time modules are valid");
-        delete(architectureDiagram, second);
+        palette.delete(architectureDiagram, second);
     }
 
     @Test
@@ -328,15 +206,15 @@ class SiriusToolsTest {
             }
         }
         assertNotNull(target, MODEL + " has an entry port whose data type differs from " + RsamlLabels.qualifiedName(from) + "'s");
-        Connection connection = connect(architectureDiagram, "createConnection", source, target, architecture.getConnections(), "connection");
+        Connection connection = palette.connect(architectureDiagram, "createConnection", source, target, architecture.getConnections(), "connection");
         assertEquals(source, connection.getSource(), "the connection starts at the output port");
         assertEquals(target, connection.getTarget(), "and ends at the entry port");
         Set<String> found = findings();
         assertEquals(1, found.size(), "the one new finding: " + found);
         assertTrue(found.iterator().next().startsWith("RSA-02 " + RsamlLabels.qualifiedName(connection) + ": "), "RSA-02 on the new connection: " + found);
-        DDiagramElement edge = drawn(architectureDiagram, connection);
+        DDiagramElement edge = Palette.drawn(architectureDiagram, connection);
         assertFalse(edge.getDecorations().isEmpty() && edge.getTransientDecorations().isEmpty(), "the new connection is decorated at once");
-        delete(architectureDiagram, connection);
+        palette.delete(architectureDiagram, connection);
     }
 
     @Test
@@ -346,17 +224,17 @@ class SiriusToolsTest {
         Module actor = top.getModules().get(0);
         Module inhibited = moduleWith(below, OutputPort.class);
         OutputPort output = (OutputPort) inhibited.getPorts().stream().filter(OutputPort.class::isInstance).findFirst().orElseThrow();
-        Inhibitor i1 = connect(architectureDiagram, "createInhibitor", actor, output, actor.getInhibitors(), "inhibitor");
-        Inhibitor i2 = connect(architectureDiagram, "createInhibitor", actor, output, actor.getInhibitors(), "inhibitor");
+        Inhibitor i1 = palette.connect(architectureDiagram, "createInhibitor", actor, output, actor.getInhibitors(), "inhibitor");
+        Inhibitor i2 = palette.connect(architectureDiagram, "createInhibitor", actor, output, actor.getInhibitors(), "inhibitor");
         namedApart(i1, i2);
         assertEquals(output, i1.getTarget(), "the inhibitor acts on the output port");
         Module suppressed = moduleWith(below, EntryPort.class);
         EntryPort entry = (EntryPort) suppressed.getPorts().stream().filter(EntryPort.class::isInstance).findFirst().orElseThrow();
-        Suppressor s = connect(architectureDiagram, "createSuppressor", actor, entry, actor.getSuppressors(), "suppressor");
+        Suppressor s = palette.connect(architectureDiagram, "createSuppressor", actor, entry, actor.getSuppressors(), "suppressor");
         assertEquals(entry, s.getTarget(), "the suppressor acts on the entry port");
         assertEquals(Set.of(), findings(), "links to the layer immediately below are valid");
-        delete(architectureDiagram, i2);
-        delete(architectureDiagram, s);
+        palette.delete(architectureDiagram, i2);
+        palette.delete(architectureDiagram, s);
     }
 
     @Test
@@ -369,17 +247,17 @@ class SiriusToolsTest {
         });
         Function simple = functions.stream().filter(f -> f.getType() == ElementType.SIMPLE).findFirst()
                 .orElseThrow(() -> new AssertionError(MODEL + " has a simple function"));
-        Action a1 = apply(architectureDiagram, "createAction", simple, simple.getActions(), "action");
-        Action a2 = apply(architectureDiagram, "createAction", simple, simple.getActions(), "action");
+        Action a1 = palette.apply(architectureDiagram, "createAction", simple, simple.getActions(), "action");
+        Action a2 = palette.apply(architectureDiagram, "createAction", simple, simple.getActions(), "action");
         namedApart(a1, a2);
         assertEquals("Action", a1.eClass().getName(), "the action tool makes plain actions");
         assertEquals(Set.of(), findings(), "plain actions in a simple function are valid");
-        assertFalse(factory.buildGenericToolCommandFromTool(drawn(architectureDiagram, simple.getModule()),
-                (ToolDescription) tool(architectureDiagram, "createAction")).canExecute(), "actions are added to functions, not to modules");
+        assertFalse(palette.factory().buildGenericToolCommandFromTool(Palette.drawn(architectureDiagram, simple.getModule()),
+                (ToolDescription) Palette.tool(architectureDiagram, "createAction")).canExecute(), "actions are added to functions, not to modules");
 
         Function realTime = functions.stream().filter(f -> f.getType() == ElementType.REAL_TIME).findFirst()
                 .orElseThrow(() -> new AssertionError(MODEL + " has a real-time function"));
-        Action rt = apply(architectureDiagram, "createRealTimeAction", realTime, realTime.getActions(), "real-time action");
+        Action rt = palette.apply(architectureDiagram, "createRealTimeAction", realTime, realTime.getActions(), "real-time action");
         assertTrue(rt instanceof RTAction, "the real-time action tool makes RTActions");
         assertEquals(ElementType.REAL_TIME, rt.getType(), "which are real-time");
         assertEquals(ExecutionType.PERIODIC, rt.getExecType(), "and periodic");
@@ -388,20 +266,20 @@ class SiriusToolsTest {
         assertEquals(realTime.getTimeUnit(), rt.getTimeUnit(), "in their function's time unit");
         assertEquals(Set.of(), findings(), "a new real-time action in a real-time function is valid");
 
-        Action plain = apply(architectureDiagram, "createAction", realTime, realTime.getActions(), "action");
+        Action plain = palette.apply(architectureDiagram, "createAction", realTime, realTime.getActions(), "action");
         Set<String> found = findings();
         assertEquals(1, found.size(), "the one new finding: " + found);
         assertTrue(found.iterator().next().startsWith("RSA-07 " + RsamlLabels.qualifiedName(realTime) + ": "),
                 "RSA-07: the real-time function now holds a non-real-time action: " + found);
-        delete(architectureDiagram, plain);
-        delete(architectureDiagram, a2);
+        palette.delete(architectureDiagram, plain);
+        palette.delete(architectureDiagram, a2);
         assertEquals(Set.of(), findings(), "deleting the plain action repairs the function");
     }
 
     @Test
     void processorsGetCoresOfTheirOwnAndAModuleIsAllocatedToOneAtATime() {
-        Processor p1 = create(architectureDiagram, "createProcessor", null, architecture.getProcessors(), "processor");
-        Processor p2 = create(architectureDiagram, "createProcessor", null, architecture.getProcessors(), "processor");
+        Processor p1 = palette.create(architectureDiagram, "createProcessor", null, architecture.getProcessors(), "processor");
+        Processor p2 = palette.create(architectureDiagram, "createProcessor", null, architecture.getProcessors(), "processor");
         namedApart(p1, p2);
         assertTrue(p1.getCore() >= 0 && p2.getCore() >= 0 && p1.getCore() != p2.getCore(), "each processor has a CPU core of its own: "
                 + p1.getCore() + ", " + p2.getCore());
@@ -412,74 +290,73 @@ class SiriusToolsTest {
                 .orElseThrow(() -> new AssertionError(MODEL + " has a real-time module"));
         allocate(module, p1);
         assertEquals(Set.of(), findings(), module.getName() + " on a core of its own is valid");
-        Command again = factory.buildCreateEdgeCommandFromTool((EdgeTarget) drawn(architectureDiagram, module),
-                (EdgeTarget) drawn(architectureDiagram, p1), (EdgeCreationDescription) tool(architectureDiagram, "createAllocation"));
+        Command again = palette.factory().buildCreateEdgeCommandFromTool((EdgeTarget) Palette.drawn(architectureDiagram, module),
+                (EdgeTarget) Palette.drawn(architectureDiagram, p1), (EdgeCreationDescription) Palette.tool(architectureDiagram, "createAllocation"));
         assertFalse(again.canExecute(), "a module is not allocated twice to one processor");
 
         allocate(module, p2);
         assertFalse(p1.getModules().contains(module), "allocating a module elsewhere moves it: a module runs on one processor");
         assertEquals(Set.of(), findings(), "the moved allocation is valid");
 
-        Command command = factory.buildDeleteDiagramElement(allocations(architectureDiagram, module).get(0));
+        Command command = palette.factory().buildDeleteDiagramElement(allocations(architectureDiagram, module).get(0));
         assertTrue(command.canExecute(), "deleting the allocation can run");
-        project.execute(command);
-        changes++;
+        palette.execute(command);
         assertEquals(List.of(), p2.getModules(), "deleting the allocation takes the module off the processor");
         assertTrue(module.eContainer() != null && p2.eContainer() == architecture, "and deletes neither the module nor the processor");
         assertEquals(List.of(), allocations(architectureDiagram, module), "the edge is gone");
-        delete(architectureDiagram, p1);
+        palette.delete(architectureDiagram, p1);
         assertEquals(Set.of(), findings(), "deleting a processor leaves a valid model");
     }
 
     @Test
     void missionLinksAreDeletedWithoutDeletingWhatTheyLink() {
-        var mission = create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
-        var goal = create(missionDiagram, "createGoal", mission, mission.getGoals(), "goal");
-        var sub = create(missionDiagram, "createGoal", mission, mission.getGoals(), "goal");
-        var plan = create(missionDiagram, "createPlan", mission, mission.getPlans(), "plan");
-        var supervisor = create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
+        var mission = palette.create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
+        var goal = palette.create(missionDiagram, "createGoal", mission, mission.getGoals(), "goal");
+        var sub = palette.create(missionDiagram, "createGoal", mission, mission.getGoals(), "goal");
+        var plan = palette.create(missionDiagram, "createPlan", mission, mission.getPlans(), "plan");
+        var supervisor = palette.create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
 
-        link(missionDiagram, "createSubGoal", goal, sub);
+        palette.link(missionDiagram, "createSubGoal", goal, sub);
         assertEquals(List.of(sub), goal.getSubGoals(), "the target goal is a sub-goal of the source");
-        unlink(missionDiagram, goal, sub);
+        palette.unlink(missionDiagram, goal, sub);
         assertEquals(List.of(), goal.getSubGoals(), "deleting the link detaches the sub-goal");
         assertEquals(mission, sub.eContainer(), "which is a goal of its mission again, not deleted");
         assertEquals(mission, goal.eContainer(), "and the parent goal stays");
 
-        link(missionDiagram, "createAchieves", plan, goal);
+        palette.link(missionDiagram, "createAchieves", plan, goal);
         assertEquals(List.of(goal), plan.getAchieves(), "the plan achieves the goal");
-        unlink(missionDiagram, plan, goal);
+        palette.unlink(missionDiagram, plan, goal);
         assertEquals(List.of(), plan.getAchieves(), "deleting the link: the plan no longer achieves the goal");
         assertTrue(plan.eContainer() == mission && goal.eContainer() == mission, "both stay");
 
-        link(missionDiagram, "createSupervises", supervisor, plan);
+        palette.link(missionDiagram, "createSupervises", supervisor, plan);
         assertEquals(List.of(plan), supervisor.getPlans(), "the supervisor controls the plan");
-        unlink(missionDiagram, supervisor, plan);
+        palette.unlink(missionDiagram, supervisor, plan);
         assertEquals(List.of(), supervisor.getPlans(), "deleting the link: the supervisor no longer controls the plan");
         assertTrue(supervisor.eContainer() == architecture && plan.eContainer() == mission, "both stay");
     }
 
     @Test
     void missionsGoalsPlansActivitiesAndSupervisorsAreAddedAndDeleted() {
-        var m1 = create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
-        var m2 = create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
+        var m1 = palette.create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
+        var m2 = palette.create(missionDiagram, "createMission", null, architecture.getMissions(), "mission");
         namedApart(m1, m2);
-        var g1 = create(missionDiagram, "createGoal", m1, m1.getGoals(), "goal");
-        var g2 = create(missionDiagram, "createGoal", m1, m1.getGoals(), "goal");
+        var g1 = palette.create(missionDiagram, "createGoal", m1, m1.getGoals(), "goal");
+        var g2 = palette.create(missionDiagram, "createGoal", m1, m1.getGoals(), "goal");
         namedApart(g1, g2);
-        var p1 = create(missionDiagram, "createPlan", m1, m1.getPlans(), "plan");
-        var a1 = create(missionDiagram, "createActivity", p1, p1.getActivities(), "activity");
-        var a2 = create(missionDiagram, "createActivity", p1, p1.getActivities(), "activity");
+        var p1 = palette.create(missionDiagram, "createPlan", m1, m1.getPlans(), "plan");
+        var a1 = palette.create(missionDiagram, "createActivity", p1, p1.getActivities(), "activity");
+        var a2 = palette.create(missionDiagram, "createActivity", p1, p1.getActivities(), "activity");
         namedApart(a1, a2);
-        var s1 = create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
-        var s2 = create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
+        var s1 = palette.create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
+        var s2 = palette.create(missionDiagram, "createSupervisor", null, architecture.getSupervisors(), "supervisor");
         namedApart(s1, s2);
         Set<String> found = findings();
-        delete(missionDiagram, a2);
-        delete(missionDiagram, g2);
-        delete(missionDiagram, s2);
-        delete(missionDiagram, p1);
-        delete(missionDiagram, m2);
+        palette.delete(missionDiagram, a2);
+        palette.delete(missionDiagram, g2);
+        palette.delete(missionDiagram, s2);
+        palette.delete(missionDiagram, p1);
+        palette.delete(missionDiagram, m2);
         assertEquals(Set.of(), found, "new mission elements are valid: " + found);
     }
 }
