@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.rsaml.model.tests.XmiFiles.errors;
 import static org.rsaml.model.tests.XmiFiles.model;
 import static org.rsaml.model.tests.XmiFiles.open;
+import static org.rsaml.model.tests.XmiFiles.write;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -30,14 +31,10 @@ class LoadErrorsTest {
     @TempDir
     Path dir;
 
-    Path write(String name, String content) throws Exception {
-        return XmiFiles.write(dir, name, content);
-    }
-
     @Test
     void nonFiniteNumbersAreLocatedErrorsNamingTheAttribute() throws Exception {
         for (String value : List.of("NaN", "Infinity", "-Infinity", "1e999")) {
-            Path file = write("nan.rsaml", model("  <layers name=\"a\" maxExecTime=\"2\">\n    <modules name=\"m\" period=\"" + value + "\"/>\n  </layers>\n"));
+            Path file = write(dir, "nan.rsaml", model("  <layers name=\"a\" maxExecTime=\"2\">\n    <modules name=\"m\" period=\"" + value + "\"/>\n  </layers>\n"));
             Resource r = open(file);
             assertEquals(1, r.getErrors().size(), () -> errors(r));
             Resource.Diagnostic d = r.getErrors().get(0);
@@ -49,7 +46,7 @@ class LoadErrorsTest {
 
     @Test
     void aPortWithoutTypeListsTheTypesOfTheMetamodel() throws Exception {
-        Path file = write("port.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n      <ports name=\"p\"/>\n    </modules>\n  </layers>\n"));
+        Path file = write(dir, "port.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n      <ports name=\"p\"/>\n    </modules>\n  </layers>\n"));
         Resource r = open(file);
         Resource.Diagnostic d = r.getErrors().get(0);
         assertEquals("<ports name=\"p\"> does not say which kind of Port it is, so it cannot be read: add xsi:type=\"rsaml:EntryPort\""
@@ -61,7 +58,7 @@ class LoadErrorsTest {
     @Test
     void referencesToAnUntypedPortAreCountedInItsErrorOnly() throws Exception {
         String m = "//@layers[name='a']/@modules[name='m']/@ports";
-        Path file = write("refs.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n"
+        Path file = write(dir, "refs.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n"
                 + "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\"/>\n      <ports name=\"p\"/>\n    </modules>\n  </layers>\n"
                 + "  <connections source=\"" + m + "[name='out']\" target=\"" + m + "[name='p']\"/>\n"
                 + "  <connections source=\"" + m + "[name='out']\" target=\"" + m + "[name='gone']\"/>\n"));
@@ -74,7 +71,7 @@ class LoadErrorsTest {
 
     @Test
     void aWrongEnumValueListsTheLiteralsOfTheMetamodel() throws Exception {
-        Path file = write("enum.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\" execType=\"weekly\"/>\n  </layers>\n"));
+        Path file = write(dir, "enum.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\" execType=\"weekly\"/>\n  </layers>\n"));
         Resource r = open(file);
         String literals = RsamlPackage.Literals.REAL_TIME_ELEMENT__EXEC_TYPE.getEType() instanceof org.eclipse.emf.ecore.EEnum e
                 ? e.getELiterals().stream().map(l -> l.getLiteral()).collect(Collectors.joining(", ")) : "";
@@ -88,7 +85,7 @@ class LoadErrorsTest {
 
     @Test
     void aTimeWrittenWithItsUnitPointsToTimeUnit() throws Exception {
-        Path file = write("ms.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\" period=\"50ms\"/>\n  </layers>\n"));
+        Path file = write(dir, "ms.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\" period=\"50ms\"/>\n  </layers>\n"));
         Resource.Diagnostic d = open(file).getErrors().get(0);
         assertEquals("'50ms' is not a number: write the number alone and the unit apart, period=\"50\" timeUnit=\"ms\"", d.getMessage());
         assertEquals("4:5", d.getLine() + ":" + d.getColumn());
@@ -96,7 +93,7 @@ class LoadErrorsTest {
 
     @Test
     void aReversedConnectionIsLocated() throws Exception {
-        Path file = write("reversed.rsaml", model("""
+        Path file = write(dir, "reversed.rsaml", model("""
                   <layers name="a">
                     <modules name="m"><ports xsi:type="rsaml:EntryPort" name="e"/><ports xsi:type="rsaml:OutputPort" name="o"/></modules>
                   </layers>
@@ -110,14 +107,14 @@ class LoadErrorsTest {
 
     @Test
     void aRootInNoNamespaceIsNamed() throws Exception {
-        Resource r = open(write("plain.rsaml", "<?xml version=\"1.0\"?>\n<Architecture name=\"r\"/>\n"));
+        Resource r = open(write(dir, "plain.rsaml", "<?xml version=\"1.0\"?>\n<Architecture name=\"r\"/>\n"));
         assertEquals("2:1: element 'Architecture' is in no namespace, so this is not an RsaML model; an RsaML model's root is"
                 + " rsaml:Architecture with xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\"", errors(r).lines().findFirst().orElse(""));
     }
 
     @Test
     void aTypeWithoutPrefixListsTheTypesOfTheMetamodel() throws Exception {
-        Path file = write("type.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n      <ports xsi:type=\"EntryPort\" name=\"p\"/>\n"
+        Path file = write(dir, "type.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n      <ports xsi:type=\"EntryPort\" name=\"p\"/>\n"
                 + "    </modules>\n  </layers>\n"));
         Resource.Diagnostic d = open(file).getErrors().get(0);
         assertEquals("xsi:type=\"EntryPort\" names a type without RsaML's namespace prefix; write xsi:type=\"rsaml:EntryPort\""
@@ -127,7 +124,7 @@ class LoadErrorsTest {
 
     @Test
     void aParserMessageQuotingSeveralLinesIsOneLine() throws Exception {
-        Resource r = open(write("version.rsaml", model("").replace("version=\"1.0\"", "version=\"1.0\n  and more\n\"")));
+        Resource r = open(write(dir, "version.rsaml", model("").replace("version=\"1.0\"", "version=\"1.0\n  and more\n\"")));
         String message = r.getErrors().get(0).getMessage();
         assertTrue(message.startsWith("malformed XML: ") && message.contains("1.0 and more"), message);
         assertFalse(message.contains("\n"), message);

@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.rsaml.model.tests.XmiFiles.errors;
 import static org.rsaml.model.tests.XmiFiles.model;
 import static org.rsaml.model.tests.XmiFiles.open;
+import static org.rsaml.model.tests.XmiFiles.write;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -37,10 +38,6 @@ class LoadingTest {
     @TempDir
     Path dir;
 
-    Path write(String name, String content) throws Exception {
-        return XmiFiles.write(dir, name, content);
-    }
-
     @Test
     void theRegisteredFactoryIsRsamlsInEveryRegistry() {
         URI uri = URI.createFileURI(dir.resolve("x.rsaml").toString());
@@ -51,7 +48,7 @@ class LoadingTest {
 
     @Test
     void aPlainResourceSetRefusesADoctypeWithItsLocation() throws Exception {
-        Path file = write("xxe.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
+        Path file = write(dir, "xxe.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
                 + "<rsaml:Architecture xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"&s;\"/>\n");
         Resource r = open(file);
         assertInstanceOf(RsamlResource.class, r);
@@ -65,7 +62,7 @@ class LoadingTest {
 
     @Test
     void aCallersOwnParserOptionsCannotSwitchTheProtectionOff() throws Exception {
-        Path file = write("xxe.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
+        Path file = write(dir, "xxe.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
                 + "<rsaml:Architecture xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"&s;\"/>\n");
         ResourceSet set = new ResourceSetImpl();
         set.getLoadOptions().put(org.eclipse.emf.ecore.xmi.XMLResource.OPTION_PARSER_FEATURES,
@@ -76,7 +73,7 @@ class LoadingTest {
 
     @Test
     void nameKeyedReferencesResolve() throws Exception {
-        Path file = write("refs.rsaml", model("""
+        Path file = write(dir, "refs.rsaml", model("""
                   <layers name="a">
                     <modules name="m1"><ports xsi:type="rsaml:OutputPort" name="o"/></modules>
                     <modules name="m2"><ports xsi:type="rsaml:EntryPort" name="e"/></modules>
@@ -92,7 +89,7 @@ class LoadingTest {
 
     @Test
     void binaryAndEmptyFilesAreSaidSo() throws Exception {
-        Path empty = write("empty.rsaml", "");
+        Path empty = write(dir, "empty.rsaml", "");
         assertTrue(open(empty).getErrors().get(0).getMessage().startsWith("the file is empty"));
         Path binary = dir.resolve("image.rsaml");
         Files.write(binary, new byte[] { (byte) 0x89, 'P', 'N', 'G', 0, 0, 0, 13 });
@@ -116,11 +113,11 @@ class LoadingTest {
 
     @Test
     void nestingIsReadUpToTheLimitAndRefusedBeyondIt() throws Exception {
-        RsamlResource deep = (RsamlResource) open(write("deep.rsaml", nestedGoals(RsamlResource.MAX_DEPTH - 2)));
+        RsamlResource deep = (RsamlResource) open(write(dir, "deep.rsaml", nestedGoals(RsamlResource.MAX_DEPTH - 2)));
         assertEquals("", errors(deep));
         assertEquals(RsamlResource.MAX_DEPTH, deep.locatedElementCount());
 
-        Resource tooDeep = open(write("too-deep.rsaml", nestedGoals(RsamlResource.MAX_DEPTH - 1)));
+        Resource tooDeep = open(write(dir, "too-deep.rsaml", nestedGoals(RsamlResource.MAX_DEPTH - 1)));
         assertEquals((RsamlResource.MAX_DEPTH + 2) + ":1: elements are nested more than " + RsamlResource.MAX_DEPTH
                 + " levels deep here; RsaML reads models up to that depth", errors(tooDeep));
     }
@@ -129,7 +126,7 @@ class LoadingTest {
     void deeplyNestedExtensionsAreRefusedToo() throws Exception {
         int levels = 50_000;
         String body = "  <xmi:Extension extender=\"x\">" + "<a>".repeat(levels) + "</a>".repeat(levels) + "</xmi:Extension>\n";
-        Resource r = open(write("extensions.rsaml", model(body)));
+        Resource r = open(write(dir, "extensions.rsaml", model(body)));
         assertEquals(1, r.getErrors().size(), () -> errors(r));
         assertTrue(errors(r).startsWith("3:"), () -> errors(r));
         assertTrue(errors(r).contains("nested more than " + RsamlResource.MAX_DEPTH + " levels"), () -> errors(r));
@@ -138,14 +135,14 @@ class LoadingTest {
     @Test
     void aFileCutShortIsSaidSo() throws Exception {
         String whole = model("  <layers name=\"a\">\n    <modules name=\"m\"/>\n  </layers>\n");
-        Resource r = open(write("cut.rsaml", whole.substring(0, whole.indexOf("<modules"))));
+        Resource r = open(write(dir, "cut.rsaml", whole.substring(0, whole.indexOf("<modules"))));
         assertEquals("the file ends before its elements are closed; it may have been cut short", r.getErrors().get(0).getMessage());
         assertTrue(r.getErrors().get(0).getLine() >= 3, () -> errors(r));
     }
 
     @Test
     void anUnexpectedExceptionIsAnErrorOfThatFileOnly() throws Exception {
-        Path file = write("faulty.rsaml", model("  <layers name=\"a\"/>\n"));
+        Path file = write(dir, "faulty.rsaml", model("  <layers name=\"a\"/>\n"));
         byte[] bytes = Files.readAllBytes(file);
         ResourceSet set = new ResourceSetImpl();
         set.getURIConverter().getURIHandlers().add(0, new org.eclipse.emf.ecore.resource.impl.URIHandlerImpl() {
@@ -171,7 +168,7 @@ class LoadingTest {
         Resource r = open(set, file);
         assertEquals("0:0: RsaML failed on this file with an internal error (IllegalStateException: the disk went away);"
                 + " please report it together with the file", errors(r));
-        Resource other = open(set, write("fine.rsaml", model("  <layers name=\"a\"/>\n")));
+        Resource other = open(set, write(dir, "fine.rsaml", model("  <layers name=\"a\"/>\n")));
         assertEquals("", errors(other));
     }
 }

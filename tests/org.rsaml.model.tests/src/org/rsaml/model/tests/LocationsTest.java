@@ -11,6 +11,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.rsaml.model.tests.XmiFiles.errors;
 import static org.rsaml.model.tests.XmiFiles.model;
 import static org.rsaml.model.tests.XmiFiles.open;
+import static org.rsaml.model.tests.XmiFiles.write;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -37,13 +38,9 @@ class LocationsTest {
     @TempDir
     Path dir;
 
-    Path write(String name, String content) throws Exception {
-        return XmiFiles.write(dir, name, content);
-    }
-
     @Test
     void elementsAreLocatedAtTheirStartTags() throws Exception {
-        Path file = write("m.rsaml", model("  <layers name=\"a\">\n    <!-- c --><modules name=\"m\"/>\n  </layers>\n"));
+        Path file = write(dir, "m.rsaml", model("  <layers name=\"a\">\n    <!-- c --><modules name=\"m\"/>\n  </layers>\n"));
         RsamlResource r = (RsamlResource) open(file);
         assertEquals("", errors(r));
         Architecture a = (Architecture) r.getContents().get(0);
@@ -54,7 +51,7 @@ class LocationsTest {
 
     @Test
     void everyLoadedElementHasAPosition() throws Exception {
-        Path file = write("all.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\"/>\n  </layers>\n"));
+        Path file = write(dir, "all.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\"/>\n  </layers>\n"));
         RsamlResource r = (RsamlResource) open(file);
         for (var it = EcoreUtil.<EObject>getAllContents(r, false); it.hasNext();) {
             EObject o = it.next();
@@ -159,7 +156,7 @@ class LocationsTest {
             layers.append("  <layers name=\"l").append(i).append("\" description=\"").append("x".repeat(i == 0 ? fill : 700 + i))
                     .append("\u20AC\u00E9\"/>\n");
         }
-        Path file = write("big.rsaml", model(layers.toString()));
+        Path file = write(dir, "big.rsaml", model(layers.toString()));
         Resource r = open(file);
         assertEquals("", errors(r));
         List<Layer> loaded = ((Architecture) r.getContents().get(0)).getLayers();
@@ -184,7 +181,7 @@ class LocationsTest {
 
     @Test
     void unknownEncodingIsNamed() throws Exception {
-        Path file = write("enc.rsaml", model("").replace("UTF-8", "klingon-1"));
+        Path file = write(dir, "enc.rsaml", model("").replace("UTF-8", "klingon-1"));
         Resource r = open(file);
         assertEquals("1:1: the XML declaration names the encoding 'klingon-1', which is not known here; save the file as UTF-8"
                 + " and declare encoding=\"UTF-8\"", errors(r));

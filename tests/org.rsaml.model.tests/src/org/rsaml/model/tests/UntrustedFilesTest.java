@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.rsaml.model.tests.XmiFiles.errors;
 import static org.rsaml.model.tests.XmiFiles.model;
+import static org.rsaml.model.tests.XmiFiles.write;
 
 import java.net.InetAddress;
 import java.net.ServerSocket;
@@ -41,10 +42,6 @@ class UntrustedFilesTest {
 
     @TempDir
     Path dir;
-
-    Path write(String name, String content) throws Exception {
-        return XmiFiles.write(dir, name, content);
-    }
 
     /** A model whose module m uses the sensors {@code reference} names. */
     static String referring(String reference) {
@@ -88,21 +85,21 @@ class UntrustedFilesTest {
             acceptor.start();
             String base = "http://127.0.0.1:" + listener.getLocalPort() + "/";
 
-            assertRefusedOnModule(openAndResolve(write("http-ref.rsaml", referring(base + "x.rsaml#//@sensors.0"))),
+            assertRefusedOnModule(openAndResolve(write(dir, "http-ref.rsaml", referring(base + "x.rsaml#//@sensors.0"))),
                     "RsaML never opens network");
-            assertRefusedOnModule(openAndResolve(write("https-ref.rsaml", referring("https://127.0.0.1:" + listener.getLocalPort()
+            assertRefusedOnModule(openAndResolve(write(dir, "https-ref.rsaml", referring("https://127.0.0.1:" + listener.getLocalPort()
                     + "/x.rsaml#//@sensors.0"))), "RsaML never opens network");
-            assertRefusedOnModule(openAndResolve(write("jar-ref.rsaml", referring("jar:" + base + "x.jar!/x.rsaml#//@sensors.0"))),
+            assertRefusedOnModule(openAndResolve(write(dir, "jar-ref.rsaml", referring("jar:" + base + "x.jar!/x.rsaml#//@sensors.0"))),
                     "RsaML never opens network");
-            Resource href = openAndResolve(write("href-ref.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n"
+            Resource href = openAndResolve(write(dir, "href-ref.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\">\n"
                     + "      <sensors href=\"" + base + "x.rsaml#//@sensors.0\"/>\n    </modules>\n  </layers>\n")));
             assertTrue(errors(href).startsWith("5:7: reference to '" + base + "x.rsaml' refused"), () -> errors(href));
-            Resource namespace = openAndResolve(write("http-ns.rsaml", "<?xml version=\"1.0\"?>\n<x:Architecture xmlns:x=\""
+            Resource namespace = openAndResolve(write(dir, "http-ns.rsaml", "<?xml version=\"1.0\"?>\n<x:Architecture xmlns:x=\""
                     + base + "x.ecore\" name=\"r\"/>\n"));
             assertTrue(namespace.getErrors().get(0).getMessage().startsWith("namespace '" + base + "x.ecore' is not RsaML's"),
                     () -> errors(namespace));
             assertEquals(2, namespace.getErrors().get(0).getLine());
-            Resource schema = openAndResolve(write("schema.rsaml", "<?xml version=\"1.0\"?>\n<x:Architecture"
+            Resource schema = openAndResolve(write(dir, "schema.rsaml", "<?xml version=\"1.0\"?>\n<x:Architecture"
                     + " xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xmlns:x=\"urn:other\""
                     + " xsi:schemaLocation=\"urn:other " + base + "x.ecore\" name=\"r\"/>\n"));
             assertFalse(schema.getErrors().isEmpty());
@@ -123,10 +120,10 @@ class UntrustedFilesTest {
 
     @Test
     void aReferencedFileIsReadAsSafelyAsTheFirst() throws Exception {
-        write("other.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
+        write(dir, "other.rsaml", "<?xml version=\"1.0\"?>\n<!DOCTYPE r [<!ENTITY s \"EXPANDED\">]>\n"
                 + "<rsaml:Architecture xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"&s;\"><sensors name=\"&s;\"/></rsaml:Architecture>\n");
         ResourceSet set = new ResourceSetImpl();
-        Resource main = XmiFiles.open(set, write("main.rsaml", referring("other.rsaml#//@sensors.0")));
+        Resource main = XmiFiles.open(set, write(dir, "main.rsaml", referring("other.rsaml#//@sensors.0")));
         assertEquals("", errors(main));
         EcoreUtil.resolveAll(set);
         Module m = ((Architecture) main.getContents().get(0)).getLayers().get(0).getModules().get(0);
@@ -137,9 +134,9 @@ class UntrustedFilesTest {
 
     @Test
     void aReferenceInTheModelsFolderTreeResolves() throws Exception {
-        write("sub/devices.rsaml", model("  <sensors name=\"lidar\"/>\n"));
+        write(dir, "sub/devices.rsaml", model("  <sensors name=\"lidar\"/>\n"));
         ResourceSet set = new ResourceSetImpl();
-        Resource main = XmiFiles.open(set, write("main.rsaml", referring("sub/devices.rsaml#//@sensors.0")));
+        Resource main = XmiFiles.open(set, write(dir, "main.rsaml", referring("sub/devices.rsaml#//@sensors.0")));
         EcoreUtil.resolveAll(set);
         assertEquals("", errors(main));
         Module m = ((Architecture) main.getContents().get(0)).getLayers().get(0).getModules().get(0);
@@ -152,30 +149,30 @@ class UntrustedFilesTest {
         Files.writeString(outside.resolve("secret.rsaml"), model("  <sensors name=\"secret\"/>\n"));
         Path models = Files.createDirectories(dir.resolve("models"));
         Files.writeString(models.resolve("devices.xml"), model("  <sensors name=\"xml\"/>\n"));
-        assertRefusedOnModule(openAndResolve(write("models/up.rsaml", referring("../outside/secret.rsaml#//@sensors.0"))), "'..'");
-        assertRefusedOnModule(openAndResolve(write("models/encoded.rsaml", referring("sub/%2e%2e/%2e%2e/outside/secret.rsaml#//@sensors.0"))),
+        assertRefusedOnModule(openAndResolve(write(dir, "models/up.rsaml", referring("../outside/secret.rsaml#//@sensors.0"))), "'..'");
+        assertRefusedOnModule(openAndResolve(write(dir, "models/encoded.rsaml", referring("sub/%2e%2e/%2e%2e/outside/secret.rsaml#//@sensors.0"))),
                 "refused");
-        assertRefusedOnModule(openAndResolve(write("models/absolute.rsaml", referring(outside.resolve("secret.rsaml").toUri()
+        assertRefusedOnModule(openAndResolve(write(dir, "models/absolute.rsaml", referring(outside.resolve("secret.rsaml").toUri()
                 + "#//@sensors.0"))), "refused");
-        assertRefusedOnModule(openAndResolve(write("models/rooted.rsaml", referring(outside.resolve("secret.rsaml")
+        assertRefusedOnModule(openAndResolve(write(dir, "models/rooted.rsaml", referring(outside.resolve("secret.rsaml")
                 + "#//@sensors.0"))), "absolute paths are not followed");
-        assertRefusedOnModule(openAndResolve(write("models/xml.rsaml", referring("devices.xml#//@sensors.0"))), "does not name an .rsaml file");
+        assertRefusedOnModule(openAndResolve(write(dir, "models/xml.rsaml", referring("devices.xml#//@sensors.0"))), "does not name an .rsaml file");
         try {
             Files.createSymbolicLink(models.resolve("link.rsaml"), outside.resolve("secret.rsaml"));
         } catch (UnsupportedOperationException | java.io.IOException e) {
             Assumptions.abort("no symbolic links here: " + e);
         }
-        assertRefusedOnModule(openAndResolve(write("models/link-ref.rsaml", referring("link.rsaml#//@sensors.0"))), "symbolic link");
+        assertRefusedOnModule(openAndResolve(write(dir, "models/link-ref.rsaml", referring("link.rsaml#//@sensors.0"))), "symbolic link");
     }
 
     @Test
     @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void specialFilesAreNeverOpened() throws Exception {
         Files.createDirectories(dir.resolve("folder.rsaml"));
-        Resource directory = openAndResolve(write("dir-ref.rsaml", referring("folder.rsaml#//@sensors.0")));
+        Resource directory = openAndResolve(write(dir, "dir-ref.rsaml", referring("folder.rsaml#//@sensors.0")));
         Resource folder = directory.getResourceSet().getResource(URI.createFileURI(dir.resolve("folder.rsaml").toString()), false);
         assertEquals("0:0: is a directory, not an .rsaml file", errors(folder));
-        assertRefusedOnModule(openAndResolve(write("zero-ref.rsaml", referring("/dev/zero#//@sensors.0"))), "refused");
+        assertRefusedOnModule(openAndResolve(write(dir, "zero-ref.rsaml", referring("/dev/zero#//@sensors.0"))), "refused");
         if (Files.exists(Path.of("/dev/zero"))) {
             // Named by the user (through a link in the folder), still not read.
             Path link = Files.createSymbolicLink(dir.resolve("zero.rsaml"), Path.of("/dev/zero"));
@@ -192,7 +189,7 @@ class UntrustedFilesTest {
             made = false;
         }
         Assumptions.assumeTrue(made, "mkfifo is not available on this platform");
-        Resource pipeRef = openAndResolve(write("pipe-ref.rsaml", referring("pipe.rsaml#//@sensors.0")));
+        Resource pipeRef = openAndResolve(write(dir, "pipe-ref.rsaml", referring("pipe.rsaml#//@sensors.0")));
         Resource pipe = pipeRef.getResourceSet().getResource(URI.createFileURI(fifo.toString()), false);
         assertTrue(errors(pipe).contains("is not a regular file"), () -> errors(pipe));
         assertTrue(errors(XmiFiles.open(fifo)).contains("is not a regular file"));
@@ -200,7 +197,7 @@ class UntrustedFilesTest {
 
     @Test
     void filesAboveTheSizeLimitAreNotRead() throws Exception {
-        Path file = write("big.rsaml", model("  <layers name=\"a\"/>\n"));
+        Path file = write(dir, "big.rsaml", model("  <layers name=\"a\"/>\n"));
         ResourceSet set = new ResourceSetImpl();
         set.getLoadOptions().put(org.rsaml.model.resource.RsamlResource.OPTION_MAX_FILE_SIZE, 100L);
         Resource r = XmiFiles.open(set, file);
