@@ -189,13 +189,7 @@ public final class SvgWriter {
                 out.append("/>");
             }
         }
-        for (Drawing.Text text : shape.texts) {
-            text(text);
-        }
-        for (Drawing.Badge badge : shape.badges) {
-            badge(badge);
-        }
-        out.append("</g>\n");
+        close(shape.texts, shape.badges);
     }
 
     private void link(Drawing.Link link) {
@@ -228,10 +222,15 @@ public final class SvgWriter {
             text(new Drawing.Text(cx, cy + 3.5, link.marker, 10, true, "middle", "marker-text"));
             out.append("</g>");
         }
-        for (Drawing.Text text : link.texts) {
+        close(link.texts, link.badges);
+    }
+
+    /** An element's texts and badges, over what it draws, then the end of its group. */
+    private void close(List<Drawing.Text> texts, List<Drawing.Badge> badges) {
+        for (Drawing.Text text : texts) {
             text(text);
         }
-        for (Drawing.Badge badge : link.badges) {
+        for (Drawing.Badge badge : badges) {
             badge(badge);
         }
         out.append("</g>\n");

@@ -27,7 +27,6 @@ import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.RsamlDiagrams;
 import org.rsaml.tests.support.ExpectedFinding;
 import org.rsaml.model.support.RsamlLabels;
-import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
