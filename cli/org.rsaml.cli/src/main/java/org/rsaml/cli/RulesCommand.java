@@ -9,10 +9,8 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 
 import org.rsaml.report.ExitCodes;
-import org.rsaml.validation.Rule;
+import org.rsaml.report.RuleList;
 import org.rsaml.validation.Rules;
-
-import com.google.gson.stream.JsonWriter;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -38,37 +36,15 @@ final class RulesCommand implements java.util.concurrent.Callable<Integer> {
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         if (format == Format.json) {
-            json(out);
-        } else {
-            for (Rule rule : Rules.all()) {
-                out.printf("%-7s %-8s %-29s %s%n", rule.id(), rule.severity().label(), rule.name(), rule.description());
-                if (verbose) {
-                    out.printf("%-46s scope: %s%n", "", rule.scope());
-                    out.printf("%-46s fix: %s%n", "", rule.remediation());
-                }
+            try {
+                RuleList.json(Rules.all(), out);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
             }
+        } else {
+            RuleList.text(Rules.all(), verbose, out);
         }
         out.flush();
         return ExitCodes.OK;
-    }
-
-    private static void json(PrintWriter out) {
-        try {
-            JsonWriter json = new JsonWriter(out);
-            json.setIndent("  ");
-            json.setHtmlSafe(false);
-            json.beginArray();
-            for (Rule rule : Rules.all()) {
-                json.beginObject().name("id").value(rule.id()).name("name").value(rule.name())
-                        .name("severity").value(rule.severity().label()).name("source").value(rule.source())
-                        .name("context").value(rule.context()).name("description").value(rule.description())
-                        .name("scope").value(rule.scope()).name("help").value(rule.remediation()).endObject();
-            }
-            json.endArray();
-            json.flush();
-            out.println();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 }
