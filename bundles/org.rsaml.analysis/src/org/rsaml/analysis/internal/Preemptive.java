@@ -39,7 +39,7 @@ public final class Preemptive {
             cost[k] = t.cost();
             jitter[k] = t.jitter();
         }
-        return of(task, effective, new Interference(period, cost, jitter, n), null, period, cost, n, -1, Double.NaN, 0, null,
+        return of(task, effective, new Interference(period, cost, jitter, n), null, null, period, cost, n, -1, Double.NaN, 0, null,
                 () -> ResponseTimes.utilisation(task, hp), (worst, job) -> MissWitnesses.summary(task, worst, job, hp, null));
     }
 
@@ -54,6 +54,9 @@ public final class Preemptive {
      * @param later            when not null, an interference over the same entries that the jobs after the
      *                         first use, from the first's window on, so that {@code interference} stays at
      *                         the first job's window, where the next task starts
+     * @param tied             when not null, the busy period of the task's level shared by the tasks tied
+     *                         at it ({@link LevelExcess}): each job's window read from it instead of iterated,
+     *                         the same fixed point from the same start (else the task iterates itself)
      * @param period           the entries' periods, for the level's utilisation when it is near 1
      * @param cost             the entries' costs, likewise
      * @param n                how many entries there are
@@ -67,7 +70,7 @@ public final class Preemptive {
      * @param overload         the level's utilisation as the verdict of an overload states it
      * @param summary          the witness of a miss
      */
-    static TaskResult of(Task task, int effective, Interference interference, Interference later, long[] period, long[] cost, int n, long base,
+    static TaskResult of(Task task, int effective, Interference interference, Interference later, LevelExcess.Tied tied, long[] period, long[] cost, int n, long base,
             double levelUtilisation, long seed, long[] firstWindow, Supplier<Double> overload, Summary summary) {
         if (firstWindow != null) {
             firstWindow[0] = -1;
@@ -97,7 +100,7 @@ public final class Preemptive {
                     return ResponseTimes.notAnalysed(task, "its busy period holds more than " + ResponseTimes.MAX_JOBS + " of its jobs");
                 }
                 long own = Math.multiplyExact(q + 1, task.cost());
-                if (q == 1 && later != null) {
+                if (q == 1 && later != null && tied == null) {
                     later.copyFrom(interference);
                     current = later;
                 }
@@ -105,7 +108,17 @@ public final class Preemptive {
                 // that), so the window only grows through the busy period and the interference follows it.
                 long start = Math.addExact(own, q == 0 ? Math.max(base, seed) : base);
                 w = q == 0 ? start : Math.max(start, Math.addExact(w, task.cost()));
-                while (true) {
+                if (tied != null) {
+                    // within the level's busy period the iteration below takes fewer steps than the level has
+                    // releases (each step past a job's first takes in a release), so no limit can cut it short
+                    long read = tied.window(q, task.cost(), w);
+                    if (read == LevelExcess.UNKNOWN) {
+                        return of(task, effective, interference, later, null, period, cost, n, base, levelUtilisation, seed, firstWindow,
+                                overload, summary);
+                    }
+                    w = read;
+                }
+                while (tied == null) {
                     if (++steps > ResponseTimes.MAX_STEPS) {
                         return ResponseTimes.notAnalysed(task, "the response-time iteration did not settle within "
                                 + ResponseTimes.MAX_STEPS + " steps");

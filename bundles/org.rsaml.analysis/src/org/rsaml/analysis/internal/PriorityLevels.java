@@ -31,6 +31,9 @@ import org.rsaml.analysis.TaskResult;
  */
 public final class PriorityLevels {
 
+    /** From this many tasks analysed at one priority on, they read their windows from the level's one walk. */
+    public static final int SHARED_LEVEL = 16;
+
     private PriorityLevels() {
     }
 
@@ -96,6 +99,12 @@ public final class PriorityLevels {
                 utilisation += (double) t.cost() / t.period();
             }
             long levelWindow = -1;
+            int ties = 0;
+            for (int a = analysed; a < n && effective[byEffective[a]] >= level; a++) {
+                ties += skipped.contains(byEffective[a]) ? 0 : 1;
+            }
+            // many tasks analysed at one level share its busy period: one walk of it for all of them
+            LevelExcess excess = ties >= SHARED_LEVEL ? LevelExcess.of(period, cost, jitter, entries, utilisation) : null;
             for (; analysed < n && effective[byEffective[analysed]] >= level; analysed++) {
                 int i = byEffective[analysed];
                 if (skipped.contains(i)) {
@@ -109,7 +118,8 @@ public final class PriorityLevels {
                 // the level above seeds a task that did not delay it (a task of a lock group analysed below its
                 // own priority may have: then its window need not be above theirs)
                 long floor = delaying.get(i).priority() < seedLevel ? seed : 0;
-                out[i] = Preemptive.of(t, effective[i], interference, later, period, cost, entries, total < 0 ? -1 : total - c, utilisation,
+                LevelExcess.Tied tied = excess == null ? null : excess.of(period[entryOf[i]], jitter[entryOf[i]], c);
+                out[i] = Preemptive.of(t, effective[i], interference, later, tied, period, cost, entries, total < 0 ? -1 : total - c, utilisation,
                         floor, window, () -> u, (worst, job) -> prefix.summary(t, i, worst, job));
                 cost[entryOf[i]] += c;
                 interference.costChanged(entryOf[i], c);

@@ -122,6 +122,48 @@ class PriorityLevelsTest {
     }
 
     /**
+     * Levels of many tied tasks (at least {@link PriorityLevels#SHARED_LEVEL}, which read their windows
+     * from one walk of the level's busy period) with a few tasks above and below them, release jitter,
+     * lock groups and several jobs in a busy period: every task's result equals the per-task definition.
+     */
+    @Test
+    void tiedLevelsEqualTheExactIterationOfEachTask() {
+        Random random = new Random(SEED + 2);
+        int tied = 0;
+        int severalJobs = 0;
+        int sets = Math.max(1, SETS / 20);
+        for (int s = 0; s < sets; s++) {
+            int n = PriorityLevels.SHARED_LEVEL + random.nextInt(60);
+            double target = 0.3 + 0.75 * random.nextDouble();
+            List<Task> own = new ArrayList<>();
+            List<Task> delaying = new ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                long period = random.nextInt(3) == 0 ? 100 * (1 + random.nextInt(4)) : 10 + random.nextInt(5_000);
+                long cost = random.nextInt(12) == 0 ? 0 : Math.max(1, Math.min(period, (long) (target / n * period * 2 * random.nextDouble())));
+                long deadline = random.nextInt(3) == 0 ? period * (1 + random.nextInt(3)) : Math.max(1, period / (1 + random.nextInt(3)));
+                int priority = random.nextInt(5) == 0 ? random.nextInt(5) : 2; // most at rank 2
+                long j = s % 2 == 1 && random.nextInt(3) == 0 ? random.nextInt((int) Math.min(period, 400)) : 0;
+                String group = s % 2 == 1 && random.nextInt(4) == 0 ? "m" + random.nextInt(3) : null;
+                Task t = new Task("t" + i, period, deadline, cost, priority, j, group);
+                own.add(t);
+                long extra = s % 2 == 1 && random.nextInt(5) == 0 ? random.nextInt((int) Math.min(period, 200)) : 0;
+                delaying.add(new Task(t.name(), period, deadline, cost, priority, j + extra, group));
+            }
+            int[] effective = ResponseTimes.effectivePriorities(own);
+            TaskResult[] walked = new TaskResult[n];
+            PriorityLevels.analyse(delaying, own, effective, Set.of(), walked);
+            for (int i = 0; i < n; i++) {
+                TaskResult expected = definition(delaying, i, own.get(i), effective[i]);
+                assertSame(expected, walked[i], "set " + s + ", task " + own.get(i) + " (as if at " + effective[i] + ") among " + delaying);
+                tied += effective[i] == 2 ? 1 : 0;
+                severalJobs += expected.explanation().contains("of its busy period") ? 1 : 0;
+            }
+        }
+        assertTrue(tied > sets * PriorityLevels.SHARED_LEVEL / 2, "tasks compared at the tied level: " + tied);
+        assertTrue(severalJobs > sets / 10, "worst responses later in the busy period: " + severalJobs);
+    }
+
+    /**
      * Through the public analysis (a first-in-first-out top rank left to its own analysis): each
      * other task's result equals the per-task definition, but the witness
      * of the processor's first miss, which gets its critical-instant schedule instead of a summary.
