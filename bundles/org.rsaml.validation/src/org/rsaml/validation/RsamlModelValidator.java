@@ -175,8 +175,17 @@ public final class RsamlModelValidator {
         };
         Map<Object, Object> context = diagnostician.createDefaultContext();
         BasicDiagnostic chain = new BasicDiagnostic();
+        // One architecture validated whole: its walk judges the timing rules' prerequisites, the timing rules come after it.
+        boolean whole = validator instanceof RuleEValidator && roots.size() == 1 && roots.get(0) instanceof Architecture a
+                && a.eContainer() == null;
+        if (whole) {
+            TimingChecks.deferToAfterWalk(context);
+        }
         for (EObject root : roots) {
             diagnostician.validate(root, chain, context);
+        }
+        if (whole) {
+            TimingChecks.afterWalk((Architecture) roots.get(0), context).forEach(chain::add);
         }
         return chain;
     }

@@ -5,7 +5,6 @@
 package org.rsaml.validation.internal;
 
 import java.util.ArrayList;
-import java.util.Collection;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -18,20 +17,8 @@ import org.eclipse.emf.ecore.EAnnotation;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EClassifier;
 import org.eclipse.emf.ecore.EObject;
-import org.eclipse.emf.ecore.EOperation;
 import org.eclipse.emf.ecore.EPackage;
-import org.eclipse.emf.ecore.EStructuralFeature;
-import org.eclipse.emf.ecore.ETypedElement;
 import org.eclipse.emf.ecore.util.EcoreUtil;
-import org.eclipse.ocl.EvaluationEnvironment;
-import org.eclipse.ocl.ParserException;
-import org.eclipse.ocl.ecore.Constraint;
-import org.eclipse.ocl.ecore.EcoreEnvironmentFactory;
-import org.eclipse.ocl.ecore.EcoreEvaluationEnvironment;
-import org.eclipse.ocl.ecore.OCL;
-import org.eclipse.ocl.ecore.OCLExpression;
-import org.eclipse.ocl.expressions.CollectionKind;
-import org.eclipse.ocl.util.CollectionUtil;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.RsamlValidationSetup;
@@ -39,23 +26,42 @@ import org.rsaml.validation.RsamlValidationSetup.RuleDefinitionException;
 import org.rsaml.validation.Rules;
 
 /**
- * The OCL invariants of an EPackage, read from its OCLinEcore annotations, parsed once with classic
- * OCL and evaluated on demand. Parsing everything up front makes a broken constraint fail at
- * start-up, naming its rule, instead of on every element it applies to.
+ * The OCL invariants of an EPackage, read from its OCLinEcore annotations, each bound to its catalogue entry and
+ * evaluated on demand. An invariant of rsaml.ecore whose text is the one {@code CompiledInvariants} was generated from
+ * runs as that Java; any other (one the translator left to the interpreter, or a text changed since the code was
+ * regenerated) is interpreted by classic OCL ({@link OclInterpreter}). A text that was compiled is known to parse, so
+ * classic OCL is loaded only when something must be interpreted; a text that was not is parsed here, so that a broken
+ * constraint fails at start-up, naming its rule, instead of on every element it applies to.
  */
 public final class OclRules {
 
     /** The delegate URI under which rsaml.ecore declares its invariants. */
     public static final String OCL_URI = "http://www.eclipse.org/emf/2002/Ecore/OCL";
 
+    /** One invariant, ready to evaluate: TRUE, FALSE, or null when the expression is null or invalid for the element. */
+    @FunctionalInterface
+    public interface Evaluator {
+        Boolean evaluate(EObject object);
+    }
+
     private static volatile OclRules instance;
 
-    private final OCL ocl = OCL.newInstance(new CachingEnvironmentFactory());
-    private final Map<EClass, Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>>> queries = new HashMap<>();
+    private final boolean compiled;
+    private OclInterpreter interpreter;
+    private final Map<EClass, Map<String, Evaluator>> evaluators = new HashMap<>();
     private final List<String> problems = new ArrayList<>();
     private final Set<String> declared = new HashSet<>();
+    private int compiledCount;
+    private final Map<String, String> interpreted = new java.util.TreeMap<>();
 
+    /** Compiled where the text matches the generated code (rsaml.ecore's own package only), interpreted elsewhere. */
     public OclRules(EPackage ePackage) {
+        this(ePackage, ePackage == RsamlPackage.eINSTANCE, null);
+    }
+
+    private OclRules(EPackage ePackage, boolean compiled, OclInterpreter interpreter) {
+        this.compiled = compiled;
+        this.interpreter = interpreter;
         for (EClassifier classifier : ePackage.getEClassifiers()) {
             if (!(classifier instanceof EClass eClass)) {
                 continue;
@@ -75,16 +81,24 @@ public final class OclRules {
                     problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") has no OCL body");
                     continue;
                 }
-                try {
-                    OCL.Helper helper = ocl.createOCLHelper();
-                    helper.setContext(eClass);
-                    Constraint parsed = helper.createInvariant(body);
-                    OCLExpression expression = (OCLExpression) parsed.getSpecification().getBodyExpression();
-                    queries.computeIfAbsent(eClass, k -> new HashMap<>()).put(constraint, ocl.createQuery(expression));
-                } catch (ParserException | RuntimeException e) {
-                    problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") does not parse: "
-                            + e.getLocalizedMessage());
+                Evaluator evaluator = compiled ? compiled(eClass, constraint, body) : null;
+                if (evaluator == null) {
+                    String why = compiled ? CompiledInvariants.interpreted(eClass.getName(), constraint, body) : null;
+                    if (compiled) {
+                        interpreted.put(eClass.getName() + "." + constraint,
+                                why != null ? why : "its text in the .ecore is not the one compiled: regenerate the code");
+                    }
+                    try {
+                        evaluator = why != null ? lazilyInterpreted(eClass, body) : interpreter().evaluator(eClass, body);
+                    } catch (RuntimeException e) {
+                        problems.add(rule + " (" + constraint + " on " + eClass.getName() + ") does not parse: "
+                                + e.getLocalizedMessage());
+                        continue;
+                    }
+                } else {
+                    compiledCount++;
                 }
+                evaluators.computeIfAbsent(eClass, k -> new HashMap<>()).put(constraint, evaluator);
             }
         }
         if (ePackage == RsamlPackage.eINSTANCE || RsamlPackage.eNS_URI.equals(ePackage.getNsURI())) {
@@ -103,7 +117,15 @@ public final class OclRules {
     }
 
     /**
-     * The parsed invariants of rsaml.ecore, parsed once. Throws {@link RuleDefinitionException}
+     * Every invariant interpreted by classic OCL, none compiled: the definition the compiled invariants are tested
+     * against. {@code cachingEnvironment == false} interprets in classic OCL's own Ecore environment.
+     */
+    public static OclRules interpreted(EPackage ePackage, boolean cachingEnvironment) {
+        return new OclRules(ePackage, false, new OclInterpreter(cachingEnvironment));
+    }
+
+    /**
+     * The rules of rsaml.ecore, set up once. Throws {@link RuleDefinitionException}
      * when an invariant has no body, does not parse, or has no complete entry in the catalogue.
      */
     public static OclRules instance() {
@@ -124,10 +146,37 @@ public final class OclRules {
         }
     }
 
-    /** Registers classic OCL's own packages (the Ecore binding and the standard library) in EMF's registry. */
-    public static void registerPackages() {
-        org.eclipse.ocl.ecore.EcorePackage.eINSTANCE.getNsURI();
-        org.eclipse.ocl.ecore.internal.OCLStandardLibraryImpl.INSTANCE.getClass();
+    private Evaluator compiled(EClass eClass, String constraint, String body) {
+        int index = CompiledInvariants.index(eClass.getName(), constraint, body);
+        return index < 0 ? null : object -> CompiledInvariants.check(index, object);
+    }
+
+    /** An invariant the translator parsed but left to the interpreter: parsed when first evaluated. */
+    private Evaluator lazilyInterpreted(EClass eClass, String body) {
+        return new Evaluator() {
+            private volatile Evaluator parsed;
+
+            @Override
+            public Boolean evaluate(EObject object) {
+                Evaluator e = parsed;
+                if (e == null) {
+                    synchronized (this) {
+                        if (parsed == null) {
+                            parsed = interpreter().evaluator(eClass, body);
+                        }
+                        e = parsed;
+                    }
+                }
+                return e.evaluate(object);
+            }
+        };
+    }
+
+    private synchronized OclInterpreter interpreter() {
+        if (interpreter == null) {
+            interpreter = new OclInterpreter();
+        }
+        return interpreter;
     }
 
     /** One line per constraint that has no body or does not parse; empty when all are usable. */
@@ -135,41 +184,82 @@ public final class OclRules {
         return List.copyOf(problems);
     }
 
-    /** Number of parsed constraints. */
+    /** Number of usable constraints. */
     public int size() {
-        return queries.values().stream().mapToInt(Map::size).sum();
+        return evaluators.values().stream().mapToInt(Map::size).sum();
+    }
+
+    /** Number of constraints that run as compiled Java. */
+    public int compiledCount() {
+        return compiledCount;
+    }
+
+    /**
+     * The invariants a compiling instance interprets, as {@code Class.constraint}, each with why: left to the
+     * interpreter by the translator, or changed since the code was generated.
+     */
+    public Map<String, String> interpreted() {
+        return Map.copyOf(interpreted);
+    }
+
+    /** Whether this instance compiles (false: every invariant interpreted). */
+    public boolean isCompiled() {
+        return compiled;
     }
 
     /** Whether an invariant of one of {@code ruleIds} is violated on the element, or cannot be evaluated there. */
     public boolean violatesAny(EObject object, Set<String> ruleIds) {
-        return violatesAny(object, ruleIds, null);
-    }
-
-    /** The same, telling {@code facts} each definite result. */
-    boolean violatesAny(EObject object, Set<String> ruleIds, ValidationFacts facts) {
-        for (EClass eClass : TimingChecks.classes(object)) {
-            Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>> byName = queries.get(eClass);
-            if (byName == null) {
-                continue;
+        for (Bound bound : byRules.computeIfAbsent(ruleIds, k -> new ConcurrentHashMap<>())
+                .computeIfAbsent(object.eClass(), c -> bind(c, ruleIds))) {
+            Boolean satisfied;
+            try {
+                satisfied = evaluate(bound.evaluator(), object);
+            } catch (RuntimeException e) {
+                satisfied = null;
             }
-            for (String constraint : byName.keySet()) {
-                if (Rules.forConstraint(constraint).map(r -> ruleIds.contains(r.id())).orElse(false)) {
-                    Boolean satisfied;
-                    try {
-                        satisfied = check(eClass, constraint, object);
-                    } catch (RuntimeException e) {
-                        satisfied = null;
-                    }
-                    if (facts != null && satisfied != null) {
-                        facts.invariant(object, constraint, satisfied);
-                    }
-                    if (!Boolean.TRUE.equals(satisfied)) {
-                        return true;
-                    }
-                }
+            if (!Boolean.TRUE.equals(satisfied)) {
+                return true;
             }
         }
         return false;
+    }
+
+    /** An invariant an element of some class must satisfy, with its evaluator. */
+    private record Bound(EClass declaredOn, String constraint, Evaluator evaluator) {
+    }
+
+    private final Map<Set<String>, Map<EClass, List<Bound>>> byRules = new ConcurrentHashMap<>();
+
+    /** The invariants of the rules {@code ruleIds} that apply to an element of {@code eClass}, supertypes' first. */
+    private List<Bound> bind(EClass eClass, Set<String> ruleIds) {
+        List<Bound> bound = new ArrayList<>();
+        for (EClass c : TimingChecks.classes(eClass)) {
+            Map<String, Evaluator> byName = evaluators.get(c);
+            if (byName == null) {
+                continue;
+            }
+            for (Map.Entry<String, Evaluator> e : byName.entrySet()) {
+                if (Rules.forConstraint(e.getKey()).map(r -> ruleIds.contains(r.id())).orElse(false)) {
+                    bound.add(new Bound(c, e.getKey(), e.getValue()));
+                }
+            }
+        }
+        return List.copyOf(bound);
+    }
+
+    /** The evaluator of the invariant {@code constraint} declared on {@code eClass}; null when there is none. */
+    public Evaluator evaluator(EClass eClass, String constraint) {
+        Map<String, Evaluator> byName = evaluators.get(eClass);
+        return byName == null ? null : byName.get(constraint);
+    }
+
+    /** The evaluator's result on the object: TRUE, FALSE, or null for null and invalid. */
+    public static Boolean evaluate(Evaluator evaluator, EObject object) {
+        try {
+            return evaluator.evaluate(object);
+        } catch (CompiledOcl.Invalid e) {
+            return null;
+        }
     }
 
     /**
@@ -177,67 +267,11 @@ public final class OclRules {
      * {@link Boolean#TRUE} or {@link Boolean#FALSE}, or {@code null} when the expression is
      * invalid for this object (for example a navigation through a missing element).
      */
-    public synchronized Boolean check(EClass eClass, String constraint, EObject object) {
-        Map<String, org.eclipse.ocl.Query<EClassifier, EClass, EObject>> byName = queries.get(eClass);
-        org.eclipse.ocl.Query<EClassifier, EClass, EObject> query = byName == null ? null : byName.get(constraint);
-        if (query == null) {
+    public Boolean check(EClass eClass, String constraint, EObject object) {
+        Evaluator evaluator = evaluator(eClass, constraint);
+        if (evaluator == null) {
             throw new IllegalArgumentException("no OCL invariant " + constraint + " on " + eClass.getName());
         }
-        Object result = query.evaluate(object);
-        return result instanceof Boolean b ? b : null;
-    }
-
-    /**
-     * Classic OCL's Ecore environment, whose evaluation remembers the collection kind of each feature
-     * and operation. Classic OCL works it out again on every navigation of a feature and every
-     * operation's result, creating a new collection type each time (about a fifth of all evaluation
-     * time on large models); the kind belongs to the metamodel, so it never changes.
-     */
-    private static final class CachingEnvironmentFactory extends EcoreEnvironmentFactory {
-        private final Map<ETypedElement, Optional<CollectionKind>> kinds = new ConcurrentHashMap<>();
-
-        @Override
-        public EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> createEvaluationEnvironment() {
-            return new CachingEvaluationEnvironment(this);
-        }
-
-        @Override
-        public EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> createEvaluationEnvironment(
-                EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> parent) {
-            return new CachingEvaluationEnvironment(parent, this);
-        }
-    }
-
-    /** {@link EcoreEvaluationEnvironment#coerceValue} with the feature's collection kind looked up once. */
-    private static final class CachingEvaluationEnvironment extends EcoreEvaluationEnvironment {
-        private final CachingEnvironmentFactory factory;
-
-        CachingEvaluationEnvironment(CachingEnvironmentFactory factory) {
-            super(factory);
-            this.factory = factory;
-        }
-
-        CachingEvaluationEnvironment(EvaluationEnvironment<EClassifier, EOperation, EStructuralFeature, EClass, EObject> parent,
-                CachingEnvironmentFactory factory) {
-            super(parent);
-            this.factory = factory;
-        }
-
-        @Override
-        protected Object coerceValue(ETypedElement element, Object value, boolean copy) {
-            CollectionKind kind = factory.kinds.computeIfAbsent(element, e -> Optional.ofNullable(getCollectionKind(e))).orElse(null);
-            if (kind != null) {
-                if (value instanceof Collection<?> collection) {
-                    return copy ? CollectionUtil.createNewCollection(kind, collection) : collection;
-                }
-                Collection<Object> single = CollectionUtil.createNewCollection(kind);
-                single.add(value);
-                return single;
-            }
-            if (value instanceof Collection<?> collection) {
-                return collection.isEmpty() ? null : collection.iterator().next();
-            }
-            return value;
-        }
+        return evaluate(evaluator, object);
     }
 }

@@ -60,8 +60,13 @@ public class RuleEValidator extends EObjectValidator {
         }
     };
 
-    /** An invariant as an element meets it: its name, the class that declares it, its OCL text. */
-    private record Invariant(String constraint, EClass declaredOn, String expression) {
+    /**
+     * An invariant as an element meets it: its name, the class that declares it, its OCL text, its evaluator, and
+     * whether it is RSA-19's, which validation decides by one traversal ({@link ModuleActivation}), and whether its rule is a
+     * timing prerequisite.
+     */
+    private record Invariant(String constraint, EClass declaredOn, String expression, OclRules.Evaluator evaluator, boolean activation,
+            boolean prerequisite) {
     }
 
     /**
@@ -126,7 +131,7 @@ public class RuleEValidator extends EObjectValidator {
                 diagnostics.add(SOURCE.equals(d.getSource()) ? d : structural(d));
             }
         }
-        if ((result || diagnostics != null) && TimingChecks.concerns(eObject)) {
+        if ((result || diagnostics != null) && TimingChecks.concerns(eObject) && !TimingChecks.deferred(context)) {
             for (TimingChecks.Found f : TimingChecks.on(eObject, context, rules)) {
                 result = false;
                 if (diagnostics == null) {
@@ -139,39 +144,57 @@ public class RuleEValidator extends EObjectValidator {
     }
 
     private boolean validateElement(EClass eClass, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        List<Invariant> applicable = invariants.computeIfAbsent(eClass, RuleEValidator::invariantsOf);
-        if (applicable.isEmpty()) {
-            return validate_EveryDefaultConstraint(eObject, diagnostics, context);
-        }
-        if (!validate_NoCircularContainment(eObject, diagnostics, context)) {
+        List<Invariant> applicable = invariants.computeIfAbsent(eClass, this::invariantsOf);
+        ValidationFacts facts = ValidationFacts.of(context);
+        boolean judging = facts != null && facts.timingDeferred(); // this walk decides the timing rules' prerequisites
+        boolean result;
+        if (facts != null && facts.knownStructurallySound(eObject)) {
+            result = true; // the timing rules' prerequisite pass found it sound in this validation
+        } else if (applicable.isEmpty()) {
+            result = validate_EveryDefaultConstraint(eObject, diagnostics, context);
+            if (!result && judging) {
+                facts.taskSetBroken();
+            }
+            return result;
+        } else if (!validate_NoCircularContainment(eObject, diagnostics, context)) {
+            if (judging) {
+                facts.taskSetBroken();
+            }
             return false;
+        } else {
+            result = validate_EveryMultiplicityConforms(eObject, diagnostics, context);
+            if (result || diagnostics != null) {
+                result &= validate_EveryDataValueConforms(eObject, diagnostics, context);
+            }
+            if (result || diagnostics != null) {
+                result &= validate_EveryReferenceIsContained(eObject, diagnostics, context);
+            }
+            if (result || diagnostics != null) {
+                result &= validate_EveryBidirectionalReferenceIsPaired(eObject, diagnostics, context);
+            }
+            if (result || diagnostics != null) {
+                result &= validate_EveryProxyResolves(eObject, diagnostics, context);
+            }
+            if (result || diagnostics != null) {
+                result &= validate_UniqueID(eObject, diagnostics, context);
+            }
+            if (result || diagnostics != null) {
+                result &= validate_EveryKeyUnique(eObject, diagnostics, context);
+            }
+            if (result || diagnostics != null) {
+                result &= validate_EveryMapEntryUnique(eObject, diagnostics, context);
+            }
         }
-        boolean result = validate_EveryMultiplicityConforms(eObject, diagnostics, context);
-        if (result || diagnostics != null) {
-            result &= validate_EveryDataValueConforms(eObject, diagnostics, context);
-        }
-        if (result || diagnostics != null) {
-            result &= validate_EveryReferenceIsContained(eObject, diagnostics, context);
-        }
-        if (result || diagnostics != null) {
-            result &= validate_EveryBidirectionalReferenceIsPaired(eObject, diagnostics, context);
-        }
-        if (result || diagnostics != null) {
-            result &= validate_EveryProxyResolves(eObject, diagnostics, context);
-        }
-        if (result || diagnostics != null) {
-            result &= validate_UniqueID(eObject, diagnostics, context);
-        }
-        if (result || diagnostics != null) {
-            result &= validate_EveryKeyUnique(eObject, diagnostics, context);
-        }
-        if (result || diagnostics != null) {
-            result &= validate_EveryMapEntryUnique(eObject, diagnostics, context);
+        if (!result && judging) {
+            facts.taskSetBroken();
         }
         for (Invariant invariant : applicable) {
-            if (result || diagnostics != null) {
-                result &= validate(invariant.declaredOn(), eObject, diagnostics, context, OclRules.OCL_URI, invariant.constraint(),
-                        invariant.expression(), Diagnostic.ERROR, SOURCE, 0);
+            if (result || diagnostics != null || judging && invariant.prerequisite()) {
+                boolean satisfied = check(invariant, eObject, diagnostics, context);
+                result &= satisfied;
+                if (!satisfied && judging && invariant.prerequisite()) {
+                    facts.taskSetBroken();
+                }
             }
         }
         return result;
@@ -181,47 +204,57 @@ public class RuleEValidator extends EObjectValidator {
      * The invariants an element of {@code eClass} must satisfy: those of its supertypes, then its own;
      * a class that redeclares a supertype's constraint name replaces it in place.
      */
-    private static List<Invariant> invariantsOf(EClass eClass) {
+    private List<Invariant> invariantsOf(EClass eClass) {
         List<EClass> classes = new ArrayList<>(eClass.getEAllSuperTypes());
         classes.add(eClass);
         Map<String, Invariant> byName = new LinkedHashMap<>();
         for (EClass c : classes) {
             EAnnotation bodies = c.getEAnnotation(OclRules.OCL_URI);
             for (String constraint : EcoreUtil.getConstraints(c)) {
-                byName.put(constraint, new Invariant(constraint, c, bodies == null ? null : bodies.getDetails().get(constraint)));
+                byName.put(constraint, new Invariant(constraint, c, bodies == null ? null : bodies.getDetails().get(constraint),
+                        rules.evaluator(c, constraint), ModuleActivation.CONSTRAINT.equals(constraint),
+                        Rules.forConstraint(constraint).map(r -> TimingChecks.prerequisite(r.id())).orElse(false)));
             }
         }
         return List.copyOf(byName.values());
     }
 
-    /** Evaluates the invariant's text from rsaml.ecore with RsaML's parsed rules, not a global delegate registry. */
+    /** Evaluates the invariant of rsaml.ecore named {@code constraint} with RsaML's rules, not a global delegate registry. */
     @Override
     public boolean validate(EClass eClass, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context,
             String validationDelegate, String constraint, String expression, int severity, String source, int code) {
+        return check(new Invariant(constraint, eClass, expression, rules.evaluator(eClass, constraint),
+                ModuleActivation.CONSTRAINT.equals(constraint), false), eObject, diagnostics, context);
+    }
+
+    private boolean check(Invariant invariant, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+        EClass eClass = invariant.declaredOn();
+        String constraint = invariant.constraint();
         Boolean satisfied;
         try {
             // RSA-19's fixpoint once per validation, not one OCL closure per module (same set; see ModuleActivation).
-            ValidationFacts facts = ValidationFacts.of(context);
-            Boolean known = facts == null ? null : facts.invariant(eObject, constraint);
-            satisfied = known != null ? known
-                    : ModuleActivation.CONSTRAINT.equals(constraint) && eObject instanceof Module module
-                            ? ModuleActivation.of(context).isActivated(module)
-                            : rules.check(eClass, constraint, eObject);
+            if (invariant.activation() && eObject instanceof Module module) {
+                satisfied = ModuleActivation.of(context).isActivated(module);
+            } else if (invariant.evaluator() != null) {
+                satisfied = OclRules.evaluate(invariant.evaluator(), eObject);
+            } else {
+                satisfied = rules.check(eClass, constraint, eObject); // says there is no such invariant
+            }
         } catch (RuntimeException e) {
             if (diagnostics != null) {
-                reportConstraintDelegateException(eClass, eObject, diagnostics, context, constraint, severity, source, code, e);
+                reportConstraintDelegateException(eClass, eObject, diagnostics, context, constraint, Diagnostic.ERROR, SOURCE, 0, e);
             }
             return false;
         }
         if (satisfied == null) {
             if (diagnostics != null) {
-                reportConstraintDelegateException(eClass, eObject, diagnostics, context, constraint, severity, source, code,
+                reportConstraintDelegateException(eClass, eObject, diagnostics, context, constraint, Diagnostic.ERROR, SOURCE, 0,
                         new IllegalStateException("the expression is invalid for this element"));
             }
             return false;
         }
         if (!satisfied && diagnostics != null) {
-            reportConstraintDelegateViolation(eClass, eObject, diagnostics, context, constraint, severity, source, code);
+            reportConstraintDelegateViolation(eClass, eObject, diagnostics, context, constraint, Diagnostic.ERROR, SOURCE, 0);
         }
         return satisfied;
     }
@@ -260,52 +293,6 @@ public class RuleEValidator extends EObjectValidator {
                 new Object[] { element, Rules.STRUCTURE, emf.getMessage() });
         result.addAll(emf);
         return result;
-    }
-
-    /*
-     * EMF's structural checks, skipped on an element the timing rules' prerequisite pass already found
-     * sound in this validation (see ValidationFacts): they would find nothing.
-     */
-
-    private static boolean knownSound(EObject eObject, Map<Object, Object> context) {
-        ValidationFacts facts = ValidationFacts.of(context);
-        return facts != null && facts.knownStructurallySound(eObject);
-    }
-
-    @Override
-    public boolean validate_EveryMultiplicityConforms(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_EveryMultiplicityConforms(eObject, diagnostics, context);
-    }
-
-    @Override
-    public boolean validate_EveryDataValueConforms(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_EveryDataValueConforms(eObject, diagnostics, context);
-    }
-
-    @Override
-    public boolean validate_EveryReferenceIsContained(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_EveryReferenceIsContained(eObject, diagnostics, context);
-    }
-
-    @Override
-    public boolean validate_EveryBidirectionalReferenceIsPaired(EObject eObject, DiagnosticChain diagnostics,
-            Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_EveryBidirectionalReferenceIsPaired(eObject, diagnostics, context);
-    }
-
-    @Override
-    public boolean validate_EveryProxyResolves(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_EveryProxyResolves(eObject, diagnostics, context);
-    }
-
-    @Override
-    public boolean validate_UniqueID(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_UniqueID(eObject, diagnostics, context);
-    }
-
-    @Override
-    public boolean validate_EveryMapEntryUnique(EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        return knownSound(eObject, context) || super.validate_EveryMapEntryUnique(eObject, diagnostics, context);
     }
 
     /** RSA-09 reports duplicate names with a clearer message than EMF's duplicate-key check. */

@@ -151,6 +151,49 @@ public final class TimingChecks {
                 || element instanceof LatencyRequirement || element instanceof Processor || element instanceof Architecture;
     }
 
+    /**
+     * Makes a validation whose walk covers a whole architecture report the timing rules after the walk instead of
+     * when it reaches the root: the walk itself then tells whether the prerequisites hold (every element is judged by
+     * EMF's structural checks and every invariant anyway), so they are not checked in a pass of their own. The caller
+     * adds {@link #afterWalk} once the walk is over.
+     */
+    public static void deferToAfterWalk(Map<Object, Object> context) {
+        ValidationFacts.of(context).deferTiming();
+    }
+
+    /** Whether the timing rules of this validation wait for the end of the walk ({@link #deferToAfterWalk}). */
+    static boolean deferred(Map<Object, Object> context) {
+        ValidationFacts facts = ValidationFacts.of(context);
+        return facts != null && facts.timingDeferred();
+    }
+
+    /**
+     * The timing findings of a deferred validation of {@code architecture} ({@link #deferToAfterWalk}), in document
+     * order, as the walk would have reported them: none when an element broke a prerequisite.
+     */
+    public static List<Diagnostic> afterWalk(Architecture architecture, Map<Object, Object> context) {
+        if (ValidationFacts.of(context).isTaskSetBroken()) {
+            return List.of();
+        }
+        Map<EObject, List<Found>> byElement;
+        try {
+            byElement = analysed(architecture);
+        } catch (RuntimeException e) {
+            byElement = failed(architecture, e);
+        }
+        List<Diagnostic> out = new ArrayList<>();
+        for (Iterator<EObject> it = architecture.eAllContents(); ; ) {
+            EObject o = it.hasNext() ? it.next() : null;
+            EObject element = o == null ? architecture : o;
+            if (concerns(element)) {
+                byElement.getOrDefault(element, List.of()).forEach(f -> out.add(diagnostic(f)));
+            }
+            if (o == null) {
+                return out;
+            }
+        }
+    }
+
     /** The timing findings on {@code element} itself (none when it is in no architecture). */
     public static List<Found> on(EObject element, Map<Object, Object> context, OclRules rules) {
         Architecture architecture = architectureOf(element);
@@ -182,20 +225,22 @@ public final class TimingChecks {
     /** Every timing finding of the architecture, by the element it is on. */
     static Map<EObject, List<Found>> findings(Architecture architecture, OclRules rules, ValidationFacts facts) {
         try {
-            return analyse(architecture, rules, facts);
+            return prerequisitesHold(architecture, rules, facts) ? analysed(architecture) : new IdentityHashMap<>();
         } catch (RuntimeException e) {
-            Map<EObject, List<Found>> out = new IdentityHashMap<>();
-            add(out, new Found(rule(ANALYSIS_FAILED), architecture, Map.of(), "the timing rules could not be evaluated on "
-                    + MessageParameters.element(architecture) + ": " + e));
-            return out;
+            return failed(architecture, e);
         }
     }
 
-    private static Map<EObject, List<Found>> analyse(Architecture architecture, OclRules rules, ValidationFacts facts) {
+    private static Map<EObject, List<Found>> failed(Architecture architecture, RuntimeException e) {
         Map<EObject, List<Found>> out = new IdentityHashMap<>();
-        if (!prerequisitesHold(architecture, rules, facts)) {
-            return out;
-        }
+        add(out, new Found(rule(ANALYSIS_FAILED), architecture, Map.of(), "the timing rules could not be evaluated on "
+                + MessageParameters.element(architecture) + ": " + e));
+        return out;
+    }
+
+    /** The findings of the analysis of an architecture whose prerequisites hold. */
+    private static Map<EObject, List<Found>> analysed(Architecture architecture) {
+        Map<EObject, List<Found>> out = new IdentityHashMap<>();
         ArchitectureTiming timing;
         try {
             timing = TimingAnalysis.analyse(architecture);
@@ -308,7 +353,7 @@ public final class TimingChecks {
             if (sound && facts != null) {
                 facts.structurallySound(element);
             }
-            if (!sound || rules.violatesAny(element, Prerequisites.IDS, facts)) {
+            if (!sound || rules.violatesAny(element, Prerequisites.IDS)) {
                 return element;
             }
             if (o == null) {
@@ -322,10 +367,10 @@ public final class TimingChecks {
         return Prerequisites.IDS.contains(ruleId);
     }
 
-    /** The classes whose invariants apply to an element: its own and its supertypes. */
-    static List<EClass> classes(EObject element) {
-        List<EClass> classes = new ArrayList<>(element.eClass().getEAllSuperTypes());
-        classes.add(element.eClass());
+    /** The classes whose invariants apply to an element of {@code eClass}: its supertypes and itself. */
+    static List<EClass> classes(EClass eClass) {
+        List<EClass> classes = new ArrayList<>(eClass.getEAllSuperTypes());
+        classes.add(eClass);
         return classes;
     }
 }

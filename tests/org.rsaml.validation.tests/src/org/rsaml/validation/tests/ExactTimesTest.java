@@ -96,4 +96,34 @@ class ExactTimesTest {
         assertEquals("2E+23", RsamlTimes.decimal(2e23).toString());
         assertEquals("0.1", RsamlTimes.decimal(0.1).toString());
     }
+
+    /** The shortest decimal as its definition finds it (fewest significant digits that parse back), against the fast path. */
+    @Test
+    void everyValueIsReadAsTheShortestDecimalThatParsesBack() {
+        java.util.Random random = new java.util.Random(20261127L);
+        List<Double> values = new java.util.ArrayList<>(List.of(0.1, 0.2, 0.3, 2.5, 10.0, 1e23, 2e23, 5e-324, Double.MAX_VALUE,
+                Double.MIN_NORMAL, 2.82879384806159E17, 123456789012345.0, 1234567890123456.0, 0.001, 1e-9, 999.999, -7.25));
+        for (int i = 0; i < 20_000; i++) {
+            values.add(switch (i % 4) {
+            case 0 -> Double.longBitsToDouble(random.nextLong() & 0x7fefffffffffffffL);
+            case 1 -> Math.round(random.nextDouble() * 1e6) / 1e3;
+            case 2 -> (double) random.nextInt(1_000_000);
+            default -> Double.parseDouble(random.nextInt(1000) + "." + random.nextInt(1_000_000) + "e" + (random.nextInt(40) - 20));
+            });
+        }
+        for (double v : values) {
+            assertEquals(shortest(v), RsamlTimes.decimal(v), () -> "decimal(" + v + ")");
+        }
+    }
+
+    private static java.math.BigDecimal shortest(double value) {
+        java.math.BigDecimal exact = new java.math.BigDecimal(value);
+        for (int digits = 1; digits < 17; digits++) {
+            java.math.BigDecimal shorter = exact.round(new java.math.MathContext(digits, java.math.RoundingMode.HALF_EVEN));
+            if (shorter.doubleValue() == value) {
+                return shorter;
+            }
+        }
+        return exact.round(new java.math.MathContext(17, java.math.RoundingMode.HALF_EVEN));
+    }
 }

@@ -122,7 +122,7 @@ class MutatedFilesTest {
         return n;
     }
 
-    private static byte[] mutate(byte[] original, int kind, Random random) {
+    static byte[] mutate(byte[] original, int kind, Random random) {
         String text = new String(original, StandardCharsets.UTF_8);
         int at = random.nextInt(original.length);
         switch (kind) {

@@ -6,6 +6,7 @@ package org.rsaml.codegen;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -136,6 +137,7 @@ public final class RsamlCodegen {
         } finally {
             deleteTree(scratch);
         }
+        OclToJava.write(root);
     }
 
     /** Regenerates into a scratch folder and lists every committed file that differs from it. */
@@ -153,6 +155,10 @@ public final class RsamlCodegen {
             }
             compare(scratch.resolve("rsaml.genmodel"), root.resolve(MODEL_DIR + "rsaml.genmodel"),
                     MODEL_DIR + "rsaml.genmodel", stale);
+            Path compiled = root.resolve(OclToJava.TARGET);
+            if (!Files.exists(compiled) || !Files.readString(compiled, StandardCharsets.UTF_8).equals(OclToJava.generate(root))) {
+                stale.add(OclToJava.TARGET + " (the invariants compiled to Java)");
+            }
             return stale;
         } finally {
             deleteTree(scratch);

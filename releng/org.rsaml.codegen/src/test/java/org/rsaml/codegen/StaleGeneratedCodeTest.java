@@ -18,7 +18,10 @@ import org.junit.jupiter.api.io.TempDir;
 /** The up-to-date check fails on stale code: shown on a copy of the repository with edited generated files. */
 class StaleGeneratedCodeTest {
 
-    /** The check covers the tree editor too: an edited and a missing editor file are both reported. */
+    /**
+     * The check covers the tree editor and the invariants compiled to Java too: an edited and a missing editor file
+     * and edited compiled invariants are all reported.
+     */
     @Test
     void staleEditorCodeIsReported(@TempDir Path copy) throws Exception {
         RsamlCodegen.copyTree(GeneratedCodeUpToDateTest.ROOT.resolve(RsamlCodegen.MODEL_DIR), copy.resolve(RsamlCodegen.MODEL_DIR));
@@ -32,7 +35,11 @@ class StaleGeneratedCodeTest {
         String icon = "bundles/org.rsaml.model.editor/icons/full/obj16/RsamlModelFile.gif";
         Files.writeString(copy.resolve(editor), "// edited by hand\n", StandardOpenOption.APPEND);
         Files.delete(copy.resolve(icon));
+        String compiled = OclToJava.TARGET;
+        RsamlCodegen.copyTree(GeneratedCodeUpToDateTest.ROOT.resolve(compiled), copy.resolve(compiled));
+        Files.writeString(copy.resolve(compiled), "// edited by hand\n", StandardOpenOption.APPEND);
 
-        assertEquals(List.of(editor, icon + " (missing)"), RsamlCodegen.check(copy), "every stale generated file is listed, and nothing else");
+        assertEquals(List.of(editor, icon + " (missing)", compiled + " (the invariants compiled to Java)"), RsamlCodegen.check(copy),
+                "every stale generated file is listed, and nothing else");
     }
 }
