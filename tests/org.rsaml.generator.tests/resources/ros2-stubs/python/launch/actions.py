@@ -9,3 +9,10 @@ class DeclareLaunchArgument:
         self.description = description
         self.choices = choices
         self.other = other
+
+
+class OpaqueFunction:
+    def __init__(self, *, function, args=None, kwargs=None, **other):
+        self.function = function
+        self.args = args
+        self.kwargs = kwargs

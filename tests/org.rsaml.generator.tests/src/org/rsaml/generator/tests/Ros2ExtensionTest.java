@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.math.BigDecimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
@@ -174,6 +175,71 @@ class Ros2ExtensionTest {
         assertTrue(Tools.sameFiles(before, Tools.snapshot(out)), "the output changed");
     }
 
+    /**
+     * config/&lt;pkg&gt;.params.yaml is the architect's: an edit survives generating again after a
+     * model change, and it is what both launch files give the node (a time written without a decimal
+     * point too; the file's value over the model's); a QoS override written under the model's name of
+     * a topic reaches the topic as remapped (its launch argument) and namespaced; an invalid edit is
+     * refused when a launch file reads it, naming the file, the line and what is wrong, and generating
+     * again keeps it as written.
+     */
+    @Test
+    void theParametersFileIsKeptAndBothLaunchFilesApplyIt(@TempDir Path tmp) throws Exception {
+        Path model = Files.copy(Tools.example("mobile-base-latency.rsaml"), tmp.resolve("base.rsaml"));
+        Path out = tmp.resolve("ws");
+        RsamlGenerator generator = new RsamlGenerator();
+        generator.generate(model, Target.ROS2, out, false);
+        String pkg = Names.snake(ModelLoader.load(model, "base.rsaml").architecture().getName());
+        Path root = out.resolve(pkg);
+        Path params = root.resolve("config/" + pkg + ".params.yaml");
+        String node = Ros2Test.nodes(root).get("navigation/obstacleDetector");
+        String text = Files.readString(params);
+        Matcher period = Pattern.compile("(?m)^" + node + ":\\n  ros__parameters:\\n(?:    #.*\\n)?    ([\\w.]+\\.period_ms): 20\\.0$").matcher(text);
+        assertTrue(period.find(), "no period of obstacleDetector in ms, the model's 20.0, in node " + node + "'s section:\n" + text);
+        String name = period.group(1);
+        String qos = "qos_overrides.speed_limit.publisher.reliability: best_effort";
+        assertTrue(text.contains("    " + qos + "\n"), "the sensor topic's QoS, under the model's name:\n" + text);
+        String edited = text.replace("    " + name + ": 20.0\n", "    # tuned on the robot\n    " + name + ": 40\n")
+                .replace(qos, qos.replace("best_effort", "reliable"));
+        Files.writeString(params, edited);
+
+        // The model changes (the planner's period); the file stays as the architect wrote it.
+        String changed = Files.readString(model).replace("period=\"100.0\" delay=\"100.0\"", "period=\"200.0\" delay=\"100.0\"");
+        assertNotEquals(Files.readString(model), changed);
+        Files.writeString(model, changed);
+        GenerationResult again = generator.generate(model, Target.ROS2, out, false);
+        assertTrue(again.preserved().stream().anyMatch(f -> f.endsWith(Path.of("config", pkg + ".params.yaml"))), "not kept: " + again.preserved());
+        assertEquals(edited, Files.readString(params), "the architect's parameters file changed on generating again");
+        assertTrue(Files.readString(root.resolve("gen/navigation/PathPlannerBase.hpp")).contains("period_ms\", 200.0)"), "the model's change is not in the node");
+
+        // Both launch files give the node the file's values, the override under the topic's resolved name.
+        for (String file : List.of(pkg + ".launch.py", pkg + "_processes.launch.py")) {
+            Tools.Result r = Ros2Test.launch(root.resolve("launch/" + file), "namespace:=robot1", "speed_limit_topic:=renamed/speed_limit");
+            assertEquals(0, r.exit(), r.output());
+            String given = r.output().lines().filter(l -> l.contains(" " + node + " [{")).findFirst().orElse("");
+            assertTrue(given.contains("'" + name + "': 40.0"), file + " does not give " + node + " the file's " + name + ": 40 as a double:\n" + r.output());
+            assertTrue(given.contains("'qos_overrides./robot1/renamed/speed_limit.publisher.reliability': 'reliable'"),
+                    file + ": the override of speed_limit does not follow its remapping and namespace:\n" + given);
+        }
+
+        // Invalid edits: each refused with the file and its line; generating again keeps it.
+        int line = (int) edited.substring(0, edited.indexOf("    " + name + ": 40")).lines().count() + 1;
+        Map<String, String> invalid = Map.of(
+                edited.replace("    " + name + ": 40\n", "    " + name + ": fast\n"), ":" + line + ": " + name + " of node " + node
+                        + " must be a positive number of ms (the unit its name ends with), not 'fast'",
+                edited.replace("    " + name + ": 40\n", "    " + name.replace("_ms", "_us") + ": 40\n"), ":" + line + ": node '" + node
+                        + "' has no parameter " + name.replace("_ms", "_us") + " (its times: " + name + "): the model changed",
+                edited.replace("    " + name + ": 40\n", "\t" + name + ": 40\n"), ":" + line + ": not YAML");
+        for (Map.Entry<String, String> e : invalid.entrySet()) {
+            Files.writeString(params, e.getKey());
+            Tools.Result r = Ros2Test.launch(root.resolve("launch/" + pkg + ".launch.py"));
+            assertNotEquals(0, r.exit(), "an invalid parameters file was taken:\n" + e.getKey());
+            assertTrue(r.output().contains(params + e.getValue()), "expected '" + params + e.getValue() + "' in:\n" + r.output());
+            generator.generate(model, Target.ROS2, out, false);
+            assertEquals(e.getKey(), Files.readString(params), "generating again changed the architect's invalid parameters file");
+        }
+    }
+
     @Test
     void aMethodTheModelDropsIsACompileError(@TempDir Path tmp) throws Exception {
         Path model = Files.copy(Tools.example("exp3-task-interpreter.rsaml"), tmp.resolve("arm.rsaml"));
@@ -219,9 +285,13 @@ class Ros2ExtensionTest {
                 Path base = out.resolve(Names.snake(arch.getName()) + "/gen/" + Names.snake(layer.getName()) + "/"
                         + Names.pascal(m.getName()) + "Base.hpp");
                 String text = Files.readString(base);
-                Matcher p = Pattern.compile("declare_parameter<std::int64_t>\\(\"reaction.min_interval_ns\", (\\d+)\\)").matcher(text);
-                assertTrue(p.find(), qn + " has no reaction bound");
-                assertEquals(shortestFeedingPeriodNs(arch, m), Long.parseLong(p.group(1)), qn);
+                // in the module's time unit, as the parameters file has it
+                String unit = m.getTimeUnit().getLiteral();
+                Matcher p = Pattern.compile("declare_parameter<double>\\(\"reaction.min_interval_" + unit + "\", ([\\d.]+)\\), ([\\d.]+)\\)").matcher(text);
+                assertTrue(p.find(), qn + " has no reaction bound in " + unit);
+                assertEquals(m.getTimeUnit().getValue() + ".0", p.group(2), qn + ": nanoseconds per " + unit);
+                assertEquals(new BigDecimal(shortestFeedingPeriodNs(arch, m)), new BigDecimal(p.group(1)).multiply(new BigDecimal(m.getTimeUnit().getValue()))
+                        .stripTrailingZeros().setScale(0), qn);
                 assertTrue(text.contains("if (!due(last_reaction_, reaction_interval_)) {"), qn);
                 bounded++;
             }

@@ -9,10 +9,12 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
+import java.math.BigDecimal;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -40,19 +42,22 @@ import org.rsaml.validation.ModelLoader;
  * The generated ROS 2 packages on a real ROS 2 (see {@link Ros2Jazzy}): built with colcon, started
  * with {@code ros2 launch} on the loopback in a domain of their own, every job busy-working
  * {@link #LOAD} of its modeled execution time. Every node starts; every timed release runs at its
- * modeled period, with no job skipped (judged by the nodes' own release times); messages arrive
+ * modeled period, or at the period its package's parameters file gives it (in {@link #TUNED}, one period
+ * doubled in config/&lt;pkg&gt;.params.yaml before the build), with no job skipped (judged by the nodes' own release times); messages arrive
  * at every connected entry port at the rate their publisher is released; every node reports the
  * timing analysis's bound of each release (written into it by the generator); where the system
  * grants real-time priorities, each release's worst observed response (release to completion,
  * measured by the node on its clock) is within that bound plus {@link #PLATFORM_NS}, a fixed
  * allowance for what the analysis does not count on ROS 2 (docs/timing.md); the topics the model
  * names exist under those names with their publisher and subscribers (one of them renamed through
- * its launch argument); and everything exits cleanly on SIGINT. By default a representative set: an example with two processors, a message
+ * its launch argument, its QoS set by the model's name in the parameters file and in effect under
+ * the new name); and everything exits cleanly on SIGINT. By default a representative set: an example with two processors, a message
  * type of its own and connections, a model where a long low-priority job must not delay a short
  * high-priority one on the same core, an inhibitor, and one seeded random task set (two processors
  * of rate-monotonic tasks, as {@link JobTimingTest} runs on the C++ runtime);
- * {@code -Drsaml.ros2.examples=all} runs every example without errors as well, and
- * {@code -Drsaml.ros2.seeds=1,2,3} other random sets.
+ * {@code -Drsaml.ros2.examples=all} runs every example without errors as well,
+ * {@code -Drsaml.ros2.examples=mobile-base-latency.rsaml,resources/inhibitor-window.rsaml} only
+ * those, and {@code -Drsaml.ros2.seeds=1,2,3} other random sets.
  */
 class Ros2LaunchTest {
 
@@ -74,8 +79,12 @@ class Ros2LaunchTest {
     }
 
     static List<String> models() throws Exception {
+        String chosen = System.getProperty("rsaml.ros2.examples", "");
+        if (!chosen.isBlank() && !"all".equals(chosen)) {
+            return java.util.Arrays.stream(chosen.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toList();
+        }
         List<String> models = new ArrayList<>(List.of("mobile-base-latency.rsaml", "resources/ros2-preemption.rsaml", "resources/inhibitor-window.rsaml"));
-        if ("all".equals(System.getProperty("rsaml.ros2.examples"))) {
+        if ("all".equals(chosen)) {
             for (String e : Tools.cleanExamples()) {
                 if (!models.contains(e)) {
                     models.add(e);
@@ -86,6 +95,57 @@ class Ros2LaunchTest {
     }
 
     private static final Pattern PORT = Pattern.compile("summary (\\S+) messages (\\d+) received ([\\d.]+)\\.\\.([\\d.]+) ms");
+
+    /** The model whose parameters file the test edits, as a user tunes the system without generating again. */
+    static final String TUNED = "mobile-base-latency.rsaml";
+
+    /**
+     * Doubles, in the package's parameters file, the period of the longest release of a module
+     * released only by it: the node must run at the file's period. The file holds the model's value
+     * first, in the model's unit.
+     */
+    private static void tune(Path root, ExecutionPlan plan, Map<Release, Long> periodsNs) throws Exception {
+        Release r = plan.releases().stream().filter(x -> x.module().releases().size() == 1)
+                .max(java.util.Comparator.comparingLong(Release::periodNs)).orElseThrow();
+        String node = Ros2Test.nodes(root).get(r.module().qualifiedName());
+        Path file = root.resolve("config/" + root.getFileName() + ".params.yaml");
+        List<String> lines = new ArrayList<>(Files.readAllLines(file));
+        int section = lines.indexOf(node + ":");
+        assertTrue(section >= 0, "no section for node " + node + " in " + file + ":\n" + String.join("\n", lines));
+        Pattern period = Pattern.compile("(\\s+[\\w.]+\\.period_(ns|us|ms|s): )([\\d.]+)");
+        for (int i = section + 1; i < lines.size() && lines.get(i).startsWith(" "); i++) {
+            Matcher m = period.matcher(lines.get(i));
+            if (m.matches()) {
+                long unitNs = switch (m.group(2)) { case "ns" -> 1L; case "us" -> 1_000L; case "ms" -> 1_000_000L; default -> 1_000_000_000L; };
+                BigDecimal value = new BigDecimal(m.group(3));
+                assertEquals(r.periodNs(), value.multiply(BigDecimal.valueOf(unitNs)).longValueExact(), "the parameters file's " + lines.get(i).strip()
+                        + " is not the model's period of " + r.label());
+                lines.set(i, m.group(1) + value.multiply(BigDecimal.valueOf(2)).toPlainString());
+                Files.write(file, lines);
+                periodsNs.put(r, 2 * r.periodNs());
+                return;
+            }
+        }
+        fail("no period parameter of " + r.label() + " in the section of node " + node + " in " + file);
+    }
+
+    /**
+     * Flips, in the package's parameters file, the reliability of a topic the model names, by the
+     * model's name: its publisher's from best effort to reliable, or else its subscriptions' from
+     * reliable to best effort (either way the publisher still reaches its subscribers). Returns the
+     * endpoint type ROS 2 reports the change on and the reliability it must report.
+     */
+    private static String[] tuneQos(Path root, String topic) throws Exception {
+        Path file = root.resolve("config/" + root.getFileName() + ".params.yaml");
+        String text = Files.readString(file);
+        String publisher = "qos_overrides." + topic + ".publisher.reliability: ";
+        String subscription = "qos_overrides." + topic + ".subscription.reliability: ";
+        String[] change = text.contains(publisher + "best_effort") ? new String[] {publisher + "best_effort", publisher + "reliable", "PUBLISHER", "RELIABLE"}
+                : new String[] {subscription + "reliable", subscription + "best_effort", "SUBSCRIPTION", "BEST_EFFORT"};
+        assertTrue(text.contains(change[0]), "the parameters file has no " + change[0] + ":\n" + text);
+        Files.writeString(file, text.replace(change[0], change[1]));
+        return new String[] {change[2], change[3]};
+    }
 
     @ParameterizedTest
     @MethodSource("models")
@@ -113,10 +173,14 @@ class Ros2LaunchTest {
             sys.dont_write_bytecode = True
             spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
             context = LaunchContext()
+            entities = m.generate_launch_description().entities
+            for e in entities:
+                if type(e).__name__ == 'DeclareLaunchArgument':
+                    context.launch_configurations[e.name] = perform_substitutions(context, e.default_value) if e.name != 'params_file' else sys.argv[3]
             context.launch_configurations['host'] = sys.argv[2]
             started = []
-            for e in m.generate_launch_description().entities:
-                if type(e).__name__ != 'DeclareLaunchArgument' and (e.condition is None or e.condition.evaluate(context)):
+            for e in [a for e in entities if type(e).__name__ == 'OpaqueFunction' for a in e.execute(context)]:
+                if e.condition is None or e.condition.evaluate(context):
                     started.append(perform_substitutions(context, normalize_to_list_of_substitutions(e._Node__node_name)))
             print('started', ' '.join(sorted(started)))
             """;
@@ -142,15 +206,43 @@ class Ros2LaunchTest {
         Files.writeString(script, STARTED);
         Map<String, String> expected = Map.of("", "started " + pkg + "_core0_container " + pkg + "_core1_container", "main",
                 "started " + pkg + "_core0_container", "nav-board", "started " + pkg + "_core1_container", "elsewhere", "started");
+        String params = src.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
         for (Map.Entry<String, String> e : expected.entrySet()) {
             String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py")
-                    + "' '" + e.getKey() + "'").toArray(String[]::new));
+                    + "' '" + e.getKey() + "' '" + params + "'").toArray(String[]::new));
             assertTrue(out.strip().endsWith(e.getValue()), "host:=" + e.getKey() + " should start " + e.getValue() + ":\n" + out);
         }
         String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
-                + "_processes.launch.py") + "' nav-board").toArray(String[]::new));
+                + "_processes.launch.py") + "' nav-board '" + params + "'").toArray(String[]::new));
         assertTrue(processes.strip().endsWith("started navigation_obstacle_detector navigation_path_planner"),
                 "the navigation nodes alone:\n" + processes);
+    }
+
+    /**
+     * An invalid edit of a parameters file, on ROS 2's own launch: refused before any node starts,
+     * with the file, the line and what is wrong, as launch reports an error (no Python traceback).
+     */
+    @org.junit.jupiter.api.Test
+    void anInvalidParametersFileIsRefusedWithItsLine(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        Path model = Tools.example(TUNED);
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        String pkg = Names.snake(ModelLoader.load(model, TUNED).architecture().getName());
+        Path params = src.resolve(pkg + "/config/" + pkg + ".params.yaml");
+        List<String> lines = new ArrayList<>(Files.readAllLines(params));
+        int line = java.util.stream.IntStream.range(0, lines.size()).filter(i -> lines.get(i).matches("\\s+[\\w.]+\\.period_ms: [\\d.]+"))
+                .findFirst().orElseThrow() + 1;
+        String name = lines.get(line - 1).strip().split(":")[0];
+        lines.set(line - 1, lines.get(line - 1).replaceFirst(": [\\d.]+$", ": -5"));
+        Files.write(params, lines);
+        Tools.Result r = Tools.run(tmp, 120, Ros2Jazzy.bash("ros2 launch '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py") + "' params_file:='"
+                + params + "'").toArray(String[]::new));
+        assertTrue(r.exit() != 0, "ros2 launch took the invalid parameters file:\n" + r.output());
+        assertTrue(r.output().contains(params + ":" + line + ": " + name + " of node ") && r.output().contains("must be a positive number of ms"),
+                "no error naming " + params + ", line " + line + " and " + name + ":\n" + r.output());
+        assertTrue(!r.output().contains("Traceback"), "a traceback instead of an error:\n" + r.output());
     }
 
     /**
@@ -193,25 +285,36 @@ class Ros2LaunchTest {
         String pkg = Names.snake(arch.getName());
         Path src = tmp.resolve("src");
         new RsamlGenerator().generate(model, Target.ROS2, src, false);
-        Path install = Ros2Jazzy.colconBuild(src, tmp);
-
-        // Launch, wait for every node, let it run, interrupt it.
-        Map<String, String> nodes = Ros2Test.nodes(src.resolve(pkg));
-        Path log = tmp.resolve("launch.log");
-        int domain = 1 + (int) (ProcessHandle.current().pid() % 100);
+        ExecutionPlan plan = ExecutionPlan.of(arch);
+        Map<Release, Long> periodsNs = new IdentityHashMap<>();
+        plan.releases().forEach(r -> periodsNs.put(r, r.periodNs()));
         // The topics the model names, each under its name, but one renamed through its launch argument.
         Map<String, String> named = new TreeMap<>();
         StringBuilder remaps = new StringBuilder();
+        String renamed = null;
         for (Connection c : arch.getConnections()) {
             String topic = RsamlTopics.sharedTopic(c.getSource());
             if (topic != null && !named.containsKey(topic)) {
                 String as = named.isEmpty() ? "renamed/" + topic.replaceFirst("^/", "") : topic;
                 named.put(topic, as.startsWith("/") ? as : "/" + as);
                 if (!as.equals(topic)) {
+                    renamed = topic;
                     remaps.append(' ').append(topic.replaceFirst("^/", "").replace('/', '_')).append("_topic:=").append(as);
                 }
             }
         }
+        String[] qos = null;
+        if (name.equals(TUNED)) {
+            tune(src.resolve(pkg), plan, periodsNs);
+            assertNotNull(renamed, TUNED + " names no topic");
+            qos = tuneQos(src.resolve(pkg), renamed);
+        }
+        Path install = Ros2Jazzy.colconBuild(src, tmp);
+
+        // Launch, wait for every node, let it run, interrupt it.
+        Map<String, String> nodes = Ros2Test.nodes(src.resolve(pkg));
+        Path log = tmp.resolve("launch.log");
+        int domain = 1 + (int) (ProcessHandle.current().pid() % 100);
         ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + pkg + ".launch.py simulated_load:=" + LOAD + remaps, install))
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         Ros2Jazzy.isolate(pb.environment(), domain);
@@ -232,10 +335,24 @@ class Ros2LaunchTest {
                 Thread.sleep(200);
             }
             for (Map.Entry<String, String> t : named.entrySet()) {
-                String script = "export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + domain + "; ros2 topic info --no-daemon --spin-time 3 " + t.getValue();
+                String script = "export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + domain + "; ros2 topic info --no-daemon --spin-time 3 -v "
+                        + t.getValue();
                 String info = Tools.ok(tmp, 60, Ros2Jazzy.bash(script, install).toArray(String[]::new));
                 assertTrue(info.matches("(?s).*Publisher count: [1-9].*Subscription count: [1-9].*"), "the model's topic '" + t.getKey()
                         + "' is not " + t.getValue() + " with its publisher and subscribers:\n" + info);
+                if (qos != null && t.getKey().equals(renamed)) {
+                    // the override written under the model's name reaches the topic under its new name
+                    List<String> endpoints = new ArrayList<>();
+                    for (String endpoint : info.split("Node name: ")) {
+                        Matcher e = Pattern.compile("(?s).*Endpoint type: (\\w+).*Reliability: (\\w+).*").matcher(endpoint);
+                        if (e.matches() && e.group(1).equals(qos[0])) {
+                            endpoints.add(e.group(2));
+                        }
+                    }
+                    assertTrue(!endpoints.isEmpty() && endpoints.stream().allMatch(qos[1]::equals), "the parameters file sets the " + qos[0]
+                            + " reliability of topic '" + renamed + "' to " + qos[1] + ", but under its new name " + t.getValue()
+                            + " it is " + endpoints + ":\n" + info);
+                }
             }
             for (long end = System.nanoTime() + RUN_MS * 1_000_000; System.nanoTime() < end; Thread.sleep(250)) {
                 otherRealtime.addAll(otherRealtimeThreads(launch.toHandle()));
@@ -263,16 +380,15 @@ class Ros2LaunchTest {
         }
 
         // Every release at its modeled period: releases on the grid, none skipped, for the whole run.
-        ExecutionPlan plan = ExecutionPlan.of(arch);
         StringBuilder report = new StringBuilder(name + ": observed on ROS 2 (simulated load " + LOAD + ")\n");
         for (PlannedModule pm : plan.modules()) {
             for (Release r : pm.releases()) {
                 JobSummary o = observed.get(r.label());
                 assertNotNull(o, "no summary of release " + r.label() + ":\n" + Tools.last(trace, 6000));
-                double period = r.periodNs() / 1e6;
+                double period = periodsNs.get(r) / 1e6;
                 assertTrue(o.jobs() >= Math.max(2, (long) (RUN_MS * 0.8 / period)), r.label() + " ran " + o.jobs() + " jobs in a run of "
                         + RUN_MS + " ms, period " + period + " ms");
-                assertEquals((o.jobs() - 1) * r.periodNs(), o.lastNs() - o.firstNs(), 10_000,
+                assertEquals((o.jobs() - 1) * periodsNs.get(r), o.lastNs() - o.firstNs(), 10_000,
                         r.label() + ": " + o.jobs() + " jobs released from " + o.firstNs() + " to " + o.lastNs() + " ns, not every " + period + " ms");
             }
         }
@@ -284,7 +400,7 @@ class Ros2LaunchTest {
             assertNotNull(p, "no message reached " + port + ":\n" + Tools.last(trace, 6000));
             PlannedModule source = plan.modules().stream().filter(x -> x.module() == c.getSource().getModule()).findFirst().orElseThrow();
             if (!source.reactive() && !source.releases().isEmpty() && p[0] >= 3) {
-                double expected = source.releases().stream().mapToDouble(r -> 1e6 / r.periodNs()).sum();
+                double expected = source.releases().stream().mapToDouble(r -> 1e6 / periodsNs.get(r)).sum();
                 double rate = (p[0] - 1) / (p[2] - p[1]);
                 assertEquals(expected, rate, expected * 0.15, port + " received " + (long) p[0] + " messages from " + p[1] + " to " + p[2]
                         + " ms: " + rate * 1000 + " a second, its publisher is released " + expected * 1000 + " times a second");

@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.math.BigDecimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -54,8 +55,8 @@ import org.rsaml.validation.ModelLoader;
  */
 class Ros2Test {
 
-    /** The parameters every node gets in both launch files. */
-    static final String PARAMETERS = "[{'use_sim_time': $(use_sim_time), 'rsaml.simulated_load': ParameterValue($(simulated_load), float)}]";
+    /** The parameters every node gets in both launch files after its own from the parameters file. */
+    static final String PARAMETERS = "{'use_sim_time': $(use_sim_time), 'rsaml.simulated_load': ParameterValue($(simulated_load), float)}]";
 
     static List<String> models() throws Exception {
         List<String> models = new ArrayList<>(Tools.cleanExamples());
@@ -74,7 +75,19 @@ class Ros2Test {
             sys.dont_write_bytecode = True
             sys.path.insert(0, sys.argv[2])
             spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
-            for e in m.generate_launch_description().entities:
+            class Context:
+                launch_configurations = {}
+                package_shares = {sys.argv[3]: sys.argv[4]}  # the package's source folder holds config/ as its share folder will
+            entities = m.generate_launch_description().entities
+            for e in entities:
+                if type(e).__name__ == 'DeclareLaunchArgument':
+                    Context.launch_configurations[e.name] = e.default_value
+            for a in sys.argv[5:]:  # NAME:=VALUE, as on ros2 launch's command line
+                Context.launch_configurations[a.split(':=', 1)[0]] = a.split(':=', 1)[1]
+            started = []
+            for e in entities:
+                started += e.function(Context) if type(e).__name__ == 'OpaqueFunction' else [e]
+            for e in started:
                 kind = type(e).__name__
                 if kind == 'DeclareLaunchArgument':
                     print('argument', e.name, repr(e.default_value))
@@ -159,15 +172,19 @@ class Ros2Test {
         assertEquals(modules, components.size(), composed);
         assertEquals(modules, nodes.size(), processes);
         TreeSet<String> nodeNames = new TreeSet<>();
+        // Each node gets its values from the parameters file (config/<pkg>.params.yaml), then those of the launch arguments.
+        Map<String, String> nodeParameters = new TreeMap<>();
         for (String c : components) {
             String[] f = c.split(" ");
             assertEquals(pkg, f[1]);
             assertTrue(plugins.containsKey(f[2]), "component " + f[2] + " is not registered in CMakeLists.txt");
             assertEquals("$(namespace)", f[3], c);
-            assertTrue(c.endsWith(PARAMETERS), c);
+            String parameters = c.substring(c.indexOf(" [{") + 1);
+            assertTrue(parameters.startsWith("[{") && parameters.endsWith(", " + PARAMETERS), c);
             nodeNames.add(f[4]);
+            nodeParameters.put(f[4], parameters);
             assertTrue(nodes.stream().anyMatch(n -> n.equals("node " + pkg + " " + plugins.get(f[2]) + " $(namespace) " + f[4]
-                    + " " + PARAMETERS)), "no process for " + c + ": " + nodes);
+                    + " " + parameters)), "no process for " + c + " with the same parameters: " + nodes);
         }
         assertEquals(modules, nodeNames.size(), "node names are not unique: " + components);
 
@@ -238,10 +255,17 @@ class Ros2Test {
             for (Module m : layer.getModules()) {
                 for (Function f : m.getFunctions()) {
                     if (f.getExecType() == ExecutionType.PERIODIC && f.getPeriod() > 0) {
-                        long ns = Math.round(f.getPeriod() * f.getTimeUnit().getValue());
-                        Matcher p = Pattern.compile("(timer_release_\\w+)_period_ = positive\\(\"([\\w.]+)\", this->declare_parameter<std::int64_t>\\(\"\\2\", "
-                                + ns + "\\)\\);").matcher(all);
-                        assertTrue(p.find(), "no period parameter for " + f.getName() + " (" + ns + " ns)");
+                        // in the function's unit, as the model and the parameters file write it
+                        String value = new BigDecimal(Double.toString(f.getPeriod())).stripTrailingZeros().toPlainString();
+                        value = value.contains(".") ? value : value + ".0";
+                        String unit = f.getTimeUnit().getLiteral();
+                        Matcher p = Pattern.compile("(timer_release_\\w+)_period_ = nanoseconds\\(\"([\\w.]+\\.period_" + unit
+                                + ")\", this->declare_parameter<double>\\(\"\\2\", " + Pattern.quote(value) + "\\), " + f.getTimeUnit().getValue()
+                                + "\\.0\\);").matcher(all);
+                        assertTrue(p.find(), "no period parameter for " + f.getName() + " (" + value + " " + unit + ")");
+                        String given = nodeParameters.get(nodesByModule.get(key(m)));
+                        assertTrue(given.contains(".period_" + unit + "': " + value), "the launch files do not give node "
+                                + nodesByModule.get(key(m)) + " the period of " + f.getName() + " from the parameters file: " + given);
                         assertTrue(all.contains(p.group(1) + "_ = this->rsaml_add_timer("), "no timer for " + f.getName());
                         assertTrue(all.contains(p.group(1) + "_period_, [this]"), "the timer of " + f.getName() + " does not take its period parameter");
                     }
@@ -356,9 +380,24 @@ class Ros2Test {
         }
     }
 
+    /** What a launch file of the package in {@code root} starts, its parameters file read from root/config/. */
     private static String launch(Path dir, Path file) throws Exception {
-        Tools.ok(dir, 60, "python3", "-m", "py_compile", file.toString());
-        return Tools.ok(dir, 60, "python3", "-c", LAUNCH, file.toString(), Tools.resource("ros2-stubs/python").toString());
+        Tools.ok(dir, 60, Ros2Build.python(), "-m", "py_compile", file.toString());
+        Tools.Result r = launch(file);
+        assertEquals(0, r.exit(), () -> file + " failed:\n" + Tools.last(r.output(), 6000));
+        return r.output();
+    }
+
+    /**
+     * What a launch file of the package in {@code root} starts given the launch {@code arguments}
+     * (NAME:=VALUE), its parameters file read from root/config/ unless params_file:= names another.
+     */
+    static Tools.Result launch(Path file, String... arguments) throws Exception {
+        Path root = file.getParent().getParent();
+        List<String> command = new ArrayList<>(List.of(Ros2Build.python(), "-c", LAUNCH, file.toString(), Tools.resource("ros2-stubs/python").toString(),
+                root.getFileName().toString(), root.toString()));
+        command.addAll(List.of(arguments));
+        return Tools.run(root, 60, command.toArray(String[]::new));
     }
 
     private static String key(Module m) {

@@ -103,7 +103,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 
 		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
 		install(TARGETS «rosNames.containerExecutable»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
-		install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
+		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
 
 		ament_package()
 	'''

@@ -9,11 +9,13 @@ import org.rsaml.analysis.plan.ExecutionPlan
 import org.rsaml.analysis.plan.LinkPlan
 import org.rsaml.analysis.plan.PlannedModule
 import org.rsaml.analysis.plan.Release
+import org.rsaml.analysis.plan.PlannedFunction
 import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.cxx.CxxNames
 import org.rsaml.generator.internal.cxx.ReleaseBounds
 import org.rsaml.generator.spi.OutputContext
+import org.rsaml.model.TimeScaled
 
 /**
  * What the templates of one ROS 2 generation share: the plan, its C++ and ROS names, the output
@@ -86,8 +88,40 @@ class Ros2Context {
 		links
 	}
 
-	/** The parameter holding a release's period. */
+	/** The parameter holding a release's period, in the unit of what is released. */
 	def periodParameter(Release r) {
-		names.method(r).replaceFirst("^release_", "") + ".period_ns"
+		val element = switch (r.kind) {
+			case FUNCTION: r.function.function as TimeScaled
+			case ACTION: r.action.action
+			default: r.module.module
+		}
+		Ros2TimeParameter.of(names.method(r).replaceFirst("^release_", "") + ".period", r.periodNs, element)
+	}
+
+	/** The parameter holding a sporadic function's minimum interval, in the function's unit. */
+	def intervalParameter(PlannedFunction f) {
+		Ros2TimeParameter.of(names.method(f) + ".min_interval", f.minIntervalNs, f.function)
+	}
+
+	/** The parameter holding the least time between two reactions of a module, in the module's unit. */
+	def reactionParameter(PlannedModule m) {
+		Ros2TimeParameter.of("reaction.min_interval", rosNames.reactionIntervalNs(m), m.module)
+	}
+
+	/** The parameter holding how long a subsumption link stays active, in the link's unit. */
+	def durationParameter(LinkPlan l) {
+		Ros2TimeParameter.of(names.stem(l) + ".duration", l.durationNs, l.link)
+	}
+
+	/** Every time parameter of a module's node, in the order the node declares them. */
+	def timeParameters(PlannedModule m) {
+		val parameters = <Ros2TimeParameter>newArrayList
+		m.releases.forEach[parameters += periodParameter(it)]
+		m.stepFunctions.filter[minIntervalNs > 0].forEach[parameters += intervalParameter(it)]
+		if (m.reactive && rosNames.reactionIntervalNs(m) > 0) {
+			parameters += reactionParameter(m)
+		}
+		linksOf(m).forEach[parameters += durationParameter(it)]
+		parameters
 	}
 }

@@ -55,14 +55,19 @@ class Ros2LaunchTemplate extends Ros2Template {
 		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true, simulated_load:=0.9 (every
 		# timed job busy-works 90 % of its modeled execution time)«IF hosted», host:=NAME (only the nodes of
 		# the processors on host NAME; main: those without a host; empty, the default: every node)«ENDIF»«IF !rosNames.topicArguments.empty»;
-		# for each topic the model names, «rosNames.topicArguments.values.head»:=NAME and the like (the topic takes that name)«ENDIF».
+		# for each topic the model names, «rosNames.topicArguments.values.head»:=NAME and the like (the topic takes that name)«ENDIF»;
+		# params_file:=PATH (the nodes' parameters; default: config/«pkg».params.yaml of this package).
+		import re
+
+		import yaml
+
 		from launch import LaunchDescription
-		from launch.actions import DeclareLaunchArgument
+		from launch.actions import DeclareLaunchArgument, OpaqueFunction
 		«IF hosted»
 			from launch.conditions import IfCondition
-			from launch.substitutions import LaunchConfiguration, PythonExpression
+			from launch.substitutions import LaunchConfiguration, PathJoinSubstitution, PythonExpression
 		«ELSE»
-			from launch.substitutions import LaunchConfiguration
+			from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
 		«ENDIF»
 		«IF composed»
 			from launch_ros.actions import ComposableNodeContainer
@@ -71,16 +76,129 @@ class Ros2LaunchTemplate extends Ros2Template {
 			from launch_ros.actions import Node
 		«ENDIF»
 		from launch_ros.parameter_descriptions import ParameterValue
+		from launch_ros.substitutions import FindPackageShare
+
+		# The times each node declares, in the model's units (the parameters file may set them).
+		TIMES = {
+		    «FOR m : plan.modules»
+		    	«py(m.rosNode)»: («FOR p : context.timeParameters(m)»«py(p.name)», «ENDFOR»),
+		    «ENDFOR»
+		}
 
 
-		def generate_launch_description():
+		def node_parameters(path, namespace, topics):
+		    """The parameters file's values for each node: its section over the '/**' one, flattened. A QoS
+		    override of a topic follows the topic's name as remapped (topics: the model's name -> the name it
+		    takes) and, when relative, the namespace: ROS 2 names the override after the resolved topic."""
+		    ns = namespace.strip('/')
+
+		    def refuse(node, what):
+		        return RuntimeError('%s:%d: %s' % (path, node.start_mark.line + 1, what))
+
+		    def resolve(topic):
+		        topic = topics.get(topic, topic)
+		        return topic if topic.startswith('/') else '/' + '/'.join(x for x in (ns, topic) if x)
+
+		    try:
+		        with open(path, encoding='utf-8') as f:
+		            loader = yaml.SafeLoader(f)
+		            try:
+		                root = loader.get_single_node()
+
+		                def flat(node, prefix, out):
+		                    if not isinstance(node, yaml.MappingNode):
+		                        raise refuse(node, 'the parameters of a node are a mapping (name: value), not %s' % node.tag.rsplit(':', 1)[-1])
+		                    for key, value in node.value:
+		                        name = prefix + str(loader.construct_object(key, deep=True))
+		                        if isinstance(value, yaml.MappingNode):
+		                            flat(value, name + '.', out)
+		                        else:
+		                            out[name] = (value, loader.construct_object(value, deep=True))
+		                    return out
+
+		                sections = {}
+		                if root is not None:
+		                    if not isinstance(root, yaml.MappingNode):
+		                        raise refuse(root, 'a ROS 2 parameters file maps node names to their ros__parameters')
+		                    for key, value in root.value:
+		                        node = str(loader.construct_object(key, deep=True)).lstrip('/')
+		                        node = node[len(ns) + 1:] if ns and node.startswith(ns + '/') else node
+		                        body = dict((str(loader.construct_object(k)), v) for k, v in value.value) if isinstance(value, yaml.MappingNode) else {}
+		                        if 'ros__parameters' not in body:
+		                            raise refuse(value, "node '%s' has no ros__parameters: indent its parameters under a line 'ros__parameters:'" % node)
+		                        sections[node] = flat(body['ros__parameters'], '', {})
+		            finally:
+		                loader.dispose()
+		    except OSError as e:
+		        raise RuntimeError('%s: cannot read the parameters file (%s); params_file:=PATH names another' % (path, e.strerror)) from None
+		    except yaml.YAMLError as e:
+		        mark = getattr(e, 'problem_mark', None)
+		        raise RuntimeError('%s:%s: not YAML: %s' % (path, mark.line + 1 if mark else 1, getattr(e, 'problem', None) or e)) from None
+
+		    def of(node):
+		        values = {}
+		        for section in ('**', node):
+		            for name, (source, value) in sections.get(section, {}).items():
+		                time = re.fullmatch(r'.+\.(?:period|min_interval|duration)_(ns|us|ms|s)', name)
+		                if time and section == node and name not in TIMES[node]:
+		                    raise refuse(source, "node '%s' has no parameter %s (its times: %s): the model changed; rename or remove the line"
+		                                 % (node, name, ', '.join(TIMES[node]) or 'none'))
+		                if time and name in TIMES[node]:
+		                    if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
+		                        raise refuse(source, '%s of node %s must be a positive number of %s (the unit its name ends with), not %r'
+		                                     % (name, node, time.group(1), value))
+		                    value = float(value)  # a time written without a decimal point
+		                if name.startswith('qos_overrides.'):
+		                    topic, _, policy = name[len('qos_overrides.'):].rpartition('.')
+		                    topic, _, entity = topic.rpartition('.')
+		                    name = 'qos_overrides.%s.%s.%s' % (resolve(topic), entity, policy)
+		                values[name] = value
+		        return values
+		    return of
+
+
+		def launch_setup(context):
 		    namespace = LaunchConfiguration('namespace')
-		    parameters = [{'use_sim_time': LaunchConfiguration('use_sim_time'),
-		                   'rsaml.simulated_load': ParameterValue(LaunchConfiguration('simulated_load'), value_type=float)}]
+		    topics = {«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»«py(t.key)»: LaunchConfiguration(«py(t.value)»).perform(context)«ENDFOR»}
+		    values = node_parameters(LaunchConfiguration('params_file').perform(context), namespace.perform(context), topics)
+		    parameters = {'use_sim_time': LaunchConfiguration('use_sim_time'),
+		                  'rsaml.simulated_load': ParameterValue(LaunchConfiguration('simulated_load'), value_type=float)}
 		    «IF !rosNames.topicArguments.empty»
 		    	# The topics the model names, each remapped to its argument's value (the same name by default).
 		    	remappings = [«FOR t : rosNames.topicArguments.entrySet SEPARATOR ",\n              "»(«py(t.key)», LaunchConfiguration(«py(t.value)»))«ENDFOR»]
 		    «ENDIF»
+		    return [
+		        «IF composed»
+		        	«FOR c : rosNames.containers»
+		        		«IF c.processor !== null»
+		        			# Processor '«Names.comment(c.processor.name)»'«IF c.core >= 0»: CPU core «c.core»«ENDIF».
+		        		«ELSEIF rosNames.containers.size > 1»
+		        			# The modules no processor names.
+		        		«ENDIF»
+		        		ComposableNodeContainer(
+		        		    name=«py(c.name)», namespace=namespace, package=«py(pkg)»,
+		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«IF c.core >= 0»
+		        		    prefix=«py(taskset(c.core))»,«ENDIF»«IF hosted»
+		        		    condition=«onHost(c.processor)»,«ENDIF»
+		        		    composable_node_descriptions=[
+		        		        «FOR m : c.modules»
+		        		        	ComposableNode(package=«py(pkg)», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
+		        		        	               namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap»),
+		        		        «ENDFOR»
+		        		    ]),
+		        	«ENDFOR»
+		        «ELSE»
+		        	«FOR m : plan.modules»
+		        		Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
+		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.core >= 0»,
+		        		     prefix=«py(taskset(m.core))»«ENDIF»«IF hosted»,
+		        		     condition=«onHost(m.processor)»«ENDIF»),
+		        	«ENDFOR»
+		        «ENDIF»
+		    ]
+
+
+		def generate_launch_description():
 		    return LaunchDescription([
 		        DeclareLaunchArgument('namespace', default_value='',
 		                              description='Namespace of every node and topic (a second robot: another namespace)'),
@@ -96,33 +214,10 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	DeclareLaunchArgument(«py(t.value)», default_value=«py(t.key)»,
 		        	                      description=«py("Topic '" + t.key + "' of the model: the name it takes")»),
 		        «ENDFOR»
-		        «IF composed»
-		        	«FOR c : rosNames.containers»
-		        		«IF c.processor !== null»
-		        			# Processor '«Names.comment(c.processor.name)»'«IF c.core >= 0»: CPU core «c.core»«ENDIF».
-		        		«ELSEIF rosNames.containers.size > 1»
-		        			# The modules no processor names.
-		        		«ENDIF»
-		        		ComposableNodeContainer(
-		        		    name=«py(c.name)», namespace=namespace, package=«py(pkg)»,
-		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=parameters,«IF c.core >= 0»
-		        		    prefix=«py(taskset(c.core))»,«ENDIF»«IF hosted»
-		        		    condition=«onHost(c.processor)»,«ENDIF»
-		        		    composable_node_descriptions=[
-		        		        «FOR m : c.modules»
-		        		        	ComposableNode(package=«py(pkg)», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
-		        		        	               namespace=namespace, parameters=parameters«remap»),
-		        		        «ENDFOR»
-		        		    ]),
-		        	«ENDFOR»
-		        «ELSE»
-		        	«FOR m : plan.modules»
-		        		Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
-		        		     namespace=namespace, parameters=parameters«remap», output='screen'«IF m.core >= 0»,
-		        		     prefix=«py(taskset(m.core))»«ENDIF»«IF hosted»,
-		        		     condition=«onHost(m.processor)»«ENDIF»),
-		        	«ENDFOR»
-		        «ENDIF»
+		        DeclareLaunchArgument('params_file',
+		                              default_value=PathJoinSubstitution([FindPackageShare(«py(pkg)»), 'config', «py(pkg + ".params.yaml")»]),
+		                              description="The nodes' parameters file (ROS 2's format; times in the model's units)"),
+		        OpaqueFunction(function=launch_setup),
 		    ])
 	'''
 

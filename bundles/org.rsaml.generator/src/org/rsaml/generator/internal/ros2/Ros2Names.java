@@ -284,6 +284,18 @@ public final class Ros2Names {
         return sensorStream(p) ? "rclcpp::SensorDataQoS()" : "rclcpp::QoS(10).reliable()";
     }
 
+    /**
+     * The policies of {@link #qos(PlannedPort)} a parameters file can override, as the values of
+     * ROS 2's {@code qos_overrides.TOPIC.publisher|subscription.POLICY} parameters.
+     */
+    public Map<String, String> qosPolicies(PlannedPort p) {
+        Map<String, String> policies = new LinkedHashMap<>();
+        policies.put("reliability", sensorStream(p) ? "best_effort" : "reliable");
+        policies.put("history", "keep_last");
+        policies.put("depth", sensorStream(p) ? "5" : "10");
+        return policies;
+    }
+
     /** For a module in a reactive cycle, the least time between two reactions (0: not in a cycle). */
     public long cycleBoundNs(PlannedModule m) {
         return cycleBounds.getOrDefault(m, 0L);

@@ -49,6 +49,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		// «banner»
 		#pragma once
 
+		#include <cmath>
 		#include <cstdint>
 		#include <memory>
 		#include <optional>
@@ -68,7 +69,8 @@ class Ros2NodeTemplate extends Ros2Template {
 		 * Timing: «doc(m.timing)».
 		 * The generated part: «m.className» (src/«m.layerId»/«m.className».hpp, yours) derives from it.
 		 * Topics are relative: the node's namespace (launch argument namespace) prefixes them all. The
-		 * model's times are parameters (nanoseconds, > 0) with the model's values as defaults; QoS can be
+		 * model's times are parameters in the model's units (the name ends with the unit: period_ms),
+		 * with the model's values as defaults (config/«pkg».params.yaml sets them); QoS can be
 		 * overridden with the qos_overrides.<topic> parameters; timers run on the node's clock
 		 * (use_sim_time).
 		 */
@@ -77,16 +79,16 @@ class Ros2NodeTemplate extends Ros2Template {
 		  explicit «m.baseName»(const rclcpp::NodeOptions& options)
 		      : ::«names.project»::rsaml_ros2::ScheduledNode(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
 		    «FOR r : m.releases»
-		    	«r.timerMember»_period_ = positive(«str(context.periodParameter(r))», this->declare_parameter<std::int64_t>(«str(context.periodParameter(r))», «r.periodNs»));
+		    	«r.timerMember»_period_ = «declare(context.periodParameter(r))»;
 		    «ENDFOR»
 		    «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
-		    	«f.lastRunMember»_interval_ = positive(«str(f.method + ".min_interval_ns")», this->declare_parameter<std::int64_t>(«str(f.method + ".min_interval_ns")», «f.minIntervalNs»));
+		    	«f.lastRunMember»_interval_ = «declare(context.intervalParameter(f))»;
 		    «ENDFOR»
 		    «IF m.reactive && m.reactionIntervalNs > 0»
-		    	reaction_interval_ = positive("reaction.min_interval_ns", this->declare_parameter<std::int64_t>("reaction.min_interval_ns", «m.reactionIntervalNs»));
+		    	reaction_interval_ = «declare(context.reactionParameter(m))»;
 		    «ENDIF»
 		    «FOR l : context.linksOf(m)»
-		    	link_«l.stem»_duration_ = positive(«str(l.stem + ".duration_ns")», this->declare_parameter<std::int64_t>(«str(l.stem + ".duration_ns")», «l.durationNs»));
+		    	link_«l.stem»_duration_ = «declare(context.durationParameter(l))»;
 		    «ENDFOR»
 		    rclcpp::PublisherOptions publisher_options;
 		    publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
@@ -181,11 +183,14 @@ class Ros2NodeTemplate extends Ros2Template {
 		  }
 
 		 private:
-		  static std::int64_t positive(const char* parameter, std::int64_t value) {
-		    if (value <= 0) {
-		      throw std::invalid_argument(std::string("parameter ") + parameter + " must be a positive number of nanoseconds");
+		  /** A time parameter in nanoseconds: from 1 ns to 2^60 ns, as the generated code counts time. */
+		  static std::int64_t nanoseconds(const char* parameter, double value, double unit_ns) {
+		    const double ns = value * unit_ns;
+		    if (!std::isfinite(ns) || !(ns >= 0.5) || ns > 1152921504606846976.0) {
+		      throw std::invalid_argument(std::string("parameter ") + parameter
+		                                  + " must be a positive time of at least 1 ns and at most 2^60 ns, in the unit its name ends with");
 		    }
-		    return value;
+		    return std::llround(ns);
 		  }
 
 		  /** Whether a subsumption link is active now (on the node's clock). */
@@ -290,4 +295,7 @@ class Ros2NodeTemplate extends Ros2Template {
 			«f.method»();
 		«ENDIF»
 	'''
+
+	/** Declares a time parameter, in its unit, and holds it in nanoseconds. */
+	def private declare(Ros2TimeParameter p) '''nanoseconds(«str(p.name)», this->declare_parameter<double>(«str(p.name)», «p.value»), «p.nanosPerUnit»)'''
 }

@@ -38,10 +38,17 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		Topics are relative, so `namespace:=...` isolates a second robot.«IF !rosNames.topicArguments.empty» The topics the model names
 		(«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»`«t.key»`«ENDFOR») take another name with a launch argument each
 		(«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»`«t.value»:=NAME`«ENDFOR»), in every node.«ENDIF» The model's periods, minimum
-		intervals and inhibitor/suppressor durations are node parameters (nanoseconds) with the model's
-		values as defaults; timers run on the node's clock, so `use_sim_time` works. Topics written by
-		modules that read sensors use the sensor data QoS (best effort), the others are reliable; both
-		can be overridden with `qos_overrides.<topic>.publisher|subscription.<policy>` parameters.
+		intervals and inhibitor/suppressor durations are node parameters in the model's units (the name
+		says which: `detect.period_ms`) with the model's values as defaults; timers run on the node's
+		clock, so `use_sim_time` works. Topics written by modules that read sensors use the sensor data
+		QoS (best effort), the others are reliable; both can be overridden with
+		`qos_overrides.<topic>.publisher|subscription.<policy>` parameters. Every parameter, with the
+		model's value, is in `«pkg»/config/«pkg».params.yaml`, which both launch files load
+		(`params_file:=PATH` loads another): edit it to tune the system without generating again (rebuild
+		or use `params_file:=` for the installed copy). Its values win over the model's. A QoS override
+		there names the topic as the model does; the launch files give it to the topic as remapped and
+		namespaced, the name ROS 2 looks the override up by. A file they cannot take (not YAML, a time
+		that is not a positive number, a time a node no longer has) is refused with its line.
 		«IF rosNames.containers.exists[processor !== null]»
 
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
@@ -66,7 +73,7 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
 		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`
 		(included by its `CMakeLists.txt`; the interfaces package's also lists interface files of your
-		own, `.srv`, `.action` or more `.msg`, in `RSAML_USER_INTERFACES`) and `«Ros2Manifest.FILE»`
+		own, `.srv`, `.action` or more `.msg`, in `RSAML_USER_INTERFACES`), `config/«pkg».params.yaml` and `«Ros2Manifest.FILE»`
 		(version, maintainers, licences, URLs, authors and further dependencies, merged into
 		`package.xml`). Types of other packages used in a generated `.msg` file are found and declared
 		when you generate again.

@@ -27,7 +27,7 @@ import org.rsaml.generator.spi.TargetGenerator
  * Same generation gap as the C++ target: gen/ and the build
  * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
  * Each output file has its template: Ros2NodeTemplate, Ros2ComponentTemplate, Ros2CmakeTemplate,
- * Ros2PackageTemplate, Ros2LaunchTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
+ * Ros2PackageTemplate, Ros2LaunchTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
  */
 class Ros2Target implements TargetGenerator {
 
@@ -42,12 +42,13 @@ class Ros2Target implements TargetGenerator {
 	override generate(ExecutionPlan plan, OutputContext output) {
 		val warnings = <String>newArrayList
 		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace")
-		val files = new Ros2Files(new Ros2Context(plan, project, output))
+		val context = new Ros2Context(plan, project, output)
+		val files = new Ros2Files(context)
 		for (cycle : plan.reactiveCycles) {
 			warnings += "modules " + cycle.map[qualifiedName].join(" -> ")
 				+ " react to each other's data in a cycle; ROS 2 messages carry no wave, so each of them reacts at most once per "
 				+ cycle.map[files.cycleBound(it)].join(", ")
-				+ " (the shortest period that feeds the cycle; parameter reaction.min_interval_ns)"
+				+ " (the shortest period that feeds the cycle; parameter " + cycle.map[context.reactionParameter(it).name].toSet.join(", ") + ")"
 		}
 		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
@@ -84,6 +85,8 @@ class Ros2Files {
 		files += GeneratedFile.user(pkg + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(pkg))
 		files += GeneratedFile.generated(pkg + "/CMakeLists.txt", cmake.cmake)
 		files += GeneratedFile.user(pkg + "/user.cmake", cmake.userCmake)
+		val params = new Ros2ParamsTemplate(context)
+		files += GeneratedFile.user(params.path, params.params)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launch.composed)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launch.processes)
 		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {

@@ -1,0 +1,75 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.internal.ros2
+
+import java.util.LinkedHashSet
+import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.PlannedPort
+import org.rsaml.generator.internal.Templates
+
+/**
+ * config/&lt;pkg&gt;.params.yaml, the architect's (created once, never overwritten): every parameter
+ * of every node with the model's value, times in the model's units and each topic's QoS, in the
+ * format of ROS 2's parameter files. Both launch files load it; a node takes the model's value for
+ * what the file does not set.
+ */
+class Ros2ParamsTemplate extends Ros2Template {
+
+	val extension Ros2Names rosNames
+
+	new(Ros2Context context) {
+		super(context)
+		this.rosNames = context.rosNames
+	}
+
+	/** The file's path in the output. */
+	def path() {
+		pkg + "/config/" + pkg + ".params.yaml"
+	}
+
+	def params() '''
+		# Parameters of the nodes of the RsaML architecture '«doc(plan.name)»'. «Templates.USER_OWNED»
+		# Both launch files load it (params_file:=PATH loads another file); a node takes the model's value
+		# for a parameter this file does not set, so a value here overrides the model's.
+		# Times are in the model's units, as each name ends: _ns, _us, _ms or _s.
+		# QoS of a topic: qos_overrides.TOPIC.publisher.POLICY or qos_overrides.TOPIC.subscription.POLICY
+		# (reliability: reliable or best_effort; history: keep_last or keep_all; depth: a number), TOPIC
+		# as the model names it: the launch files give the override to the topic's name as remapped
+		# (a <topic>_topic:=NAME argument) and resolve a relative one in namespace:=NS, as ROS 2 names
+		# the parameter after the resolved topic (/NS/NAME).
+		«FOR m : plan.modules»
+			«m.rosNode»:
+			  ros__parameters:
+			    # Module «doc(m.qualifiedName)»: «doc(m.timing)»
+			    «FOR p : context.timeParameters(m)»
+			    	«p.name»: «p.value»
+			    «ENDFOR»
+			    «FOR q : qosOf(m)»
+			    	«q»
+			    «ENDFOR»
+		«ENDFOR»
+	'''
+
+	/** The QoS the node's publishers and subscriptions are created with, as override parameters. */
+	def private qosOf(PlannedModule m) {
+		val lines = new LinkedHashSet<String>
+		for (p : m.outputs) {
+			lines += qos(p, "publisher")
+		}
+		for (p : m.inputs) {
+			lines += qos(p, "subscription")
+		}
+		for (l : context.linksOf(m)) {
+			if (!m.inputs.exists[topic == l.trigger.topic]) {
+				lines += qos(l.trigger, "subscription")
+			}
+		}
+		lines
+	}
+
+	def private qos(PlannedPort p, String entity) {
+		p.qosPolicies.entrySet.map["qos_overrides." + p.topic + "." + entity + "." + key + ": " + value]
+	}
+}
