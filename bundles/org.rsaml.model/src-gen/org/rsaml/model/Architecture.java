@@ -21,6 +21,7 @@ import org.eclipse.emf.common.util.EList;
  * <ul>
  *   <li>{@link org.rsaml.model.Architecture#getCategory <em>Category</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getDeclaredLayers <em>Declared Layers</em>}</li>
+ *   <li>{@link org.rsaml.model.Architecture#getLifecycle <em>Lifecycle</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getLayers <em>Layers</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getConnections <em>Connections</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getSensors <em>Sensors</em>}</li>
@@ -93,6 +94,35 @@ public interface Architecture extends NamedElement {
 	 * @generated
 	 */
 	void setDeclaredLayers(int value);
+
+	/**
+	 * Returns the value of the '<em><b>Lifecycle</b></em>' attribute.
+	 * The default value is <code>"plain"</code>.
+	 * The literals are from the enumeration {@link org.rsaml.model.NodeLifecycle}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * Whether the modules become plain ROS 2 nodes (the default) or managed ones (rclcpp_lifecycle nodes that the launch files configure and activate); a module may choose otherwise with its own lifecycle. The C++ target has no node lifecycle and ignores it.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Lifecycle</em>' attribute.
+	 * @see org.rsaml.model.NodeLifecycle
+	 * @see #setLifecycle(NodeLifecycle)
+	 * @see org.rsaml.model.RsamlPackage#getArchitecture_Lifecycle()
+	 * @model default="plain"
+	 * @generated
+	 */
+	NodeLifecycle getLifecycle();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Architecture#getLifecycle <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Lifecycle</em>' attribute.
+	 * @see org.rsaml.model.NodeLifecycle
+	 * @see #getLifecycle()
+	 * @generated
+	 */
+	void setLifecycle(NodeLifecycle value);
 
 	/**
 	 * Returns the value of the '<em><b>Layers</b></em>' containment reference list.

@@ -26,6 +26,7 @@ import org.eclipse.emf.common.util.EList;
  *   <li>{@link org.rsaml.model.Module#getSuppressors <em>Suppressors</em>}</li>
  *   <li>{@link org.rsaml.model.Module#getSensors <em>Sensors</em>}</li>
  *   <li>{@link org.rsaml.model.Module#getActuators <em>Actuators</em>}</li>
+ *   <li>{@link org.rsaml.model.Module#getLifecycle <em>Lifecycle</em>}</li>
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getModule()
@@ -162,5 +163,71 @@ public interface Module extends RealTimeElement {
 	 * @generated
 	 */
 	EList<Actuator> getActuators();
+
+	/**
+	 * Returns the value of the '<em><b>Lifecycle</b></em>' attribute.
+	 * The literals are from the enumeration {@link org.rsaml.model.NodeLifecycle}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * This module's choice of a plain or a managed ROS 2 node, when it differs from its architecture's lifecycle; unset, the module follows the architecture.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Lifecycle</em>' attribute.
+	 * @see org.rsaml.model.NodeLifecycle
+	 * @see #isSetLifecycle()
+	 * @see #unsetLifecycle()
+	 * @see #setLifecycle(NodeLifecycle)
+	 * @see org.rsaml.model.RsamlPackage#getModule_Lifecycle()
+	 * @model unsettable="true"
+	 * @generated
+	 */
+	NodeLifecycle getLifecycle();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Module#getLifecycle <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Lifecycle</em>' attribute.
+	 * @see org.rsaml.model.NodeLifecycle
+	 * @see #isSetLifecycle()
+	 * @see #unsetLifecycle()
+	 * @see #getLifecycle()
+	 * @generated
+	 */
+	void setLifecycle(NodeLifecycle value);
+
+	/**
+	 * Unsets the value of the '{@link org.rsaml.model.Module#getLifecycle <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #isSetLifecycle()
+	 * @see #getLifecycle()
+	 * @see #setLifecycle(NodeLifecycle)
+	 * @generated
+	 */
+	void unsetLifecycle();
+
+	/**
+	 * Returns whether the value of the '{@link org.rsaml.model.Module#getLifecycle <em>Lifecycle</em>}' attribute is set.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return whether the value of the '<em>Lifecycle</em>' attribute is set.
+	 * @see #unsetLifecycle()
+	 * @see #getLifecycle()
+	 * @see #setLifecycle(NodeLifecycle)
+	 * @generated
+	 */
+	boolean isSetLifecycle();
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * The lifecycle this module's node has: its own lifecycle when it sets one, else its architecture's.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	NodeLifecycle effectiveLifecycle();
 
 } // Module

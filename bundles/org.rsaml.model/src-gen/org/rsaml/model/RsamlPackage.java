@@ -392,13 +392,22 @@ public interface RsamlPackage extends EPackage {
 	int ARCHITECTURE__DECLARED_LAYERS = NAMED_ELEMENT_FEATURE_COUNT + 1;
 
 	/**
+	 * The feature id for the '<em><b>Lifecycle</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ARCHITECTURE__LIFECYCLE = NAMED_ELEMENT_FEATURE_COUNT + 2;
+
+	/**
 	 * The feature id for the '<em><b>Layers</b></em>' containment reference list.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__LAYERS = NAMED_ELEMENT_FEATURE_COUNT + 2;
+	int ARCHITECTURE__LAYERS = NAMED_ELEMENT_FEATURE_COUNT + 3;
 
 	/**
 	 * The feature id for the '<em><b>Connections</b></em>' containment reference list.
@@ -407,7 +416,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__CONNECTIONS = NAMED_ELEMENT_FEATURE_COUNT + 3;
+	int ARCHITECTURE__CONNECTIONS = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
 	 * The feature id for the '<em><b>Sensors</b></em>' containment reference list.
@@ -416,7 +425,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__SENSORS = NAMED_ELEMENT_FEATURE_COUNT + 4;
+	int ARCHITECTURE__SENSORS = NAMED_ELEMENT_FEATURE_COUNT + 5;
 
 	/**
 	 * The feature id for the '<em><b>Actuators</b></em>' containment reference list.
@@ -425,7 +434,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__ACTUATORS = NAMED_ELEMENT_FEATURE_COUNT + 5;
+	int ARCHITECTURE__ACTUATORS = NAMED_ELEMENT_FEATURE_COUNT + 6;
 
 	/**
 	 * The feature id for the '<em><b>Missions</b></em>' containment reference list.
@@ -434,7 +443,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__MISSIONS = NAMED_ELEMENT_FEATURE_COUNT + 6;
+	int ARCHITECTURE__MISSIONS = NAMED_ELEMENT_FEATURE_COUNT + 7;
 
 	/**
 	 * The feature id for the '<em><b>Supervisors</b></em>' containment reference list.
@@ -443,7 +452,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__SUPERVISORS = NAMED_ELEMENT_FEATURE_COUNT + 7;
+	int ARCHITECTURE__SUPERVISORS = NAMED_ELEMENT_FEATURE_COUNT + 8;
 
 	/**
 	 * The feature id for the '<em><b>Orders</b></em>' containment reference list.
@@ -452,7 +461,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__ORDERS = NAMED_ELEMENT_FEATURE_COUNT + 8;
+	int ARCHITECTURE__ORDERS = NAMED_ELEMENT_FEATURE_COUNT + 9;
 
 	/**
 	 * The feature id for the '<em><b>Databases</b></em>' containment reference list.
@@ -461,7 +470,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__DATABASES = NAMED_ELEMENT_FEATURE_COUNT + 9;
+	int ARCHITECTURE__DATABASES = NAMED_ELEMENT_FEATURE_COUNT + 10;
 
 	/**
 	 * The feature id for the '<em><b>Processors</b></em>' containment reference list.
@@ -470,7 +479,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__PROCESSORS = NAMED_ELEMENT_FEATURE_COUNT + 10;
+	int ARCHITECTURE__PROCESSORS = NAMED_ELEMENT_FEATURE_COUNT + 11;
 
 	/**
 	 * The feature id for the '<em><b>Latency Requirements</b></em>' containment reference list.
@@ -479,7 +488,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__LATENCY_REQUIREMENTS = NAMED_ELEMENT_FEATURE_COUNT + 11;
+	int ARCHITECTURE__LATENCY_REQUIREMENTS = NAMED_ELEMENT_FEATURE_COUNT + 12;
 
 	/**
 	 * The number of structural features of the '<em>Architecture</em>' class.
@@ -488,7 +497,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 12;
+	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 13;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -790,13 +799,22 @@ public interface RsamlPackage extends EPackage {
 	int MODULE__ACTUATORS = REAL_TIME_ELEMENT_FEATURE_COUNT + 6;
 
 	/**
+	 * The feature id for the '<em><b>Lifecycle</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MODULE__LIFECYCLE = REAL_TIME_ELEMENT_FEATURE_COUNT + 7;
+
+	/**
 	 * The number of structural features of the '<em>Module</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int MODULE_FEATURE_COUNT = REAL_TIME_ELEMENT_FEATURE_COUNT + 7;
+	int MODULE_FEATURE_COUNT = REAL_TIME_ELEMENT_FEATURE_COUNT + 8;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -844,13 +862,22 @@ public interface RsamlPackage extends EPackage {
 	int MODULE___REPRESENTABLE_PERIOD__DOUBLE = REAL_TIME_ELEMENT___REPRESENTABLE_PERIOD__DOUBLE;
 
 	/**
+	 * The operation id for the '<em>Effective Lifecycle</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int MODULE___EFFECTIVE_LIFECYCLE = REAL_TIME_ELEMENT_OPERATION_COUNT + 0;
+
+	/**
 	 * The number of operations of the '<em>Module</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int MODULE_OPERATION_COUNT = REAL_TIME_ELEMENT_OPERATION_COUNT + 0;
+	int MODULE_OPERATION_COUNT = REAL_TIME_ELEMENT_OPERATION_COUNT + 1;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.FunctionImpl <em>Function</em>}' class.
@@ -3700,6 +3727,16 @@ public interface RsamlPackage extends EPackage {
 	int DATA_TYPE = 35;
 
 	/**
+	 * The meta object id for the '{@link org.rsaml.model.NodeLifecycle <em>Node Lifecycle</em>}' enum.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see org.rsaml.model.NodeLifecycle
+	 * @see org.rsaml.model.impl.RsamlPackageImpl#getNodeLifecycle()
+	 * @generated
+	 */
+	int NODE_LIFECYCLE = 36;
+
+	/**
 	 * The meta object id for the '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}' enum.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -3707,7 +3744,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getLatencyKind()
 	 * @generated
 	 */
-	int LATENCY_KIND = 36;
+	int LATENCY_KIND = 37;
 
 
 	/**
@@ -3909,6 +3946,17 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EAttribute getArchitecture_DeclaredLayers();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Architecture#getLifecycle <em>Lifecycle</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Lifecycle</em>'.
+	 * @see org.rsaml.model.Architecture#getLifecycle()
+	 * @see #getArchitecture()
+	 * @generated
+	 */
+	EAttribute getArchitecture_Lifecycle();
 
 	/**
 	 * Returns the meta object for the containment reference list '{@link org.rsaml.model.Architecture#getLayers <em>Layers</em>}'.
@@ -4160,6 +4208,27 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EReference getModule_Actuators();
+
+	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Module#getLifecycle <em>Lifecycle</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Lifecycle</em>'.
+	 * @see org.rsaml.model.Module#getLifecycle()
+	 * @see #getModule()
+	 * @generated
+	 */
+	EAttribute getModule_Lifecycle();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.Module#effectiveLifecycle() <em>Effective Lifecycle</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Effective Lifecycle</em>' operation.
+	 * @see org.rsaml.model.Module#effectiveLifecycle()
+	 * @generated
+	 */
+	EOperation getModule__EffectiveLifecycle();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.Function <em>Function</em>}'.
@@ -5197,6 +5266,16 @@ public interface RsamlPackage extends EPackage {
 	EEnum getDataType();
 
 	/**
+	 * Returns the meta object for enum '{@link org.rsaml.model.NodeLifecycle <em>Node Lifecycle</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for enum '<em>Node Lifecycle</em>'.
+	 * @see org.rsaml.model.NodeLifecycle
+	 * @generated
+	 */
+	EEnum getNodeLifecycle();
+
+	/**
 	 * Returns the meta object for enum '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -5390,6 +5469,14 @@ public interface RsamlPackage extends EPackage {
 		EAttribute ARCHITECTURE__DECLARED_LAYERS = eINSTANCE.getArchitecture_DeclaredLayers();
 
 		/**
+		 * The meta object literal for the '<em><b>Lifecycle</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute ARCHITECTURE__LIFECYCLE = eINSTANCE.getArchitecture_Lifecycle();
+
+		/**
 		 * The meta object literal for the '<em><b>Layers</b></em>' containment reference list feature.
 		 * <!-- begin-user-doc -->
 		 * <!-- end-user-doc -->
@@ -5576,6 +5663,22 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EReference MODULE__ACTUATORS = eINSTANCE.getModule_Actuators();
+
+		/**
+		 * The meta object literal for the '<em><b>Lifecycle</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute MODULE__LIFECYCLE = eINSTANCE.getModule_Lifecycle();
+
+		/**
+		 * The meta object literal for the '<em><b>Effective Lifecycle</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation MODULE___EFFECTIVE_LIFECYCLE = eINSTANCE.getModule__EffectiveLifecycle();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.FunctionImpl <em>Function</em>}' class.
@@ -6412,6 +6515,16 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EEnum DATA_TYPE = eINSTANCE.getDataType();
+
+		/**
+		 * The meta object literal for the '{@link org.rsaml.model.NodeLifecycle <em>Node Lifecycle</em>}' enum.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @see org.rsaml.model.NodeLifecycle
+		 * @see org.rsaml.model.impl.RsamlPackageImpl#getNodeLifecycle()
+		 * @generated
+		 */
+		EEnum NODE_LIFECYCLE = eINSTANCE.getNodeLifecycle();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}' enum.

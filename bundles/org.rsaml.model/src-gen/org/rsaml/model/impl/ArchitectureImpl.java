@@ -28,6 +28,7 @@ import org.rsaml.model.Database;
 import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Order;
 import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlPackage;
@@ -44,6 +45,7 @@ import org.rsaml.model.Supervisor;
  * <ul>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getCategory <em>Category</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getDeclaredLayers <em>Declared Layers</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getLifecycle <em>Lifecycle</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getLayers <em>Layers</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getConnections <em>Connections</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getSensors <em>Sensors</em>}</li>
@@ -98,6 +100,26 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 	 * @ordered
 	 */
 	protected int declaredLayers = DECLARED_LAYERS_EDEFAULT;
+
+	/**
+	 * The default value of the '{@link #getLifecycle() <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getLifecycle()
+	 * @generated
+	 * @ordered
+	 */
+	protected static final NodeLifecycle LIFECYCLE_EDEFAULT = NodeLifecycle.PLAIN;
+
+	/**
+	 * The cached value of the '{@link #getLifecycle() <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getLifecycle()
+	 * @generated
+	 * @ordered
+	 */
+	protected NodeLifecycle lifecycle = LIFECYCLE_EDEFAULT;
 
 	/**
 	 * The cached value of the '{@link #getLayers() <em>Layers</em>}' containment reference list.
@@ -262,6 +284,29 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 		declaredLayers = newDeclaredLayers;
 		if (eNotificationRequired())
 			eNotify(new ENotificationImpl(this, Notification.SET, RsamlPackage.ARCHITECTURE__DECLARED_LAYERS, oldDeclaredLayers, declaredLayers));
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public NodeLifecycle getLifecycle() {
+		return lifecycle;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public void setLifecycle(NodeLifecycle newLifecycle) {
+		NodeLifecycle oldLifecycle = lifecycle;
+		lifecycle = newLifecycle == null ? LIFECYCLE_EDEFAULT : newLifecycle;
+		if (eNotificationRequired())
+			eNotify(new ENotificationImpl(this, Notification.SET, RsamlPackage.ARCHITECTURE__LIFECYCLE, oldLifecycle, lifecycle));
 	}
 
 	/**
@@ -467,6 +512,8 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return getCategory();
 			case RsamlPackage.ARCHITECTURE__DECLARED_LAYERS:
 				return getDeclaredLayers();
+			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
+				return getLifecycle();
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				return getLayers();
 			case RsamlPackage.ARCHITECTURE__CONNECTIONS:
@@ -505,6 +552,9 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return;
 			case RsamlPackage.ARCHITECTURE__DECLARED_LAYERS:
 				setDeclaredLayers((Integer)newValue);
+				return;
+			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
+				setLifecycle((NodeLifecycle)newValue);
 				return;
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				getLayers().clear();
@@ -564,6 +614,9 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 			case RsamlPackage.ARCHITECTURE__DECLARED_LAYERS:
 				setDeclaredLayers(DECLARED_LAYERS_EDEFAULT);
 				return;
+			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
+				setLifecycle(LIFECYCLE_EDEFAULT);
+				return;
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				getLayers().clear();
 				return;
@@ -610,6 +663,8 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return category != CATEGORY_EDEFAULT;
 			case RsamlPackage.ARCHITECTURE__DECLARED_LAYERS:
 				return declaredLayers != DECLARED_LAYERS_EDEFAULT;
+			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
+				return lifecycle != LIFECYCLE_EDEFAULT;
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				return layers != null && !layers.isEmpty();
 			case RsamlPackage.ARCHITECTURE__CONNECTIONS:
@@ -648,6 +703,8 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 		result.append(category);
 		result.append(", declaredLayers: ");
 		result.append(declaredLayers);
+		result.append(", lifecycle: ");
+		result.append(lifecycle);
 		result.append(')');
 		return result.toString();
 	}

@@ -4,6 +4,8 @@
  */
 package org.rsaml.model.impl;
 
+import java.lang.reflect.InvocationTargetException;
+
 import java.util.Collection;
 
 import org.eclipse.emf.common.notify.Notification;
@@ -25,6 +27,7 @@ import org.rsaml.model.Actuator;
 import org.rsaml.model.Function;
 import org.rsaml.model.Inhibitor;
 import org.rsaml.model.Layer;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Port;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.Sensor;
@@ -45,6 +48,7 @@ import org.rsaml.model.Suppressor;
  *   <li>{@link org.rsaml.model.impl.ModuleImpl#getSuppressors <em>Suppressors</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ModuleImpl#getSensors <em>Sensors</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ModuleImpl#getActuators <em>Actuators</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.ModuleImpl#getLifecycle <em>Lifecycle</em>}</li>
  * </ul>
  *
  * @generated
@@ -109,6 +113,35 @@ public class ModuleImpl extends RealTimeElementImpl implements org.rsaml.model.M
 	 * @ordered
 	 */
 	protected EList<Actuator> actuators;
+
+	/**
+	 * The default value of the '{@link #getLifecycle() <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getLifecycle()
+	 * @generated
+	 * @ordered
+	 */
+	protected static final NodeLifecycle LIFECYCLE_EDEFAULT = NodeLifecycle.PLAIN;
+
+	/**
+	 * The cached value of the '{@link #getLifecycle() <em>Lifecycle</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getLifecycle()
+	 * @generated
+	 * @ordered
+	 */
+	protected NodeLifecycle lifecycle = LIFECYCLE_EDEFAULT;
+
+	/**
+	 * This is true if the Lifecycle attribute has been set.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	protected boolean lifecycleESet;
 
 	/**
 	 * <!-- begin-user-doc -->
@@ -255,6 +288,66 @@ public class ModuleImpl extends RealTimeElementImpl implements org.rsaml.model.M
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	@Override
+	public NodeLifecycle getLifecycle() {
+		return lifecycle;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public void setLifecycle(NodeLifecycle newLifecycle) {
+		NodeLifecycle oldLifecycle = lifecycle;
+		lifecycle = newLifecycle == null ? LIFECYCLE_EDEFAULT : newLifecycle;
+		boolean oldLifecycleESet = lifecycleESet;
+		lifecycleESet = true;
+		if (eNotificationRequired())
+			eNotify(new ENotificationImpl(this, Notification.SET, RsamlPackage.MODULE__LIFECYCLE, oldLifecycle, lifecycle, !oldLifecycleESet));
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public void unsetLifecycle() {
+		NodeLifecycle oldLifecycle = lifecycle;
+		boolean oldLifecycleESet = lifecycleESet;
+		lifecycle = LIFECYCLE_EDEFAULT;
+		lifecycleESet = false;
+		if (eNotificationRequired())
+			eNotify(new ENotificationImpl(this, Notification.UNSET, RsamlPackage.MODULE__LIFECYCLE, oldLifecycle, LIFECYCLE_EDEFAULT, oldLifecycleESet));
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public boolean isSetLifecycle() {
+		return lifecycleESet;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public NodeLifecycle effectiveLifecycle() {
+		return isSetLifecycle() ? getLifecycle() : getLayer() != null && getLayer().getArchitecture() != null ? getLayer().getArchitecture().getLifecycle() : NodeLifecycle.PLAIN;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	@SuppressWarnings("unchecked")
 	@Override
 	public NotificationChain eInverseAdd(InternalEObject otherEnd, int featureID, NotificationChain msgs) {
@@ -341,6 +434,8 @@ public class ModuleImpl extends RealTimeElementImpl implements org.rsaml.model.M
 				return getSensors();
 			case RsamlPackage.MODULE__ACTUATORS:
 				return getActuators();
+			case RsamlPackage.MODULE__LIFECYCLE:
+				return getLifecycle();
 		}
 		return super.eGet(featureID, resolve, coreType);
 	}
@@ -381,6 +476,9 @@ public class ModuleImpl extends RealTimeElementImpl implements org.rsaml.model.M
 				getActuators().clear();
 				getActuators().addAll((Collection<? extends Actuator>)newValue);
 				return;
+			case RsamlPackage.MODULE__LIFECYCLE:
+				setLifecycle((NodeLifecycle)newValue);
+				return;
 		}
 		super.eSet(featureID, newValue);
 	}
@@ -414,6 +512,9 @@ public class ModuleImpl extends RealTimeElementImpl implements org.rsaml.model.M
 			case RsamlPackage.MODULE__ACTUATORS:
 				getActuators().clear();
 				return;
+			case RsamlPackage.MODULE__LIFECYCLE:
+				unsetLifecycle();
+				return;
 		}
 		super.eUnset(featureID);
 	}
@@ -440,8 +541,40 @@ public class ModuleImpl extends RealTimeElementImpl implements org.rsaml.model.M
 				return sensors != null && !sensors.isEmpty();
 			case RsamlPackage.MODULE__ACTUATORS:
 				return actuators != null && !actuators.isEmpty();
+			case RsamlPackage.MODULE__LIFECYCLE:
+				return isSetLifecycle();
 		}
 		return super.eIsSet(featureID);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public Object eInvoke(int operationID, EList<?> arguments) throws InvocationTargetException {
+		switch (operationID) {
+			case RsamlPackage.MODULE___EFFECTIVE_LIFECYCLE:
+				return effectiveLifecycle();
+		}
+		return super.eInvoke(operationID, arguments);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public String toString() {
+		if (eIsProxy()) return super.toString();
+
+		StringBuilder result = new StringBuilder(super.toString());
+		result.append(" (lifecycle: ");
+		if (lifecycleESet) result.append(lifecycle); else result.append("<unset>");
+		result.append(')');
+		return result.toString();
 	}
 
 } //ModuleImpl

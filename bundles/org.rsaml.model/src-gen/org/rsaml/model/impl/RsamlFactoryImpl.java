@@ -32,6 +32,7 @@ import org.rsaml.model.LatencyKind;
 import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
@@ -140,6 +141,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 				return createSchedulingPolicyFromString(eDataType, initialValue);
 			case RsamlPackage.DATA_TYPE:
 				return createDataTypeFromString(eDataType, initialValue);
+			case RsamlPackage.NODE_LIFECYCLE:
+				return createNodeLifecycleFromString(eDataType, initialValue);
 			case RsamlPackage.LATENCY_KIND:
 				return createLatencyKindFromString(eDataType, initialValue);
 			default:
@@ -169,6 +172,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 				return convertSchedulingPolicyToString(eDataType, instanceValue);
 			case RsamlPackage.DATA_TYPE:
 				return convertDataTypeToString(eDataType, instanceValue);
+			case RsamlPackage.NODE_LIFECYCLE:
+				return convertNodeLifecycleToString(eDataType, instanceValue);
 			case RsamlPackage.LATENCY_KIND:
 				return convertLatencyKindToString(eDataType, instanceValue);
 			default:
@@ -566,6 +571,26 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 	 * @generated
 	 */
 	public String convertDataTypeToString(EDataType eDataType, Object instanceValue) {
+		return instanceValue == null ? null : instanceValue.toString();
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public NodeLifecycle createNodeLifecycleFromString(EDataType eDataType, String initialValue) {
+		NodeLifecycle result = NodeLifecycle.get(initialValue);
+		if (result == null) throw new IllegalArgumentException("The value '" + initialValue + "' is not a valid enumerator of '" + eDataType.getName() + "'");
+		return result;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public String convertNodeLifecycleToString(EDataType eDataType, Object instanceValue) {
 		return instanceValue == null ? null : instanceValue.toString();
 	}
 

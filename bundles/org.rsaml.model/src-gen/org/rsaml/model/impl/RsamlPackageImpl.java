@@ -34,6 +34,7 @@ import org.rsaml.model.LatencyRequirement;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.NamedElement;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Plan;
@@ -316,6 +317,13 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	private EEnum nodeLifecycleEEnum = null;
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	private EEnum latencyKindEEnum = null;
 
 	/**
@@ -574,8 +582,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Layers() {
-		return (EReference)architectureEClass.getEStructuralFeatures().get(2);
+	public EAttribute getArchitecture_Lifecycle() {
+		return (EAttribute)architectureEClass.getEStructuralFeatures().get(2);
 	}
 
 	/**
@@ -584,7 +592,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Connections() {
+	public EReference getArchitecture_Layers() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(3);
 	}
 
@@ -594,7 +602,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Sensors() {
+	public EReference getArchitecture_Connections() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(4);
 	}
 
@@ -604,7 +612,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Actuators() {
+	public EReference getArchitecture_Sensors() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(5);
 	}
 
@@ -614,7 +622,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Missions() {
+	public EReference getArchitecture_Actuators() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(6);
 	}
 
@@ -624,7 +632,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Supervisors() {
+	public EReference getArchitecture_Missions() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(7);
 	}
 
@@ -634,7 +642,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Orders() {
+	public EReference getArchitecture_Supervisors() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(8);
 	}
 
@@ -644,7 +652,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Databases() {
+	public EReference getArchitecture_Orders() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(9);
 	}
 
@@ -654,7 +662,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Processors() {
+	public EReference getArchitecture_Databases() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(10);
 	}
 
@@ -664,8 +672,18 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_LatencyRequirements() {
+	public EReference getArchitecture_Processors() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(11);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getArchitecture_LatencyRequirements() {
+		return (EReference)architectureEClass.getEStructuralFeatures().get(12);
 	}
 
 	/**
@@ -796,6 +814,26 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	@Override
 	public EReference getModule_Actuators() {
 		return (EReference)moduleEClass.getEStructuralFeatures().get(6);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EAttribute getModule_Lifecycle() {
+		return (EAttribute)moduleEClass.getEStructuralFeatures().get(7);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EOperation getModule__EffectiveLifecycle() {
+		return moduleEClass.getEOperations().get(0);
 	}
 
 	/**
@@ -1774,6 +1812,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EEnum getNodeLifecycle() {
+		return nodeLifecycleEEnum;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EEnum getLatencyKind() {
 		return latencyKindEEnum;
 	}
@@ -1829,6 +1877,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		architectureEClass = createEClass(ARCHITECTURE);
 		createEAttribute(architectureEClass, ARCHITECTURE__CATEGORY);
 		createEAttribute(architectureEClass, ARCHITECTURE__DECLARED_LAYERS);
+		createEAttribute(architectureEClass, ARCHITECTURE__LIFECYCLE);
 		createEReference(architectureEClass, ARCHITECTURE__LAYERS);
 		createEReference(architectureEClass, ARCHITECTURE__CONNECTIONS);
 		createEReference(architectureEClass, ARCHITECTURE__SENSORS);
@@ -1854,6 +1903,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEReference(moduleEClass, MODULE__SUPPRESSORS);
 		createEReference(moduleEClass, MODULE__SENSORS);
 		createEReference(moduleEClass, MODULE__ACTUATORS);
+		createEAttribute(moduleEClass, MODULE__LIFECYCLE);
+		createEOperation(moduleEClass, MODULE___EFFECTIVE_LIFECYCLE);
 
 		functionEClass = createEClass(FUNCTION);
 		createEReference(functionEClass, FUNCTION__MODULE);
@@ -1976,6 +2027,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		synchronisationTypeEEnum = createEEnum(SYNCHRONISATION_TYPE);
 		schedulingPolicyEEnum = createEEnum(SCHEDULING_POLICY);
 		dataTypeEEnum = createEEnum(DATA_TYPE);
+		nodeLifecycleEEnum = createEEnum(NODE_LIFECYCLE);
 		latencyKindEEnum = createEEnum(LATENCY_KIND);
 	}
 
@@ -2074,6 +2126,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEClass(architectureEClass, Architecture.class, "Architecture", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEAttribute(getArchitecture_Category(), this.getArchitectureCategory(), "category", "hybrid", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getArchitecture_DeclaredLayers(), ecorePackage.getEInt(), "declaredLayers", "0", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getArchitecture_Lifecycle(), this.getNodeLifecycle(), "lifecycle", "plain", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getArchitecture_Layers(), this.getLayer(), this.getLayer_Architecture(), "layers", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		getArchitecture_Layers().getEKeys().add(this.getNamedElement_Name());
 		initEReference(getArchitecture_Connections(), this.getConnection(), this.getConnection_Architecture(), "connections", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2113,6 +2166,9 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		getModule_Suppressors().getEKeys().add(this.getNamedElement_Name());
 		initEReference(getModule_Sensors(), this.getSensor(), this.getSensor_Modules(), "sensors", null, 0, -1, org.rsaml.model.Module.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getModule_Actuators(), this.getActuator(), this.getActuator_Modules(), "actuators", null, 0, -1, org.rsaml.model.Module.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getModule_Lifecycle(), this.getNodeLifecycle(), "lifecycle", null, 0, 1, org.rsaml.model.Module.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+
+		initEOperation(getModule__EffectiveLifecycle(), this.getNodeLifecycle(), "effectiveLifecycle", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		initEClass(functionEClass, Function.class, "Function", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getFunction_Module(), this.getModule(), this.getModule_Functions(), "module", null, 0, 1, Function.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2277,6 +2333,10 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		addEEnumLiteral(dataTypeEEnum, DataType.ALPHANUMERIC);
 		addEEnumLiteral(dataTypeEEnum, DataType.BOOLEAN);
 		addEEnumLiteral(dataTypeEEnum, DataType.STRUCTURED);
+
+		initEEnum(nodeLifecycleEEnum, NodeLifecycle.class, "NodeLifecycle");
+		addEEnumLiteral(nodeLifecycleEEnum, NodeLifecycle.PLAIN);
+		addEEnumLiteral(nodeLifecycleEEnum, NodeLifecycle.MANAGED);
 
 		initEEnum(latencyKindEEnum, LatencyKind.class, "LatencyKind");
 		addEEnumLiteral(latencyKindEEnum, LatencyKind.REACTION_TIME);

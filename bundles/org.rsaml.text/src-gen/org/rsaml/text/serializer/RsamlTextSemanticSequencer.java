@@ -218,6 +218,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 *         (
 	 *             category=ArchitectureCategory | 
 	 *             declaredLayers=Integer | 
+	 *             lifecycle=NodeLifecycle | 
 	 *             layers+=Layer | 
 	 *             connections+=Connection | 
 	 *             sensors+=Sensor | 
@@ -408,6 +409,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 *                 timeUnit=TimeUnit | 
 	 *                 type=ElementType | 
 	 *                 execType=ExecutionType | 
+	 *                 lifecycle=NodeLifecycle | 
 	 *                 functions+=Function | 
 	 *                 ports+=Port | 
 	 *                 inhibitors+=Inhibitor | 

@@ -43,26 +43,30 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cDeclaredLayersKeyword_4_2_0 = (Keyword)cGroup_4_2.eContents().get(0);
 		private final Assignment cDeclaredLayersAssignment_4_2_1 = (Assignment)cGroup_4_2.eContents().get(1);
 		private final RuleCall cDeclaredLayersIntegerParserRuleCall_4_2_1_0 = (RuleCall)cDeclaredLayersAssignment_4_2_1.eContents().get(0);
-		private final Assignment cLayersAssignment_4_3 = (Assignment)cAlternatives_4.eContents().get(3);
-		private final RuleCall cLayersLayerParserRuleCall_4_3_0 = (RuleCall)cLayersAssignment_4_3.eContents().get(0);
-		private final Assignment cConnectionsAssignment_4_4 = (Assignment)cAlternatives_4.eContents().get(4);
-		private final RuleCall cConnectionsConnectionParserRuleCall_4_4_0 = (RuleCall)cConnectionsAssignment_4_4.eContents().get(0);
-		private final Assignment cSensorsAssignment_4_5 = (Assignment)cAlternatives_4.eContents().get(5);
-		private final RuleCall cSensorsSensorParserRuleCall_4_5_0 = (RuleCall)cSensorsAssignment_4_5.eContents().get(0);
-		private final Assignment cActuatorsAssignment_4_6 = (Assignment)cAlternatives_4.eContents().get(6);
-		private final RuleCall cActuatorsActuatorParserRuleCall_4_6_0 = (RuleCall)cActuatorsAssignment_4_6.eContents().get(0);
-		private final Assignment cMissionsAssignment_4_7 = (Assignment)cAlternatives_4.eContents().get(7);
-		private final RuleCall cMissionsMissionParserRuleCall_4_7_0 = (RuleCall)cMissionsAssignment_4_7.eContents().get(0);
-		private final Assignment cSupervisorsAssignment_4_8 = (Assignment)cAlternatives_4.eContents().get(8);
-		private final RuleCall cSupervisorsSupervisorParserRuleCall_4_8_0 = (RuleCall)cSupervisorsAssignment_4_8.eContents().get(0);
-		private final Assignment cOrdersAssignment_4_9 = (Assignment)cAlternatives_4.eContents().get(9);
-		private final RuleCall cOrdersOrderParserRuleCall_4_9_0 = (RuleCall)cOrdersAssignment_4_9.eContents().get(0);
-		private final Assignment cDatabasesAssignment_4_10 = (Assignment)cAlternatives_4.eContents().get(10);
-		private final RuleCall cDatabasesDatabaseParserRuleCall_4_10_0 = (RuleCall)cDatabasesAssignment_4_10.eContents().get(0);
-		private final Assignment cProcessorsAssignment_4_11 = (Assignment)cAlternatives_4.eContents().get(11);
-		private final RuleCall cProcessorsProcessorParserRuleCall_4_11_0 = (RuleCall)cProcessorsAssignment_4_11.eContents().get(0);
-		private final Assignment cLatencyRequirementsAssignment_4_12 = (Assignment)cAlternatives_4.eContents().get(12);
-		private final RuleCall cLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0 = (RuleCall)cLatencyRequirementsAssignment_4_12.eContents().get(0);
+		private final Group cGroup_4_3 = (Group)cAlternatives_4.eContents().get(3);
+		private final Keyword cLifecycleKeyword_4_3_0 = (Keyword)cGroup_4_3.eContents().get(0);
+		private final Assignment cLifecycleAssignment_4_3_1 = (Assignment)cGroup_4_3.eContents().get(1);
+		private final RuleCall cLifecycleNodeLifecycleEnumRuleCall_4_3_1_0 = (RuleCall)cLifecycleAssignment_4_3_1.eContents().get(0);
+		private final Assignment cLayersAssignment_4_4 = (Assignment)cAlternatives_4.eContents().get(4);
+		private final RuleCall cLayersLayerParserRuleCall_4_4_0 = (RuleCall)cLayersAssignment_4_4.eContents().get(0);
+		private final Assignment cConnectionsAssignment_4_5 = (Assignment)cAlternatives_4.eContents().get(5);
+		private final RuleCall cConnectionsConnectionParserRuleCall_4_5_0 = (RuleCall)cConnectionsAssignment_4_5.eContents().get(0);
+		private final Assignment cSensorsAssignment_4_6 = (Assignment)cAlternatives_4.eContents().get(6);
+		private final RuleCall cSensorsSensorParserRuleCall_4_6_0 = (RuleCall)cSensorsAssignment_4_6.eContents().get(0);
+		private final Assignment cActuatorsAssignment_4_7 = (Assignment)cAlternatives_4.eContents().get(7);
+		private final RuleCall cActuatorsActuatorParserRuleCall_4_7_0 = (RuleCall)cActuatorsAssignment_4_7.eContents().get(0);
+		private final Assignment cMissionsAssignment_4_8 = (Assignment)cAlternatives_4.eContents().get(8);
+		private final RuleCall cMissionsMissionParserRuleCall_4_8_0 = (RuleCall)cMissionsAssignment_4_8.eContents().get(0);
+		private final Assignment cSupervisorsAssignment_4_9 = (Assignment)cAlternatives_4.eContents().get(9);
+		private final RuleCall cSupervisorsSupervisorParserRuleCall_4_9_0 = (RuleCall)cSupervisorsAssignment_4_9.eContents().get(0);
+		private final Assignment cOrdersAssignment_4_10 = (Assignment)cAlternatives_4.eContents().get(10);
+		private final RuleCall cOrdersOrderParserRuleCall_4_10_0 = (RuleCall)cOrdersAssignment_4_10.eContents().get(0);
+		private final Assignment cDatabasesAssignment_4_11 = (Assignment)cAlternatives_4.eContents().get(11);
+		private final RuleCall cDatabasesDatabaseParserRuleCall_4_11_0 = (RuleCall)cDatabasesAssignment_4_11.eContents().get(0);
+		private final Assignment cProcessorsAssignment_4_12 = (Assignment)cAlternatives_4.eContents().get(12);
+		private final RuleCall cProcessorsProcessorParserRuleCall_4_12_0 = (RuleCall)cProcessorsAssignment_4_12.eContents().get(0);
+		private final Assignment cLatencyRequirementsAssignment_4_13 = (Assignment)cAlternatives_4.eContents().get(13);
+		private final RuleCall cLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0 = (RuleCall)cLatencyRequirementsAssignment_4_13.eContents().get(0);
 		private final Keyword cRightCurlyBracketKeyword_5 = (Keyword)cGroup.eContents().get(5);
 		
 		//Architecture returns rsaml::Architecture:
@@ -70,6 +74,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    ( Described
 		//    | 'category' category=ArchitectureCategory
 		//    | 'declaredLayers' declaredLayers=Integer
+		//    | 'lifecycle' lifecycle=NodeLifecycle
 		//    | layers+=Layer
 		//    | connections+=Connection
 		//    | sensors+=Sensor
@@ -87,6 +92,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'category' category=ArchitectureCategory
 		//| 'declaredLayers' declaredLayers=Integer
+		//| 'lifecycle' lifecycle=NodeLifecycle
 		//| layers+=Layer
 		//| connections+=Connection
 		//| sensors+=Sensor
@@ -118,6 +124,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//( Described
 		//| 'category' category=ArchitectureCategory
 		//| 'declaredLayers' declaredLayers=Integer
+		//| 'lifecycle' lifecycle=NodeLifecycle
 		//| layers+=Layer
 		//| connections+=Connection
 		//| sensors+=Sensor
@@ -158,65 +165,77 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//Integer
 		public RuleCall getDeclaredLayersIntegerParserRuleCall_4_2_1_0() { return cDeclaredLayersIntegerParserRuleCall_4_2_1_0; }
 		
+		//'lifecycle' lifecycle=NodeLifecycle
+		public Group getGroup_4_3() { return cGroup_4_3; }
+		
+		//'lifecycle'
+		public Keyword getLifecycleKeyword_4_3_0() { return cLifecycleKeyword_4_3_0; }
+		
+		//lifecycle=NodeLifecycle
+		public Assignment getLifecycleAssignment_4_3_1() { return cLifecycleAssignment_4_3_1; }
+		
+		//NodeLifecycle
+		public RuleCall getLifecycleNodeLifecycleEnumRuleCall_4_3_1_0() { return cLifecycleNodeLifecycleEnumRuleCall_4_3_1_0; }
+		
 		//layers+=Layer
-		public Assignment getLayersAssignment_4_3() { return cLayersAssignment_4_3; }
+		public Assignment getLayersAssignment_4_4() { return cLayersAssignment_4_4; }
 		
 		//Layer
-		public RuleCall getLayersLayerParserRuleCall_4_3_0() { return cLayersLayerParserRuleCall_4_3_0; }
+		public RuleCall getLayersLayerParserRuleCall_4_4_0() { return cLayersLayerParserRuleCall_4_4_0; }
 		
 		//connections+=Connection
-		public Assignment getConnectionsAssignment_4_4() { return cConnectionsAssignment_4_4; }
+		public Assignment getConnectionsAssignment_4_5() { return cConnectionsAssignment_4_5; }
 		
 		//Connection
-		public RuleCall getConnectionsConnectionParserRuleCall_4_4_0() { return cConnectionsConnectionParserRuleCall_4_4_0; }
+		public RuleCall getConnectionsConnectionParserRuleCall_4_5_0() { return cConnectionsConnectionParserRuleCall_4_5_0; }
 		
 		//sensors+=Sensor
-		public Assignment getSensorsAssignment_4_5() { return cSensorsAssignment_4_5; }
+		public Assignment getSensorsAssignment_4_6() { return cSensorsAssignment_4_6; }
 		
 		//Sensor
-		public RuleCall getSensorsSensorParserRuleCall_4_5_0() { return cSensorsSensorParserRuleCall_4_5_0; }
+		public RuleCall getSensorsSensorParserRuleCall_4_6_0() { return cSensorsSensorParserRuleCall_4_6_0; }
 		
 		//actuators+=Actuator
-		public Assignment getActuatorsAssignment_4_6() { return cActuatorsAssignment_4_6; }
+		public Assignment getActuatorsAssignment_4_7() { return cActuatorsAssignment_4_7; }
 		
 		//Actuator
-		public RuleCall getActuatorsActuatorParserRuleCall_4_6_0() { return cActuatorsActuatorParserRuleCall_4_6_0; }
+		public RuleCall getActuatorsActuatorParserRuleCall_4_7_0() { return cActuatorsActuatorParserRuleCall_4_7_0; }
 		
 		//missions+=Mission
-		public Assignment getMissionsAssignment_4_7() { return cMissionsAssignment_4_7; }
+		public Assignment getMissionsAssignment_4_8() { return cMissionsAssignment_4_8; }
 		
 		//Mission
-		public RuleCall getMissionsMissionParserRuleCall_4_7_0() { return cMissionsMissionParserRuleCall_4_7_0; }
+		public RuleCall getMissionsMissionParserRuleCall_4_8_0() { return cMissionsMissionParserRuleCall_4_8_0; }
 		
 		//supervisors+=Supervisor
-		public Assignment getSupervisorsAssignment_4_8() { return cSupervisorsAssignment_4_8; }
+		public Assignment getSupervisorsAssignment_4_9() { return cSupervisorsAssignment_4_9; }
 		
 		//Supervisor
-		public RuleCall getSupervisorsSupervisorParserRuleCall_4_8_0() { return cSupervisorsSupervisorParserRuleCall_4_8_0; }
+		public RuleCall getSupervisorsSupervisorParserRuleCall_4_9_0() { return cSupervisorsSupervisorParserRuleCall_4_9_0; }
 		
 		//orders+=Order
-		public Assignment getOrdersAssignment_4_9() { return cOrdersAssignment_4_9; }
+		public Assignment getOrdersAssignment_4_10() { return cOrdersAssignment_4_10; }
 		
 		//Order
-		public RuleCall getOrdersOrderParserRuleCall_4_9_0() { return cOrdersOrderParserRuleCall_4_9_0; }
+		public RuleCall getOrdersOrderParserRuleCall_4_10_0() { return cOrdersOrderParserRuleCall_4_10_0; }
 		
 		//databases+=Database
-		public Assignment getDatabasesAssignment_4_10() { return cDatabasesAssignment_4_10; }
+		public Assignment getDatabasesAssignment_4_11() { return cDatabasesAssignment_4_11; }
 		
 		//Database
-		public RuleCall getDatabasesDatabaseParserRuleCall_4_10_0() { return cDatabasesDatabaseParserRuleCall_4_10_0; }
+		public RuleCall getDatabasesDatabaseParserRuleCall_4_11_0() { return cDatabasesDatabaseParserRuleCall_4_11_0; }
 		
 		//processors+=Processor
-		public Assignment getProcessorsAssignment_4_11() { return cProcessorsAssignment_4_11; }
+		public Assignment getProcessorsAssignment_4_12() { return cProcessorsAssignment_4_12; }
 		
 		//Processor
-		public RuleCall getProcessorsProcessorParserRuleCall_4_11_0() { return cProcessorsProcessorParserRuleCall_4_11_0; }
+		public RuleCall getProcessorsProcessorParserRuleCall_4_12_0() { return cProcessorsProcessorParserRuleCall_4_12_0; }
 		
 		//latencyRequirements+=LatencyRequirement
-		public Assignment getLatencyRequirementsAssignment_4_12() { return cLatencyRequirementsAssignment_4_12; }
+		public Assignment getLatencyRequirementsAssignment_4_13() { return cLatencyRequirementsAssignment_4_13; }
 		
 		//LatencyRequirement
-		public RuleCall getLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0() { return cLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0; }
+		public RuleCall getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0() { return cLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0; }
 		
 		//'}'
 		public Keyword getRightCurlyBracketKeyword_5() { return cRightCurlyBracketKeyword_5; }
@@ -539,14 +558,18 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Assignment cActuatorsAssignment_4_3_2_1 = (Assignment)cGroup_4_3_2.eContents().get(1);
 		private final CrossReference cActuatorsActuatorCrossReference_4_3_2_1_0 = (CrossReference)cActuatorsAssignment_4_3_2_1.eContents().get(0);
 		private final RuleCall cActuatorsActuatorQualifiedNameParserRuleCall_4_3_2_1_0_1 = (RuleCall)cActuatorsActuatorCrossReference_4_3_2_1_0.eContents().get(1);
-		private final Assignment cFunctionsAssignment_4_4 = (Assignment)cAlternatives_4.eContents().get(4);
-		private final RuleCall cFunctionsFunctionParserRuleCall_4_4_0 = (RuleCall)cFunctionsAssignment_4_4.eContents().get(0);
-		private final Assignment cPortsAssignment_4_5 = (Assignment)cAlternatives_4.eContents().get(5);
-		private final RuleCall cPortsPortParserRuleCall_4_5_0 = (RuleCall)cPortsAssignment_4_5.eContents().get(0);
-		private final Assignment cInhibitorsAssignment_4_6 = (Assignment)cAlternatives_4.eContents().get(6);
-		private final RuleCall cInhibitorsInhibitorParserRuleCall_4_6_0 = (RuleCall)cInhibitorsAssignment_4_6.eContents().get(0);
-		private final Assignment cSuppressorsAssignment_4_7 = (Assignment)cAlternatives_4.eContents().get(7);
-		private final RuleCall cSuppressorsSuppressorParserRuleCall_4_7_0 = (RuleCall)cSuppressorsAssignment_4_7.eContents().get(0);
+		private final Group cGroup_4_4 = (Group)cAlternatives_4.eContents().get(4);
+		private final Keyword cLifecycleKeyword_4_4_0 = (Keyword)cGroup_4_4.eContents().get(0);
+		private final Assignment cLifecycleAssignment_4_4_1 = (Assignment)cGroup_4_4.eContents().get(1);
+		private final RuleCall cLifecycleNodeLifecycleEnumRuleCall_4_4_1_0 = (RuleCall)cLifecycleAssignment_4_4_1.eContents().get(0);
+		private final Assignment cFunctionsAssignment_4_5 = (Assignment)cAlternatives_4.eContents().get(5);
+		private final RuleCall cFunctionsFunctionParserRuleCall_4_5_0 = (RuleCall)cFunctionsAssignment_4_5.eContents().get(0);
+		private final Assignment cPortsAssignment_4_6 = (Assignment)cAlternatives_4.eContents().get(6);
+		private final RuleCall cPortsPortParserRuleCall_4_6_0 = (RuleCall)cPortsAssignment_4_6.eContents().get(0);
+		private final Assignment cInhibitorsAssignment_4_7 = (Assignment)cAlternatives_4.eContents().get(7);
+		private final RuleCall cInhibitorsInhibitorParserRuleCall_4_7_0 = (RuleCall)cInhibitorsAssignment_4_7.eContents().get(0);
+		private final Assignment cSuppressorsAssignment_4_8 = (Assignment)cAlternatives_4.eContents().get(8);
+		private final RuleCall cSuppressorsSuppressorParserRuleCall_4_8_0 = (RuleCall)cSuppressorsAssignment_4_8.eContents().get(0);
 		private final Keyword cRightCurlyBracketKeyword_5 = (Keyword)cGroup.eContents().get(5);
 		
 		//Module returns rsaml::Module:
@@ -555,6 +578,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | RealTime
 		//    | 'sensors' sensors+=[rsaml::Sensor|QualifiedName] (',' sensors+=[rsaml::Sensor|QualifiedName])*
 		//    | 'actuators' actuators+=[rsaml::Actuator|QualifiedName] (',' actuators+=[rsaml::Actuator|QualifiedName])*
+		//    | 'lifecycle' lifecycle=NodeLifecycle
 		//    | functions+=Function
 		//    | ports+=Port
 		//    | inhibitors+=Inhibitor
@@ -567,6 +591,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| RealTime
 		//| 'sensors' sensors+=[rsaml::Sensor|QualifiedName] (',' sensors+=[rsaml::Sensor|QualifiedName])*
 		//| 'actuators' actuators+=[rsaml::Actuator|QualifiedName] (',' actuators+=[rsaml::Actuator|QualifiedName])*
+		//| 'lifecycle' lifecycle=NodeLifecycle
 		//| functions+=Function
 		//| ports+=Port
 		//| inhibitors+=Inhibitor
@@ -593,6 +618,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| RealTime
 		//| 'sensors' sensors+=[rsaml::Sensor|QualifiedName] (',' sensors+=[rsaml::Sensor|QualifiedName])*
 		//| 'actuators' actuators+=[rsaml::Actuator|QualifiedName] (',' actuators+=[rsaml::Actuator|QualifiedName])*
+		//| 'lifecycle' lifecycle=NodeLifecycle
 		//| functions+=Function
 		//| ports+=Port
 		//| inhibitors+=Inhibitor
@@ -666,29 +692,41 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//QualifiedName
 		public RuleCall getActuatorsActuatorQualifiedNameParserRuleCall_4_3_2_1_0_1() { return cActuatorsActuatorQualifiedNameParserRuleCall_4_3_2_1_0_1; }
 		
+		//'lifecycle' lifecycle=NodeLifecycle
+		public Group getGroup_4_4() { return cGroup_4_4; }
+		
+		//'lifecycle'
+		public Keyword getLifecycleKeyword_4_4_0() { return cLifecycleKeyword_4_4_0; }
+		
+		//lifecycle=NodeLifecycle
+		public Assignment getLifecycleAssignment_4_4_1() { return cLifecycleAssignment_4_4_1; }
+		
+		//NodeLifecycle
+		public RuleCall getLifecycleNodeLifecycleEnumRuleCall_4_4_1_0() { return cLifecycleNodeLifecycleEnumRuleCall_4_4_1_0; }
+		
 		//functions+=Function
-		public Assignment getFunctionsAssignment_4_4() { return cFunctionsAssignment_4_4; }
+		public Assignment getFunctionsAssignment_4_5() { return cFunctionsAssignment_4_5; }
 		
 		//Function
-		public RuleCall getFunctionsFunctionParserRuleCall_4_4_0() { return cFunctionsFunctionParserRuleCall_4_4_0; }
+		public RuleCall getFunctionsFunctionParserRuleCall_4_5_0() { return cFunctionsFunctionParserRuleCall_4_5_0; }
 		
 		//ports+=Port
-		public Assignment getPortsAssignment_4_5() { return cPortsAssignment_4_5; }
+		public Assignment getPortsAssignment_4_6() { return cPortsAssignment_4_6; }
 		
 		//Port
-		public RuleCall getPortsPortParserRuleCall_4_5_0() { return cPortsPortParserRuleCall_4_5_0; }
+		public RuleCall getPortsPortParserRuleCall_4_6_0() { return cPortsPortParserRuleCall_4_6_0; }
 		
 		//inhibitors+=Inhibitor
-		public Assignment getInhibitorsAssignment_4_6() { return cInhibitorsAssignment_4_6; }
+		public Assignment getInhibitorsAssignment_4_7() { return cInhibitorsAssignment_4_7; }
 		
 		//Inhibitor
-		public RuleCall getInhibitorsInhibitorParserRuleCall_4_6_0() { return cInhibitorsInhibitorParserRuleCall_4_6_0; }
+		public RuleCall getInhibitorsInhibitorParserRuleCall_4_7_0() { return cInhibitorsInhibitorParserRuleCall_4_7_0; }
 		
 		//suppressors+=Suppressor
-		public Assignment getSuppressorsAssignment_4_7() { return cSuppressorsAssignment_4_7; }
+		public Assignment getSuppressorsAssignment_4_8() { return cSuppressorsAssignment_4_8; }
 		
 		//Suppressor
-		public RuleCall getSuppressorsSuppressorParserRuleCall_4_7_0() { return cSuppressorsSuppressorParserRuleCall_4_7_0; }
+		public RuleCall getSuppressorsSuppressorParserRuleCall_4_8_0() { return cSuppressorsSuppressorParserRuleCall_4_8_0; }
 		
 		//'}'
 		public Keyword getRightCurlyBracketKeyword_5() { return cRightCurlyBracketKeyword_5; }
@@ -2829,38 +2867,41 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cMaxLatencyKeyword_61 = (Keyword)cAlternatives.eContents().get(61);
 		private final Keyword cHostKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
 		private final Keyword cLinkLatencyKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
-		private final Keyword cCentralizedKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
-		private final Keyword cHierarchicalKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
-		private final Keyword cBehavioralKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
-		private final Keyword cHybridKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
-		private final Keyword cOtherKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
-		private final Keyword cSimpleKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
-		private final Keyword cRealTimeKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
-		private final Keyword cPeriodicKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
-		private final Keyword cSporadicKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
-		private final Keyword cAperiodicKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
-		private final Keyword cNsKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
-		private final Keyword cUsKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
-		private final Keyword cMsKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
-		private final Keyword cSKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
-		private final Keyword cSynchronousKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
-		private final Keyword cAsynchronousKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
-		private final Keyword cFIFOKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
-		private final Keyword cSJFKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
-		private final Keyword cRRKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
-		private final Keyword cRMKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
-		private final Keyword cDMKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
-		private final Keyword cEDFKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
-		private final Keyword cLLFKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
-		private final Keyword cOTHERKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
-		private final Keyword cNumericKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
-		private final Keyword cAlphanumericKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
-		private final Keyword cBooleanKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
-		private final Keyword cStructuredKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
-		private final Keyword cReactionTimeKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
-		private final Keyword cDataAgeKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
-		private final Keyword cNaNKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
-		private final Keyword cInfinityKeyword_95 = (Keyword)cAlternatives.eContents().get(95);
+		private final Keyword cLifecycleKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
+		private final Keyword cCentralizedKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
+		private final Keyword cHierarchicalKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
+		private final Keyword cBehavioralKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
+		private final Keyword cHybridKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
+		private final Keyword cOtherKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
+		private final Keyword cSimpleKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
+		private final Keyword cRealTimeKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
+		private final Keyword cPeriodicKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
+		private final Keyword cSporadicKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
+		private final Keyword cAperiodicKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
+		private final Keyword cNsKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
+		private final Keyword cUsKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
+		private final Keyword cMsKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
+		private final Keyword cSKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
+		private final Keyword cSynchronousKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
+		private final Keyword cAsynchronousKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
+		private final Keyword cFIFOKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
+		private final Keyword cSJFKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
+		private final Keyword cRRKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
+		private final Keyword cRMKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
+		private final Keyword cDMKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
+		private final Keyword cEDFKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
+		private final Keyword cLLFKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
+		private final Keyword cOTHERKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
+		private final Keyword cNumericKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
+		private final Keyword cAlphanumericKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
+		private final Keyword cBooleanKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
+		private final Keyword cStructuredKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
+		private final Keyword cReactionTimeKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
+		private final Keyword cDataAgeKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
+		private final Keyword cPlainKeyword_95 = (Keyword)cAlternatives.eContents().get(95);
+		private final Keyword cManagedKeyword_96 = (Keyword)cAlternatives.eContents().get(96);
+		private final Keyword cNaNKeyword_97 = (Keyword)cAlternatives.eContents().get(97);
+		private final Keyword cInfinityKeyword_98 = (Keyword)cAlternatives.eContents().get(98);
 		
 		//Keyword:
 		//    'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2870,11 +2911,11 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//    | 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-		//    | 'maxLatency' | 'host' | 'linkLatency'
+		//    | 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle'
 		//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 		//    | 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
-		//    | 'dataAge' | 'NaN' | 'Infinity';
+		//    | 'dataAge' | 'plain' | 'managed' | 'NaN' | 'Infinity';
 		@Override public ParserRule getRule() { return rule; }
 		
 		//'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2884,11 +2925,11 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//| 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//| 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-		//| 'maxLatency' | 'host' | 'linkLatency'
+		//| 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle'
 		//| 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//| 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 		//| 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
-		//| 'dataAge' | 'NaN' | 'Infinity'
+		//| 'dataAge' | 'plain' | 'managed' | 'NaN' | 'Infinity'
 		public Alternatives getAlternatives() { return cAlternatives; }
 		
 		//'architecture'
@@ -3083,101 +3124,110 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//'linkLatency'
 		public Keyword getLinkLatencyKeyword_63() { return cLinkLatencyKeyword_63; }
 		
+		//'lifecycle'
+		public Keyword getLifecycleKeyword_64() { return cLifecycleKeyword_64; }
+		
 		//'centralized'
-		public Keyword getCentralizedKeyword_64() { return cCentralizedKeyword_64; }
+		public Keyword getCentralizedKeyword_65() { return cCentralizedKeyword_65; }
 		
 		//'hierarchical'
-		public Keyword getHierarchicalKeyword_65() { return cHierarchicalKeyword_65; }
+		public Keyword getHierarchicalKeyword_66() { return cHierarchicalKeyword_66; }
 		
 		//'behavioral'
-		public Keyword getBehavioralKeyword_66() { return cBehavioralKeyword_66; }
+		public Keyword getBehavioralKeyword_67() { return cBehavioralKeyword_67; }
 		
 		//'hybrid'
-		public Keyword getHybridKeyword_67() { return cHybridKeyword_67; }
+		public Keyword getHybridKeyword_68() { return cHybridKeyword_68; }
 		
 		//'other'
-		public Keyword getOtherKeyword_68() { return cOtherKeyword_68; }
+		public Keyword getOtherKeyword_69() { return cOtherKeyword_69; }
 		
 		//'simple'
-		public Keyword getSimpleKeyword_69() { return cSimpleKeyword_69; }
+		public Keyword getSimpleKeyword_70() { return cSimpleKeyword_70; }
 		
 		//'realTime'
-		public Keyword getRealTimeKeyword_70() { return cRealTimeKeyword_70; }
+		public Keyword getRealTimeKeyword_71() { return cRealTimeKeyword_71; }
 		
 		//'periodic'
-		public Keyword getPeriodicKeyword_71() { return cPeriodicKeyword_71; }
+		public Keyword getPeriodicKeyword_72() { return cPeriodicKeyword_72; }
 		
 		//'sporadic'
-		public Keyword getSporadicKeyword_72() { return cSporadicKeyword_72; }
+		public Keyword getSporadicKeyword_73() { return cSporadicKeyword_73; }
 		
 		//'aperiodic'
-		public Keyword getAperiodicKeyword_73() { return cAperiodicKeyword_73; }
+		public Keyword getAperiodicKeyword_74() { return cAperiodicKeyword_74; }
 		
 		//'ns'
-		public Keyword getNsKeyword_74() { return cNsKeyword_74; }
+		public Keyword getNsKeyword_75() { return cNsKeyword_75; }
 		
 		//'us'
-		public Keyword getUsKeyword_75() { return cUsKeyword_75; }
+		public Keyword getUsKeyword_76() { return cUsKeyword_76; }
 		
 		//'ms'
-		public Keyword getMsKeyword_76() { return cMsKeyword_76; }
+		public Keyword getMsKeyword_77() { return cMsKeyword_77; }
 		
 		//'s'
-		public Keyword getSKeyword_77() { return cSKeyword_77; }
+		public Keyword getSKeyword_78() { return cSKeyword_78; }
 		
 		//'synchronous'
-		public Keyword getSynchronousKeyword_78() { return cSynchronousKeyword_78; }
+		public Keyword getSynchronousKeyword_79() { return cSynchronousKeyword_79; }
 		
 		//'asynchronous'
-		public Keyword getAsynchronousKeyword_79() { return cAsynchronousKeyword_79; }
+		public Keyword getAsynchronousKeyword_80() { return cAsynchronousKeyword_80; }
 		
 		//'FIFO'
-		public Keyword getFIFOKeyword_80() { return cFIFOKeyword_80; }
+		public Keyword getFIFOKeyword_81() { return cFIFOKeyword_81; }
 		
 		//'SJF'
-		public Keyword getSJFKeyword_81() { return cSJFKeyword_81; }
+		public Keyword getSJFKeyword_82() { return cSJFKeyword_82; }
 		
 		//'RR'
-		public Keyword getRRKeyword_82() { return cRRKeyword_82; }
+		public Keyword getRRKeyword_83() { return cRRKeyword_83; }
 		
 		//'RM'
-		public Keyword getRMKeyword_83() { return cRMKeyword_83; }
+		public Keyword getRMKeyword_84() { return cRMKeyword_84; }
 		
 		//'DM'
-		public Keyword getDMKeyword_84() { return cDMKeyword_84; }
+		public Keyword getDMKeyword_85() { return cDMKeyword_85; }
 		
 		//'EDF'
-		public Keyword getEDFKeyword_85() { return cEDFKeyword_85; }
+		public Keyword getEDFKeyword_86() { return cEDFKeyword_86; }
 		
 		//'LLF'
-		public Keyword getLLFKeyword_86() { return cLLFKeyword_86; }
+		public Keyword getLLFKeyword_87() { return cLLFKeyword_87; }
 		
 		//'OTHER'
-		public Keyword getOTHERKeyword_87() { return cOTHERKeyword_87; }
+		public Keyword getOTHERKeyword_88() { return cOTHERKeyword_88; }
 		
 		//'numeric'
-		public Keyword getNumericKeyword_88() { return cNumericKeyword_88; }
+		public Keyword getNumericKeyword_89() { return cNumericKeyword_89; }
 		
 		//'alphanumeric'
-		public Keyword getAlphanumericKeyword_89() { return cAlphanumericKeyword_89; }
+		public Keyword getAlphanumericKeyword_90() { return cAlphanumericKeyword_90; }
 		
 		//'boolean'
-		public Keyword getBooleanKeyword_90() { return cBooleanKeyword_90; }
+		public Keyword getBooleanKeyword_91() { return cBooleanKeyword_91; }
 		
 		//'structured'
-		public Keyword getStructuredKeyword_91() { return cStructuredKeyword_91; }
+		public Keyword getStructuredKeyword_92() { return cStructuredKeyword_92; }
 		
 		//'reactionTime'
-		public Keyword getReactionTimeKeyword_92() { return cReactionTimeKeyword_92; }
+		public Keyword getReactionTimeKeyword_93() { return cReactionTimeKeyword_93; }
 		
 		//'dataAge'
-		public Keyword getDataAgeKeyword_93() { return cDataAgeKeyword_93; }
+		public Keyword getDataAgeKeyword_94() { return cDataAgeKeyword_94; }
+		
+		//'plain'
+		public Keyword getPlainKeyword_95() { return cPlainKeyword_95; }
+		
+		//'managed'
+		public Keyword getManagedKeyword_96() { return cManagedKeyword_96; }
 		
 		//'NaN'
-		public Keyword getNaNKeyword_94() { return cNaNKeyword_94; }
+		public Keyword getNaNKeyword_97() { return cNaNKeyword_97; }
 		
 		//'Infinity'
-		public Keyword getInfinityKeyword_95() { return cInfinityKeyword_95; }
+		public Keyword getInfinityKeyword_98() { return cInfinityKeyword_98; }
 	}
 	public class RealElements extends AbstractParserRuleElementFinder {
 		private final ParserRule rule = (ParserRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.Real");
@@ -3500,6 +3550,31 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		
 		public Keyword getStructuredStructuredKeyword_3_0() { return cStructuredStructuredKeyword_3_0; }
 	}
+	public class NodeLifecycleElements extends AbstractElementFinder.AbstractEnumRuleElementFinder {
+		private final EnumRule rule = (EnumRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.NodeLifecycle");
+		private final Alternatives cAlternatives = (Alternatives)rule.eContents().get(1);
+		private final EnumLiteralDeclaration cPlainEnumLiteralDeclaration_0 = (EnumLiteralDeclaration)cAlternatives.eContents().get(0);
+		private final Keyword cPlainPlainKeyword_0_0 = (Keyword)cPlainEnumLiteralDeclaration_0.eContents().get(0);
+		private final EnumLiteralDeclaration cManagedEnumLiteralDeclaration_1 = (EnumLiteralDeclaration)cAlternatives.eContents().get(1);
+		private final Keyword cManagedManagedKeyword_1_0 = (Keyword)cManagedEnumLiteralDeclaration_1.eContents().get(0);
+		
+		//enum NodeLifecycle returns rsaml::NodeLifecycle:
+		//    plain | managed;
+		public EnumRule getRule() { return rule; }
+		
+		//plain | managed
+		public Alternatives getAlternatives() { return cAlternatives; }
+		
+		//plain
+		public EnumLiteralDeclaration getPlainEnumLiteralDeclaration_0() { return cPlainEnumLiteralDeclaration_0; }
+		
+		public Keyword getPlainPlainKeyword_0_0() { return cPlainPlainKeyword_0_0; }
+		
+		//managed
+		public EnumLiteralDeclaration getManagedEnumLiteralDeclaration_1() { return cManagedEnumLiteralDeclaration_1; }
+		
+		public Keyword getManagedManagedKeyword_1_0() { return cManagedManagedKeyword_1_0; }
+	}
 	public class LatencyKindElements extends AbstractElementFinder.AbstractEnumRuleElementFinder {
 		private final EnumRule rule = (EnumRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.LatencyKind");
 		private final Alternatives cAlternatives = (Alternatives)rule.eContents().get(1);
@@ -3562,6 +3637,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	private final SynchronisationTypeElements eSynchronisationType;
 	private final SchedulingPolicyElements eSchedulingPolicy;
 	private final DataTypeElements eDataType;
+	private final NodeLifecycleElements eNodeLifecycle;
 	private final LatencyKindElements eLatencyKind;
 	private final TerminalRule tID;
 	private final TerminalRule tNUMBER;
@@ -3612,6 +3688,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		this.eSynchronisationType = new SynchronisationTypeElements();
 		this.eSchedulingPolicy = new SchedulingPolicyElements();
 		this.eDataType = new DataTypeElements();
+		this.eNodeLifecycle = new NodeLifecycleElements();
 		this.eLatencyKind = new LatencyKindElements();
 		this.tID = (TerminalRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.ID");
 		this.tNUMBER = (TerminalRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.NUMBER");
@@ -3650,6 +3727,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    ( Described
 	//    | 'category' category=ArchitectureCategory
 	//    | 'declaredLayers' declaredLayers=Integer
+	//    | 'lifecycle' lifecycle=NodeLifecycle
 	//    | layers+=Layer
 	//    | connections+=Connection
 	//    | sensors+=Sensor
@@ -3726,6 +3804,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | RealTime
 	//    | 'sensors' sensors+=[rsaml::Sensor|QualifiedName] (',' sensors+=[rsaml::Sensor|QualifiedName])*
 	//    | 'actuators' actuators+=[rsaml::Actuator|QualifiedName] (',' actuators+=[rsaml::Actuator|QualifiedName])*
+	//    | 'lifecycle' lifecycle=NodeLifecycle
 	//    | functions+=Function
 	//    | ports+=Port
 	//    | inhibitors+=Inhibitor
@@ -4037,11 +4116,11 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 	//    | 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 	//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-	//    | 'maxLatency' | 'host' | 'linkLatency'
+	//    | 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle'
 	//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 	//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 	//    | 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
-	//    | 'dataAge' | 'NaN' | 'Infinity';
+	//    | 'dataAge' | 'plain' | 'managed' | 'NaN' | 'Infinity';
 	public KeywordElements getKeywordAccess() {
 		return pKeyword;
 	}
@@ -4139,6 +4218,16 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	
 	public EnumRule getDataTypeRule() {
 		return getDataTypeAccess().getRule();
+	}
+	
+	//enum NodeLifecycle returns rsaml::NodeLifecycle:
+	//    plain | managed;
+	public NodeLifecycleElements getNodeLifecycleAccess() {
+		return eNodeLifecycle;
+	}
+	
+	public EnumRule getNodeLifecycleRule() {
+		return getNodeLifecycleAccess().getRule();
 	}
 	
 	//enum LatencyKind returns rsaml::LatencyKind:

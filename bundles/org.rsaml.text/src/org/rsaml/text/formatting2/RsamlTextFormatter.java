@@ -35,7 +35,7 @@ public class RsamlTextFormatter extends AbstractJavaFormatter {
             "execType", "period", "deadline", "wcet", "level", "maxExecTime", "sensors", "actuators", "synchroType",
             "schedPolicy", "otherPolicy", "start", "dataType", "messageType", "topic", "trigger", "target", "duration", "kind",
             "priority", "achieves", "actions", "plans", "realisedBy", "issuer", "receiver", "requests", "usedBy", "core",
-            "modules", "from", "to", "via", "maxLatency");
+            "modules", "from", "to", "via", "maxLatency", "lifecycle");
 
     /** The layout is the language's: two spaces a level, whatever the editor's preference. */
     @Override

@@ -110,6 +110,7 @@ public class RsamlTextWriter {
         open("architecture", a);
         attribute(a, Literals.ARCHITECTURE__CATEGORY, "category", () -> a.getCategory().getLiteral());
         attribute(a, Literals.ARCHITECTURE__DECLARED_LAYERS, "declaredLayers", () -> Integer.toString(a.getDeclaredLayers()));
+        attribute(a, Literals.ARCHITECTURE__LIFECYCLE, "lifecycle", () -> a.getLifecycle().getLiteral());
         a.getLayers().forEach(this::layer);
         if (!a.getConnections().isEmpty()) {
             blankLine();
@@ -140,6 +141,7 @@ public class RsamlTextWriter {
         realTime(m, false);
         references("sensors", m.getSensors(), Literals.SENSOR);
         references("actuators", m.getActuators(), Literals.ACTUATOR);
+        attribute(m, Literals.MODULE__LIFECYCLE, "lifecycle", () -> m.getLifecycle().getLiteral());
         m.getPorts().forEach(this::port);
         m.getFunctions().forEach(this::function);
         m.getInhibitors().forEach(i -> link("inhibitor", i, i.getTarget(), Literals.OUTPUT_PORT));

@@ -47,7 +47,7 @@ final class RandomModels {
     private static final RsamlFactory F = RsamlFactory.eINSTANCE;
     private static final String[] NAMES = { "a", "b", "lidarDriver", "scan", "plan", "module", "s", "ms", "NaN", "x1",
             "caf\u00e9", "a b", "a.b", "\"quoted\"", "back\\slash", "", " ", "\u6a21\u5757", "\ud83e\udd16robot", "\u202eevil",
-            "line\nbreak", "tab\there", "_", "Z9", "type", "connect" };
+            "line\nbreak", "tab\there", "_", "Z9", "type", "connect", "lifecycle", "managed" };
     private static final double[] NUMBERS = { 0, 1, 2.5, 50, 1e-9, 1e21, -1, -0.0, Double.NaN, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.MIN_VALUE, Double.MAX_VALUE, 0.1, 1.0 / 3, 123456789012345.0, 1e15 };
     private static final int[] INTEGERS = { 0, 1, -1, 7, Integer.MAX_VALUE, Integer.MIN_VALUE };

@@ -16,6 +16,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.model.Module;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.text.convert.ModelConverter;
 import org.rsaml.validation.Finding;
@@ -67,6 +68,32 @@ class TextModelsTest {
         LoadedModel full = Models.read(temp, "full.rsa", ROBOT.replace("connect lidarDriver.scan -> localCostmap.scan",
                 "connect perception.lidarDriver.scan -> control.localCostmap.scan"));
         assertEquals(null, Models.difference(model.architecture(), full.architecture()), "full and short names name the same ports");
+    }
+
+    /**
+     * lifecycle on the architecture makes its nodes managed; a module's own lifecycle overrides it,
+     * plain included (a module that says plain under a managed architecture keeps saying it), and a
+     * module that says nothing follows the architecture. The writer gives back what was written.
+     */
+    @Test
+    void lifecycleOfTheArchitectureAndAModuleThatChoosesOtherwise() throws Exception {
+        String text = ROBOT.replace("  declaredLayers 2\n", "  declaredLayers 2\n  lifecycle managed\n")
+                .replace("    module localCostmap {\n", "    module localCostmap {\n      lifecycle plain\n");
+        LoadedModel model = Models.read(temp, "managed.rsa", text);
+        Module driver = model.architecture().getLayers().get(0).getModules().get(0);
+        Module costmap = model.architecture().getLayers().get(1).getModules().get(0);
+        assertEquals(NodeLifecycle.MANAGED, model.architecture().getLifecycle(), "lifecycle managed on the architecture");
+        assertFalse(driver.isSetLifecycle(), "the driver says nothing of its lifecycle");
+        assertEquals(NodeLifecycle.MANAGED, driver.effectiveLifecycle(), "the driver follows the architecture");
+        assertTrue(costmap.isSetLifecycle(), "the costmap says lifecycle plain");
+        assertEquals(NodeLifecycle.PLAIN, costmap.effectiveLifecycle(), "the costmap chose a plain node");
+        String written = ModelConverter.toText(model.architecture());
+        assertTrue(written.contains("  lifecycle managed\n") && written.contains("      lifecycle plain\n"),
+                "both choices are written back:\n" + written);
+        assertEquals(null, Models.difference(model.architecture(), Models.read(temp, "again.rsa", written).architecture()),
+                "the written text reads back as the same model");
+        assertEquals(NodeLifecycle.PLAIN, Models.read(temp, "plain.rsa", ROBOT).architecture().getLayers().get(0).getModules().get(0)
+                .effectiveLifecycle(), "without lifecycle, nodes are plain");
     }
 
     @Test

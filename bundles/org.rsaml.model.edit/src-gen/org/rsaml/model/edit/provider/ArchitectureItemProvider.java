@@ -52,6 +52,7 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 
 			addCategoryPropertyDescriptor(object);
 			addDeclaredLayersPropertyDescriptor(object);
+			addLifecyclePropertyDescriptor(object);
 		}
 		return itemPropertyDescriptors;
 	}
@@ -96,6 +97,28 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 				 false,
 				 false,
 				 ItemPropertyDescriptor.INTEGRAL_VALUE_IMAGE,
+				 null,
+				 null));
+	}
+
+	/**
+	 * This adds a property descriptor for the Lifecycle feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addLifecyclePropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_Architecture_lifecycle_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_Architecture_lifecycle_feature", "_UI_Architecture_type"),
+				 RsamlPackage.Literals.ARCHITECTURE__LIFECYCLE,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
 				 null,
 				 null));
 	}
@@ -189,6 +212,7 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 		switch (notification.getFeatureID(Architecture.class)) {
 			case RsamlPackage.ARCHITECTURE__CATEGORY:
 			case RsamlPackage.ARCHITECTURE__DECLARED_LAYERS:
+			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
 				fireNotifyChanged(new ViewerNotification(notification, notification.getNotifier(), false, true));
 				return;
 			case RsamlPackage.ARCHITECTURE__LAYERS:

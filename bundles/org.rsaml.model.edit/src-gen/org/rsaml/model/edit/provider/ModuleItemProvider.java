@@ -15,6 +15,7 @@ import org.eclipse.emf.ecore.EStructuralFeature;
 
 import org.eclipse.emf.edit.provider.ComposeableAdapterFactory;
 import org.eclipse.emf.edit.provider.IItemPropertyDescriptor;
+import org.eclipse.emf.edit.provider.ItemPropertyDescriptor;
 import org.eclipse.emf.edit.provider.ViewerNotification;
 
 import org.rsaml.model.RsamlFactory;
@@ -50,6 +51,7 @@ public class ModuleItemProvider extends RealTimeElementItemProvider {
 
 			addSensorsPropertyDescriptor(object);
 			addActuatorsPropertyDescriptor(object);
+			addLifecyclePropertyDescriptor(object);
 		}
 		return itemPropertyDescriptors;
 	}
@@ -94,6 +96,28 @@ public class ModuleItemProvider extends RealTimeElementItemProvider {
 				 false,
 				 true,
 				 null,
+				 null,
+				 null));
+	}
+
+	/**
+	 * This adds a property descriptor for the Lifecycle feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addLifecyclePropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_Module_lifecycle_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_Module_lifecycle_feature", "_UI_Module_type"),
+				 RsamlPackage.Literals.MODULE__LIFECYCLE,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
 				 null,
 				 null));
 	}
@@ -179,6 +203,9 @@ public class ModuleItemProvider extends RealTimeElementItemProvider {
 		updateChildren(notification);
 
 		switch (notification.getFeatureID(org.rsaml.model.Module.class)) {
+			case RsamlPackage.MODULE__LIFECYCLE:
+				fireNotifyChanged(new ViewerNotification(notification, notification.getNotifier(), false, true));
+				return;
 			case RsamlPackage.MODULE__FUNCTIONS:
 			case RsamlPackage.MODULE__PORTS:
 			case RsamlPackage.MODULE__INHIBITORS:

@@ -177,11 +177,37 @@ ruleArchitecture returns [EObject current=null]
 			)
 			    |
 			(
+				otherlv_9='lifecycle'
+				{
+					newLeafNode(otherlv_9, grammarAccess.getArchitectureAccess().getLifecycleKeyword_4_3_0());
+				}
+				(
+					(
+						{
+							newCompositeNode(grammarAccess.getArchitectureAccess().getLifecycleNodeLifecycleEnumRuleCall_4_3_1_0());
+						}
+						lv_lifecycle_10_0=ruleNodeLifecycle
+						{
+							if ($current==null) {
+								$current = createModelElementForParent(grammarAccess.getArchitectureRule());
+							}
+							set(
+								$current,
+								"lifecycle",
+								lv_lifecycle_10_0,
+								"org.rsaml.text.RsamlText.NodeLifecycle");
+							afterParserOrEnumRuleCall();
+						}
+					)
+				)
+			)
+			    |
+			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_3_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0());
 					}
-					lv_layers_9_0=ruleLayer
+					lv_layers_11_0=ruleLayer
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -189,7 +215,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"layers",
-							lv_layers_9_0,
+							lv_layers_11_0,
 							"org.rsaml.text.RsamlText.Layer");
 						afterParserOrEnumRuleCall();
 					}
@@ -199,9 +225,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_4_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0());
 					}
-					lv_connections_10_0=ruleConnection
+					lv_connections_12_0=ruleConnection
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -209,7 +235,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"connections",
-							lv_connections_10_0,
+							lv_connections_12_0,
 							"org.rsaml.text.RsamlText.Connection");
 						afterParserOrEnumRuleCall();
 					}
@@ -219,9 +245,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_5_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0());
 					}
-					lv_sensors_11_0=ruleSensor
+					lv_sensors_13_0=ruleSensor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -229,7 +255,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"sensors",
-							lv_sensors_11_0,
+							lv_sensors_13_0,
 							"org.rsaml.text.RsamlText.Sensor");
 						afterParserOrEnumRuleCall();
 					}
@@ -239,9 +265,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_6_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0());
 					}
-					lv_actuators_12_0=ruleActuator
+					lv_actuators_14_0=ruleActuator
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -249,7 +275,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"actuators",
-							lv_actuators_12_0,
+							lv_actuators_14_0,
 							"org.rsaml.text.RsamlText.Actuator");
 						afterParserOrEnumRuleCall();
 					}
@@ -259,9 +285,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_7_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0());
 					}
-					lv_missions_13_0=ruleMission
+					lv_missions_15_0=ruleMission
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -269,7 +295,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"missions",
-							lv_missions_13_0,
+							lv_missions_15_0,
 							"org.rsaml.text.RsamlText.Mission");
 						afterParserOrEnumRuleCall();
 					}
@@ -279,9 +305,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_8_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0());
 					}
-					lv_supervisors_14_0=ruleSupervisor
+					lv_supervisors_16_0=ruleSupervisor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -289,7 +315,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"supervisors",
-							lv_supervisors_14_0,
+							lv_supervisors_16_0,
 							"org.rsaml.text.RsamlText.Supervisor");
 						afterParserOrEnumRuleCall();
 					}
@@ -299,9 +325,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_9_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0());
 					}
-					lv_orders_15_0=ruleOrder
+					lv_orders_17_0=ruleOrder
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -309,7 +335,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"orders",
-							lv_orders_15_0,
+							lv_orders_17_0,
 							"org.rsaml.text.RsamlText.Order");
 						afterParserOrEnumRuleCall();
 					}
@@ -319,9 +345,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_10_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0());
 					}
-					lv_databases_16_0=ruleDatabase
+					lv_databases_18_0=ruleDatabase
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -329,7 +355,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"databases",
-							lv_databases_16_0,
+							lv_databases_18_0,
 							"org.rsaml.text.RsamlText.Database");
 						afterParserOrEnumRuleCall();
 					}
@@ -339,9 +365,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_11_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0());
 					}
-					lv_processors_17_0=ruleProcessor
+					lv_processors_19_0=ruleProcessor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -349,7 +375,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"processors",
-							lv_processors_17_0,
+							lv_processors_19_0,
 							"org.rsaml.text.RsamlText.Processor");
 						afterParserOrEnumRuleCall();
 					}
@@ -359,9 +385,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0());
 					}
-					lv_latencyRequirements_18_0=ruleLatencyRequirement
+					lv_latencyRequirements_20_0=ruleLatencyRequirement
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -369,16 +395,16 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"latencyRequirements",
-							lv_latencyRequirements_18_0,
+							lv_latencyRequirements_20_0,
 							"org.rsaml.text.RsamlText.LatencyRequirement");
 						afterParserOrEnumRuleCall();
 					}
 				)
 			)
 		)*
-		otherlv_19='}'
+		otherlv_21='}'
 		{
-			newLeafNode(otherlv_19, grammarAccess.getArchitectureAccess().getRightCurlyBracketKeyword_5());
+			newLeafNode(otherlv_21, grammarAccess.getArchitectureAccess().getRightCurlyBracketKeyword_5());
 		}
 	)
 ;
@@ -1004,11 +1030,37 @@ ruleModule returns [EObject current=null]
 			)
 			    |
 			(
+				otherlv_14='lifecycle'
+				{
+					newLeafNode(otherlv_14, grammarAccess.getModuleAccess().getLifecycleKeyword_4_4_0());
+				}
+				(
+					(
+						{
+							newCompositeNode(grammarAccess.getModuleAccess().getLifecycleNodeLifecycleEnumRuleCall_4_4_1_0());
+						}
+						lv_lifecycle_15_0=ruleNodeLifecycle
+						{
+							if ($current==null) {
+								$current = createModelElementForParent(grammarAccess.getModuleRule());
+							}
+							set(
+								$current,
+								"lifecycle",
+								lv_lifecycle_15_0,
+								"org.rsaml.text.RsamlText.NodeLifecycle");
+							afterParserOrEnumRuleCall();
+						}
+					)
+				)
+			)
+			    |
+			(
 				(
 					{
-						newCompositeNode(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_4_0());
+						newCompositeNode(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_5_0());
 					}
-					lv_functions_14_0=ruleFunction
+					lv_functions_16_0=ruleFunction
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getModuleRule());
@@ -1016,7 +1068,7 @@ ruleModule returns [EObject current=null]
 						add(
 							$current,
 							"functions",
-							lv_functions_14_0,
+							lv_functions_16_0,
 							"org.rsaml.text.RsamlText.Function");
 						afterParserOrEnumRuleCall();
 					}
@@ -1026,9 +1078,9 @@ ruleModule returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_5_0());
+						newCompositeNode(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_6_0());
 					}
-					lv_ports_15_0=rulePort
+					lv_ports_17_0=rulePort
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getModuleRule());
@@ -1036,7 +1088,7 @@ ruleModule returns [EObject current=null]
 						add(
 							$current,
 							"ports",
-							lv_ports_15_0,
+							lv_ports_17_0,
 							"org.rsaml.text.RsamlText.Port");
 						afterParserOrEnumRuleCall();
 					}
@@ -1046,9 +1098,9 @@ ruleModule returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_6_0());
+						newCompositeNode(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_7_0());
 					}
-					lv_inhibitors_16_0=ruleInhibitor
+					lv_inhibitors_18_0=ruleInhibitor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getModuleRule());
@@ -1056,7 +1108,7 @@ ruleModule returns [EObject current=null]
 						add(
 							$current,
 							"inhibitors",
-							lv_inhibitors_16_0,
+							lv_inhibitors_18_0,
 							"org.rsaml.text.RsamlText.Inhibitor");
 						afterParserOrEnumRuleCall();
 					}
@@ -1066,9 +1118,9 @@ ruleModule returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_7_0());
+						newCompositeNode(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_8_0());
 					}
-					lv_suppressors_17_0=ruleSuppressor
+					lv_suppressors_19_0=ruleSuppressor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getModuleRule());
@@ -1076,16 +1128,16 @@ ruleModule returns [EObject current=null]
 						add(
 							$current,
 							"suppressors",
-							lv_suppressors_17_0,
+							lv_suppressors_19_0,
 							"org.rsaml.text.RsamlText.Suppressor");
 						afterParserOrEnumRuleCall();
 					}
 				)
 			)
 		)*
-		otherlv_18='}'
+		otherlv_20='}'
 		{
-			newLeafNode(otherlv_18, grammarAccess.getModuleAccess().getRightCurlyBracketKeyword_5());
+			newLeafNode(otherlv_20, grammarAccess.getModuleAccess().getRightCurlyBracketKeyword_5());
 		}
 	)
 ;
@@ -4335,196 +4387,214 @@ ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()
 			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_63());
 		}
 		    |
+		kw='lifecycle'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLifecycleKeyword_64());
+		}
+		    |
 		kw='centralized'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_64());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_65());
 		}
 		    |
 		kw='hierarchical'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_65());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_66());
 		}
 		    |
 		kw='behavioral'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_66());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_67());
 		}
 		    |
 		kw='hybrid'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_67());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_68());
 		}
 		    |
 		kw='other'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_68());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_69());
 		}
 		    |
 		kw='simple'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_69());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_70());
 		}
 		    |
 		kw='realTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_70());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_71());
 		}
 		    |
 		kw='periodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_71());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_72());
 		}
 		    |
 		kw='sporadic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_72());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_73());
 		}
 		    |
 		kw='aperiodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_73());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_74());
 		}
 		    |
 		kw='ns'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_74());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_75());
 		}
 		    |
 		kw='us'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_75());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_76());
 		}
 		    |
 		kw='ms'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_76());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_77());
 		}
 		    |
 		kw='s'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_77());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_78());
 		}
 		    |
 		kw='synchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_78());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_79());
 		}
 		    |
 		kw='asynchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_79());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_80());
 		}
 		    |
 		kw='FIFO'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_80());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_81());
 		}
 		    |
 		kw='SJF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_81());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_82());
 		}
 		    |
 		kw='RR'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_82());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_83());
 		}
 		    |
 		kw='RM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_83());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_84());
 		}
 		    |
 		kw='DM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_84());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_85());
 		}
 		    |
 		kw='EDF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_85());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_86());
 		}
 		    |
 		kw='LLF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_86());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_87());
 		}
 		    |
 		kw='OTHER'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_87());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_88());
 		}
 		    |
 		kw='numeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_88());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_89());
 		}
 		    |
 		kw='alphanumeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_89());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_90());
 		}
 		    |
 		kw='boolean'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_90());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_91());
 		}
 		    |
 		kw='structured'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_91());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_92());
 		}
 		    |
 		kw='reactionTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_92());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_93());
 		}
 		    |
 		kw='dataAge'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_93());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_94());
+		}
+		    |
+		kw='plain'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlainKeyword_95());
+		}
+		    |
+		kw='managed'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getManagedKeyword_96());
 		}
 		    |
 		kw='NaN'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_94());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_97());
 		}
 		    |
 		kw='Infinity'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_95());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_98());
 		}
 	)
 ;
@@ -4900,6 +4970,33 @@ ruleDataType returns [Enumerator current=null]
 			{
 				$current = grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
 				newLeafNode(enumLiteral_3, grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3());
+			}
+		)
+	)
+;
+
+// Rule NodeLifecycle
+ruleNodeLifecycle returns [Enumerator current=null]
+@init {
+	enterRule();
+}
+@after {
+	leaveRule();
+}:
+	(
+		(
+			enumLiteral_0='plain'
+			{
+				$current = grammarAccess.getNodeLifecycleAccess().getPlainEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
+				newLeafNode(enumLiteral_0, grammarAccess.getNodeLifecycleAccess().getPlainEnumLiteralDeclaration_0());
+			}
+		)
+		    |
+		(
+			enumLiteral_1='managed'
+			{
+				$current = grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
+				newLeafNode(enumLiteral_1, grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1());
 			}
 		)
 	)

@@ -22,7 +22,7 @@ import java.util.ArrayList;
 @SuppressWarnings("all")
 public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final String[] tokenNames = new String[] {
-        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'topic'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'host'", "'linkLatency'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'NaN'", "'Infinity'", "'-'"
+        "<invalid>", "<EOR>", "<DOWN>", "<UP>", "RULE_STRING", "RULE_ID", "RULE_NUMBER", "RULE_ML_COMMENT", "RULE_SL_COMMENT", "RULE_WS", "RULE_ANY_OTHER", "'architecture'", "'{'", "'category'", "'declaredLayers'", "'lifecycle'", "'}'", "'description'", "'unit'", "'type'", "'execType'", "'period'", "'deadline'", "'wcet'", "'layer'", "'level'", "'maxExecTime'", "'module'", "'sensors'", "','", "'actuators'", "'function'", "'synchroType'", "'schedPolicy'", "'otherPolicy'", "'action'", "'rtAction'", "'start'", "'input'", "'output'", "'dataType'", "'messageType'", "'topic'", "'connect'", "'->'", "'inhibitor'", "'trigger'", "'target'", "'duration'", "'suppressor'", "'sensor'", "'kind'", "'actuator'", "'mission'", "'goal'", "'priority'", "'plan'", "'achieves'", "'activity'", "'actions'", "'supervisor'", "'plans'", "'realisedBy'", "'order'", "'issuer'", "'receiver'", "'requests'", "'database'", "'knowledge'", "'usedBy'", "'processor'", "'core'", "'host'", "'linkLatency'", "'modules'", "'latency'", "'from'", "'to'", "'via'", "'maxLatency'", "'.'", "'centralized'", "'hierarchical'", "'behavioral'", "'hybrid'", "'other'", "'simple'", "'realTime'", "'periodic'", "'sporadic'", "'aperiodic'", "'ns'", "'us'", "'ms'", "'s'", "'synchronous'", "'asynchronous'", "'FIFO'", "'SJF'", "'RR'", "'RM'", "'DM'", "'EDF'", "'LLF'", "'OTHER'", "'numeric'", "'alphanumeric'", "'boolean'", "'structured'", "'reactionTime'", "'dataAge'", "'plain'", "'managed'", "'NaN'", "'Infinity'", "'-'"
     };
     public static final int T__50=50;
     public static final int T__59=59;
@@ -107,8 +107,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final int T__78=78;
     public static final int T__79=79;
     public static final int T__73=73;
+    public static final int T__115=115;
     public static final int EOF=-1;
     public static final int T__74=74;
+    public static final int T__114=114;
     public static final int T__75=75;
     public static final int T__76=76;
     public static final int T__80=80;
@@ -116,6 +118,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     public static final int T__81=81;
     public static final int T__110=110;
     public static final int T__82=82;
+    public static final int T__113=113;
     public static final int T__83=83;
     public static final int T__112=112;
     public static final int RULE_WS=9;
@@ -211,7 +214,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleArchitecture"
-    // InternalRsamlText.g:72:1: ruleArchitecture returns [EObject current=null] : ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | ( (lv_layers_9_0= ruleLayer ) ) | ( (lv_connections_10_0= ruleConnection ) ) | ( (lv_sensors_11_0= ruleSensor ) ) | ( (lv_actuators_12_0= ruleActuator ) ) | ( (lv_missions_13_0= ruleMission ) ) | ( (lv_supervisors_14_0= ruleSupervisor ) ) | ( (lv_orders_15_0= ruleOrder ) ) | ( (lv_databases_16_0= ruleDatabase ) ) | ( (lv_processors_17_0= ruleProcessor ) ) | ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) ) )* otherlv_19= '}' ) ;
+    // InternalRsamlText.g:72:1: ruleArchitecture returns [EObject current=null] : ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) ) | ( (lv_layers_11_0= ruleLayer ) ) | ( (lv_connections_12_0= ruleConnection ) ) | ( (lv_sensors_13_0= ruleSensor ) ) | ( (lv_actuators_14_0= ruleActuator ) ) | ( (lv_missions_15_0= ruleMission ) ) | ( (lv_supervisors_16_0= ruleSupervisor ) ) | ( (lv_orders_17_0= ruleOrder ) ) | ( (lv_databases_18_0= ruleDatabase ) ) | ( (lv_processors_19_0= ruleProcessor ) ) | ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) ) )* otherlv_21= '}' ) ;
     public final EObject ruleArchitecture() throws RecognitionException {
         EObject current = null;
 
@@ -219,7 +222,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         Token otherlv_3=null;
         Token otherlv_5=null;
         Token otherlv_7=null;
-        Token otherlv_19=null;
+        Token otherlv_9=null;
+        Token otherlv_21=null;
         AntlrDatatypeRuleToken lv_name_2_0 = null;
 
         EObject this_Described_4 = null;
@@ -228,36 +232,38 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
         AntlrDatatypeRuleToken lv_declaredLayers_8_0 = null;
 
-        EObject lv_layers_9_0 = null;
+        Enumerator lv_lifecycle_10_0 = null;
 
-        EObject lv_connections_10_0 = null;
+        EObject lv_layers_11_0 = null;
 
-        EObject lv_sensors_11_0 = null;
+        EObject lv_connections_12_0 = null;
 
-        EObject lv_actuators_12_0 = null;
+        EObject lv_sensors_13_0 = null;
 
-        EObject lv_missions_13_0 = null;
+        EObject lv_actuators_14_0 = null;
 
-        EObject lv_supervisors_14_0 = null;
+        EObject lv_missions_15_0 = null;
 
-        EObject lv_orders_15_0 = null;
+        EObject lv_supervisors_16_0 = null;
 
-        EObject lv_databases_16_0 = null;
+        EObject lv_orders_17_0 = null;
 
-        EObject lv_processors_17_0 = null;
+        EObject lv_databases_18_0 = null;
 
-        EObject lv_latencyRequirements_18_0 = null;
+        EObject lv_processors_19_0 = null;
+
+        EObject lv_latencyRequirements_20_0 = null;
 
 
 
         	enterRule();
 
         try {
-            // InternalRsamlText.g:78:2: ( ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | ( (lv_layers_9_0= ruleLayer ) ) | ( (lv_connections_10_0= ruleConnection ) ) | ( (lv_sensors_11_0= ruleSensor ) ) | ( (lv_actuators_12_0= ruleActuator ) ) | ( (lv_missions_13_0= ruleMission ) ) | ( (lv_supervisors_14_0= ruleSupervisor ) ) | ( (lv_orders_15_0= ruleOrder ) ) | ( (lv_databases_16_0= ruleDatabase ) ) | ( (lv_processors_17_0= ruleProcessor ) ) | ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) ) )* otherlv_19= '}' ) )
-            // InternalRsamlText.g:79:2: ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | ( (lv_layers_9_0= ruleLayer ) ) | ( (lv_connections_10_0= ruleConnection ) ) | ( (lv_sensors_11_0= ruleSensor ) ) | ( (lv_actuators_12_0= ruleActuator ) ) | ( (lv_missions_13_0= ruleMission ) ) | ( (lv_supervisors_14_0= ruleSupervisor ) ) | ( (lv_orders_15_0= ruleOrder ) ) | ( (lv_databases_16_0= ruleDatabase ) ) | ( (lv_processors_17_0= ruleProcessor ) ) | ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) ) )* otherlv_19= '}' )
+            // InternalRsamlText.g:78:2: ( ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) ) | ( (lv_layers_11_0= ruleLayer ) ) | ( (lv_connections_12_0= ruleConnection ) ) | ( (lv_sensors_13_0= ruleSensor ) ) | ( (lv_actuators_14_0= ruleActuator ) ) | ( (lv_missions_15_0= ruleMission ) ) | ( (lv_supervisors_16_0= ruleSupervisor ) ) | ( (lv_orders_17_0= ruleOrder ) ) | ( (lv_databases_18_0= ruleDatabase ) ) | ( (lv_processors_19_0= ruleProcessor ) ) | ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) ) )* otherlv_21= '}' ) )
+            // InternalRsamlText.g:79:2: ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) ) | ( (lv_layers_11_0= ruleLayer ) ) | ( (lv_connections_12_0= ruleConnection ) ) | ( (lv_sensors_13_0= ruleSensor ) ) | ( (lv_actuators_14_0= ruleActuator ) ) | ( (lv_missions_15_0= ruleMission ) ) | ( (lv_supervisors_16_0= ruleSupervisor ) ) | ( (lv_orders_17_0= ruleOrder ) ) | ( (lv_databases_18_0= ruleDatabase ) ) | ( (lv_processors_19_0= ruleProcessor ) ) | ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) ) )* otherlv_21= '}' )
             {
-            // InternalRsamlText.g:79:2: ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | ( (lv_layers_9_0= ruleLayer ) ) | ( (lv_connections_10_0= ruleConnection ) ) | ( (lv_sensors_11_0= ruleSensor ) ) | ( (lv_actuators_12_0= ruleActuator ) ) | ( (lv_missions_13_0= ruleMission ) ) | ( (lv_supervisors_14_0= ruleSupervisor ) ) | ( (lv_orders_15_0= ruleOrder ) ) | ( (lv_databases_16_0= ruleDatabase ) ) | ( (lv_processors_17_0= ruleProcessor ) ) | ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) ) )* otherlv_19= '}' )
-            // InternalRsamlText.g:80:3: () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | ( (lv_layers_9_0= ruleLayer ) ) | ( (lv_connections_10_0= ruleConnection ) ) | ( (lv_sensors_11_0= ruleSensor ) ) | ( (lv_actuators_12_0= ruleActuator ) ) | ( (lv_missions_13_0= ruleMission ) ) | ( (lv_supervisors_14_0= ruleSupervisor ) ) | ( (lv_orders_15_0= ruleOrder ) ) | ( (lv_databases_16_0= ruleDatabase ) ) | ( (lv_processors_17_0= ruleProcessor ) ) | ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) ) )* otherlv_19= '}'
+            // InternalRsamlText.g:79:2: ( () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) ) | ( (lv_layers_11_0= ruleLayer ) ) | ( (lv_connections_12_0= ruleConnection ) ) | ( (lv_sensors_13_0= ruleSensor ) ) | ( (lv_actuators_14_0= ruleActuator ) ) | ( (lv_missions_15_0= ruleMission ) ) | ( (lv_supervisors_16_0= ruleSupervisor ) ) | ( (lv_orders_17_0= ruleOrder ) ) | ( (lv_databases_18_0= ruleDatabase ) ) | ( (lv_processors_19_0= ruleProcessor ) ) | ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) ) )* otherlv_21= '}' )
+            // InternalRsamlText.g:80:3: () otherlv_1= 'architecture' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) ) | ( (lv_layers_11_0= ruleLayer ) ) | ( (lv_connections_12_0= ruleConnection ) ) | ( (lv_sensors_13_0= ruleSensor ) ) | ( (lv_actuators_14_0= ruleActuator ) ) | ( (lv_missions_15_0= ruleMission ) ) | ( (lv_supervisors_16_0= ruleSupervisor ) ) | ( (lv_orders_17_0= ruleOrder ) ) | ( (lv_databases_18_0= ruleDatabase ) ) | ( (lv_processors_19_0= ruleProcessor ) ) | ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) ) )* otherlv_21= '}'
             {
             // InternalRsamlText.g:80:3: ()
             // InternalRsamlText.g:81:4: 
@@ -278,7 +284,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             int alt1=2;
             int LA1_0 = input.LA(1);
 
-            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=14)||(LA1_0>=16 && LA1_0<=27)||(LA1_0>=29 && LA1_0<=42)||(LA1_0>=44 && LA1_0<=78)||(LA1_0>=80 && LA1_0<=111)) ) {
+            if ( ((LA1_0>=RULE_STRING && LA1_0<=RULE_ID)||LA1_0==11||(LA1_0>=13 && LA1_0<=15)||(LA1_0>=17 && LA1_0<=28)||(LA1_0>=30 && LA1_0<=43)||(LA1_0>=45 && LA1_0<=79)||(LA1_0>=81 && LA1_0<=114)) ) {
                 alt1=1;
             }
             switch (alt1) {
@@ -320,12 +326,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             			newLeafNode(otherlv_3, grammarAccess.getArchitectureAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:114:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | ( (lv_layers_9_0= ruleLayer ) ) | ( (lv_connections_10_0= ruleConnection ) ) | ( (lv_sensors_11_0= ruleSensor ) ) | ( (lv_actuators_12_0= ruleActuator ) ) | ( (lv_missions_13_0= ruleMission ) ) | ( (lv_supervisors_14_0= ruleSupervisor ) ) | ( (lv_orders_15_0= ruleOrder ) ) | ( (lv_databases_16_0= ruleDatabase ) ) | ( (lv_processors_17_0= ruleProcessor ) ) | ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) ) )*
+            // InternalRsamlText.g:114:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'category' ( (lv_category_6_0= ruleArchitectureCategory ) ) ) | (otherlv_7= 'declaredLayers' ( (lv_declaredLayers_8_0= ruleInteger ) ) ) | (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) ) | ( (lv_layers_11_0= ruleLayer ) ) | ( (lv_connections_12_0= ruleConnection ) ) | ( (lv_sensors_13_0= ruleSensor ) ) | ( (lv_actuators_14_0= ruleActuator ) ) | ( (lv_missions_15_0= ruleMission ) ) | ( (lv_supervisors_16_0= ruleSupervisor ) ) | ( (lv_orders_17_0= ruleOrder ) ) | ( (lv_databases_18_0= ruleDatabase ) ) | ( (lv_processors_19_0= ruleProcessor ) ) | ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) ) )*
             loop2:
             do {
-                int alt2=14;
+                int alt2=15;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt2=1;
                     }
@@ -340,22 +346,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt2=3;
                     }
                     break;
-                case 23:
+                case 15:
                     {
                     alt2=4;
                     }
                     break;
-                case 42:
+                case 24:
                     {
                     alt2=5;
                     }
                     break;
-                case 49:
+                case 43:
                     {
                     alt2=6;
                     }
                     break;
-                case 51:
+                case 50:
                     {
                     alt2=7;
                     }
@@ -365,29 +371,34 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     alt2=8;
                     }
                     break;
-                case 59:
+                case 53:
                     {
                     alt2=9;
                     }
                     break;
-                case 62:
+                case 60:
                     {
                     alt2=10;
                     }
                     break;
-                case 66:
+                case 63:
                     {
                     alt2=11;
                     }
                     break;
-                case 69:
+                case 67:
                     {
                     alt2=12;
                     }
                     break;
-                case 74:
+                case 70:
                     {
                     alt2=13;
+                    }
+                    break;
+                case 75:
+                    {
+                    alt2=14;
                     }
                     break;
 
@@ -510,19 +521,66 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:179:4: ( (lv_layers_9_0= ruleLayer ) )
+            	    // InternalRsamlText.g:179:4: (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) )
             	    {
-            	    // InternalRsamlText.g:179:4: ( (lv_layers_9_0= ruleLayer ) )
-            	    // InternalRsamlText.g:180:5: (lv_layers_9_0= ruleLayer )
+            	    // InternalRsamlText.g:179:4: (otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) ) )
+            	    // InternalRsamlText.g:180:5: otherlv_9= 'lifecycle' ( (lv_lifecycle_10_0= ruleNodeLifecycle ) )
             	    {
-            	    // InternalRsamlText.g:180:5: (lv_layers_9_0= ruleLayer )
-            	    // InternalRsamlText.g:181:6: lv_layers_9_0= ruleLayer
+            	    otherlv_9=(Token)match(input,15,FOLLOW_8); 
+
+            	    					newLeafNode(otherlv_9, grammarAccess.getArchitectureAccess().getLifecycleKeyword_4_3_0());
+            	    				
+            	    // InternalRsamlText.g:184:5: ( (lv_lifecycle_10_0= ruleNodeLifecycle ) )
+            	    // InternalRsamlText.g:185:6: (lv_lifecycle_10_0= ruleNodeLifecycle )
+            	    {
+            	    // InternalRsamlText.g:185:6: (lv_lifecycle_10_0= ruleNodeLifecycle )
+            	    // InternalRsamlText.g:186:7: lv_lifecycle_10_0= ruleNodeLifecycle
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_3_0());
+            	    							newCompositeNode(grammarAccess.getArchitectureAccess().getLifecycleNodeLifecycleEnumRuleCall_4_3_1_0());
+            	    						
+            	    pushFollow(FOLLOW_5);
+            	    lv_lifecycle_10_0=ruleNodeLifecycle();
+
+            	    state._fsp--;
+
+
+            	    							if (current==null) {
+            	    								current = createModelElementForParent(grammarAccess.getArchitectureRule());
+            	    							}
+            	    							set(
+            	    								current,
+            	    								"lifecycle",
+            	    								lv_lifecycle_10_0,
+            	    								"org.rsaml.text.RsamlText.NodeLifecycle");
+            	    							afterParserOrEnumRuleCall();
+            	    						
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+            	    break;
+            	case 5 :
+            	    // InternalRsamlText.g:205:4: ( (lv_layers_11_0= ruleLayer ) )
+            	    {
+            	    // InternalRsamlText.g:205:4: ( (lv_layers_11_0= ruleLayer ) )
+            	    // InternalRsamlText.g:206:5: (lv_layers_11_0= ruleLayer )
+            	    {
+            	    // InternalRsamlText.g:206:5: (lv_layers_11_0= ruleLayer )
+            	    // InternalRsamlText.g:207:6: lv_layers_11_0= ruleLayer
+            	    {
+
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_layers_9_0=ruleLayer();
+            	    lv_layers_11_0=ruleLayer();
 
             	    state._fsp--;
 
@@ -533,7 +591,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"layers",
-            	    							lv_layers_9_0,
+            	    							lv_layers_11_0,
             	    							"org.rsaml.text.RsamlText.Layer");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -546,20 +604,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 5 :
-            	    // InternalRsamlText.g:199:4: ( (lv_connections_10_0= ruleConnection ) )
+            	case 6 :
+            	    // InternalRsamlText.g:225:4: ( (lv_connections_12_0= ruleConnection ) )
             	    {
-            	    // InternalRsamlText.g:199:4: ( (lv_connections_10_0= ruleConnection ) )
-            	    // InternalRsamlText.g:200:5: (lv_connections_10_0= ruleConnection )
+            	    // InternalRsamlText.g:225:4: ( (lv_connections_12_0= ruleConnection ) )
+            	    // InternalRsamlText.g:226:5: (lv_connections_12_0= ruleConnection )
             	    {
-            	    // InternalRsamlText.g:200:5: (lv_connections_10_0= ruleConnection )
-            	    // InternalRsamlText.g:201:6: lv_connections_10_0= ruleConnection
+            	    // InternalRsamlText.g:226:5: (lv_connections_12_0= ruleConnection )
+            	    // InternalRsamlText.g:227:6: lv_connections_12_0= ruleConnection
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_4_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_connections_10_0=ruleConnection();
+            	    lv_connections_12_0=ruleConnection();
 
             	    state._fsp--;
 
@@ -570,7 +628,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"connections",
-            	    							lv_connections_10_0,
+            	    							lv_connections_12_0,
             	    							"org.rsaml.text.RsamlText.Connection");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -583,20 +641,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 6 :
-            	    // InternalRsamlText.g:219:4: ( (lv_sensors_11_0= ruleSensor ) )
+            	case 7 :
+            	    // InternalRsamlText.g:245:4: ( (lv_sensors_13_0= ruleSensor ) )
             	    {
-            	    // InternalRsamlText.g:219:4: ( (lv_sensors_11_0= ruleSensor ) )
-            	    // InternalRsamlText.g:220:5: (lv_sensors_11_0= ruleSensor )
+            	    // InternalRsamlText.g:245:4: ( (lv_sensors_13_0= ruleSensor ) )
+            	    // InternalRsamlText.g:246:5: (lv_sensors_13_0= ruleSensor )
             	    {
-            	    // InternalRsamlText.g:220:5: (lv_sensors_11_0= ruleSensor )
-            	    // InternalRsamlText.g:221:6: lv_sensors_11_0= ruleSensor
+            	    // InternalRsamlText.g:246:5: (lv_sensors_13_0= ruleSensor )
+            	    // InternalRsamlText.g:247:6: lv_sensors_13_0= ruleSensor
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_5_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_sensors_11_0=ruleSensor();
+            	    lv_sensors_13_0=ruleSensor();
 
             	    state._fsp--;
 
@@ -607,7 +665,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"sensors",
-            	    							lv_sensors_11_0,
+            	    							lv_sensors_13_0,
             	    							"org.rsaml.text.RsamlText.Sensor");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -620,20 +678,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 7 :
-            	    // InternalRsamlText.g:239:4: ( (lv_actuators_12_0= ruleActuator ) )
+            	case 8 :
+            	    // InternalRsamlText.g:265:4: ( (lv_actuators_14_0= ruleActuator ) )
             	    {
-            	    // InternalRsamlText.g:239:4: ( (lv_actuators_12_0= ruleActuator ) )
-            	    // InternalRsamlText.g:240:5: (lv_actuators_12_0= ruleActuator )
+            	    // InternalRsamlText.g:265:4: ( (lv_actuators_14_0= ruleActuator ) )
+            	    // InternalRsamlText.g:266:5: (lv_actuators_14_0= ruleActuator )
             	    {
-            	    // InternalRsamlText.g:240:5: (lv_actuators_12_0= ruleActuator )
-            	    // InternalRsamlText.g:241:6: lv_actuators_12_0= ruleActuator
+            	    // InternalRsamlText.g:266:5: (lv_actuators_14_0= ruleActuator )
+            	    // InternalRsamlText.g:267:6: lv_actuators_14_0= ruleActuator
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_6_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_actuators_12_0=ruleActuator();
+            	    lv_actuators_14_0=ruleActuator();
 
             	    state._fsp--;
 
@@ -644,7 +702,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"actuators",
-            	    							lv_actuators_12_0,
+            	    							lv_actuators_14_0,
             	    							"org.rsaml.text.RsamlText.Actuator");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -657,20 +715,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 8 :
-            	    // InternalRsamlText.g:259:4: ( (lv_missions_13_0= ruleMission ) )
+            	case 9 :
+            	    // InternalRsamlText.g:285:4: ( (lv_missions_15_0= ruleMission ) )
             	    {
-            	    // InternalRsamlText.g:259:4: ( (lv_missions_13_0= ruleMission ) )
-            	    // InternalRsamlText.g:260:5: (lv_missions_13_0= ruleMission )
+            	    // InternalRsamlText.g:285:4: ( (lv_missions_15_0= ruleMission ) )
+            	    // InternalRsamlText.g:286:5: (lv_missions_15_0= ruleMission )
             	    {
-            	    // InternalRsamlText.g:260:5: (lv_missions_13_0= ruleMission )
-            	    // InternalRsamlText.g:261:6: lv_missions_13_0= ruleMission
+            	    // InternalRsamlText.g:286:5: (lv_missions_15_0= ruleMission )
+            	    // InternalRsamlText.g:287:6: lv_missions_15_0= ruleMission
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_7_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_missions_13_0=ruleMission();
+            	    lv_missions_15_0=ruleMission();
 
             	    state._fsp--;
 
@@ -681,7 +739,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"missions",
-            	    							lv_missions_13_0,
+            	    							lv_missions_15_0,
             	    							"org.rsaml.text.RsamlText.Mission");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -694,20 +752,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 9 :
-            	    // InternalRsamlText.g:279:4: ( (lv_supervisors_14_0= ruleSupervisor ) )
+            	case 10 :
+            	    // InternalRsamlText.g:305:4: ( (lv_supervisors_16_0= ruleSupervisor ) )
             	    {
-            	    // InternalRsamlText.g:279:4: ( (lv_supervisors_14_0= ruleSupervisor ) )
-            	    // InternalRsamlText.g:280:5: (lv_supervisors_14_0= ruleSupervisor )
+            	    // InternalRsamlText.g:305:4: ( (lv_supervisors_16_0= ruleSupervisor ) )
+            	    // InternalRsamlText.g:306:5: (lv_supervisors_16_0= ruleSupervisor )
             	    {
-            	    // InternalRsamlText.g:280:5: (lv_supervisors_14_0= ruleSupervisor )
-            	    // InternalRsamlText.g:281:6: lv_supervisors_14_0= ruleSupervisor
+            	    // InternalRsamlText.g:306:5: (lv_supervisors_16_0= ruleSupervisor )
+            	    // InternalRsamlText.g:307:6: lv_supervisors_16_0= ruleSupervisor
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_8_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_supervisors_14_0=ruleSupervisor();
+            	    lv_supervisors_16_0=ruleSupervisor();
 
             	    state._fsp--;
 
@@ -718,7 +776,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"supervisors",
-            	    							lv_supervisors_14_0,
+            	    							lv_supervisors_16_0,
             	    							"org.rsaml.text.RsamlText.Supervisor");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -731,20 +789,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 10 :
-            	    // InternalRsamlText.g:299:4: ( (lv_orders_15_0= ruleOrder ) )
+            	case 11 :
+            	    // InternalRsamlText.g:325:4: ( (lv_orders_17_0= ruleOrder ) )
             	    {
-            	    // InternalRsamlText.g:299:4: ( (lv_orders_15_0= ruleOrder ) )
-            	    // InternalRsamlText.g:300:5: (lv_orders_15_0= ruleOrder )
+            	    // InternalRsamlText.g:325:4: ( (lv_orders_17_0= ruleOrder ) )
+            	    // InternalRsamlText.g:326:5: (lv_orders_17_0= ruleOrder )
             	    {
-            	    // InternalRsamlText.g:300:5: (lv_orders_15_0= ruleOrder )
-            	    // InternalRsamlText.g:301:6: lv_orders_15_0= ruleOrder
+            	    // InternalRsamlText.g:326:5: (lv_orders_17_0= ruleOrder )
+            	    // InternalRsamlText.g:327:6: lv_orders_17_0= ruleOrder
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_9_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_orders_15_0=ruleOrder();
+            	    lv_orders_17_0=ruleOrder();
 
             	    state._fsp--;
 
@@ -755,7 +813,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"orders",
-            	    							lv_orders_15_0,
+            	    							lv_orders_17_0,
             	    							"org.rsaml.text.RsamlText.Order");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -768,20 +826,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 11 :
-            	    // InternalRsamlText.g:319:4: ( (lv_databases_16_0= ruleDatabase ) )
+            	case 12 :
+            	    // InternalRsamlText.g:345:4: ( (lv_databases_18_0= ruleDatabase ) )
             	    {
-            	    // InternalRsamlText.g:319:4: ( (lv_databases_16_0= ruleDatabase ) )
-            	    // InternalRsamlText.g:320:5: (lv_databases_16_0= ruleDatabase )
+            	    // InternalRsamlText.g:345:4: ( (lv_databases_18_0= ruleDatabase ) )
+            	    // InternalRsamlText.g:346:5: (lv_databases_18_0= ruleDatabase )
             	    {
-            	    // InternalRsamlText.g:320:5: (lv_databases_16_0= ruleDatabase )
-            	    // InternalRsamlText.g:321:6: lv_databases_16_0= ruleDatabase
+            	    // InternalRsamlText.g:346:5: (lv_databases_18_0= ruleDatabase )
+            	    // InternalRsamlText.g:347:6: lv_databases_18_0= ruleDatabase
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_10_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_databases_16_0=ruleDatabase();
+            	    lv_databases_18_0=ruleDatabase();
 
             	    state._fsp--;
 
@@ -792,7 +850,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"databases",
-            	    							lv_databases_16_0,
+            	    							lv_databases_18_0,
             	    							"org.rsaml.text.RsamlText.Database");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -805,20 +863,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 12 :
-            	    // InternalRsamlText.g:339:4: ( (lv_processors_17_0= ruleProcessor ) )
+            	case 13 :
+            	    // InternalRsamlText.g:365:4: ( (lv_processors_19_0= ruleProcessor ) )
             	    {
-            	    // InternalRsamlText.g:339:4: ( (lv_processors_17_0= ruleProcessor ) )
-            	    // InternalRsamlText.g:340:5: (lv_processors_17_0= ruleProcessor )
+            	    // InternalRsamlText.g:365:4: ( (lv_processors_19_0= ruleProcessor ) )
+            	    // InternalRsamlText.g:366:5: (lv_processors_19_0= ruleProcessor )
             	    {
-            	    // InternalRsamlText.g:340:5: (lv_processors_17_0= ruleProcessor )
-            	    // InternalRsamlText.g:341:6: lv_processors_17_0= ruleProcessor
+            	    // InternalRsamlText.g:366:5: (lv_processors_19_0= ruleProcessor )
+            	    // InternalRsamlText.g:367:6: lv_processors_19_0= ruleProcessor
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_11_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_processors_17_0=ruleProcessor();
+            	    lv_processors_19_0=ruleProcessor();
 
             	    state._fsp--;
 
@@ -829,7 +887,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"processors",
-            	    							lv_processors_17_0,
+            	    							lv_processors_19_0,
             	    							"org.rsaml.text.RsamlText.Processor");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -842,20 +900,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 13 :
-            	    // InternalRsamlText.g:359:4: ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) )
+            	case 14 :
+            	    // InternalRsamlText.g:385:4: ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) )
             	    {
-            	    // InternalRsamlText.g:359:4: ( (lv_latencyRequirements_18_0= ruleLatencyRequirement ) )
-            	    // InternalRsamlText.g:360:5: (lv_latencyRequirements_18_0= ruleLatencyRequirement )
+            	    // InternalRsamlText.g:385:4: ( (lv_latencyRequirements_20_0= ruleLatencyRequirement ) )
+            	    // InternalRsamlText.g:386:5: (lv_latencyRequirements_20_0= ruleLatencyRequirement )
             	    {
-            	    // InternalRsamlText.g:360:5: (lv_latencyRequirements_18_0= ruleLatencyRequirement )
-            	    // InternalRsamlText.g:361:6: lv_latencyRequirements_18_0= ruleLatencyRequirement
+            	    // InternalRsamlText.g:386:5: (lv_latencyRequirements_20_0= ruleLatencyRequirement )
+            	    // InternalRsamlText.g:387:6: lv_latencyRequirements_20_0= ruleLatencyRequirement
             	    {
 
-            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0());
+            	    						newCompositeNode(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0());
             	    					
             	    pushFollow(FOLLOW_5);
-            	    lv_latencyRequirements_18_0=ruleLatencyRequirement();
+            	    lv_latencyRequirements_20_0=ruleLatencyRequirement();
 
             	    state._fsp--;
 
@@ -866,7 +924,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"latencyRequirements",
-            	    							lv_latencyRequirements_18_0,
+            	    							lv_latencyRequirements_20_0,
             	    							"org.rsaml.text.RsamlText.LatencyRequirement");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -885,9 +943,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_19=(Token)match(input,15,FOLLOW_2); 
+            otherlv_21=(Token)match(input,16,FOLLOW_2); 
 
-            			newLeafNode(otherlv_19, grammarAccess.getArchitectureAccess().getRightCurlyBracketKeyword_5());
+            			newLeafNode(otherlv_21, grammarAccess.getArchitectureAccess().getRightCurlyBracketKeyword_5());
             		
 
             }
@@ -912,7 +970,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDescribed"
-    // InternalRsamlText.g:388:1: ruleDescribed[EObject in_current] returns [EObject current=in_current] : (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) ) ;
+    // InternalRsamlText.g:414:1: ruleDescribed[EObject in_current] returns [EObject current=in_current] : (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) ) ;
     public final EObject ruleDescribed(EObject in_current) throws RecognitionException {
         EObject current = in_current;
 
@@ -923,21 +981,21 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:394:2: ( (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) ) )
-            // InternalRsamlText.g:395:2: (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) )
+            // InternalRsamlText.g:420:2: ( (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) ) )
+            // InternalRsamlText.g:421:2: (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) )
             {
-            // InternalRsamlText.g:395:2: (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) )
-            // InternalRsamlText.g:396:3: otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) )
+            // InternalRsamlText.g:421:2: (otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) ) )
+            // InternalRsamlText.g:422:3: otherlv_0= 'description' ( (lv_description_1_0= RULE_STRING ) )
             {
-            otherlv_0=(Token)match(input,16,FOLLOW_8); 
+            otherlv_0=(Token)match(input,17,FOLLOW_9); 
 
             			newLeafNode(otherlv_0, grammarAccess.getDescribedAccess().getDescriptionKeyword_0());
             		
-            // InternalRsamlText.g:400:3: ( (lv_description_1_0= RULE_STRING ) )
-            // InternalRsamlText.g:401:4: (lv_description_1_0= RULE_STRING )
+            // InternalRsamlText.g:426:3: ( (lv_description_1_0= RULE_STRING ) )
+            // InternalRsamlText.g:427:4: (lv_description_1_0= RULE_STRING )
             {
-            // InternalRsamlText.g:401:4: (lv_description_1_0= RULE_STRING )
-            // InternalRsamlText.g:402:5: lv_description_1_0= RULE_STRING
+            // InternalRsamlText.g:427:4: (lv_description_1_0= RULE_STRING )
+            // InternalRsamlText.g:428:5: lv_description_1_0= RULE_STRING
             {
             lv_description_1_0=(Token)match(input,RULE_STRING,FOLLOW_2); 
 
@@ -982,7 +1040,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleUnit"
-    // InternalRsamlText.g:423:1: ruleUnit[EObject in_current] returns [EObject current=in_current] : (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) ) ;
+    // InternalRsamlText.g:449:1: ruleUnit[EObject in_current] returns [EObject current=in_current] : (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) ) ;
     public final EObject ruleUnit(EObject in_current) throws RecognitionException {
         EObject current = in_current;
 
@@ -994,21 +1052,21 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:429:2: ( (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) ) )
-            // InternalRsamlText.g:430:2: (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) )
+            // InternalRsamlText.g:455:2: ( (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) ) )
+            // InternalRsamlText.g:456:2: (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) )
             {
-            // InternalRsamlText.g:430:2: (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) )
-            // InternalRsamlText.g:431:3: otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) )
+            // InternalRsamlText.g:456:2: (otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) ) )
+            // InternalRsamlText.g:457:3: otherlv_0= 'unit' ( (lv_timeUnit_1_0= ruleTimeUnit ) )
             {
-            otherlv_0=(Token)match(input,17,FOLLOW_9); 
+            otherlv_0=(Token)match(input,18,FOLLOW_10); 
 
             			newLeafNode(otherlv_0, grammarAccess.getUnitAccess().getUnitKeyword_0());
             		
-            // InternalRsamlText.g:435:3: ( (lv_timeUnit_1_0= ruleTimeUnit ) )
-            // InternalRsamlText.g:436:4: (lv_timeUnit_1_0= ruleTimeUnit )
+            // InternalRsamlText.g:461:3: ( (lv_timeUnit_1_0= ruleTimeUnit ) )
+            // InternalRsamlText.g:462:4: (lv_timeUnit_1_0= ruleTimeUnit )
             {
-            // InternalRsamlText.g:436:4: (lv_timeUnit_1_0= ruleTimeUnit )
-            // InternalRsamlText.g:437:5: lv_timeUnit_1_0= ruleTimeUnit
+            // InternalRsamlText.g:462:4: (lv_timeUnit_1_0= ruleTimeUnit )
+            // InternalRsamlText.g:463:5: lv_timeUnit_1_0= ruleTimeUnit
             {
 
             					newCompositeNode(grammarAccess.getUnitAccess().getTimeUnitTimeUnitEnumRuleCall_1_0());
@@ -1058,7 +1116,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleRealTime"
-    // InternalRsamlText.g:459:1: ruleRealTime[EObject in_current] returns [EObject current=in_current] : ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] ) ;
+    // InternalRsamlText.g:485:1: ruleRealTime[EObject in_current] returns [EObject current=in_current] : ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] ) ;
     public final EObject ruleRealTime(EObject in_current) throws RecognitionException {
         EObject current = in_current;
 
@@ -1090,38 +1148,38 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:465:2: ( ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] ) )
-            // InternalRsamlText.g:466:2: ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] )
+            // InternalRsamlText.g:491:2: ( ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] ) )
+            // InternalRsamlText.g:492:2: ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] )
             {
-            // InternalRsamlText.g:466:2: ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] )
+            // InternalRsamlText.g:492:2: ( (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) ) | (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) ) | (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) ) | (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) ) | this_Unit_13= ruleUnit[$current] )
             int alt3=6;
             switch ( input.LA(1) ) {
-            case 18:
+            case 19:
                 {
                 alt3=1;
                 }
                 break;
-            case 19:
+            case 20:
                 {
                 alt3=2;
                 }
                 break;
-            case 20:
+            case 21:
                 {
                 alt3=3;
                 }
                 break;
-            case 21:
+            case 22:
                 {
                 alt3=4;
                 }
                 break;
-            case 22:
+            case 23:
                 {
                 alt3=5;
                 }
                 break;
-            case 17:
+            case 18:
                 {
                 alt3=6;
                 }
@@ -1135,20 +1193,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt3) {
                 case 1 :
-                    // InternalRsamlText.g:467:3: (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) )
+                    // InternalRsamlText.g:493:3: (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) )
                     {
-                    // InternalRsamlText.g:467:3: (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) )
-                    // InternalRsamlText.g:468:4: otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) )
+                    // InternalRsamlText.g:493:3: (otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) ) )
+                    // InternalRsamlText.g:494:4: otherlv_0= 'type' ( (lv_type_1_0= ruleElementType ) )
                     {
-                    otherlv_0=(Token)match(input,18,FOLLOW_10); 
+                    otherlv_0=(Token)match(input,19,FOLLOW_11); 
 
                     				newLeafNode(otherlv_0, grammarAccess.getRealTimeAccess().getTypeKeyword_0_0());
                     			
-                    // InternalRsamlText.g:472:4: ( (lv_type_1_0= ruleElementType ) )
-                    // InternalRsamlText.g:473:5: (lv_type_1_0= ruleElementType )
+                    // InternalRsamlText.g:498:4: ( (lv_type_1_0= ruleElementType ) )
+                    // InternalRsamlText.g:499:5: (lv_type_1_0= ruleElementType )
                     {
-                    // InternalRsamlText.g:473:5: (lv_type_1_0= ruleElementType )
-                    // InternalRsamlText.g:474:6: lv_type_1_0= ruleElementType
+                    // InternalRsamlText.g:499:5: (lv_type_1_0= ruleElementType )
+                    // InternalRsamlText.g:500:6: lv_type_1_0= ruleElementType
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getTypeElementTypeEnumRuleCall_0_1_0());
@@ -1182,20 +1240,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:493:3: (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) )
+                    // InternalRsamlText.g:519:3: (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) )
                     {
-                    // InternalRsamlText.g:493:3: (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) )
-                    // InternalRsamlText.g:494:4: otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) )
+                    // InternalRsamlText.g:519:3: (otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) ) )
+                    // InternalRsamlText.g:520:4: otherlv_2= 'execType' ( (lv_execType_3_0= ruleExecutionType ) )
                     {
-                    otherlv_2=(Token)match(input,19,FOLLOW_11); 
+                    otherlv_2=(Token)match(input,20,FOLLOW_12); 
 
                     				newLeafNode(otherlv_2, grammarAccess.getRealTimeAccess().getExecTypeKeyword_1_0());
                     			
-                    // InternalRsamlText.g:498:4: ( (lv_execType_3_0= ruleExecutionType ) )
-                    // InternalRsamlText.g:499:5: (lv_execType_3_0= ruleExecutionType )
+                    // InternalRsamlText.g:524:4: ( (lv_execType_3_0= ruleExecutionType ) )
+                    // InternalRsamlText.g:525:5: (lv_execType_3_0= ruleExecutionType )
                     {
-                    // InternalRsamlText.g:499:5: (lv_execType_3_0= ruleExecutionType )
-                    // InternalRsamlText.g:500:6: lv_execType_3_0= ruleExecutionType
+                    // InternalRsamlText.g:525:5: (lv_execType_3_0= ruleExecutionType )
+                    // InternalRsamlText.g:526:6: lv_execType_3_0= ruleExecutionType
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getExecTypeExecutionTypeEnumRuleCall_1_1_0());
@@ -1229,25 +1287,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:519:3: (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) )
+                    // InternalRsamlText.g:545:3: (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) )
                     {
-                    // InternalRsamlText.g:519:3: (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) )
-                    // InternalRsamlText.g:520:4: otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) )
+                    // InternalRsamlText.g:545:3: (otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) ) )
+                    // InternalRsamlText.g:546:4: otherlv_4= 'period' ( (lv_period_5_0= ruleReal ) ) ( (lv_timeUnit_6_0= ruleTimeUnit ) )
                     {
-                    otherlv_4=(Token)match(input,20,FOLLOW_12); 
+                    otherlv_4=(Token)match(input,21,FOLLOW_13); 
 
                     				newLeafNode(otherlv_4, grammarAccess.getRealTimeAccess().getPeriodKeyword_2_0());
                     			
-                    // InternalRsamlText.g:524:4: ( (lv_period_5_0= ruleReal ) )
-                    // InternalRsamlText.g:525:5: (lv_period_5_0= ruleReal )
+                    // InternalRsamlText.g:550:4: ( (lv_period_5_0= ruleReal ) )
+                    // InternalRsamlText.g:551:5: (lv_period_5_0= ruleReal )
                     {
-                    // InternalRsamlText.g:525:5: (lv_period_5_0= ruleReal )
-                    // InternalRsamlText.g:526:6: lv_period_5_0= ruleReal
+                    // InternalRsamlText.g:551:5: (lv_period_5_0= ruleReal )
+                    // InternalRsamlText.g:552:6: lv_period_5_0= ruleReal
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getPeriodRealParserRuleCall_2_1_0());
                     					
-                    pushFollow(FOLLOW_9);
+                    pushFollow(FOLLOW_10);
                     lv_period_5_0=ruleReal();
 
                     state._fsp--;
@@ -1269,11 +1327,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    // InternalRsamlText.g:543:4: ( (lv_timeUnit_6_0= ruleTimeUnit ) )
-                    // InternalRsamlText.g:544:5: (lv_timeUnit_6_0= ruleTimeUnit )
+                    // InternalRsamlText.g:569:4: ( (lv_timeUnit_6_0= ruleTimeUnit ) )
+                    // InternalRsamlText.g:570:5: (lv_timeUnit_6_0= ruleTimeUnit )
                     {
-                    // InternalRsamlText.g:544:5: (lv_timeUnit_6_0= ruleTimeUnit )
-                    // InternalRsamlText.g:545:6: lv_timeUnit_6_0= ruleTimeUnit
+                    // InternalRsamlText.g:570:5: (lv_timeUnit_6_0= ruleTimeUnit )
+                    // InternalRsamlText.g:571:6: lv_timeUnit_6_0= ruleTimeUnit
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getTimeUnitTimeUnitEnumRuleCall_2_2_0());
@@ -1307,25 +1365,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:564:3: (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
+                    // InternalRsamlText.g:590:3: (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
                     {
-                    // InternalRsamlText.g:564:3: (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
-                    // InternalRsamlText.g:565:4: otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) )
+                    // InternalRsamlText.g:590:3: (otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
+                    // InternalRsamlText.g:591:4: otherlv_7= 'deadline' ( (lv_delay_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) )
                     {
-                    otherlv_7=(Token)match(input,21,FOLLOW_12); 
+                    otherlv_7=(Token)match(input,22,FOLLOW_13); 
 
                     				newLeafNode(otherlv_7, grammarAccess.getRealTimeAccess().getDeadlineKeyword_3_0());
                     			
-                    // InternalRsamlText.g:569:4: ( (lv_delay_8_0= ruleReal ) )
-                    // InternalRsamlText.g:570:5: (lv_delay_8_0= ruleReal )
+                    // InternalRsamlText.g:595:4: ( (lv_delay_8_0= ruleReal ) )
+                    // InternalRsamlText.g:596:5: (lv_delay_8_0= ruleReal )
                     {
-                    // InternalRsamlText.g:570:5: (lv_delay_8_0= ruleReal )
-                    // InternalRsamlText.g:571:6: lv_delay_8_0= ruleReal
+                    // InternalRsamlText.g:596:5: (lv_delay_8_0= ruleReal )
+                    // InternalRsamlText.g:597:6: lv_delay_8_0= ruleReal
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getDelayRealParserRuleCall_3_1_0());
                     					
-                    pushFollow(FOLLOW_9);
+                    pushFollow(FOLLOW_10);
                     lv_delay_8_0=ruleReal();
 
                     state._fsp--;
@@ -1347,11 +1405,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    // InternalRsamlText.g:588:4: ( (lv_timeUnit_9_0= ruleTimeUnit ) )
-                    // InternalRsamlText.g:589:5: (lv_timeUnit_9_0= ruleTimeUnit )
+                    // InternalRsamlText.g:614:4: ( (lv_timeUnit_9_0= ruleTimeUnit ) )
+                    // InternalRsamlText.g:615:5: (lv_timeUnit_9_0= ruleTimeUnit )
                     {
-                    // InternalRsamlText.g:589:5: (lv_timeUnit_9_0= ruleTimeUnit )
-                    // InternalRsamlText.g:590:6: lv_timeUnit_9_0= ruleTimeUnit
+                    // InternalRsamlText.g:615:5: (lv_timeUnit_9_0= ruleTimeUnit )
+                    // InternalRsamlText.g:616:6: lv_timeUnit_9_0= ruleTimeUnit
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getTimeUnitTimeUnitEnumRuleCall_3_2_0());
@@ -1385,25 +1443,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:609:3: (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) )
+                    // InternalRsamlText.g:635:3: (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) )
                     {
-                    // InternalRsamlText.g:609:3: (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) )
-                    // InternalRsamlText.g:610:4: otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) )
+                    // InternalRsamlText.g:635:3: (otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) ) )
+                    // InternalRsamlText.g:636:4: otherlv_10= 'wcet' ( (lv_execDuration_11_0= ruleReal ) ) ( (lv_timeUnit_12_0= ruleTimeUnit ) )
                     {
-                    otherlv_10=(Token)match(input,22,FOLLOW_12); 
+                    otherlv_10=(Token)match(input,23,FOLLOW_13); 
 
                     				newLeafNode(otherlv_10, grammarAccess.getRealTimeAccess().getWcetKeyword_4_0());
                     			
-                    // InternalRsamlText.g:614:4: ( (lv_execDuration_11_0= ruleReal ) )
-                    // InternalRsamlText.g:615:5: (lv_execDuration_11_0= ruleReal )
+                    // InternalRsamlText.g:640:4: ( (lv_execDuration_11_0= ruleReal ) )
+                    // InternalRsamlText.g:641:5: (lv_execDuration_11_0= ruleReal )
                     {
-                    // InternalRsamlText.g:615:5: (lv_execDuration_11_0= ruleReal )
-                    // InternalRsamlText.g:616:6: lv_execDuration_11_0= ruleReal
+                    // InternalRsamlText.g:641:5: (lv_execDuration_11_0= ruleReal )
+                    // InternalRsamlText.g:642:6: lv_execDuration_11_0= ruleReal
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getExecDurationRealParserRuleCall_4_1_0());
                     					
-                    pushFollow(FOLLOW_9);
+                    pushFollow(FOLLOW_10);
                     lv_execDuration_11_0=ruleReal();
 
                     state._fsp--;
@@ -1425,11 +1483,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    // InternalRsamlText.g:633:4: ( (lv_timeUnit_12_0= ruleTimeUnit ) )
-                    // InternalRsamlText.g:634:5: (lv_timeUnit_12_0= ruleTimeUnit )
+                    // InternalRsamlText.g:659:4: ( (lv_timeUnit_12_0= ruleTimeUnit ) )
+                    // InternalRsamlText.g:660:5: (lv_timeUnit_12_0= ruleTimeUnit )
                     {
-                    // InternalRsamlText.g:634:5: (lv_timeUnit_12_0= ruleTimeUnit )
-                    // InternalRsamlText.g:635:6: lv_timeUnit_12_0= ruleTimeUnit
+                    // InternalRsamlText.g:660:5: (lv_timeUnit_12_0= ruleTimeUnit )
+                    // InternalRsamlText.g:661:6: lv_timeUnit_12_0= ruleTimeUnit
                     {
 
                     						newCompositeNode(grammarAccess.getRealTimeAccess().getTimeUnitTimeUnitEnumRuleCall_4_2_0());
@@ -1463,7 +1521,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:654:3: this_Unit_13= ruleUnit[$current]
+                    // InternalRsamlText.g:680:3: this_Unit_13= ruleUnit[$current]
                     {
 
                     			if (current==null) {
@@ -1506,7 +1564,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleLayer"
-    // InternalRsamlText.g:669:1: entryRuleLayer returns [EObject current=null] : iv_ruleLayer= ruleLayer EOF ;
+    // InternalRsamlText.g:695:1: entryRuleLayer returns [EObject current=null] : iv_ruleLayer= ruleLayer EOF ;
     public final EObject entryRuleLayer() throws RecognitionException {
         EObject current = null;
 
@@ -1514,8 +1572,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:669:46: (iv_ruleLayer= ruleLayer EOF )
-            // InternalRsamlText.g:670:2: iv_ruleLayer= ruleLayer EOF
+            // InternalRsamlText.g:695:46: (iv_ruleLayer= ruleLayer EOF )
+            // InternalRsamlText.g:696:2: iv_ruleLayer= ruleLayer EOF
             {
              newCompositeNode(grammarAccess.getLayerRule()); 
             pushFollow(FOLLOW_1);
@@ -1542,7 +1600,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLayer"
-    // InternalRsamlText.g:676:1: ruleLayer returns [EObject current=null] : ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' ) ;
+    // InternalRsamlText.g:702:1: ruleLayer returns [EObject current=null] : ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' ) ;
     public final EObject ruleLayer() throws RecognitionException {
         EObject current = null;
 
@@ -1570,14 +1628,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:682:2: ( ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' ) )
-            // InternalRsamlText.g:683:2: ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' )
+            // InternalRsamlText.g:708:2: ( ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' ) )
+            // InternalRsamlText.g:709:2: ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' )
             {
-            // InternalRsamlText.g:683:2: ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' )
-            // InternalRsamlText.g:684:3: () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}'
+            // InternalRsamlText.g:709:2: ( () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}' )
+            // InternalRsamlText.g:710:3: () otherlv_1= 'layer' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )* otherlv_12= '}'
             {
-            // InternalRsamlText.g:684:3: ()
-            // InternalRsamlText.g:685:4: 
+            // InternalRsamlText.g:710:3: ()
+            // InternalRsamlText.g:711:4: 
             {
 
             				current = forceCreateModelElement(
@@ -1587,23 +1645,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,23,FOLLOW_3); 
+            otherlv_1=(Token)match(input,24,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getLayerAccess().getLayerKeyword_1());
             		
-            // InternalRsamlText.g:695:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:721:3: ( (lv_name_2_0= ruleName ) )?
             int alt4=2;
             int LA4_0 = input.LA(1);
 
-            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=14)||(LA4_0>=16 && LA4_0<=27)||(LA4_0>=29 && LA4_0<=42)||(LA4_0>=44 && LA4_0<=78)||(LA4_0>=80 && LA4_0<=111)) ) {
+            if ( ((LA4_0>=RULE_STRING && LA4_0<=RULE_ID)||LA4_0==11||(LA4_0>=13 && LA4_0<=15)||(LA4_0>=17 && LA4_0<=28)||(LA4_0>=30 && LA4_0<=43)||(LA4_0>=45 && LA4_0<=79)||(LA4_0>=81 && LA4_0<=114)) ) {
                 alt4=1;
             }
             switch (alt4) {
                 case 1 :
-                    // InternalRsamlText.g:696:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:722:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:696:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:697:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:722:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:723:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getLayerAccess().getNameNameParserRuleCall_2_0());
@@ -1633,36 +1691,36 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_13); 
+            otherlv_3=(Token)match(input,12,FOLLOW_14); 
 
             			newLeafNode(otherlv_3, grammarAccess.getLayerAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:718:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )*
+            // InternalRsamlText.g:744:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) ) | (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) ) | this_Unit_10= ruleUnit[$current] | ( (lv_modules_11_0= ruleModule ) ) )*
             loop5:
             do {
                 int alt5=6;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt5=1;
                     }
                     break;
-                case 24:
+                case 25:
                     {
                     alt5=2;
                     }
                     break;
-                case 25:
+                case 26:
                     {
                     alt5=3;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt5=4;
                     }
                     break;
-                case 26:
+                case 27:
                     {
                     alt5=5;
                     }
@@ -1672,7 +1730,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt5) {
             	case 1 :
-            	    // InternalRsamlText.g:719:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:745:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -1680,7 +1738,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getLayerAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_13);
+            	    pushFollow(FOLLOW_14);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -1693,25 +1751,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:731:4: (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:757:4: (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) )
             	    {
-            	    // InternalRsamlText.g:731:4: (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) )
-            	    // InternalRsamlText.g:732:5: otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) )
+            	    // InternalRsamlText.g:757:4: (otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:758:5: otherlv_5= 'level' ( (lv_level_6_0= ruleInteger ) )
             	    {
-            	    otherlv_5=(Token)match(input,24,FOLLOW_7); 
+            	    otherlv_5=(Token)match(input,25,FOLLOW_7); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getLayerAccess().getLevelKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:736:5: ( (lv_level_6_0= ruleInteger ) )
-            	    // InternalRsamlText.g:737:6: (lv_level_6_0= ruleInteger )
+            	    // InternalRsamlText.g:762:5: ( (lv_level_6_0= ruleInteger ) )
+            	    // InternalRsamlText.g:763:6: (lv_level_6_0= ruleInteger )
             	    {
-            	    // InternalRsamlText.g:737:6: (lv_level_6_0= ruleInteger )
-            	    // InternalRsamlText.g:738:7: lv_level_6_0= ruleInteger
+            	    // InternalRsamlText.g:763:6: (lv_level_6_0= ruleInteger )
+            	    // InternalRsamlText.g:764:7: lv_level_6_0= ruleInteger
             	    {
 
             	    							newCompositeNode(grammarAccess.getLayerAccess().getLevelIntegerParserRuleCall_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_13);
+            	    pushFollow(FOLLOW_14);
             	    lv_level_6_0=ruleInteger();
 
             	    state._fsp--;
@@ -1740,25 +1798,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:757:4: (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:783:4: (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:757:4: (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:758:5: otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:783:4: (otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:784:5: otherlv_7= 'maxExecTime' ( (lv_maxExecTime_8_0= ruleReal ) ) ( (lv_timeUnit_9_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_7=(Token)match(input,25,FOLLOW_12); 
+            	    otherlv_7=(Token)match(input,26,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getLayerAccess().getMaxExecTimeKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:762:5: ( (lv_maxExecTime_8_0= ruleReal ) )
-            	    // InternalRsamlText.g:763:6: (lv_maxExecTime_8_0= ruleReal )
+            	    // InternalRsamlText.g:788:5: ( (lv_maxExecTime_8_0= ruleReal ) )
+            	    // InternalRsamlText.g:789:6: (lv_maxExecTime_8_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:763:6: (lv_maxExecTime_8_0= ruleReal )
-            	    // InternalRsamlText.g:764:7: lv_maxExecTime_8_0= ruleReal
+            	    // InternalRsamlText.g:789:6: (lv_maxExecTime_8_0= ruleReal )
+            	    // InternalRsamlText.g:790:7: lv_maxExecTime_8_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getLayerAccess().getMaxExecTimeRealParserRuleCall_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_maxExecTime_8_0=ruleReal();
 
             	    state._fsp--;
@@ -1780,16 +1838,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:781:5: ( (lv_timeUnit_9_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:782:6: (lv_timeUnit_9_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:807:5: ( (lv_timeUnit_9_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:808:6: (lv_timeUnit_9_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:782:6: (lv_timeUnit_9_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:783:7: lv_timeUnit_9_0= ruleTimeUnit
+            	    // InternalRsamlText.g:808:6: (lv_timeUnit_9_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:809:7: lv_timeUnit_9_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getLayerAccess().getTimeUnitTimeUnitEnumRuleCall_4_2_2_0());
             	    						
-            	    pushFollow(FOLLOW_13);
+            	    pushFollow(FOLLOW_14);
             	    lv_timeUnit_9_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -1818,7 +1876,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:802:4: this_Unit_10= ruleUnit[$current]
+            	    // InternalRsamlText.g:828:4: this_Unit_10= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -1826,7 +1884,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getLayerAccess().getUnitParserRuleCall_4_3());
             	    			
-            	    pushFollow(FOLLOW_13);
+            	    pushFollow(FOLLOW_14);
             	    this_Unit_10=ruleUnit(current);
 
             	    state._fsp--;
@@ -1839,18 +1897,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:814:4: ( (lv_modules_11_0= ruleModule ) )
+            	    // InternalRsamlText.g:840:4: ( (lv_modules_11_0= ruleModule ) )
             	    {
-            	    // InternalRsamlText.g:814:4: ( (lv_modules_11_0= ruleModule ) )
-            	    // InternalRsamlText.g:815:5: (lv_modules_11_0= ruleModule )
+            	    // InternalRsamlText.g:840:4: ( (lv_modules_11_0= ruleModule ) )
+            	    // InternalRsamlText.g:841:5: (lv_modules_11_0= ruleModule )
             	    {
-            	    // InternalRsamlText.g:815:5: (lv_modules_11_0= ruleModule )
-            	    // InternalRsamlText.g:816:6: lv_modules_11_0= ruleModule
+            	    // InternalRsamlText.g:841:5: (lv_modules_11_0= ruleModule )
+            	    // InternalRsamlText.g:842:6: lv_modules_11_0= ruleModule
             	    {
 
             	    						newCompositeNode(grammarAccess.getLayerAccess().getModulesModuleParserRuleCall_4_4_0());
             	    					
-            	    pushFollow(FOLLOW_13);
+            	    pushFollow(FOLLOW_14);
             	    lv_modules_11_0=ruleModule();
 
             	    state._fsp--;
@@ -1881,7 +1939,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_12=(Token)match(input,15,FOLLOW_2); 
+            otherlv_12=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_12, grammarAccess.getLayerAccess().getRightCurlyBracketKeyword_5());
             		
@@ -1908,7 +1966,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleModule"
-    // InternalRsamlText.g:842:1: entryRuleModule returns [EObject current=null] : iv_ruleModule= ruleModule EOF ;
+    // InternalRsamlText.g:868:1: entryRuleModule returns [EObject current=null] : iv_ruleModule= ruleModule EOF ;
     public final EObject entryRuleModule() throws RecognitionException {
         EObject current = null;
 
@@ -1916,8 +1974,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:842:47: (iv_ruleModule= ruleModule EOF )
-            // InternalRsamlText.g:843:2: iv_ruleModule= ruleModule EOF
+            // InternalRsamlText.g:868:47: (iv_ruleModule= ruleModule EOF )
+            // InternalRsamlText.g:869:2: iv_ruleModule= ruleModule EOF
             {
              newCompositeNode(grammarAccess.getModuleRule()); 
             pushFollow(FOLLOW_1);
@@ -1944,7 +2002,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleModule"
-    // InternalRsamlText.g:849:1: ruleModule returns [EObject current=null] : ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_functions_14_0= ruleFunction ) ) | ( (lv_ports_15_0= rulePort ) ) | ( (lv_inhibitors_16_0= ruleInhibitor ) ) | ( (lv_suppressors_17_0= ruleSuppressor ) ) )* otherlv_18= '}' ) ;
+    // InternalRsamlText.g:875:1: ruleModule returns [EObject current=null] : ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) ) | ( (lv_functions_16_0= ruleFunction ) ) | ( (lv_ports_17_0= rulePort ) ) | ( (lv_inhibitors_18_0= ruleInhibitor ) ) | ( (lv_suppressors_19_0= ruleSuppressor ) ) )* otherlv_20= '}' ) ;
     public final EObject ruleModule() throws RecognitionException {
         EObject current = null;
 
@@ -1954,34 +2012,37 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         Token otherlv_8=null;
         Token otherlv_10=null;
         Token otherlv_12=null;
-        Token otherlv_18=null;
+        Token otherlv_14=null;
+        Token otherlv_20=null;
         AntlrDatatypeRuleToken lv_name_2_0 = null;
 
         EObject this_Described_4 = null;
 
         EObject this_RealTime_5 = null;
 
-        EObject lv_functions_14_0 = null;
+        Enumerator lv_lifecycle_15_0 = null;
 
-        EObject lv_ports_15_0 = null;
+        EObject lv_functions_16_0 = null;
 
-        EObject lv_inhibitors_16_0 = null;
+        EObject lv_ports_17_0 = null;
 
-        EObject lv_suppressors_17_0 = null;
+        EObject lv_inhibitors_18_0 = null;
+
+        EObject lv_suppressors_19_0 = null;
 
 
 
         	enterRule();
 
         try {
-            // InternalRsamlText.g:855:2: ( ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_functions_14_0= ruleFunction ) ) | ( (lv_ports_15_0= rulePort ) ) | ( (lv_inhibitors_16_0= ruleInhibitor ) ) | ( (lv_suppressors_17_0= ruleSuppressor ) ) )* otherlv_18= '}' ) )
-            // InternalRsamlText.g:856:2: ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_functions_14_0= ruleFunction ) ) | ( (lv_ports_15_0= rulePort ) ) | ( (lv_inhibitors_16_0= ruleInhibitor ) ) | ( (lv_suppressors_17_0= ruleSuppressor ) ) )* otherlv_18= '}' )
+            // InternalRsamlText.g:881:2: ( ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) ) | ( (lv_functions_16_0= ruleFunction ) ) | ( (lv_ports_17_0= rulePort ) ) | ( (lv_inhibitors_18_0= ruleInhibitor ) ) | ( (lv_suppressors_19_0= ruleSuppressor ) ) )* otherlv_20= '}' ) )
+            // InternalRsamlText.g:882:2: ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) ) | ( (lv_functions_16_0= ruleFunction ) ) | ( (lv_ports_17_0= rulePort ) ) | ( (lv_inhibitors_18_0= ruleInhibitor ) ) | ( (lv_suppressors_19_0= ruleSuppressor ) ) )* otherlv_20= '}' )
             {
-            // InternalRsamlText.g:856:2: ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_functions_14_0= ruleFunction ) ) | ( (lv_ports_15_0= rulePort ) ) | ( (lv_inhibitors_16_0= ruleInhibitor ) ) | ( (lv_suppressors_17_0= ruleSuppressor ) ) )* otherlv_18= '}' )
-            // InternalRsamlText.g:857:3: () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_functions_14_0= ruleFunction ) ) | ( (lv_ports_15_0= rulePort ) ) | ( (lv_inhibitors_16_0= ruleInhibitor ) ) | ( (lv_suppressors_17_0= ruleSuppressor ) ) )* otherlv_18= '}'
+            // InternalRsamlText.g:882:2: ( () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) ) | ( (lv_functions_16_0= ruleFunction ) ) | ( (lv_ports_17_0= rulePort ) ) | ( (lv_inhibitors_18_0= ruleInhibitor ) ) | ( (lv_suppressors_19_0= ruleSuppressor ) ) )* otherlv_20= '}' )
+            // InternalRsamlText.g:883:3: () otherlv_1= 'module' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) ) | ( (lv_functions_16_0= ruleFunction ) ) | ( (lv_ports_17_0= rulePort ) ) | ( (lv_inhibitors_18_0= ruleInhibitor ) ) | ( (lv_suppressors_19_0= ruleSuppressor ) ) )* otherlv_20= '}'
             {
-            // InternalRsamlText.g:857:3: ()
-            // InternalRsamlText.g:858:4: 
+            // InternalRsamlText.g:883:3: ()
+            // InternalRsamlText.g:884:4: 
             {
 
             				current = forceCreateModelElement(
@@ -1991,23 +2052,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,26,FOLLOW_3); 
+            otherlv_1=(Token)match(input,27,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getModuleAccess().getModuleKeyword_1());
             		
-            // InternalRsamlText.g:868:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:894:3: ( (lv_name_2_0= ruleName ) )?
             int alt6=2;
             int LA6_0 = input.LA(1);
 
-            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=14)||(LA6_0>=16 && LA6_0<=27)||(LA6_0>=29 && LA6_0<=42)||(LA6_0>=44 && LA6_0<=78)||(LA6_0>=80 && LA6_0<=111)) ) {
+            if ( ((LA6_0>=RULE_STRING && LA6_0<=RULE_ID)||LA6_0==11||(LA6_0>=13 && LA6_0<=15)||(LA6_0>=17 && LA6_0<=28)||(LA6_0>=30 && LA6_0<=43)||(LA6_0>=45 && LA6_0<=79)||(LA6_0>=81 && LA6_0<=114)) ) {
                 alt6=1;
             }
             switch (alt6) {
                 case 1 :
-                    // InternalRsamlText.g:869:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:895:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:869:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:870:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:895:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:896:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getModuleAccess().getNameNameParserRuleCall_2_0());
@@ -2037,59 +2098,64 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_14); 
+            otherlv_3=(Token)match(input,12,FOLLOW_15); 
 
             			newLeafNode(otherlv_3, grammarAccess.getModuleAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:891:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_functions_14_0= ruleFunction ) ) | ( (lv_ports_15_0= rulePort ) ) | ( (lv_inhibitors_16_0= ruleInhibitor ) ) | ( (lv_suppressors_17_0= ruleSuppressor ) ) )*
+            // InternalRsamlText.g:917:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) ) | ( (lv_functions_16_0= ruleFunction ) ) | ( (lv_ports_17_0= rulePort ) ) | ( (lv_inhibitors_18_0= ruleInhibitor ) ) | ( (lv_suppressors_19_0= ruleSuppressor ) ) )*
             loop9:
             do {
-                int alt9=9;
+                int alt9=10;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt9=1;
                     }
                     break;
-                case 17:
                 case 18:
                 case 19:
                 case 20:
                 case 21:
                 case 22:
+                case 23:
                     {
                     alt9=2;
                     }
                     break;
-                case 27:
+                case 28:
                     {
                     alt9=3;
                     }
                     break;
-                case 29:
+                case 30:
                     {
                     alt9=4;
                     }
                     break;
-                case 30:
+                case 15:
                     {
                     alt9=5;
                     }
                     break;
-                case 37:
-                case 38:
+                case 31:
                     {
                     alt9=6;
                     }
                     break;
-                case 44:
+                case 38:
+                case 39:
                     {
                     alt9=7;
                     }
                     break;
-                case 48:
+                case 45:
                     {
                     alt9=8;
+                    }
+                    break;
+                case 49:
+                    {
+                    alt9=9;
                     }
                     break;
 
@@ -2097,7 +2163,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt9) {
             	case 1 :
-            	    // InternalRsamlText.g:892:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:918:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -2105,7 +2171,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getModuleAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_14);
+            	    pushFollow(FOLLOW_15);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -2118,7 +2184,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:904:4: this_RealTime_5= ruleRealTime[$current]
+            	    // InternalRsamlText.g:930:4: this_RealTime_5= ruleRealTime[$current]
             	    {
 
             	    				if (current==null) {
@@ -2126,7 +2192,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getModuleAccess().getRealTimeParserRuleCall_4_1());
             	    			
-            	    pushFollow(FOLLOW_14);
+            	    pushFollow(FOLLOW_15);
             	    this_RealTime_5=ruleRealTime(current);
 
             	    state._fsp--;
@@ -2139,20 +2205,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:916:4: (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:942:4: (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:916:4: (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:917:5: otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:942:4: (otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:943:5: otherlv_6= 'sensors' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_6=(Token)match(input,27,FOLLOW_15); 
+            	    otherlv_6=(Token)match(input,28,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_6, grammarAccess.getModuleAccess().getSensorsKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:921:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:922:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:947:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:948:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:922:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:923:7: ruleQualifiedName
+            	    // InternalRsamlText.g:948:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:949:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -2162,7 +2228,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getModuleAccess().getSensorsSensorCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_16);
+            	    pushFollow(FOLLOW_17);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -2176,30 +2242,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:937:5: (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:963:5: (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
             	    loop7:
             	    do {
             	        int alt7=2;
             	        int LA7_0 = input.LA(1);
 
-            	        if ( (LA7_0==28) ) {
+            	        if ( (LA7_0==29) ) {
             	            alt7=1;
             	        }
 
 
             	        switch (alt7) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:938:6: otherlv_8= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:964:6: otherlv_8= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_8=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_8=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_8, grammarAccess.getModuleAccess().getCommaKeyword_4_2_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:942:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:943:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:968:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:969:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:943:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:944:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:969:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:970:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -2209,7 +2275,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getModuleAccess().getSensorsSensorCrossReference_4_2_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_16);
+            	    	    pushFollow(FOLLOW_17);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -2239,20 +2305,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:961:4: (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:987:4: (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:961:4: (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:962:5: otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:987:4: (otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:988:5: otherlv_10= 'actuators' ( ( ruleQualifiedName ) ) (otherlv_12= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_10=(Token)match(input,29,FOLLOW_15); 
+            	    otherlv_10=(Token)match(input,30,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_10, grammarAccess.getModuleAccess().getActuatorsKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:966:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:967:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:992:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:993:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:967:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:968:7: ruleQualifiedName
+            	    // InternalRsamlText.g:993:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:994:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -2262,7 +2328,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getModuleAccess().getActuatorsActuatorCrossReference_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_16);
+            	    pushFollow(FOLLOW_17);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -2276,30 +2342,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:982:5: (otherlv_12= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:1008:5: (otherlv_12= ',' ( ( ruleQualifiedName ) ) )*
             	    loop8:
             	    do {
             	        int alt8=2;
             	        int LA8_0 = input.LA(1);
 
-            	        if ( (LA8_0==28) ) {
+            	        if ( (LA8_0==29) ) {
             	            alt8=1;
             	        }
 
 
             	        switch (alt8) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:983:6: otherlv_12= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:1009:6: otherlv_12= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_12=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_12=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_12, grammarAccess.getModuleAccess().getCommaKeyword_4_3_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:987:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:988:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:1013:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:1014:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:988:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:989:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:1014:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:1015:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -2309,7 +2375,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getModuleAccess().getActuatorsActuatorCrossReference_4_3_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_16);
+            	    	    pushFollow(FOLLOW_17);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -2339,19 +2405,66 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:1006:4: ( (lv_functions_14_0= ruleFunction ) )
+            	    // InternalRsamlText.g:1032:4: (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) )
             	    {
-            	    // InternalRsamlText.g:1006:4: ( (lv_functions_14_0= ruleFunction ) )
-            	    // InternalRsamlText.g:1007:5: (lv_functions_14_0= ruleFunction )
+            	    // InternalRsamlText.g:1032:4: (otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) ) )
+            	    // InternalRsamlText.g:1033:5: otherlv_14= 'lifecycle' ( (lv_lifecycle_15_0= ruleNodeLifecycle ) )
             	    {
-            	    // InternalRsamlText.g:1007:5: (lv_functions_14_0= ruleFunction )
-            	    // InternalRsamlText.g:1008:6: lv_functions_14_0= ruleFunction
+            	    otherlv_14=(Token)match(input,15,FOLLOW_8); 
+
+            	    					newLeafNode(otherlv_14, grammarAccess.getModuleAccess().getLifecycleKeyword_4_4_0());
+            	    				
+            	    // InternalRsamlText.g:1037:5: ( (lv_lifecycle_15_0= ruleNodeLifecycle ) )
+            	    // InternalRsamlText.g:1038:6: (lv_lifecycle_15_0= ruleNodeLifecycle )
+            	    {
+            	    // InternalRsamlText.g:1038:6: (lv_lifecycle_15_0= ruleNodeLifecycle )
+            	    // InternalRsamlText.g:1039:7: lv_lifecycle_15_0= ruleNodeLifecycle
             	    {
 
-            	    						newCompositeNode(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_4_0());
+            	    							newCompositeNode(grammarAccess.getModuleAccess().getLifecycleNodeLifecycleEnumRuleCall_4_4_1_0());
+            	    						
+            	    pushFollow(FOLLOW_15);
+            	    lv_lifecycle_15_0=ruleNodeLifecycle();
+
+            	    state._fsp--;
+
+
+            	    							if (current==null) {
+            	    								current = createModelElementForParent(grammarAccess.getModuleRule());
+            	    							}
+            	    							set(
+            	    								current,
+            	    								"lifecycle",
+            	    								lv_lifecycle_15_0,
+            	    								"org.rsaml.text.RsamlText.NodeLifecycle");
+            	    							afterParserOrEnumRuleCall();
+            	    						
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+
+
+            	    }
+            	    break;
+            	case 6 :
+            	    // InternalRsamlText.g:1058:4: ( (lv_functions_16_0= ruleFunction ) )
+            	    {
+            	    // InternalRsamlText.g:1058:4: ( (lv_functions_16_0= ruleFunction ) )
+            	    // InternalRsamlText.g:1059:5: (lv_functions_16_0= ruleFunction )
+            	    {
+            	    // InternalRsamlText.g:1059:5: (lv_functions_16_0= ruleFunction )
+            	    // InternalRsamlText.g:1060:6: lv_functions_16_0= ruleFunction
+            	    {
+
+            	    						newCompositeNode(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_5_0());
             	    					
-            	    pushFollow(FOLLOW_14);
-            	    lv_functions_14_0=ruleFunction();
+            	    pushFollow(FOLLOW_15);
+            	    lv_functions_16_0=ruleFunction();
 
             	    state._fsp--;
 
@@ -2362,7 +2475,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"functions",
-            	    							lv_functions_14_0,
+            	    							lv_functions_16_0,
             	    							"org.rsaml.text.RsamlText.Function");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -2375,20 +2488,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 6 :
-            	    // InternalRsamlText.g:1026:4: ( (lv_ports_15_0= rulePort ) )
+            	case 7 :
+            	    // InternalRsamlText.g:1078:4: ( (lv_ports_17_0= rulePort ) )
             	    {
-            	    // InternalRsamlText.g:1026:4: ( (lv_ports_15_0= rulePort ) )
-            	    // InternalRsamlText.g:1027:5: (lv_ports_15_0= rulePort )
+            	    // InternalRsamlText.g:1078:4: ( (lv_ports_17_0= rulePort ) )
+            	    // InternalRsamlText.g:1079:5: (lv_ports_17_0= rulePort )
             	    {
-            	    // InternalRsamlText.g:1027:5: (lv_ports_15_0= rulePort )
-            	    // InternalRsamlText.g:1028:6: lv_ports_15_0= rulePort
+            	    // InternalRsamlText.g:1079:5: (lv_ports_17_0= rulePort )
+            	    // InternalRsamlText.g:1080:6: lv_ports_17_0= rulePort
             	    {
 
-            	    						newCompositeNode(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_5_0());
+            	    						newCompositeNode(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_6_0());
             	    					
-            	    pushFollow(FOLLOW_14);
-            	    lv_ports_15_0=rulePort();
+            	    pushFollow(FOLLOW_15);
+            	    lv_ports_17_0=rulePort();
 
             	    state._fsp--;
 
@@ -2399,7 +2512,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"ports",
-            	    							lv_ports_15_0,
+            	    							lv_ports_17_0,
             	    							"org.rsaml.text.RsamlText.Port");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -2412,20 +2525,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 7 :
-            	    // InternalRsamlText.g:1046:4: ( (lv_inhibitors_16_0= ruleInhibitor ) )
+            	case 8 :
+            	    // InternalRsamlText.g:1098:4: ( (lv_inhibitors_18_0= ruleInhibitor ) )
             	    {
-            	    // InternalRsamlText.g:1046:4: ( (lv_inhibitors_16_0= ruleInhibitor ) )
-            	    // InternalRsamlText.g:1047:5: (lv_inhibitors_16_0= ruleInhibitor )
+            	    // InternalRsamlText.g:1098:4: ( (lv_inhibitors_18_0= ruleInhibitor ) )
+            	    // InternalRsamlText.g:1099:5: (lv_inhibitors_18_0= ruleInhibitor )
             	    {
-            	    // InternalRsamlText.g:1047:5: (lv_inhibitors_16_0= ruleInhibitor )
-            	    // InternalRsamlText.g:1048:6: lv_inhibitors_16_0= ruleInhibitor
+            	    // InternalRsamlText.g:1099:5: (lv_inhibitors_18_0= ruleInhibitor )
+            	    // InternalRsamlText.g:1100:6: lv_inhibitors_18_0= ruleInhibitor
             	    {
 
-            	    						newCompositeNode(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_6_0());
+            	    						newCompositeNode(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_7_0());
             	    					
-            	    pushFollow(FOLLOW_14);
-            	    lv_inhibitors_16_0=ruleInhibitor();
+            	    pushFollow(FOLLOW_15);
+            	    lv_inhibitors_18_0=ruleInhibitor();
 
             	    state._fsp--;
 
@@ -2436,7 +2549,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"inhibitors",
-            	    							lv_inhibitors_16_0,
+            	    							lv_inhibitors_18_0,
             	    							"org.rsaml.text.RsamlText.Inhibitor");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -2449,20 +2562,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
             	    break;
-            	case 8 :
-            	    // InternalRsamlText.g:1066:4: ( (lv_suppressors_17_0= ruleSuppressor ) )
+            	case 9 :
+            	    // InternalRsamlText.g:1118:4: ( (lv_suppressors_19_0= ruleSuppressor ) )
             	    {
-            	    // InternalRsamlText.g:1066:4: ( (lv_suppressors_17_0= ruleSuppressor ) )
-            	    // InternalRsamlText.g:1067:5: (lv_suppressors_17_0= ruleSuppressor )
+            	    // InternalRsamlText.g:1118:4: ( (lv_suppressors_19_0= ruleSuppressor ) )
+            	    // InternalRsamlText.g:1119:5: (lv_suppressors_19_0= ruleSuppressor )
             	    {
-            	    // InternalRsamlText.g:1067:5: (lv_suppressors_17_0= ruleSuppressor )
-            	    // InternalRsamlText.g:1068:6: lv_suppressors_17_0= ruleSuppressor
+            	    // InternalRsamlText.g:1119:5: (lv_suppressors_19_0= ruleSuppressor )
+            	    // InternalRsamlText.g:1120:6: lv_suppressors_19_0= ruleSuppressor
             	    {
 
-            	    						newCompositeNode(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_7_0());
+            	    						newCompositeNode(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_8_0());
             	    					
-            	    pushFollow(FOLLOW_14);
-            	    lv_suppressors_17_0=ruleSuppressor();
+            	    pushFollow(FOLLOW_15);
+            	    lv_suppressors_19_0=ruleSuppressor();
 
             	    state._fsp--;
 
@@ -2473,7 +2586,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    						add(
             	    							current,
             	    							"suppressors",
-            	    							lv_suppressors_17_0,
+            	    							lv_suppressors_19_0,
             	    							"org.rsaml.text.RsamlText.Suppressor");
             	    						afterParserOrEnumRuleCall();
             	    					
@@ -2492,9 +2605,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_18=(Token)match(input,15,FOLLOW_2); 
+            otherlv_20=(Token)match(input,16,FOLLOW_2); 
 
-            			newLeafNode(otherlv_18, grammarAccess.getModuleAccess().getRightCurlyBracketKeyword_5());
+            			newLeafNode(otherlv_20, grammarAccess.getModuleAccess().getRightCurlyBracketKeyword_5());
             		
 
             }
@@ -2519,7 +2632,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleFunction"
-    // InternalRsamlText.g:1094:1: entryRuleFunction returns [EObject current=null] : iv_ruleFunction= ruleFunction EOF ;
+    // InternalRsamlText.g:1146:1: entryRuleFunction returns [EObject current=null] : iv_ruleFunction= ruleFunction EOF ;
     public final EObject entryRuleFunction() throws RecognitionException {
         EObject current = null;
 
@@ -2527,8 +2640,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1094:49: (iv_ruleFunction= ruleFunction EOF )
-            // InternalRsamlText.g:1095:2: iv_ruleFunction= ruleFunction EOF
+            // InternalRsamlText.g:1146:49: (iv_ruleFunction= ruleFunction EOF )
+            // InternalRsamlText.g:1147:2: iv_ruleFunction= ruleFunction EOF
             {
              newCompositeNode(grammarAccess.getFunctionRule()); 
             pushFollow(FOLLOW_1);
@@ -2555,7 +2668,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleFunction"
-    // InternalRsamlText.g:1101:1: ruleFunction returns [EObject current=null] : ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:1153:1: ruleFunction returns [EObject current=null] : ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' ) ;
     public final EObject ruleFunction() throws RecognitionException {
         EObject current = null;
 
@@ -2583,14 +2696,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1107:2: ( ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1108:2: ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' )
+            // InternalRsamlText.g:1159:2: ( ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1160:2: ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1108:2: ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' )
-            // InternalRsamlText.g:1109:3: () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}'
+            // InternalRsamlText.g:1160:2: ( () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}' )
+            // InternalRsamlText.g:1161:3: () otherlv_1= 'function' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1109:3: ()
-            // InternalRsamlText.g:1110:4: 
+            // InternalRsamlText.g:1161:3: ()
+            // InternalRsamlText.g:1162:4: 
             {
 
             				current = forceCreateModelElement(
@@ -2600,23 +2713,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,30,FOLLOW_3); 
+            otherlv_1=(Token)match(input,31,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getFunctionAccess().getFunctionKeyword_1());
             		
-            // InternalRsamlText.g:1120:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:1172:3: ( (lv_name_2_0= ruleName ) )?
             int alt10=2;
             int LA10_0 = input.LA(1);
 
-            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=14)||(LA10_0>=16 && LA10_0<=27)||(LA10_0>=29 && LA10_0<=42)||(LA10_0>=44 && LA10_0<=78)||(LA10_0>=80 && LA10_0<=111)) ) {
+            if ( ((LA10_0>=RULE_STRING && LA10_0<=RULE_ID)||LA10_0==11||(LA10_0>=13 && LA10_0<=15)||(LA10_0>=17 && LA10_0<=28)||(LA10_0>=30 && LA10_0<=43)||(LA10_0>=45 && LA10_0<=79)||(LA10_0>=81 && LA10_0<=114)) ) {
                 alt10=1;
             }
             switch (alt10) {
                 case 1 :
-                    // InternalRsamlText.g:1121:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1173:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:1121:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:1122:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:1173:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1174:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getFunctionAccess().getNameNameParserRuleCall_2_0());
@@ -2646,47 +2759,47 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_17); 
+            otherlv_3=(Token)match(input,12,FOLLOW_18); 
 
             			newLeafNode(otherlv_3, grammarAccess.getFunctionAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:1143:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )*
+            // InternalRsamlText.g:1195:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) ) | (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) ) | (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) ) | ( (lv_actions_12_0= ruleAction ) ) )*
             loop11:
             do {
                 int alt11=7;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt11=1;
                     }
                     break;
-                case 17:
                 case 18:
                 case 19:
                 case 20:
                 case 21:
                 case 22:
+                case 23:
                     {
                     alt11=2;
                     }
                     break;
-                case 31:
+                case 32:
                     {
                     alt11=3;
                     }
                     break;
-                case 32:
+                case 33:
                     {
                     alt11=4;
                     }
                     break;
-                case 33:
+                case 34:
                     {
                     alt11=5;
                     }
                     break;
-                case 34:
                 case 35:
+                case 36:
                     {
                     alt11=6;
                     }
@@ -2696,7 +2809,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt11) {
             	case 1 :
-            	    // InternalRsamlText.g:1144:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1196:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -2704,7 +2817,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getFunctionAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_17);
+            	    pushFollow(FOLLOW_18);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -2717,7 +2830,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1156:4: this_RealTime_5= ruleRealTime[$current]
+            	    // InternalRsamlText.g:1208:4: this_RealTime_5= ruleRealTime[$current]
             	    {
 
             	    				if (current==null) {
@@ -2725,7 +2838,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getFunctionAccess().getRealTimeParserRuleCall_4_1());
             	    			
-            	    pushFollow(FOLLOW_17);
+            	    pushFollow(FOLLOW_18);
             	    this_RealTime_5=ruleRealTime(current);
 
             	    state._fsp--;
@@ -2738,25 +2851,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1168:4: (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) )
+            	    // InternalRsamlText.g:1220:4: (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) )
             	    {
-            	    // InternalRsamlText.g:1168:4: (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) )
-            	    // InternalRsamlText.g:1169:5: otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) )
+            	    // InternalRsamlText.g:1220:4: (otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) ) )
+            	    // InternalRsamlText.g:1221:5: otherlv_6= 'synchroType' ( (lv_synchroType_7_0= ruleSynchronisationType ) )
             	    {
-            	    otherlv_6=(Token)match(input,31,FOLLOW_18); 
+            	    otherlv_6=(Token)match(input,32,FOLLOW_19); 
 
             	    					newLeafNode(otherlv_6, grammarAccess.getFunctionAccess().getSynchroTypeKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:1173:5: ( (lv_synchroType_7_0= ruleSynchronisationType ) )
-            	    // InternalRsamlText.g:1174:6: (lv_synchroType_7_0= ruleSynchronisationType )
+            	    // InternalRsamlText.g:1225:5: ( (lv_synchroType_7_0= ruleSynchronisationType ) )
+            	    // InternalRsamlText.g:1226:6: (lv_synchroType_7_0= ruleSynchronisationType )
             	    {
-            	    // InternalRsamlText.g:1174:6: (lv_synchroType_7_0= ruleSynchronisationType )
-            	    // InternalRsamlText.g:1175:7: lv_synchroType_7_0= ruleSynchronisationType
+            	    // InternalRsamlText.g:1226:6: (lv_synchroType_7_0= ruleSynchronisationType )
+            	    // InternalRsamlText.g:1227:7: lv_synchroType_7_0= ruleSynchronisationType
             	    {
 
             	    							newCompositeNode(grammarAccess.getFunctionAccess().getSynchroTypeSynchronisationTypeEnumRuleCall_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_17);
+            	    pushFollow(FOLLOW_18);
             	    lv_synchroType_7_0=ruleSynchronisationType();
 
             	    state._fsp--;
@@ -2785,25 +2898,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:1194:4: (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) )
+            	    // InternalRsamlText.g:1246:4: (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) )
             	    {
-            	    // InternalRsamlText.g:1194:4: (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) )
-            	    // InternalRsamlText.g:1195:5: otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) )
+            	    // InternalRsamlText.g:1246:4: (otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) ) )
+            	    // InternalRsamlText.g:1247:5: otherlv_8= 'schedPolicy' ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) )
             	    {
-            	    otherlv_8=(Token)match(input,32,FOLLOW_19); 
+            	    otherlv_8=(Token)match(input,33,FOLLOW_20); 
 
             	    					newLeafNode(otherlv_8, grammarAccess.getFunctionAccess().getSchedPolicyKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:1199:5: ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) )
-            	    // InternalRsamlText.g:1200:6: (lv_schedPolicy_9_0= ruleSchedulingPolicy )
+            	    // InternalRsamlText.g:1251:5: ( (lv_schedPolicy_9_0= ruleSchedulingPolicy ) )
+            	    // InternalRsamlText.g:1252:6: (lv_schedPolicy_9_0= ruleSchedulingPolicy )
             	    {
-            	    // InternalRsamlText.g:1200:6: (lv_schedPolicy_9_0= ruleSchedulingPolicy )
-            	    // InternalRsamlText.g:1201:7: lv_schedPolicy_9_0= ruleSchedulingPolicy
+            	    // InternalRsamlText.g:1252:6: (lv_schedPolicy_9_0= ruleSchedulingPolicy )
+            	    // InternalRsamlText.g:1253:7: lv_schedPolicy_9_0= ruleSchedulingPolicy
             	    {
 
             	    							newCompositeNode(grammarAccess.getFunctionAccess().getSchedPolicySchedulingPolicyEnumRuleCall_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_17);
+            	    pushFollow(FOLLOW_18);
             	    lv_schedPolicy_9_0=ruleSchedulingPolicy();
 
             	    state._fsp--;
@@ -2832,22 +2945,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:1220:4: (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1272:4: (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:1220:4: (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:1221:5: otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1272:4: (otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1273:5: otherlv_10= 'otherPolicy' ( (lv_otherPolicy_11_0= RULE_STRING ) )
             	    {
-            	    otherlv_10=(Token)match(input,33,FOLLOW_8); 
+            	    otherlv_10=(Token)match(input,34,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_10, grammarAccess.getFunctionAccess().getOtherPolicyKeyword_4_4_0());
             	    				
-            	    // InternalRsamlText.g:1225:5: ( (lv_otherPolicy_11_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:1226:6: (lv_otherPolicy_11_0= RULE_STRING )
+            	    // InternalRsamlText.g:1277:5: ( (lv_otherPolicy_11_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1278:6: (lv_otherPolicy_11_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:1226:6: (lv_otherPolicy_11_0= RULE_STRING )
-            	    // InternalRsamlText.g:1227:7: lv_otherPolicy_11_0= RULE_STRING
+            	    // InternalRsamlText.g:1278:6: (lv_otherPolicy_11_0= RULE_STRING )
+            	    // InternalRsamlText.g:1279:7: lv_otherPolicy_11_0= RULE_STRING
             	    {
-            	    lv_otherPolicy_11_0=(Token)match(input,RULE_STRING,FOLLOW_17); 
+            	    lv_otherPolicy_11_0=(Token)match(input,RULE_STRING,FOLLOW_18); 
 
             	    							newLeafNode(lv_otherPolicy_11_0, grammarAccess.getFunctionAccess().getOtherPolicySTRINGTerminalRuleCall_4_4_1_0());
             	    						
@@ -2874,18 +2987,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 6 :
-            	    // InternalRsamlText.g:1245:4: ( (lv_actions_12_0= ruleAction ) )
+            	    // InternalRsamlText.g:1297:4: ( (lv_actions_12_0= ruleAction ) )
             	    {
-            	    // InternalRsamlText.g:1245:4: ( (lv_actions_12_0= ruleAction ) )
-            	    // InternalRsamlText.g:1246:5: (lv_actions_12_0= ruleAction )
+            	    // InternalRsamlText.g:1297:4: ( (lv_actions_12_0= ruleAction ) )
+            	    // InternalRsamlText.g:1298:5: (lv_actions_12_0= ruleAction )
             	    {
-            	    // InternalRsamlText.g:1246:5: (lv_actions_12_0= ruleAction )
-            	    // InternalRsamlText.g:1247:6: lv_actions_12_0= ruleAction
+            	    // InternalRsamlText.g:1298:5: (lv_actions_12_0= ruleAction )
+            	    // InternalRsamlText.g:1299:6: lv_actions_12_0= ruleAction
             	    {
 
             	    						newCompositeNode(grammarAccess.getFunctionAccess().getActionsActionParserRuleCall_4_5_0());
             	    					
-            	    pushFollow(FOLLOW_17);
+            	    pushFollow(FOLLOW_18);
             	    lv_actions_12_0=ruleAction();
 
             	    state._fsp--;
@@ -2916,7 +3029,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_13, grammarAccess.getFunctionAccess().getRightCurlyBracketKeyword_5());
             		
@@ -2943,7 +3056,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleAction"
-    // InternalRsamlText.g:1273:1: entryRuleAction returns [EObject current=null] : iv_ruleAction= ruleAction EOF ;
+    // InternalRsamlText.g:1325:1: entryRuleAction returns [EObject current=null] : iv_ruleAction= ruleAction EOF ;
     public final EObject entryRuleAction() throws RecognitionException {
         EObject current = null;
 
@@ -2951,8 +3064,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1273:47: (iv_ruleAction= ruleAction EOF )
-            // InternalRsamlText.g:1274:2: iv_ruleAction= ruleAction EOF
+            // InternalRsamlText.g:1325:47: (iv_ruleAction= ruleAction EOF )
+            // InternalRsamlText.g:1326:2: iv_ruleAction= ruleAction EOF
             {
              newCompositeNode(grammarAccess.getActionRule()); 
             pushFollow(FOLLOW_1);
@@ -2979,7 +3092,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleAction"
-    // InternalRsamlText.g:1280:1: ruleAction returns [EObject current=null] : ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:1332:1: ruleAction returns [EObject current=null] : ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' ) ;
     public final EObject ruleAction() throws RecognitionException {
         EObject current = null;
 
@@ -3003,20 +3116,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1286:2: ( ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:1287:2: ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:1338:2: ( ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:1339:2: ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:1287:2: ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:1288:3: ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}'
+            // InternalRsamlText.g:1339:2: ( ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:1340:3: ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:1288:3: ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) )
+            // InternalRsamlText.g:1340:3: ( ( () otherlv_1= 'action' ) | ( () otherlv_3= 'rtAction' ) )
             int alt12=2;
             int LA12_0 = input.LA(1);
 
-            if ( (LA12_0==34) ) {
+            if ( (LA12_0==35) ) {
                 alt12=1;
             }
-            else if ( (LA12_0==35) ) {
+            else if ( (LA12_0==36) ) {
                 alt12=2;
             }
             else {
@@ -3027,13 +3140,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt12) {
                 case 1 :
-                    // InternalRsamlText.g:1289:4: ( () otherlv_1= 'action' )
+                    // InternalRsamlText.g:1341:4: ( () otherlv_1= 'action' )
                     {
-                    // InternalRsamlText.g:1289:4: ( () otherlv_1= 'action' )
-                    // InternalRsamlText.g:1290:5: () otherlv_1= 'action'
+                    // InternalRsamlText.g:1341:4: ( () otherlv_1= 'action' )
+                    // InternalRsamlText.g:1342:5: () otherlv_1= 'action'
                     {
-                    // InternalRsamlText.g:1290:5: ()
-                    // InternalRsamlText.g:1291:6: 
+                    // InternalRsamlText.g:1342:5: ()
+                    // InternalRsamlText.g:1343:6: 
                     {
 
                     						current = forceCreateModelElement(
@@ -3043,7 +3156,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    otherlv_1=(Token)match(input,34,FOLLOW_3); 
+                    otherlv_1=(Token)match(input,35,FOLLOW_3); 
 
                     					newLeafNode(otherlv_1, grammarAccess.getActionAccess().getActionKeyword_0_0_1());
                     				
@@ -3054,13 +3167,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:1303:4: ( () otherlv_3= 'rtAction' )
+                    // InternalRsamlText.g:1355:4: ( () otherlv_3= 'rtAction' )
                     {
-                    // InternalRsamlText.g:1303:4: ( () otherlv_3= 'rtAction' )
-                    // InternalRsamlText.g:1304:5: () otherlv_3= 'rtAction'
+                    // InternalRsamlText.g:1355:4: ( () otherlv_3= 'rtAction' )
+                    // InternalRsamlText.g:1356:5: () otherlv_3= 'rtAction'
                     {
-                    // InternalRsamlText.g:1304:5: ()
-                    // InternalRsamlText.g:1305:6: 
+                    // InternalRsamlText.g:1356:5: ()
+                    // InternalRsamlText.g:1357:6: 
                     {
 
                     						current = forceCreateModelElement(
@@ -3070,7 +3183,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    otherlv_3=(Token)match(input,35,FOLLOW_3); 
+                    otherlv_3=(Token)match(input,36,FOLLOW_3); 
 
                     					newLeafNode(otherlv_3, grammarAccess.getActionAccess().getRtActionKeyword_0_1_1());
                     				
@@ -3083,19 +3196,19 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            // InternalRsamlText.g:1317:3: ( (lv_name_4_0= ruleName ) )?
+            // InternalRsamlText.g:1369:3: ( (lv_name_4_0= ruleName ) )?
             int alt13=2;
             int LA13_0 = input.LA(1);
 
-            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=14)||(LA13_0>=16 && LA13_0<=27)||(LA13_0>=29 && LA13_0<=42)||(LA13_0>=44 && LA13_0<=78)||(LA13_0>=80 && LA13_0<=111)) ) {
+            if ( ((LA13_0>=RULE_STRING && LA13_0<=RULE_ID)||LA13_0==11||(LA13_0>=13 && LA13_0<=15)||(LA13_0>=17 && LA13_0<=28)||(LA13_0>=30 && LA13_0<=43)||(LA13_0>=45 && LA13_0<=79)||(LA13_0>=81 && LA13_0<=114)) ) {
                 alt13=1;
             }
             switch (alt13) {
                 case 1 :
-                    // InternalRsamlText.g:1318:4: (lv_name_4_0= ruleName )
+                    // InternalRsamlText.g:1370:4: (lv_name_4_0= ruleName )
                     {
-                    // InternalRsamlText.g:1318:4: (lv_name_4_0= ruleName )
-                    // InternalRsamlText.g:1319:5: lv_name_4_0= ruleName
+                    // InternalRsamlText.g:1370:4: (lv_name_4_0= ruleName )
+                    // InternalRsamlText.g:1371:5: lv_name_4_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getActionAccess().getNameNameParserRuleCall_1_0());
@@ -3125,31 +3238,31 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_5=(Token)match(input,12,FOLLOW_20); 
+            otherlv_5=(Token)match(input,12,FOLLOW_21); 
 
             			newLeafNode(otherlv_5, grammarAccess.getActionAccess().getLeftCurlyBracketKeyword_2());
             		
-            // InternalRsamlText.g:1340:3: (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )*
+            // InternalRsamlText.g:1392:3: (this_Described_6= ruleDescribed[$current] | this_RealTime_7= ruleRealTime[$current] | (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) ) )*
             loop14:
             do {
                 int alt14=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt14=1;
                     }
                     break;
-                case 17:
                 case 18:
                 case 19:
                 case 20:
                 case 21:
                 case 22:
+                case 23:
                     {
                     alt14=2;
                     }
                     break;
-                case 36:
+                case 37:
                     {
                     alt14=3;
                     }
@@ -3159,7 +3272,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt14) {
             	case 1 :
-            	    // InternalRsamlText.g:1341:4: this_Described_6= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1393:4: this_Described_6= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -3167,7 +3280,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getActionAccess().getDescribedParserRuleCall_3_0());
             	    			
-            	    pushFollow(FOLLOW_20);
+            	    pushFollow(FOLLOW_21);
             	    this_Described_6=ruleDescribed(current);
 
             	    state._fsp--;
@@ -3180,7 +3293,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1353:4: this_RealTime_7= ruleRealTime[$current]
+            	    // InternalRsamlText.g:1405:4: this_RealTime_7= ruleRealTime[$current]
             	    {
 
             	    				if (current==null) {
@@ -3188,7 +3301,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getActionAccess().getRealTimeParserRuleCall_3_1());
             	    			
-            	    pushFollow(FOLLOW_20);
+            	    pushFollow(FOLLOW_21);
             	    this_RealTime_7=ruleRealTime(current);
 
             	    state._fsp--;
@@ -3201,25 +3314,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1365:4: (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1417:4: (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:1365:4: (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:1366:5: otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1417:4: (otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1418:5: otherlv_8= 'start' ( (lv_startDate_9_0= ruleReal ) ) ( (lv_timeUnit_10_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_8=(Token)match(input,36,FOLLOW_12); 
+            	    otherlv_8=(Token)match(input,37,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_8, grammarAccess.getActionAccess().getStartKeyword_3_2_0());
             	    				
-            	    // InternalRsamlText.g:1370:5: ( (lv_startDate_9_0= ruleReal ) )
-            	    // InternalRsamlText.g:1371:6: (lv_startDate_9_0= ruleReal )
+            	    // InternalRsamlText.g:1422:5: ( (lv_startDate_9_0= ruleReal ) )
+            	    // InternalRsamlText.g:1423:6: (lv_startDate_9_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:1371:6: (lv_startDate_9_0= ruleReal )
-            	    // InternalRsamlText.g:1372:7: lv_startDate_9_0= ruleReal
+            	    // InternalRsamlText.g:1423:6: (lv_startDate_9_0= ruleReal )
+            	    // InternalRsamlText.g:1424:7: lv_startDate_9_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getActionAccess().getStartDateRealParserRuleCall_3_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_startDate_9_0=ruleReal();
 
             	    state._fsp--;
@@ -3241,16 +3354,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:1389:5: ( (lv_timeUnit_10_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:1390:6: (lv_timeUnit_10_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1441:5: ( (lv_timeUnit_10_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1442:6: (lv_timeUnit_10_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:1390:6: (lv_timeUnit_10_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:1391:7: lv_timeUnit_10_0= ruleTimeUnit
+            	    // InternalRsamlText.g:1442:6: (lv_timeUnit_10_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1443:7: lv_timeUnit_10_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getActionAccess().getTimeUnitTimeUnitEnumRuleCall_3_2_2_0());
             	    						
-            	    pushFollow(FOLLOW_20);
+            	    pushFollow(FOLLOW_21);
             	    lv_timeUnit_10_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -3284,7 +3397,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_11=(Token)match(input,15,FOLLOW_2); 
+            otherlv_11=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_11, grammarAccess.getActionAccess().getRightCurlyBracketKeyword_4());
             		
@@ -3311,7 +3424,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRulePort"
-    // InternalRsamlText.g:1418:1: entryRulePort returns [EObject current=null] : iv_rulePort= rulePort EOF ;
+    // InternalRsamlText.g:1470:1: entryRulePort returns [EObject current=null] : iv_rulePort= rulePort EOF ;
     public final EObject entryRulePort() throws RecognitionException {
         EObject current = null;
 
@@ -3319,8 +3432,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1418:45: (iv_rulePort= rulePort EOF )
-            // InternalRsamlText.g:1419:2: iv_rulePort= rulePort EOF
+            // InternalRsamlText.g:1470:45: (iv_rulePort= rulePort EOF )
+            // InternalRsamlText.g:1471:2: iv_rulePort= rulePort EOF
             {
              newCompositeNode(grammarAccess.getPortRule()); 
             pushFollow(FOLLOW_1);
@@ -3347,7 +3460,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "rulePort"
-    // InternalRsamlText.g:1425:1: rulePort returns [EObject current=null] : ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:1477:1: rulePort returns [EObject current=null] : ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' ) ;
     public final EObject rulePort() throws RecognitionException {
         EObject current = null;
 
@@ -3371,20 +3484,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1431:2: ( ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1432:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' )
+            // InternalRsamlText.g:1483:2: ( ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1484:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1432:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' )
-            // InternalRsamlText.g:1433:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}'
+            // InternalRsamlText.g:1484:2: ( ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}' )
+            // InternalRsamlText.g:1485:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) ) ( (lv_name_4_0= ruleName ) )? otherlv_5= '{' (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1433:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) )
+            // InternalRsamlText.g:1485:3: ( ( () otherlv_1= 'input' ) | ( () otherlv_3= 'output' ) )
             int alt15=2;
             int LA15_0 = input.LA(1);
 
-            if ( (LA15_0==37) ) {
+            if ( (LA15_0==38) ) {
                 alt15=1;
             }
-            else if ( (LA15_0==38) ) {
+            else if ( (LA15_0==39) ) {
                 alt15=2;
             }
             else {
@@ -3395,13 +3508,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt15) {
                 case 1 :
-                    // InternalRsamlText.g:1434:4: ( () otherlv_1= 'input' )
+                    // InternalRsamlText.g:1486:4: ( () otherlv_1= 'input' )
                     {
-                    // InternalRsamlText.g:1434:4: ( () otherlv_1= 'input' )
-                    // InternalRsamlText.g:1435:5: () otherlv_1= 'input'
+                    // InternalRsamlText.g:1486:4: ( () otherlv_1= 'input' )
+                    // InternalRsamlText.g:1487:5: () otherlv_1= 'input'
                     {
-                    // InternalRsamlText.g:1435:5: ()
-                    // InternalRsamlText.g:1436:6: 
+                    // InternalRsamlText.g:1487:5: ()
+                    // InternalRsamlText.g:1488:6: 
                     {
 
                     						current = forceCreateModelElement(
@@ -3411,7 +3524,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    otherlv_1=(Token)match(input,37,FOLLOW_3); 
+                    otherlv_1=(Token)match(input,38,FOLLOW_3); 
 
                     					newLeafNode(otherlv_1, grammarAccess.getPortAccess().getInputKeyword_0_0_1());
                     				
@@ -3422,13 +3535,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:1448:4: ( () otherlv_3= 'output' )
+                    // InternalRsamlText.g:1500:4: ( () otherlv_3= 'output' )
                     {
-                    // InternalRsamlText.g:1448:4: ( () otherlv_3= 'output' )
-                    // InternalRsamlText.g:1449:5: () otherlv_3= 'output'
+                    // InternalRsamlText.g:1500:4: ( () otherlv_3= 'output' )
+                    // InternalRsamlText.g:1501:5: () otherlv_3= 'output'
                     {
-                    // InternalRsamlText.g:1449:5: ()
-                    // InternalRsamlText.g:1450:6: 
+                    // InternalRsamlText.g:1501:5: ()
+                    // InternalRsamlText.g:1502:6: 
                     {
 
                     						current = forceCreateModelElement(
@@ -3438,7 +3551,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     }
 
-                    otherlv_3=(Token)match(input,38,FOLLOW_3); 
+                    otherlv_3=(Token)match(input,39,FOLLOW_3); 
 
                     					newLeafNode(otherlv_3, grammarAccess.getPortAccess().getOutputKeyword_0_1_1());
                     				
@@ -3451,19 +3564,19 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            // InternalRsamlText.g:1462:3: ( (lv_name_4_0= ruleName ) )?
+            // InternalRsamlText.g:1514:3: ( (lv_name_4_0= ruleName ) )?
             int alt16=2;
             int LA16_0 = input.LA(1);
 
-            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=14)||(LA16_0>=16 && LA16_0<=27)||(LA16_0>=29 && LA16_0<=42)||(LA16_0>=44 && LA16_0<=78)||(LA16_0>=80 && LA16_0<=111)) ) {
+            if ( ((LA16_0>=RULE_STRING && LA16_0<=RULE_ID)||LA16_0==11||(LA16_0>=13 && LA16_0<=15)||(LA16_0>=17 && LA16_0<=28)||(LA16_0>=30 && LA16_0<=43)||(LA16_0>=45 && LA16_0<=79)||(LA16_0>=81 && LA16_0<=114)) ) {
                 alt16=1;
             }
             switch (alt16) {
                 case 1 :
-                    // InternalRsamlText.g:1463:4: (lv_name_4_0= ruleName )
+                    // InternalRsamlText.g:1515:4: (lv_name_4_0= ruleName )
                     {
-                    // InternalRsamlText.g:1463:4: (lv_name_4_0= ruleName )
-                    // InternalRsamlText.g:1464:5: lv_name_4_0= ruleName
+                    // InternalRsamlText.g:1515:4: (lv_name_4_0= ruleName )
+                    // InternalRsamlText.g:1516:5: lv_name_4_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getPortAccess().getNameNameParserRuleCall_1_0());
@@ -3493,31 +3606,31 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_5=(Token)match(input,12,FOLLOW_21); 
+            otherlv_5=(Token)match(input,12,FOLLOW_22); 
 
             			newLeafNode(otherlv_5, grammarAccess.getPortAccess().getLeftCurlyBracketKeyword_2());
             		
-            // InternalRsamlText.g:1485:3: (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )*
+            // InternalRsamlText.g:1537:3: (this_Described_6= ruleDescribed[$current] | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) ) | (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) ) )*
             loop17:
             do {
                 int alt17=5;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt17=1;
                     }
                     break;
-                case 39:
+                case 40:
                     {
                     alt17=2;
                     }
                     break;
-                case 40:
+                case 41:
                     {
                     alt17=3;
                     }
                     break;
-                case 41:
+                case 42:
                     {
                     alt17=4;
                     }
@@ -3527,7 +3640,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt17) {
             	case 1 :
-            	    // InternalRsamlText.g:1486:4: this_Described_6= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1538:4: this_Described_6= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -3535,7 +3648,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getPortAccess().getDescribedParserRuleCall_3_0());
             	    			
-            	    pushFollow(FOLLOW_21);
+            	    pushFollow(FOLLOW_22);
             	    this_Described_6=ruleDescribed(current);
 
             	    state._fsp--;
@@ -3548,25 +3661,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1498:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:1550:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:1498:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:1499:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:1550:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:1551:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
             	    {
-            	    otherlv_7=(Token)match(input,39,FOLLOW_22); 
+            	    otherlv_7=(Token)match(input,40,FOLLOW_23); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getPortAccess().getDataTypeKeyword_3_1_0());
             	    				
-            	    // InternalRsamlText.g:1503:5: ( (lv_dataType_8_0= ruleDataType ) )
-            	    // InternalRsamlText.g:1504:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:1555:5: ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:1556:6: (lv_dataType_8_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:1504:6: (lv_dataType_8_0= ruleDataType )
-            	    // InternalRsamlText.g:1505:7: lv_dataType_8_0= ruleDataType
+            	    // InternalRsamlText.g:1556:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:1557:7: lv_dataType_8_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getPortAccess().getDataTypeDataTypeEnumRuleCall_3_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_21);
+            	    pushFollow(FOLLOW_22);
             	    lv_dataType_8_0=ruleDataType();
 
             	    state._fsp--;
@@ -3595,22 +3708,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1524:4: (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1576:4: (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:1524:4: (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:1525:5: otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1576:4: (otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1577:5: otherlv_9= 'messageType' ( (lv_messageType_10_0= RULE_STRING ) )
             	    {
-            	    otherlv_9=(Token)match(input,40,FOLLOW_8); 
+            	    otherlv_9=(Token)match(input,41,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getPortAccess().getMessageTypeKeyword_3_2_0());
             	    				
-            	    // InternalRsamlText.g:1529:5: ( (lv_messageType_10_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:1530:6: (lv_messageType_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:1581:5: ( (lv_messageType_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1582:6: (lv_messageType_10_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:1530:6: (lv_messageType_10_0= RULE_STRING )
-            	    // InternalRsamlText.g:1531:7: lv_messageType_10_0= RULE_STRING
+            	    // InternalRsamlText.g:1582:6: (lv_messageType_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:1583:7: lv_messageType_10_0= RULE_STRING
             	    {
-            	    lv_messageType_10_0=(Token)match(input,RULE_STRING,FOLLOW_21); 
+            	    lv_messageType_10_0=(Token)match(input,RULE_STRING,FOLLOW_22); 
 
             	    							newLeafNode(lv_messageType_10_0, grammarAccess.getPortAccess().getMessageTypeSTRINGTerminalRuleCall_3_2_1_0());
             	    						
@@ -3637,22 +3750,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:1549:4: (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1601:4: (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:1549:4: (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:1550:5: otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1601:4: (otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:1602:5: otherlv_11= 'topic' ( (lv_topic_12_0= RULE_STRING ) )
             	    {
-            	    otherlv_11=(Token)match(input,41,FOLLOW_8); 
+            	    otherlv_11=(Token)match(input,42,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_11, grammarAccess.getPortAccess().getTopicKeyword_3_3_0());
             	    				
-            	    // InternalRsamlText.g:1554:5: ( (lv_topic_12_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:1555:6: (lv_topic_12_0= RULE_STRING )
+            	    // InternalRsamlText.g:1606:5: ( (lv_topic_12_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:1607:6: (lv_topic_12_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:1555:6: (lv_topic_12_0= RULE_STRING )
-            	    // InternalRsamlText.g:1556:7: lv_topic_12_0= RULE_STRING
+            	    // InternalRsamlText.g:1607:6: (lv_topic_12_0= RULE_STRING )
+            	    // InternalRsamlText.g:1608:7: lv_topic_12_0= RULE_STRING
             	    {
-            	    lv_topic_12_0=(Token)match(input,RULE_STRING,FOLLOW_21); 
+            	    lv_topic_12_0=(Token)match(input,RULE_STRING,FOLLOW_22); 
 
             	    							newLeafNode(lv_topic_12_0, grammarAccess.getPortAccess().getTopicSTRINGTerminalRuleCall_3_3_1_0());
             	    						
@@ -3684,7 +3797,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_13, grammarAccess.getPortAccess().getRightCurlyBracketKeyword_4());
             		
@@ -3711,7 +3824,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleConnection"
-    // InternalRsamlText.g:1582:1: entryRuleConnection returns [EObject current=null] : iv_ruleConnection= ruleConnection EOF ;
+    // InternalRsamlText.g:1634:1: entryRuleConnection returns [EObject current=null] : iv_ruleConnection= ruleConnection EOF ;
     public final EObject entryRuleConnection() throws RecognitionException {
         EObject current = null;
 
@@ -3719,8 +3832,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1582:51: (iv_ruleConnection= ruleConnection EOF )
-            // InternalRsamlText.g:1583:2: iv_ruleConnection= ruleConnection EOF
+            // InternalRsamlText.g:1634:51: (iv_ruleConnection= ruleConnection EOF )
+            // InternalRsamlText.g:1635:2: iv_ruleConnection= ruleConnection EOF
             {
              newCompositeNode(grammarAccess.getConnectionRule()); 
             pushFollow(FOLLOW_1);
@@ -3747,7 +3860,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleConnection"
-    // InternalRsamlText.g:1589:1: ruleConnection returns [EObject current=null] : ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) ;
+    // InternalRsamlText.g:1641:1: ruleConnection returns [EObject current=null] : ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) ;
     public final EObject ruleConnection() throws RecognitionException {
         EObject current = null;
 
@@ -3758,14 +3871,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1595:2: ( ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) )
-            // InternalRsamlText.g:1596:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
+            // InternalRsamlText.g:1647:2: ( ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? ) )
+            // InternalRsamlText.g:1648:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
             {
-            // InternalRsamlText.g:1596:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
-            // InternalRsamlText.g:1597:3: () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )?
+            // InternalRsamlText.g:1648:2: ( () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )? )
+            // InternalRsamlText.g:1649:3: () otherlv_1= 'connect' ( ( ruleQualifiedName ) )? otherlv_3= '->' ( ( ruleQualifiedName ) )?
             {
-            // InternalRsamlText.g:1597:3: ()
-            // InternalRsamlText.g:1598:4: 
+            // InternalRsamlText.g:1649:3: ()
+            // InternalRsamlText.g:1650:4: 
             {
 
             				current = forceCreateModelElement(
@@ -3775,11 +3888,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,42,FOLLOW_23); 
+            otherlv_1=(Token)match(input,43,FOLLOW_24); 
 
             			newLeafNode(otherlv_1, grammarAccess.getConnectionAccess().getConnectKeyword_1());
             		
-            // InternalRsamlText.g:1608:3: ( ( ruleQualifiedName ) )?
+            // InternalRsamlText.g:1660:3: ( ( ruleQualifiedName ) )?
             int alt18=2;
             int LA18_0 = input.LA(1);
 
@@ -3788,10 +3901,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt18) {
                 case 1 :
-                    // InternalRsamlText.g:1609:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1661:4: ( ruleQualifiedName )
                     {
-                    // InternalRsamlText.g:1609:4: ( ruleQualifiedName )
-                    // InternalRsamlText.g:1610:5: ruleQualifiedName
+                    // InternalRsamlText.g:1661:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1662:5: ruleQualifiedName
                     {
 
                     					if (current==null) {
@@ -3801,7 +3914,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                     					newCompositeNode(grammarAccess.getConnectionAccess().getSourceOutputPortCrossReference_2_0());
                     				
-                    pushFollow(FOLLOW_24);
+                    pushFollow(FOLLOW_25);
                     ruleQualifiedName();
 
                     state._fsp--;
@@ -3818,11 +3931,11 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,43,FOLLOW_25); 
+            otherlv_3=(Token)match(input,44,FOLLOW_26); 
 
             			newLeafNode(otherlv_3, grammarAccess.getConnectionAccess().getHyphenMinusGreaterThanSignKeyword_3());
             		
-            // InternalRsamlText.g:1628:3: ( ( ruleQualifiedName ) )?
+            // InternalRsamlText.g:1680:3: ( ( ruleQualifiedName ) )?
             int alt19=2;
             int LA19_0 = input.LA(1);
 
@@ -3831,10 +3944,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt19) {
                 case 1 :
-                    // InternalRsamlText.g:1629:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1681:4: ( ruleQualifiedName )
                     {
-                    // InternalRsamlText.g:1629:4: ( ruleQualifiedName )
-                    // InternalRsamlText.g:1630:5: ruleQualifiedName
+                    // InternalRsamlText.g:1681:4: ( ruleQualifiedName )
+                    // InternalRsamlText.g:1682:5: ruleQualifiedName
                     {
 
                     					if (current==null) {
@@ -3884,7 +3997,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleInhibitor"
-    // InternalRsamlText.g:1648:1: entryRuleInhibitor returns [EObject current=null] : iv_ruleInhibitor= ruleInhibitor EOF ;
+    // InternalRsamlText.g:1700:1: entryRuleInhibitor returns [EObject current=null] : iv_ruleInhibitor= ruleInhibitor EOF ;
     public final EObject entryRuleInhibitor() throws RecognitionException {
         EObject current = null;
 
@@ -3892,8 +4005,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1648:50: (iv_ruleInhibitor= ruleInhibitor EOF )
-            // InternalRsamlText.g:1649:2: iv_ruleInhibitor= ruleInhibitor EOF
+            // InternalRsamlText.g:1700:50: (iv_ruleInhibitor= ruleInhibitor EOF )
+            // InternalRsamlText.g:1701:2: iv_ruleInhibitor= ruleInhibitor EOF
             {
              newCompositeNode(grammarAccess.getInhibitorRule()); 
             pushFollow(FOLLOW_1);
@@ -3920,7 +4033,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleInhibitor"
-    // InternalRsamlText.g:1655:1: ruleInhibitor returns [EObject current=null] : ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:1707:1: ruleInhibitor returns [EObject current=null] : ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleInhibitor() throws RecognitionException {
         EObject current = null;
 
@@ -3945,14 +4058,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1661:2: ( ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1662:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1713:2: ( ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1714:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1662:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:1663:3: () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:1714:2: ( () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1715:3: () otherlv_1= 'inhibitor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1663:3: ()
-            // InternalRsamlText.g:1664:4: 
+            // InternalRsamlText.g:1715:3: ()
+            // InternalRsamlText.g:1716:4: 
             {
 
             				current = forceCreateModelElement(
@@ -3962,23 +4075,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,44,FOLLOW_3); 
+            otherlv_1=(Token)match(input,45,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getInhibitorAccess().getInhibitorKeyword_1());
             		
-            // InternalRsamlText.g:1674:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:1726:3: ( (lv_name_2_0= ruleName ) )?
             int alt20=2;
             int LA20_0 = input.LA(1);
 
-            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=14)||(LA20_0>=16 && LA20_0<=27)||(LA20_0>=29 && LA20_0<=42)||(LA20_0>=44 && LA20_0<=78)||(LA20_0>=80 && LA20_0<=111)) ) {
+            if ( ((LA20_0>=RULE_STRING && LA20_0<=RULE_ID)||LA20_0==11||(LA20_0>=13 && LA20_0<=15)||(LA20_0>=17 && LA20_0<=28)||(LA20_0>=30 && LA20_0<=43)||(LA20_0>=45 && LA20_0<=79)||(LA20_0>=81 && LA20_0<=114)) ) {
                 alt20=1;
             }
             switch (alt20) {
                 case 1 :
-                    // InternalRsamlText.g:1675:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1727:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:1675:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:1676:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:1727:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1728:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getInhibitorAccess().getNameNameParserRuleCall_2_0());
@@ -4008,36 +4121,36 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_26); 
+            otherlv_3=(Token)match(input,12,FOLLOW_27); 
 
             			newLeafNode(otherlv_3, grammarAccess.getInhibitorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:1697:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:1749:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop21:
             do {
                 int alt21=6;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt21=1;
                     }
                     break;
-                case 45:
+                case 46:
                     {
                     alt21=2;
                     }
                     break;
-                case 46:
+                case 47:
                     {
                     alt21=3;
                     }
                     break;
-                case 47:
+                case 48:
                     {
                     alt21=4;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt21=5;
                     }
@@ -4047,7 +4160,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt21) {
             	case 1 :
-            	    // InternalRsamlText.g:1698:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1750:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -4055,7 +4168,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getInhibitorAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -4068,20 +4181,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1710:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1762:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1710:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1711:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1762:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1763:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,45,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,46,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getInhibitorAccess().getTriggerKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:1715:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1716:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1767:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1768:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1716:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1717:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1768:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1769:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4091,7 +4204,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getInhibitorAccess().getTriggerOutputPortCrossReference_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -4112,20 +4225,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1733:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1785:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1733:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1734:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1785:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1786:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,46,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,47,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getInhibitorAccess().getTargetKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:1738:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1739:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1790:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1791:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1739:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1740:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1791:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1792:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4135,7 +4248,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getInhibitorAccess().getTargetOutputPortCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -4156,25 +4269,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:1756:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1808:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:1756:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:1757:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1808:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1809:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_9=(Token)match(input,47,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,48,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getInhibitorAccess().getDurationKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:1761:5: ( (lv_duration_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:1762:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1813:5: ( (lv_duration_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:1814:6: (lv_duration_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:1762:6: (lv_duration_10_0= ruleReal )
-            	    // InternalRsamlText.g:1763:7: lv_duration_10_0= ruleReal
+            	    // InternalRsamlText.g:1814:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1815:7: lv_duration_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getInhibitorAccess().getDurationRealParserRuleCall_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_duration_10_0=ruleReal();
 
             	    state._fsp--;
@@ -4196,16 +4309,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:1780:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:1781:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1832:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1833:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:1781:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:1782:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:1833:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:1834:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getInhibitorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
             	    						
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    lv_timeUnit_11_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -4234,7 +4347,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:1801:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:1853:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -4242,7 +4355,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getInhibitorAccess().getUnitParserRuleCall_4_4());
             	    			
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    this_Unit_12=ruleUnit(current);
 
             	    state._fsp--;
@@ -4260,7 +4373,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_13, grammarAccess.getInhibitorAccess().getRightCurlyBracketKeyword_5());
             		
@@ -4287,7 +4400,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleSuppressor"
-    // InternalRsamlText.g:1821:1: entryRuleSuppressor returns [EObject current=null] : iv_ruleSuppressor= ruleSuppressor EOF ;
+    // InternalRsamlText.g:1873:1: entryRuleSuppressor returns [EObject current=null] : iv_ruleSuppressor= ruleSuppressor EOF ;
     public final EObject entryRuleSuppressor() throws RecognitionException {
         EObject current = null;
 
@@ -4295,8 +4408,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1821:51: (iv_ruleSuppressor= ruleSuppressor EOF )
-            // InternalRsamlText.g:1822:2: iv_ruleSuppressor= ruleSuppressor EOF
+            // InternalRsamlText.g:1873:51: (iv_ruleSuppressor= ruleSuppressor EOF )
+            // InternalRsamlText.g:1874:2: iv_ruleSuppressor= ruleSuppressor EOF
             {
              newCompositeNode(grammarAccess.getSuppressorRule()); 
             pushFollow(FOLLOW_1);
@@ -4323,7 +4436,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSuppressor"
-    // InternalRsamlText.g:1828:1: ruleSuppressor returns [EObject current=null] : ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:1880:1: ruleSuppressor returns [EObject current=null] : ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleSuppressor() throws RecognitionException {
         EObject current = null;
 
@@ -4348,14 +4461,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:1834:2: ( ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:1835:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1886:2: ( ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:1887:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:1835:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:1836:3: () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:1887:2: ( () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:1888:3: () otherlv_1= 'suppressor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:1836:3: ()
-            // InternalRsamlText.g:1837:4: 
+            // InternalRsamlText.g:1888:3: ()
+            // InternalRsamlText.g:1889:4: 
             {
 
             				current = forceCreateModelElement(
@@ -4365,23 +4478,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,48,FOLLOW_3); 
+            otherlv_1=(Token)match(input,49,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getSuppressorAccess().getSuppressorKeyword_1());
             		
-            // InternalRsamlText.g:1847:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:1899:3: ( (lv_name_2_0= ruleName ) )?
             int alt22=2;
             int LA22_0 = input.LA(1);
 
-            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=14)||(LA22_0>=16 && LA22_0<=27)||(LA22_0>=29 && LA22_0<=42)||(LA22_0>=44 && LA22_0<=78)||(LA22_0>=80 && LA22_0<=111)) ) {
+            if ( ((LA22_0>=RULE_STRING && LA22_0<=RULE_ID)||LA22_0==11||(LA22_0>=13 && LA22_0<=15)||(LA22_0>=17 && LA22_0<=28)||(LA22_0>=30 && LA22_0<=43)||(LA22_0>=45 && LA22_0<=79)||(LA22_0>=81 && LA22_0<=114)) ) {
                 alt22=1;
             }
             switch (alt22) {
                 case 1 :
-                    // InternalRsamlText.g:1848:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1900:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:1848:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:1849:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:1900:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:1901:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getSuppressorAccess().getNameNameParserRuleCall_2_0());
@@ -4411,36 +4524,36 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_26); 
+            otherlv_3=(Token)match(input,12,FOLLOW_27); 
 
             			newLeafNode(otherlv_3, grammarAccess.getSuppressorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:1870:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:1922:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'target' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop23:
             do {
                 int alt23=6;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt23=1;
                     }
                     break;
-                case 45:
+                case 46:
                     {
                     alt23=2;
                     }
                     break;
-                case 46:
+                case 47:
                     {
                     alt23=3;
                     }
                     break;
-                case 47:
+                case 48:
                     {
                     alt23=4;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt23=5;
                     }
@@ -4450,7 +4563,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt23) {
             	case 1 :
-            	    // InternalRsamlText.g:1871:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:1923:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -4458,7 +4571,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getSuppressorAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -4471,20 +4584,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:1883:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1935:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1883:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1884:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1935:4: (otherlv_5= 'trigger' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1936:5: otherlv_5= 'trigger' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,45,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,46,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getSuppressorAccess().getTriggerKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:1888:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1889:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1940:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1941:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1889:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1890:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1941:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1942:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4494,7 +4607,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getSuppressorAccess().getTriggerOutputPortCrossReference_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -4515,20 +4628,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:1906:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1958:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:1906:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:1907:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1958:4: (otherlv_7= 'target' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:1959:5: otherlv_7= 'target' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,46,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,47,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getSuppressorAccess().getTargetKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:1911:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:1912:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1963:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:1964:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:1912:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:1913:7: ruleQualifiedName
+            	    // InternalRsamlText.g:1964:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:1965:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -4538,7 +4651,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getSuppressorAccess().getTargetEntryPortCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -4559,25 +4672,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:1929:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1981:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:1929:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:1930:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:1981:4: (otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:1982:5: otherlv_9= 'duration' ( (lv_duration_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_9=(Token)match(input,47,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,48,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getSuppressorAccess().getDurationKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:1934:5: ( (lv_duration_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:1935:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1986:5: ( (lv_duration_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:1987:6: (lv_duration_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:1935:6: (lv_duration_10_0= ruleReal )
-            	    // InternalRsamlText.g:1936:7: lv_duration_10_0= ruleReal
+            	    // InternalRsamlText.g:1987:6: (lv_duration_10_0= ruleReal )
+            	    // InternalRsamlText.g:1988:7: lv_duration_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getSuppressorAccess().getDurationRealParserRuleCall_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_duration_10_0=ruleReal();
 
             	    state._fsp--;
@@ -4599,16 +4712,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:1953:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:1954:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2005:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2006:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:1954:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:1955:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:2006:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2007:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getSuppressorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
             	    						
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    lv_timeUnit_11_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -4637,7 +4750,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:1974:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:2026:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -4645,7 +4758,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getSuppressorAccess().getUnitParserRuleCall_4_4());
             	    			
-            	    pushFollow(FOLLOW_26);
+            	    pushFollow(FOLLOW_27);
             	    this_Unit_12=ruleUnit(current);
 
             	    state._fsp--;
@@ -4663,7 +4776,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_13, grammarAccess.getSuppressorAccess().getRightCurlyBracketKeyword_5());
             		
@@ -4690,7 +4803,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleSensor"
-    // InternalRsamlText.g:1994:1: entryRuleSensor returns [EObject current=null] : iv_ruleSensor= ruleSensor EOF ;
+    // InternalRsamlText.g:2046:1: entryRuleSensor returns [EObject current=null] : iv_ruleSensor= ruleSensor EOF ;
     public final EObject entryRuleSensor() throws RecognitionException {
         EObject current = null;
 
@@ -4698,8 +4811,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:1994:47: (iv_ruleSensor= ruleSensor EOF )
-            // InternalRsamlText.g:1995:2: iv_ruleSensor= ruleSensor EOF
+            // InternalRsamlText.g:2046:47: (iv_ruleSensor= ruleSensor EOF )
+            // InternalRsamlText.g:2047:2: iv_ruleSensor= ruleSensor EOF
             {
              newCompositeNode(grammarAccess.getSensorRule()); 
             pushFollow(FOLLOW_1);
@@ -4726,7 +4839,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSensor"
-    // InternalRsamlText.g:2001:1: ruleSensor returns [EObject current=null] : ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:2053:1: ruleSensor returns [EObject current=null] : ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleSensor() throws RecognitionException {
         EObject current = null;
 
@@ -4754,14 +4867,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2007:2: ( ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:2008:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2059:2: ( ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:2060:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:2008:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:2009:3: () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:2060:2: ( () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2061:3: () otherlv_1= 'sensor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:2009:3: ()
-            // InternalRsamlText.g:2010:4: 
+            // InternalRsamlText.g:2061:3: ()
+            // InternalRsamlText.g:2062:4: 
             {
 
             				current = forceCreateModelElement(
@@ -4771,23 +4884,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,49,FOLLOW_3); 
+            otherlv_1=(Token)match(input,50,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getSensorAccess().getSensorKeyword_1());
             		
-            // InternalRsamlText.g:2020:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2072:3: ( (lv_name_2_0= ruleName ) )?
             int alt24=2;
             int LA24_0 = input.LA(1);
 
-            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=14)||(LA24_0>=16 && LA24_0<=27)||(LA24_0>=29 && LA24_0<=42)||(LA24_0>=44 && LA24_0<=78)||(LA24_0>=80 && LA24_0<=111)) ) {
+            if ( ((LA24_0>=RULE_STRING && LA24_0<=RULE_ID)||LA24_0==11||(LA24_0>=13 && LA24_0<=15)||(LA24_0>=17 && LA24_0<=28)||(LA24_0>=30 && LA24_0<=43)||(LA24_0>=45 && LA24_0<=79)||(LA24_0>=81 && LA24_0<=114)) ) {
                 alt24=1;
             }
             switch (alt24) {
                 case 1 :
-                    // InternalRsamlText.g:2021:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2073:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2021:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2022:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2073:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2074:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getSensorAccess().getNameNameParserRuleCall_2_0());
@@ -4817,36 +4930,36 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_27); 
+            otherlv_3=(Token)match(input,12,FOLLOW_28); 
 
             			newLeafNode(otherlv_3, grammarAccess.getSensorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2043:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:2095:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop25:
             do {
                 int alt25=6;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt25=1;
                     }
                     break;
-                case 50:
+                case 51:
                     {
                     alt25=2;
                     }
                     break;
-                case 39:
+                case 40:
                     {
                     alt25=3;
                     }
                     break;
-                case 20:
+                case 21:
                     {
                     alt25=4;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt25=5;
                     }
@@ -4856,7 +4969,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt25) {
             	case 1 :
-            	    // InternalRsamlText.g:2044:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2096:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -4864,7 +4977,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getSensorAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -4877,22 +4990,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2056:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2108:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:2056:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:2057:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2108:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2109:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
             	    {
-            	    otherlv_5=(Token)match(input,50,FOLLOW_8); 
+            	    otherlv_5=(Token)match(input,51,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getSensorAccess().getKindKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2061:5: ( (lv_kind_6_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:2062:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2113:5: ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2114:6: (lv_kind_6_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:2062:6: (lv_kind_6_0= RULE_STRING )
-            	    // InternalRsamlText.g:2063:7: lv_kind_6_0= RULE_STRING
+            	    // InternalRsamlText.g:2114:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2115:7: lv_kind_6_0= RULE_STRING
             	    {
-            	    lv_kind_6_0=(Token)match(input,RULE_STRING,FOLLOW_27); 
+            	    lv_kind_6_0=(Token)match(input,RULE_STRING,FOLLOW_28); 
 
             	    							newLeafNode(lv_kind_6_0, grammarAccess.getSensorAccess().getKindSTRINGTerminalRuleCall_4_1_1_0());
             	    						
@@ -4919,25 +5032,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2081:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2133:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:2081:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:2082:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2133:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2134:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
             	    {
-            	    otherlv_7=(Token)match(input,39,FOLLOW_22); 
+            	    otherlv_7=(Token)match(input,40,FOLLOW_23); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getSensorAccess().getDataTypeKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2086:5: ( (lv_dataType_8_0= ruleDataType ) )
-            	    // InternalRsamlText.g:2087:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2138:5: ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2139:6: (lv_dataType_8_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:2087:6: (lv_dataType_8_0= ruleDataType )
-            	    // InternalRsamlText.g:2088:7: lv_dataType_8_0= ruleDataType
+            	    // InternalRsamlText.g:2139:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2140:7: lv_dataType_8_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getSensorAccess().getDataTypeDataTypeEnumRuleCall_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    lv_dataType_8_0=ruleDataType();
 
             	    state._fsp--;
@@ -4966,25 +5079,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:2107:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2159:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:2107:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:2108:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2159:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2160:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_9=(Token)match(input,20,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,21,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getSensorAccess().getPeriodKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:2112:5: ( (lv_period_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:2113:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2164:5: ( (lv_period_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:2165:6: (lv_period_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:2113:6: (lv_period_10_0= ruleReal )
-            	    // InternalRsamlText.g:2114:7: lv_period_10_0= ruleReal
+            	    // InternalRsamlText.g:2165:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2166:7: lv_period_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getSensorAccess().getPeriodRealParserRuleCall_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_period_10_0=ruleReal();
 
             	    state._fsp--;
@@ -5006,16 +5119,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2131:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:2132:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2183:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2184:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:2132:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:2133:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:2184:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2185:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getSensorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
             	    						
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    lv_timeUnit_11_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -5044,7 +5157,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:2152:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:2204:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -5052,7 +5165,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getSensorAccess().getUnitParserRuleCall_4_4());
             	    			
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    this_Unit_12=ruleUnit(current);
 
             	    state._fsp--;
@@ -5070,7 +5183,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_13, grammarAccess.getSensorAccess().getRightCurlyBracketKeyword_5());
             		
@@ -5097,7 +5210,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleActuator"
-    // InternalRsamlText.g:2172:1: entryRuleActuator returns [EObject current=null] : iv_ruleActuator= ruleActuator EOF ;
+    // InternalRsamlText.g:2224:1: entryRuleActuator returns [EObject current=null] : iv_ruleActuator= ruleActuator EOF ;
     public final EObject entryRuleActuator() throws RecognitionException {
         EObject current = null;
 
@@ -5105,8 +5218,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2172:49: (iv_ruleActuator= ruleActuator EOF )
-            // InternalRsamlText.g:2173:2: iv_ruleActuator= ruleActuator EOF
+            // InternalRsamlText.g:2224:49: (iv_ruleActuator= ruleActuator EOF )
+            // InternalRsamlText.g:2225:2: iv_ruleActuator= ruleActuator EOF
             {
              newCompositeNode(grammarAccess.getActuatorRule()); 
             pushFollow(FOLLOW_1);
@@ -5133,7 +5246,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleActuator"
-    // InternalRsamlText.g:2179:1: ruleActuator returns [EObject current=null] : ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
+    // InternalRsamlText.g:2231:1: ruleActuator returns [EObject current=null] : ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) ;
     public final EObject ruleActuator() throws RecognitionException {
         EObject current = null;
 
@@ -5161,14 +5274,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2185:2: ( ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
-            // InternalRsamlText.g:2186:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2237:2: ( ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' ) )
+            // InternalRsamlText.g:2238:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
             {
-            // InternalRsamlText.g:2186:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
-            // InternalRsamlText.g:2187:3: () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
+            // InternalRsamlText.g:2238:2: ( () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}' )
+            // InternalRsamlText.g:2239:3: () otherlv_1= 'actuator' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )* otherlv_13= '}'
             {
-            // InternalRsamlText.g:2187:3: ()
-            // InternalRsamlText.g:2188:4: 
+            // InternalRsamlText.g:2239:3: ()
+            // InternalRsamlText.g:2240:4: 
             {
 
             				current = forceCreateModelElement(
@@ -5178,23 +5291,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,51,FOLLOW_3); 
+            otherlv_1=(Token)match(input,52,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getActuatorAccess().getActuatorKeyword_1());
             		
-            // InternalRsamlText.g:2198:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2250:3: ( (lv_name_2_0= ruleName ) )?
             int alt26=2;
             int LA26_0 = input.LA(1);
 
-            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=14)||(LA26_0>=16 && LA26_0<=27)||(LA26_0>=29 && LA26_0<=42)||(LA26_0>=44 && LA26_0<=78)||(LA26_0>=80 && LA26_0<=111)) ) {
+            if ( ((LA26_0>=RULE_STRING && LA26_0<=RULE_ID)||LA26_0==11||(LA26_0>=13 && LA26_0<=15)||(LA26_0>=17 && LA26_0<=28)||(LA26_0>=30 && LA26_0<=43)||(LA26_0>=45 && LA26_0<=79)||(LA26_0>=81 && LA26_0<=114)) ) {
                 alt26=1;
             }
             switch (alt26) {
                 case 1 :
-                    // InternalRsamlText.g:2199:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2251:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2199:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2200:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2251:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2252:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getActuatorAccess().getNameNameParserRuleCall_2_0());
@@ -5224,36 +5337,36 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_27); 
+            otherlv_3=(Token)match(input,12,FOLLOW_28); 
 
             			newLeafNode(otherlv_3, grammarAccess.getActuatorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2221:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
+            // InternalRsamlText.g:2273:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) ) | (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) ) | (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) ) | this_Unit_12= ruleUnit[$current] )*
             loop27:
             do {
                 int alt27=6;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt27=1;
                     }
                     break;
-                case 50:
+                case 51:
                     {
                     alt27=2;
                     }
                     break;
-                case 39:
+                case 40:
                     {
                     alt27=3;
                     }
                     break;
-                case 20:
+                case 21:
                     {
                     alt27=4;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt27=5;
                     }
@@ -5263,7 +5376,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt27) {
             	case 1 :
-            	    // InternalRsamlText.g:2222:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2274:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -5271,7 +5384,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getActuatorAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -5284,22 +5397,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2234:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2286:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:2234:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:2235:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2286:4: (otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:2287:5: otherlv_5= 'kind' ( (lv_kind_6_0= RULE_STRING ) )
             	    {
-            	    otherlv_5=(Token)match(input,50,FOLLOW_8); 
+            	    otherlv_5=(Token)match(input,51,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getActuatorAccess().getKindKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2239:5: ( (lv_kind_6_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:2240:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2291:5: ( (lv_kind_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:2292:6: (lv_kind_6_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:2240:6: (lv_kind_6_0= RULE_STRING )
-            	    // InternalRsamlText.g:2241:7: lv_kind_6_0= RULE_STRING
+            	    // InternalRsamlText.g:2292:6: (lv_kind_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:2293:7: lv_kind_6_0= RULE_STRING
             	    {
-            	    lv_kind_6_0=(Token)match(input,RULE_STRING,FOLLOW_27); 
+            	    lv_kind_6_0=(Token)match(input,RULE_STRING,FOLLOW_28); 
 
             	    							newLeafNode(lv_kind_6_0, grammarAccess.getActuatorAccess().getKindSTRINGTerminalRuleCall_4_1_1_0());
             	    						
@@ -5326,25 +5439,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2259:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2311:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:2259:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:2260:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2311:4: (otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:2312:5: otherlv_7= 'dataType' ( (lv_dataType_8_0= ruleDataType ) )
             	    {
-            	    otherlv_7=(Token)match(input,39,FOLLOW_22); 
+            	    otherlv_7=(Token)match(input,40,FOLLOW_23); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getActuatorAccess().getDataTypeKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2264:5: ( (lv_dataType_8_0= ruleDataType ) )
-            	    // InternalRsamlText.g:2265:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2316:5: ( (lv_dataType_8_0= ruleDataType ) )
+            	    // InternalRsamlText.g:2317:6: (lv_dataType_8_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:2265:6: (lv_dataType_8_0= ruleDataType )
-            	    // InternalRsamlText.g:2266:7: lv_dataType_8_0= ruleDataType
+            	    // InternalRsamlText.g:2317:6: (lv_dataType_8_0= ruleDataType )
+            	    // InternalRsamlText.g:2318:7: lv_dataType_8_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getActuatorAccess().getDataTypeDataTypeEnumRuleCall_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    lv_dataType_8_0=ruleDataType();
 
             	    state._fsp--;
@@ -5373,25 +5486,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:2285:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2337:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:2285:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:2286:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2337:4: (otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:2338:5: otherlv_9= 'period' ( (lv_period_10_0= ruleReal ) ) ( (lv_timeUnit_11_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_9=(Token)match(input,20,FOLLOW_12); 
+            	    otherlv_9=(Token)match(input,21,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getActuatorAccess().getPeriodKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:2290:5: ( (lv_period_10_0= ruleReal ) )
-            	    // InternalRsamlText.g:2291:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2342:5: ( (lv_period_10_0= ruleReal ) )
+            	    // InternalRsamlText.g:2343:6: (lv_period_10_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:2291:6: (lv_period_10_0= ruleReal )
-            	    // InternalRsamlText.g:2292:7: lv_period_10_0= ruleReal
+            	    // InternalRsamlText.g:2343:6: (lv_period_10_0= ruleReal )
+            	    // InternalRsamlText.g:2344:7: lv_period_10_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getActuatorAccess().getPeriodRealParserRuleCall_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_period_10_0=ruleReal();
 
             	    state._fsp--;
@@ -5413,16 +5526,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2309:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:2310:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2361:5: ( (lv_timeUnit_11_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:2362:6: (lv_timeUnit_11_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:2310:6: (lv_timeUnit_11_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:2311:7: lv_timeUnit_11_0= ruleTimeUnit
+            	    // InternalRsamlText.g:2362:6: (lv_timeUnit_11_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:2363:7: lv_timeUnit_11_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getActuatorAccess().getTimeUnitTimeUnitEnumRuleCall_4_3_2_0());
             	    						
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    lv_timeUnit_11_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -5451,7 +5564,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:2330:4: this_Unit_12= ruleUnit[$current]
+            	    // InternalRsamlText.g:2382:4: this_Unit_12= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -5459,7 +5572,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getActuatorAccess().getUnitParserRuleCall_4_4());
             	    			
-            	    pushFollow(FOLLOW_27);
+            	    pushFollow(FOLLOW_28);
             	    this_Unit_12=ruleUnit(current);
 
             	    state._fsp--;
@@ -5477,7 +5590,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_13=(Token)match(input,15,FOLLOW_2); 
+            otherlv_13=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_13, grammarAccess.getActuatorAccess().getRightCurlyBracketKeyword_5());
             		
@@ -5504,7 +5617,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleMission"
-    // InternalRsamlText.g:2350:1: entryRuleMission returns [EObject current=null] : iv_ruleMission= ruleMission EOF ;
+    // InternalRsamlText.g:2402:1: entryRuleMission returns [EObject current=null] : iv_ruleMission= ruleMission EOF ;
     public final EObject entryRuleMission() throws RecognitionException {
         EObject current = null;
 
@@ -5512,8 +5625,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2350:48: (iv_ruleMission= ruleMission EOF )
-            // InternalRsamlText.g:2351:2: iv_ruleMission= ruleMission EOF
+            // InternalRsamlText.g:2402:48: (iv_ruleMission= ruleMission EOF )
+            // InternalRsamlText.g:2403:2: iv_ruleMission= ruleMission EOF
             {
              newCompositeNode(grammarAccess.getMissionRule()); 
             pushFollow(FOLLOW_1);
@@ -5540,7 +5653,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleMission"
-    // InternalRsamlText.g:2357:1: ruleMission returns [EObject current=null] : ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) ;
+    // InternalRsamlText.g:2409:1: ruleMission returns [EObject current=null] : ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) ;
     public final EObject ruleMission() throws RecognitionException {
         EObject current = null;
 
@@ -5560,14 +5673,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2363:2: ( ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) )
-            // InternalRsamlText.g:2364:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
+            // InternalRsamlText.g:2415:2: ( ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' ) )
+            // InternalRsamlText.g:2416:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
             {
-            // InternalRsamlText.g:2364:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
-            // InternalRsamlText.g:2365:3: () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}'
+            // InternalRsamlText.g:2416:2: ( () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}' )
+            // InternalRsamlText.g:2417:3: () otherlv_1= 'mission' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )* otherlv_7= '}'
             {
-            // InternalRsamlText.g:2365:3: ()
-            // InternalRsamlText.g:2366:4: 
+            // InternalRsamlText.g:2417:3: ()
+            // InternalRsamlText.g:2418:4: 
             {
 
             				current = forceCreateModelElement(
@@ -5577,23 +5690,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,52,FOLLOW_3); 
+            otherlv_1=(Token)match(input,53,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getMissionAccess().getMissionKeyword_1());
             		
-            // InternalRsamlText.g:2376:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2428:3: ( (lv_name_2_0= ruleName ) )?
             int alt28=2;
             int LA28_0 = input.LA(1);
 
-            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=14)||(LA28_0>=16 && LA28_0<=27)||(LA28_0>=29 && LA28_0<=42)||(LA28_0>=44 && LA28_0<=78)||(LA28_0>=80 && LA28_0<=111)) ) {
+            if ( ((LA28_0>=RULE_STRING && LA28_0<=RULE_ID)||LA28_0==11||(LA28_0>=13 && LA28_0<=15)||(LA28_0>=17 && LA28_0<=28)||(LA28_0>=30 && LA28_0<=43)||(LA28_0>=45 && LA28_0<=79)||(LA28_0>=81 && LA28_0<=114)) ) {
                 alt28=1;
             }
             switch (alt28) {
                 case 1 :
-                    // InternalRsamlText.g:2377:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2429:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2377:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2378:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2429:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2430:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getMissionAccess().getNameNameParserRuleCall_2_0());
@@ -5623,26 +5736,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_28); 
+            otherlv_3=(Token)match(input,12,FOLLOW_29); 
 
             			newLeafNode(otherlv_3, grammarAccess.getMissionAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2399:3: (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )*
+            // InternalRsamlText.g:2451:3: (this_Described_4= ruleDescribed[$current] | ( (lv_goals_5_0= ruleGoal ) ) | ( (lv_plans_6_0= rulePlan ) ) )*
             loop29:
             do {
                 int alt29=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt29=1;
                     }
                     break;
-                case 53:
+                case 54:
                     {
                     alt29=2;
                     }
                     break;
-                case 55:
+                case 56:
                     {
                     alt29=3;
                     }
@@ -5652,7 +5765,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt29) {
             	case 1 :
-            	    // InternalRsamlText.g:2400:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2452:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -5660,7 +5773,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getMissionAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_28);
+            	    pushFollow(FOLLOW_29);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -5673,18 +5786,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2412:4: ( (lv_goals_5_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2464:4: ( (lv_goals_5_0= ruleGoal ) )
             	    {
-            	    // InternalRsamlText.g:2412:4: ( (lv_goals_5_0= ruleGoal ) )
-            	    // InternalRsamlText.g:2413:5: (lv_goals_5_0= ruleGoal )
+            	    // InternalRsamlText.g:2464:4: ( (lv_goals_5_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2465:5: (lv_goals_5_0= ruleGoal )
             	    {
-            	    // InternalRsamlText.g:2413:5: (lv_goals_5_0= ruleGoal )
-            	    // InternalRsamlText.g:2414:6: lv_goals_5_0= ruleGoal
+            	    // InternalRsamlText.g:2465:5: (lv_goals_5_0= ruleGoal )
+            	    // InternalRsamlText.g:2466:6: lv_goals_5_0= ruleGoal
             	    {
 
             	    						newCompositeNode(grammarAccess.getMissionAccess().getGoalsGoalParserRuleCall_4_1_0());
             	    					
-            	    pushFollow(FOLLOW_28);
+            	    pushFollow(FOLLOW_29);
             	    lv_goals_5_0=ruleGoal();
 
             	    state._fsp--;
@@ -5710,18 +5823,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2432:4: ( (lv_plans_6_0= rulePlan ) )
+            	    // InternalRsamlText.g:2484:4: ( (lv_plans_6_0= rulePlan ) )
             	    {
-            	    // InternalRsamlText.g:2432:4: ( (lv_plans_6_0= rulePlan ) )
-            	    // InternalRsamlText.g:2433:5: (lv_plans_6_0= rulePlan )
+            	    // InternalRsamlText.g:2484:4: ( (lv_plans_6_0= rulePlan ) )
+            	    // InternalRsamlText.g:2485:5: (lv_plans_6_0= rulePlan )
             	    {
-            	    // InternalRsamlText.g:2433:5: (lv_plans_6_0= rulePlan )
-            	    // InternalRsamlText.g:2434:6: lv_plans_6_0= rulePlan
+            	    // InternalRsamlText.g:2485:5: (lv_plans_6_0= rulePlan )
+            	    // InternalRsamlText.g:2486:6: lv_plans_6_0= rulePlan
             	    {
 
             	    						newCompositeNode(grammarAccess.getMissionAccess().getPlansPlanParserRuleCall_4_2_0());
             	    					
-            	    pushFollow(FOLLOW_28);
+            	    pushFollow(FOLLOW_29);
             	    lv_plans_6_0=rulePlan();
 
             	    state._fsp--;
@@ -5752,7 +5865,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_7=(Token)match(input,15,FOLLOW_2); 
+            otherlv_7=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_7, grammarAccess.getMissionAccess().getRightCurlyBracketKeyword_5());
             		
@@ -5779,7 +5892,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleGoal"
-    // InternalRsamlText.g:2460:1: entryRuleGoal returns [EObject current=null] : iv_ruleGoal= ruleGoal EOF ;
+    // InternalRsamlText.g:2512:1: entryRuleGoal returns [EObject current=null] : iv_ruleGoal= ruleGoal EOF ;
     public final EObject entryRuleGoal() throws RecognitionException {
         EObject current = null;
 
@@ -5787,8 +5900,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2460:45: (iv_ruleGoal= ruleGoal EOF )
-            // InternalRsamlText.g:2461:2: iv_ruleGoal= ruleGoal EOF
+            // InternalRsamlText.g:2512:45: (iv_ruleGoal= ruleGoal EOF )
+            // InternalRsamlText.g:2513:2: iv_ruleGoal= ruleGoal EOF
             {
              newCompositeNode(grammarAccess.getGoalRule()); 
             pushFollow(FOLLOW_1);
@@ -5815,7 +5928,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleGoal"
-    // InternalRsamlText.g:2467:1: ruleGoal returns [EObject current=null] : ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) ;
+    // InternalRsamlText.g:2519:1: ruleGoal returns [EObject current=null] : ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) ;
     public final EObject ruleGoal() throws RecognitionException {
         EObject current = null;
 
@@ -5836,14 +5949,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2473:2: ( ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) )
-            // InternalRsamlText.g:2474:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
+            // InternalRsamlText.g:2525:2: ( ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' ) )
+            // InternalRsamlText.g:2526:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
             {
-            // InternalRsamlText.g:2474:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
-            // InternalRsamlText.g:2475:3: () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}'
+            // InternalRsamlText.g:2526:2: ( () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}' )
+            // InternalRsamlText.g:2527:3: () otherlv_1= 'goal' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )* otherlv_8= '}'
             {
-            // InternalRsamlText.g:2475:3: ()
-            // InternalRsamlText.g:2476:4: 
+            // InternalRsamlText.g:2527:3: ()
+            // InternalRsamlText.g:2528:4: 
             {
 
             				current = forceCreateModelElement(
@@ -5853,23 +5966,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,53,FOLLOW_3); 
+            otherlv_1=(Token)match(input,54,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getGoalAccess().getGoalKeyword_1());
             		
-            // InternalRsamlText.g:2486:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2538:3: ( (lv_name_2_0= ruleName ) )?
             int alt30=2;
             int LA30_0 = input.LA(1);
 
-            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=14)||(LA30_0>=16 && LA30_0<=27)||(LA30_0>=29 && LA30_0<=42)||(LA30_0>=44 && LA30_0<=78)||(LA30_0>=80 && LA30_0<=111)) ) {
+            if ( ((LA30_0>=RULE_STRING && LA30_0<=RULE_ID)||LA30_0==11||(LA30_0>=13 && LA30_0<=15)||(LA30_0>=17 && LA30_0<=28)||(LA30_0>=30 && LA30_0<=43)||(LA30_0>=45 && LA30_0<=79)||(LA30_0>=81 && LA30_0<=114)) ) {
                 alt30=1;
             }
             switch (alt30) {
                 case 1 :
-                    // InternalRsamlText.g:2487:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2539:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2487:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2488:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2539:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2540:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getGoalAccess().getNameNameParserRuleCall_2_0());
@@ -5899,26 +6012,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_29); 
+            otherlv_3=(Token)match(input,12,FOLLOW_30); 
 
             			newLeafNode(otherlv_3, grammarAccess.getGoalAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2509:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )*
+            // InternalRsamlText.g:2561:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) ) | ( (lv_subGoals_7_0= ruleGoal ) ) )*
             loop31:
             do {
                 int alt31=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt31=1;
                     }
                     break;
-                case 54:
+                case 55:
                     {
                     alt31=2;
                     }
                     break;
-                case 53:
+                case 54:
                     {
                     alt31=3;
                     }
@@ -5928,7 +6041,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt31) {
             	case 1 :
-            	    // InternalRsamlText.g:2510:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2562:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -5936,7 +6049,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getGoalAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_29);
+            	    pushFollow(FOLLOW_30);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -5949,25 +6062,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2522:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:2574:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
             	    {
-            	    // InternalRsamlText.g:2522:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
-            	    // InternalRsamlText.g:2523:5: otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) )
+            	    // InternalRsamlText.g:2574:4: (otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:2575:5: otherlv_5= 'priority' ( (lv_priority_6_0= ruleInteger ) )
             	    {
-            	    otherlv_5=(Token)match(input,54,FOLLOW_7); 
+            	    otherlv_5=(Token)match(input,55,FOLLOW_7); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getGoalAccess().getPriorityKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2527:5: ( (lv_priority_6_0= ruleInteger ) )
-            	    // InternalRsamlText.g:2528:6: (lv_priority_6_0= ruleInteger )
+            	    // InternalRsamlText.g:2579:5: ( (lv_priority_6_0= ruleInteger ) )
+            	    // InternalRsamlText.g:2580:6: (lv_priority_6_0= ruleInteger )
             	    {
-            	    // InternalRsamlText.g:2528:6: (lv_priority_6_0= ruleInteger )
-            	    // InternalRsamlText.g:2529:7: lv_priority_6_0= ruleInteger
+            	    // InternalRsamlText.g:2580:6: (lv_priority_6_0= ruleInteger )
+            	    // InternalRsamlText.g:2581:7: lv_priority_6_0= ruleInteger
             	    {
 
             	    							newCompositeNode(grammarAccess.getGoalAccess().getPriorityIntegerParserRuleCall_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_29);
+            	    pushFollow(FOLLOW_30);
             	    lv_priority_6_0=ruleInteger();
 
             	    state._fsp--;
@@ -5996,18 +6109,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2548:4: ( (lv_subGoals_7_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2600:4: ( (lv_subGoals_7_0= ruleGoal ) )
             	    {
-            	    // InternalRsamlText.g:2548:4: ( (lv_subGoals_7_0= ruleGoal ) )
-            	    // InternalRsamlText.g:2549:5: (lv_subGoals_7_0= ruleGoal )
+            	    // InternalRsamlText.g:2600:4: ( (lv_subGoals_7_0= ruleGoal ) )
+            	    // InternalRsamlText.g:2601:5: (lv_subGoals_7_0= ruleGoal )
             	    {
-            	    // InternalRsamlText.g:2549:5: (lv_subGoals_7_0= ruleGoal )
-            	    // InternalRsamlText.g:2550:6: lv_subGoals_7_0= ruleGoal
+            	    // InternalRsamlText.g:2601:5: (lv_subGoals_7_0= ruleGoal )
+            	    // InternalRsamlText.g:2602:6: lv_subGoals_7_0= ruleGoal
             	    {
 
             	    						newCompositeNode(grammarAccess.getGoalAccess().getSubGoalsGoalParserRuleCall_4_2_0());
             	    					
-            	    pushFollow(FOLLOW_29);
+            	    pushFollow(FOLLOW_30);
             	    lv_subGoals_7_0=ruleGoal();
 
             	    state._fsp--;
@@ -6038,7 +6151,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_8=(Token)match(input,15,FOLLOW_2); 
+            otherlv_8=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_8, grammarAccess.getGoalAccess().getRightCurlyBracketKeyword_5());
             		
@@ -6065,7 +6178,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRulePlan"
-    // InternalRsamlText.g:2576:1: entryRulePlan returns [EObject current=null] : iv_rulePlan= rulePlan EOF ;
+    // InternalRsamlText.g:2628:1: entryRulePlan returns [EObject current=null] : iv_rulePlan= rulePlan EOF ;
     public final EObject entryRulePlan() throws RecognitionException {
         EObject current = null;
 
@@ -6073,8 +6186,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2576:45: (iv_rulePlan= rulePlan EOF )
-            // InternalRsamlText.g:2577:2: iv_rulePlan= rulePlan EOF
+            // InternalRsamlText.g:2628:45: (iv_rulePlan= rulePlan EOF )
+            // InternalRsamlText.g:2629:2: iv_rulePlan= rulePlan EOF
             {
              newCompositeNode(grammarAccess.getPlanRule()); 
             pushFollow(FOLLOW_1);
@@ -6101,7 +6214,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "rulePlan"
-    // InternalRsamlText.g:2583:1: rulePlan returns [EObject current=null] : ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) ;
+    // InternalRsamlText.g:2635:1: rulePlan returns [EObject current=null] : ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) ;
     public final EObject rulePlan() throws RecognitionException {
         EObject current = null;
 
@@ -6121,14 +6234,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2589:2: ( ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) )
-            // InternalRsamlText.g:2590:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2641:2: ( ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' ) )
+            // InternalRsamlText.g:2642:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
             {
-            // InternalRsamlText.g:2590:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
-            // InternalRsamlText.g:2591:3: () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}'
+            // InternalRsamlText.g:2642:2: ( () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2643:3: () otherlv_1= 'plan' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )* otherlv_10= '}'
             {
-            // InternalRsamlText.g:2591:3: ()
-            // InternalRsamlText.g:2592:4: 
+            // InternalRsamlText.g:2643:3: ()
+            // InternalRsamlText.g:2644:4: 
             {
 
             				current = forceCreateModelElement(
@@ -6138,23 +6251,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,55,FOLLOW_3); 
+            otherlv_1=(Token)match(input,56,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getPlanAccess().getPlanKeyword_1());
             		
-            // InternalRsamlText.g:2602:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2654:3: ( (lv_name_2_0= ruleName ) )?
             int alt32=2;
             int LA32_0 = input.LA(1);
 
-            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=14)||(LA32_0>=16 && LA32_0<=27)||(LA32_0>=29 && LA32_0<=42)||(LA32_0>=44 && LA32_0<=78)||(LA32_0>=80 && LA32_0<=111)) ) {
+            if ( ((LA32_0>=RULE_STRING && LA32_0<=RULE_ID)||LA32_0==11||(LA32_0>=13 && LA32_0<=15)||(LA32_0>=17 && LA32_0<=28)||(LA32_0>=30 && LA32_0<=43)||(LA32_0>=45 && LA32_0<=79)||(LA32_0>=81 && LA32_0<=114)) ) {
                 alt32=1;
             }
             switch (alt32) {
                 case 1 :
-                    // InternalRsamlText.g:2603:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2655:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2603:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2604:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2655:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2656:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getPlanAccess().getNameNameParserRuleCall_2_0());
@@ -6184,26 +6297,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_30); 
+            otherlv_3=(Token)match(input,12,FOLLOW_31); 
 
             			newLeafNode(otherlv_3, grammarAccess.getPlanAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2625:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )*
+            // InternalRsamlText.g:2677:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | ( (lv_activities_9_0= ruleActivity ) ) )*
             loop34:
             do {
                 int alt34=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt34=1;
                     }
                     break;
-                case 56:
+                case 57:
                     {
                     alt34=2;
                     }
                     break;
-                case 57:
+                case 58:
                     {
                     alt34=3;
                     }
@@ -6213,7 +6326,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt34) {
             	case 1 :
-            	    // InternalRsamlText.g:2626:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2678:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -6221,7 +6334,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getPlanAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_30);
+            	    pushFollow(FOLLOW_31);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -6234,20 +6347,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2638:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2690:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:2638:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:2639:5: otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2690:4: (otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2691:5: otherlv_5= 'achieves' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_5=(Token)match(input,56,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,57,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getPlanAccess().getAchievesKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2643:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2644:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2695:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2696:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2644:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2645:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2696:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2697:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -6257,7 +6370,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getPlanAccess().getAchievesGoalCrossReference_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_31);
+            	    pushFollow(FOLLOW_32);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -6271,30 +6384,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2659:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2711:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    loop33:
             	    do {
             	        int alt33=2;
             	        int LA33_0 = input.LA(1);
 
-            	        if ( (LA33_0==28) ) {
+            	        if ( (LA33_0==29) ) {
             	            alt33=1;
             	        }
 
 
             	        switch (alt33) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:2660:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2712:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_7=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_7=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_7, grammarAccess.getPlanAccess().getCommaKeyword_4_1_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:2664:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:2665:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2716:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2717:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:2665:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:2666:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:2717:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2718:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -6304,7 +6417,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getPlanAccess().getAchievesGoalCrossReference_4_1_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_31);
+            	    	    pushFollow(FOLLOW_32);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -6334,18 +6447,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2683:4: ( (lv_activities_9_0= ruleActivity ) )
+            	    // InternalRsamlText.g:2735:4: ( (lv_activities_9_0= ruleActivity ) )
             	    {
-            	    // InternalRsamlText.g:2683:4: ( (lv_activities_9_0= ruleActivity ) )
-            	    // InternalRsamlText.g:2684:5: (lv_activities_9_0= ruleActivity )
+            	    // InternalRsamlText.g:2735:4: ( (lv_activities_9_0= ruleActivity ) )
+            	    // InternalRsamlText.g:2736:5: (lv_activities_9_0= ruleActivity )
             	    {
-            	    // InternalRsamlText.g:2684:5: (lv_activities_9_0= ruleActivity )
-            	    // InternalRsamlText.g:2685:6: lv_activities_9_0= ruleActivity
+            	    // InternalRsamlText.g:2736:5: (lv_activities_9_0= ruleActivity )
+            	    // InternalRsamlText.g:2737:6: lv_activities_9_0= ruleActivity
             	    {
 
             	    						newCompositeNode(grammarAccess.getPlanAccess().getActivitiesActivityParserRuleCall_4_2_0());
             	    					
-            	    pushFollow(FOLLOW_30);
+            	    pushFollow(FOLLOW_31);
             	    lv_activities_9_0=ruleActivity();
 
             	    state._fsp--;
@@ -6376,7 +6489,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_10=(Token)match(input,15,FOLLOW_2); 
+            otherlv_10=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_10, grammarAccess.getPlanAccess().getRightCurlyBracketKeyword_5());
             		
@@ -6403,7 +6516,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleActivity"
-    // InternalRsamlText.g:2711:1: entryRuleActivity returns [EObject current=null] : iv_ruleActivity= ruleActivity EOF ;
+    // InternalRsamlText.g:2763:1: entryRuleActivity returns [EObject current=null] : iv_ruleActivity= ruleActivity EOF ;
     public final EObject entryRuleActivity() throws RecognitionException {
         EObject current = null;
 
@@ -6411,8 +6524,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2711:49: (iv_ruleActivity= ruleActivity EOF )
-            // InternalRsamlText.g:2712:2: iv_ruleActivity= ruleActivity EOF
+            // InternalRsamlText.g:2763:49: (iv_ruleActivity= ruleActivity EOF )
+            // InternalRsamlText.g:2764:2: iv_ruleActivity= ruleActivity EOF
             {
              newCompositeNode(grammarAccess.getActivityRule()); 
             pushFollow(FOLLOW_1);
@@ -6439,7 +6552,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleActivity"
-    // InternalRsamlText.g:2718:1: ruleActivity returns [EObject current=null] : ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) ;
+    // InternalRsamlText.g:2770:1: ruleActivity returns [EObject current=null] : ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) ;
     public final EObject ruleActivity() throws RecognitionException {
         EObject current = null;
 
@@ -6459,14 +6572,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2724:2: ( ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) )
-            // InternalRsamlText.g:2725:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2776:2: ( ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' ) )
+            // InternalRsamlText.g:2777:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
             {
-            // InternalRsamlText.g:2725:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
-            // InternalRsamlText.g:2726:3: () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}'
+            // InternalRsamlText.g:2777:2: ( () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}' )
+            // InternalRsamlText.g:2778:3: () otherlv_1= 'activity' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_10= '}'
             {
-            // InternalRsamlText.g:2726:3: ()
-            // InternalRsamlText.g:2727:4: 
+            // InternalRsamlText.g:2778:3: ()
+            // InternalRsamlText.g:2779:4: 
             {
 
             				current = forceCreateModelElement(
@@ -6476,23 +6589,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,57,FOLLOW_3); 
+            otherlv_1=(Token)match(input,58,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getActivityAccess().getActivityKeyword_1());
             		
-            // InternalRsamlText.g:2737:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2789:3: ( (lv_name_2_0= ruleName ) )?
             int alt35=2;
             int LA35_0 = input.LA(1);
 
-            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=14)||(LA35_0>=16 && LA35_0<=27)||(LA35_0>=29 && LA35_0<=42)||(LA35_0>=44 && LA35_0<=78)||(LA35_0>=80 && LA35_0<=111)) ) {
+            if ( ((LA35_0>=RULE_STRING && LA35_0<=RULE_ID)||LA35_0==11||(LA35_0>=13 && LA35_0<=15)||(LA35_0>=17 && LA35_0<=28)||(LA35_0>=30 && LA35_0<=43)||(LA35_0>=45 && LA35_0<=79)||(LA35_0>=81 && LA35_0<=114)) ) {
                 alt35=1;
             }
             switch (alt35) {
                 case 1 :
-                    // InternalRsamlText.g:2738:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2790:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2738:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2739:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2790:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2791:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getActivityAccess().getNameNameParserRuleCall_2_0());
@@ -6522,31 +6635,31 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_32); 
+            otherlv_3=(Token)match(input,12,FOLLOW_33); 
 
             			newLeafNode(otherlv_3, grammarAccess.getActivityAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2760:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:2812:3: (this_Described_4= ruleDescribed[$current] | this_RealTime_5= ruleRealTime[$current] | (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop37:
             do {
                 int alt37=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt37=1;
                     }
                     break;
-                case 17:
                 case 18:
                 case 19:
                 case 20:
                 case 21:
                 case 22:
+                case 23:
                     {
                     alt37=2;
                     }
                     break;
-                case 58:
+                case 59:
                     {
                     alt37=3;
                     }
@@ -6556,7 +6669,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt37) {
             	case 1 :
-            	    // InternalRsamlText.g:2761:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2813:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -6564,7 +6677,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getActivityAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_32);
+            	    pushFollow(FOLLOW_33);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -6577,7 +6690,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2773:4: this_RealTime_5= ruleRealTime[$current]
+            	    // InternalRsamlText.g:2825:4: this_RealTime_5= ruleRealTime[$current]
             	    {
 
             	    				if (current==null) {
@@ -6585,7 +6698,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getActivityAccess().getRealTimeParserRuleCall_4_1());
             	    			
-            	    pushFollow(FOLLOW_32);
+            	    pushFollow(FOLLOW_33);
             	    this_RealTime_5=ruleRealTime(current);
 
             	    state._fsp--;
@@ -6598,20 +6711,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2785:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2837:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:2785:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:2786:5: otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2837:4: (otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2838:5: otherlv_6= 'actions' ( ( ruleQualifiedName ) ) (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_6=(Token)match(input,58,FOLLOW_15); 
+            	    otherlv_6=(Token)match(input,59,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_6, grammarAccess.getActivityAccess().getActionsKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2790:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2791:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2842:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2843:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2791:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2792:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2843:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2844:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -6621,7 +6734,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getActivityAccess().getActionsActionCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_33);
+            	    pushFollow(FOLLOW_34);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -6635,30 +6748,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2806:5: (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2858:5: (otherlv_8= ',' ( ( ruleQualifiedName ) ) )*
             	    loop36:
             	    do {
             	        int alt36=2;
             	        int LA36_0 = input.LA(1);
 
-            	        if ( (LA36_0==28) ) {
+            	        if ( (LA36_0==29) ) {
             	            alt36=1;
             	        }
 
 
             	        switch (alt36) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:2807:6: otherlv_8= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2859:6: otherlv_8= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_8=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_8=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_8, grammarAccess.getActivityAccess().getCommaKeyword_4_2_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:2811:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:2812:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2863:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2864:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:2812:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:2813:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:2864:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2865:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -6668,7 +6781,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getActivityAccess().getActionsActionCrossReference_4_2_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_33);
+            	    	    pushFollow(FOLLOW_34);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -6703,7 +6816,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_10=(Token)match(input,15,FOLLOW_2); 
+            otherlv_10=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_10, grammarAccess.getActivityAccess().getRightCurlyBracketKeyword_5());
             		
@@ -6730,7 +6843,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleSupervisor"
-    // InternalRsamlText.g:2838:1: entryRuleSupervisor returns [EObject current=null] : iv_ruleSupervisor= ruleSupervisor EOF ;
+    // InternalRsamlText.g:2890:1: entryRuleSupervisor returns [EObject current=null] : iv_ruleSupervisor= ruleSupervisor EOF ;
     public final EObject entryRuleSupervisor() throws RecognitionException {
         EObject current = null;
 
@@ -6738,8 +6851,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2838:51: (iv_ruleSupervisor= ruleSupervisor EOF )
-            // InternalRsamlText.g:2839:2: iv_ruleSupervisor= ruleSupervisor EOF
+            // InternalRsamlText.g:2890:51: (iv_ruleSupervisor= ruleSupervisor EOF )
+            // InternalRsamlText.g:2891:2: iv_ruleSupervisor= ruleSupervisor EOF
             {
              newCompositeNode(grammarAccess.getSupervisorRule()); 
             pushFollow(FOLLOW_1);
@@ -6766,7 +6879,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSupervisor"
-    // InternalRsamlText.g:2845:1: ruleSupervisor returns [EObject current=null] : ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:2897:1: ruleSupervisor returns [EObject current=null] : ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
     public final EObject ruleSupervisor() throws RecognitionException {
         EObject current = null;
 
@@ -6785,14 +6898,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2851:2: ( ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:2852:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:2903:2: ( ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:2904:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:2852:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:2853:3: () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
+            // InternalRsamlText.g:2904:2: ( () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:2905:3: () otherlv_1= 'supervisor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:2853:3: ()
-            // InternalRsamlText.g:2854:4: 
+            // InternalRsamlText.g:2905:3: ()
+            // InternalRsamlText.g:2906:4: 
             {
 
             				current = forceCreateModelElement(
@@ -6802,23 +6915,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,59,FOLLOW_3); 
+            otherlv_1=(Token)match(input,60,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getSupervisorAccess().getSupervisorKeyword_1());
             		
-            // InternalRsamlText.g:2864:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:2916:3: ( (lv_name_2_0= ruleName ) )?
             int alt38=2;
             int LA38_0 = input.LA(1);
 
-            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=14)||(LA38_0>=16 && LA38_0<=27)||(LA38_0>=29 && LA38_0<=42)||(LA38_0>=44 && LA38_0<=78)||(LA38_0>=80 && LA38_0<=111)) ) {
+            if ( ((LA38_0>=RULE_STRING && LA38_0<=RULE_ID)||LA38_0==11||(LA38_0>=13 && LA38_0<=15)||(LA38_0>=17 && LA38_0<=28)||(LA38_0>=30 && LA38_0<=43)||(LA38_0>=45 && LA38_0<=79)||(LA38_0>=81 && LA38_0<=114)) ) {
                 alt38=1;
             }
             switch (alt38) {
                 case 1 :
-                    // InternalRsamlText.g:2865:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2917:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:2865:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:2866:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:2917:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:2918:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getSupervisorAccess().getNameNameParserRuleCall_2_0());
@@ -6848,26 +6961,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_34); 
+            otherlv_3=(Token)match(input,12,FOLLOW_35); 
 
             			newLeafNode(otherlv_3, grammarAccess.getSupervisorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:2887:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )*
+            // InternalRsamlText.g:2939:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) ) )*
             loop40:
             do {
                 int alt40=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt40=1;
                     }
                     break;
-                case 60:
+                case 61:
                     {
                     alt40=2;
                     }
                     break;
-                case 61:
+                case 62:
                     {
                     alt40=3;
                     }
@@ -6877,7 +6990,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt40) {
             	case 1 :
-            	    // InternalRsamlText.g:2888:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:2940:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -6885,7 +6998,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getSupervisorAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_34);
+            	    pushFollow(FOLLOW_35);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -6898,20 +7011,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:2900:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2952:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:2900:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:2901:5: otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2952:4: (otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:2953:5: otherlv_5= 'plans' ( ( ruleQualifiedName ) ) (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_5=(Token)match(input,60,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,61,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getSupervisorAccess().getPlansKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:2905:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2906:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2957:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2958:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2906:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2907:7: ruleQualifiedName
+            	    // InternalRsamlText.g:2958:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:2959:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -6921,7 +7034,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getSupervisorAccess().getPlansPlanCrossReference_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_35);
+            	    pushFollow(FOLLOW_36);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -6935,30 +7048,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:2921:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:2973:5: (otherlv_7= ',' ( ( ruleQualifiedName ) ) )*
             	    loop39:
             	    do {
             	        int alt39=2;
             	        int LA39_0 = input.LA(1);
 
-            	        if ( (LA39_0==28) ) {
+            	        if ( (LA39_0==29) ) {
             	            alt39=1;
             	        }
 
 
             	        switch (alt39) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:2922:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2974:6: otherlv_7= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_7=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_7=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_7, grammarAccess.getSupervisorAccess().getCommaKeyword_4_1_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:2926:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:2927:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2978:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:2979:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:2927:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:2928:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:2979:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:2980:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -6968,7 +7081,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getSupervisorAccess().getPlansPlanCrossReference_4_1_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_35);
+            	    	    pushFollow(FOLLOW_36);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -6998,20 +7111,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:2945:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:2997:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:2945:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:2946:5: otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:2997:4: (otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:2998:5: otherlv_9= 'realisedBy' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_9=(Token)match(input,61,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,62,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getSupervisorAccess().getRealisedByKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:2950:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:2951:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3002:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3003:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:2951:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:2952:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3003:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3004:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7021,7 +7134,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getSupervisorAccess().getRealisedByModuleCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_34);
+            	    pushFollow(FOLLOW_35);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -7047,7 +7160,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_11=(Token)match(input,15,FOLLOW_2); 
+            otherlv_11=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_11, grammarAccess.getSupervisorAccess().getRightCurlyBracketKeyword_5());
             		
@@ -7074,7 +7187,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleOrder"
-    // InternalRsamlText.g:2976:1: entryRuleOrder returns [EObject current=null] : iv_ruleOrder= ruleOrder EOF ;
+    // InternalRsamlText.g:3028:1: entryRuleOrder returns [EObject current=null] : iv_ruleOrder= ruleOrder EOF ;
     public final EObject entryRuleOrder() throws RecognitionException {
         EObject current = null;
 
@@ -7082,8 +7195,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:2976:46: (iv_ruleOrder= ruleOrder EOF )
-            // InternalRsamlText.g:2977:2: iv_ruleOrder= ruleOrder EOF
+            // InternalRsamlText.g:3028:46: (iv_ruleOrder= ruleOrder EOF )
+            // InternalRsamlText.g:3029:2: iv_ruleOrder= ruleOrder EOF
             {
              newCompositeNode(grammarAccess.getOrderRule()); 
             pushFollow(FOLLOW_1);
@@ -7110,7 +7223,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleOrder"
-    // InternalRsamlText.g:2983:1: ruleOrder returns [EObject current=null] : ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:3035:1: ruleOrder returns [EObject current=null] : ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) ;
     public final EObject ruleOrder() throws RecognitionException {
         EObject current = null;
 
@@ -7130,14 +7243,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:2989:2: ( ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:2990:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:3041:2: ( ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:3042:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:2990:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:2991:3: () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
+            // InternalRsamlText.g:3042:2: ( () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:3043:3: () otherlv_1= 'order' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:2991:3: ()
-            // InternalRsamlText.g:2992:4: 
+            // InternalRsamlText.g:3043:3: ()
+            // InternalRsamlText.g:3044:4: 
             {
 
             				current = forceCreateModelElement(
@@ -7147,23 +7260,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,62,FOLLOW_3); 
+            otherlv_1=(Token)match(input,63,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getOrderAccess().getOrderKeyword_1());
             		
-            // InternalRsamlText.g:3002:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3054:3: ( (lv_name_2_0= ruleName ) )?
             int alt41=2;
             int LA41_0 = input.LA(1);
 
-            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=14)||(LA41_0>=16 && LA41_0<=27)||(LA41_0>=29 && LA41_0<=42)||(LA41_0>=44 && LA41_0<=78)||(LA41_0>=80 && LA41_0<=111)) ) {
+            if ( ((LA41_0>=RULE_STRING && LA41_0<=RULE_ID)||LA41_0==11||(LA41_0>=13 && LA41_0<=15)||(LA41_0>=17 && LA41_0<=28)||(LA41_0>=30 && LA41_0<=43)||(LA41_0>=45 && LA41_0<=79)||(LA41_0>=81 && LA41_0<=114)) ) {
                 alt41=1;
             }
             switch (alt41) {
                 case 1 :
-                    // InternalRsamlText.g:3003:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3055:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3003:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3004:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3055:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3056:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getOrderAccess().getNameNameParserRuleCall_2_0());
@@ -7193,31 +7306,31 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_36); 
+            otherlv_3=(Token)match(input,12,FOLLOW_37); 
 
             			newLeafNode(otherlv_3, grammarAccess.getOrderAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3025:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )*
+            // InternalRsamlText.g:3077:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) ) | (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) ) )*
             loop42:
             do {
                 int alt42=5;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt42=1;
                     }
                     break;
-                case 63:
+                case 64:
                     {
                     alt42=2;
                     }
                     break;
-                case 64:
+                case 65:
                     {
                     alt42=3;
                     }
                     break;
-                case 65:
+                case 66:
                     {
                     alt42=4;
                     }
@@ -7227,7 +7340,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt42) {
             	case 1 :
-            	    // InternalRsamlText.g:3026:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3078:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -7235,7 +7348,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getOrderAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_36);
+            	    pushFollow(FOLLOW_37);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -7248,22 +7361,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3038:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3090:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:3038:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:3039:5: otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3090:4: (otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3091:5: otherlv_5= 'issuer' ( (lv_issuer_6_0= RULE_STRING ) )
             	    {
-            	    otherlv_5=(Token)match(input,63,FOLLOW_8); 
+            	    otherlv_5=(Token)match(input,64,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getOrderAccess().getIssuerKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3043:5: ( (lv_issuer_6_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:3044:6: (lv_issuer_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:3095:5: ( (lv_issuer_6_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3096:6: (lv_issuer_6_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:3044:6: (lv_issuer_6_0= RULE_STRING )
-            	    // InternalRsamlText.g:3045:7: lv_issuer_6_0= RULE_STRING
+            	    // InternalRsamlText.g:3096:6: (lv_issuer_6_0= RULE_STRING )
+            	    // InternalRsamlText.g:3097:7: lv_issuer_6_0= RULE_STRING
             	    {
-            	    lv_issuer_6_0=(Token)match(input,RULE_STRING,FOLLOW_36); 
+            	    lv_issuer_6_0=(Token)match(input,RULE_STRING,FOLLOW_37); 
 
             	    							newLeafNode(lv_issuer_6_0, grammarAccess.getOrderAccess().getIssuerSTRINGTerminalRuleCall_4_1_1_0());
             	    						
@@ -7290,20 +7403,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3063:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3115:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3063:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3064:5: otherlv_7= 'receiver' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3115:4: (otherlv_7= 'receiver' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3116:5: otherlv_7= 'receiver' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,64,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,65,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getOrderAccess().getReceiverKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3068:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3069:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3120:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3121:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3069:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3070:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3121:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3122:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7313,7 +7426,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getOrderAccess().getReceiverModuleCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_36);
+            	    pushFollow(FOLLOW_37);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -7334,20 +7447,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3086:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3138:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3086:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3087:5: otherlv_9= 'requests' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3138:4: (otherlv_9= 'requests' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3139:5: otherlv_9= 'requests' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_9=(Token)match(input,65,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,66,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getOrderAccess().getRequestsKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3091:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3092:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3143:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3144:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3092:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3093:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3144:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3145:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7357,7 +7470,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getOrderAccess().getRequestsActivityCrossReference_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_36);
+            	    pushFollow(FOLLOW_37);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -7383,7 +7496,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_11=(Token)match(input,15,FOLLOW_2); 
+            otherlv_11=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_11, grammarAccess.getOrderAccess().getRightCurlyBracketKeyword_5());
             		
@@ -7410,7 +7523,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleDatabase"
-    // InternalRsamlText.g:3117:1: entryRuleDatabase returns [EObject current=null] : iv_ruleDatabase= ruleDatabase EOF ;
+    // InternalRsamlText.g:3169:1: entryRuleDatabase returns [EObject current=null] : iv_ruleDatabase= ruleDatabase EOF ;
     public final EObject entryRuleDatabase() throws RecognitionException {
         EObject current = null;
 
@@ -7418,8 +7531,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3117:49: (iv_ruleDatabase= ruleDatabase EOF )
-            // InternalRsamlText.g:3118:2: iv_ruleDatabase= ruleDatabase EOF
+            // InternalRsamlText.g:3169:49: (iv_ruleDatabase= ruleDatabase EOF )
+            // InternalRsamlText.g:3170:2: iv_ruleDatabase= ruleDatabase EOF
             {
              newCompositeNode(grammarAccess.getDatabaseRule()); 
             pushFollow(FOLLOW_1);
@@ -7446,7 +7559,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDatabase"
-    // InternalRsamlText.g:3124:1: ruleDatabase returns [EObject current=null] : ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) ;
+    // InternalRsamlText.g:3176:1: ruleDatabase returns [EObject current=null] : ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) ;
     public final EObject ruleDatabase() throws RecognitionException {
         EObject current = null;
 
@@ -7464,14 +7577,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3130:2: ( ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) )
-            // InternalRsamlText.g:3131:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
+            // InternalRsamlText.g:3182:2: ( ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' ) )
+            // InternalRsamlText.g:3183:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
             {
-            // InternalRsamlText.g:3131:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
-            // InternalRsamlText.g:3132:3: () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}'
+            // InternalRsamlText.g:3183:2: ( () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}' )
+            // InternalRsamlText.g:3184:3: () otherlv_1= 'database' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )* otherlv_6= '}'
             {
-            // InternalRsamlText.g:3132:3: ()
-            // InternalRsamlText.g:3133:4: 
+            // InternalRsamlText.g:3184:3: ()
+            // InternalRsamlText.g:3185:4: 
             {
 
             				current = forceCreateModelElement(
@@ -7481,23 +7594,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,66,FOLLOW_3); 
+            otherlv_1=(Token)match(input,67,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getDatabaseAccess().getDatabaseKeyword_1());
             		
-            // InternalRsamlText.g:3143:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3195:3: ( (lv_name_2_0= ruleName ) )?
             int alt43=2;
             int LA43_0 = input.LA(1);
 
-            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=14)||(LA43_0>=16 && LA43_0<=27)||(LA43_0>=29 && LA43_0<=42)||(LA43_0>=44 && LA43_0<=78)||(LA43_0>=80 && LA43_0<=111)) ) {
+            if ( ((LA43_0>=RULE_STRING && LA43_0<=RULE_ID)||LA43_0==11||(LA43_0>=13 && LA43_0<=15)||(LA43_0>=17 && LA43_0<=28)||(LA43_0>=30 && LA43_0<=43)||(LA43_0>=45 && LA43_0<=79)||(LA43_0>=81 && LA43_0<=114)) ) {
                 alt43=1;
             }
             switch (alt43) {
                 case 1 :
-                    // InternalRsamlText.g:3144:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3196:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3144:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3145:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3196:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3197:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getDatabaseAccess().getNameNameParserRuleCall_2_0());
@@ -7527,27 +7640,27 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_37); 
+            otherlv_3=(Token)match(input,12,FOLLOW_38); 
 
             			newLeafNode(otherlv_3, grammarAccess.getDatabaseAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3166:3: (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )*
+            // InternalRsamlText.g:3218:3: (this_Described_4= ruleDescribed[$current] | ( (lv_knowledge_5_0= ruleKnowledge ) ) )*
             loop44:
             do {
                 int alt44=3;
                 int LA44_0 = input.LA(1);
 
-                if ( (LA44_0==16) ) {
+                if ( (LA44_0==17) ) {
                     alt44=1;
                 }
-                else if ( (LA44_0==67) ) {
+                else if ( (LA44_0==68) ) {
                     alt44=2;
                 }
 
 
                 switch (alt44) {
             	case 1 :
-            	    // InternalRsamlText.g:3167:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3219:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -7555,7 +7668,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getDatabaseAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_37);
+            	    pushFollow(FOLLOW_38);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -7568,18 +7681,18 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3179:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
+            	    // InternalRsamlText.g:3231:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
             	    {
-            	    // InternalRsamlText.g:3179:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
-            	    // InternalRsamlText.g:3180:5: (lv_knowledge_5_0= ruleKnowledge )
+            	    // InternalRsamlText.g:3231:4: ( (lv_knowledge_5_0= ruleKnowledge ) )
+            	    // InternalRsamlText.g:3232:5: (lv_knowledge_5_0= ruleKnowledge )
             	    {
-            	    // InternalRsamlText.g:3180:5: (lv_knowledge_5_0= ruleKnowledge )
-            	    // InternalRsamlText.g:3181:6: lv_knowledge_5_0= ruleKnowledge
+            	    // InternalRsamlText.g:3232:5: (lv_knowledge_5_0= ruleKnowledge )
+            	    // InternalRsamlText.g:3233:6: lv_knowledge_5_0= ruleKnowledge
             	    {
 
             	    						newCompositeNode(grammarAccess.getDatabaseAccess().getKnowledgeKnowledgeParserRuleCall_4_1_0());
             	    					
-            	    pushFollow(FOLLOW_37);
+            	    pushFollow(FOLLOW_38);
             	    lv_knowledge_5_0=ruleKnowledge();
 
             	    state._fsp--;
@@ -7610,7 +7723,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_6=(Token)match(input,15,FOLLOW_2); 
+            otherlv_6=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_6, grammarAccess.getDatabaseAccess().getRightCurlyBracketKeyword_5());
             		
@@ -7637,7 +7750,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleKnowledge"
-    // InternalRsamlText.g:3207:1: entryRuleKnowledge returns [EObject current=null] : iv_ruleKnowledge= ruleKnowledge EOF ;
+    // InternalRsamlText.g:3259:1: entryRuleKnowledge returns [EObject current=null] : iv_ruleKnowledge= ruleKnowledge EOF ;
     public final EObject entryRuleKnowledge() throws RecognitionException {
         EObject current = null;
 
@@ -7645,8 +7758,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3207:50: (iv_ruleKnowledge= ruleKnowledge EOF )
-            // InternalRsamlText.g:3208:2: iv_ruleKnowledge= ruleKnowledge EOF
+            // InternalRsamlText.g:3259:50: (iv_ruleKnowledge= ruleKnowledge EOF )
+            // InternalRsamlText.g:3260:2: iv_ruleKnowledge= ruleKnowledge EOF
             {
              newCompositeNode(grammarAccess.getKnowledgeRule()); 
             pushFollow(FOLLOW_1);
@@ -7673,7 +7786,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleKnowledge"
-    // InternalRsamlText.g:3214:1: ruleKnowledge returns [EObject current=null] : ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) ;
+    // InternalRsamlText.g:3266:1: ruleKnowledge returns [EObject current=null] : ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) ;
     public final EObject ruleKnowledge() throws RecognitionException {
         EObject current = null;
 
@@ -7694,14 +7807,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3220:2: ( ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) )
-            // InternalRsamlText.g:3221:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:3272:2: ( ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' ) )
+            // InternalRsamlText.g:3273:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
             {
-            // InternalRsamlText.g:3221:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
-            // InternalRsamlText.g:3222:3: () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}'
+            // InternalRsamlText.g:3273:2: ( () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}' )
+            // InternalRsamlText.g:3274:3: () otherlv_1= 'knowledge' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_11= '}'
             {
-            // InternalRsamlText.g:3222:3: ()
-            // InternalRsamlText.g:3223:4: 
+            // InternalRsamlText.g:3274:3: ()
+            // InternalRsamlText.g:3275:4: 
             {
 
             				current = forceCreateModelElement(
@@ -7711,23 +7824,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,67,FOLLOW_3); 
+            otherlv_1=(Token)match(input,68,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getKnowledgeAccess().getKnowledgeKeyword_1());
             		
-            // InternalRsamlText.g:3233:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3285:3: ( (lv_name_2_0= ruleName ) )?
             int alt45=2;
             int LA45_0 = input.LA(1);
 
-            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=14)||(LA45_0>=16 && LA45_0<=27)||(LA45_0>=29 && LA45_0<=42)||(LA45_0>=44 && LA45_0<=78)||(LA45_0>=80 && LA45_0<=111)) ) {
+            if ( ((LA45_0>=RULE_STRING && LA45_0<=RULE_ID)||LA45_0==11||(LA45_0>=13 && LA45_0<=15)||(LA45_0>=17 && LA45_0<=28)||(LA45_0>=30 && LA45_0<=43)||(LA45_0>=45 && LA45_0<=79)||(LA45_0>=81 && LA45_0<=114)) ) {
                 alt45=1;
             }
             switch (alt45) {
                 case 1 :
-                    // InternalRsamlText.g:3234:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3286:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3234:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3235:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3286:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3287:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getKnowledgeAccess().getNameNameParserRuleCall_2_0());
@@ -7757,26 +7870,26 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_38); 
+            otherlv_3=(Token)match(input,12,FOLLOW_39); 
 
             			newLeafNode(otherlv_3, grammarAccess.getKnowledgeAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3256:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:3308:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) ) | (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop47:
             do {
                 int alt47=4;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt47=1;
                     }
                     break;
-                case 39:
+                case 40:
                     {
                     alt47=2;
                     }
                     break;
-                case 68:
+                case 69:
                     {
                     alt47=3;
                     }
@@ -7786,7 +7899,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt47) {
             	case 1 :
-            	    // InternalRsamlText.g:3257:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3309:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -7794,7 +7907,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getKnowledgeAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_38);
+            	    pushFollow(FOLLOW_39);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -7807,25 +7920,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3269:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:3321:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
             	    {
-            	    // InternalRsamlText.g:3269:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
-            	    // InternalRsamlText.g:3270:5: otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) )
+            	    // InternalRsamlText.g:3321:4: (otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) ) )
+            	    // InternalRsamlText.g:3322:5: otherlv_5= 'dataType' ( (lv_dataType_6_0= ruleDataType ) )
             	    {
-            	    otherlv_5=(Token)match(input,39,FOLLOW_22); 
+            	    otherlv_5=(Token)match(input,40,FOLLOW_23); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getKnowledgeAccess().getDataTypeKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3274:5: ( (lv_dataType_6_0= ruleDataType ) )
-            	    // InternalRsamlText.g:3275:6: (lv_dataType_6_0= ruleDataType )
+            	    // InternalRsamlText.g:3326:5: ( (lv_dataType_6_0= ruleDataType ) )
+            	    // InternalRsamlText.g:3327:6: (lv_dataType_6_0= ruleDataType )
             	    {
-            	    // InternalRsamlText.g:3275:6: (lv_dataType_6_0= ruleDataType )
-            	    // InternalRsamlText.g:3276:7: lv_dataType_6_0= ruleDataType
+            	    // InternalRsamlText.g:3327:6: (lv_dataType_6_0= ruleDataType )
+            	    // InternalRsamlText.g:3328:7: lv_dataType_6_0= ruleDataType
             	    {
 
             	    							newCompositeNode(grammarAccess.getKnowledgeAccess().getDataTypeDataTypeEnumRuleCall_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_38);
+            	    pushFollow(FOLLOW_39);
             	    lv_dataType_6_0=ruleDataType();
 
             	    state._fsp--;
@@ -7854,20 +7967,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3295:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3347:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3295:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3296:5: otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3347:4: (otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3348:5: otherlv_7= 'usedBy' ( ( ruleQualifiedName ) ) (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_7=(Token)match(input,68,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,69,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getKnowledgeAccess().getUsedByKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3300:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3301:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3352:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3353:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3301:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3302:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3353:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3354:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -7877,7 +7990,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getKnowledgeAccess().getUsedByModuleCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_39);
+            	    pushFollow(FOLLOW_40);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -7891,30 +8004,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3316:5: (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3368:5: (otherlv_9= ',' ( ( ruleQualifiedName ) ) )*
             	    loop46:
             	    do {
             	        int alt46=2;
             	        int LA46_0 = input.LA(1);
 
-            	        if ( (LA46_0==28) ) {
+            	        if ( (LA46_0==29) ) {
             	            alt46=1;
             	        }
 
 
             	        switch (alt46) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3317:6: otherlv_9= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3369:6: otherlv_9= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_9=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_9=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_9, grammarAccess.getKnowledgeAccess().getCommaKeyword_4_2_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3321:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3322:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3373:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3374:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3322:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3323:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3374:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3375:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -7924,7 +8037,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getKnowledgeAccess().getUsedByModuleCrossReference_4_2_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_39);
+            	    	    pushFollow(FOLLOW_40);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -7959,7 +8072,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_11=(Token)match(input,15,FOLLOW_2); 
+            otherlv_11=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_11, grammarAccess.getKnowledgeAccess().getRightCurlyBracketKeyword_5());
             		
@@ -7986,7 +8099,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleProcessor"
-    // InternalRsamlText.g:3348:1: entryRuleProcessor returns [EObject current=null] : iv_ruleProcessor= ruleProcessor EOF ;
+    // InternalRsamlText.g:3400:1: entryRuleProcessor returns [EObject current=null] : iv_ruleProcessor= ruleProcessor EOF ;
     public final EObject entryRuleProcessor() throws RecognitionException {
         EObject current = null;
 
@@ -7994,8 +8107,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3348:50: (iv_ruleProcessor= ruleProcessor EOF )
-            // InternalRsamlText.g:3349:2: iv_ruleProcessor= ruleProcessor EOF
+            // InternalRsamlText.g:3400:50: (iv_ruleProcessor= ruleProcessor EOF )
+            // InternalRsamlText.g:3401:2: iv_ruleProcessor= ruleProcessor EOF
             {
              newCompositeNode(grammarAccess.getProcessorRule()); 
             pushFollow(FOLLOW_1);
@@ -8022,7 +8135,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleProcessor"
-    // InternalRsamlText.g:3355:1: ruleProcessor returns [EObject current=null] : ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) ;
+    // InternalRsamlText.g:3407:1: ruleProcessor returns [EObject current=null] : ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) ;
     public final EObject ruleProcessor() throws RecognitionException {
         EObject current = null;
 
@@ -8055,14 +8168,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3361:2: ( ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) )
-            // InternalRsamlText.g:3362:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
+            // InternalRsamlText.g:3413:2: ( ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3414:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3362:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
-            // InternalRsamlText.g:3363:3: () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}'
+            // InternalRsamlText.g:3414:2: ( () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}' )
+            // InternalRsamlText.g:3415:3: () otherlv_1= 'processor' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )* otherlv_19= '}'
             {
-            // InternalRsamlText.g:3363:3: ()
-            // InternalRsamlText.g:3364:4: 
+            // InternalRsamlText.g:3415:3: ()
+            // InternalRsamlText.g:3416:4: 
             {
 
             				current = forceCreateModelElement(
@@ -8072,23 +8185,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,69,FOLLOW_3); 
+            otherlv_1=(Token)match(input,70,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getProcessorAccess().getProcessorKeyword_1());
             		
-            // InternalRsamlText.g:3374:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3426:3: ( (lv_name_2_0= ruleName ) )?
             int alt48=2;
             int LA48_0 = input.LA(1);
 
-            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=14)||(LA48_0>=16 && LA48_0<=27)||(LA48_0>=29 && LA48_0<=42)||(LA48_0>=44 && LA48_0<=78)||(LA48_0>=80 && LA48_0<=111)) ) {
+            if ( ((LA48_0>=RULE_STRING && LA48_0<=RULE_ID)||LA48_0==11||(LA48_0>=13 && LA48_0<=15)||(LA48_0>=17 && LA48_0<=28)||(LA48_0>=30 && LA48_0<=43)||(LA48_0>=45 && LA48_0<=79)||(LA48_0>=81 && LA48_0<=114)) ) {
                 alt48=1;
             }
             switch (alt48) {
                 case 1 :
-                    // InternalRsamlText.g:3375:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3427:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3375:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3376:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3427:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3428:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getProcessorAccess().getNameNameParserRuleCall_2_0());
@@ -8118,46 +8231,46 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_40); 
+            otherlv_3=(Token)match(input,12,FOLLOW_41); 
 
             			newLeafNode(otherlv_3, grammarAccess.getProcessorAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3397:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )*
+            // InternalRsamlText.g:3449:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) ) | (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) ) | (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) ) | (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) ) | this_Unit_14= ruleUnit[$current] | (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* ) )*
             loop50:
             do {
                 int alt50=8;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt50=1;
                     }
                     break;
-                case 32:
+                case 33:
                     {
                     alt50=2;
                     }
                     break;
-                case 70:
+                case 71:
                     {
                     alt50=3;
                     }
                     break;
-                case 71:
+                case 72:
                     {
                     alt50=4;
                     }
                     break;
-                case 72:
+                case 73:
                     {
                     alt50=5;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt50=6;
                     }
                     break;
-                case 73:
+                case 74:
                     {
                     alt50=7;
                     }
@@ -8167,7 +8280,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt50) {
             	case 1 :
-            	    // InternalRsamlText.g:3398:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3450:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -8175,7 +8288,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getProcessorAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_40);
+            	    pushFollow(FOLLOW_41);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -8188,25 +8301,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3410:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
+            	    // InternalRsamlText.g:3462:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
             	    {
-            	    // InternalRsamlText.g:3410:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
-            	    // InternalRsamlText.g:3411:5: otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
+            	    // InternalRsamlText.g:3462:4: (otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) ) )
+            	    // InternalRsamlText.g:3463:5: otherlv_5= 'schedPolicy' ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
             	    {
-            	    otherlv_5=(Token)match(input,32,FOLLOW_19); 
+            	    otherlv_5=(Token)match(input,33,FOLLOW_20); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getProcessorAccess().getSchedPolicyKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3415:5: ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
-            	    // InternalRsamlText.g:3416:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
+            	    // InternalRsamlText.g:3467:5: ( (lv_schedPolicy_6_0= ruleSchedulingPolicy ) )
+            	    // InternalRsamlText.g:3468:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
             	    {
-            	    // InternalRsamlText.g:3416:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
-            	    // InternalRsamlText.g:3417:7: lv_schedPolicy_6_0= ruleSchedulingPolicy
+            	    // InternalRsamlText.g:3468:6: (lv_schedPolicy_6_0= ruleSchedulingPolicy )
+            	    // InternalRsamlText.g:3469:7: lv_schedPolicy_6_0= ruleSchedulingPolicy
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getSchedPolicySchedulingPolicyEnumRuleCall_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_40);
+            	    pushFollow(FOLLOW_41);
             	    lv_schedPolicy_6_0=ruleSchedulingPolicy();
 
             	    state._fsp--;
@@ -8235,25 +8348,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3436:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:3488:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
             	    {
-            	    // InternalRsamlText.g:3436:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
-            	    // InternalRsamlText.g:3437:5: otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) )
+            	    // InternalRsamlText.g:3488:4: (otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) ) )
+            	    // InternalRsamlText.g:3489:5: otherlv_7= 'core' ( (lv_core_8_0= ruleInteger ) )
             	    {
-            	    otherlv_7=(Token)match(input,70,FOLLOW_7); 
+            	    otherlv_7=(Token)match(input,71,FOLLOW_7); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getProcessorAccess().getCoreKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3441:5: ( (lv_core_8_0= ruleInteger ) )
-            	    // InternalRsamlText.g:3442:6: (lv_core_8_0= ruleInteger )
+            	    // InternalRsamlText.g:3493:5: ( (lv_core_8_0= ruleInteger ) )
+            	    // InternalRsamlText.g:3494:6: (lv_core_8_0= ruleInteger )
             	    {
-            	    // InternalRsamlText.g:3442:6: (lv_core_8_0= ruleInteger )
-            	    // InternalRsamlText.g:3443:7: lv_core_8_0= ruleInteger
+            	    // InternalRsamlText.g:3494:6: (lv_core_8_0= ruleInteger )
+            	    // InternalRsamlText.g:3495:7: lv_core_8_0= ruleInteger
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getCoreIntegerParserRuleCall_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_40);
+            	    pushFollow(FOLLOW_41);
             	    lv_core_8_0=ruleInteger();
 
             	    state._fsp--;
@@ -8282,22 +8395,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3462:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3514:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
             	    {
-            	    // InternalRsamlText.g:3462:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
-            	    // InternalRsamlText.g:3463:5: otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3514:4: (otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) ) )
+            	    // InternalRsamlText.g:3515:5: otherlv_9= 'host' ( (lv_host_10_0= RULE_STRING ) )
             	    {
-            	    otherlv_9=(Token)match(input,71,FOLLOW_8); 
+            	    otherlv_9=(Token)match(input,72,FOLLOW_9); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getProcessorAccess().getHostKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3467:5: ( (lv_host_10_0= RULE_STRING ) )
-            	    // InternalRsamlText.g:3468:6: (lv_host_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:3519:5: ( (lv_host_10_0= RULE_STRING ) )
+            	    // InternalRsamlText.g:3520:6: (lv_host_10_0= RULE_STRING )
             	    {
-            	    // InternalRsamlText.g:3468:6: (lv_host_10_0= RULE_STRING )
-            	    // InternalRsamlText.g:3469:7: lv_host_10_0= RULE_STRING
+            	    // InternalRsamlText.g:3520:6: (lv_host_10_0= RULE_STRING )
+            	    // InternalRsamlText.g:3521:7: lv_host_10_0= RULE_STRING
             	    {
-            	    lv_host_10_0=(Token)match(input,RULE_STRING,FOLLOW_40); 
+            	    lv_host_10_0=(Token)match(input,RULE_STRING,FOLLOW_41); 
 
             	    							newLeafNode(lv_host_10_0, grammarAccess.getProcessorAccess().getHostSTRINGTerminalRuleCall_4_3_1_0());
             	    						
@@ -8324,25 +8437,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:3487:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3539:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:3487:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:3488:5: otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3539:4: (otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3540:5: otherlv_11= 'linkLatency' ( (lv_linkLatency_12_0= ruleReal ) ) ( (lv_timeUnit_13_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_11=(Token)match(input,72,FOLLOW_12); 
+            	    otherlv_11=(Token)match(input,73,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_11, grammarAccess.getProcessorAccess().getLinkLatencyKeyword_4_4_0());
             	    				
-            	    // InternalRsamlText.g:3492:5: ( (lv_linkLatency_12_0= ruleReal ) )
-            	    // InternalRsamlText.g:3493:6: (lv_linkLatency_12_0= ruleReal )
+            	    // InternalRsamlText.g:3544:5: ( (lv_linkLatency_12_0= ruleReal ) )
+            	    // InternalRsamlText.g:3545:6: (lv_linkLatency_12_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:3493:6: (lv_linkLatency_12_0= ruleReal )
-            	    // InternalRsamlText.g:3494:7: lv_linkLatency_12_0= ruleReal
+            	    // InternalRsamlText.g:3545:6: (lv_linkLatency_12_0= ruleReal )
+            	    // InternalRsamlText.g:3546:7: lv_linkLatency_12_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getLinkLatencyRealParserRuleCall_4_4_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_linkLatency_12_0=ruleReal();
 
             	    state._fsp--;
@@ -8364,16 +8477,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3511:5: ( (lv_timeUnit_13_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:3512:6: (lv_timeUnit_13_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3563:5: ( (lv_timeUnit_13_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3564:6: (lv_timeUnit_13_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:3512:6: (lv_timeUnit_13_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:3513:7: lv_timeUnit_13_0= ruleTimeUnit
+            	    // InternalRsamlText.g:3564:6: (lv_timeUnit_13_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3565:7: lv_timeUnit_13_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
             	    						
-            	    pushFollow(FOLLOW_40);
+            	    pushFollow(FOLLOW_41);
             	    lv_timeUnit_13_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -8402,7 +8515,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 6 :
-            	    // InternalRsamlText.g:3532:4: this_Unit_14= ruleUnit[$current]
+            	    // InternalRsamlText.g:3584:4: this_Unit_14= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -8410,7 +8523,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getProcessorAccess().getUnitParserRuleCall_4_5());
             	    			
-            	    pushFollow(FOLLOW_40);
+            	    pushFollow(FOLLOW_41);
             	    this_Unit_14=ruleUnit(current);
 
             	    state._fsp--;
@@ -8423,20 +8536,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 7 :
-            	    // InternalRsamlText.g:3544:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3596:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3544:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3545:5: otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3596:4: (otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3597:5: otherlv_15= 'modules' ( ( ruleQualifiedName ) ) (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_15=(Token)match(input,73,FOLLOW_15); 
+            	    otherlv_15=(Token)match(input,74,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_15, grammarAccess.getProcessorAccess().getModulesKeyword_4_6_0());
             	    				
-            	    // InternalRsamlText.g:3549:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3550:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3601:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3602:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3550:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3551:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3602:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3603:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8446,7 +8559,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_1_0());
             	    						
-            	    pushFollow(FOLLOW_41);
+            	    pushFollow(FOLLOW_42);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -8460,30 +8573,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3565:5: (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3617:5: (otherlv_17= ',' ( ( ruleQualifiedName ) ) )*
             	    loop49:
             	    do {
             	        int alt49=2;
             	        int LA49_0 = input.LA(1);
 
-            	        if ( (LA49_0==28) ) {
+            	        if ( (LA49_0==29) ) {
             	            alt49=1;
             	        }
 
 
             	        switch (alt49) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3566:6: otherlv_17= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3618:6: otherlv_17= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_17=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_17=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_17, grammarAccess.getProcessorAccess().getCommaKeyword_4_6_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3570:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3571:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3622:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3623:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3571:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3572:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3623:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3624:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -8493,7 +8606,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getProcessorAccess().getModulesModuleCrossReference_4_6_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_41);
+            	    	    pushFollow(FOLLOW_42);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -8528,7 +8641,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_19=(Token)match(input,15,FOLLOW_2); 
+            otherlv_19=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_19, grammarAccess.getProcessorAccess().getRightCurlyBracketKeyword_5());
             		
@@ -8555,7 +8668,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleLatencyRequirement"
-    // InternalRsamlText.g:3597:1: entryRuleLatencyRequirement returns [EObject current=null] : iv_ruleLatencyRequirement= ruleLatencyRequirement EOF ;
+    // InternalRsamlText.g:3649:1: entryRuleLatencyRequirement returns [EObject current=null] : iv_ruleLatencyRequirement= ruleLatencyRequirement EOF ;
     public final EObject entryRuleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8563,8 +8676,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3597:59: (iv_ruleLatencyRequirement= ruleLatencyRequirement EOF )
-            // InternalRsamlText.g:3598:2: iv_ruleLatencyRequirement= ruleLatencyRequirement EOF
+            // InternalRsamlText.g:3649:59: (iv_ruleLatencyRequirement= ruleLatencyRequirement EOF )
+            // InternalRsamlText.g:3650:2: iv_ruleLatencyRequirement= ruleLatencyRequirement EOF
             {
              newCompositeNode(grammarAccess.getLatencyRequirementRule()); 
             pushFollow(FOLLOW_1);
@@ -8591,7 +8704,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleLatencyRequirement"
-    // InternalRsamlText.g:3604:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
+    // InternalRsamlText.g:3656:1: ruleLatencyRequirement returns [EObject current=null] : ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) ;
     public final EObject ruleLatencyRequirement() throws RecognitionException {
         EObject current = null;
 
@@ -8621,14 +8734,14 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3610:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
-            // InternalRsamlText.g:3611:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3662:2: ( ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' ) )
+            // InternalRsamlText.g:3663:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
             {
-            // InternalRsamlText.g:3611:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
-            // InternalRsamlText.g:3612:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
+            // InternalRsamlText.g:3663:2: ( () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}' )
+            // InternalRsamlText.g:3664:3: () otherlv_1= 'latency' ( (lv_name_2_0= ruleName ) )? otherlv_3= '{' (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )* otherlv_19= '}'
             {
-            // InternalRsamlText.g:3612:3: ()
-            // InternalRsamlText.g:3613:4: 
+            // InternalRsamlText.g:3664:3: ()
+            // InternalRsamlText.g:3665:4: 
             {
 
             				current = forceCreateModelElement(
@@ -8638,23 +8751,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_1=(Token)match(input,74,FOLLOW_3); 
+            otherlv_1=(Token)match(input,75,FOLLOW_3); 
 
             			newLeafNode(otherlv_1, grammarAccess.getLatencyRequirementAccess().getLatencyKeyword_1());
             		
-            // InternalRsamlText.g:3623:3: ( (lv_name_2_0= ruleName ) )?
+            // InternalRsamlText.g:3675:3: ( (lv_name_2_0= ruleName ) )?
             int alt51=2;
             int LA51_0 = input.LA(1);
 
-            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=14)||(LA51_0>=16 && LA51_0<=27)||(LA51_0>=29 && LA51_0<=42)||(LA51_0>=44 && LA51_0<=78)||(LA51_0>=80 && LA51_0<=111)) ) {
+            if ( ((LA51_0>=RULE_STRING && LA51_0<=RULE_ID)||LA51_0==11||(LA51_0>=13 && LA51_0<=15)||(LA51_0>=17 && LA51_0<=28)||(LA51_0>=30 && LA51_0<=43)||(LA51_0>=45 && LA51_0<=79)||(LA51_0>=81 && LA51_0<=114)) ) {
                 alt51=1;
             }
             switch (alt51) {
                 case 1 :
-                    // InternalRsamlText.g:3624:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3676:4: (lv_name_2_0= ruleName )
                     {
-                    // InternalRsamlText.g:3624:4: (lv_name_2_0= ruleName )
-                    // InternalRsamlText.g:3625:5: lv_name_2_0= ruleName
+                    // InternalRsamlText.g:3676:4: (lv_name_2_0= ruleName )
+                    // InternalRsamlText.g:3677:5: lv_name_2_0= ruleName
                     {
 
                     					newCompositeNode(grammarAccess.getLatencyRequirementAccess().getNameNameParserRuleCall_2_0());
@@ -8684,46 +8797,46 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            otherlv_3=(Token)match(input,12,FOLLOW_42); 
+            otherlv_3=(Token)match(input,12,FOLLOW_43); 
 
             			newLeafNode(otherlv_3, grammarAccess.getLatencyRequirementAccess().getLeftCurlyBracketKeyword_3());
             		
-            // InternalRsamlText.g:3646:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
+            // InternalRsamlText.g:3698:3: (this_Described_4= ruleDescribed[$current] | (otherlv_5= 'from' ( ( ruleQualifiedName ) ) ) | (otherlv_7= 'to' ( ( ruleQualifiedName ) ) ) | (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* ) | (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) ) | (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) ) | this_Unit_18= ruleUnit[$current] )*
             loop53:
             do {
                 int alt53=8;
                 switch ( input.LA(1) ) {
-                case 16:
+                case 17:
                     {
                     alt53=1;
                     }
                     break;
-                case 75:
+                case 76:
                     {
                     alt53=2;
                     }
                     break;
-                case 76:
+                case 77:
                     {
                     alt53=3;
                     }
                     break;
-                case 77:
+                case 78:
                     {
                     alt53=4;
                     }
                     break;
-                case 78:
+                case 79:
                     {
                     alt53=5;
                     }
                     break;
-                case 50:
+                case 51:
                     {
                     alt53=6;
                     }
                     break;
-                case 17:
+                case 18:
                     {
                     alt53=7;
                     }
@@ -8733,7 +8846,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
                 switch (alt53) {
             	case 1 :
-            	    // InternalRsamlText.g:3647:4: this_Described_4= ruleDescribed[$current]
+            	    // InternalRsamlText.g:3699:4: this_Described_4= ruleDescribed[$current]
             	    {
 
             	    				if (current==null) {
@@ -8741,7 +8854,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getLatencyRequirementAccess().getDescribedParserRuleCall_4_0());
             	    			
-            	    pushFollow(FOLLOW_42);
+            	    pushFollow(FOLLOW_43);
             	    this_Described_4=ruleDescribed(current);
 
             	    state._fsp--;
@@ -8754,20 +8867,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:3659:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3711:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3659:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3660:5: otherlv_5= 'from' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3711:4: (otherlv_5= 'from' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3712:5: otherlv_5= 'from' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_5=(Token)match(input,75,FOLLOW_15); 
+            	    otherlv_5=(Token)match(input,76,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_5, grammarAccess.getLatencyRequirementAccess().getFromKeyword_4_1_0());
             	    				
-            	    // InternalRsamlText.g:3664:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3665:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3716:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3717:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3665:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3666:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3717:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3718:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8777,7 +8890,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getSourceNamedElementCrossReference_4_1_1_0());
             	    						
-            	    pushFollow(FOLLOW_42);
+            	    pushFollow(FOLLOW_43);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -8798,20 +8911,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 3 :
-            	    // InternalRsamlText.g:3682:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3734:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
             	    {
-            	    // InternalRsamlText.g:3682:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
-            	    // InternalRsamlText.g:3683:5: otherlv_7= 'to' ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3734:4: (otherlv_7= 'to' ( ( ruleQualifiedName ) ) )
+            	    // InternalRsamlText.g:3735:5: otherlv_7= 'to' ( ( ruleQualifiedName ) )
             	    {
-            	    otherlv_7=(Token)match(input,76,FOLLOW_15); 
+            	    otherlv_7=(Token)match(input,77,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_7, grammarAccess.getLatencyRequirementAccess().getToKeyword_4_2_0());
             	    				
-            	    // InternalRsamlText.g:3687:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3688:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3739:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3740:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3688:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3689:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3740:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3741:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8821,7 +8934,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTargetNamedElementCrossReference_4_2_1_0());
             	    						
-            	    pushFollow(FOLLOW_42);
+            	    pushFollow(FOLLOW_43);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -8842,20 +8955,20 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 4 :
-            	    // InternalRsamlText.g:3705:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3757:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
             	    {
-            	    // InternalRsamlText.g:3705:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
-            	    // InternalRsamlText.g:3706:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3757:4: (otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )* )
+            	    // InternalRsamlText.g:3758:5: otherlv_9= 'via' ( ( ruleQualifiedName ) ) (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    {
-            	    otherlv_9=(Token)match(input,77,FOLLOW_15); 
+            	    otherlv_9=(Token)match(input,78,FOLLOW_16); 
 
             	    					newLeafNode(otherlv_9, grammarAccess.getLatencyRequirementAccess().getViaKeyword_4_3_0());
             	    				
-            	    // InternalRsamlText.g:3710:5: ( ( ruleQualifiedName ) )
-            	    // InternalRsamlText.g:3711:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3762:5: ( ( ruleQualifiedName ) )
+            	    // InternalRsamlText.g:3763:6: ( ruleQualifiedName )
             	    {
-            	    // InternalRsamlText.g:3711:6: ( ruleQualifiedName )
-            	    // InternalRsamlText.g:3712:7: ruleQualifiedName
+            	    // InternalRsamlText.g:3763:6: ( ruleQualifiedName )
+            	    // InternalRsamlText.g:3764:7: ruleQualifiedName
             	    {
 
             	    							if (current==null) {
@@ -8865,7 +8978,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getViaNamedElementCrossReference_4_3_1_0());
             	    						
-            	    pushFollow(FOLLOW_43);
+            	    pushFollow(FOLLOW_44);
             	    ruleQualifiedName();
 
             	    state._fsp--;
@@ -8879,30 +8992,30 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3726:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
+            	    // InternalRsamlText.g:3778:5: (otherlv_11= ',' ( ( ruleQualifiedName ) ) )*
             	    loop52:
             	    do {
             	        int alt52=2;
             	        int LA52_0 = input.LA(1);
 
-            	        if ( (LA52_0==28) ) {
+            	        if ( (LA52_0==29) ) {
             	            alt52=1;
             	        }
 
 
             	        switch (alt52) {
             	    	case 1 :
-            	    	    // InternalRsamlText.g:3727:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3779:6: otherlv_11= ',' ( ( ruleQualifiedName ) )
             	    	    {
-            	    	    otherlv_11=(Token)match(input,28,FOLLOW_15); 
+            	    	    otherlv_11=(Token)match(input,29,FOLLOW_16); 
 
             	    	    						newLeafNode(otherlv_11, grammarAccess.getLatencyRequirementAccess().getCommaKeyword_4_3_2_0());
             	    	    					
-            	    	    // InternalRsamlText.g:3731:6: ( ( ruleQualifiedName ) )
-            	    	    // InternalRsamlText.g:3732:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3783:6: ( ( ruleQualifiedName ) )
+            	    	    // InternalRsamlText.g:3784:7: ( ruleQualifiedName )
             	    	    {
-            	    	    // InternalRsamlText.g:3732:7: ( ruleQualifiedName )
-            	    	    // InternalRsamlText.g:3733:8: ruleQualifiedName
+            	    	    // InternalRsamlText.g:3784:7: ( ruleQualifiedName )
+            	    	    // InternalRsamlText.g:3785:8: ruleQualifiedName
             	    	    {
 
             	    	    								if (current==null) {
@@ -8912,7 +9025,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    	    								newCompositeNode(grammarAccess.getLatencyRequirementAccess().getViaNamedElementCrossReference_4_3_2_1_0());
             	    	    							
-            	    	    pushFollow(FOLLOW_43);
+            	    	    pushFollow(FOLLOW_44);
             	    	    ruleQualifiedName();
 
             	    	    state._fsp--;
@@ -8942,25 +9055,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 5 :
-            	    // InternalRsamlText.g:3750:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3802:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
             	    {
-            	    // InternalRsamlText.g:3750:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
-            	    // InternalRsamlText.g:3751:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3802:4: (otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) ) )
+            	    // InternalRsamlText.g:3803:5: otherlv_13= 'maxLatency' ( (lv_maxLatency_14_0= ruleReal ) ) ( (lv_timeUnit_15_0= ruleTimeUnit ) )
             	    {
-            	    otherlv_13=(Token)match(input,78,FOLLOW_12); 
+            	    otherlv_13=(Token)match(input,79,FOLLOW_13); 
 
             	    					newLeafNode(otherlv_13, grammarAccess.getLatencyRequirementAccess().getMaxLatencyKeyword_4_4_0());
             	    				
-            	    // InternalRsamlText.g:3755:5: ( (lv_maxLatency_14_0= ruleReal ) )
-            	    // InternalRsamlText.g:3756:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3807:5: ( (lv_maxLatency_14_0= ruleReal ) )
+            	    // InternalRsamlText.g:3808:6: (lv_maxLatency_14_0= ruleReal )
             	    {
-            	    // InternalRsamlText.g:3756:6: (lv_maxLatency_14_0= ruleReal )
-            	    // InternalRsamlText.g:3757:7: lv_maxLatency_14_0= ruleReal
+            	    // InternalRsamlText.g:3808:6: (lv_maxLatency_14_0= ruleReal )
+            	    // InternalRsamlText.g:3809:7: lv_maxLatency_14_0= ruleReal
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getMaxLatencyRealParserRuleCall_4_4_1_0());
             	    						
-            	    pushFollow(FOLLOW_9);
+            	    pushFollow(FOLLOW_10);
             	    lv_maxLatency_14_0=ruleReal();
 
             	    state._fsp--;
@@ -8982,16 +9095,16 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    }
 
-            	    // InternalRsamlText.g:3774:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
-            	    // InternalRsamlText.g:3775:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3826:5: ( (lv_timeUnit_15_0= ruleTimeUnit ) )
+            	    // InternalRsamlText.g:3827:6: (lv_timeUnit_15_0= ruleTimeUnit )
             	    {
-            	    // InternalRsamlText.g:3775:6: (lv_timeUnit_15_0= ruleTimeUnit )
-            	    // InternalRsamlText.g:3776:7: lv_timeUnit_15_0= ruleTimeUnit
+            	    // InternalRsamlText.g:3827:6: (lv_timeUnit_15_0= ruleTimeUnit )
+            	    // InternalRsamlText.g:3828:7: lv_timeUnit_15_0= ruleTimeUnit
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getTimeUnitTimeUnitEnumRuleCall_4_4_2_0());
             	    						
-            	    pushFollow(FOLLOW_42);
+            	    pushFollow(FOLLOW_43);
             	    lv_timeUnit_15_0=ruleTimeUnit();
 
             	    state._fsp--;
@@ -9020,25 +9133,25 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 6 :
-            	    // InternalRsamlText.g:3795:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3847:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
             	    {
-            	    // InternalRsamlText.g:3795:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
-            	    // InternalRsamlText.g:3796:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3847:4: (otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) ) )
+            	    // InternalRsamlText.g:3848:5: otherlv_16= 'kind' ( (lv_kind_17_0= ruleLatencyKind ) )
             	    {
-            	    otherlv_16=(Token)match(input,50,FOLLOW_44); 
+            	    otherlv_16=(Token)match(input,51,FOLLOW_45); 
 
             	    					newLeafNode(otherlv_16, grammarAccess.getLatencyRequirementAccess().getKindKeyword_4_5_0());
             	    				
-            	    // InternalRsamlText.g:3800:5: ( (lv_kind_17_0= ruleLatencyKind ) )
-            	    // InternalRsamlText.g:3801:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3852:5: ( (lv_kind_17_0= ruleLatencyKind ) )
+            	    // InternalRsamlText.g:3853:6: (lv_kind_17_0= ruleLatencyKind )
             	    {
-            	    // InternalRsamlText.g:3801:6: (lv_kind_17_0= ruleLatencyKind )
-            	    // InternalRsamlText.g:3802:7: lv_kind_17_0= ruleLatencyKind
+            	    // InternalRsamlText.g:3853:6: (lv_kind_17_0= ruleLatencyKind )
+            	    // InternalRsamlText.g:3854:7: lv_kind_17_0= ruleLatencyKind
             	    {
 
             	    							newCompositeNode(grammarAccess.getLatencyRequirementAccess().getKindLatencyKindEnumRuleCall_4_5_1_0());
             	    						
-            	    pushFollow(FOLLOW_42);
+            	    pushFollow(FOLLOW_43);
             	    lv_kind_17_0=ruleLatencyKind();
 
             	    state._fsp--;
@@ -9067,7 +9180,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    }
             	    break;
             	case 7 :
-            	    // InternalRsamlText.g:3821:4: this_Unit_18= ruleUnit[$current]
+            	    // InternalRsamlText.g:3873:4: this_Unit_18= ruleUnit[$current]
             	    {
 
             	    				if (current==null) {
@@ -9075,7 +9188,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             	    				}
             	    				newCompositeNode(grammarAccess.getLatencyRequirementAccess().getUnitParserRuleCall_4_6());
             	    			
-            	    pushFollow(FOLLOW_42);
+            	    pushFollow(FOLLOW_43);
             	    this_Unit_18=ruleUnit(current);
 
             	    state._fsp--;
@@ -9093,7 +9206,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 }
             } while (true);
 
-            otherlv_19=(Token)match(input,15,FOLLOW_2); 
+            otherlv_19=(Token)match(input,16,FOLLOW_2); 
 
             			newLeafNode(otherlv_19, grammarAccess.getLatencyRequirementAccess().getRightCurlyBracketKeyword_5());
             		
@@ -9120,7 +9233,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleName"
-    // InternalRsamlText.g:3841:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
+    // InternalRsamlText.g:3893:1: entryRuleName returns [String current=null] : iv_ruleName= ruleName EOF ;
     public final String entryRuleName() throws RecognitionException {
         String current = null;
 
@@ -9128,8 +9241,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3841:44: (iv_ruleName= ruleName EOF )
-            // InternalRsamlText.g:3842:2: iv_ruleName= ruleName EOF
+            // InternalRsamlText.g:3893:44: (iv_ruleName= ruleName EOF )
+            // InternalRsamlText.g:3894:2: iv_ruleName= ruleName EOF
             {
              newCompositeNode(grammarAccess.getNameRule()); 
             pushFollow(FOLLOW_1);
@@ -9156,7 +9269,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleName"
-    // InternalRsamlText.g:3848:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
+    // InternalRsamlText.g:3900:1: ruleName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) ;
     public final AntlrDatatypeRuleToken ruleName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9169,10 +9282,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3854:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
-            // InternalRsamlText.g:3855:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3906:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword ) )
+            // InternalRsamlText.g:3907:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             {
-            // InternalRsamlText.g:3855:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
+            // InternalRsamlText.g:3907:2: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING | this_Keyword_2= ruleKeyword )
             int alt54=3;
             switch ( input.LA(1) ) {
             case RULE_ID:
@@ -9188,7 +9301,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 11:
             case 13:
             case 14:
-            case 16:
+            case 15:
             case 17:
             case 18:
             case 19:
@@ -9200,7 +9313,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 25:
             case 26:
             case 27:
-            case 29:
+            case 28:
             case 30:
             case 31:
             case 32:
@@ -9214,7 +9327,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 40:
             case 41:
             case 42:
-            case 44:
+            case 43:
             case 45:
             case 46:
             case 47:
@@ -9249,7 +9362,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 76:
             case 77:
             case 78:
-            case 80:
+            case 79:
             case 81:
             case 82:
             case 83:
@@ -9281,6 +9394,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             case 109:
             case 110:
             case 111:
+            case 112:
+            case 113:
+            case 114:
                 {
                 alt54=3;
                 }
@@ -9294,7 +9410,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt54) {
                 case 1 :
-                    // InternalRsamlText.g:3856:3: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3908:3: this_ID_0= RULE_ID
                     {
                     this_ID_0=(Token)match(input,RULE_ID,FOLLOW_2); 
 
@@ -9307,7 +9423,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3864:3: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3916:3: this_STRING_1= RULE_STRING
                     {
                     this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_2); 
 
@@ -9320,7 +9436,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3872:3: this_Keyword_2= ruleKeyword
+                    // InternalRsamlText.g:3924:3: this_Keyword_2= ruleKeyword
                     {
 
                     			newCompositeNode(grammarAccess.getNameAccess().getKeywordParserRuleCall_2());
@@ -9362,7 +9478,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleQualifiedName"
-    // InternalRsamlText.g:3886:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
+    // InternalRsamlText.g:3938:1: entryRuleQualifiedName returns [String current=null] : iv_ruleQualifiedName= ruleQualifiedName EOF ;
     public final String entryRuleQualifiedName() throws RecognitionException {
         String current = null;
 
@@ -9370,8 +9486,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3886:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
-            // InternalRsamlText.g:3887:2: iv_ruleQualifiedName= ruleQualifiedName EOF
+            // InternalRsamlText.g:3938:53: (iv_ruleQualifiedName= ruleQualifiedName EOF )
+            // InternalRsamlText.g:3939:2: iv_ruleQualifiedName= ruleQualifiedName EOF
             {
              newCompositeNode(grammarAccess.getQualifiedNameRule()); 
             pushFollow(FOLLOW_1);
@@ -9398,7 +9514,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleQualifiedName"
-    // InternalRsamlText.g:3893:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
+    // InternalRsamlText.g:3945:1: ruleQualifiedName returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) ;
     public final AntlrDatatypeRuleToken ruleQualifiedName() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9412,13 +9528,13 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3899:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
-            // InternalRsamlText.g:3900:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3951:2: ( ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* ) )
+            // InternalRsamlText.g:3952:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
             {
-            // InternalRsamlText.g:3900:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
-            // InternalRsamlText.g:3901:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3952:2: ( (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )* )
+            // InternalRsamlText.g:3953:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING ) (kw= '.' this_Name_3= ruleName )*
             {
-            // InternalRsamlText.g:3901:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
+            // InternalRsamlText.g:3953:3: (this_ID_0= RULE_ID | this_STRING_1= RULE_STRING )
             int alt55=2;
             int LA55_0 = input.LA(1);
 
@@ -9436,9 +9552,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt55) {
                 case 1 :
-                    // InternalRsamlText.g:3902:4: this_ID_0= RULE_ID
+                    // InternalRsamlText.g:3954:4: this_ID_0= RULE_ID
                     {
-                    this_ID_0=(Token)match(input,RULE_ID,FOLLOW_45); 
+                    this_ID_0=(Token)match(input,RULE_ID,FOLLOW_46); 
 
                     				current.merge(this_ID_0);
                     			
@@ -9449,9 +9565,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3910:4: this_STRING_1= RULE_STRING
+                    // InternalRsamlText.g:3962:4: this_STRING_1= RULE_STRING
                     {
-                    this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_45); 
+                    this_STRING_1=(Token)match(input,RULE_STRING,FOLLOW_46); 
 
                     				current.merge(this_STRING_1);
                     			
@@ -9464,22 +9580,22 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             }
 
-            // InternalRsamlText.g:3918:3: (kw= '.' this_Name_3= ruleName )*
+            // InternalRsamlText.g:3970:3: (kw= '.' this_Name_3= ruleName )*
             loop56:
             do {
                 int alt56=2;
                 int LA56_0 = input.LA(1);
 
-                if ( (LA56_0==79) ) {
+                if ( (LA56_0==80) ) {
                     alt56=1;
                 }
 
 
                 switch (alt56) {
             	case 1 :
-            	    // InternalRsamlText.g:3919:4: kw= '.' this_Name_3= ruleName
+            	    // InternalRsamlText.g:3971:4: kw= '.' this_Name_3= ruleName
             	    {
-            	    kw=(Token)match(input,79,FOLLOW_46); 
+            	    kw=(Token)match(input,80,FOLLOW_47); 
 
             	    				current.merge(kw);
             	    				newLeafNode(kw, grammarAccess.getQualifiedNameAccess().getFullStopKeyword_1_0());
@@ -9487,7 +9603,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             	    				newCompositeNode(grammarAccess.getQualifiedNameAccess().getNameParserRuleCall_1_1());
             	    			
-            	    pushFollow(FOLLOW_45);
+            	    pushFollow(FOLLOW_46);
             	    this_Name_3=ruleName();
 
             	    state._fsp--;
@@ -9530,7 +9646,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleKeyword"
-    // InternalRsamlText.g:3939:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
+    // InternalRsamlText.g:3991:1: entryRuleKeyword returns [String current=null] : iv_ruleKeyword= ruleKeyword EOF ;
     public final String entryRuleKeyword() throws RecognitionException {
         String current = null;
 
@@ -9538,8 +9654,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:3939:47: (iv_ruleKeyword= ruleKeyword EOF )
-            // InternalRsamlText.g:3940:2: iv_ruleKeyword= ruleKeyword EOF
+            // InternalRsamlText.g:3991:47: (iv_ruleKeyword= ruleKeyword EOF )
+            // InternalRsamlText.g:3992:2: iv_ruleKeyword= ruleKeyword EOF
             {
              newCompositeNode(grammarAccess.getKeywordRule()); 
             pushFollow(FOLLOW_1);
@@ -9566,7 +9682,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleKeyword"
-    // InternalRsamlText.g:3946:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) ;
+    // InternalRsamlText.g:3998:1: ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'lifecycle' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'plain' | kw= 'managed' | kw= 'NaN' | kw= 'Infinity' ) ;
     public final AntlrDatatypeRuleToken ruleKeyword() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -9576,128 +9692,128 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:3952:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' ) )
-            // InternalRsamlText.g:3953:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
+            // InternalRsamlText.g:4004:2: ( (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'lifecycle' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'plain' | kw= 'managed' | kw= 'NaN' | kw= 'Infinity' ) )
+            // InternalRsamlText.g:4005:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'lifecycle' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'plain' | kw= 'managed' | kw= 'NaN' | kw= 'Infinity' )
             {
-            // InternalRsamlText.g:3953:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'NaN' | kw= 'Infinity' )
-            int alt57=96;
+            // InternalRsamlText.g:4005:2: (kw= 'architecture' | kw= 'layer' | kw= 'module' | kw= 'function' | kw= 'action' | kw= 'rtAction' | kw= 'input' | kw= 'output' | kw= 'connect' | kw= 'inhibitor' | kw= 'suppressor' | kw= 'sensor' | kw= 'actuator' | kw= 'mission' | kw= 'goal' | kw= 'plan' | kw= 'activity' | kw= 'supervisor' | kw= 'order' | kw= 'database' | kw= 'knowledge' | kw= 'processor' | kw= 'latency' | kw= 'description' | kw= 'category' | kw= 'declaredLayers' | kw= 'unit' | kw= 'type' | kw= 'execType' | kw= 'period' | kw= 'deadline' | kw= 'wcet' | kw= 'level' | kw= 'maxExecTime' | kw= 'sensors' | kw= 'actuators' | kw= 'synchroType' | kw= 'schedPolicy' | kw= 'otherPolicy' | kw= 'start' | kw= 'dataType' | kw= 'messageType' | kw= 'topic' | kw= 'trigger' | kw= 'target' | kw= 'duration' | kw= 'kind' | kw= 'priority' | kw= 'achieves' | kw= 'actions' | kw= 'plans' | kw= 'realisedBy' | kw= 'issuer' | kw= 'receiver' | kw= 'requests' | kw= 'usedBy' | kw= 'core' | kw= 'modules' | kw= 'from' | kw= 'to' | kw= 'via' | kw= 'maxLatency' | kw= 'host' | kw= 'linkLatency' | kw= 'lifecycle' | kw= 'centralized' | kw= 'hierarchical' | kw= 'behavioral' | kw= 'hybrid' | kw= 'other' | kw= 'simple' | kw= 'realTime' | kw= 'periodic' | kw= 'sporadic' | kw= 'aperiodic' | kw= 'ns' | kw= 'us' | kw= 'ms' | kw= 's' | kw= 'synchronous' | kw= 'asynchronous' | kw= 'FIFO' | kw= 'SJF' | kw= 'RR' | kw= 'RM' | kw= 'DM' | kw= 'EDF' | kw= 'LLF' | kw= 'OTHER' | kw= 'numeric' | kw= 'alphanumeric' | kw= 'boolean' | kw= 'structured' | kw= 'reactionTime' | kw= 'dataAge' | kw= 'plain' | kw= 'managed' | kw= 'NaN' | kw= 'Infinity' )
+            int alt57=99;
             switch ( input.LA(1) ) {
             case 11:
                 {
                 alt57=1;
                 }
                 break;
-            case 23:
+            case 24:
                 {
                 alt57=2;
                 }
                 break;
-            case 26:
+            case 27:
                 {
                 alt57=3;
                 }
                 break;
-            case 30:
+            case 31:
                 {
                 alt57=4;
                 }
                 break;
-            case 34:
+            case 35:
                 {
                 alt57=5;
                 }
                 break;
-            case 35:
+            case 36:
                 {
                 alt57=6;
                 }
                 break;
-            case 37:
+            case 38:
                 {
                 alt57=7;
                 }
                 break;
-            case 38:
+            case 39:
                 {
                 alt57=8;
                 }
                 break;
-            case 42:
+            case 43:
                 {
                 alt57=9;
                 }
                 break;
-            case 44:
+            case 45:
                 {
                 alt57=10;
                 }
                 break;
-            case 48:
+            case 49:
                 {
                 alt57=11;
                 }
                 break;
-            case 49:
+            case 50:
                 {
                 alt57=12;
                 }
                 break;
-            case 51:
+            case 52:
                 {
                 alt57=13;
                 }
                 break;
-            case 52:
+            case 53:
                 {
                 alt57=14;
                 }
                 break;
-            case 53:
+            case 54:
                 {
                 alt57=15;
                 }
                 break;
-            case 55:
+            case 56:
                 {
                 alt57=16;
                 }
                 break;
-            case 57:
+            case 58:
                 {
                 alt57=17;
                 }
                 break;
-            case 59:
+            case 60:
                 {
                 alt57=18;
                 }
                 break;
-            case 62:
+            case 63:
                 {
                 alt57=19;
                 }
                 break;
-            case 66:
+            case 67:
                 {
                 alt57=20;
                 }
                 break;
-            case 67:
+            case 68:
                 {
                 alt57=21;
                 }
                 break;
-            case 69:
+            case 70:
                 {
                 alt57=22;
                 }
                 break;
-            case 74:
+            case 75:
                 {
                 alt57=23;
                 }
                 break;
-            case 16:
+            case 17:
                 {
                 alt57=24;
                 }
@@ -9712,197 +9828,197 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=26;
                 }
                 break;
-            case 17:
+            case 18:
                 {
                 alt57=27;
                 }
                 break;
-            case 18:
+            case 19:
                 {
                 alt57=28;
                 }
                 break;
-            case 19:
+            case 20:
                 {
                 alt57=29;
                 }
                 break;
-            case 20:
+            case 21:
                 {
                 alt57=30;
                 }
                 break;
-            case 21:
+            case 22:
                 {
                 alt57=31;
                 }
                 break;
-            case 22:
+            case 23:
                 {
                 alt57=32;
                 }
                 break;
-            case 24:
+            case 25:
                 {
                 alt57=33;
                 }
                 break;
-            case 25:
+            case 26:
                 {
                 alt57=34;
                 }
                 break;
-            case 27:
+            case 28:
                 {
                 alt57=35;
                 }
                 break;
-            case 29:
+            case 30:
                 {
                 alt57=36;
                 }
                 break;
-            case 31:
+            case 32:
                 {
                 alt57=37;
                 }
                 break;
-            case 32:
+            case 33:
                 {
                 alt57=38;
                 }
                 break;
-            case 33:
+            case 34:
                 {
                 alt57=39;
                 }
                 break;
-            case 36:
+            case 37:
                 {
                 alt57=40;
                 }
                 break;
-            case 39:
+            case 40:
                 {
                 alt57=41;
                 }
                 break;
-            case 40:
+            case 41:
                 {
                 alt57=42;
                 }
                 break;
-            case 41:
+            case 42:
                 {
                 alt57=43;
                 }
                 break;
-            case 45:
+            case 46:
                 {
                 alt57=44;
                 }
                 break;
-            case 46:
+            case 47:
                 {
                 alt57=45;
                 }
                 break;
-            case 47:
+            case 48:
                 {
                 alt57=46;
                 }
                 break;
-            case 50:
+            case 51:
                 {
                 alt57=47;
                 }
                 break;
-            case 54:
+            case 55:
                 {
                 alt57=48;
                 }
                 break;
-            case 56:
+            case 57:
                 {
                 alt57=49;
                 }
                 break;
-            case 58:
+            case 59:
                 {
                 alt57=50;
                 }
                 break;
-            case 60:
+            case 61:
                 {
                 alt57=51;
                 }
                 break;
-            case 61:
+            case 62:
                 {
                 alt57=52;
                 }
                 break;
-            case 63:
+            case 64:
                 {
                 alt57=53;
                 }
                 break;
-            case 64:
+            case 65:
                 {
                 alt57=54;
                 }
                 break;
-            case 65:
+            case 66:
                 {
                 alt57=55;
                 }
                 break;
-            case 68:
+            case 69:
                 {
                 alt57=56;
                 }
                 break;
-            case 70:
+            case 71:
                 {
                 alt57=57;
                 }
                 break;
-            case 73:
+            case 74:
                 {
                 alt57=58;
                 }
                 break;
-            case 75:
+            case 76:
                 {
                 alt57=59;
                 }
                 break;
-            case 76:
+            case 77:
                 {
                 alt57=60;
                 }
                 break;
-            case 77:
+            case 78:
                 {
                 alt57=61;
                 }
                 break;
-            case 78:
+            case 79:
                 {
                 alt57=62;
                 }
                 break;
-            case 71:
+            case 72:
                 {
                 alt57=63;
                 }
                 break;
-            case 72:
+            case 73:
                 {
                 alt57=64;
                 }
                 break;
-            case 80:
+            case 15:
                 {
                 alt57=65;
                 }
@@ -10062,6 +10178,21 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt57=96;
                 }
                 break;
+            case 112:
+                {
+                alt57=97;
+                }
+                break;
+            case 113:
+                {
+                alt57=98;
+                }
+                break;
+            case 114:
+                {
+                alt57=99;
+                }
+                break;
             default:
                 NoViableAltException nvae =
                     new NoViableAltException("", 57, 0, input);
@@ -10071,7 +10202,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt57) {
                 case 1 :
-                    // InternalRsamlText.g:3954:3: kw= 'architecture'
+                    // InternalRsamlText.g:4006:3: kw= 'architecture'
                     {
                     kw=(Token)match(input,11,FOLLOW_2); 
 
@@ -10082,9 +10213,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:3960:3: kw= 'layer'
+                    // InternalRsamlText.g:4012:3: kw= 'layer'
                     {
-                    kw=(Token)match(input,23,FOLLOW_2); 
+                    kw=(Token)match(input,24,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getLayerKeyword_1());
@@ -10093,9 +10224,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:3966:3: kw= 'module'
+                    // InternalRsamlText.g:4018:3: kw= 'module'
                     {
-                    kw=(Token)match(input,26,FOLLOW_2); 
+                    kw=(Token)match(input,27,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getModuleKeyword_2());
@@ -10104,9 +10235,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:3972:3: kw= 'function'
+                    // InternalRsamlText.g:4024:3: kw= 'function'
                     {
-                    kw=(Token)match(input,30,FOLLOW_2); 
+                    kw=(Token)match(input,31,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getFunctionKeyword_3());
@@ -10115,9 +10246,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:3978:3: kw= 'action'
+                    // InternalRsamlText.g:4030:3: kw= 'action'
                     {
-                    kw=(Token)match(input,34,FOLLOW_2); 
+                    kw=(Token)match(input,35,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActionKeyword_4());
@@ -10126,9 +10257,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:3984:3: kw= 'rtAction'
+                    // InternalRsamlText.g:4036:3: kw= 'rtAction'
                     {
-                    kw=(Token)match(input,35,FOLLOW_2); 
+                    kw=(Token)match(input,36,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getRtActionKeyword_5());
@@ -10137,9 +10268,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:3990:3: kw= 'input'
+                    // InternalRsamlText.g:4042:3: kw= 'input'
                     {
-                    kw=(Token)match(input,37,FOLLOW_2); 
+                    kw=(Token)match(input,38,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getInputKeyword_6());
@@ -10148,9 +10279,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:3996:3: kw= 'output'
+                    // InternalRsamlText.g:4048:3: kw= 'output'
                     {
-                    kw=(Token)match(input,38,FOLLOW_2); 
+                    kw=(Token)match(input,39,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getOutputKeyword_7());
@@ -10159,9 +10290,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 9 :
-                    // InternalRsamlText.g:4002:3: kw= 'connect'
+                    // InternalRsamlText.g:4054:3: kw= 'connect'
                     {
-                    kw=(Token)match(input,42,FOLLOW_2); 
+                    kw=(Token)match(input,43,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getConnectKeyword_8());
@@ -10170,9 +10301,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 10 :
-                    // InternalRsamlText.g:4008:3: kw= 'inhibitor'
+                    // InternalRsamlText.g:4060:3: kw= 'inhibitor'
                     {
-                    kw=(Token)match(input,44,FOLLOW_2); 
+                    kw=(Token)match(input,45,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getInhibitorKeyword_9());
@@ -10181,9 +10312,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 11 :
-                    // InternalRsamlText.g:4014:3: kw= 'suppressor'
+                    // InternalRsamlText.g:4066:3: kw= 'suppressor'
                     {
-                    kw=(Token)match(input,48,FOLLOW_2); 
+                    kw=(Token)match(input,49,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSuppressorKeyword_10());
@@ -10192,9 +10323,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 12 :
-                    // InternalRsamlText.g:4020:3: kw= 'sensor'
+                    // InternalRsamlText.g:4072:3: kw= 'sensor'
                     {
-                    kw=(Token)match(input,49,FOLLOW_2); 
+                    kw=(Token)match(input,50,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSensorKeyword_11());
@@ -10203,9 +10334,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 13 :
-                    // InternalRsamlText.g:4026:3: kw= 'actuator'
+                    // InternalRsamlText.g:4078:3: kw= 'actuator'
                     {
-                    kw=(Token)match(input,51,FOLLOW_2); 
+                    kw=(Token)match(input,52,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActuatorKeyword_12());
@@ -10214,9 +10345,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 14 :
-                    // InternalRsamlText.g:4032:3: kw= 'mission'
+                    // InternalRsamlText.g:4084:3: kw= 'mission'
                     {
-                    kw=(Token)match(input,52,FOLLOW_2); 
+                    kw=(Token)match(input,53,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getMissionKeyword_13());
@@ -10225,9 +10356,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 15 :
-                    // InternalRsamlText.g:4038:3: kw= 'goal'
+                    // InternalRsamlText.g:4090:3: kw= 'goal'
                     {
-                    kw=(Token)match(input,53,FOLLOW_2); 
+                    kw=(Token)match(input,54,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getGoalKeyword_14());
@@ -10236,9 +10367,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 16 :
-                    // InternalRsamlText.g:4044:3: kw= 'plan'
+                    // InternalRsamlText.g:4096:3: kw= 'plan'
                     {
-                    kw=(Token)match(input,55,FOLLOW_2); 
+                    kw=(Token)match(input,56,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlanKeyword_15());
@@ -10247,9 +10378,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 17 :
-                    // InternalRsamlText.g:4050:3: kw= 'activity'
+                    // InternalRsamlText.g:4102:3: kw= 'activity'
                     {
-                    kw=(Token)match(input,57,FOLLOW_2); 
+                    kw=(Token)match(input,58,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActivityKeyword_16());
@@ -10258,9 +10389,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 18 :
-                    // InternalRsamlText.g:4056:3: kw= 'supervisor'
+                    // InternalRsamlText.g:4108:3: kw= 'supervisor'
                     {
-                    kw=(Token)match(input,59,FOLLOW_2); 
+                    kw=(Token)match(input,60,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSupervisorKeyword_17());
@@ -10269,9 +10400,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 19 :
-                    // InternalRsamlText.g:4062:3: kw= 'order'
+                    // InternalRsamlText.g:4114:3: kw= 'order'
                     {
-                    kw=(Token)match(input,62,FOLLOW_2); 
+                    kw=(Token)match(input,63,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getOrderKeyword_18());
@@ -10280,9 +10411,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 20 :
-                    // InternalRsamlText.g:4068:3: kw= 'database'
+                    // InternalRsamlText.g:4120:3: kw= 'database'
                     {
-                    kw=(Token)match(input,66,FOLLOW_2); 
+                    kw=(Token)match(input,67,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getDatabaseKeyword_19());
@@ -10291,9 +10422,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 21 :
-                    // InternalRsamlText.g:4074:3: kw= 'knowledge'
+                    // InternalRsamlText.g:4126:3: kw= 'knowledge'
                     {
-                    kw=(Token)match(input,67,FOLLOW_2); 
+                    kw=(Token)match(input,68,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getKnowledgeKeyword_20());
@@ -10302,9 +10433,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 22 :
-                    // InternalRsamlText.g:4080:3: kw= 'processor'
+                    // InternalRsamlText.g:4132:3: kw= 'processor'
                     {
-                    kw=(Token)match(input,69,FOLLOW_2); 
+                    kw=(Token)match(input,70,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getProcessorKeyword_21());
@@ -10313,9 +10444,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 23 :
-                    // InternalRsamlText.g:4086:3: kw= 'latency'
+                    // InternalRsamlText.g:4138:3: kw= 'latency'
                     {
-                    kw=(Token)match(input,74,FOLLOW_2); 
+                    kw=(Token)match(input,75,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getLatencyKeyword_22());
@@ -10324,9 +10455,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 24 :
-                    // InternalRsamlText.g:4092:3: kw= 'description'
+                    // InternalRsamlText.g:4144:3: kw= 'description'
                     {
-                    kw=(Token)match(input,16,FOLLOW_2); 
+                    kw=(Token)match(input,17,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getDescriptionKeyword_23());
@@ -10335,7 +10466,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 25 :
-                    // InternalRsamlText.g:4098:3: kw= 'category'
+                    // InternalRsamlText.g:4150:3: kw= 'category'
                     {
                     kw=(Token)match(input,13,FOLLOW_2); 
 
@@ -10346,7 +10477,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 26 :
-                    // InternalRsamlText.g:4104:3: kw= 'declaredLayers'
+                    // InternalRsamlText.g:4156:3: kw= 'declaredLayers'
                     {
                     kw=(Token)match(input,14,FOLLOW_2); 
 
@@ -10357,9 +10488,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 27 :
-                    // InternalRsamlText.g:4110:3: kw= 'unit'
+                    // InternalRsamlText.g:4162:3: kw= 'unit'
                     {
-                    kw=(Token)match(input,17,FOLLOW_2); 
+                    kw=(Token)match(input,18,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getUnitKeyword_26());
@@ -10368,9 +10499,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 28 :
-                    // InternalRsamlText.g:4116:3: kw= 'type'
+                    // InternalRsamlText.g:4168:3: kw= 'type'
                     {
-                    kw=(Token)match(input,18,FOLLOW_2); 
+                    kw=(Token)match(input,19,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getTypeKeyword_27());
@@ -10379,9 +10510,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 29 :
-                    // InternalRsamlText.g:4122:3: kw= 'execType'
+                    // InternalRsamlText.g:4174:3: kw= 'execType'
                     {
-                    kw=(Token)match(input,19,FOLLOW_2); 
+                    kw=(Token)match(input,20,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getExecTypeKeyword_28());
@@ -10390,9 +10521,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 30 :
-                    // InternalRsamlText.g:4128:3: kw= 'period'
+                    // InternalRsamlText.g:4180:3: kw= 'period'
                     {
-                    kw=(Token)match(input,20,FOLLOW_2); 
+                    kw=(Token)match(input,21,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodKeyword_29());
@@ -10401,9 +10532,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 31 :
-                    // InternalRsamlText.g:4134:3: kw= 'deadline'
+                    // InternalRsamlText.g:4186:3: kw= 'deadline'
                     {
-                    kw=(Token)match(input,21,FOLLOW_2); 
+                    kw=(Token)match(input,22,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getDeadlineKeyword_30());
@@ -10412,9 +10543,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 32 :
-                    // InternalRsamlText.g:4140:3: kw= 'wcet'
+                    // InternalRsamlText.g:4192:3: kw= 'wcet'
                     {
-                    kw=(Token)match(input,22,FOLLOW_2); 
+                    kw=(Token)match(input,23,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getWcetKeyword_31());
@@ -10423,9 +10554,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 33 :
-                    // InternalRsamlText.g:4146:3: kw= 'level'
+                    // InternalRsamlText.g:4198:3: kw= 'level'
                     {
-                    kw=(Token)match(input,24,FOLLOW_2); 
+                    kw=(Token)match(input,25,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getLevelKeyword_32());
@@ -10434,9 +10565,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 34 :
-                    // InternalRsamlText.g:4152:3: kw= 'maxExecTime'
+                    // InternalRsamlText.g:4204:3: kw= 'maxExecTime'
                     {
-                    kw=(Token)match(input,25,FOLLOW_2); 
+                    kw=(Token)match(input,26,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxExecTimeKeyword_33());
@@ -10445,9 +10576,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 35 :
-                    // InternalRsamlText.g:4158:3: kw= 'sensors'
+                    // InternalRsamlText.g:4210:3: kw= 'sensors'
                     {
-                    kw=(Token)match(input,27,FOLLOW_2); 
+                    kw=(Token)match(input,28,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSensorsKeyword_34());
@@ -10456,9 +10587,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 36 :
-                    // InternalRsamlText.g:4164:3: kw= 'actuators'
+                    // InternalRsamlText.g:4216:3: kw= 'actuators'
                     {
-                    kw=(Token)match(input,29,FOLLOW_2); 
+                    kw=(Token)match(input,30,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActuatorsKeyword_35());
@@ -10467,9 +10598,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 37 :
-                    // InternalRsamlText.g:4170:3: kw= 'synchroType'
+                    // InternalRsamlText.g:4222:3: kw= 'synchroType'
                     {
-                    kw=(Token)match(input,31,FOLLOW_2); 
+                    kw=(Token)match(input,32,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchroTypeKeyword_36());
@@ -10478,9 +10609,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 38 :
-                    // InternalRsamlText.g:4176:3: kw= 'schedPolicy'
+                    // InternalRsamlText.g:4228:3: kw= 'schedPolicy'
                     {
-                    kw=(Token)match(input,32,FOLLOW_2); 
+                    kw=(Token)match(input,33,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getSchedPolicyKeyword_37());
@@ -10489,9 +10620,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 39 :
-                    // InternalRsamlText.g:4182:3: kw= 'otherPolicy'
+                    // InternalRsamlText.g:4234:3: kw= 'otherPolicy'
                     {
-                    kw=(Token)match(input,33,FOLLOW_2); 
+                    kw=(Token)match(input,34,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherPolicyKeyword_38());
@@ -10500,9 +10631,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 40 :
-                    // InternalRsamlText.g:4188:3: kw= 'start'
+                    // InternalRsamlText.g:4240:3: kw= 'start'
                     {
-                    kw=(Token)match(input,36,FOLLOW_2); 
+                    kw=(Token)match(input,37,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getStartKeyword_39());
@@ -10511,9 +10642,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 41 :
-                    // InternalRsamlText.g:4194:3: kw= 'dataType'
+                    // InternalRsamlText.g:4246:3: kw= 'dataType'
                     {
-                    kw=(Token)match(input,39,FOLLOW_2); 
+                    kw=(Token)match(input,40,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataTypeKeyword_40());
@@ -10522,9 +10653,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 42 :
-                    // InternalRsamlText.g:4200:3: kw= 'messageType'
+                    // InternalRsamlText.g:4252:3: kw= 'messageType'
                     {
-                    kw=(Token)match(input,40,FOLLOW_2); 
+                    kw=(Token)match(input,41,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getMessageTypeKeyword_41());
@@ -10533,9 +10664,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 43 :
-                    // InternalRsamlText.g:4206:3: kw= 'topic'
+                    // InternalRsamlText.g:4258:3: kw= 'topic'
                     {
-                    kw=(Token)match(input,41,FOLLOW_2); 
+                    kw=(Token)match(input,42,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getTopicKeyword_42());
@@ -10544,9 +10675,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 44 :
-                    // InternalRsamlText.g:4212:3: kw= 'trigger'
+                    // InternalRsamlText.g:4264:3: kw= 'trigger'
                     {
-                    kw=(Token)match(input,45,FOLLOW_2); 
+                    kw=(Token)match(input,46,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getTriggerKeyword_43());
@@ -10555,9 +10686,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 45 :
-                    // InternalRsamlText.g:4218:3: kw= 'target'
+                    // InternalRsamlText.g:4270:3: kw= 'target'
                     {
-                    kw=(Token)match(input,46,FOLLOW_2); 
+                    kw=(Token)match(input,47,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getTargetKeyword_44());
@@ -10566,9 +10697,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 46 :
-                    // InternalRsamlText.g:4224:3: kw= 'duration'
+                    // InternalRsamlText.g:4276:3: kw= 'duration'
                     {
-                    kw=(Token)match(input,47,FOLLOW_2); 
+                    kw=(Token)match(input,48,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getDurationKeyword_45());
@@ -10577,9 +10708,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 47 :
-                    // InternalRsamlText.g:4230:3: kw= 'kind'
+                    // InternalRsamlText.g:4282:3: kw= 'kind'
                     {
-                    kw=(Token)match(input,50,FOLLOW_2); 
+                    kw=(Token)match(input,51,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getKindKeyword_46());
@@ -10588,9 +10719,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 48 :
-                    // InternalRsamlText.g:4236:3: kw= 'priority'
+                    // InternalRsamlText.g:4288:3: kw= 'priority'
                     {
-                    kw=(Token)match(input,54,FOLLOW_2); 
+                    kw=(Token)match(input,55,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getPriorityKeyword_47());
@@ -10599,9 +10730,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 49 :
-                    // InternalRsamlText.g:4242:3: kw= 'achieves'
+                    // InternalRsamlText.g:4294:3: kw= 'achieves'
                     {
-                    kw=(Token)match(input,56,FOLLOW_2); 
+                    kw=(Token)match(input,57,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getAchievesKeyword_48());
@@ -10610,9 +10741,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 50 :
-                    // InternalRsamlText.g:4248:3: kw= 'actions'
+                    // InternalRsamlText.g:4300:3: kw= 'actions'
                     {
-                    kw=(Token)match(input,58,FOLLOW_2); 
+                    kw=(Token)match(input,59,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getActionsKeyword_49());
@@ -10621,9 +10752,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 51 :
-                    // InternalRsamlText.g:4254:3: kw= 'plans'
+                    // InternalRsamlText.g:4306:3: kw= 'plans'
                     {
-                    kw=(Token)match(input,60,FOLLOW_2); 
+                    kw=(Token)match(input,61,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlansKeyword_50());
@@ -10632,9 +10763,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 52 :
-                    // InternalRsamlText.g:4260:3: kw= 'realisedBy'
+                    // InternalRsamlText.g:4312:3: kw= 'realisedBy'
                     {
-                    kw=(Token)match(input,61,FOLLOW_2); 
+                    kw=(Token)match(input,62,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealisedByKeyword_51());
@@ -10643,9 +10774,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 53 :
-                    // InternalRsamlText.g:4266:3: kw= 'issuer'
+                    // InternalRsamlText.g:4318:3: kw= 'issuer'
                     {
-                    kw=(Token)match(input,63,FOLLOW_2); 
+                    kw=(Token)match(input,64,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getIssuerKeyword_52());
@@ -10654,9 +10785,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 54 :
-                    // InternalRsamlText.g:4272:3: kw= 'receiver'
+                    // InternalRsamlText.g:4324:3: kw= 'receiver'
                     {
-                    kw=(Token)match(input,64,FOLLOW_2); 
+                    kw=(Token)match(input,65,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getReceiverKeyword_53());
@@ -10665,9 +10796,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 55 :
-                    // InternalRsamlText.g:4278:3: kw= 'requests'
+                    // InternalRsamlText.g:4330:3: kw= 'requests'
                     {
-                    kw=(Token)match(input,65,FOLLOW_2); 
+                    kw=(Token)match(input,66,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getRequestsKeyword_54());
@@ -10676,9 +10807,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 56 :
-                    // InternalRsamlText.g:4284:3: kw= 'usedBy'
+                    // InternalRsamlText.g:4336:3: kw= 'usedBy'
                     {
-                    kw=(Token)match(input,68,FOLLOW_2); 
+                    kw=(Token)match(input,69,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsedByKeyword_55());
@@ -10687,9 +10818,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 57 :
-                    // InternalRsamlText.g:4290:3: kw= 'core'
+                    // InternalRsamlText.g:4342:3: kw= 'core'
                     {
-                    kw=(Token)match(input,70,FOLLOW_2); 
+                    kw=(Token)match(input,71,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getCoreKeyword_56());
@@ -10698,9 +10829,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 58 :
-                    // InternalRsamlText.g:4296:3: kw= 'modules'
+                    // InternalRsamlText.g:4348:3: kw= 'modules'
                     {
-                    kw=(Token)match(input,73,FOLLOW_2); 
+                    kw=(Token)match(input,74,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getModulesKeyword_57());
@@ -10709,9 +10840,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 59 :
-                    // InternalRsamlText.g:4302:3: kw= 'from'
+                    // InternalRsamlText.g:4354:3: kw= 'from'
                     {
-                    kw=(Token)match(input,75,FOLLOW_2); 
+                    kw=(Token)match(input,76,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getFromKeyword_58());
@@ -10720,9 +10851,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 60 :
-                    // InternalRsamlText.g:4308:3: kw= 'to'
+                    // InternalRsamlText.g:4360:3: kw= 'to'
                     {
-                    kw=(Token)match(input,76,FOLLOW_2); 
+                    kw=(Token)match(input,77,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getToKeyword_59());
@@ -10731,9 +10862,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 61 :
-                    // InternalRsamlText.g:4314:3: kw= 'via'
+                    // InternalRsamlText.g:4366:3: kw= 'via'
                     {
-                    kw=(Token)match(input,77,FOLLOW_2); 
+                    kw=(Token)match(input,78,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getViaKeyword_60());
@@ -10742,9 +10873,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 62 :
-                    // InternalRsamlText.g:4320:3: kw= 'maxLatency'
+                    // InternalRsamlText.g:4372:3: kw= 'maxLatency'
                     {
-                    kw=(Token)match(input,78,FOLLOW_2); 
+                    kw=(Token)match(input,79,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getMaxLatencyKeyword_61());
@@ -10753,9 +10884,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 63 :
-                    // InternalRsamlText.g:4326:3: kw= 'host'
+                    // InternalRsamlText.g:4378:3: kw= 'host'
                     {
-                    kw=(Token)match(input,71,FOLLOW_2); 
+                    kw=(Token)match(input,72,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getHostKeyword_62());
@@ -10764,9 +10895,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 64 :
-                    // InternalRsamlText.g:4332:3: kw= 'linkLatency'
+                    // InternalRsamlText.g:4384:3: kw= 'linkLatency'
                     {
-                    kw=(Token)match(input,72,FOLLOW_2); 
+                    kw=(Token)match(input,73,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getKeywordAccess().getLinkLatencyKeyword_63());
@@ -10775,353 +10906,386 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 65 :
-                    // InternalRsamlText.g:4338:3: kw= 'centralized'
+                    // InternalRsamlText.g:4390:3: kw= 'lifecycle'
                     {
-                    kw=(Token)match(input,80,FOLLOW_2); 
+                    kw=(Token)match(input,15,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_64());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLifecycleKeyword_64());
                     		
 
                     }
                     break;
                 case 66 :
-                    // InternalRsamlText.g:4344:3: kw= 'hierarchical'
+                    // InternalRsamlText.g:4396:3: kw= 'centralized'
                     {
                     kw=(Token)match(input,81,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_65());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_65());
                     		
 
                     }
                     break;
                 case 67 :
-                    // InternalRsamlText.g:4350:3: kw= 'behavioral'
+                    // InternalRsamlText.g:4402:3: kw= 'hierarchical'
                     {
                     kw=(Token)match(input,82,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_66());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_66());
                     		
 
                     }
                     break;
                 case 68 :
-                    // InternalRsamlText.g:4356:3: kw= 'hybrid'
+                    // InternalRsamlText.g:4408:3: kw= 'behavioral'
                     {
                     kw=(Token)match(input,83,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_67());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_67());
                     		
 
                     }
                     break;
                 case 69 :
-                    // InternalRsamlText.g:4362:3: kw= 'other'
+                    // InternalRsamlText.g:4414:3: kw= 'hybrid'
                     {
                     kw=(Token)match(input,84,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_68());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_68());
                     		
 
                     }
                     break;
                 case 70 :
-                    // InternalRsamlText.g:4368:3: kw= 'simple'
+                    // InternalRsamlText.g:4420:3: kw= 'other'
                     {
                     kw=(Token)match(input,85,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_69());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_69());
                     		
 
                     }
                     break;
                 case 71 :
-                    // InternalRsamlText.g:4374:3: kw= 'realTime'
+                    // InternalRsamlText.g:4426:3: kw= 'simple'
                     {
                     kw=(Token)match(input,86,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_70());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_70());
                     		
 
                     }
                     break;
                 case 72 :
-                    // InternalRsamlText.g:4380:3: kw= 'periodic'
+                    // InternalRsamlText.g:4432:3: kw= 'realTime'
                     {
                     kw=(Token)match(input,87,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_71());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_71());
                     		
 
                     }
                     break;
                 case 73 :
-                    // InternalRsamlText.g:4386:3: kw= 'sporadic'
+                    // InternalRsamlText.g:4438:3: kw= 'periodic'
                     {
                     kw=(Token)match(input,88,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_72());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_72());
                     		
 
                     }
                     break;
                 case 74 :
-                    // InternalRsamlText.g:4392:3: kw= 'aperiodic'
+                    // InternalRsamlText.g:4444:3: kw= 'sporadic'
                     {
                     kw=(Token)match(input,89,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_73());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_73());
                     		
 
                     }
                     break;
                 case 75 :
-                    // InternalRsamlText.g:4398:3: kw= 'ns'
+                    // InternalRsamlText.g:4450:3: kw= 'aperiodic'
                     {
                     kw=(Token)match(input,90,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_74());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_74());
                     		
 
                     }
                     break;
                 case 76 :
-                    // InternalRsamlText.g:4404:3: kw= 'us'
+                    // InternalRsamlText.g:4456:3: kw= 'ns'
                     {
                     kw=(Token)match(input,91,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_75());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_75());
                     		
 
                     }
                     break;
                 case 77 :
-                    // InternalRsamlText.g:4410:3: kw= 'ms'
+                    // InternalRsamlText.g:4462:3: kw= 'us'
                     {
                     kw=(Token)match(input,92,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_76());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_76());
                     		
 
                     }
                     break;
                 case 78 :
-                    // InternalRsamlText.g:4416:3: kw= 's'
+                    // InternalRsamlText.g:4468:3: kw= 'ms'
                     {
                     kw=(Token)match(input,93,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_77());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_77());
                     		
 
                     }
                     break;
                 case 79 :
-                    // InternalRsamlText.g:4422:3: kw= 'synchronous'
+                    // InternalRsamlText.g:4474:3: kw= 's'
                     {
                     kw=(Token)match(input,94,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_78());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_78());
                     		
 
                     }
                     break;
                 case 80 :
-                    // InternalRsamlText.g:4428:3: kw= 'asynchronous'
+                    // InternalRsamlText.g:4480:3: kw= 'synchronous'
                     {
                     kw=(Token)match(input,95,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_79());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_79());
                     		
 
                     }
                     break;
                 case 81 :
-                    // InternalRsamlText.g:4434:3: kw= 'FIFO'
+                    // InternalRsamlText.g:4486:3: kw= 'asynchronous'
                     {
                     kw=(Token)match(input,96,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_80());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_80());
                     		
 
                     }
                     break;
                 case 82 :
-                    // InternalRsamlText.g:4440:3: kw= 'SJF'
+                    // InternalRsamlText.g:4492:3: kw= 'FIFO'
                     {
                     kw=(Token)match(input,97,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_81());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_81());
                     		
 
                     }
                     break;
                 case 83 :
-                    // InternalRsamlText.g:4446:3: kw= 'RR'
+                    // InternalRsamlText.g:4498:3: kw= 'SJF'
                     {
                     kw=(Token)match(input,98,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_82());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_82());
                     		
 
                     }
                     break;
                 case 84 :
-                    // InternalRsamlText.g:4452:3: kw= 'RM'
+                    // InternalRsamlText.g:4504:3: kw= 'RR'
                     {
                     kw=(Token)match(input,99,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_83());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_83());
                     		
 
                     }
                     break;
                 case 85 :
-                    // InternalRsamlText.g:4458:3: kw= 'DM'
+                    // InternalRsamlText.g:4510:3: kw= 'RM'
                     {
                     kw=(Token)match(input,100,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_84());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_84());
                     		
 
                     }
                     break;
                 case 86 :
-                    // InternalRsamlText.g:4464:3: kw= 'EDF'
+                    // InternalRsamlText.g:4516:3: kw= 'DM'
                     {
                     kw=(Token)match(input,101,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_85());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_85());
                     		
 
                     }
                     break;
                 case 87 :
-                    // InternalRsamlText.g:4470:3: kw= 'LLF'
+                    // InternalRsamlText.g:4522:3: kw= 'EDF'
                     {
                     kw=(Token)match(input,102,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_86());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_86());
                     		
 
                     }
                     break;
                 case 88 :
-                    // InternalRsamlText.g:4476:3: kw= 'OTHER'
+                    // InternalRsamlText.g:4528:3: kw= 'LLF'
                     {
                     kw=(Token)match(input,103,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_87());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_87());
                     		
 
                     }
                     break;
                 case 89 :
-                    // InternalRsamlText.g:4482:3: kw= 'numeric'
+                    // InternalRsamlText.g:4534:3: kw= 'OTHER'
                     {
                     kw=(Token)match(input,104,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_88());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_88());
                     		
 
                     }
                     break;
                 case 90 :
-                    // InternalRsamlText.g:4488:3: kw= 'alphanumeric'
+                    // InternalRsamlText.g:4540:3: kw= 'numeric'
                     {
                     kw=(Token)match(input,105,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_89());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_89());
                     		
 
                     }
                     break;
                 case 91 :
-                    // InternalRsamlText.g:4494:3: kw= 'boolean'
+                    // InternalRsamlText.g:4546:3: kw= 'alphanumeric'
                     {
                     kw=(Token)match(input,106,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_90());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_90());
                     		
 
                     }
                     break;
                 case 92 :
-                    // InternalRsamlText.g:4500:3: kw= 'structured'
+                    // InternalRsamlText.g:4552:3: kw= 'boolean'
                     {
                     kw=(Token)match(input,107,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_91());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_91());
                     		
 
                     }
                     break;
                 case 93 :
-                    // InternalRsamlText.g:4506:3: kw= 'reactionTime'
+                    // InternalRsamlText.g:4558:3: kw= 'structured'
                     {
                     kw=(Token)match(input,108,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_92());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_92());
                     		
 
                     }
                     break;
                 case 94 :
-                    // InternalRsamlText.g:4512:3: kw= 'dataAge'
+                    // InternalRsamlText.g:4564:3: kw= 'reactionTime'
                     {
                     kw=(Token)match(input,109,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_93());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_93());
                     		
 
                     }
                     break;
                 case 95 :
-                    // InternalRsamlText.g:4518:3: kw= 'NaN'
+                    // InternalRsamlText.g:4570:3: kw= 'dataAge'
                     {
                     kw=(Token)match(input,110,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_94());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_94());
                     		
 
                     }
                     break;
                 case 96 :
-                    // InternalRsamlText.g:4524:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4576:3: kw= 'plain'
                     {
                     kw=(Token)match(input,111,FOLLOW_2); 
 
                     			current.merge(kw);
-                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_95());
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlainKeyword_95());
+                    		
+
+                    }
+                    break;
+                case 97 :
+                    // InternalRsamlText.g:4582:3: kw= 'managed'
+                    {
+                    kw=(Token)match(input,112,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getManagedKeyword_96());
+                    		
+
+                    }
+                    break;
+                case 98 :
+                    // InternalRsamlText.g:4588:3: kw= 'NaN'
+                    {
+                    kw=(Token)match(input,113,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_97());
+                    		
+
+                    }
+                    break;
+                case 99 :
+                    // InternalRsamlText.g:4594:3: kw= 'Infinity'
+                    {
+                    kw=(Token)match(input,114,FOLLOW_2); 
+
+                    			current.merge(kw);
+                    			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_98());
                     		
 
                     }
@@ -11149,7 +11313,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleReal"
-    // InternalRsamlText.g:4533:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
+    // InternalRsamlText.g:4603:1: entryRuleReal returns [String current=null] : iv_ruleReal= ruleReal EOF ;
     public final String entryRuleReal() throws RecognitionException {
         String current = null;
 
@@ -11157,8 +11321,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4533:44: (iv_ruleReal= ruleReal EOF )
-            // InternalRsamlText.g:4534:2: iv_ruleReal= ruleReal EOF
+            // InternalRsamlText.g:4603:44: (iv_ruleReal= ruleReal EOF )
+            // InternalRsamlText.g:4604:2: iv_ruleReal= ruleReal EOF
             {
              newCompositeNode(grammarAccess.getRealRule()); 
             pushFollow(FOLLOW_1);
@@ -11185,7 +11349,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleReal"
-    // InternalRsamlText.g:4540:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
+    // InternalRsamlText.g:4610:1: ruleReal returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) ;
     public final AntlrDatatypeRuleToken ruleReal() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -11196,10 +11360,10 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4546:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
-            // InternalRsamlText.g:4547:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4616:2: ( (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) ) )
+            // InternalRsamlText.g:4617:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             {
-            // InternalRsamlText.g:4547:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
+            // InternalRsamlText.g:4617:2: (this_NUMBER_0= RULE_NUMBER | kw= 'NaN' | kw= 'Infinity' | (kw= '-' kw= 'Infinity' ) )
             int alt58=4;
             switch ( input.LA(1) ) {
             case RULE_NUMBER:
@@ -11207,17 +11371,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                 alt58=1;
                 }
                 break;
-            case 110:
+            case 113:
                 {
                 alt58=2;
                 }
                 break;
-            case 111:
+            case 114:
                 {
                 alt58=3;
                 }
                 break;
-            case 112:
+            case 115:
                 {
                 alt58=4;
                 }
@@ -11231,7 +11395,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt58) {
                 case 1 :
-                    // InternalRsamlText.g:4548:3: this_NUMBER_0= RULE_NUMBER
+                    // InternalRsamlText.g:4618:3: this_NUMBER_0= RULE_NUMBER
                     {
                     this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -11244,9 +11408,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4556:3: kw= 'NaN'
+                    // InternalRsamlText.g:4626:3: kw= 'NaN'
                     {
-                    kw=(Token)match(input,110,FOLLOW_2); 
+                    kw=(Token)match(input,113,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getNaNKeyword_1());
@@ -11255,9 +11419,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4562:3: kw= 'Infinity'
+                    // InternalRsamlText.g:4632:3: kw= 'Infinity'
                     {
-                    kw=(Token)match(input,111,FOLLOW_2); 
+                    kw=(Token)match(input,114,FOLLOW_2); 
 
                     			current.merge(kw);
                     			newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_2());
@@ -11266,17 +11430,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4568:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4638:3: (kw= '-' kw= 'Infinity' )
                     {
-                    // InternalRsamlText.g:4568:3: (kw= '-' kw= 'Infinity' )
-                    // InternalRsamlText.g:4569:4: kw= '-' kw= 'Infinity'
+                    // InternalRsamlText.g:4638:3: (kw= '-' kw= 'Infinity' )
+                    // InternalRsamlText.g:4639:4: kw= '-' kw= 'Infinity'
                     {
-                    kw=(Token)match(input,112,FOLLOW_47); 
+                    kw=(Token)match(input,115,FOLLOW_48); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getHyphenMinusKeyword_3_0());
                     			
-                    kw=(Token)match(input,111,FOLLOW_2); 
+                    kw=(Token)match(input,114,FOLLOW_2); 
 
                     				current.merge(kw);
                     				newLeafNode(kw, grammarAccess.getRealAccess().getInfinityKeyword_3_1());
@@ -11310,7 +11474,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "entryRuleInteger"
-    // InternalRsamlText.g:4584:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
+    // InternalRsamlText.g:4654:1: entryRuleInteger returns [String current=null] : iv_ruleInteger= ruleInteger EOF ;
     public final String entryRuleInteger() throws RecognitionException {
         String current = null;
 
@@ -11318,8 +11482,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
         try {
-            // InternalRsamlText.g:4584:47: (iv_ruleInteger= ruleInteger EOF )
-            // InternalRsamlText.g:4585:2: iv_ruleInteger= ruleInteger EOF
+            // InternalRsamlText.g:4654:47: (iv_ruleInteger= ruleInteger EOF )
+            // InternalRsamlText.g:4655:2: iv_ruleInteger= ruleInteger EOF
             {
              newCompositeNode(grammarAccess.getIntegerRule()); 
             pushFollow(FOLLOW_1);
@@ -11346,7 +11510,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleInteger"
-    // InternalRsamlText.g:4591:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
+    // InternalRsamlText.g:4661:1: ruleInteger returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()] : this_NUMBER_0= RULE_NUMBER ;
     public final AntlrDatatypeRuleToken ruleInteger() throws RecognitionException {
         AntlrDatatypeRuleToken current = new AntlrDatatypeRuleToken();
 
@@ -11356,8 +11520,8 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4597:2: (this_NUMBER_0= RULE_NUMBER )
-            // InternalRsamlText.g:4598:2: this_NUMBER_0= RULE_NUMBER
+            // InternalRsamlText.g:4667:2: (this_NUMBER_0= RULE_NUMBER )
+            // InternalRsamlText.g:4668:2: this_NUMBER_0= RULE_NUMBER
             {
             this_NUMBER_0=(Token)match(input,RULE_NUMBER,FOLLOW_2); 
 
@@ -11386,7 +11550,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleArchitectureCategory"
-    // InternalRsamlText.g:4608:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
+    // InternalRsamlText.g:4678:1: ruleArchitectureCategory returns [Enumerator current=null] : ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) ;
     public final Enumerator ruleArchitectureCategory() throws RecognitionException {
         Enumerator current = null;
 
@@ -11400,33 +11564,33 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4614:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
-            // InternalRsamlText.g:4615:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4684:2: ( ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) ) )
+            // InternalRsamlText.g:4685:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             {
-            // InternalRsamlText.g:4615:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
+            // InternalRsamlText.g:4685:2: ( (enumLiteral_0= 'centralized' ) | (enumLiteral_1= 'hierarchical' ) | (enumLiteral_2= 'behavioral' ) | (enumLiteral_3= 'hybrid' ) | (enumLiteral_4= 'other' ) )
             int alt59=5;
             switch ( input.LA(1) ) {
-            case 80:
+            case 81:
                 {
                 alt59=1;
                 }
                 break;
-            case 81:
+            case 82:
                 {
                 alt59=2;
                 }
                 break;
-            case 82:
+            case 83:
                 {
                 alt59=3;
                 }
                 break;
-            case 83:
+            case 84:
                 {
                 alt59=4;
                 }
                 break;
-            case 84:
+            case 85:
                 {
                 alt59=5;
                 }
@@ -11440,12 +11604,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt59) {
                 case 1 :
-                    // InternalRsamlText.g:4616:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4686:3: (enumLiteral_0= 'centralized' )
                     {
-                    // InternalRsamlText.g:4616:3: (enumLiteral_0= 'centralized' )
-                    // InternalRsamlText.g:4617:4: enumLiteral_0= 'centralized'
+                    // InternalRsamlText.g:4686:3: (enumLiteral_0= 'centralized' )
+                    // InternalRsamlText.g:4687:4: enumLiteral_0= 'centralized'
                     {
-                    enumLiteral_0=(Token)match(input,80,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,81,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getArchitectureCategoryAccess().getCentralizedEnumLiteralDeclaration_0());
@@ -11457,12 +11621,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4624:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4694:3: (enumLiteral_1= 'hierarchical' )
                     {
-                    // InternalRsamlText.g:4624:3: (enumLiteral_1= 'hierarchical' )
-                    // InternalRsamlText.g:4625:4: enumLiteral_1= 'hierarchical'
+                    // InternalRsamlText.g:4694:3: (enumLiteral_1= 'hierarchical' )
+                    // InternalRsamlText.g:4695:4: enumLiteral_1= 'hierarchical'
                     {
-                    enumLiteral_1=(Token)match(input,81,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,82,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getArchitectureCategoryAccess().getHierarchicalEnumLiteralDeclaration_1());
@@ -11474,12 +11638,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4632:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4702:3: (enumLiteral_2= 'behavioral' )
                     {
-                    // InternalRsamlText.g:4632:3: (enumLiteral_2= 'behavioral' )
-                    // InternalRsamlText.g:4633:4: enumLiteral_2= 'behavioral'
+                    // InternalRsamlText.g:4702:3: (enumLiteral_2= 'behavioral' )
+                    // InternalRsamlText.g:4703:4: enumLiteral_2= 'behavioral'
                     {
-                    enumLiteral_2=(Token)match(input,82,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,83,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getArchitectureCategoryAccess().getBehavioralEnumLiteralDeclaration_2());
@@ -11491,12 +11655,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4640:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4710:3: (enumLiteral_3= 'hybrid' )
                     {
-                    // InternalRsamlText.g:4640:3: (enumLiteral_3= 'hybrid' )
-                    // InternalRsamlText.g:4641:4: enumLiteral_3= 'hybrid'
+                    // InternalRsamlText.g:4710:3: (enumLiteral_3= 'hybrid' )
+                    // InternalRsamlText.g:4711:4: enumLiteral_3= 'hybrid'
                     {
-                    enumLiteral_3=(Token)match(input,83,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,84,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getArchitectureCategoryAccess().getHybridEnumLiteralDeclaration_3());
@@ -11508,12 +11672,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4648:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4718:3: (enumLiteral_4= 'other' )
                     {
-                    // InternalRsamlText.g:4648:3: (enumLiteral_4= 'other' )
-                    // InternalRsamlText.g:4649:4: enumLiteral_4= 'other'
+                    // InternalRsamlText.g:4718:3: (enumLiteral_4= 'other' )
+                    // InternalRsamlText.g:4719:4: enumLiteral_4= 'other'
                     {
-                    enumLiteral_4=(Token)match(input,84,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,85,FOLLOW_2); 
 
                     				current = grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getArchitectureCategoryAccess().getOtherEnumLiteralDeclaration_4());
@@ -11547,7 +11711,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleElementType"
-    // InternalRsamlText.g:4659:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
+    // InternalRsamlText.g:4729:1: ruleElementType returns [Enumerator current=null] : ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) ;
     public final Enumerator ruleElementType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11558,17 +11722,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4665:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
-            // InternalRsamlText.g:4666:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4735:2: ( ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) ) )
+            // InternalRsamlText.g:4736:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             {
-            // InternalRsamlText.g:4666:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
+            // InternalRsamlText.g:4736:2: ( (enumLiteral_0= 'simple' ) | (enumLiteral_1= 'realTime' ) )
             int alt60=2;
             int LA60_0 = input.LA(1);
 
-            if ( (LA60_0==85) ) {
+            if ( (LA60_0==86) ) {
                 alt60=1;
             }
-            else if ( (LA60_0==86) ) {
+            else if ( (LA60_0==87) ) {
                 alt60=2;
             }
             else {
@@ -11579,12 +11743,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt60) {
                 case 1 :
-                    // InternalRsamlText.g:4667:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4737:3: (enumLiteral_0= 'simple' )
                     {
-                    // InternalRsamlText.g:4667:3: (enumLiteral_0= 'simple' )
-                    // InternalRsamlText.g:4668:4: enumLiteral_0= 'simple'
+                    // InternalRsamlText.g:4737:3: (enumLiteral_0= 'simple' )
+                    // InternalRsamlText.g:4738:4: enumLiteral_0= 'simple'
                     {
-                    enumLiteral_0=(Token)match(input,85,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,86,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getElementTypeAccess().getSimpleEnumLiteralDeclaration_0());
@@ -11596,12 +11760,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4675:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4745:3: (enumLiteral_1= 'realTime' )
                     {
-                    // InternalRsamlText.g:4675:3: (enumLiteral_1= 'realTime' )
-                    // InternalRsamlText.g:4676:4: enumLiteral_1= 'realTime'
+                    // InternalRsamlText.g:4745:3: (enumLiteral_1= 'realTime' )
+                    // InternalRsamlText.g:4746:4: enumLiteral_1= 'realTime'
                     {
-                    enumLiteral_1=(Token)match(input,86,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,87,FOLLOW_2); 
 
                     				current = grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getElementTypeAccess().getRealTimeEnumLiteralDeclaration_1());
@@ -11635,7 +11799,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleExecutionType"
-    // InternalRsamlText.g:4686:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
+    // InternalRsamlText.g:4756:1: ruleExecutionType returns [Enumerator current=null] : ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) ;
     public final Enumerator ruleExecutionType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11647,23 +11811,23 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4692:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
-            // InternalRsamlText.g:4693:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4762:2: ( ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) ) )
+            // InternalRsamlText.g:4763:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             {
-            // InternalRsamlText.g:4693:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
+            // InternalRsamlText.g:4763:2: ( (enumLiteral_0= 'periodic' ) | (enumLiteral_1= 'sporadic' ) | (enumLiteral_2= 'aperiodic' ) )
             int alt61=3;
             switch ( input.LA(1) ) {
-            case 87:
+            case 88:
                 {
                 alt61=1;
                 }
                 break;
-            case 88:
+            case 89:
                 {
                 alt61=2;
                 }
                 break;
-            case 89:
+            case 90:
                 {
                 alt61=3;
                 }
@@ -11677,12 +11841,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt61) {
                 case 1 :
-                    // InternalRsamlText.g:4694:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4764:3: (enumLiteral_0= 'periodic' )
                     {
-                    // InternalRsamlText.g:4694:3: (enumLiteral_0= 'periodic' )
-                    // InternalRsamlText.g:4695:4: enumLiteral_0= 'periodic'
+                    // InternalRsamlText.g:4764:3: (enumLiteral_0= 'periodic' )
+                    // InternalRsamlText.g:4765:4: enumLiteral_0= 'periodic'
                     {
-                    enumLiteral_0=(Token)match(input,87,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,88,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getExecutionTypeAccess().getPeriodicEnumLiteralDeclaration_0());
@@ -11694,12 +11858,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4702:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4772:3: (enumLiteral_1= 'sporadic' )
                     {
-                    // InternalRsamlText.g:4702:3: (enumLiteral_1= 'sporadic' )
-                    // InternalRsamlText.g:4703:4: enumLiteral_1= 'sporadic'
+                    // InternalRsamlText.g:4772:3: (enumLiteral_1= 'sporadic' )
+                    // InternalRsamlText.g:4773:4: enumLiteral_1= 'sporadic'
                     {
-                    enumLiteral_1=(Token)match(input,88,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,89,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getExecutionTypeAccess().getSporadicEnumLiteralDeclaration_1());
@@ -11711,12 +11875,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4710:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4780:3: (enumLiteral_2= 'aperiodic' )
                     {
-                    // InternalRsamlText.g:4710:3: (enumLiteral_2= 'aperiodic' )
-                    // InternalRsamlText.g:4711:4: enumLiteral_2= 'aperiodic'
+                    // InternalRsamlText.g:4780:3: (enumLiteral_2= 'aperiodic' )
+                    // InternalRsamlText.g:4781:4: enumLiteral_2= 'aperiodic'
                     {
-                    enumLiteral_2=(Token)match(input,89,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,90,FOLLOW_2); 
 
                     				current = grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getExecutionTypeAccess().getAperiodicEnumLiteralDeclaration_2());
@@ -11750,7 +11914,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleTimeUnit"
-    // InternalRsamlText.g:4721:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
+    // InternalRsamlText.g:4791:1: ruleTimeUnit returns [Enumerator current=null] : ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) ;
     public final Enumerator ruleTimeUnit() throws RecognitionException {
         Enumerator current = null;
 
@@ -11763,28 +11927,28 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4727:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
-            // InternalRsamlText.g:4728:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4797:2: ( ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) ) )
+            // InternalRsamlText.g:4798:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             {
-            // InternalRsamlText.g:4728:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
+            // InternalRsamlText.g:4798:2: ( (enumLiteral_0= 'ns' ) | (enumLiteral_1= 'us' ) | (enumLiteral_2= 'ms' ) | (enumLiteral_3= 's' ) )
             int alt62=4;
             switch ( input.LA(1) ) {
-            case 90:
+            case 91:
                 {
                 alt62=1;
                 }
                 break;
-            case 91:
+            case 92:
                 {
                 alt62=2;
                 }
                 break;
-            case 92:
+            case 93:
                 {
                 alt62=3;
                 }
                 break;
-            case 93:
+            case 94:
                 {
                 alt62=4;
                 }
@@ -11798,12 +11962,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt62) {
                 case 1 :
-                    // InternalRsamlText.g:4729:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4799:3: (enumLiteral_0= 'ns' )
                     {
-                    // InternalRsamlText.g:4729:3: (enumLiteral_0= 'ns' )
-                    // InternalRsamlText.g:4730:4: enumLiteral_0= 'ns'
+                    // InternalRsamlText.g:4799:3: (enumLiteral_0= 'ns' )
+                    // InternalRsamlText.g:4800:4: enumLiteral_0= 'ns'
                     {
-                    enumLiteral_0=(Token)match(input,90,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,91,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getTimeUnitAccess().getNsEnumLiteralDeclaration_0());
@@ -11815,12 +11979,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4737:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4807:3: (enumLiteral_1= 'us' )
                     {
-                    // InternalRsamlText.g:4737:3: (enumLiteral_1= 'us' )
-                    // InternalRsamlText.g:4738:4: enumLiteral_1= 'us'
+                    // InternalRsamlText.g:4807:3: (enumLiteral_1= 'us' )
+                    // InternalRsamlText.g:4808:4: enumLiteral_1= 'us'
                     {
-                    enumLiteral_1=(Token)match(input,91,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,92,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getTimeUnitAccess().getUsEnumLiteralDeclaration_1());
@@ -11832,12 +11996,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4745:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4815:3: (enumLiteral_2= 'ms' )
                     {
-                    // InternalRsamlText.g:4745:3: (enumLiteral_2= 'ms' )
-                    // InternalRsamlText.g:4746:4: enumLiteral_2= 'ms'
+                    // InternalRsamlText.g:4815:3: (enumLiteral_2= 'ms' )
+                    // InternalRsamlText.g:4816:4: enumLiteral_2= 'ms'
                     {
-                    enumLiteral_2=(Token)match(input,92,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,93,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getTimeUnitAccess().getMsEnumLiteralDeclaration_2());
@@ -11849,12 +12013,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4753:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4823:3: (enumLiteral_3= 's' )
                     {
-                    // InternalRsamlText.g:4753:3: (enumLiteral_3= 's' )
-                    // InternalRsamlText.g:4754:4: enumLiteral_3= 's'
+                    // InternalRsamlText.g:4823:3: (enumLiteral_3= 's' )
+                    // InternalRsamlText.g:4824:4: enumLiteral_3= 's'
                     {
-                    enumLiteral_3=(Token)match(input,93,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,94,FOLLOW_2); 
 
                     				current = grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getTimeUnitAccess().getSEnumLiteralDeclaration_3());
@@ -11888,7 +12052,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSynchronisationType"
-    // InternalRsamlText.g:4764:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
+    // InternalRsamlText.g:4834:1: ruleSynchronisationType returns [Enumerator current=null] : ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) ;
     public final Enumerator ruleSynchronisationType() throws RecognitionException {
         Enumerator current = null;
 
@@ -11899,17 +12063,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4770:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
-            // InternalRsamlText.g:4771:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4840:2: ( ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) ) )
+            // InternalRsamlText.g:4841:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             {
-            // InternalRsamlText.g:4771:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
+            // InternalRsamlText.g:4841:2: ( (enumLiteral_0= 'synchronous' ) | (enumLiteral_1= 'asynchronous' ) )
             int alt63=2;
             int LA63_0 = input.LA(1);
 
-            if ( (LA63_0==94) ) {
+            if ( (LA63_0==95) ) {
                 alt63=1;
             }
-            else if ( (LA63_0==95) ) {
+            else if ( (LA63_0==96) ) {
                 alt63=2;
             }
             else {
@@ -11920,12 +12084,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt63) {
                 case 1 :
-                    // InternalRsamlText.g:4772:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4842:3: (enumLiteral_0= 'synchronous' )
                     {
-                    // InternalRsamlText.g:4772:3: (enumLiteral_0= 'synchronous' )
-                    // InternalRsamlText.g:4773:4: enumLiteral_0= 'synchronous'
+                    // InternalRsamlText.g:4842:3: (enumLiteral_0= 'synchronous' )
+                    // InternalRsamlText.g:4843:4: enumLiteral_0= 'synchronous'
                     {
-                    enumLiteral_0=(Token)match(input,94,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,95,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSynchronisationTypeAccess().getSynchronousEnumLiteralDeclaration_0());
@@ -11937,12 +12101,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4780:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4850:3: (enumLiteral_1= 'asynchronous' )
                     {
-                    // InternalRsamlText.g:4780:3: (enumLiteral_1= 'asynchronous' )
-                    // InternalRsamlText.g:4781:4: enumLiteral_1= 'asynchronous'
+                    // InternalRsamlText.g:4850:3: (enumLiteral_1= 'asynchronous' )
+                    // InternalRsamlText.g:4851:4: enumLiteral_1= 'asynchronous'
                     {
-                    enumLiteral_1=(Token)match(input,95,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,96,FOLLOW_2); 
 
                     				current = grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSynchronisationTypeAccess().getAsynchronousEnumLiteralDeclaration_1());
@@ -11976,7 +12140,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleSchedulingPolicy"
-    // InternalRsamlText.g:4791:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
+    // InternalRsamlText.g:4861:1: ruleSchedulingPolicy returns [Enumerator current=null] : ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) ;
     public final Enumerator ruleSchedulingPolicy() throws RecognitionException {
         Enumerator current = null;
 
@@ -11993,48 +12157,48 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4797:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
-            // InternalRsamlText.g:4798:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4867:2: ( ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) ) )
+            // InternalRsamlText.g:4868:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             {
-            // InternalRsamlText.g:4798:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
+            // InternalRsamlText.g:4868:2: ( (enumLiteral_0= 'FIFO' ) | (enumLiteral_1= 'SJF' ) | (enumLiteral_2= 'RR' ) | (enumLiteral_3= 'RM' ) | (enumLiteral_4= 'DM' ) | (enumLiteral_5= 'EDF' ) | (enumLiteral_6= 'LLF' ) | (enumLiteral_7= 'OTHER' ) )
             int alt64=8;
             switch ( input.LA(1) ) {
-            case 96:
+            case 97:
                 {
                 alt64=1;
                 }
                 break;
-            case 97:
+            case 98:
                 {
                 alt64=2;
                 }
                 break;
-            case 98:
+            case 99:
                 {
                 alt64=3;
                 }
                 break;
-            case 99:
+            case 100:
                 {
                 alt64=4;
                 }
                 break;
-            case 100:
+            case 101:
                 {
                 alt64=5;
                 }
                 break;
-            case 101:
+            case 102:
                 {
                 alt64=6;
                 }
                 break;
-            case 102:
+            case 103:
                 {
                 alt64=7;
                 }
                 break;
-            case 103:
+            case 104:
                 {
                 alt64=8;
                 }
@@ -12048,12 +12212,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt64) {
                 case 1 :
-                    // InternalRsamlText.g:4799:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4869:3: (enumLiteral_0= 'FIFO' )
                     {
-                    // InternalRsamlText.g:4799:3: (enumLiteral_0= 'FIFO' )
-                    // InternalRsamlText.g:4800:4: enumLiteral_0= 'FIFO'
+                    // InternalRsamlText.g:4869:3: (enumLiteral_0= 'FIFO' )
+                    // InternalRsamlText.g:4870:4: enumLiteral_0= 'FIFO'
                     {
-                    enumLiteral_0=(Token)match(input,96,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,97,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getSchedulingPolicyAccess().getFIFOEnumLiteralDeclaration_0());
@@ -12065,12 +12229,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4807:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4877:3: (enumLiteral_1= 'SJF' )
                     {
-                    // InternalRsamlText.g:4807:3: (enumLiteral_1= 'SJF' )
-                    // InternalRsamlText.g:4808:4: enumLiteral_1= 'SJF'
+                    // InternalRsamlText.g:4877:3: (enumLiteral_1= 'SJF' )
+                    // InternalRsamlText.g:4878:4: enumLiteral_1= 'SJF'
                     {
-                    enumLiteral_1=(Token)match(input,97,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,98,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getSchedulingPolicyAccess().getSJFEnumLiteralDeclaration_1());
@@ -12082,12 +12246,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4815:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4885:3: (enumLiteral_2= 'RR' )
                     {
-                    // InternalRsamlText.g:4815:3: (enumLiteral_2= 'RR' )
-                    // InternalRsamlText.g:4816:4: enumLiteral_2= 'RR'
+                    // InternalRsamlText.g:4885:3: (enumLiteral_2= 'RR' )
+                    // InternalRsamlText.g:4886:4: enumLiteral_2= 'RR'
                     {
-                    enumLiteral_2=(Token)match(input,98,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,99,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getSchedulingPolicyAccess().getRREnumLiteralDeclaration_2());
@@ -12099,12 +12263,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4823:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4893:3: (enumLiteral_3= 'RM' )
                     {
-                    // InternalRsamlText.g:4823:3: (enumLiteral_3= 'RM' )
-                    // InternalRsamlText.g:4824:4: enumLiteral_3= 'RM'
+                    // InternalRsamlText.g:4893:3: (enumLiteral_3= 'RM' )
+                    // InternalRsamlText.g:4894:4: enumLiteral_3= 'RM'
                     {
-                    enumLiteral_3=(Token)match(input,99,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,100,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getSchedulingPolicyAccess().getRMEnumLiteralDeclaration_3());
@@ -12116,12 +12280,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 5 :
-                    // InternalRsamlText.g:4831:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4901:3: (enumLiteral_4= 'DM' )
                     {
-                    // InternalRsamlText.g:4831:3: (enumLiteral_4= 'DM' )
-                    // InternalRsamlText.g:4832:4: enumLiteral_4= 'DM'
+                    // InternalRsamlText.g:4901:3: (enumLiteral_4= 'DM' )
+                    // InternalRsamlText.g:4902:4: enumLiteral_4= 'DM'
                     {
-                    enumLiteral_4=(Token)match(input,100,FOLLOW_2); 
+                    enumLiteral_4=(Token)match(input,101,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_4, grammarAccess.getSchedulingPolicyAccess().getDMEnumLiteralDeclaration_4());
@@ -12133,12 +12297,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 6 :
-                    // InternalRsamlText.g:4839:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4909:3: (enumLiteral_5= 'EDF' )
                     {
-                    // InternalRsamlText.g:4839:3: (enumLiteral_5= 'EDF' )
-                    // InternalRsamlText.g:4840:4: enumLiteral_5= 'EDF'
+                    // InternalRsamlText.g:4909:3: (enumLiteral_5= 'EDF' )
+                    // InternalRsamlText.g:4910:4: enumLiteral_5= 'EDF'
                     {
-                    enumLiteral_5=(Token)match(input,101,FOLLOW_2); 
+                    enumLiteral_5=(Token)match(input,102,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_5, grammarAccess.getSchedulingPolicyAccess().getEDFEnumLiteralDeclaration_5());
@@ -12150,12 +12314,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 7 :
-                    // InternalRsamlText.g:4847:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4917:3: (enumLiteral_6= 'LLF' )
                     {
-                    // InternalRsamlText.g:4847:3: (enumLiteral_6= 'LLF' )
-                    // InternalRsamlText.g:4848:4: enumLiteral_6= 'LLF'
+                    // InternalRsamlText.g:4917:3: (enumLiteral_6= 'LLF' )
+                    // InternalRsamlText.g:4918:4: enumLiteral_6= 'LLF'
                     {
-                    enumLiteral_6=(Token)match(input,102,FOLLOW_2); 
+                    enumLiteral_6=(Token)match(input,103,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_6, grammarAccess.getSchedulingPolicyAccess().getLLFEnumLiteralDeclaration_6());
@@ -12167,12 +12331,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 8 :
-                    // InternalRsamlText.g:4855:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4925:3: (enumLiteral_7= 'OTHER' )
                     {
-                    // InternalRsamlText.g:4855:3: (enumLiteral_7= 'OTHER' )
-                    // InternalRsamlText.g:4856:4: enumLiteral_7= 'OTHER'
+                    // InternalRsamlText.g:4925:3: (enumLiteral_7= 'OTHER' )
+                    // InternalRsamlText.g:4926:4: enumLiteral_7= 'OTHER'
                     {
-                    enumLiteral_7=(Token)match(input,103,FOLLOW_2); 
+                    enumLiteral_7=(Token)match(input,104,FOLLOW_2); 
 
                     				current = grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_7, grammarAccess.getSchedulingPolicyAccess().getOTHEREnumLiteralDeclaration_7());
@@ -12206,7 +12370,7 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
 
     // $ANTLR start "ruleDataType"
-    // InternalRsamlText.g:4866:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
+    // InternalRsamlText.g:4936:1: ruleDataType returns [Enumerator current=null] : ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) ;
     public final Enumerator ruleDataType() throws RecognitionException {
         Enumerator current = null;
 
@@ -12219,28 +12383,28 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4872:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
-            // InternalRsamlText.g:4873:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4942:2: ( ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) ) )
+            // InternalRsamlText.g:4943:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             {
-            // InternalRsamlText.g:4873:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
+            // InternalRsamlText.g:4943:2: ( (enumLiteral_0= 'numeric' ) | (enumLiteral_1= 'alphanumeric' ) | (enumLiteral_2= 'boolean' ) | (enumLiteral_3= 'structured' ) )
             int alt65=4;
             switch ( input.LA(1) ) {
-            case 104:
+            case 105:
                 {
                 alt65=1;
                 }
                 break;
-            case 105:
+            case 106:
                 {
                 alt65=2;
                 }
                 break;
-            case 106:
+            case 107:
                 {
                 alt65=3;
                 }
                 break;
-            case 107:
+            case 108:
                 {
                 alt65=4;
                 }
@@ -12254,12 +12418,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
             switch (alt65) {
                 case 1 :
-                    // InternalRsamlText.g:4874:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4944:3: (enumLiteral_0= 'numeric' )
                     {
-                    // InternalRsamlText.g:4874:3: (enumLiteral_0= 'numeric' )
-                    // InternalRsamlText.g:4875:4: enumLiteral_0= 'numeric'
+                    // InternalRsamlText.g:4944:3: (enumLiteral_0= 'numeric' )
+                    // InternalRsamlText.g:4945:4: enumLiteral_0= 'numeric'
                     {
-                    enumLiteral_0=(Token)match(input,104,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,105,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getDataTypeAccess().getNumericEnumLiteralDeclaration_0());
@@ -12271,12 +12435,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4882:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4952:3: (enumLiteral_1= 'alphanumeric' )
                     {
-                    // InternalRsamlText.g:4882:3: (enumLiteral_1= 'alphanumeric' )
-                    // InternalRsamlText.g:4883:4: enumLiteral_1= 'alphanumeric'
+                    // InternalRsamlText.g:4952:3: (enumLiteral_1= 'alphanumeric' )
+                    // InternalRsamlText.g:4953:4: enumLiteral_1= 'alphanumeric'
                     {
-                    enumLiteral_1=(Token)match(input,105,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,106,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getDataTypeAccess().getAlphanumericEnumLiteralDeclaration_1());
@@ -12288,12 +12452,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 3 :
-                    // InternalRsamlText.g:4890:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4960:3: (enumLiteral_2= 'boolean' )
                     {
-                    // InternalRsamlText.g:4890:3: (enumLiteral_2= 'boolean' )
-                    // InternalRsamlText.g:4891:4: enumLiteral_2= 'boolean'
+                    // InternalRsamlText.g:4960:3: (enumLiteral_2= 'boolean' )
+                    // InternalRsamlText.g:4961:4: enumLiteral_2= 'boolean'
                     {
-                    enumLiteral_2=(Token)match(input,106,FOLLOW_2); 
+                    enumLiteral_2=(Token)match(input,107,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_2, grammarAccess.getDataTypeAccess().getBooleanEnumLiteralDeclaration_2());
@@ -12305,12 +12469,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 4 :
-                    // InternalRsamlText.g:4898:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4968:3: (enumLiteral_3= 'structured' )
                     {
-                    // InternalRsamlText.g:4898:3: (enumLiteral_3= 'structured' )
-                    // InternalRsamlText.g:4899:4: enumLiteral_3= 'structured'
+                    // InternalRsamlText.g:4968:3: (enumLiteral_3= 'structured' )
+                    // InternalRsamlText.g:4969:4: enumLiteral_3= 'structured'
                     {
-                    enumLiteral_3=(Token)match(input,107,FOLLOW_2); 
+                    enumLiteral_3=(Token)match(input,108,FOLLOW_2); 
 
                     				current = grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_3, grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3());
@@ -12343,9 +12507,9 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
     // $ANTLR end "ruleDataType"
 
 
-    // $ANTLR start "ruleLatencyKind"
-    // InternalRsamlText.g:4909:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
-    public final Enumerator ruleLatencyKind() throws RecognitionException {
+    // $ANTLR start "ruleNodeLifecycle"
+    // InternalRsamlText.g:4979:1: ruleNodeLifecycle returns [Enumerator current=null] : ( (enumLiteral_0= 'plain' ) | (enumLiteral_1= 'managed' ) ) ;
+    public final Enumerator ruleNodeLifecycle() throws RecognitionException {
         Enumerator current = null;
 
         Token enumLiteral_0=null;
@@ -12355,17 +12519,17 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
         	enterRule();
 
         try {
-            // InternalRsamlText.g:4915:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
-            // InternalRsamlText.g:4916:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4985:2: ( ( (enumLiteral_0= 'plain' ) | (enumLiteral_1= 'managed' ) ) )
+            // InternalRsamlText.g:4986:2: ( (enumLiteral_0= 'plain' ) | (enumLiteral_1= 'managed' ) )
             {
-            // InternalRsamlText.g:4916:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            // InternalRsamlText.g:4986:2: ( (enumLiteral_0= 'plain' ) | (enumLiteral_1= 'managed' ) )
             int alt66=2;
             int LA66_0 = input.LA(1);
 
-            if ( (LA66_0==108) ) {
+            if ( (LA66_0==111) ) {
                 alt66=1;
             }
-            else if ( (LA66_0==109) ) {
+            else if ( (LA66_0==112) ) {
                 alt66=2;
             }
             else {
@@ -12376,12 +12540,100 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
             }
             switch (alt66) {
                 case 1 :
-                    // InternalRsamlText.g:4917:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:4987:3: (enumLiteral_0= 'plain' )
                     {
-                    // InternalRsamlText.g:4917:3: (enumLiteral_0= 'reactionTime' )
-                    // InternalRsamlText.g:4918:4: enumLiteral_0= 'reactionTime'
+                    // InternalRsamlText.g:4987:3: (enumLiteral_0= 'plain' )
+                    // InternalRsamlText.g:4988:4: enumLiteral_0= 'plain'
                     {
-                    enumLiteral_0=(Token)match(input,108,FOLLOW_2); 
+                    enumLiteral_0=(Token)match(input,111,FOLLOW_2); 
+
+                    				current = grammarAccess.getNodeLifecycleAccess().getPlainEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
+                    				newLeafNode(enumLiteral_0, grammarAccess.getNodeLifecycleAccess().getPlainEnumLiteralDeclaration_0());
+                    			
+
+                    }
+
+
+                    }
+                    break;
+                case 2 :
+                    // InternalRsamlText.g:4995:3: (enumLiteral_1= 'managed' )
+                    {
+                    // InternalRsamlText.g:4995:3: (enumLiteral_1= 'managed' )
+                    // InternalRsamlText.g:4996:4: enumLiteral_1= 'managed'
+                    {
+                    enumLiteral_1=(Token)match(input,112,FOLLOW_2); 
+
+                    				current = grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
+                    				newLeafNode(enumLiteral_1, grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1());
+                    			
+
+                    }
+
+
+                    }
+                    break;
+
+            }
+
+
+            }
+
+
+            	leaveRule();
+
+        }
+
+            catch (RecognitionException re) {
+                recover(input,re);
+                appendSkippedTokens();
+            }
+        finally {
+        }
+        return current;
+    }
+    // $ANTLR end "ruleNodeLifecycle"
+
+
+    // $ANTLR start "ruleLatencyKind"
+    // InternalRsamlText.g:5006:1: ruleLatencyKind returns [Enumerator current=null] : ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) ;
+    public final Enumerator ruleLatencyKind() throws RecognitionException {
+        Enumerator current = null;
+
+        Token enumLiteral_0=null;
+        Token enumLiteral_1=null;
+
+
+        	enterRule();
+
+        try {
+            // InternalRsamlText.g:5012:2: ( ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) ) )
+            // InternalRsamlText.g:5013:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            {
+            // InternalRsamlText.g:5013:2: ( (enumLiteral_0= 'reactionTime' ) | (enumLiteral_1= 'dataAge' ) )
+            int alt67=2;
+            int LA67_0 = input.LA(1);
+
+            if ( (LA67_0==109) ) {
+                alt67=1;
+            }
+            else if ( (LA67_0==110) ) {
+                alt67=2;
+            }
+            else {
+                NoViableAltException nvae =
+                    new NoViableAltException("", 67, 0, input);
+
+                throw nvae;
+            }
+            switch (alt67) {
+                case 1 :
+                    // InternalRsamlText.g:5014:3: (enumLiteral_0= 'reactionTime' )
+                    {
+                    // InternalRsamlText.g:5014:3: (enumLiteral_0= 'reactionTime' )
+                    // InternalRsamlText.g:5015:4: enumLiteral_0= 'reactionTime'
+                    {
+                    enumLiteral_0=(Token)match(input,109,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_0, grammarAccess.getLatencyKindAccess().getReactionTimeEnumLiteralDeclaration_0());
@@ -12393,12 +12645,12 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
                     }
                     break;
                 case 2 :
-                    // InternalRsamlText.g:4925:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:5022:3: (enumLiteral_1= 'dataAge' )
                     {
-                    // InternalRsamlText.g:4925:3: (enumLiteral_1= 'dataAge' )
-                    // InternalRsamlText.g:4926:4: enumLiteral_1= 'dataAge'
+                    // InternalRsamlText.g:5022:3: (enumLiteral_1= 'dataAge' )
+                    // InternalRsamlText.g:5023:4: enumLiteral_1= 'dataAge'
                     {
-                    enumLiteral_1=(Token)match(input,109,FOLLOW_2); 
+                    enumLiteral_1=(Token)match(input,110,FOLLOW_2); 
 
                     				current = grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
                     				newLeafNode(enumLiteral_1, grammarAccess.getLatencyKindAccess().getDataAgeEnumLiteralDeclaration_1());
@@ -12437,50 +12689,51 @@ public class InternalRsamlTextParser extends AbstractInternalAntlrParser {
 
     public static final BitSet FOLLOW_1 = new BitSet(new long[]{0x0000000000000000L});
     public static final BitSet FOLLOW_2 = new BitSet(new long[]{0x0000000000000002L});
-    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFF7FFEFFF7830L,0x0000FFFFFFFF7FFFL});
+    public static final BitSet FOLLOW_3 = new BitSet(new long[]{0xFFFFEFFFDFFEF830L,0x0007FFFFFFFEFFFFL});
     public static final BitSet FOLLOW_4 = new BitSet(new long[]{0x0000000000001000L});
-    public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x481A04000081E000L,0x0000000000000424L});
-    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x00000000001F0000L});
+    public static final BitSet FOLLOW_5 = new BitSet(new long[]{0x903408000103E000L,0x0000000000000848L});
+    public static final BitSet FOLLOW_6 = new BitSet(new long[]{0x0000000000000000L,0x00000000003E0000L});
     public static final BitSet FOLLOW_7 = new BitSet(new long[]{0x0000000000000040L});
-    public static final BitSet FOLLOW_8 = new BitSet(new long[]{0x0000000000000010L});
-    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000000L,0x000000003C000000L});
-    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x0000000000600000L});
-    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000003800000L});
-    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000040L,0x0001C00000000000L});
-    public static final BitSet FOLLOW_13 = new BitSet(new long[]{0x0000000007038000L});
-    public static final BitSet FOLLOW_14 = new BitSet(new long[]{0x00011060687F8000L});
-    public static final BitSet FOLLOW_15 = new BitSet(new long[]{0x0000000000000030L});
-    public static final BitSet FOLLOW_16 = new BitSet(new long[]{0x00011060787F8000L});
-    public static final BitSet FOLLOW_17 = new BitSet(new long[]{0x0000000F807F8000L});
-    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000000000000000L,0x00000000C0000000L});
-    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x000000FF00000000L});
-    public static final BitSet FOLLOW_20 = new BitSet(new long[]{0x00000010007F8000L});
-    public static final BitSet FOLLOW_21 = new BitSet(new long[]{0x0000038000018000L});
-    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000000000000000L,0x00000F0000000000L});
-    public static final BitSet FOLLOW_23 = new BitSet(new long[]{0x0000080000000030L});
-    public static final BitSet FOLLOW_24 = new BitSet(new long[]{0x0000080000000000L});
-    public static final BitSet FOLLOW_25 = new BitSet(new long[]{0x0000000000000032L});
-    public static final BitSet FOLLOW_26 = new BitSet(new long[]{0x0000E00000038000L});
-    public static final BitSet FOLLOW_27 = new BitSet(new long[]{0x0004008000138000L});
-    public static final BitSet FOLLOW_28 = new BitSet(new long[]{0x00A0000000018000L});
-    public static final BitSet FOLLOW_29 = new BitSet(new long[]{0x0060000000018000L});
-    public static final BitSet FOLLOW_30 = new BitSet(new long[]{0x0300000000018000L});
-    public static final BitSet FOLLOW_31 = new BitSet(new long[]{0x0300000010018000L});
-    public static final BitSet FOLLOW_32 = new BitSet(new long[]{0x04000000007F8000L});
-    public static final BitSet FOLLOW_33 = new BitSet(new long[]{0x04000000107F8000L});
-    public static final BitSet FOLLOW_34 = new BitSet(new long[]{0x3000000000018000L});
-    public static final BitSet FOLLOW_35 = new BitSet(new long[]{0x3000000010018000L});
-    public static final BitSet FOLLOW_36 = new BitSet(new long[]{0x8000000000018000L,0x0000000000000003L});
-    public static final BitSet FOLLOW_37 = new BitSet(new long[]{0x0000000000018000L,0x0000000000000008L});
-    public static final BitSet FOLLOW_38 = new BitSet(new long[]{0x0000008000018000L,0x0000000000000010L});
-    public static final BitSet FOLLOW_39 = new BitSet(new long[]{0x0000008010018000L,0x0000000000000010L});
-    public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000000100038000L,0x00000000000003C0L});
-    public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000110038000L,0x00000000000003C0L});
-    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0004000000038000L,0x0000000000007800L});
-    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0004000010038000L,0x0000000000007800L});
-    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0000000000000000L,0x0000300000000000L});
-    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000002L,0x0000000000008000L});
-    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0xFFFFF7FFEFFF6830L,0x0000FFFFFFFF7FFFL});
-    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0x0000000000000000L,0x0000800000000000L});
+    public static final BitSet FOLLOW_8 = new BitSet(new long[]{0x0000000000000000L,0x0001800000000000L});
+    public static final BitSet FOLLOW_9 = new BitSet(new long[]{0x0000000000000010L});
+    public static final BitSet FOLLOW_10 = new BitSet(new long[]{0x0000000000000000L,0x0000000078000000L});
+    public static final BitSet FOLLOW_11 = new BitSet(new long[]{0x0000000000000000L,0x0000000000C00000L});
+    public static final BitSet FOLLOW_12 = new BitSet(new long[]{0x0000000000000000L,0x0000000007000000L});
+    public static final BitSet FOLLOW_13 = new BitSet(new long[]{0x0000000000000040L,0x000E000000000000L});
+    public static final BitSet FOLLOW_14 = new BitSet(new long[]{0x000000000E070000L});
+    public static final BitSet FOLLOW_15 = new BitSet(new long[]{0x000220C0D0FF8000L});
+    public static final BitSet FOLLOW_16 = new BitSet(new long[]{0x0000000000000030L});
+    public static final BitSet FOLLOW_17 = new BitSet(new long[]{0x000220C0F0FF8000L});
+    public static final BitSet FOLLOW_18 = new BitSet(new long[]{0x0000001F00FF0000L});
+    public static final BitSet FOLLOW_19 = new BitSet(new long[]{0x0000000000000000L,0x0000000180000000L});
+    public static final BitSet FOLLOW_20 = new BitSet(new long[]{0x0000000000000000L,0x000001FE00000000L});
+    public static final BitSet FOLLOW_21 = new BitSet(new long[]{0x0000002000FF0000L});
+    public static final BitSet FOLLOW_22 = new BitSet(new long[]{0x0000070000030000L});
+    public static final BitSet FOLLOW_23 = new BitSet(new long[]{0x0000000000000000L,0x00001E0000000000L});
+    public static final BitSet FOLLOW_24 = new BitSet(new long[]{0x0000100000000030L});
+    public static final BitSet FOLLOW_25 = new BitSet(new long[]{0x0000100000000000L});
+    public static final BitSet FOLLOW_26 = new BitSet(new long[]{0x0000000000000032L});
+    public static final BitSet FOLLOW_27 = new BitSet(new long[]{0x0001C00000070000L});
+    public static final BitSet FOLLOW_28 = new BitSet(new long[]{0x0008010000270000L});
+    public static final BitSet FOLLOW_29 = new BitSet(new long[]{0x0140000000030000L});
+    public static final BitSet FOLLOW_30 = new BitSet(new long[]{0x00C0000000030000L});
+    public static final BitSet FOLLOW_31 = new BitSet(new long[]{0x0600000000030000L});
+    public static final BitSet FOLLOW_32 = new BitSet(new long[]{0x0600000020030000L});
+    public static final BitSet FOLLOW_33 = new BitSet(new long[]{0x0800000000FF0000L});
+    public static final BitSet FOLLOW_34 = new BitSet(new long[]{0x0800000020FF0000L});
+    public static final BitSet FOLLOW_35 = new BitSet(new long[]{0x6000000000030000L});
+    public static final BitSet FOLLOW_36 = new BitSet(new long[]{0x6000000020030000L});
+    public static final BitSet FOLLOW_37 = new BitSet(new long[]{0x0000000000030000L,0x0000000000000007L});
+    public static final BitSet FOLLOW_38 = new BitSet(new long[]{0x0000000000030000L,0x0000000000000010L});
+    public static final BitSet FOLLOW_39 = new BitSet(new long[]{0x0000010000030000L,0x0000000000000020L});
+    public static final BitSet FOLLOW_40 = new BitSet(new long[]{0x0000010020030000L,0x0000000000000020L});
+    public static final BitSet FOLLOW_41 = new BitSet(new long[]{0x0000000200070000L,0x0000000000000780L});
+    public static final BitSet FOLLOW_42 = new BitSet(new long[]{0x0000000220070000L,0x0000000000000780L});
+    public static final BitSet FOLLOW_43 = new BitSet(new long[]{0x0008000000070000L,0x000000000000F000L});
+    public static final BitSet FOLLOW_44 = new BitSet(new long[]{0x0008000020070000L,0x000000000000F000L});
+    public static final BitSet FOLLOW_45 = new BitSet(new long[]{0x0000000000000000L,0x0000600000000000L});
+    public static final BitSet FOLLOW_46 = new BitSet(new long[]{0x0000000000000002L,0x0000000000010000L});
+    public static final BitSet FOLLOW_47 = new BitSet(new long[]{0xFFFFEFFFDFFEE830L,0x0007FFFFFFFEFFFFL});
+    public static final BitSet FOLLOW_48 = new BitSet(new long[]{0x0000000000000000L,0x0004000000000000L});
 
 }

@@ -862,6 +862,22 @@ finally {
 	restoreStackSize(stackSize);
 }
 
+// Rule NodeLifecycle
+ruleNodeLifecycle
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getNodeLifecycleAccess().getAlternatives()); }
+		(rule__NodeLifecycle__Alternatives)
+		{ after(grammarAccess.getNodeLifecycleAccess().getAlternatives()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
 // Rule LatencyKind
 ruleLatencyKind
 	@init {
@@ -902,63 +918,69 @@ rule__Architecture__Alternatives_4
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLayersAssignment_4_3()); }
-		(rule__Architecture__LayersAssignment_4_3)
-		{ after(grammarAccess.getArchitectureAccess().getLayersAssignment_4_3()); }
+		{ before(grammarAccess.getArchitectureAccess().getGroup_4_3()); }
+		(rule__Architecture__Group_4_3__0)
+		{ after(grammarAccess.getArchitectureAccess().getGroup_4_3()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_4()); }
-		(rule__Architecture__ConnectionsAssignment_4_4)
-		{ after(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_4()); }
+		{ before(grammarAccess.getArchitectureAccess().getLayersAssignment_4_4()); }
+		(rule__Architecture__LayersAssignment_4_4)
+		{ after(grammarAccess.getArchitectureAccess().getLayersAssignment_4_4()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_5()); }
-		(rule__Architecture__SensorsAssignment_4_5)
-		{ after(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_5()); }
+		{ before(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_5()); }
+		(rule__Architecture__ConnectionsAssignment_4_5)
+		{ after(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_5()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_6()); }
-		(rule__Architecture__ActuatorsAssignment_4_6)
-		{ after(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_6()); }
+		{ before(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_6()); }
+		(rule__Architecture__SensorsAssignment_4_6)
+		{ after(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_6()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_7()); }
-		(rule__Architecture__MissionsAssignment_4_7)
-		{ after(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_7()); }
+		{ before(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_7()); }
+		(rule__Architecture__ActuatorsAssignment_4_7)
+		{ after(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_7()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_8()); }
-		(rule__Architecture__SupervisorsAssignment_4_8)
-		{ after(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_8()); }
+		{ before(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_8()); }
+		(rule__Architecture__MissionsAssignment_4_8)
+		{ after(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_8()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_9()); }
-		(rule__Architecture__OrdersAssignment_4_9)
-		{ after(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_9()); }
+		{ before(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_9()); }
+		(rule__Architecture__SupervisorsAssignment_4_9)
+		{ after(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_9()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_10()); }
-		(rule__Architecture__DatabasesAssignment_4_10)
-		{ after(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_10()); }
+		{ before(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_10()); }
+		(rule__Architecture__OrdersAssignment_4_10)
+		{ after(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_10()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_11()); }
-		(rule__Architecture__ProcessorsAssignment_4_11)
-		{ after(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_11()); }
+		{ before(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_11()); }
+		(rule__Architecture__DatabasesAssignment_4_11)
+		{ after(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_11()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_12()); }
-		(rule__Architecture__LatencyRequirementsAssignment_4_12)
-		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_12()); }
+		{ before(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_12()); }
+		(rule__Architecture__ProcessorsAssignment_4_12)
+		{ after(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_12()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_13()); }
+		(rule__Architecture__LatencyRequirementsAssignment_4_13)
+		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_13()); }
 	)
 ;
 finally {
@@ -1079,27 +1101,33 @@ rule__Module__Alternatives_4
 	)
 	|
 	(
-		{ before(grammarAccess.getModuleAccess().getFunctionsAssignment_4_4()); }
-		(rule__Module__FunctionsAssignment_4_4)
-		{ after(grammarAccess.getModuleAccess().getFunctionsAssignment_4_4()); }
+		{ before(grammarAccess.getModuleAccess().getGroup_4_4()); }
+		(rule__Module__Group_4_4__0)
+		{ after(grammarAccess.getModuleAccess().getGroup_4_4()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getModuleAccess().getPortsAssignment_4_5()); }
-		(rule__Module__PortsAssignment_4_5)
-		{ after(grammarAccess.getModuleAccess().getPortsAssignment_4_5()); }
+		{ before(grammarAccess.getModuleAccess().getFunctionsAssignment_4_5()); }
+		(rule__Module__FunctionsAssignment_4_5)
+		{ after(grammarAccess.getModuleAccess().getFunctionsAssignment_4_5()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getModuleAccess().getInhibitorsAssignment_4_6()); }
-		(rule__Module__InhibitorsAssignment_4_6)
-		{ after(grammarAccess.getModuleAccess().getInhibitorsAssignment_4_6()); }
+		{ before(grammarAccess.getModuleAccess().getPortsAssignment_4_6()); }
+		(rule__Module__PortsAssignment_4_6)
+		{ after(grammarAccess.getModuleAccess().getPortsAssignment_4_6()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getModuleAccess().getSuppressorsAssignment_4_7()); }
-		(rule__Module__SuppressorsAssignment_4_7)
-		{ after(grammarAccess.getModuleAccess().getSuppressorsAssignment_4_7()); }
+		{ before(grammarAccess.getModuleAccess().getInhibitorsAssignment_4_7()); }
+		(rule__Module__InhibitorsAssignment_4_7)
+		{ after(grammarAccess.getModuleAccess().getInhibitorsAssignment_4_7()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getModuleAccess().getSuppressorsAssignment_4_8()); }
+		(rule__Module__SuppressorsAssignment_4_8)
+		{ after(grammarAccess.getModuleAccess().getSuppressorsAssignment_4_8()); }
 	)
 ;
 finally {
@@ -2165,195 +2193,213 @@ rule__Keyword__Alternatives
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_64()); }
+		{ before(grammarAccess.getKeywordAccess().getLifecycleKeyword_64()); }
+		'lifecycle'
+		{ after(grammarAccess.getKeywordAccess().getLifecycleKeyword_64()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_65()); }
 		'centralized'
-		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_64()); }
+		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_65()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_65()); }
+		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_66()); }
 		'hierarchical'
-		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_65()); }
+		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_66()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_66()); }
+		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_67()); }
 		'behavioral'
-		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_66()); }
+		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_67()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_67()); }
+		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_68()); }
 		'hybrid'
-		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_67()); }
+		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_68()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_68()); }
+		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_69()); }
 		'other'
-		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_68()); }
+		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_69()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_69()); }
+		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_70()); }
 		'simple'
-		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_69()); }
+		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_70()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_70()); }
+		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_71()); }
 		'realTime'
-		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_70()); }
+		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_71()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_71()); }
+		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_72()); }
 		'periodic'
-		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_71()); }
+		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_72()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_72()); }
+		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_73()); }
 		'sporadic'
-		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_72()); }
+		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_73()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_73()); }
+		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_74()); }
 		'aperiodic'
-		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_73()); }
+		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_74()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNsKeyword_74()); }
+		{ before(grammarAccess.getKeywordAccess().getNsKeyword_75()); }
 		'ns'
-		{ after(grammarAccess.getKeywordAccess().getNsKeyword_74()); }
+		{ after(grammarAccess.getKeywordAccess().getNsKeyword_75()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getUsKeyword_75()); }
+		{ before(grammarAccess.getKeywordAccess().getUsKeyword_76()); }
 		'us'
-		{ after(grammarAccess.getKeywordAccess().getUsKeyword_75()); }
+		{ after(grammarAccess.getKeywordAccess().getUsKeyword_76()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getMsKeyword_76()); }
+		{ before(grammarAccess.getKeywordAccess().getMsKeyword_77()); }
 		'ms'
-		{ after(grammarAccess.getKeywordAccess().getMsKeyword_76()); }
+		{ after(grammarAccess.getKeywordAccess().getMsKeyword_77()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSKeyword_77()); }
+		{ before(grammarAccess.getKeywordAccess().getSKeyword_78()); }
 		's'
-		{ after(grammarAccess.getKeywordAccess().getSKeyword_77()); }
+		{ after(grammarAccess.getKeywordAccess().getSKeyword_78()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_78()); }
+		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_79()); }
 		'synchronous'
-		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_78()); }
+		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_79()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_79()); }
+		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_80()); }
 		'asynchronous'
-		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_79()); }
+		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_80()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_80()); }
+		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_81()); }
 		'FIFO'
-		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_80()); }
+		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_81()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_81()); }
+		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_82()); }
 		'SJF'
-		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_81()); }
+		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_82()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRRKeyword_82()); }
+		{ before(grammarAccess.getKeywordAccess().getRRKeyword_83()); }
 		'RR'
-		{ after(grammarAccess.getKeywordAccess().getRRKeyword_82()); }
+		{ after(grammarAccess.getKeywordAccess().getRRKeyword_83()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRMKeyword_83()); }
+		{ before(grammarAccess.getKeywordAccess().getRMKeyword_84()); }
 		'RM'
-		{ after(grammarAccess.getKeywordAccess().getRMKeyword_83()); }
+		{ after(grammarAccess.getKeywordAccess().getRMKeyword_84()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDMKeyword_84()); }
+		{ before(grammarAccess.getKeywordAccess().getDMKeyword_85()); }
 		'DM'
-		{ after(grammarAccess.getKeywordAccess().getDMKeyword_84()); }
+		{ after(grammarAccess.getKeywordAccess().getDMKeyword_85()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_85()); }
+		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_86()); }
 		'EDF'
-		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_85()); }
+		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_86()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_86()); }
+		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_87()); }
 		'LLF'
-		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_86()); }
+		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_87()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_87()); }
+		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_88()); }
 		'OTHER'
-		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_87()); }
+		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_88()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_88()); }
+		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_89()); }
 		'numeric'
-		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_88()); }
+		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_89()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_89()); }
+		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_90()); }
 		'alphanumeric'
-		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_89()); }
+		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_90()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_90()); }
+		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_91()); }
 		'boolean'
-		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_90()); }
+		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_91()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_91()); }
+		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_92()); }
 		'structured'
-		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_91()); }
+		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_92()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_92()); }
+		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_93()); }
 		'reactionTime'
-		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_92()); }
+		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_93()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_93()); }
+		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_94()); }
 		'dataAge'
-		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_93()); }
+		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_94()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_94()); }
+		{ before(grammarAccess.getKeywordAccess().getPlainKeyword_95()); }
+		'plain'
+		{ after(grammarAccess.getKeywordAccess().getPlainKeyword_95()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getManagedKeyword_96()); }
+		'managed'
+		{ after(grammarAccess.getKeywordAccess().getManagedKeyword_96()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_97()); }
 		'NaN'
-		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_94()); }
+		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_97()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_95()); }
+		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_98()); }
 		'Infinity'
-		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_95()); }
+		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_98()); }
 	)
 ;
 finally {
@@ -2618,6 +2664,27 @@ rule__DataType__Alternatives
 		{ before(grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3()); }
 		('structured')
 		{ after(grammarAccess.getDataTypeAccess().getStructuredEnumLiteralDeclaration_3()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__NodeLifecycle__Alternatives
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getNodeLifecycleAccess().getPlainEnumLiteralDeclaration_0()); }
+		('plain')
+		{ after(grammarAccess.getNodeLifecycleAccess().getPlainEnumLiteralDeclaration_0()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1()); }
+		('managed')
+		{ after(grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1()); }
 	)
 ;
 finally {
@@ -2908,6 +2975,60 @@ rule__Architecture__Group_4_2__1__Impl
 	{ before(grammarAccess.getArchitectureAccess().getDeclaredLayersAssignment_4_2_1()); }
 	(rule__Architecture__DeclaredLayersAssignment_4_2_1)
 	{ after(grammarAccess.getArchitectureAccess().getDeclaredLayersAssignment_4_2_1()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+
+rule__Architecture__Group_4_3__0
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Architecture__Group_4_3__0__Impl
+	rule__Architecture__Group_4_3__1
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__Group_4_3__0__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getArchitectureAccess().getLifecycleKeyword_4_3_0()); }
+	'lifecycle'
+	{ after(grammarAccess.getArchitectureAccess().getLifecycleKeyword_4_3_0()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__Group_4_3__1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Architecture__Group_4_3__1__Impl
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__Group_4_3__1__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getArchitectureAccess().getLifecycleAssignment_4_3_1()); }
+	(rule__Architecture__LifecycleAssignment_4_3_1)
+	{ after(grammarAccess.getArchitectureAccess().getLifecycleAssignment_4_3_1()); }
 )
 ;
 finally {
@@ -4096,6 +4217,60 @@ rule__Module__Group_4_3_2__1__Impl
 	{ before(grammarAccess.getModuleAccess().getActuatorsAssignment_4_3_2_1()); }
 	(rule__Module__ActuatorsAssignment_4_3_2_1)
 	{ after(grammarAccess.getModuleAccess().getActuatorsAssignment_4_3_2_1()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+
+rule__Module__Group_4_4__0
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Module__Group_4_4__0__Impl
+	rule__Module__Group_4_4__1
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Module__Group_4_4__0__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getModuleAccess().getLifecycleKeyword_4_4_0()); }
+	'lifecycle'
+	{ after(grammarAccess.getModuleAccess().getLifecycleKeyword_4_4_0()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Module__Group_4_4__1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Module__Group_4_4__1__Impl
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Module__Group_4_4__1__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getModuleAccess().getLifecycleAssignment_4_4_1()); }
+	(rule__Module__LifecycleAssignment_4_4_1)
+	{ after(grammarAccess.getModuleAccess().getLifecycleAssignment_4_4_1()); }
 )
 ;
 finally {
@@ -10142,150 +10317,165 @@ finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__LayersAssignment_4_3
+rule__Architecture__LifecycleAssignment_4_3_1
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_3_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getLifecycleNodeLifecycleEnumRuleCall_4_3_1_0()); }
+		ruleNodeLifecycle
+		{ after(grammarAccess.getArchitectureAccess().getLifecycleNodeLifecycleEnumRuleCall_4_3_1_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__LayersAssignment_4_4
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0()); }
 		ruleLayer
-		{ after(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_3_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__ConnectionsAssignment_4_4
+rule__Architecture__ConnectionsAssignment_4_5
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_4_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0()); }
 		ruleConnection
-		{ after(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_4_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__SensorsAssignment_4_5
+rule__Architecture__SensorsAssignment_4_6
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_5_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0()); }
 		ruleSensor
-		{ after(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_5_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__ActuatorsAssignment_4_6
+rule__Architecture__ActuatorsAssignment_4_7
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_6_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0()); }
 		ruleActuator
-		{ after(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_6_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__MissionsAssignment_4_7
+rule__Architecture__MissionsAssignment_4_8
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_7_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0()); }
 		ruleMission
-		{ after(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_7_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__SupervisorsAssignment_4_8
+rule__Architecture__SupervisorsAssignment_4_9
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_8_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0()); }
 		ruleSupervisor
-		{ after(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_8_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__OrdersAssignment_4_9
+rule__Architecture__OrdersAssignment_4_10
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_9_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0()); }
 		ruleOrder
-		{ after(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_9_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__DatabasesAssignment_4_10
+rule__Architecture__DatabasesAssignment_4_11
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_10_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0()); }
 		ruleDatabase
-		{ after(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_10_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__ProcessorsAssignment_4_11
+rule__Architecture__ProcessorsAssignment_4_12
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_11_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0()); }
 		ruleProcessor
-		{ after(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_11_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__LatencyRequirementsAssignment_4_12
+rule__Architecture__LatencyRequirementsAssignment_4_13
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0()); }
 		ruleLatencyRequirement
-		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_12_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0()); }
 	)
 ;
 finally {
@@ -10608,60 +10798,75 @@ finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Module__FunctionsAssignment_4_4
+rule__Module__LifecycleAssignment_4_4_1
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_4_0()); }
+		{ before(grammarAccess.getModuleAccess().getLifecycleNodeLifecycleEnumRuleCall_4_4_1_0()); }
+		ruleNodeLifecycle
+		{ after(grammarAccess.getModuleAccess().getLifecycleNodeLifecycleEnumRuleCall_4_4_1_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Module__FunctionsAssignment_4_5
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_5_0()); }
 		ruleFunction
-		{ after(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_4_0()); }
+		{ after(grammarAccess.getModuleAccess().getFunctionsFunctionParserRuleCall_4_5_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Module__PortsAssignment_4_5
+rule__Module__PortsAssignment_4_6
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_5_0()); }
+		{ before(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_6_0()); }
 		rulePort
-		{ after(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_5_0()); }
+		{ after(grammarAccess.getModuleAccess().getPortsPortParserRuleCall_4_6_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Module__InhibitorsAssignment_4_6
+rule__Module__InhibitorsAssignment_4_7
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_6_0()); }
+		{ before(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_7_0()); }
 		ruleInhibitor
-		{ after(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_6_0()); }
+		{ after(grammarAccess.getModuleAccess().getInhibitorsInhibitorParserRuleCall_4_7_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Module__SuppressorsAssignment_4_7
+rule__Module__SuppressorsAssignment_4_8
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_7_0()); }
+		{ before(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_8_0()); }
 		ruleSuppressor
-		{ after(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_7_0()); }
+		{ after(grammarAccess.getModuleAccess().getSuppressorsSuppressorParserRuleCall_4_8_0()); }
 	)
 ;
 finally {

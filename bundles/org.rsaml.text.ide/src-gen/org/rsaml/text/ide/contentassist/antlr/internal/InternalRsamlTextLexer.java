@@ -95,8 +95,10 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int T__78=78;
     public static final int T__79=79;
     public static final int T__73=73;
+    public static final int T__115=115;
     public static final int EOF=-1;
     public static final int T__74=74;
+    public static final int T__114=114;
     public static final int T__75=75;
     public static final int T__76=76;
     public static final int T__80=80;
@@ -104,6 +106,7 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int T__81=81;
     public static final int T__110=110;
     public static final int T__82=82;
+    public static final int T__113=113;
     public static final int T__83=83;
     public static final int T__112=112;
     public static final int RULE_WS=9;
@@ -1485,10 +1488,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__75;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:75:7: ( 'centralized' )
-            // InternalRsamlText.g:75:9: 'centralized'
+            // InternalRsamlText.g:75:7: ( 'lifecycle' )
+            // InternalRsamlText.g:75:9: 'lifecycle'
             {
-            match("centralized"); 
+            match("lifecycle"); 
 
 
             }
@@ -1506,10 +1509,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__76;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:76:7: ( 'hierarchical' )
-            // InternalRsamlText.g:76:9: 'hierarchical'
+            // InternalRsamlText.g:76:7: ( 'centralized' )
+            // InternalRsamlText.g:76:9: 'centralized'
             {
-            match("hierarchical"); 
+            match("centralized"); 
 
 
             }
@@ -1527,10 +1530,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__77;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:77:7: ( 'behavioral' )
-            // InternalRsamlText.g:77:9: 'behavioral'
+            // InternalRsamlText.g:77:7: ( 'hierarchical' )
+            // InternalRsamlText.g:77:9: 'hierarchical'
             {
-            match("behavioral"); 
+            match("hierarchical"); 
 
 
             }
@@ -1548,10 +1551,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__78;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:78:7: ( 'hybrid' )
-            // InternalRsamlText.g:78:9: 'hybrid'
+            // InternalRsamlText.g:78:7: ( 'behavioral' )
+            // InternalRsamlText.g:78:9: 'behavioral'
             {
-            match("hybrid"); 
+            match("behavioral"); 
 
 
             }
@@ -1569,10 +1572,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__79;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:79:7: ( 'other' )
-            // InternalRsamlText.g:79:9: 'other'
+            // InternalRsamlText.g:79:7: ( 'hybrid' )
+            // InternalRsamlText.g:79:9: 'hybrid'
             {
-            match("other"); 
+            match("hybrid"); 
 
 
             }
@@ -1590,10 +1593,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__80;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:80:7: ( 'simple' )
-            // InternalRsamlText.g:80:9: 'simple'
+            // InternalRsamlText.g:80:7: ( 'other' )
+            // InternalRsamlText.g:80:9: 'other'
             {
-            match("simple"); 
+            match("other"); 
 
 
             }
@@ -1611,10 +1614,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__81;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:81:7: ( 'realTime' )
-            // InternalRsamlText.g:81:9: 'realTime'
+            // InternalRsamlText.g:81:7: ( 'simple' )
+            // InternalRsamlText.g:81:9: 'simple'
             {
-            match("realTime"); 
+            match("simple"); 
 
 
             }
@@ -1632,10 +1635,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__82;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:82:7: ( 'periodic' )
-            // InternalRsamlText.g:82:9: 'periodic'
+            // InternalRsamlText.g:82:7: ( 'realTime' )
+            // InternalRsamlText.g:82:9: 'realTime'
             {
-            match("periodic"); 
+            match("realTime"); 
 
 
             }
@@ -1653,10 +1656,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__83;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:83:7: ( 'sporadic' )
-            // InternalRsamlText.g:83:9: 'sporadic'
+            // InternalRsamlText.g:83:7: ( 'periodic' )
+            // InternalRsamlText.g:83:9: 'periodic'
             {
-            match("sporadic"); 
+            match("periodic"); 
 
 
             }
@@ -1674,10 +1677,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__84;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:84:7: ( 'aperiodic' )
-            // InternalRsamlText.g:84:9: 'aperiodic'
+            // InternalRsamlText.g:84:7: ( 'sporadic' )
+            // InternalRsamlText.g:84:9: 'sporadic'
             {
-            match("aperiodic"); 
+            match("sporadic"); 
 
 
             }
@@ -1695,10 +1698,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__85;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:85:7: ( 'ns' )
-            // InternalRsamlText.g:85:9: 'ns'
+            // InternalRsamlText.g:85:7: ( 'aperiodic' )
+            // InternalRsamlText.g:85:9: 'aperiodic'
             {
-            match("ns"); 
+            match("aperiodic"); 
 
 
             }
@@ -1716,10 +1719,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__86;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:86:7: ( 'us' )
-            // InternalRsamlText.g:86:9: 'us'
+            // InternalRsamlText.g:86:7: ( 'ns' )
+            // InternalRsamlText.g:86:9: 'ns'
             {
-            match("us"); 
+            match("ns"); 
 
 
             }
@@ -1737,10 +1740,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__87;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:87:7: ( 'ms' )
-            // InternalRsamlText.g:87:9: 'ms'
+            // InternalRsamlText.g:87:7: ( 'us' )
+            // InternalRsamlText.g:87:9: 'us'
             {
-            match("ms"); 
+            match("us"); 
 
 
             }
@@ -1758,10 +1761,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__88;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:88:7: ( 's' )
-            // InternalRsamlText.g:88:9: 's'
+            // InternalRsamlText.g:88:7: ( 'ms' )
+            // InternalRsamlText.g:88:9: 'ms'
             {
-            match('s'); 
+            match("ms"); 
+
 
             }
 
@@ -1778,11 +1782,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__89;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:89:7: ( 'synchronous' )
-            // InternalRsamlText.g:89:9: 'synchronous'
+            // InternalRsamlText.g:89:7: ( 's' )
+            // InternalRsamlText.g:89:9: 's'
             {
-            match("synchronous"); 
-
+            match('s'); 
 
             }
 
@@ -1799,10 +1802,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__90;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:90:7: ( 'asynchronous' )
-            // InternalRsamlText.g:90:9: 'asynchronous'
+            // InternalRsamlText.g:90:7: ( 'synchronous' )
+            // InternalRsamlText.g:90:9: 'synchronous'
             {
-            match("asynchronous"); 
+            match("synchronous"); 
 
 
             }
@@ -1820,10 +1823,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__91;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:91:7: ( 'FIFO' )
-            // InternalRsamlText.g:91:9: 'FIFO'
+            // InternalRsamlText.g:91:7: ( 'asynchronous' )
+            // InternalRsamlText.g:91:9: 'asynchronous'
             {
-            match("FIFO"); 
+            match("asynchronous"); 
 
 
             }
@@ -1841,10 +1844,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__92;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:92:7: ( 'SJF' )
-            // InternalRsamlText.g:92:9: 'SJF'
+            // InternalRsamlText.g:92:7: ( 'FIFO' )
+            // InternalRsamlText.g:92:9: 'FIFO'
             {
-            match("SJF"); 
+            match("FIFO"); 
 
 
             }
@@ -1862,10 +1865,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__93;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:93:7: ( 'RR' )
-            // InternalRsamlText.g:93:9: 'RR'
+            // InternalRsamlText.g:93:7: ( 'SJF' )
+            // InternalRsamlText.g:93:9: 'SJF'
             {
-            match("RR"); 
+            match("SJF"); 
 
 
             }
@@ -1883,10 +1886,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__94;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:94:7: ( 'RM' )
-            // InternalRsamlText.g:94:9: 'RM'
+            // InternalRsamlText.g:94:7: ( 'RR' )
+            // InternalRsamlText.g:94:9: 'RR'
             {
-            match("RM"); 
+            match("RR"); 
 
 
             }
@@ -1904,10 +1907,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__95;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:95:7: ( 'DM' )
-            // InternalRsamlText.g:95:9: 'DM'
+            // InternalRsamlText.g:95:7: ( 'RM' )
+            // InternalRsamlText.g:95:9: 'RM'
             {
-            match("DM"); 
+            match("RM"); 
 
 
             }
@@ -1925,10 +1928,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__96;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:96:7: ( 'EDF' )
-            // InternalRsamlText.g:96:9: 'EDF'
+            // InternalRsamlText.g:96:7: ( 'DM' )
+            // InternalRsamlText.g:96:9: 'DM'
             {
-            match("EDF"); 
+            match("DM"); 
 
 
             }
@@ -1946,10 +1949,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__97;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:97:7: ( 'LLF' )
-            // InternalRsamlText.g:97:9: 'LLF'
+            // InternalRsamlText.g:97:7: ( 'EDF' )
+            // InternalRsamlText.g:97:9: 'EDF'
             {
-            match("LLF"); 
+            match("EDF"); 
 
 
             }
@@ -1967,10 +1970,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__98;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:98:7: ( 'OTHER' )
-            // InternalRsamlText.g:98:9: 'OTHER'
+            // InternalRsamlText.g:98:7: ( 'LLF' )
+            // InternalRsamlText.g:98:9: 'LLF'
             {
-            match("OTHER"); 
+            match("LLF"); 
 
 
             }
@@ -1988,10 +1991,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__99;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:99:7: ( 'numeric' )
-            // InternalRsamlText.g:99:9: 'numeric'
+            // InternalRsamlText.g:99:7: ( 'OTHER' )
+            // InternalRsamlText.g:99:9: 'OTHER'
             {
-            match("numeric"); 
+            match("OTHER"); 
 
 
             }
@@ -2009,10 +2012,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__100;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:100:8: ( 'alphanumeric' )
-            // InternalRsamlText.g:100:10: 'alphanumeric'
+            // InternalRsamlText.g:100:8: ( 'numeric' )
+            // InternalRsamlText.g:100:10: 'numeric'
             {
-            match("alphanumeric"); 
+            match("numeric"); 
 
 
             }
@@ -2030,10 +2033,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__101;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:101:8: ( 'boolean' )
-            // InternalRsamlText.g:101:10: 'boolean'
+            // InternalRsamlText.g:101:8: ( 'alphanumeric' )
+            // InternalRsamlText.g:101:10: 'alphanumeric'
             {
-            match("boolean"); 
+            match("alphanumeric"); 
 
 
             }
@@ -2051,10 +2054,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__102;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:102:8: ( 'structured' )
-            // InternalRsamlText.g:102:10: 'structured'
+            // InternalRsamlText.g:102:8: ( 'boolean' )
+            // InternalRsamlText.g:102:10: 'boolean'
             {
-            match("structured"); 
+            match("boolean"); 
 
 
             }
@@ -2072,10 +2075,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__103;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:103:8: ( 'reactionTime' )
-            // InternalRsamlText.g:103:10: 'reactionTime'
+            // InternalRsamlText.g:103:8: ( 'structured' )
+            // InternalRsamlText.g:103:10: 'structured'
             {
-            match("reactionTime"); 
+            match("structured"); 
 
 
             }
@@ -2093,10 +2096,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__104;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:104:8: ( 'dataAge' )
-            // InternalRsamlText.g:104:10: 'dataAge'
+            // InternalRsamlText.g:104:8: ( 'reactionTime' )
+            // InternalRsamlText.g:104:10: 'reactionTime'
             {
-            match("dataAge"); 
+            match("reactionTime"); 
 
 
             }
@@ -2114,10 +2117,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__105;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:105:8: ( 'NaN' )
-            // InternalRsamlText.g:105:10: 'NaN'
+            // InternalRsamlText.g:105:8: ( 'dataAge' )
+            // InternalRsamlText.g:105:10: 'dataAge'
             {
-            match("NaN"); 
+            match("dataAge"); 
 
 
             }
@@ -2135,10 +2138,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__106;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:106:8: ( 'Infinity' )
-            // InternalRsamlText.g:106:10: 'Infinity'
+            // InternalRsamlText.g:106:8: ( 'plain' )
+            // InternalRsamlText.g:106:10: 'plain'
             {
-            match("Infinity"); 
+            match("plain"); 
 
 
             }
@@ -2156,10 +2159,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__107;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:107:8: ( '{' )
-            // InternalRsamlText.g:107:10: '{'
+            // InternalRsamlText.g:107:8: ( 'managed' )
+            // InternalRsamlText.g:107:10: 'managed'
             {
-            match('{'); 
+            match("managed"); 
+
 
             }
 
@@ -2176,10 +2180,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__108;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:108:8: ( '}' )
-            // InternalRsamlText.g:108:10: '}'
+            // InternalRsamlText.g:108:8: ( 'NaN' )
+            // InternalRsamlText.g:108:10: 'NaN'
             {
-            match('}'); 
+            match("NaN"); 
+
 
             }
 
@@ -2196,10 +2201,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__109;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:109:8: ( ',' )
-            // InternalRsamlText.g:109:10: ','
+            // InternalRsamlText.g:109:8: ( 'Infinity' )
+            // InternalRsamlText.g:109:10: 'Infinity'
             {
-            match(','); 
+            match("Infinity"); 
+
 
             }
 
@@ -2216,11 +2222,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__110;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:110:8: ( '->' )
-            // InternalRsamlText.g:110:10: '->'
+            // InternalRsamlText.g:110:8: ( '{' )
+            // InternalRsamlText.g:110:10: '{'
             {
-            match("->"); 
-
+            match('{'); 
 
             }
 
@@ -2237,10 +2242,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__111;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:111:8: ( '.' )
-            // InternalRsamlText.g:111:10: '.'
+            // InternalRsamlText.g:111:8: ( '}' )
+            // InternalRsamlText.g:111:10: '}'
             {
-            match('.'); 
+            match('}'); 
 
             }
 
@@ -2257,10 +2262,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__112;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:112:8: ( '-' )
-            // InternalRsamlText.g:112:10: '-'
+            // InternalRsamlText.g:112:8: ( ',' )
+            // InternalRsamlText.g:112:10: ','
             {
-            match('-'); 
+            match(','); 
 
             }
 
@@ -2272,15 +2277,76 @@ public class InternalRsamlTextLexer extends Lexer {
     }
     // $ANTLR end "T__112"
 
+    // $ANTLR start "T__113"
+    public final void mT__113() throws RecognitionException {
+        try {
+            int _type = T__113;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:113:8: ( '->' )
+            // InternalRsamlText.g:113:10: '->'
+            {
+            match("->"); 
+
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__113"
+
+    // $ANTLR start "T__114"
+    public final void mT__114() throws RecognitionException {
+        try {
+            int _type = T__114;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:114:8: ( '.' )
+            // InternalRsamlText.g:114:10: '.'
+            {
+            match('.'); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__114"
+
+    // $ANTLR start "T__115"
+    public final void mT__115() throws RecognitionException {
+        try {
+            int _type = T__115;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:115:8: ( '-' )
+            // InternalRsamlText.g:115:10: '-'
+            {
+            match('-'); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__115"
+
     // $ANTLR start "RULE_ID"
     public final void mRULE_ID() throws RecognitionException {
         try {
             int _type = RULE_ID;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11918:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
-            // InternalRsamlText.g:11918:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:12123:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
+            // InternalRsamlText.g:12123:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             {
-            // InternalRsamlText.g:11918:11: ( '^' )?
+            // InternalRsamlText.g:12123:11: ( '^' )?
             int alt1=2;
             int LA1_0 = input.LA(1);
 
@@ -2289,7 +2355,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt1) {
                 case 1 :
-                    // InternalRsamlText.g:11918:11: '^'
+                    // InternalRsamlText.g:12123:11: '^'
                     {
                     match('^'); 
 
@@ -2307,7 +2373,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 recover(mse);
                 throw mse;}
 
-            // InternalRsamlText.g:11918:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:12123:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             loop2:
             do {
                 int alt2=2;
@@ -2356,10 +2422,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_NUMBER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11920:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
-            // InternalRsamlText.g:11920:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:12125:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
+            // InternalRsamlText.g:12125:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             {
-            // InternalRsamlText.g:11920:15: ( '-' )?
+            // InternalRsamlText.g:12125:15: ( '-' )?
             int alt3=2;
             int LA3_0 = input.LA(1);
 
@@ -2368,7 +2434,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt3) {
                 case 1 :
-                    // InternalRsamlText.g:11920:15: '-'
+                    // InternalRsamlText.g:12125:15: '-'
                     {
                     match('-'); 
 
@@ -2377,7 +2443,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:11920:20: ( '0' .. '9' )+
+            // InternalRsamlText.g:12125:20: ( '0' .. '9' )+
             int cnt4=0;
             loop4:
             do {
@@ -2391,7 +2457,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt4) {
             	case 1 :
-            	    // InternalRsamlText.g:11920:21: '0' .. '9'
+            	    // InternalRsamlText.g:12125:21: '0' .. '9'
             	    {
             	    matchRange('0','9'); 
 
@@ -2407,7 +2473,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 cnt4++;
             } while (true);
 
-            // InternalRsamlText.g:11920:32: ( '.' ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:12125:32: ( '.' ( '0' .. '9' )+ )?
             int alt6=2;
             int LA6_0 = input.LA(1);
 
@@ -2416,10 +2482,10 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt6) {
                 case 1 :
-                    // InternalRsamlText.g:11920:33: '.' ( '0' .. '9' )+
+                    // InternalRsamlText.g:12125:33: '.' ( '0' .. '9' )+
                     {
                     match('.'); 
-                    // InternalRsamlText.g:11920:37: ( '0' .. '9' )+
+                    // InternalRsamlText.g:12125:37: ( '0' .. '9' )+
                     int cnt5=0;
                     loop5:
                     do {
@@ -2433,7 +2499,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt5) {
                     	case 1 :
-                    	    // InternalRsamlText.g:11920:38: '0' .. '9'
+                    	    // InternalRsamlText.g:12125:38: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2455,7 +2521,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:11920:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:12125:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             int alt9=2;
             int LA9_0 = input.LA(1);
 
@@ -2464,7 +2530,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt9) {
                 case 1 :
-                    // InternalRsamlText.g:11920:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
+                    // InternalRsamlText.g:12125:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
                     {
                     if ( input.LA(1)=='E'||input.LA(1)=='e' ) {
                         input.consume();
@@ -2475,7 +2541,7 @@ public class InternalRsamlTextLexer extends Lexer {
                         recover(mse);
                         throw mse;}
 
-                    // InternalRsamlText.g:11920:62: ( '+' | '-' )?
+                    // InternalRsamlText.g:12125:62: ( '+' | '-' )?
                     int alt7=2;
                     int LA7_0 = input.LA(1);
 
@@ -2501,7 +2567,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                     }
 
-                    // InternalRsamlText.g:11920:73: ( '0' .. '9' )+
+                    // InternalRsamlText.g:12125:73: ( '0' .. '9' )+
                     int cnt8=0;
                     loop8:
                     do {
@@ -2515,7 +2581,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt8) {
                     	case 1 :
-                    	    // InternalRsamlText.g:11920:74: '0' .. '9'
+                    	    // InternalRsamlText.g:12125:74: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2553,11 +2619,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_STRING;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11922:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
-            // InternalRsamlText.g:11922:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
+            // InternalRsamlText.g:12127:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
+            // InternalRsamlText.g:12127:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
             {
             match('\"'); 
-            // InternalRsamlText.g:11922:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
+            // InternalRsamlText.g:12127:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
             loop10:
             do {
                 int alt10=3;
@@ -2573,7 +2639,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt10) {
             	case 1 :
-            	    // InternalRsamlText.g:11922:20: '\\\\' .
+            	    // InternalRsamlText.g:12127:20: '\\\\' .
             	    {
             	    match('\\'); 
             	    matchAny(); 
@@ -2581,7 +2647,7 @@ public class InternalRsamlTextLexer extends Lexer {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:11922:27: ~ ( ( '\\\\' | '\"' ) )
+            	    // InternalRsamlText.g:12127:27: ~ ( ( '\\\\' | '\"' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='!')||(input.LA(1)>='#' && input.LA(1)<='[')||(input.LA(1)>=']' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2618,12 +2684,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ML_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11924:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
-            // InternalRsamlText.g:11924:19: '/*' ( options {greedy=false; } : . )* '*/'
+            // InternalRsamlText.g:12129:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
+            // InternalRsamlText.g:12129:19: '/*' ( options {greedy=false; } : . )* '*/'
             {
             match("/*"); 
 
-            // InternalRsamlText.g:11924:24: ( options {greedy=false; } : . )*
+            // InternalRsamlText.g:12129:24: ( options {greedy=false; } : . )*
             loop11:
             do {
                 int alt11=2;
@@ -2648,7 +2714,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt11) {
             	case 1 :
-            	    // InternalRsamlText.g:11924:52: .
+            	    // InternalRsamlText.g:12129:52: .
             	    {
             	    matchAny(); 
 
@@ -2678,12 +2744,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_SL_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11926:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
-            // InternalRsamlText.g:11926:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:12131:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
+            // InternalRsamlText.g:12131:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
             {
             match("//"); 
 
-            // InternalRsamlText.g:11926:24: (~ ( ( '\\n' | '\\r' ) ) )*
+            // InternalRsamlText.g:12131:24: (~ ( ( '\\n' | '\\r' ) ) )*
             loop12:
             do {
                 int alt12=2;
@@ -2696,7 +2762,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt12) {
             	case 1 :
-            	    // InternalRsamlText.g:11926:24: ~ ( ( '\\n' | '\\r' ) )
+            	    // InternalRsamlText.g:12131:24: ~ ( ( '\\n' | '\\r' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='\t')||(input.LA(1)>='\u000B' && input.LA(1)<='\f')||(input.LA(1)>='\u000E' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2716,7 +2782,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
             } while (true);
 
-            // InternalRsamlText.g:11926:40: ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:12131:40: ( ( '\\r' )? '\\n' )?
             int alt14=2;
             int LA14_0 = input.LA(1);
 
@@ -2725,9 +2791,9 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt14) {
                 case 1 :
-                    // InternalRsamlText.g:11926:41: ( '\\r' )? '\\n'
+                    // InternalRsamlText.g:12131:41: ( '\\r' )? '\\n'
                     {
-                    // InternalRsamlText.g:11926:41: ( '\\r' )?
+                    // InternalRsamlText.g:12131:41: ( '\\r' )?
                     int alt13=2;
                     int LA13_0 = input.LA(1);
 
@@ -2736,7 +2802,7 @@ public class InternalRsamlTextLexer extends Lexer {
                     }
                     switch (alt13) {
                         case 1 :
-                            // InternalRsamlText.g:11926:41: '\\r'
+                            // InternalRsamlText.g:12131:41: '\\r'
                             {
                             match('\r'); 
 
@@ -2768,10 +2834,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_WS;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11928:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
-            // InternalRsamlText.g:11928:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:12133:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
+            // InternalRsamlText.g:12133:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             {
-            // InternalRsamlText.g:11928:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:12133:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             int cnt15=0;
             loop15:
             do {
@@ -2825,8 +2891,8 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ANY_OTHER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:11930:16: ( . )
-            // InternalRsamlText.g:11930:18: .
+            // InternalRsamlText.g:12135:16: ( . )
+            // InternalRsamlText.g:12135:18: .
             {
             matchAny(); 
 
@@ -2841,8 +2907,8 @@ public class InternalRsamlTextLexer extends Lexer {
     // $ANTLR end "RULE_ANY_OTHER"
 
     public void mTokens() throws RecognitionException {
-        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
-        int alt16=109;
+        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
+        int alt16=112;
         alt16 = dfa16.predict(input);
         switch (alt16) {
             case 1 :
@@ -3560,49 +3626,70 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
                 break;
             case 103 :
-                // InternalRsamlText.g:1:635: RULE_ID
+                // InternalRsamlText.g:1:635: T__113
+                {
+                mT__113(); 
+
+                }
+                break;
+            case 104 :
+                // InternalRsamlText.g:1:642: T__114
+                {
+                mT__114(); 
+
+                }
+                break;
+            case 105 :
+                // InternalRsamlText.g:1:649: T__115
+                {
+                mT__115(); 
+
+                }
+                break;
+            case 106 :
+                // InternalRsamlText.g:1:656: RULE_ID
                 {
                 mRULE_ID(); 
 
                 }
                 break;
-            case 104 :
-                // InternalRsamlText.g:1:643: RULE_NUMBER
+            case 107 :
+                // InternalRsamlText.g:1:664: RULE_NUMBER
                 {
                 mRULE_NUMBER(); 
 
                 }
                 break;
-            case 105 :
-                // InternalRsamlText.g:1:655: RULE_STRING
+            case 108 :
+                // InternalRsamlText.g:1:676: RULE_STRING
                 {
                 mRULE_STRING(); 
 
                 }
                 break;
-            case 106 :
-                // InternalRsamlText.g:1:667: RULE_ML_COMMENT
+            case 109 :
+                // InternalRsamlText.g:1:688: RULE_ML_COMMENT
                 {
                 mRULE_ML_COMMENT(); 
 
                 }
                 break;
-            case 107 :
-                // InternalRsamlText.g:1:683: RULE_SL_COMMENT
+            case 110 :
+                // InternalRsamlText.g:1:704: RULE_SL_COMMENT
                 {
                 mRULE_SL_COMMENT(); 
 
                 }
                 break;
-            case 108 :
-                // InternalRsamlText.g:1:699: RULE_WS
+            case 111 :
+                // InternalRsamlText.g:1:720: RULE_WS
                 {
                 mRULE_WS(); 
 
                 }
                 break;
-            case 109 :
-                // InternalRsamlText.g:1:707: RULE_ANY_OTHER
+            case 112 :
+                // InternalRsamlText.g:1:728: RULE_ANY_OTHER
                 {
                 mRULE_ANY_OTHER(); 
 
@@ -3616,17 +3703,17 @@ public class InternalRsamlTextLexer extends Lexer {
 
     protected DFA16 dfa16 = new DFA16(this);
     static final String DFA16_eotS =
-        "\1\uffff\10\60\1\114\25\60\3\uffff\1\164\1\uffff\1\52\2\uffff\2\52\2\uffff\5\60\1\uffff\7\60\1\u0089\23\60\1\uffff\12\60\1\u00b0\1\60\1\u00b3\12\60\1\u00be\3\60\1\u00c2\1\u00c3\1\u00c4\5\60\13\uffff\16\60\1\uffff\46\60\1\uffff\2\60\1\uffff\4\60\1\u0108\5\60\1\uffff\2\60\1\u0110\3\uffff\1\u0111\1\u0112\1\60\1\u0114\22\60\1\u0128\14\60\1\u0136\13\60\1\u0142\1\u0144\11\60\1\u0150\1\u0151\1\60\1\u0153\4\60\1\u0158\1\uffff\1\u0159\5\60\1\u015f\3\uffff\1\60\1\uffff\11\60\1\u016a\1\60\1\u016c\7\60\1\uffff\6\60\1\u017a\3\60\1\u017e\1\u0180\1\60\1\uffff\7\60\1\u0189\3\60\1\uffff\1\u018d\1\uffff\13\60\2\uffff\1\60\1\uffff\1\u019a\3\60\2\uffff\5\60\1\uffff\1\u01a3\2\60\1\u01a7\6\60\1\uffff\1\60\1\uffff\1\60\1\u01b1\13\60\1\uffff\1\60\1\u01be\1\u01bf\1\uffff\1\60\1\uffff\5\60\1\u01c7\2\60\1\uffff\1\60\1\u01cb\1\60\1\uffff\2\60\1\u01d0\10\60\1\u01d9\1\uffff\1\60\1\u01db\2\60\1\u01de\3\60\1\uffff\2\60\1\u01e4\1\uffff\6\60\1\u01eb\1\60\1\u01ed\1\uffff\1\u01ee\13\60\2\uffff\1\60\1\u01fb\4\60\1\u0200\1\uffff\3\60\1\uffff\4\60\1\uffff\2\60\1\u020b\5\60\1\uffff\1\u0211\1\uffff\2\60\1\uffff\1\60\1\u0215\1\u0216\2\60\1\uffff\1\u0219\1\u021b\1\u021c\3\60\1\uffff\1\60\2\uffff\3\60\1\u0224\1\u0225\1\60\1\u0227\1\60\1\u0229\1\u022a\2\60\1\uffff\1\u022d\3\60\1\uffff\4\60\1\u0235\1\60\1\u0237\1\u0238\1\u0239\1\u023a\1\uffff\2\60\1\u023d\1\u023e\1\60\1\uffff\1\u0240\2\60\2\uffff\1\u0243\1\60\1\uffff\1\u0245\2\uffff\1\u0246\6\60\2\uffff\1\60\1\uffff\1\60\2\uffff\1\u024f\1\60\1\uffff\7\60\1\uffff\1\u0258\4\uffff\2\60\2\uffff\1\u025b\1\uffff\2\60\1\uffff\1\60\2\uffff\4\60\1\u0263\1\60\1\u0265\1\60\1\uffff\2\60\1\u0269\1\u026a\3\60\1\u026e\1\uffff\2\60\1\uffff\1\60\1\u0272\3\60\1\u0276\1\u0277\1\uffff\1\u0278\1\uffff\1\60\1\u027a\1\u027b\2\uffff\1\u027c\1\u027d\1\u027e\1\uffff\1\u027f\2\60\1\uffff\1\u0282\1\u0283\1\u0284\3\uffff\1\u0285\6\uffff\1\60\1\u0287\4\uffff\1\60\1\uffff\1\u0289\1\uffff";
+        "\1\uffff\10\60\1\114\25\60\3\uffff\1\164\1\uffff\1\52\2\uffff\2\52\2\uffff\5\60\1\uffff\7\60\1\u008b\23\60\1\uffff\12\60\1\u00b2\1\60\1\u00b5\12\60\1\u00c0\3\60\1\u00c4\1\u00c5\1\u00c6\5\60\13\uffff\20\60\1\uffff\46\60\1\uffff\2\60\1\uffff\4\60\1\u010d\5\60\1\uffff\2\60\1\u0115\3\uffff\1\u0116\1\u0117\1\60\1\u0119\24\60\1\u012f\14\60\1\u013d\13\60\1\u0149\1\u014b\12\60\1\u0158\1\u0159\1\60\1\u015b\4\60\1\u0160\1\uffff\1\u0161\5\60\1\u0167\3\uffff\1\60\1\uffff\11\60\1\u0172\1\60\1\u0174\11\60\1\uffff\6\60\1\u0184\3\60\1\u0188\1\u018a\1\60\1\uffff\7\60\1\u0193\3\60\1\uffff\1\u0197\1\uffff\1\u0198\13\60\2\uffff\1\60\1\uffff\1\u01a5\3\60\2\uffff\5\60\1\uffff\1\u01ae\2\60\1\u01b2\6\60\1\uffff\1\60\1\uffff\2\60\1\u01bd\14\60\1\uffff\1\60\1\u01cb\1\u01cc\1\uffff\1\60\1\uffff\5\60\1\u01d4\2\60\1\uffff\1\60\1\u01d8\1\60\2\uffff\2\60\1\u01dd\10\60\1\u01e6\1\uffff\1\60\1\u01e8\2\60\1\u01eb\3\60\1\uffff\2\60\1\u01f1\1\uffff\6\60\1\u01f8\2\60\1\u01fb\1\uffff\1\u01fc\2\60\1\u01ff\11\60\2\uffff\1\60\1\u020a\4\60\1\u020f\1\uffff\3\60\1\uffff\4\60\1\uffff\2\60\1\u021a\5\60\1\uffff\1\u0220\1\uffff\2\60\1\uffff\1\60\1\u0224\1\u0225\2\60\1\uffff\1\u0228\1\u022a\1\u022b\3\60\1\uffff\2\60\2\uffff\2\60\1\uffff\1\60\1\u0234\1\u0235\1\60\1\u0237\1\60\1\u0239\1\u023a\2\60\1\uffff\1\u023d\3\60\1\uffff\4\60\1\u0245\1\60\1\u0247\1\u0248\1\u0249\1\u024a\1\uffff\2\60\1\u024d\1\u024e\1\60\1\uffff\1\u0250\2\60\2\uffff\1\u0253\1\60\1\uffff\1\u0255\2\uffff\1\u0256\3\60\1\u025a\3\60\2\uffff\1\60\1\uffff\1\60\2\uffff\1\u0260\1\60\1\uffff\7\60\1\uffff\1\u0269\4\uffff\2\60\2\uffff\1\u026c\1\uffff\2\60\1\uffff\1\60\2\uffff\3\60\1\uffff\1\60\1\u0274\1\60\1\u0276\1\60\1\uffff\2\60\1\u027a\1\u027b\3\60\1\u027f\1\uffff\2\60\1\uffff\1\60\1\u0283\3\60\1\u0287\1\u0288\1\uffff\1\u0289\1\uffff\1\60\1\u028b\1\u028c\2\uffff\1\u028d\1\u028e\1\u028f\1\uffff\1\u0290\2\60\1\uffff\1\u0293\1\u0294\1\u0295\3\uffff\1\u0296\6\uffff\1\60\1\u0298\4\uffff\1\60\1\uffff\1\u029a\1\uffff";
     static final String DFA16_eofS =
-        "\u028a\uffff";
+        "\u029b\uffff";
     static final String DFA16_minS =
-        "\1\0\1\143\2\141\1\162\1\145\1\156\1\162\1\141\1\60\1\157\1\145\1\141\1\151\1\156\1\141\1\170\1\143\2\151\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\60\1\uffff\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\1\uffff\1\164\1\166\1\156\1\144\1\163\1\170\1\163\1\60\1\156\1\157\1\101\1\141\1\150\1\163\1\164\1\144\1\150\1\156\1\164\1\156\1\160\2\156\1\150\1\141\1\155\1\157\1\uffff\2\141\1\151\1\162\1\164\1\141\1\162\1\157\1\156\1\151\1\60\1\160\1\60\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\13\uffff\1\150\2\151\1\162\1\156\1\150\3\145\1\153\1\165\1\163\1\105\1\163\1\uffff\1\143\1\155\2\143\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\145\1\163\1\143\1\145\1\162\1\165\1\160\1\162\1\154\1\156\1\143\1\157\1\151\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\60\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\157\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\154\1\151\1\170\2\141\1\164\1\60\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\60\1\147\3\162\1\157\1\150\1\144\1\164\1\143\1\154\1\141\2\60\1\145\1\162\1\157\1\101\1\162\1\141\1\154\1\164\1\154\2\60\1\102\1\60\1\143\1\147\1\145\1\124\1\60\1\uffff\1\60\1\141\1\151\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\60\1\143\1\60\1\141\1\145\1\157\1\145\1\164\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\164\2\60\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\60\1\164\1\145\1\144\1\uffff\1\60\1\uffff\1\163\1\151\1\144\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\60\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\60\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\60\1\156\1\143\2\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\60\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\60\2\157\1\uffff\1\165\1\60\1\151\1\uffff\1\163\1\164\1\60\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\60\1\uffff\1\162\1\60\1\160\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\60\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\60\1\145\1\60\1\uffff\1\60\1\124\1\156\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\60\1\171\1\151\2\163\1\60\1\uffff\1\124\1\154\1\162\1\uffff\1\143\1\157\1\171\1\143\1\uffff\2\145\1\60\1\164\1\144\1\145\1\156\1\147\1\uffff\1\60\1\uffff\1\145\1\150\1\uffff\1\162\2\60\1\171\1\164\1\uffff\3\60\1\143\1\156\1\145\1\uffff\1\156\2\uffff\1\151\1\143\1\171\2\60\1\102\1\60\1\124\2\60\1\162\1\151\1\uffff\1\60\1\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\60\1\162\4\60\1\uffff\1\151\1\114\2\60\1\145\1\uffff\1\60\1\151\1\141\2\uffff\1\60\1\165\1\uffff\1\60\2\uffff\1\60\1\157\1\162\1\143\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\60\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\60\4\uffff\1\157\1\141\2\uffff\1\60\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\145\1\60\1\145\1\60\1\155\1\uffff\1\171\1\144\2\60\1\145\1\163\1\171\1\60\1\uffff\1\156\1\171\1\uffff\1\141\1\60\1\145\1\163\1\143\2\60\1\uffff\1\60\1\uffff\1\145\2\60\2\uffff\3\60\1\uffff\1\60\1\145\1\154\1\uffff\3\60\3\uffff\1\60\6\uffff\1\162\1\60\4\uffff\1\163\1\uffff\1\60\1\uffff";
+        "\1\0\1\143\2\141\1\162\1\145\1\156\1\162\1\141\1\60\1\157\1\145\1\141\1\151\1\156\1\141\1\170\1\143\2\151\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\60\1\uffff\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\1\uffff\1\164\1\166\1\146\1\144\1\163\1\156\1\163\1\60\1\156\1\157\1\101\1\141\1\150\1\163\1\164\1\144\1\150\1\156\1\164\1\156\1\160\2\156\1\150\1\141\1\155\1\157\1\uffff\2\141\1\151\1\162\1\164\1\141\1\162\1\157\1\156\1\151\1\60\1\160\1\60\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\13\uffff\1\150\2\151\1\162\1\156\1\150\3\145\1\153\1\145\1\165\1\163\1\105\1\141\1\163\1\uffff\1\143\1\155\2\143\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\145\1\163\1\143\1\145\1\162\1\165\1\160\1\162\1\154\1\151\1\143\1\157\1\151\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\60\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\157\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\143\1\154\1\151\1\170\1\141\1\147\1\141\1\164\1\60\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\60\1\147\3\162\1\157\1\150\1\144\1\164\1\143\1\154\1\141\2\60\1\156\1\145\1\162\1\157\1\101\1\162\1\141\1\154\1\164\1\154\2\60\1\102\1\60\1\143\1\147\1\145\1\124\1\60\1\uffff\1\60\1\141\1\151\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\60\1\143\1\60\1\141\1\171\1\145\1\157\1\145\1\164\1\145\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\164\2\60\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\60\1\164\1\145\1\144\1\uffff\1\60\1\uffff\1\60\1\163\1\151\1\144\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\60\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\60\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\143\1\60\1\156\1\143\1\145\1\144\1\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\60\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\60\2\157\1\uffff\1\165\1\60\1\151\2\uffff\1\163\1\164\1\60\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\60\1\uffff\1\162\1\60\1\160\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\60\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\60\1\145\1\154\1\60\1\uffff\1\60\1\124\1\156\1\60\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\60\1\171\1\151\2\163\1\60\1\uffff\1\124\1\154\1\162\1\uffff\1\143\1\157\1\171\1\143\1\uffff\2\145\1\60\1\164\1\144\1\145\1\156\1\147\1\uffff\1\60\1\uffff\1\145\1\150\1\uffff\1\162\2\60\1\171\1\164\1\uffff\3\60\1\143\1\156\1\145\1\uffff\1\156\1\145\2\uffff\1\151\1\143\1\uffff\1\171\2\60\1\102\1\60\1\124\2\60\1\162\1\151\1\uffff\1\60\1\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\60\1\162\4\60\1\uffff\1\151\1\114\2\60\1\145\1\uffff\1\60\1\151\1\141\2\uffff\1\60\1\165\1\uffff\1\60\2\uffff\1\60\1\157\1\162\1\143\1\60\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\60\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\60\4\uffff\1\157\1\141\2\uffff\1\60\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\uffff\1\145\1\60\1\145\1\60\1\155\1\uffff\1\171\1\144\2\60\1\145\1\163\1\171\1\60\1\uffff\1\156\1\171\1\uffff\1\141\1\60\1\145\1\163\1\143\2\60\1\uffff\1\60\1\uffff\1\145\2\60\2\uffff\3\60\1\uffff\1\60\1\145\1\154\1\uffff\3\60\3\uffff\1\60\6\uffff\1\162\1\60\4\uffff\1\163\1\uffff\1\60\1\uffff";
     static final String DFA16_maxS =
-        "\1\uffff\1\163\1\151\1\163\1\165\1\164\1\163\1\165\1\157\1\172\1\157\1\162\1\165\1\156\1\163\1\171\1\170\1\143\1\151\1\171\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\76\1\uffff\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\1\uffff\1\171\1\166\1\156\1\144\1\163\1\170\1\163\1\172\1\156\1\157\1\101\1\161\1\160\1\163\1\164\1\144\1\150\1\162\1\164\1\156\1\160\2\156\1\150\1\162\1\155\1\157\1\uffff\2\141\1\157\1\162\1\164\1\163\1\162\1\157\1\156\1\151\1\172\1\160\1\172\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\13\uffff\1\150\1\165\1\151\1\162\1\156\1\150\3\145\1\153\1\165\1\163\1\114\1\163\1\uffff\1\143\1\155\1\143\1\154\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\160\1\163\1\143\1\145\1\162\1\165\1\160\1\162\1\154\1\156\1\143\1\157\1\151\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\172\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\166\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\154\1\151\1\170\2\141\1\164\1\172\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\172\1\147\3\162\1\157\1\150\1\144\1\164\1\143\1\154\1\141\2\172\1\145\1\162\1\157\1\142\1\162\1\141\1\154\1\164\1\154\2\172\1\102\1\172\1\143\1\147\1\145\1\124\1\172\1\uffff\1\172\1\141\1\151\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\172\1\143\1\172\1\141\1\145\1\157\1\145\1\164\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\164\2\172\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\172\1\164\1\145\1\144\1\uffff\1\172\1\uffff\1\163\1\151\1\144\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\172\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\172\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\172\1\156\1\143\2\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\172\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\172\2\157\1\uffff\1\165\1\172\1\151\1\uffff\1\163\1\164\1\172\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\172\1\uffff\1\162\1\172\1\160\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\172\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\172\1\145\1\172\1\uffff\1\172\1\124\1\156\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\172\1\171\1\151\2\163\1\172\1\uffff\1\156\1\154\1\162\1\uffff\1\143\1\157\1\171\1\143\1\uffff\2\145\1\172\1\164\1\144\1\145\1\156\1\147\1\uffff\1\172\1\uffff\1\145\1\150\1\uffff\1\162\2\172\1\171\1\164\1\uffff\3\172\1\143\1\156\1\145\1\uffff\1\156\2\uffff\1\151\1\143\1\171\2\172\1\102\1\172\1\124\2\172\1\162\1\151\1\uffff\2\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\172\1\162\4\172\1\uffff\1\151\1\114\2\172\1\145\1\uffff\1\172\1\151\1\141\2\uffff\1\172\1\165\1\uffff\1\172\2\uffff\1\172\1\157\1\162\1\143\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\172\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\172\4\uffff\1\157\1\141\2\uffff\1\172\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\145\1\172\1\145\1\172\1\155\1\uffff\1\171\1\144\2\172\1\145\1\163\1\171\1\172\1\uffff\1\156\1\171\1\uffff\1\141\1\172\1\145\1\163\1\143\2\172\1\uffff\1\172\1\uffff\1\145\2\172\2\uffff\3\172\1\uffff\1\172\1\145\1\154\1\uffff\3\172\3\uffff\1\172\6\uffff\1\162\1\172\4\uffff\1\163\1\uffff\1\172\1\uffff";
+        "\1\uffff\1\163\1\151\1\163\1\165\1\164\1\163\1\165\1\157\1\172\1\157\1\162\1\165\1\156\1\163\1\171\1\170\1\143\1\151\1\171\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\76\1\uffff\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\1\uffff\1\171\1\166\1\156\1\144\1\163\1\170\1\163\1\172\1\156\1\157\1\101\1\161\1\160\1\163\1\164\1\144\1\150\1\162\1\164\1\156\1\160\2\156\1\150\1\162\1\155\1\157\1\uffff\2\141\1\157\1\162\1\164\1\163\1\162\1\157\1\156\1\151\1\172\1\160\1\172\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\13\uffff\1\150\1\165\1\151\1\162\1\156\1\150\3\145\1\153\1\145\1\165\1\163\1\114\1\141\1\163\1\uffff\1\143\1\155\1\143\1\154\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\160\1\163\1\143\1\145\1\162\1\165\1\160\1\162\1\154\1\156\1\143\1\157\1\151\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\172\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\166\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\143\1\154\1\151\1\170\1\141\1\147\1\141\1\164\1\172\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\172\1\147\3\162\1\157\1\150\1\144\1\164\1\143\1\154\1\141\2\172\1\156\1\145\1\162\1\157\1\142\1\162\1\141\1\154\1\164\1\154\2\172\1\102\1\172\1\143\1\147\1\145\1\124\1\172\1\uffff\1\172\1\141\1\151\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\172\1\143\1\172\1\141\1\171\1\145\1\157\1\145\1\164\1\145\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\164\2\172\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\172\1\164\1\145\1\144\1\uffff\1\172\1\uffff\1\172\1\163\1\151\1\144\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\172\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\172\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\143\1\172\1\156\1\143\1\145\1\144\1\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\172\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\172\2\157\1\uffff\1\165\1\172\1\151\2\uffff\1\163\1\164\1\172\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\172\1\uffff\1\162\1\172\1\160\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\172\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\172\1\145\1\154\1\172\1\uffff\1\172\1\124\1\156\1\172\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\172\1\171\1\151\2\163\1\172\1\uffff\1\156\1\154\1\162\1\uffff\1\143\1\157\1\171\1\143\1\uffff\2\145\1\172\1\164\1\144\1\145\1\156\1\147\1\uffff\1\172\1\uffff\1\145\1\150\1\uffff\1\162\2\172\1\171\1\164\1\uffff\3\172\1\143\1\156\1\145\1\uffff\1\156\1\145\2\uffff\1\151\1\143\1\uffff\1\171\2\172\1\102\1\172\1\124\2\172\1\162\1\151\1\uffff\2\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\172\1\162\4\172\1\uffff\1\151\1\114\2\172\1\145\1\uffff\1\172\1\151\1\141\2\uffff\1\172\1\165\1\uffff\1\172\2\uffff\1\172\1\157\1\162\1\143\1\172\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\172\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\172\4\uffff\1\157\1\141\2\uffff\1\172\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\uffff\1\145\1\172\1\145\1\172\1\155\1\uffff\1\171\1\144\2\172\1\145\1\163\1\171\1\172\1\uffff\1\156\1\171\1\uffff\1\141\1\172\1\145\1\163\1\143\2\172\1\uffff\1\172\1\uffff\1\145\2\172\2\uffff\3\172\1\uffff\1\172\1\145\1\154\1\uffff\3\172\3\uffff\1\172\6\uffff\1\162\1\172\4\uffff\1\163\1\uffff\1\172\1\uffff";
     static final String DFA16_acceptS =
-        "\37\uffff\1\141\1\142\1\143\1\uffff\1\145\1\uffff\1\147\1\150\2\uffff\1\154\1\155\5\uffff\1\147\33\uffff\1\116\43\uffff\1\141\1\142\1\143\1\144\1\146\1\150\1\145\1\151\1\152\1\153\1\154\16\uffff\1\115\46\uffff\1\114\2\uffff\1\74\12\uffff\1\113\3\uffff\1\123\1\124\1\125\103\uffff\1\75\7\uffff\1\122\1\126\1\127\1\uffff\1\137\23\uffff\1\73\15\uffff\1\71\13\uffff\1\17\1\uffff\1\20\13\uffff\1\57\1\33\1\uffff\1\34\4\uffff\1\40\1\77\5\uffff\1\121\12\uffff\1\2\1\uffff\1\41\15\uffff\1\7\3\uffff\1\23\1\uffff\1\105\10\uffff\1\50\3\uffff\1\63\14\uffff\1\53\10\uffff\1\130\3\uffff\1\5\11\uffff\1\3\14\uffff\1\65\1\10\7\uffff\1\14\3\uffff\1\106\4\uffff\1\36\10\uffff\1\70\1\uffff\1\55\2\uffff\1\104\5\uffff\1\62\6\uffff\1\27\1\uffff\1\72\1\16\14\uffff\1\11\4\uffff\1\43\12\uffff\1\136\5\uffff\1\54\3\uffff\1\133\1\131\2\uffff\1\21\1\uffff\1\15\1\61\7\uffff\1\4\1\6\1\uffff\1\107\1\uffff\1\66\1\67\2\uffff\1\31\7\uffff\1\111\1\uffff\1\60\1\110\1\24\1\51\2\uffff\1\37\1\56\1\uffff\1\35\2\uffff\1\140\1\uffff\1\44\1\112\10\uffff\1\12\10\uffff\1\26\2\uffff\1\25\7\uffff\1\76\1\uffff\1\64\3\uffff\1\13\1\22\3\uffff\1\134\3\uffff\1\103\3\uffff\1\100\1\42\1\52\1\uffff\1\47\1\101\1\45\1\117\1\46\1\30\2\uffff\1\1\1\120\1\132\1\135\1\uffff\1\102\1\uffff\1\32";
+        "\37\uffff\1\144\1\145\1\146\1\uffff\1\150\1\uffff\1\152\1\153\2\uffff\1\157\1\160\5\uffff\1\152\33\uffff\1\117\43\uffff\1\144\1\145\1\146\1\147\1\151\1\153\1\150\1\154\1\155\1\156\1\157\20\uffff\1\116\46\uffff\1\115\2\uffff\1\74\12\uffff\1\114\3\uffff\1\124\1\125\1\126\106\uffff\1\75\7\uffff\1\123\1\127\1\130\1\uffff\1\142\25\uffff\1\73\15\uffff\1\71\13\uffff\1\17\1\uffff\1\20\14\uffff\1\57\1\33\1\uffff\1\34\4\uffff\1\40\1\77\5\uffff\1\122\12\uffff\1\2\1\uffff\1\41\17\uffff\1\7\3\uffff\1\23\1\uffff\1\106\10\uffff\1\50\3\uffff\1\63\1\140\14\uffff\1\53\10\uffff\1\131\3\uffff\1\5\12\uffff\1\3\15\uffff\1\65\1\10\7\uffff\1\14\3\uffff\1\107\4\uffff\1\36\10\uffff\1\70\1\uffff\1\55\2\uffff\1\105\5\uffff\1\62\6\uffff\1\27\2\uffff\1\72\1\16\2\uffff\1\141\12\uffff\1\11\4\uffff\1\43\12\uffff\1\137\5\uffff\1\54\3\uffff\1\134\1\132\2\uffff\1\21\1\uffff\1\15\1\61\10\uffff\1\4\1\6\1\uffff\1\110\1\uffff\1\66\1\67\2\uffff\1\31\7\uffff\1\112\1\uffff\1\60\1\111\1\24\1\51\2\uffff\1\37\1\56\1\uffff\1\35\2\uffff\1\143\1\uffff\1\44\1\113\3\uffff\1\101\5\uffff\1\12\10\uffff\1\26\2\uffff\1\25\7\uffff\1\76\1\uffff\1\64\3\uffff\1\13\1\22\3\uffff\1\135\3\uffff\1\104\3\uffff\1\100\1\42\1\52\1\uffff\1\47\1\102\1\45\1\120\1\46\1\30\2\uffff\1\1\1\121\1\133\1\136\1\uffff\1\103\1\uffff\1\32";
     static final String DFA16_specialS =
-        "\1\1\46\uffff\1\0\u0262\uffff}>";
+        "\1\1\46\uffff\1\0\u0273\uffff}>";
     static final String[] DFA16_transitionS = {
             "\11\52\2\51\2\52\1\51\22\52\1\51\1\52\1\47\11\52\1\41\1\42\1\43\1\50\12\46\7\52\3\45\1\31\1\32\1\26\2\45\1\36\2\45\1\33\1\45\1\35\1\34\2\45\1\30\1\27\7\45\3\52\1\44\1\45\1\52\1\1\1\24\1\10\1\14\1\20\1\4\1\12\1\23\1\6\1\45\1\15\1\2\1\3\1\25\1\7\1\13\1\45\1\5\1\11\1\17\1\16\1\22\1\21\3\45\1\37\1\52\1\40\uff82\52",
             "\1\54\10\uffff\1\57\3\uffff\1\55\1\uffff\1\53\1\56",
@@ -3679,47 +3766,45 @@ public class InternalRsamlTextLexer extends Lexer {
             "",
             "\1\u0082\4\uffff\1\u0081",
             "\1\u0083",
-            "\1\u0084",
-            "\1\u0085",
+            "\1\u0085\7\uffff\1\u0084",
             "\1\u0086",
             "\1\u0087",
-            "\1\u0088",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0089\11\uffff\1\u0088",
             "\1\u008a",
-            "\1\u008b",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u008c",
-            "\1\u008d\1\uffff\1\u008e\15\uffff\1\u008f",
-            "\1\u0091\7\uffff\1\u0090",
-            "\1\u0092",
-            "\1\u0093",
+            "\1\u008d",
+            "\1\u008e",
+            "\1\u008f\1\uffff\1\u0090\15\uffff\1\u0091",
+            "\1\u0093\7\uffff\1\u0092",
             "\1\u0094",
             "\1\u0095",
-            "\1\u0096\3\uffff\1\u0097",
-            "\1\u0098",
-            "\1\u0099",
+            "\1\u0096",
+            "\1\u0097",
+            "\1\u0098\3\uffff\1\u0099",
             "\1\u009a",
             "\1\u009b",
             "\1\u009c",
             "\1\u009d",
-            "\1\u009e\20\uffff\1\u009f",
-            "\1\u00a0",
-            "\1\u00a1",
-            "",
+            "\1\u009e",
+            "\1\u009f",
+            "\1\u00a0\20\uffff\1\u00a1",
             "\1\u00a2",
             "\1\u00a3",
-            "\1\u00a5\5\uffff\1\u00a4",
-            "\1\u00a6",
-            "\1\u00a7",
-            "\1\u00aa\1\uffff\1\u00a9\17\uffff\1\u00a8",
-            "\1\u00ab",
-            "\1\u00ac",
+            "",
+            "\1\u00a4",
+            "\1\u00a5",
+            "\1\u00a7\5\uffff\1\u00a6",
+            "\1\u00a8",
+            "\1\u00a9",
+            "\1\u00ac\1\uffff\1\u00ab\17\uffff\1\u00aa",
             "\1\u00ad",
             "\1\u00ae",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u00af\25\60",
-            "\1\u00b1",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\17\60\1\u00b2\12\60",
-            "\1\u00b4",
-            "\1\u00b5",
+            "\1\u00af",
+            "\1\u00b0",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u00b1\25\60",
+            "\1\u00b3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\17\60\1\u00b4\12\60",
             "\1\u00b6",
             "\1\u00b7",
             "\1\u00b8",
@@ -3728,33 +3813,33 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00bb",
             "\1\u00bc",
             "\1\u00bd",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00be",
             "\1\u00bf",
-            "\1\u00c0",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u00c1",
+            "\1\u00c2",
+            "\1\u00c3",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u00c5",
-            "\1\u00c6",
             "\1\u00c7",
             "\1\u00c8",
             "\1\u00c9",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
             "\1\u00ca",
-            "\1\u00cb\13\uffff\1\u00cc",
-            "\1\u00cd",
-            "\1\u00ce",
+            "\1\u00cb",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "\1\u00cc",
+            "\1\u00cd\13\uffff\1\u00ce",
             "\1\u00cf",
             "\1\u00d0",
             "\1\u00d1",
@@ -3763,17 +3848,17 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00d4",
             "\1\u00d5",
             "\1\u00d6",
-            "\1\u00d7\6\uffff\1\u00d8",
+            "\1\u00d7",
+            "\1\u00d8",
             "\1\u00d9",
-            "",
-            "\1\u00da",
-            "\1\u00db",
+            "\1\u00da\6\uffff\1\u00db",
             "\1\u00dc",
-            "\1\u00de\10\uffff\1\u00dd",
+            "\1\u00dd",
+            "",
+            "\1\u00de",
             "\1\u00df",
             "\1\u00e0",
-            "\1\u00e1",
-            "\1\u00e2",
+            "\1\u00e2\10\uffff\1\u00e1",
             "\1\u00e3",
             "\1\u00e4",
             "\1\u00e5",
@@ -3782,11 +3867,11 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00e8",
             "\1\u00e9",
             "\1\u00ea",
-            "\1\u00ec\12\uffff\1\u00eb",
+            "\1\u00eb",
+            "\1\u00ec",
             "\1\u00ed",
             "\1\u00ee",
-            "\1\u00ef",
-            "\1\u00f0",
+            "\1\u00f0\12\uffff\1\u00ef",
             "\1\u00f1",
             "\1\u00f2",
             "\1\u00f3",
@@ -3795,8 +3880,7 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00f6",
             "\1\u00f7",
             "\1\u00f8",
-            "\1\u00f9",
-            "\1\u00fa",
+            "\1\u00fa\4\uffff\1\u00f9",
             "\1\u00fb",
             "\1\u00fc",
             "\1\u00fd",
@@ -3804,39 +3888,39 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00ff",
             "\1\u0100",
             "\1\u0101",
-            "",
             "\1\u0102",
             "\1\u0103",
-            "",
             "\1\u0104",
             "\1\u0105",
             "\1\u0106",
+            "",
             "\1\u0107",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0108",
+            "",
             "\1\u0109",
             "\1\u010a",
             "\1\u010b",
             "\1\u010c",
-            "\1\u010d",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u010e",
             "\1\u010f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0110",
+            "\1\u0111",
+            "\1\u0112",
             "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0113",
+            "\1\u0114",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0115",
-            "\1\u0116",
-            "\1\u0117\6\uffff\1\u0118",
-            "\1\u0119",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0118",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u011a",
             "\1\u011b",
-            "\1\u011c",
-            "\1\u011d",
+            "\1\u011c\6\uffff\1\u011d",
             "\1\u011e",
             "\1\u011f",
             "\1\u0120",
@@ -3847,434 +3931,454 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u0125",
             "\1\u0126",
             "\1\u0127",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0128",
             "\1\u0129",
-            "\1\u012b\24\uffff\1\u012a",
+            "\1\u012a",
+            "\1\u012b",
             "\1\u012c",
             "\1\u012d",
             "\1\u012e",
-            "\1\u012f",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0130",
-            "\1\u0131",
-            "\1\u0132",
+            "\1\u0132\24\uffff\1\u0131",
             "\1\u0133",
             "\1\u0134",
             "\1\u0135",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0136",
             "\1\u0137",
             "\1\u0138",
             "\1\u0139",
             "\1\u013a",
             "\1\u013b",
             "\1\u013c",
-            "\1\u013d",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u013e",
             "\1\u013f",
             "\1\u0140",
             "\1\u0141",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0143\7\60",
+            "\1\u0142",
+            "\1\u0143",
+            "\1\u0144",
             "\1\u0145",
             "\1\u0146",
             "\1\u0147",
-            "\1\u014a\22\uffff\1\u0149\15\uffff\1\u0148",
-            "\1\u014b",
+            "\1\u0148",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u014a\7\60",
             "\1\u014c",
             "\1\u014d",
             "\1\u014e",
             "\1\u014f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0152",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0152\22\uffff\1\u0151\15\uffff\1\u0150",
+            "\1\u0153",
             "\1\u0154",
             "\1\u0155",
             "\1\u0156",
             "\1\u0157",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u015a",
-            "\1\u015b",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u015c",
             "\1\u015d",
             "\1\u015e",
+            "\1\u015f",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "",
-            "",
-            "\1\u0160",
-            "",
-            "\1\u0161",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0162",
             "\1\u0163",
             "\1\u0164",
             "\1\u0165",
             "\1\u0166",
-            "\1\u0167",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
             "\1\u0168",
+            "",
             "\1\u0169",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u016a",
             "\1\u016b",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u016c",
             "\1\u016d",
             "\1\u016e",
             "\1\u016f",
             "\1\u0170",
             "\1\u0171",
-            "\1\u0172",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0173",
-            "",
-            "\1\u0174",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0175",
             "\1\u0176",
             "\1\u0177",
             "\1\u0178",
             "\1\u0179",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u017a",
             "\1\u017b",
             "\1\u017c",
             "\1\u017d",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\17\60\1\u017f\12\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0181",
             "",
+            "\1\u017e",
+            "\1\u017f",
+            "\1\u0180",
+            "\1\u0181",
             "\1\u0182",
             "\1\u0183",
-            "\1\u0184",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0185",
             "\1\u0186",
             "\1\u0187",
-            "\1\u0188",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u018a",
+            "\12\60\7\uffff\17\60\1\u0189\12\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u018b",
+            "",
             "\1\u018c",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u018d",
             "\1\u018e",
             "\1\u018f",
             "\1\u0190",
             "\1\u0191",
             "\1\u0192",
-            "\1\u0193",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0194",
             "\1\u0195",
             "\1\u0196",
-            "\1\u0197",
-            "\1\u0198",
-            "",
-            "",
-            "\1\u0199",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0199",
+            "\1\u019a",
             "\1\u019b",
             "\1\u019c",
             "\1\u019d",
-            "",
-            "",
             "\1\u019e",
             "\1\u019f",
             "\1\u01a0",
             "\1\u01a1",
             "\1\u01a2",
+            "\1\u01a3",
+            "",
+            "",
+            "\1\u01a4",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u01a4",
-            "\1\u01a5",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01a6\7\60",
+            "\1\u01a6",
+            "\1\u01a7",
             "\1\u01a8",
+            "",
+            "",
             "\1\u01a9",
             "\1\u01aa",
             "\1\u01ab",
             "\1\u01ac",
             "\1\u01ad",
             "",
-            "\1\u01ae",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01af",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01b0\7\60",
-            "\1\u01b2",
+            "\1\u01b0",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01b1\7\60",
             "\1\u01b3",
             "\1\u01b4",
             "\1\u01b5",
             "\1\u01b6",
             "\1\u01b7",
             "\1\u01b8",
+            "",
             "\1\u01b9",
+            "",
             "\1\u01ba",
             "\1\u01bb",
-            "\1\u01bc",
-            "",
-            "\1\u01bd",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01bc\7\60",
+            "\1\u01be",
+            "\1\u01bf",
             "\1\u01c0",
-            "",
             "\1\u01c1",
             "\1\u01c2",
             "\1\u01c3",
             "\1\u01c4",
             "\1\u01c5",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01c6\7\60",
+            "\1\u01c6",
+            "\1\u01c7",
             "\1\u01c8",
             "\1\u01c9",
             "",
             "\1\u01ca",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u01cc",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "\1\u01cd",
+            "",
             "\1\u01ce",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01cf\21\60",
+            "\1\u01cf",
+            "\1\u01d0",
             "\1\u01d1",
             "\1\u01d2",
-            "\1\u01d3",
-            "\1\u01d4",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01d3\7\60",
             "\1\u01d5",
             "\1\u01d6",
+            "",
             "\1\u01d7",
-            "\1\u01d8",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01d9",
+            "",
             "",
             "\1\u01da",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u01dc",
-            "\1\u01dd",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01db",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01dc\21\60",
+            "\1\u01de",
             "\1\u01df",
             "\1\u01e0",
             "\1\u01e1",
-            "",
             "\1\u01e2",
             "\1\u01e3",
+            "\1\u01e4",
+            "\1\u01e5",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u01e5",
-            "\1\u01e6",
             "\1\u01e7",
-            "\1\u01e8",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01e9",
             "\1\u01ea",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01ec",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ed",
+            "\1\u01ee",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01ef",
             "\1\u01f0",
-            "\1\u01f1",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\1\u01f2",
             "\1\u01f3",
             "\1\u01f4",
             "\1\u01f5",
             "\1\u01f6",
             "\1\u01f7",
-            "\1\u01f8",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01f9",
-            "",
-            "",
             "\1\u01fa",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u01fc",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01fd",
             "\1\u01fe",
-            "\1\u01ff",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\1\u0201\31\uffff\1\u0202",
+            "\1\u0200",
+            "\1\u0201",
+            "\1\u0202",
             "\1\u0203",
             "\1\u0204",
-            "",
             "\1\u0205",
             "\1\u0206",
             "\1\u0207",
             "\1\u0208",
             "",
+            "",
             "\1\u0209",
-            "\1\u020a",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u020b",
             "\1\u020c",
             "\1\u020d",
             "\1\u020e",
-            "\1\u020f",
-            "\1\u0210",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
+            "\1\u0210\31\uffff\1\u0211",
             "\1\u0212",
             "\1\u0213",
             "",
             "\1\u0214",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0215",
+            "\1\u0216",
             "\1\u0217",
-            "\1\u0218",
             "",
+            "\1\u0218",
+            "\1\u0219",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u021a\7\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u021b",
+            "\1\u021c",
             "\1\u021d",
             "\1\u021e",
             "\1\u021f",
             "",
-            "\1\u0220",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "\1\u0221",
             "\1\u0222",
+            "",
             "\1\u0223",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0226",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0228",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u022b",
-            "\1\u022c",
+            "\1\u0227",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0229\7\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u022c",
+            "\1\u022d",
             "\1\u022e",
+            "",
             "\1\u022f",
             "\1\u0230",
             "",
+            "",
             "\1\u0231",
             "\1\u0232",
+            "",
             "\1\u0233",
-            "\1\u0234",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0236",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0238",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
             "\1\u023b",
             "\1\u023c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u023f",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u023e",
+            "\1\u023f",
+            "\1\u0240",
+            "",
             "\1\u0241",
             "\1\u0242",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0243",
             "\1\u0244",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0246",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0247",
-            "\1\u0248",
-            "\1\u0249",
-            "\1\u024a",
             "\1\u024b",
             "\1\u024c",
-            "",
-            "",
-            "\1\u024d",
-            "",
-            "\1\u024e",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u024f",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0250",
-            "",
             "\1\u0251",
             "\1\u0252",
-            "\1\u0253",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0254",
-            "\1\u0255",
-            "\1\u0256",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0257",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "",
+            "\1\u0258",
             "\1\u0259",
-            "\1\u025a",
-            "",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u025b",
             "\1\u025c",
             "\1\u025d",
             "",
+            "",
             "\1\u025e",
             "",
-            "",
             "\1\u025f",
-            "\1\u0260",
-            "\1\u0261",
-            "\1\u0262",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0264",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0266",
             "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0261",
+            "",
+            "\1\u0262",
+            "\1\u0263",
+            "\1\u0264",
+            "\1\u0265",
+            "\1\u0266",
             "\1\u0267",
             "\1\u0268",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "",
+            "\1\u026a",
             "\1\u026b",
-            "\1\u026c",
-            "\1\u026d",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u026d",
+            "\1\u026e",
             "",
             "\1\u026f",
-            "\1\u0270",
             "",
+            "",
+            "\1\u0270",
             "\1\u0271",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0272",
+            "",
             "\1\u0273",
-            "\1\u0274",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0275",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0277",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u0278",
             "\1\u0279",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u027c",
+            "\1\u027d",
+            "\1\u027e",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0280",
             "\1\u0281",
             "",
+            "\1\u0282",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
+            "\1\u0284",
+            "\1\u0285",
             "\1\u0286",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u028a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0291",
+            "\1\u0292",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
             "",
             "",
-            "\1\u0288",
+            "",
+            "",
+            "\1\u0297",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "",
+            "\1\u0299",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             ""
@@ -4310,7 +4414,7 @@ public class InternalRsamlTextLexer extends Lexer {
             this.transition = DFA16_transition;
         }
         public String getDescription() {
-            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
+            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
         }
         public int specialStateTransition(int s, IntStream _input) throws NoViableAltException {
             IntStream input = _input;
