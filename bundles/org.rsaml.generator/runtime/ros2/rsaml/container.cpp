@@ -30,7 +30,7 @@ class Container : public rclcpp_components::ComponentManager {
  protected:
   void add_node_to_executor(std::uint64_t node_id) override {
     rclcpp_components::ComponentManager::add_node_to_executor(node_id);
-    ScheduledNode* node = ScheduledNode::rsaml_of(node_wrappers_[node_id].get_node_base_interface().get());
+    Schedule* node = Schedule::rsaml_of(node_wrappers_[node_id].get_node_base_interface().get());
     if (node != nullptr) {
       auto scheduler = std::make_unique<Scheduler>();
       scheduler->add(*node);

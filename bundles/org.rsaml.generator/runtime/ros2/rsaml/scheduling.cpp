@@ -26,7 +26,7 @@ namespace {
 const std::chrono::steady_clock::time_point trace_start = std::chrono::steady_clock::now();
 std::mutex trace_mutex;
 std::mutex registry_mutex;
-std::unordered_map<const rclcpp::node_interfaces::NodeBaseInterface*, ScheduledNode*> registry;
+std::unordered_map<const rclcpp::node_interfaces::NodeBaseInterface*, Schedule*> registry;
 
 std::string ms(std::int64_t ns) {
   char text[32];
@@ -106,21 +106,23 @@ void trace(const std::string& text) {
   std::fflush(stdout);
 }
 
-ScheduledNode::ScheduledNode(const std::string& name, const rclcpp::NodeOptions& options, std::string module, int core)
-    : rclcpp::Node(name, options), module_(std::move(module)), core_(core) {
-  simulated_load_ = this->declare_parameter<double>("rsaml.simulated_load", 0.0);
+Schedule::Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base,
+                   rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers, rclcpp::Clock::SharedPtr clock,
+                   double simulated_load, std::string module, int core)
+    : base_(std::move(base)), timers_(std::move(timers)), clock_(std::move(clock)), module_(std::move(module)), core_(core),
+      simulated_load_(simulated_load) {
   if (!(simulated_load_ >= 0.0 && simulated_load_ <= 1.0)) {
     throw std::invalid_argument("parameter rsaml.simulated_load must be a fraction from 0 to 1 of the modeled execution time");
   }
-  started_ = this->now();
+  started_ = clock_->now();
   std::lock_guard<std::mutex> lock(registry_mutex);
-  registry[this->get_node_base_interface().get()] = this;
+  registry[base_.get()] = this;
 }
 
-ScheduledNode::~ScheduledNode() {
+Schedule::~Schedule() {
   {
     std::lock_guard<std::mutex> lock(registry_mutex);
-    registry.erase(this->get_node_base_interface().get());
+    registry.erase(base_.get());
   }
   std::lock_guard<std::mutex> lock(stats_);
   // The C++ runtime's summary line (docs/timing.md), the same keys in the same order.
@@ -138,14 +140,14 @@ ScheduledNode::~ScheduledNode() {
   }
 }
 
-ScheduledNode* ScheduledNode::rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base) {
+Schedule* Schedule::rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base) {
   std::lock_guard<std::mutex> lock(registry_mutex);
   auto found = registry.find(base);
   return found == registry.end() ? nullptr : found->second;
 }
 
-std::size_t ScheduledNode::rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns,
-                                             std::int64_t cost_ns, std::int64_t period_ns, std::int64_t bound_ns, bool edf) {
+std::size_t Schedule::rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns,
+                                        std::int64_t cost_ns, std::int64_t period_ns, std::int64_t bound_ns, bool edf) {
   Release r;
   r.label = label;
   r.rank = rank;
@@ -155,26 +157,26 @@ std::size_t ScheduledNode::rsaml_add_release(const std::string& label, int rank,
   r.deadline_ns = deadline_ns;
   r.cost_ns = cost_ns;
   r.bound_ns = bound_ns;
-  r.group = this->create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);
+  r.group = base_->create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);
   releases_.push_back(std::move(r));
   return releases_.size() - 1;
 }
 
-std::size_t ScheduledNode::rsaml_add_arrivals(const std::string& port) {
+std::size_t Schedule::rsaml_add_arrivals(const std::string& port) {
   Arrivals a;
   a.port = port;
   arrivals_.push_back(std::move(a));
   return arrivals_.size() - 1;
 }
 
-void ScheduledNode::busy(std::int64_t cpu_ns) const {
+void Schedule::busy(std::int64_t cpu_ns) const {
   const std::int64_t until = thread_cpu_ns() + cpu_ns;
   while (thread_cpu_ns() < until) {
   }
 }
 
-void ScheduledNode::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
-                                  const std::function<void()>& body) {
+void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
+                             const std::function<void()>& body) {
   Release& r = releases_[release];
   std::int64_t execution = 0;
   {
@@ -186,7 +188,7 @@ void ScheduledNode::rsaml_run_job(std::size_t release, const rclcpp::Time& relea
     body();
     execution = thread_cpu_ns() - cpu;
   }
-  const std::int64_t response = (this->now() - released).nanoseconds();
+  const std::int64_t response = (clock_->now() - released).nanoseconds();
   const std::int64_t latency = (called - released).nanoseconds();
   const std::int64_t at = (released - started_).nanoseconds();
   bool missed = false;
@@ -214,12 +216,12 @@ void ScheduledNode::rsaml_run_job(std::size_t release, const rclcpp::Time& relea
   }
 }
 
-void ScheduledNode::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
+void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
   {
     std::lock_guard<std::mutex> lock(activation_);
     body();
   }
-  const std::int64_t at = (this->now() - started_).nanoseconds();
+  const std::int64_t at = (clock_->now() - started_).nanoseconds();
   std::lock_guard<std::mutex> lock(stats_);
   Arrivals& a = arrivals_[port];
   ++a.messages;
@@ -231,11 +233,11 @@ void ScheduledNode::rsaml_run_arrival(std::size_t port, const std::function<void
 
 Scheduler::~Scheduler() { stop(); }
 
-void Scheduler::add(ScheduledNode& node) {
+void Scheduler::add(Schedule& node) {
   for (Release& r : node.rsaml_releases()) {
     auto worker = std::make_unique<Worker>();
     auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
-    executor->add_callback_group(r.group, node.get_node_base_interface());
+    executor->add_callback_group(r.group, node.rsaml_base());
     worker->executor = executor;
     Release* release = &r;
     const int core = node.rsaml_core();

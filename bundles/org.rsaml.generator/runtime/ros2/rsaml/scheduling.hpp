@@ -58,23 +58,29 @@ struct Arrivals {
 };
 
 /**
- * The base of every generated node: its releases, the lock its activations hold (the module's
- * lock of the analysis: a release and a reaction of one node never run at once) and the
- * measurements it prints at exit.
+ * What every generated node has, plain or managed: its releases, the lock its activations hold (the
+ * module's lock of the analysis: a release and a reaction of one node never run at once) and the
+ * measurements it prints at exit. It works through the node's interfaces, which rclcpp::Node and
+ * rclcpp_lifecycle::LifecycleNode both offer.
  */
-class ScheduledNode : public rclcpp::Node {
+class Schedule {
  public:
-  ScheduledNode(const std::string& name, const rclcpp::NodeOptions& options, std::string module, int core);
-  ~ScheduledNode() override;
-  ScheduledNode(const ScheduledNode&) = delete;
-  ScheduledNode& operator=(const ScheduledNode&) = delete;
+  /** The schedule of `node` (an rclcpp::Node or rclcpp_lifecycle::LifecycleNode), which declares rsaml.simulated_load. */
+  template <typename NodeT>
+  Schedule(NodeT& node, std::string module, int core)
+      : Schedule(node.get_node_base_interface(), node.get_node_timers_interface(), node.get_clock(),
+                 node.template declare_parameter<double>("rsaml.simulated_load", 0.0), std::move(module), core) {}
+  virtual ~Schedule();
+  Schedule(const Schedule&) = delete;
+  Schedule& operator=(const Schedule&) = delete;
 
-  /** The node of a node base interface, when it is a generated node of this package; else null. */
-  static ScheduledNode* rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base);
+  /** The schedule of a node base interface, when it is a generated node of this package; else null. */
+  static Schedule* rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base);
 
   /** The CPU core of the node's processor, or -1. */
   int rsaml_core() const { return core_; }
   std::deque<Release>& rsaml_releases() { return releases_; }
+  const rclcpp::node_interfaces::NodeBaseInterface::SharedPtr& rsaml_base() const { return base_; }
 
  protected:
   /**
@@ -92,16 +98,16 @@ class ScheduledNode : public rclcpp::Node {
   rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {
 #if RCLCPP_VERSION_GTE(28, 0, 0)
     return rclcpp::create_timer(
-        this, this->get_clock(), rclcpp::Duration::from_nanoseconds(period_ns),
+        base_, timers_, clock_, rclcpp::Duration::from_nanoseconds(period_ns),
         [this, release, body](const rclcpp::TimerInfo& info) {
           this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
         },
         releases_[release].group);
 #else
     return rclcpp::create_timer(
-        this, this->get_clock(), rclcpp::Duration::from_nanoseconds(period_ns),
+        base_, timers_, clock_, rclcpp::Duration::from_nanoseconds(period_ns),
         [this, release, body]() {
-          const rclcpp::Time now = this->now();
+          const rclcpp::Time now = clock_->now();
           this->rsaml_run_job(release, now, now, body);
         },
         releases_[release].group);
@@ -120,8 +126,13 @@ class ScheduledNode : public rclcpp::Node {
   void rsaml_run_arrival(std::size_t port, const std::function<void()>& body);
 
  private:
+  Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base, rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers,
+           rclcpp::Clock::SharedPtr clock, double simulated_load, std::string module, int core);
   void busy(std::int64_t cpu_ns) const;
 
+  rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base_;
+  rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers_;
+  rclcpp::Clock::SharedPtr clock_;
   std::string module_;
   int core_;
   double simulated_load_;
@@ -130,6 +141,13 @@ class ScheduledNode : public rclcpp::Node {
   std::mutex stats_;
   std::deque<Release> releases_;
   std::deque<Arrivals> arrivals_;
+};
+
+/** The base of every generated plain node: an rclcpp node with its schedule. */
+class ScheduledNode : public rclcpp::Node, public Schedule {
+ public:
+  ScheduledNode(const std::string& name, const rclcpp::NodeOptions& options, std::string module, int core)
+      : rclcpp::Node(name, options), Schedule(static_cast<rclcpp::Node&>(*this), std::move(module), core) {}
 };
 
 /**
@@ -145,7 +163,7 @@ class Scheduler {
   Scheduler(const Scheduler&) = delete;
   Scheduler& operator=(const Scheduler&) = delete;
 
-  void add(ScheduledNode& node);
+  void add(Schedule& node);
   /** Stops and joins every thread (before the nodes are destroyed). */
   void stop();
 
@@ -167,7 +185,7 @@ int run_standalone(int argc, char** argv) {
     auto node = std::make_shared<NodeT>(rclcpp::NodeOptions());
     Scheduler scheduler;
     scheduler.add(*node);
-    executor.add_node(node);
+    executor.add_node(node->get_node_base_interface());
     executor.spin();
     scheduler.stop();
   }

@@ -69,6 +69,10 @@ class Ros2CmakeTemplate extends Ros2Template {
 		find_package(ament_cmake REQUIRED)
 		find_package(rclcpp REQUIRED)
 		find_package(rclcpp_components REQUIRED)
+		«IF managed»
+			find_package(rclcpp_lifecycle REQUIRED)
+			find_package(lifecycle_msgs REQUIRED)
+		«ENDIF»
 		find_package(Threads REQUIRED)
 		«FOR p : context.messagePackages»
 			find_package(«p» REQUIRED)
@@ -82,7 +86,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 		  «ENDFOR»
 		)
 		target_include_directories(${PROJECT_NAME} PUBLIC gen src)
-		target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp Threads::Threads«FOR p : context.messagePackages» ${«p»_TARGETS}«ENDFOR» PRIVATE rclcpp_components::component)
+		target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp«IF managed» rclcpp_lifecycle::rclcpp_lifecycle«ENDIF» Threads::Threads«FOR p : context.messagePackages» ${«p»_TARGETS}«ENDFOR» PRIVATE rclcpp_components::component)
 		rclcpp_components_register_nodes(${PROJECT_NAME}
 		  «FOR m : plan.modules»
 		  	"«context.plugin(m)»"
@@ -93,6 +97,12 @@ class Ros2CmakeTemplate extends Ros2Template {
 		add_executable(«rosNames.containerExecutable» gen/rsaml/container.cpp)
 		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
 
+		«IF managed»
+			# The lifecycle manager of the launch files: configures and activates the managed nodes.
+			add_executable(«rosNames.lifecycleManagerExecutable» gen/rsaml/lifecycle_manager.cpp)
+			target_link_libraries(«rosNames.lifecycleManagerExecutable» PRIVATE rclcpp::rclcpp ${lifecycle_msgs_TARGETS})
+
+		«ENDIF»
 		# An executable per node, scheduled as in the container.
 		«FOR m : plan.modules»
 			add_executable(«m.executable» gen/«m.layerId»/«m.mainName».cpp)
@@ -102,11 +112,16 @@ class Ros2CmakeTemplate extends Ros2Template {
 		include(user.cmake)
 
 		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
-		install(TARGETS «rosNames.containerExecutable»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
+		install(TARGETS «rosNames.containerExecutable»«IF managed» «rosNames.lifecycleManagerExecutable»«ENDIF»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
 		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
 
 		ament_package()
 	'''
+
+	/** Whether some node is managed: then the package uses rclcpp_lifecycle and builds the lifecycle manager. */
+	def private managed() {
+		!rosNames.managedModules.empty
+	}
 
 	def interfacesUserCmake() '''
 		# «Templates.USER_OWNED» CMakeLists.txt includes it before

@@ -70,7 +70,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 			from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
 		«ENDIF»
 		«IF composed»
-			from launch_ros.actions import ComposableNodeContainer
+			from launch_ros.actions import ComposableNodeContainer«IF !rosNames.managedModules.empty», Node«ENDIF»
 			from launch_ros.descriptions import ComposableNode
 		«ELSE»
 			from launch_ros.actions import Node
@@ -195,6 +195,13 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
 		        «ENDIF»
+		        «FOR c : rosNames.containers.filter[modules.exists[managed]]»
+		        	# The managed nodes«IF c.processor !== null» of processor '«Names.comment(c.processor.name)»'«ENDIF»: configured, then activated, once they are up.
+		        	Node(package=«py(pkg)», executable=«py(rosNames.lifecycleManagerExecutable)», name=«py(c.name.replaceFirst("_container$", "") + "_lifecycle_manager")»,
+		        	     namespace=namespace, output='screen',
+		        	     parameters=[{'node_names': [«FOR m : c.modules.filter[managed] SEPARATOR ", "»«py(m.rosNode)»«ENDFOR»]}]«IF hosted»,
+		        	     condition=«onHost(c.processor)»«ENDIF»),
+		        «ENDFOR»
 		    ]
 
 

@@ -27,6 +27,7 @@ import org.rsaml.analysis.plan.LinkPlan;
 import org.rsaml.analysis.plan.PlannedModule;
 import org.rsaml.analysis.plan.PlannedPort;
 import org.rsaml.analysis.plan.Release;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.Processor;
 import org.rsaml.model.support.RsamlTopics;
@@ -75,6 +76,8 @@ public final class Ros2Names {
     private final String interfacesPackage;
     private final Map<PlannedModule, String> executables = new IdentityHashMap<>();
     private final String containerExecutable;
+    private final String lifecycleManagerExecutable;
+    private final List<PlannedModule> managed;
     private final Map<PlannedPort, String> topics = new IdentityHashMap<>();
     private final Map<String, RosMessage> messages = new LinkedHashMap<>();
     private final Map<PlannedPort, Boolean> sensorTopics = new IdentityHashMap<>();
@@ -135,6 +138,8 @@ public final class Ros2Names {
             containers.add(unallocated);
         }
         containerExecutable = executableScope.allocate(names.project() + "_component_container");
+        lifecycleManagerExecutable = executableScope.allocate(names.project() + "_lifecycle_manager");
+        managed = plan.modules().stream().filter(m -> m.module().effectiveLifecycle() == NodeLifecycle.MANAGED).toList();
         NameScope messageScope = new NameScope(true);
         for (String key : plan.messageTypes()) {
             messages.put(key, new RosMessage(interfacesPackage, key, messageScope));
@@ -294,6 +299,21 @@ public final class Ros2Names {
         policies.put("history", "keep_last");
         policies.put("depth", sensorStream(p) ? "5" : "10");
         return policies;
+    }
+
+    /** Whether the module's node is managed (an rclcpp_lifecycle node): its own lifecycle, else its architecture's. */
+    public boolean managed(PlannedModule m) {
+        return managed.contains(m);
+    }
+
+    /** The modules whose nodes are managed, in model order. */
+    public List<PlannedModule> managedModules() {
+        return managed;
+    }
+
+    /** The executable that configures and activates the managed nodes (built only when there are some). */
+    public String lifecycleManagerExecutable() {
+        return lifecycleManagerExecutable;
     }
 
     /** For a module in a reactive cycle, the least time between two reactions (0: not in a cycle). */

@@ -57,7 +57,12 @@ class Ros2NodeTemplate extends Ros2Template {
 		#include <string>
 
 		#include <rclcpp/rclcpp.hpp>
-		#include "rsaml/scheduling.hpp"
+		«IF m.managed»
+			#include <rclcpp_lifecycle/lifecycle_node.hpp>
+			#include "rsaml/lifecycle.hpp"
+		«ELSE»
+			#include "rsaml/scheduling.hpp"
+		«ENDIF»
 		«FOR h : headersOf(m)»
 			#include <«h»>
 		«ENDFOR»
@@ -72,70 +77,33 @@ class Ros2NodeTemplate extends Ros2Template {
 		 * model's times are parameters in the model's units (the name ends with the unit: period_ms),
 		 * with the model's values as defaults (config/«pkg».params.yaml sets them); QoS can be
 		 * overridden with the qos_overrides.<topic> parameters; timers run on the node's clock
-		 * (use_sim_time).
+		 * (use_sim_time).«IF m.managed»
+		 * A managed node (rclcpp_lifecycle): created unconfigured; configure creates its publishers and
+		 * subscriptions, activate starts its timers and lets it publish and react (what arrives before is
+		 * dropped), deactivate stops both, cleanup and shutdown release them. The launch files activate it.«ENDIF»
 		 */
-		class «m.baseName» : public ::«names.project»::rsaml_ros2::ScheduledNode {
+		class «m.baseName» : public ::«names.project»::rsaml_ros2::«IF m.managed»ScheduledLifecycleNode«ELSE»ScheduledNode«ENDIF» {
 		 public:
 		  explicit «m.baseName»(const rclcpp::NodeOptions& options)
-		      : ::«names.project»::rsaml_ros2::ScheduledNode(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
-		    «FOR r : m.releases»
-		    	«r.timerMember»_period_ = «declare(context.periodParameter(r))»;
-		    «ENDFOR»
-		    «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
-		    	«f.lastRunMember»_interval_ = «declare(context.intervalParameter(f))»;
-		    «ENDFOR»
-		    «IF m.reactive && m.reactionIntervalNs > 0»
-		    	reaction_interval_ = «declare(context.reactionParameter(m))»;
+		      : ::«names.project»::rsaml_ros2::«IF m.managed»ScheduledLifecycleNode«ELSE»ScheduledNode«ENDIF»(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
+		    «parameters(m)»
+		    «IF m.managed»
+		    	// Created unconfigured: publishers and subscriptions come with configure, timers with activate.
+		    	«FOR r : m.releases»
+		    		«r.timerMember»_release_ = this->rsaml_add_release(
+		    		    «str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs», «r.timerMember»_period_,
+		    		    «context.bounds.of(r).responseNs», «IF r.edf»true«ELSE»false«ENDIF»);
+		    	«ENDFOR»
+		    	«FOR p : m.inputs»
+		    		«p.subName»_port_ = this->rsaml_add_arrivals(«str(p.name)»);
+		    	«ENDFOR»
+		    	«FOR l : context.linksOf(m)»
+		    		link_«l.stem»_port_ = this->rsaml_add_arrivals(«str(l.qualifiedName)»);
+		    	«ENDFOR»
+		    «ELSE»
+		    	«entities(m)»
+		    	«timers(m)»
 		    «ENDIF»
-		    «FOR l : context.linksOf(m)»
-		    	link_«l.stem»_duration_ = «declare(context.durationParameter(l))»;
-		    «ENDFOR»
-		    rclcpp::PublisherOptions publisher_options;
-		    publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
-		    rclcpp::SubscriptionOptions subscription_options;
-		    subscription_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
-		    (void)publisher_options;
-		    (void)subscription_options;
-		    «FOR p : m.outputs»
-		    	«p.pubName»_ = this->create_publisher<«p.rosType»>(«str(p.topic)», «p.qos», publisher_options);
-		    «ENDFOR»
-		    «FOR p : m.inputs»
-		    	«p.subName»_ = this->create_subscription<«p.rosType»>(
-		    	    «str(p.topic)», «p.qos»,
-		    	    [this, port = this->rsaml_add_arrivals(«str(p.name)»)](std::shared_ptr<const «p.rosType»> message) {
-		    	      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(*message, false); });
-		    	    },
-		    	    subscription_options);
-		    «ENDFOR»
-		    «FOR l : context.linksOf(m)»
-		    	// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «IF l.trigger.assertsOnlyWhenTrue»each true on «ELSE»each message on «ENDIF»«doc(l.trigger.qualifiedName)».
-		    	link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
-		    	    «str(l.trigger.topic)», «l.trigger.qos»,
-		    	    [this, port = this->rsaml_add_arrivals(«str(l.qualifiedName)»)](std::shared_ptr<const «l.trigger.rosType»> message) {
-		    	      this->rsaml_run_arrival(port, [&] {
-		    	        «IF l.trigger.assertsOnlyWhenTrue»
-		    	        	if (!message->data) {
-		    	        	  return;  // only true asserts the link: false neither starts nor ends it, nor is delivered
-		    	        	}
-		    	        «ENDIF»
-		    	        link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
-		    	        «IF l.deliversData»
-		    	        	this->«l.target.receiveName»(*message, true);
-		    	        «ELSE»
-		    	        	(void)message;
-		    	        «ENDIF»
-		    	      });
-		    	    },
-		    	    subscription_options);
-		    «ENDFOR»
-		    «FOR r : m.releases»
-		    	// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank»«IF r.edf» (EDF: SCHED_DEADLINE)«ENDIF», deadline «r.deadlineNs» ns, cost «r.costNs» ns;
-		    	// «context.boundComment(r)»
-		    	«r.timerMember»_ = this->rsaml_add_timer(
-		    	    this->rsaml_add_release(«str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs»,
-		    	                            «r.timerMember»_period_, «context.bounds.of(r).responseNs», «IF r.edf»true«ELSE»false«ENDIF»),
-		    	    «r.timerMember»_period_, [this] { this->«r.method»(); });
-		    «ENDFOR»
 		  }
 		  «IF !m.inputs.empty»
 
@@ -169,8 +137,11 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	/** Called on each message at «doc(p.name)», before the node reacts. */
 		  	virtual void «p.onName»(const «p.rosType»& message) { (void)message; }
 		  «ENDFOR»
-		  /** Publishes every output port (unless an inhibitor blocks it). */
+		  /** Publishes every output port (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF»). */
 		  virtual void publish_outputs() {
+		    «IF m.managed»
+		    	«inactiveReturn»
+		    «ENDIF»
 		    «FOR p : m.outputs»
 		    	«IF p.inhibitors.empty»
 		    		«p.pubName»_->publish(«p.outName»);
@@ -181,6 +152,10 @@ class Ros2NodeTemplate extends Ros2Template {
 		    	«ENDIF»
 		    «ENDFOR»
 		  }
+		  «IF m.managed»
+
+		  	«transitions(m)»
+		  «ENDIF»
 
 		 private:
 		  /** A time parameter in nanoseconds: from 1 ns to 2^60 ns, as the generated code counts time. */
@@ -193,6 +168,10 @@ class Ros2NodeTemplate extends Ros2Template {
 		    return std::llround(ns);
 		  }
 
+		  «IF m.managed»
+		  	«releaseEntities(m)»
+
+		  «ENDIF»
 		  /** Whether a subsumption link is active now (on the node's clock). */
 		  bool active(const std::optional<rclcpp::Time>& until) { return until && this->now() < *until; }
 
@@ -208,6 +187,9 @@ class Ros2NodeTemplate extends Ros2Template {
 		  «FOR r : m.releases»
 
 		  	void «r.method»() {
+		  	  «IF m.managed»
+		  	  	«inactiveReturn»
+		  	  «ENDIF»
 		  	  «release(r)»
 		  	  publish_outputs();
 		  	}
@@ -256,7 +238,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	std::optional<rclcpp::Time> last_reaction_;
 		  «ENDIF»
 		  «FOR p : m.outputs»
-		  	rclcpp::Publisher<«p.rosType»>::SharedPtr «p.pubName»_;
+		  	«IF m.managed»rclcpp_lifecycle::LifecyclePublisher«ELSE»rclcpp::Publisher«ENDIF»<«p.rosType»>::SharedPtr «p.pubName»_;
 		  «ENDFOR»
 		  «FOR p : m.inputs»
 		  	rclcpp::Subscription<«p.rosType»>::SharedPtr «p.subName»_;
@@ -269,9 +251,189 @@ class Ros2NodeTemplate extends Ros2Template {
 		  «FOR r : m.releases»
 		  	rclcpp::TimerBase::SharedPtr «r.timerMember»_;
 		  «ENDFOR»
+		  «IF m.managed»
+		  	«FOR r : m.releases»
+		  		std::size_t «r.timerMember»_release_;
+		  	«ENDFOR»
+		  	«FOR p : m.inputs»
+		  		std::size_t «p.subName»_port_;
+		  	«ENDFOR»
+		  	«FOR l : context.linksOf(m)»
+		  		std::size_t link_«l.stem»_port_;
+		  	«ENDFOR»
+		  «ENDIF»
 		};
 
 		}  // namespace «names.project»::«m.layerId»
+	'''
+
+	/** Declares the node's parameters (in its constructor, managed or not). */
+	def private parameters(PlannedModule m) '''
+		«FOR r : m.releases»
+			«r.timerMember»_period_ = «declare(context.periodParameter(r))»;
+		«ENDFOR»
+		«FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
+			«f.lastRunMember»_interval_ = «declare(context.intervalParameter(f))»;
+		«ENDFOR»
+		«IF m.reactive && m.reactionIntervalNs > 0»
+			reaction_interval_ = «declare(context.reactionParameter(m))»;
+		«ENDIF»
+		«FOR l : context.linksOf(m)»
+			link_«l.stem»_duration_ = «declare(context.durationParameter(l))»;
+		«ENDFOR»
+	'''
+
+	/** Creates the publishers and subscriptions: in the constructor of a plain node, when a managed node is configured. */
+	def private entities(PlannedModule m) '''
+		rclcpp::PublisherOptions publisher_options;
+		publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		rclcpp::SubscriptionOptions subscription_options;
+		subscription_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		(void)publisher_options;
+		(void)subscription_options;
+		«FOR p : m.outputs»
+			«p.pubName»_ = this->create_publisher<«p.rosType»>(«str(p.topic)», «p.qos», publisher_options);
+		«ENDFOR»
+		«FOR p : m.inputs»
+			«p.subName»_ = this->create_subscription<«p.rosType»>(
+			    «str(p.topic)», «p.qos»,
+			    [this, port = «IF m.managed»«p.subName»_port_«ELSE»this->rsaml_add_arrivals(«str(p.name)»)«ENDIF»](std::shared_ptr<const «p.rosType»> message) {
+			      «IF m.managed»
+			      	«inactiveReturn»
+			      «ENDIF»
+			      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(*message, false); });
+			    },
+			    subscription_options);
+		«ENDFOR»
+		«FOR l : context.linksOf(m)»
+			// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «IF l.trigger.assertsOnlyWhenTrue»each true on «ELSE»each message on «ENDIF»«doc(l.trigger.qualifiedName)».
+			link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
+			    «str(l.trigger.topic)», «l.trigger.qos»,
+			    [this, port = «IF m.managed»link_«l.stem»_port_«ELSE»this->rsaml_add_arrivals(«str(l.qualifiedName)»)«ENDIF»](std::shared_ptr<const «l.trigger.rosType»> message) {
+			      «IF m.managed»
+			      	«inactiveReturn»
+			      «ENDIF»
+			      this->rsaml_run_arrival(port, [&] {
+			        «IF l.trigger.assertsOnlyWhenTrue»
+			        	if (!message->data) {
+			        	  return;  // only true asserts the link: false neither starts nor ends it, nor is delivered
+			        	}
+			        «ENDIF»
+			        link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
+			        «IF l.deliversData»
+			        	this->«l.target.receiveName»(*message, true);
+			        «ELSE»
+			        	(void)message;
+			        «ENDIF»
+			      });
+			    },
+			    subscription_options);
+		«ENDFOR»
+	'''
+
+	/**
+	 * Creates the timers of the releases: in the constructor of a plain node, when a managed node is
+	 * activated (its releases and their callback groups exist from its constructor on, so that their
+	 * executor threads serve the timers whenever they are created).
+	 */
+	def private timers(PlannedModule m) '''
+		«FOR r : m.releases»
+			// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank»«IF r.edf» (EDF: SCHED_DEADLINE)«ENDIF», deadline «r.deadlineNs» ns, cost «r.costNs» ns;
+			// «context.boundComment(r)»
+			«IF m.managed»
+				«r.timerMember»_ = this->rsaml_add_timer(«r.timerMember»_release_, «r.timerMember»_period_, [this] { this->«r.method»(); });
+			«ELSE»
+				«r.timerMember»_ = this->rsaml_add_timer(
+				    this->rsaml_add_release(«str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs»,
+				                            «r.timerMember»_period_, «context.bounds.of(r).responseNs», «IF r.edf»true«ELSE»false«ENDIF»),
+				    «r.timerMember»_period_, [this] { this->«r.method»(); });
+			«ENDIF»
+		«ENDFOR»
+	'''
+
+
+	/** A managed node drops what arrives while it is not active. */
+	def private inactiveReturn() '''
+		if (!this->rsaml_active()) {
+		  return;  // not active
+		}
+	'''
+
+	/** The transitions of a managed node. */
+	def private transitions(PlannedModule m) '''
+		  // The transitions of the managed node; an override of yours calls these.
+		  CallbackReturn on_configure(const rclcpp_lifecycle::State& state) override {
+		    (void)state;
+		    «entities(m)»
+		    this->rsaml_state(false, "inactive");
+		    return CallbackReturn::SUCCESS;
+		  }
+
+		  CallbackReturn on_activate(const rclcpp_lifecycle::State& state) override {
+		    (void)state;
+		    «FOR p : m.outputs»
+		    	«p.pubName»_->on_activate();
+		    «ENDFOR»
+		    «timers(m)»
+		    this->rsaml_state(true, "active");
+		    return CallbackReturn::SUCCESS;
+		  }
+
+		  CallbackReturn on_deactivate(const rclcpp_lifecycle::State& state) override {
+		    (void)state;
+		    this->rsaml_state(false, "inactive");
+		    rsaml_stop_timers();
+		    «FOR p : m.outputs»
+		    	«p.pubName»_->on_deactivate();
+		    «ENDFOR»
+		    return CallbackReturn::SUCCESS;
+		  }
+
+		  CallbackReturn on_cleanup(const rclcpp_lifecycle::State& state) override {
+		    (void)state;
+		    rsaml_release_entities();
+		    this->rsaml_state(false, "unconfigured");
+		    return CallbackReturn::SUCCESS;
+		  }
+
+		  CallbackReturn on_shutdown(const rclcpp_lifecycle::State& state) override {
+		    (void)state;
+		    this->rsaml_state(false, "finalized");
+		    rsaml_release_entities();
+		    return CallbackReturn::SUCCESS;
+		  }
+	'''
+
+	/** What a managed node releases when it is deactivated, cleaned up or shut down. */
+	def private releaseEntities(PlannedModule m) '''
+		  void rsaml_stop_timers() {
+		    «FOR r : m.releases»
+		    	if («r.timerMember»_) {
+		    	  «r.timerMember»_->cancel();
+		    	  «r.timerMember»_.reset();
+		    	}
+		    «ENDFOR»
+		  }
+
+		  void rsaml_release_entities() {
+		    rsaml_stop_timers();
+		    «FOR p : m.outputs»
+		    	«p.pubName»_.reset();
+		    «ENDFOR»
+		    «FOR p : m.inputs»
+		    	«p.subName»_.reset();
+		    «ENDFOR»
+		    «FOR l : context.linksOf(m)»
+		    	link_«l.stem»_sub_.reset();
+		    	link_«l.stem»_until_.reset();
+		    «ENDFOR»
+		    «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
+		    	«f.lastRunMember».reset();
+		    «ENDFOR»
+		    «IF m.reactive && m.reactionIntervalNs > 0»
+		    	last_reaction_.reset();
+		    «ENDIF»
+		  }
 	'''
 
 	def private release(Release r) {

@@ -43,6 +43,9 @@ class Ros2PackageTemplate extends Ros2Template {
 		val description = if (doc(plan.description).empty) "The RsaML architecture " + plan.name else plan.description
 		val depends = new TreeSet<String>(#{"rclcpp", "rclcpp_components"})
 		depends += context.messagePackages
+		if (!context.rosNames.managedModules.empty) {
+			depends += #["rclcpp_lifecycle", "lifecycle_msgs"]
+		}
 		val generated = <String>newHashSet
 		generated += "buildtool_depend ament_cmake"
 		depends.forEach[generated += "depend " + it]

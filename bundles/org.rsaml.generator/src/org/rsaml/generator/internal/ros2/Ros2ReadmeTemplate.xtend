@@ -49,6 +49,16 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		there names the topic as the model does; the launch files give it to the topic as remapped and
 		namespaced, the name ROS 2 looks the override up by. A file they cannot take (not YAML, a time
 		that is not a positive number, a time a node no longer has) is refused with its line.
+		«IF !rosNames.managedModules.empty»
+
+		Managed nodes (`rclcpp_lifecycle`): «FOR m : rosNames.managedModules SEPARATOR ", "»`«m.rosNode»`«ENDFOR». Each starts unconfigured;
+		*configure* creates its publishers and subscriptions, *activate* activates the publishers and
+		starts its timers, *deactivate* stops both, *cleanup* and *shutdown* release them; while it is
+		not active it publishes nothing and drops what arrives (an override of yours of `on_configure`
+		and the like calls the generated one). Both launch files start `«rosNames.lifecycleManagerExecutable»`,
+		which configures and activates them once they are up and then exits; `ros2 lifecycle get` shows
+		their states, `ros2 lifecycle set` changes them.
+		«ENDIF»
 		«IF rosNames.containers.exists[processor !== null]»
 
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,

@@ -92,6 +92,11 @@ class Ros2Files {
 		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {
 			files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
 		}
+		if (!rosNames.managedModules.empty) {
+			for (f : #["lifecycle.hpp", "lifecycle_manager.cpp"]) {
+				files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
+			}
+		}
 		files += GeneratedFile.generated(pkg + "/gen/rsaml/realtime.hpp", "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
 		for (m : context.plan.modules) {
 			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", node.base(m))

@@ -160,10 +160,16 @@ class TimerBase {
 namespace node_interfaces {
 class NodeBaseInterface {
  public:
+  using SharedPtr = std::shared_ptr<NodeBaseInterface>;
   virtual ~NodeBaseInterface() = default;
+  CallbackGroup::SharedPtr create_callback_group(CallbackGroupType group_type,
+                                                bool automatically_add_to_executor_with_node = true) {
+    return std::make_shared<CallbackGroup>(group_type, automatically_add_to_executor_with_node);
+  }
 };
 class NodeTimersInterface {
  public:
+  using SharedPtr = std::shared_ptr<NodeTimersInterface>;
   virtual ~NodeTimersInterface() = default;
 };
 }  // namespace node_interfaces
@@ -263,6 +269,24 @@ TimerBase::SharedPtr create_timer(NodeT node, Clock::SharedPtr clock, Duration p
   return nullptr;
 }
 
+// rclcpp/create_timer.hpp: the same through the node's interfaces (what a lifecycle node offers too).
+template <typename CallbackT>
+TimerBase::SharedPtr create_timer(std::shared_ptr<node_interfaces::NodeBaseInterface> node_base,
+                                  std::shared_ptr<node_interfaces::NodeTimersInterface> node_timers, Clock::SharedPtr clock,
+                                  Duration period, CallbackT&& callback, CallbackGroup::SharedPtr group = nullptr,
+                                  bool autostart = true) {
+  static_assert(std::is_invocable_v<CallbackT> || std::is_invocable_v<CallbackT, const TimerInfo&>,
+                "timer callback takes nothing or the timer's call times");
+  (void)node_base;
+  (void)node_timers;
+  (void)clock;
+  (void)period;
+  (void)callback;
+  (void)group;
+  (void)autostart;
+  return nullptr;
+}
+
 // rclcpp/utilities.hpp, rclcpp/executors.hpp
 inline void init(int argc, char const* const* argv) {
   (void)argc;
@@ -284,6 +308,10 @@ class Executor {
     (void)notify;
   }
   void add_node(std::shared_ptr<Node> node_ptr, bool notify = true) {
+    (void)node_ptr;
+    (void)notify;
+  }
+  void add_node(std::shared_ptr<node_interfaces::NodeBaseInterface> node_ptr, bool notify = true) {
     (void)node_ptr;
     (void)notify;
   }
