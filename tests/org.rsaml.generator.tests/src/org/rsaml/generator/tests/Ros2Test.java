@@ -247,7 +247,8 @@ class Ros2Test {
         // are the node's.)
         String all = allText(root.resolve("gen"));
         String scheduling = Files.readString(root.resolve("gen/rsaml/scheduling.hpp"));
-        assertTrue(scheduling.contains("rclcpp::create_timer(\n        this, this->get_clock(),"), scheduling);
+        assertTrue(scheduling.contains("rclcpp::create_timer(\n        base_, timers_, clock_,") && scheduling.contains("node.get_clock()"),
+                "the timers of a plain or managed node are on the node's clock:\n" + scheduling);
         assertFalse(all.contains("create_wall_timer"), "a wall timer ignores use_sim_time");
         assertFalse(all.contains("steady_clock"), "steady_clock ignores use_sim_time");
         assertTrue(all.contains("publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();"));
