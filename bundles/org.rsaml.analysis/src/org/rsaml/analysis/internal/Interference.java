@@ -66,25 +66,6 @@ final class Interference {
         heapKey[i] = limit[k];
     }
 
-    /**
-     * Takes the state of {@code other}, an interference over the same entries: the later jobs of a busy
-     * period continue from its first job's window without moving {@code other} there and back (the next
-     * task's first job starts near where this one's did), at the cost of a copy instead of a recount.
-     */
-    void copyFrom(Interference other) {
-        if (other.period != period || other.cost != cost || other.jitter != jitter) {
-            throw new IllegalArgumentException("not the same entries");
-        }
-        n = other.n;
-        size = other.size;
-        w = other.w;
-        sum = other.sum;
-        System.arraycopy(other.jobs, 0, jobs, 0, n);
-        System.arraycopy(other.limit, 0, limit, 0, n);
-        System.arraycopy(other.heap, 0, heap, 0, size);
-        System.arraycopy(other.heapKey, 0, heapKey, 0, size);
-    }
-
     /** Entry {@code k}'s cost has just changed by {@code delta}. */
     public void costChanged(int k, long delta) {
         if (w == Long.MIN_VALUE) {
@@ -163,5 +144,139 @@ final class Interference {
         }
         heap[i] = k;
         heapKey[i] = key;
+    }
+    /**
+     * The interference of a busy period's later jobs, continued from the first job's window of an
+     * {@link Interference} without changing it (the next task's first job starts near where this one's
+     * did): the entries whose counts change are taken from the first's heap as a tree, smallest first
+     * (a place's children join a small heap of their own once the place is taken), and go on in that
+     * small heap with their new counts. No copy of every entry: a step costs O(log s) for the s entries
+     * the later jobs have touched.
+     */
+    static final class Later {
+        private final Interference first;
+        private final long[] jobs;
+        private final long[] limit;
+        /** The small heap: keys, and items (a place of the first's heap, or -(entry + 1)). */
+        private long[] key = new long[64];
+        private int[] item = new int[64];
+        private int size;
+        private long w = Long.MIN_VALUE;
+        private long sum;
+
+        Later(Interference first) {
+            this.first = first;
+            this.jobs = new long[first.period.length];
+            this.limit = new long[first.period.length];
+        }
+
+        /** From the first's present window and counts. */
+        void start() {
+            size = 0;
+            w = first.w;
+            sum = first.sum;
+            if (w != Long.MIN_VALUE && first.size > 0) {
+                push(first.heapKey[0], 0);
+            }
+        }
+
+        /** The interference in a window of length {@code window}. */
+        long at(long window) {
+            try {
+                return advance(window);
+            } catch (ArithmeticException e) {
+                w = Long.MIN_VALUE;
+                throw e;
+            }
+        }
+
+        private long advance(long window) {
+            if (w == Long.MIN_VALUE || window < w) {
+                // from scratch: every entry counted at the window (not met in a busy period's later jobs)
+                size = 0;
+                sum = 0;
+                for (int k = 0; k < first.n; k++) {
+                    count(k, window);
+                    sum = Math.addExact(sum, Math.multiplyExact(jobs[k], first.cost[k]));
+                    push(limit[k], -(k + 1));
+                }
+                w = window;
+                return sum;
+            }
+            w = window;
+            while (size > 0 && key[0] < window) {
+                int it = item[0];
+                pop();
+                int k;
+                long before;
+                if (it >= 0) {
+                    // a place of the first's heap: its entry not yet touched here, its children next
+                    k = first.heap[it];
+                    before = first.jobs[k];
+                    int child = 2 * it + 1;
+                    if (child < first.size) {
+                        push(first.heapKey[child], child);
+                    }
+                    if (child + 1 < first.size) {
+                        push(first.heapKey[child + 1], child + 1);
+                    }
+                } else {
+                    k = -it - 1;
+                    before = jobs[k];
+                }
+                count(k, window);
+                sum = Math.addExact(sum, Math.multiplyExact(jobs[k] - before, first.cost[k]));
+                push(limit[k], -(k + 1));
+            }
+            return sum;
+        }
+
+        private void count(int k, long window) {
+            long x = Math.addExact(window, first.jitter[k]);
+            jobs[k] = x / first.period[k] + (x % first.period[k] == 0 ? 0 : 1);
+            limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], first.period[k]), first.jitter[k]);
+        }
+
+        private void push(long k, int it) {
+            if (size == key.length) {
+                key = java.util.Arrays.copyOf(key, 2 * size);
+                item = java.util.Arrays.copyOf(item, 2 * size);
+            }
+            int i = size++;
+            while (i > 0 && key[(i - 1) / 2] > k) {
+                key[i] = key[(i - 1) / 2];
+                item[i] = item[(i - 1) / 2];
+                i = (i - 1) / 2;
+            }
+            key[i] = k;
+            item[i] = it;
+        }
+
+        private void pop() {
+            size--;
+            if (size == 0) {
+                return;
+            }
+            long k = key[size];
+            int it = item[size];
+            int i = 0;
+            while (true) {
+                int child = 2 * i + 1;
+                if (child >= size) {
+                    break;
+                }
+                if (child + 1 < size && key[child + 1] < key[child]) {
+                    child++;
+                }
+                if (key[child] >= k) {
+                    break;
+                }
+                key[i] = key[child];
+                item[i] = item[child];
+                i = child;
+            }
+            key[i] = k;
+            item[i] = it;
+        }
     }
 }

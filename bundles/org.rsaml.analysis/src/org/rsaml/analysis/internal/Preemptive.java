@@ -51,8 +51,8 @@ public final class Preemptive {
     /**
      * @param interference     the entries' interference (a caller walking down the priority levels
      *                         keeps one for all its tasks, see {@link Interference})
-     * @param later            when not null, an interference over the same entries that the jobs after the
-     *                         first use, from the first's window on, so that {@code interference} stays at
+     * @param later            when not null, the interference of the jobs after the first, continued from
+     *                         the first's window without moving {@code interference}, so that it stays at
      *                         the first job's window, where the next task starts
      * @param tied             when not null, the busy period of the task's level shared by the tasks tied
      *                         at it ({@link LevelExcess}): each job's window read from it instead of iterated,
@@ -70,7 +70,7 @@ public final class Preemptive {
      * @param overload         the level's utilisation as the verdict of an overload states it
      * @param summary          the witness of a miss
      */
-    static TaskResult of(Task task, int effective, Interference interference, Interference later, LevelExcess.Tied tied, long[] period, long[] cost, int n, long base,
+    static TaskResult of(Task task, int effective, Interference interference, Interference.Later later, LevelExcess.Tied tied, long[] period, long[] cost, int n, long base,
             double levelUtilisation, long seed, long[] firstWindow, Supplier<Double> overload, Summary summary) {
         if (firstWindow != null) {
             firstWindow[0] = -1;
@@ -94,15 +94,15 @@ public final class Preemptive {
             long worstJob = 0;
             long steps = 0;
             long w = -1;
-            Interference current = interference;
+            boolean moved = false;
             for (long q = 0;; q++) {
                 if (q >= ResponseTimes.MAX_JOBS) {
                     return ResponseTimes.notAnalysed(task, "its busy period holds more than " + ResponseTimes.MAX_JOBS + " of its jobs");
                 }
                 long own = Math.multiplyExact(q + 1, task.cost());
                 if (q == 1 && later != null && tied == null) {
-                    later.copyFrom(interference);
-                    current = later;
+                    later.start();
+                    moved = true;
                 }
                 // Job q's window is at least job q-1's plus one more cost (its least fixed point is above
                 // that), so the window only grows through the busy period and the interference follows it.
@@ -123,7 +123,7 @@ public final class Preemptive {
                         return ResponseTimes.notAnalysed(task, "the response-time iteration did not settle within "
                                 + ResponseTimes.MAX_STEPS + " steps");
                     }
-                    long next = Math.addExact(own, current.at(w));
+                    long next = Math.addExact(own, moved ? later.at(w) : interference.at(w));
                     if (next == w) {
                         break;
                     }

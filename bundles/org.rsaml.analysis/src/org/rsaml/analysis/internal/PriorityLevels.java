@@ -22,8 +22,8 @@ import org.rsaml.analysis.TaskResult;
  * <ul>
  * <li>one entry per distinct (period, jitter), whose interference {@link Interference} keeps as the
  * window grows, within a task's busy period and from task to task (the first jobs' windows grow from
- * task to task; the later jobs of a long busy period continue on a copy, so that the next task does not
- * start below where the interference stands);</li>
+ * task to task; the later jobs of a long busy period continue from it without moving it
+ * ({@link Interference.Later}), so that the next task does not start below where the interference stands);</li>
  * <li>the sum of their costs (the first window's floor) and their utilisation (the level's overload);</li>
  * <li>a lower bound of the next level's first window: this level's;</li>
  * <li>the tasks themselves, by period, for a miss's summary witness ({@link DelayingTasks}).</li>
@@ -65,7 +65,7 @@ public final class PriorityLevels {
         int[] entryOf = new int[n];
         int entries = 0;
         Interference interference = new Interference(period, cost, jitter, 0);
-        Interference later = new Interference(period, cost, jitter, 0);
+        Interference.Later later = new Interference.Later(interference);
         DelayingTasks prefix = new DelayingTasks(delaying);
         // the sum of all costs at or above the level (-1 once too large to add), and their utilisation
         long total = 0;
