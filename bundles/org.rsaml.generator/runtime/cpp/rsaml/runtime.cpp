@@ -209,7 +209,8 @@ Activation::~Activation() {
 
 Activation* Activation::current() { return current_activation; }
 
-Module::Module(System& system, std::string name, int core) : system_(system), name_(std::move(name)), core_(core) {}
+Module::Module(System& system, std::string name, int core, std::string host, int cpu)
+    : system_(system), name_(std::move(name)), core_(core), host_(std::move(host)), cpu_(cpu >= 0 ? cpu : core) {}
 
 Module::~Module() { stop_worker(); }
 
@@ -227,7 +228,7 @@ void Module::post(std::uint64_t wave, std::function<void()> work) {
 void Module::start_worker() {
   if (!worker_.joinable()) {
     worker_ = std::thread([this] { run_worker(); });
-    system_.place(worker_.native_handle(), name_, core_);
+    system_.place(worker_.native_handle(), name_, *this);
   }
 }
 
@@ -408,9 +409,12 @@ void System::claim_cores() {
 #if defined(__linux__)
   cpu_set_t claimed;
   CPU_ZERO(&claimed);
+  std::set<std::string> coreless;  // the hosts of the modules without a core
   for (Module* module : modules_) {
-    if (module->core() >= 0 && module->core() < CPU_SETSIZE) {
-      CPU_SET(module->core(), &claimed);
+    if (module->core() < 0) {
+      coreless.insert(module->host().empty() ? "main" : module->host());
+    } else if (module->cpu() < CPU_SETSIZE) {
+      CPU_SET(module->cpu(), &claimed);
       cores_claimed_ = true;
     }
   }
@@ -426,22 +430,37 @@ void System::claim_cores() {
       }
     }
   }
+  if (coreless.size() > 1) {
+    std::string hosts;
+    for (const std::string& h : coreless) {
+      hosts += (hosts.empty() ? "" : ", ") + h;
+    }
+    Trace::report("cpu the modules without a core of hosts " + hosts + " share the cores no processor claims on this machine, while" +
+                  " the analysis counts each host's apart: their bounds do not hold in this run (give their processors cores)");
+  }
 #endif
 }
 
-void System::place(std::thread::native_handle_type thread, const std::string& label, int core) {
+void System::place(std::thread::native_handle_type thread, const std::string& label, const Module& module) {
+  const int core = module.core();
+  // Another host's core on a CPU of its own: one program runs every host (the generator's choice, docs/timing.md).
+  const std::string where = "core " + std::to_string(core) +
+                            (module.cpu() == core ? std::string()
+                                                  : " of host " + module.host() + " on CPU " + std::to_string(module.cpu()) +
+                                                        " (one program runs every host: each host's cores on CPUs of their own)");
 #if defined(__linux__)
   if (core >= 0) {
-    if (core < CPU_SETSIZE) {
+    const int cpu = module.cpu();
+    if (cpu < CPU_SETSIZE) {
       cpu_set_t set;
       CPU_ZERO(&set);
-      CPU_SET(core, &set);
+      CPU_SET(cpu, &set);
       if (pthread_setaffinity_np(thread, sizeof(set), &set) == 0) {
-        Trace::line("cpu " + label + " core " + std::to_string(core));
+        Trace::line("cpu " + label + " " + where);
         return;
       }
     }
-    Trace::line("cpu " + label + " core " + std::to_string(core) + " not available: default");
+    Trace::line("cpu " + label + " " + where + " not available: default");
     return;
   }
   if (!cores_claimed_) {
@@ -462,7 +481,7 @@ void System::place(std::thread::native_handle_type thread, const std::string& la
 #else
   (void)thread;
   if (core >= 0) {
-    Trace::line("cpu " + label + " core " + std::to_string(core) + " not supported on this platform: default");
+    Trace::line("cpu " + label + " " + where + " not supported on this platform: default");
   }
 #endif
 }
@@ -473,7 +492,7 @@ void System::schedule_self(Release& r) {
 #else
   const std::thread::native_handle_type self{};
 #endif
-  place(self, r.label, r.module->core());
+  place(self, r.label, *r.module);
   if (!options_.realtime) {
     r.sched = "default";
   } else if (r.policy == Policy::Deadline) {
@@ -490,7 +509,7 @@ void System::schedule_self(Release& r) {
         CPU_SET(cpu, &set);
       }
       pthread_setaffinity_np(self, sizeof(set), &set);
-      where = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->core()) +
+      where = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->cpu()) +
               " alone (the kernel admits a deadline thread only on all CPUs of its root domain)";
     }
 #endif
@@ -500,10 +519,10 @@ void System::schedule_self(Release& r) {
                 millis(r.period) + where + " (kernel: " + rsaml_realtime::kernel_policy() + ")";
     }
 #if defined(__linux__)
-    if (!refused.empty() && !where.empty() && r.module->core() < CPU_SETSIZE) {
+    if (!refused.empty() && !where.empty() && r.module->cpu() < CPU_SETSIZE) {
       cpu_set_t set;
       CPU_ZERO(&set);
-      CPU_SET(r.module->core(), &set);
+      CPU_SET(r.module->cpu(), &set);
       pthread_setaffinity_np(self, sizeof(set), &set);  // back on its core, as traced
     }
 #endif

@@ -134,8 +134,12 @@ class Activation {
 /** The base of every generated module class. */
 class Module {
  public:
-  /** core: the CPU core the module's threads are pinned to (its processor's), or -1 for the OS's choice. */
-  Module(System& system, std::string name, int core = -1);
+  /**
+   * core: the CPU core the module's threads are pinned to (its processor's), or -1 for the OS's
+   * choice; host: its processor's host, "" for the main host; cpu: the CPU of this machine its core
+   * is, when this one program runs several hosts' processors (-1: the core's own number).
+   */
+  Module(System& system, std::string name, int core = -1, std::string host = "", int cpu = -1);
   virtual ~Module();
   Module(const Module&) = delete;
   Module& operator=(const Module&) = delete;
@@ -144,6 +148,9 @@ class Module {
   const std::string& name() const { return name_; }
   System& system() { return system_; }
   int core() const { return core_; }
+  const std::string& host() const { return host_; }
+  /** The CPU of this machine its threads are pinned to: its core, or another host's core's CPU here. */
+  int cpu() const { return cpu_; }
 
   // Used by the runtime and the generated code.
   void post(std::uint64_t wave, std::function<void()> work);
@@ -195,6 +202,8 @@ class Module {
   System& system_;
   std::string name_;
   int core_;
+  std::string host_;
+  int cpu_;
   std::recursive_mutex mutex_;
   std::mutex mail_mutex_;
   std::condition_variable mail_cv_;
@@ -354,11 +363,11 @@ class System {
   int run(const Options& options);
 
   /**
-   * Places a thread of a module: on core (its processor's) when it is 0 or more; otherwise, when
-   * some processor claims a core, on the cores none claims, so that no processor's core runs work
-   * its analysis does not count. Says so in the trace, or why it could not.
+   * Places a thread of a module: on its processor's core (its CPU here) when it has one; otherwise,
+   * when some processor claims a core, on the cores none claims, so that no processor's core runs
+   * work its analysis does not count. Says so in the trace, or why it could not.
    */
-  void place(std::thread::native_handle_type thread, const std::string& label, int core);
+  void place(std::thread::native_handle_type thread, const std::string& label, const Module& module);
   /**
    * Gives the calling worker thread of a module priority 0 of the analysis, below every release:
    * SCHED_FIFO at the lowest real-time priority where permitted. Says which in the trace.
@@ -397,7 +406,10 @@ class System {
   void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu);
   void print_summary();
 
-  /** Finds the cores the processors claim and the ones left for threads without a core. */
+  /**
+   * Finds the cores the processors claim (their CPUs here) and the ones left for threads without a
+   * core; says when the modules without a core of several hosts must share those.
+   */
   void claim_cores();
 
   std::string name_;

@@ -9,6 +9,7 @@
 
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -36,7 +37,16 @@ struct SchedAttr {
 };
 #endif
 
-/** The calling thread's policy as the kernel reports it. */
+inline std::string kernel_ms(std::uint64_t ns) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f ms", static_cast<double>(ns) / 1e6);
+  return text;
+}
+
+/**
+ * The calling thread's policy as the kernel reports it (sched_getattr), with the runtime, deadline
+ * and period it holds for a SCHED_DEADLINE thread.
+ */
 inline std::string kernel_policy() {
 #if defined(__linux__)
   SchedAttr attr{};
@@ -47,7 +57,9 @@ inline std::string kernel_policy() {
     case SCHED_OTHER: return "SCHED_OTHER";
     case SCHED_FIFO: return "SCHED_FIFO";
     case SCHED_RR: return "SCHED_RR";
-    case kSchedDeadline: return "SCHED_DEADLINE";
+    case kSchedDeadline:
+      return "SCHED_DEADLINE runtime " + kernel_ms(attr.sched_runtime) + " deadline " + kernel_ms(attr.sched_deadline) + " period " +
+             kernel_ms(attr.sched_period);
     default: return "policy " + std::to_string(attr.sched_policy);
   }
 #else

@@ -31,7 +31,9 @@ import org.rsaml.analysis.plan.Reaction;
 import org.rsaml.analysis.plan.Release;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
+import org.rsaml.generator.internal.cxx.OneMachineCpus;
 import org.rsaml.model.Architecture;
+import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.ModelLoader;
 
 /**
@@ -47,18 +49,18 @@ import org.rsaml.validation.ModelLoader;
  * summary of every release, the analysis's bound written into the program, the jobs counted, the
  * busy work consumed, and misses and overruns reported as they happen.
  * <p>
- * {@link #ALLOWANCE_NS} is the platform's part of a response that the model does not count: the
- * timer's wake-up latency of each release (measured, and shown as worst-start-latency), context
- * switches and the runtime's own bookkeeping.
+ * The platform's part of a response, which the model does not count, is measured: the start latency
+ * of the run's releases that nothing in the model delays, or a calibration run, plus a stated
+ * constant for the bookkeeping ({@link PlatformCheck}); every check says the allowance it used and
+ * where it came from. While other programs' real-time threads run, the bound is not checked, and
+ * the test says so ({@link PlatformCheck#otherRealtime}); with {@code RSAML_TIMING_BOUNDS=required}
+ * (CI) that fails instead.
+ * <p>
+ * Slow on a shared machine (6.5 minutes on two cores under a load average near 20, mostly building the
+ * programs): run it alone with {@code -Dtest=JobTimingTest -Dsurefire.failIfNoSpecifiedTests=false}
+ * (or one method, {@code -Dtest=JobTimingTest#anEdfProcessorRunsUnderSchedDeadline}).
  */
 class JobTimingTest {
-
-    /**
-     * What the model does not count: wake-up latency, context switches, the runtime's bookkeeping. Fixed, not
-     * measured: 2 ms, as for the ROS 2 nodes; the timer of a top-rank release, which nothing else delays, has been
-     * seen to wake 1.4 ms late on an otherwise idle two-core virtual machine.
-     */
-    static final long ALLOWANCE_NS = 2_000_000;
 
     static final long RUN_MS = 700;
 
@@ -232,8 +234,9 @@ class JobTimingTest {
             String granted = String.format(Locale.ROOT, "SCHED_DEADLINE runtime %d.000 ms deadline %d.000 ms period %d.000 ms", cost,
                     period, period);
             if (s.sched().startsWith("SCHED_DEADLINE")) {
-                assertTrue(s.sched().startsWith(granted) && s.sched().endsWith("(kernel: SCHED_DEADLINE)"),
-                        "the kernel's policy for " + s.label() + ": " + s.sched());
+                assertTrue(s.sched().startsWith(granted) && s.sched().endsWith("(kernel: " + granted + ")"),
+                        "the kernel's policy, runtime, deadline and period (sched_getattr) for " + s.label() + ": " + s.sched());
+                System.out.println("JobTimingTest edf: SCHED_DEADLINE in force for " + s.label() + " (" + s.sched() + ")");
             } else {
                 assertTrue(s.sched().matches("(SCHED_FIFO rank \\d+|default) instead of EDF: .+"), "the fallback, said: " + s.sched());
                 System.out.println("JobTimingTest: SCHED_DEADLINE not granted here (" + s.sched() + "): checked the fallback and its report");
@@ -242,29 +245,75 @@ class JobTimingTest {
     }
 
     /**
+     * Two hosts' "core 0" in one program: mobile-base-latency with its navigation processor moved to
+     * core 0 of the board "nav-board". The analysis counts the two processors apart (different
+     * hosts), so the one program gives the board's core 0 a CPU of its own on this machine (CPU 1,
+     * said in the trace), and every release is held to its bound there.
+     */
+    @Test
+    void twoHostsCoresGetCpusOfTheirOwnInOneProgram(@TempDir Path tmp) throws Exception {
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        String nav = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
+        assertTrue(text.contains(nav), "mobile-base-latency's navigation processor");
+        Path model = tmp.resolve("two-hosts.rsaml");
+        Files.writeString(model, text.replace(nav, "<processors name=\"core1\" description=\"Core 0 of the navigation board.\" core=\"0\""
+                + " host=\"nav-board\""));
+        Path out = tmp.resolve("project");
+        new RsamlGenerator().generate(model, Target.CPP, out, false);
+        Architecture arch = ModelLoader.load(model, "two-hosts.rsaml").architecture();
+        ArchitectureTiming timing = TimingAnalysis.analyse(arch);
+        assertEquals(2, timing.processors().size(), "two processors, analysed apart");
+        assertTrue(bounds(timing).containsKey("navigation/obstacleDetector.detect") && bounds(timing).containsKey("control/velocityController.control"),
+                "both processors' releases are bounded by the analysis: " + bounds(timing));
+        Path exe = Tools.cmakeBuild(out, CppExamplesTest.executableName(out));
+        RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", "200"));
+        assertEquals(List.of("cpu control/velocityController core 0"), trace.matching("cpu control/velocityController core"),
+                "the main host's core 0 is CPU 0");
+        List<String> board = trace.matching("cpu navigation/obstacleDetector");
+        assertTrue(!board.isEmpty(), "the board's module is placed:\n" + Tools.last(trace.output, 3000));
+        if (Runtime.getRuntime().availableProcessors() >= 2) {
+            for (String line : board) {
+                assertTrue(line.startsWith("cpu navigation/obstacleDetector") && line.contains(" core 0 of host nav-board on CPU 1 (one program runs every host"),
+                        "the board's core 0 on a CPU of its own, said: " + line);
+            }
+            runAndCheck(arch, out, "two-hosts");
+        } else {
+            assertTrue(board.stream().allMatch(l -> l.endsWith(" not available: default")),
+                    "on one CPU, the board's CPU 1 is not there, said plainly: " + board);
+        }
+    }
+
+    /**
      * Null when the release's threads have a CPU to themselves on this machine, as the analysis
-     * assumes: its processor's core exists here and no other thread of the program strays onto it
+     * assumes: its processor's core has a CPU here and no other thread of the program strays onto it
      * (the runtime confines the threads without a core to the cores no processor claims), or it has
-     * no core and those unclaimed cores are exactly one. Else why not.
+     * no core and those unclaimed cores are exactly one. Else why not. The cores of processors on
+     * other hosts have CPUs of their own in the program ({@link OneMachineCpus}).
      */
     static String notApart(Architecture arch, org.rsaml.model.Module module) {
         int cores = Runtime.getRuntime().availableProcessors();
-        java.util.Set<Integer> claimed = new java.util.TreeSet<>();
+        Map<org.rsaml.model.Processor, Integer> cpus = OneMachineCpus.of(arch);
         boolean coreless = false;
+        java.util.Set<String> corelessHosts = new java.util.TreeSet<>();
         for (org.rsaml.model.Layer layer : arch.getLayers()) {
             for (org.rsaml.model.Module m : layer.getModules()) {
                 org.rsaml.model.Processor p = processor(arch, m);
                 if (p == null || p.getCore() < 0) {
                     coreless = true;
-                } else if (p.getCore() >= cores) {
-                    return "processor " + p.getName() + "'s core " + p.getCore() + " is not among this machine's " + cores
-                            + ", so its threads run anywhere";
+                    corelessHosts.add(RsamlLabels.host(p));
                 } else {
-                    claimed.add(p.getCore());
+                    int cpu = cpus.get(p);
+                    if (cpu >= cores) {
+                        return "processor " + p.getName() + "'s core " + p.getCore() + (cpu == p.getCore() ? "" : " (CPU " + cpu + " here)")
+                                + " is not among this machine's " + cores + ", so its threads run anywhere";
+                    }
                 }
             }
         }
-        int unclaimed = cores - claimed.size();
+        if (corelessHosts.size() > 1) {
+            return "the modules without a core of hosts " + corelessHosts + " share the unclaimed cores";
+        }
+        int unclaimed = cores - new java.util.HashSet<>(cpus.values()).size();
         org.rsaml.model.Processor p = processor(arch, module);
         for (org.rsaml.model.Processor q : arch.getProcessors()) {
             if (q != p && q.isSetSchedPolicy() && q.getSchedPolicy() == org.rsaml.model.SchedulingPolicy.EDF && !q.getModules().isEmpty()) {
@@ -281,7 +330,7 @@ class JobTimingTest {
         return arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst().orElse(null);
     }
 
-    private static String module(String name, long period, double cost, String policy) {
+    static String module(String name, long period, double cost, String policy) {
         String timing = String.format(Locale.ROOT, "timeUnit=\"ms\" type=\"realTime\" period=\"%d.0\" delay=\"%d.0\" execDuration=\"%s\""
                 + " execType=\"periodic\"", period, period, cost);
         return "    <modules name=\"" + name + "\" " + timing + ">\n      <functions name=\"f\" " + timing + " schedPolicy=\"" + policy
@@ -297,7 +346,7 @@ class JobTimingTest {
     }
 
     /** A model of one layer, "tasks", holding the modules, and the processors. */
-    private static String modelText(String name, String modules, String processors) {
+    static String modelText(String name, String modules, String processors) {
         return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<rsaml:Architecture xmi:version=\"2.0\" xmlns:xmi=\"http://www.omg.org/XMI\""
                 + " xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"" + name
@@ -306,9 +355,13 @@ class JobTimingTest {
                 + "</rsaml:Architecture>\n";
     }
 
-    /** The worst observed response within the bound, where the job was scheduled as analysed; else noted in unchecked. */
-    private static void checkBound(Architecture arch, org.rsaml.model.Module module, String label, JobSummary s, Long bound, String what,
-            String output, List<String> unchecked) {
+    /** A bound to check once the run's allowance is known. */
+    private record Bounded(String label, org.rsaml.model.Module module, JobSummary summary, long bound) {
+    }
+
+    /** Where the job was scheduled as analysed, its bound to check; else noted in unchecked. */
+    private static void toCheck(Architecture arch, org.rsaml.model.Module module, String label, JobSummary s, Long bound,
+            List<Bounded> checks, List<String> unchecked) {
         if (bound == null) {
             return;
         }
@@ -317,11 +370,7 @@ class JobTimingTest {
             unchecked.add(label + " (" + (apart != null ? apart : s.sched()) + ")");
             return;
         }
-        System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s, bound %s, worst start latency %s, %s%n", what,
-                label, s.jobs(), ms(s.worstNs()), ms(bound), ms(s.latencyNs()), s.sched());
-        assertTrue(s.worstNs() <= bound + ALLOWANCE_NS, what + ": " + label + " responded in " + ms(s.worstNs())
-                + ", more than the analysis's bound " + ms(bound) + " (+ " + ms(ALLOWANCE_NS) + " for the platform)\n"
-                + Tools.last(output, 3000));
+        checks.add(new Bounded(label, module, s, bound));
     }
 
     /**
@@ -330,7 +379,12 @@ class JobTimingTest {
      */
     static Map<String, JobSummary> runAndCheck(Architecture arch, Path project, String what) throws Exception {
         Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
-        String output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS), "--quiet", "--busy-work", "100");
+        String output;
+        java.util.Set<String> otherRealtime;
+        try (PlatformCheck.RealtimeWatch watch = new PlatformCheck.RealtimeWatch()) {
+            output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS), "--quiet", "--busy-work", "100");
+            otherRealtime = watch.seen();
+        }
         Map<String, JobSummary> summaries = JobSummary.of(output);
         ExecutionPlan plan = ExecutionPlan.of(arch);
         Map<String, Long> bounds = bounds(TimingAnalysis.analyse(arch));
@@ -340,6 +394,7 @@ class JobTimingTest {
         assertEquals(labels.stream().sorted().toList(), summaries.keySet().stream().sorted().toList(),
                 what + ": a summary line per timed release and per reacting module\n" + Tools.last(output, 3000));
         List<String> unchecked = new ArrayList<>();
+        List<Bounded> checks = new ArrayList<>();
         for (Reaction x : plan.reactions()) {
             JobSummary s = summaries.get(x.label());
             Long bound = bounds.get(x.label());
@@ -351,7 +406,7 @@ class JobTimingTest {
             }
             assertEquals(s.misses(), trace.matching("miss " + x.label() + " job ").size(), what + ": a line per miss of " + x.label());
             assertEquals(s.overruns(), trace.matching("overrun " + x.label() + " job ").size(), what + ": a line per overrun of " + x.label());
-            checkBound(arch, x.module().module(), x.label(), s, bound, what, output, unchecked);
+            toCheck(arch, x.module().module(), x.label(), s, bound, checks, unchecked);
         }
         for (Release r : plan.releases()) {
             JobSummary s = summaries.get(r.label());
@@ -373,7 +428,35 @@ class JobTimingTest {
             if (s.misses() > 0) {
                 assertTrue(s.worstNs() > s.deadlineNs(), what + ": a miss is a response past the deadline: " + s);
             }
-            checkBound(arch, r.module().module(), r.label(), s, bound, what, output, unchecked);
+            toCheck(arch, r.module().module(), r.label(), s, bound, checks, unchecked);
+        }
+        if (!checks.isEmpty() && !otherRealtime.isEmpty()) {
+            PlatformCheck.otherRealtime("JobTimingTest " + what, otherRealtime);
+            checks.forEach(c -> unchecked.add(c.label() + " (other programs' real-time threads ran)"));
+            checks.clear();
+        }
+        if (!checks.isEmpty()) {
+            PlatformCheck.Allowance allowance = PlatformCheck.fromRun(
+                    PlatformCheck.probes(arch, plan, summaries, r -> notApart(arch, r.module().module())), summaries);
+            if (allowance == null) {
+                allowance = PlatformCheck.calibrate();
+            }
+            assertTrue(allowance != null || !PlatformCheck.required(),
+                    "RSAML_TIMING_BOUNDS=required: the calibration run got no real-time scheduling, so no bound can be checked");
+            if (allowance == null) {
+                checks.forEach(c -> unchecked.add(c.label() + " (the calibration run got no real-time scheduling)"));
+                checks.clear();
+            } else {
+                System.out.println("JobTimingTest " + what + ": allowance for the platform " + allowance);
+            }
+            for (Bounded c : checks) {
+                JobSummary s = c.summary();
+                System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s, bound %s, worst start latency %s, %s%n",
+                        what, c.label(), s.jobs(), ms(s.worstNs()), ms(c.bound()), ms(s.latencyNs()), s.sched());
+                assertTrue(s.worstNs() <= c.bound() + allowance.ns(), what + ": " + c.label() + " responded in " + ms(s.worstNs())
+                        + ", more than the analysis's bound " + ms(c.bound()) + " plus the platform's allowance " + allowance + "\n"
+                        + Tools.last(output, 3000));
+            }
         }
         if (!unchecked.isEmpty()) {
             System.out.println("JobTimingTest " + what + ": not scheduled as analysed on this machine: " + unchecked

@@ -11,8 +11,10 @@ import org.rsaml.analysis.plan.PlannedModule
 import org.rsaml.analysis.plan.Reaction
 import org.rsaml.analysis.plan.Release
 import org.rsaml.generator.internal.cxx.CxxNames
+import org.rsaml.generator.internal.cxx.OneMachineCpus
 import org.rsaml.generator.internal.cxx.ReleaseBounds
 import org.rsaml.model.SchedulingPolicy
+import org.rsaml.model.support.RsamlLabels
 
 /**
  * A module's generated base class, gen/LAYER/ModuleBase.hpp and .cpp: its typed ports, its timed
@@ -138,7 +140,7 @@ class CppModuleTemplate extends CppTemplate {
 		namespace «ns(m)» {
 
 		«m.baseName»::«m.baseName»(::rsaml::System& system)
-		    : ::rsaml::Module(system, «str(m.qualifiedName)»«IF m.core >= 0», «m.core»«ENDIF»)«FOR p : m.inputs»,
+		    : ::rsaml::Module(system, «str(m.qualifiedName)»«IF m.core >= 0 || !RsamlLabels.host(m.processor).empty», «m.core»«ENDIF»«IF !RsamlLabels.host(m.processor).empty», «str(RsamlLabels.host(m.processor))», «OneMachineCpus.cpu(m.processor)»«ENDIF»)«FOR p : m.inputs»,
 		      «p.inName»(*this, «str(p.name)», [this](const «p.cppType»& value) { «p.receiveName»(value); })«ENDFOR»«FOR p : m.outputs»,
 		      «p.outName»(*this, «str(p.name)»)«ENDFOR» {
 		  «FOR r : m.releases»

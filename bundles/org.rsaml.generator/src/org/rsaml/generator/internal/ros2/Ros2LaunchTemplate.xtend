@@ -7,6 +7,7 @@ package org.rsaml.generator.internal.ros2
 import org.rsaml.generator.internal.Names
 import org.rsaml.model.support.RsamlLabels
 import org.rsaml.generator.internal.cxx.CxxNames
+import org.rsaml.generator.internal.cxx.OneMachineCpus
 
 /**
  * The two launch files, written by one template: &lt;pkg&gt;.launch.py starts the nodes as components
@@ -178,7 +179,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		ComposableNodeContainer(
 		        		    name=«py(c.name)», namespace=namespace, package=«py(pkg)»,
 		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«IF c.core >= 0»
-		        		    prefix=«py(taskset(c.core))»,«ENDIF»«IF hosted»
+		        		    prefix=«prefix(c.processor, c.core)»,«ENDIF»«IF hosted»
 		        		    condition=«onHost(c.processor)»,«ENDIF»
 		        		    composable_node_descriptions=[
 		        		        «FOR m : c.modules»
@@ -191,7 +192,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	«FOR m : plan.modules»
 		        		Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
 		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.core >= 0»,
-		        		     prefix=«py(taskset(m.core))»«ENDIF»«IF hosted»,
+		        		     prefix=«prefix(m.processor, m.core)»«ENDIF»«IF hosted»,
 		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
 		        «ENDIF»
@@ -242,6 +243,20 @@ class Ros2LaunchTemplate extends Ros2Template {
 	def private onHost(org.rsaml.model.Processor p) {
 		val host = RsamlLabels.host(p)
 		"IfCondition(PythonExpression([\"'\", LaunchConfiguration('host'), " + py("' in ('', " + py(if (host.empty) "main" else host) + ")") + "]))"
+	}
+
+	/**
+	 * The launch prefix of a process of processor p, on its core: without host:= one machine starts
+	 * every host's processes, and another host's core that the analysis counts apart from this one's
+	 * is pinned to a CPU of its own there (OneMachineCpus, as the C++ program does); with host:=, to
+	 * its core. The shell gets "host=" and the argument's value as "$0".
+	 */
+	def private prefix(org.rsaml.model.Processor p, int core) {
+		val cpu = OneMachineCpus.cpu(p)
+		if (!hosted || cpu < 0 || cpu == core) return py(taskset(core))
+		"[" + py("sh -c 'case \"$0\" in host=) c=" + cpu + ";; *) c=" + core + ";; esac; "
+			+ "if taskset -c $c true 2>/dev/null; then exec taskset -c $c \"$@\"; fi; "
+			+ "echo \"RsaML: CPU core $c not available: $1 runs unpinned\" >&2; exec \"$@\"' host=") + ", LaunchConfiguration('host')]"
 	}
 
 	/**
