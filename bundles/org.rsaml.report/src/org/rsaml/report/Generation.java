@@ -44,6 +44,15 @@ public final class Generation {
                     + (result.deleted().isEmpty() ? "" : ", " + result.deleted().size() + " obsolete removed");
         }
 
+        /**
+         * Whether the findings report goes to standard output in {@code format}: always in a structured format
+         * (a tool reads it, clean or not), in text only when the model has findings ({@link #errors()} say why a
+         * model could not be read).
+         */
+        public boolean showsReport(ReportFormat format) {
+            return format != ReportFormat.TEXT || report.results().stream().anyMatch(r -> !r.findings().isEmpty());
+        }
+
         /** The generator's remarks (what the model cannot express in code, methods of yours no longer called). */
         public List<String> warnings(String modelShown) {
             return result == null ? List.of() : result.warnings().stream().map(w -> modelShown + ": warning: " + w).toList();

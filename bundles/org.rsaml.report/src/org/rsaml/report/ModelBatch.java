@@ -9,7 +9,6 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.rsaml.validation.ModelLoadException;
-import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
@@ -28,14 +27,6 @@ public final class ModelBatch {
     /** Validates the named files and directories against the RsaML rules, relative ones resolved against {@code base}. */
     public static Report validate(Path base, List<Path> paths, Severity failOn) {
         return run(base, paths, failOn, Rules.all(), RsamlModelValidator::validate);
-    }
-
-    /**
-     * The timing rules' findings (RSA-22 to RSA-25) of the named models, as validation reports them:
-     * what {@code rsaml analyze} and the analyze goal write as SARIF and JUnit XML.
-     */
-    public static Report analyze(Path base, List<Path> paths, Severity failOn) {
-        return run(base, paths, failOn, Rules.timing(), (file, shown) -> RsamlModelValidator.validateTiming(ModelLoader.load(file, shown)));
     }
 
     /**

@@ -12,15 +12,18 @@ import java.util.List;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.TimingSvg;
 import org.rsaml.analysis.Verdict;
-import org.rsaml.validation.ModelLoadException;
+import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
 import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.Rules;
 
 /**
- * Analyses the timing of every model a user named (load, analyse, optionally draw each witness's SVG
- * timeline) and decides the outcome: what {@code rsaml analyze} and the Maven {@code analyze} goal
- * run. A model that cannot be read or analysed costs that model only. The front ends only show the
- * verdicts (text or JSON) and turn the outcome into an exit code or a failed build.
+ * Analyses the timing of every model a user named, once each, and produces everything the run asks
+ * for: the verdicts (told to the front end as each model is analysed, and as the JSON document
+ * {@code rsaml analyze --format json} prints), the timing rules' findings as a {@link Report} (SARIF,
+ * JUnit XML), each witness's SVG timeline, and the outcome. This is what {@code rsaml analyze} and the
+ * Maven {@code analyze} goal run. A model that cannot be read or analysed costs that model only. The
+ * front ends only show what they are told and turn the outcome into an exit code or a failed build.
  */
 public final class TimingBatch {
 
@@ -45,19 +48,37 @@ public final class TimingBatch {
     }
 
     /**
+     * What a run asks for besides the verdicts.
+     *
+     * @param timeline where witnesses' SVG timelines are written, or {@code null} for none
+     * @param failOn   which verdicts fail the run (and, as {@link TimingFailOn#findingThreshold()}, which findings)
+     * @param json     whether to collect the verdicts as one JSON document
+     * @param findings whether to collect the timing rules' findings as a report
+     */
+    public record Request(Path timeline, TimingFailOn failOn, boolean json, boolean findings) {
+    }
+
+    /**
      * What a run found.
      *
      * @param failing      the models whose verdict fails under the run's {@link TimingFailOn} (with "(not analysed)"
      *                     when the verdict is not a miss)
      * @param unanalysable the models that could not be read or analysed
      * @param outputFailed whether a timeline could not be written
+     * @param json         the verdicts as JSON, or {@code null} when the run did not ask for them
+     * @param findings     the timing rules' findings (RSA-22 to RSA-25), or {@code null} when the run did not ask for them
      */
-    public record Outcome(List<String> failing, List<String> unanalysable, boolean outputFailed) {
+    public record Outcome(List<String> failing, List<String> unanalysable, boolean outputFailed, TimingJson.Document json,
+            Report findings) {
 
-        /** {@code rsaml analyze}'s exit code: 2 for input or output errors, else 1 when a model fails, else 0. */
+        /**
+         * {@code rsaml analyze}'s exit code: 2 for input or output errors, else 1 when a model fails (or, with
+         * findings, one of them reaches the threshold), else 0.
+         */
         public int exitCode() {
-            return !unanalysable.isEmpty() || outputFailed ? ExitCodes.INPUT_ERROR
+            int code = !unanalysable.isEmpty() || outputFailed ? ExitCodes.INPUT_ERROR
                     : failing.isEmpty() ? ExitCodes.OK : ExitCodes.FINDINGS;
+            return findings == null ? code : Math.max(code, findings.exitCode());
         }
     }
 
@@ -65,31 +86,51 @@ public final class TimingBatch {
     }
 
     /**
+     * The verdicts and timelines alone.
+     *
      * @param base     the directory relative paths are resolved against
      * @param paths    model files and directories as the user named them
      * @param timeline where witnesses' SVG timelines are written, or {@code null} for none
      * @param failOn   which verdicts fail the run
      */
     public static Outcome run(Path base, List<Path> paths, Path timeline, TimingFailOn failOn, Listener listener) {
+        return run(base, paths, new Request(timeline, failOn, false, false), listener);
+    }
+
+    /**
+     * Loads and analyses each model once, and from that one analysis tells the verdicts, writes the
+     * timelines and collects what {@code request} asks for.
+     *
+     * @param base  the directory relative paths are resolved against
+     * @param paths model files and directories as the user named them
+     */
+    public static Outcome run(Path base, List<Path> paths, Request request, Listener listener) {
         List<String> failing = new ArrayList<>();
         List<String> unanalysable = new ArrayList<>();
+        List<FileResult> results = new ArrayList<>();
+        TimingJson.Document json = request.json() ? new TimingJson.Document() : null;
+        Path timeline = request.timeline();
         boolean outputFailed = false;
         for (ModelFiles.Input input : ModelFiles.select(base, paths)) {
-            if (input.unusable() != null) {
-                listener.unanalysable(Text.lines(input.unusable()));
+            ArchitectureTiming[] analysed = new ArchitectureTiming[1];
+            FileResult result = input.unusable() != null ? FileResult.unreadable(input.unusable(), 0)
+                    : ModelBatch.check(input.path(), input.displayName(), (file, shown) -> {
+                        LoadedModel model = ModelLoader.load(file, shown);
+                        // The one decision whether a model can be analysed, in every format and front end.
+                        analysed[0] = RsamlModelValidator.analyseTiming(model);
+                        return request.findings() ? RsamlModelValidator.validateTiming(model, analysed[0]) : List.of();
+                    });
+            results.add(result);
+            if (!result.readable()) {
+                listener.unanalysable(Text.lines(result.error()));
                 unanalysable.add(input.displayName());
                 continue;
             }
-            ArchitectureTiming timing;
-            try {
-                // The one decision whether a model can be analysed, in every format and front end.
-                timing = RsamlModelValidator.analyseTiming(ModelLoader.load(input.path(), input.displayName()));
-            } catch (ModelLoadException e) {
-                listener.unanalysable(Text.lines(e));
-                unanalysable.add(input.displayName());
-                continue;
-            }
+            ArchitectureTiming timing = analysed[0];
             listener.analysed(input.displayName(), timing);
+            if (json != null) {
+                json.add(input.displayName(), timing);
+            }
             if (timeline != null) {
                 try {
                     List<Path> written = TimingSvg.write(base.resolve(timeline), timing);
@@ -102,10 +143,11 @@ public final class TimingBatch {
                     outputFailed = true;
                 }
             }
-            if (failOn.fails(timing.verdict())) {
+            if (request.failOn().fails(timing.verdict())) {
                 failing.add(input.displayName() + (timing.verdict() == Verdict.MISSES ? "" : " (not analysed)"));
             }
         }
-        return new Outcome(List.copyOf(failing), List.copyOf(unanalysable), outputFailed);
+        Report findings = request.findings() ? new Report(Rules.timing(), results, request.failOn().findingThreshold()) : null;
+        return new Outcome(List.copyOf(failing), List.copyOf(unanalysable), outputFailed, json, findings);
     }
 }

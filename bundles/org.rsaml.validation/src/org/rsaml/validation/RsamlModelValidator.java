@@ -74,14 +74,18 @@ public final class RsamlModelValidator {
      * @throws ModelLoadException when the model cannot be analysed, as {@link #analyseTiming} decides
      */
     public static List<Finding> validateTiming(LoadedModel model) throws ModelLoadException {
-        analyseTiming(model);
+        return validateTiming(model, analyseTiming(model));
+    }
+
+    /**
+     * The findings of the timing rules alone, as {@link #validateTiming(LoadedModel)} reports them, of a
+     * model already analysed: {@code timing} is what {@link #analyseTiming} returned for it. A run that
+     * reports the verdicts and the findings analyses each model once.
+     */
+    public static List<Finding> validateTiming(LoadedModel model, ArchitectureTiming timing) {
         BasicDiagnostic chain = new BasicDiagnostic();
-        for (EObject root : model.resource().getContents()) {
-            if (root instanceof Architecture architecture) {
-                for (TimingChecks.Found f : TimingChecks.all(architecture, OclRules.instance())) {
-                    chain.add(TimingChecks.diagnostic(f));
-                }
-            }
+        for (TimingChecks.Found f : TimingChecks.all(model.architecture(), timing)) {
+            chain.add(TimingChecks.diagnostic(f));
         }
         return toFindings(chain, model);
     }

@@ -251,6 +251,12 @@ public final class TimingChecks {
             add(out, new Found(rule(DEPLOYMENT), on, Map.of("reason", e.getMessage())));
             return out;
         }
+        return verdicts(timing);
+    }
+
+    /** The findings of an analysis's verdicts short of "meets", by the element each is on. */
+    private static Map<EObject, List<Found>> verdicts(ArchitectureTiming timing) {
+        Map<EObject, List<Found>> out = new IdentityHashMap<>();
         for (ProcessorTiming p : timing.processors()) {
             for (int i = 0; i < p.result().tasks().size() && i < p.sources().size(); i++) {
                 TaskResult t = p.result().tasks().get(i);
@@ -309,10 +315,20 @@ public final class TimingChecks {
                         : new Object[] { on, f.rule(), message, f.detail() });
     }
 
-    /** The timing findings of the architecture alone, as {@code rsaml analyze} reports them. */
-    public static List<Found> all(Architecture architecture, OclRules rules) {
+    /**
+     * The timing findings of the architecture alone, as {@code rsaml analyze} reports them, from its analysis
+     * ({@code timing}, made once its prerequisites hold): a run reporting both the verdicts and the findings
+     * analyses it once.
+     */
+    public static List<Found> all(Architecture architecture, ArchitectureTiming timing) {
+        Map<EObject, List<Found>> byElement;
+        try {
+            byElement = verdicts(timing);
+        } catch (RuntimeException e) {
+            byElement = failed(architecture, e);
+        }
         List<Found> all = new ArrayList<>();
-        findings(architecture, rules, null).values().forEach(all::addAll);
+        byElement.values().forEach(all::addAll);
         return all;
     }
 

@@ -6,6 +6,7 @@ package org.rsaml.report.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -18,6 +19,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ExitCodes;
+import org.rsaml.report.FileResult;
+import org.rsaml.report.Report;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
 import org.rsaml.report.TimingJson;
@@ -42,13 +45,11 @@ class TimingBatchTest {
         final List<Path> timelines = new ArrayList<>();
         final List<String> withoutTimeline = new ArrayList<>();
         final List<String> failures = new ArrayList<>();
-        final TimingJson.Document json = new TimingJson.Document();
 
         @Override
         public void analysed(String displayName, ArchitectureTiming timing) {
             analysed.add(displayName);
             verdicts.add(timing.verdict());
-            json.add(displayName, timing);
         }
 
         @Override
@@ -127,12 +128,43 @@ class TimingBatchTest {
     }
 
     @Test
+    void oneRunGivesTheVerdictsTimelinesJsonAndFindingsOfEachModelOnce(@TempDir Path dir) {
+        Heard heard = new Heard();
+        TimingBatch.Outcome outcome = TimingBatch.run(TestRepository.root(), List.of(MISSING, MEETS, MISSES),
+                new TimingBatch.Request(dir.resolve("timeline"), TimingFailOn.MISS, true, true), heard);
+
+        assertEquals(List.of("examples/mobile-base-latency.rsaml", "examples/mobile-base-latency-missed.rsaml"), heard.analysed,
+                "each readable model is analysed and told once, whatever the run writes");
+        assertFalse(heard.timelines.isEmpty(), "the missed requirement's worst path is drawn in the same run");
+        JsonArray document = JsonParser.parseString(outcome.json().text()).getAsJsonArray();
+        assertEquals(heard.analysed.size(), document.size(), "one JSON entry per analysed model: " + outcome.json().text());
+        Report findings = outcome.findings();
+        assertEquals(List.of(MISSING.toString(), MEETS.toString(), MISSES.toString()),
+                findings.results().stream().map(FileResult::file).toList(), "one result per model, in the order named");
+        assertFalse(findings.results().get(0).readable(), "the missing model is a result that could not be read");
+        assertEquals(List.of(), findings.results().get(1).findings(), "the proven model has no timing finding");
+        List<String> failing = findings.results().stream().filter(r -> r.findings().stream().anyMatch(findings::fails))
+                .map(FileResult::file).toList();
+        assertEquals(outcome.failing(), failing, "the findings fail the same models as the verdicts");
+        assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "a model that cannot be read makes the exit code 2");
+    }
+
+    @Test
+    void withoutFindingsOrJsonTheRunCollectsNeither() {
+        TimingBatch.Outcome outcome = run(List.of(MEETS), null, TimingFailOn.MISS, new Heard());
+
+        assertNull(outcome.json(), "no JSON document unless asked for");
+        assertNull(outcome.findings(), "no findings' report unless asked for");
+    }
+
+    @Test
     void theJsonDocumentHasAnEntryPerAnalysedModel() {
         Heard heard = new Heard();
-        run(List.of(MEETS, MISSES), null, TimingFailOn.MISS, heard);
+        TimingJson.Document json = TimingBatch.run(TestRepository.root(), List.of(MEETS, MISSES),
+                new TimingBatch.Request(null, TimingFailOn.MISS, true, false), heard).json();
 
-        JsonArray document = JsonParser.parseString(heard.json.text()).getAsJsonArray();
-        assertEquals(heard.analysed.size(), document.size(), "one entry per analysed model: " + heard.json.text());
+        JsonArray document = JsonParser.parseString(json.text()).getAsJsonArray();
+        assertEquals(heard.analysed.size(), document.size(), "one entry per analysed model: " + json.text());
         for (int i = 0; i < document.size(); i++) {
             JsonObject entry = document.get(i).getAsJsonObject();
             assertEquals(heard.analysed.get(i), entry.get("file").getAsString(), "entries in the order the models were analysed");

@@ -11,13 +11,10 @@ import java.util.Map;
 
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.TimingText;
-import org.rsaml.report.ModelBatch;
 import org.rsaml.report.ModelFiles;
-import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
-import org.rsaml.report.TimingJson;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -59,34 +56,23 @@ final class AnalyzeCommand extends RsamlCommand {
     public Integer call() {
         TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new ParameterException(spec.commandLine(),
                 "Invalid value for option '--fail-on': '" + failOn + "' (expected miss, not-analysed or never)"));
-        if (format == Format.sarif || format == Format.junit) {
-            Report report = ModelBatch.analyze(parent.workingDirectory, paths, level.findingThreshold());
-            int code = ReportArgs.emit(report, format == Format.sarif ? ReportFormat.SARIF : ReportFormat.JUNIT, Map.of(), false,
-                    parent, spec);
-            return timeline == null ? code : Math.max(code, analyse(false, level));
-        }
-        return analyse(true, level);
-    }
-
-    /** Analyses every model; with {@code print}, writes the verdicts in the text or JSON format. */
-    private int analyse(boolean print, TimingFailOn level) {
+        ReportFormat findings = format == Format.sarif ? ReportFormat.SARIF : format == Format.junit ? ReportFormat.JUNIT : null;
         PrintWriter out = out();
         PrintWriter err = err();
-        TimingJson.Document json = new TimingJson.Document();
-        TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, timeline, level, new TimingBatch.Listener() {
+        TimingBatch.Request request = new TimingBatch.Request(timeline, level, format == Format.json, findings != null);
+        TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, request, new TimingBatch.Listener() {
             @Override
             public void analysed(String displayName, ArchitectureTiming timing) {
-                if (print && format == Format.text) {
+                if (format == Format.text) {
                     out.print(TimingText.render(displayName, timing));
-                } else if (print) {
-                    json.add(displayName, timing);
                 }
             }
 
             @Override
             public void unanalysable(List<String> lines) {
-                // Read or not, a model that cannot be analysed is an input error in every format.
-                if (print) {
+                // Read or not, a model that cannot be analysed is an input error in every format; the
+                // findings' report says it on standard error itself.
+                if (findings == null) {
                     lines.forEach(err::println);
                 }
             }
@@ -106,8 +92,12 @@ final class AnalyzeCommand extends RsamlCommand {
                 err.println(line);
             }
         });
-        if (print && format == Format.json) {
-            out.println(json.text());
+        if (outcome.json() != null) {
+            out.println(outcome.json().text());
+        }
+        if (findings != null) {
+            // No report file is written: the findings' exit code is the report's, which the outcome's includes.
+            ReportArgs.emit(outcome.findings(), findings, Map.of(), false, parent, spec);
         }
         out.flush();
         err.flush();

@@ -56,7 +56,7 @@ final class GenerateCommand extends RsamlCommand {
         String shown = ModelFiles.display(model);
         Generation.Outcome outcome = Generation.run(parent.workingDirectory.resolve(model), shown, target,
                 parent.workingDirectory.resolve(output), force, "generate anyway with --force");
-        if (!outcome.report().results().get(0).findings().isEmpty() || format != ReportFormat.TEXT) {
+        if (outcome.showsReport(format)) {
             try {
                 format.write(outcome.report(), out, new ReportOptions(RsamlCli.version(), parent.workingDirectory, false));
             } catch (IOException e) {
