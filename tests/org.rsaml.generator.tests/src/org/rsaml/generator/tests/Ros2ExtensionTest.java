@@ -238,6 +238,20 @@ class Ros2ExtensionTest {
             generator.generate(model, Target.ROS2, out, false);
             assertEquals(e.getKey(), Files.readString(params), "generating again changed the architect's invalid parameters file");
         }
+
+        // A function renamed in the model: generating again says which line of the file names its old
+        // parameter, and the launch files refuse that line.
+        Files.writeString(params, edited);
+        Files.writeString(model, Files.readString(model).replace("<functions name=\"plan\" ", "<functions name=\"replan\" "));
+        int planLine = (int) edited.substring(0, edited.indexOf("    plan.period_ms: ")).lines().count() + 1;
+        String stale = pkg + "/config/" + pkg + ".params.yaml:" + planLine + ": node 'navigation_path_planner' has no parameter plan.period_ms";
+        GenerationResult renamed = generator.generate(model, Target.ROS2, out, false);
+        assertTrue(renamed.warnings().stream().anyMatch(w -> w.startsWith(stale) && w.contains("replan.period_ms")),
+                "no warning starting '" + stale + "': " + renamed.warnings());
+        assertEquals(edited, Files.readString(params), "generating again changed the architect's parameters file");
+        Tools.Result r = Ros2Test.launch(root.resolve("launch/" + pkg + "_processes.launch.py"));
+        assertTrue(r.exit() != 0 && r.output().contains(params + ":" + planLine + ": node 'navigation_path_planner' has no parameter plan.period_ms"),
+                "the launch files took a time the node no longer has:\n" + r.output());
     }
 
     @Test

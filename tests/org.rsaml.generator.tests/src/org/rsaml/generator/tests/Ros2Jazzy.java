@@ -36,7 +36,8 @@ final class Ros2Jazzy {
         if (setup != null || missing != null) {
             return setup;
         }
-        String named = System.getProperty("rsaml.ros2.setup", System.getenv("RSAML_ROS2_SETUP"));
+        String named = Tools.option("rsaml.ros2.setup");
+        named = named.isBlank() ? System.getenv("RSAML_ROS2_SETUP") : named;
         if (named != null && !named.isBlank()) {
             Path p = Path.of(named);
             if (!Files.isRegularFile(p)) {
@@ -45,8 +46,8 @@ final class Ros2Jazzy {
                 setup = p;
             }
         } else {
-            Path archive = Path.of(System.getProperty("rsaml.ros2.archive",
-                    Tools.root().resolve("../shared/ros2/" + ARCHIVE).normalize().toString()));
+            String given = Tools.option("rsaml.ros2.archive");
+            Path archive = Path.of(given.isBlank() ? Tools.root().resolve("../shared/ros2/" + ARCHIVE).normalize().toString() : given);
             if (!Files.isRegularFile(archive)) {
                 missing = "no ROS 2 here: " + archive + " is missing; point the tests at a ROS 2 installation with"
                         + " -Drsaml.ros2.setup=/opt/ros/jazzy/setup.bash (or RSAML_ROS2_SETUP)";

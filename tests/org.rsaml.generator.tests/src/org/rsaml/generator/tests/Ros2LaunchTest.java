@@ -55,7 +55,7 @@ import org.rsaml.validation.ModelLoader;
  * (said once; a failure under {@code RSAML_TIMING_BOUNDS=required}, as in CI); the topics the model
  * names exist under those names with their publisher and subscribers (one of them renamed through
  * its launch argument, its QoS set by the model's name in the parameters file and in effect under
- * the new name); managed nodes reach active with either launch file
+ * the new name); an invalid parameters file is refused with its line; managed nodes reach active with either launch file
  * ({@link #bothLaunchFilesBringTheManagedNodesToActive}); and everything exits cleanly on SIGINT. By default a representative set: an example with two processors, a message
  * type of its own and connections, a model where a long low-priority job must not delay a short
  * high-priority one on the same core, an inhibitor, two EDF processors (one pinned to a core, one
@@ -75,12 +75,13 @@ class Ros2LaunchTest {
 
     /** The seeds of the random task sets run on ROS 2 (one by default; -Drsaml.ros2.seeds=1,2,3 for others). */
     static List<Long> seeds() {
-        return java.util.Arrays.stream(System.getProperty("rsaml.ros2.seeds", "20261127").split(",")).map(String::trim)
+        String seeds = Tools.option("rsaml.ros2.seeds");
+        return java.util.Arrays.stream((seeds.isBlank() ? "20261127" : seeds).split(",")).map(String::trim)
                 .filter(x -> !x.isEmpty()).map(Long::valueOf).toList();
     }
 
     static List<String> models() throws Exception {
-        String chosen = System.getProperty("rsaml.ros2.examples", "");
+        String chosen = Tools.option("rsaml.ros2.examples");
         if (!chosen.isBlank() && !"all".equals(chosen)) {
             return java.util.Arrays.stream(chosen.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toList();
         }

@@ -56,6 +56,15 @@ final class Tools {
         return clean;
     }
 
+    /**
+     * A test option given as -DNAME=VALUE (the test bundle's pom hands it to the tests), or "" when
+     * not given: the build passes an option it leaves empty as the text null.
+     */
+    static String option(String name) {
+        String value = System.getProperty(name, "").strip();
+        return value.equals("null") ? "" : value;
+    }
+
     record Result(int exit, String output) {
     }
 

@@ -113,6 +113,15 @@ class Ros2Context {
 		Ros2TimeParameter.of(names.stem(l) + ".duration", l.durationNs, l.link)
 	}
 
+	/** The names of each node's time parameters, by node, as the launch files check the parameters file against them. */
+	def timeNames() {
+		val times = new java.util.LinkedHashMap<String, java.util.List<String>>
+		for (m : plan.modules) {
+			times.put(rosNames.rosNode(m), timeParameters(m).map[name].toList)
+		}
+		times
+	}
+
 	/** Every time parameter of a module's node, in the order the node declares them. */
 	def timeParameters(PlannedModule m) {
 		val parameters = <Ros2TimeParameter>newArrayList

@@ -81,8 +81,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 
 		# The times each node declares, in the model's units (the parameters file may set them).
 		TIMES = {
-		    «FOR m : plan.modules»
-		    	«py(m.rosNode)»: («FOR p : context.timeParameters(m)»«py(p.name)», «ENDFOR»),
+		    «FOR e : context.timeNames.entrySet»
+		    	«py(e.key)»: («FOR n : e.value»«py(n)», «ENDFOR»),
 		    «ENDFOR»
 		}
 

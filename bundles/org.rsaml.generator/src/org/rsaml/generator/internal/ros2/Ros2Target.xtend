@@ -50,6 +50,8 @@ class Ros2Target implements TargetGenerator {
 				+ cycle.map[files.cycleBound(it)].join(", ")
 				+ " (the shortest period that feeds the cycle; parameter " + cycle.map[context.reactionParameter(it).name].toSet.join(", ") + ")"
 		}
+		val params = new Ros2ParamsTemplate(context).path
+		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.staleTimes(params, it, context.timeNames)]
 		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 }
