@@ -11,7 +11,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -194,15 +193,12 @@ final class PlatformCheck {
      * and the programs it started, as "pid command". Read from /proc (policy: field 41 of a thread's stat).
      */
     static Set<String> otherRealtimeThreads() {
-        Set<Long> ours = new HashSet<>();
-        ours.add(ProcessHandle.current().pid());
-        ProcessHandle.current().descendants().forEach(p -> ours.add(p.pid()));
         Set<String> found = new TreeSet<>();
         File[] procs = new File("/proc").listFiles((d, n) -> n.chars().allMatch(Character::isDigit));
         for (File proc : procs == null ? new File[0] : procs) {
             long pid = Long.parseLong(proc.getName());
             try {
-                if (ours.contains(pid) || Files.readAllBytes(proc.toPath().resolve("cmdline")).length == 0) {
+                if (Files.readAllBytes(proc.toPath().resolve("cmdline")).length == 0 || startedByThisTest(pid)) {
                     continue; // this test and what it started, or a kernel thread
                 }
                 File[] tasks = new File(proc, "task").listFiles();
@@ -220,6 +216,22 @@ final class PlatformCheck {
             }
         }
         return found;
+    }
+
+    /**
+     * Whether {@code pid} is this test's JVM or a process it started, asked when the process is found (a program the
+     * test starts while /proc is being read is its child by then; one left behind by an earlier run, handed to init, is not).
+     */
+    private static boolean startedByThisTest(long pid) {
+        long self = ProcessHandle.current().pid();
+        java.util.Optional<ProcessHandle> process = ProcessHandle.of(pid);
+        for (int depth = 0; process.isPresent() && depth < 64; depth++) {
+            if (process.get().pid() == self) {
+                return true;
+            }
+            process = process.get().parent();
+        }
+        return false;
     }
 
     /** Looks for other programs' real-time threads four times a second while a run lasts. */
