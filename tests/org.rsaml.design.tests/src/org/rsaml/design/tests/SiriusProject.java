@@ -97,17 +97,27 @@ final class SiriusProject {
     /** How long Sirius may take to attach the models copied into the project to its session. */
     private static final long ATTACH_TIMEOUT_SECONDS = 120;
 
+    /**
+     * Whether the workspace's build of the models just copied in (RsaML's builder marks their findings) is still to come
+     * or running: the diagrams are drawn after it, as a user opens them once the build is done. A build running while
+     * the first diagram was drawn left that diagram unarranged on a fresh workspace.
+     */
+    private static boolean building() {
+        return Job.getJobManager().find(org.eclipse.core.resources.ResourcesPlugin.FAMILY_AUTO_BUILD).length > 0
+                || Job.getJobManager().find(org.eclipse.core.resources.ResourcesPlugin.FAMILY_MANUAL_BUILD).length > 0;
+    }
+
     /** Waits until Sirius has attached each of {@code uris} to the session and none of its jobs on representations files is left. */
     private void awaitAttached(List<URI> uris) throws InterruptedException {
         long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(ATTACH_TIMEOUT_SECONDS);
         while (true) {
             awaitRepresentationsFileJobs();
             List<URI> missing = uris.stream().filter(u -> session.getSemanticResources().stream().noneMatch(r -> r.getURI().equals(u))).toList();
-            if (missing.isEmpty() && Job.getJobManager().find(AbstractRepresentationsFileJob.FAMILY).length == 0) {
+            if (missing.isEmpty() && Job.getJobManager().find(AbstractRepresentationsFileJob.FAMILY).length == 0 && !building()) {
                 return;
             }
             if (System.nanoTime() > deadline) {
-                throw new AssertionError("Sirius has not attached " + missing + " to the session of " + project.getName() + " within "
+                throw new AssertionError("Sirius has not attached " + missing + " to the session of " + project.getName() + " (or the workspace is still building: " + building() + ") within "
                         + ATTACH_TIMEOUT_SECONDS + " s of their creation in the modeling project (attached: "
                         + session.getSemanticResources().stream().map(Resource::getURI).toList() + ")");
             }
