@@ -62,48 +62,35 @@ public final class CompiledOcl {
     }
 
     public static Boolean and(Operand left, Operand right) {
-        Boolean l = defined(left);
-        if (Boolean.FALSE.equals(l)) {
-            return Boolean.FALSE;
-        }
-        Boolean r = defined(right);
-        if (Boolean.FALSE.equals(r)) {
-            return Boolean.FALSE;
-        }
-        if (l == null || r == null) {
-            throw INVALID;
-        }
-        return Boolean.TRUE;
+        return shortCircuit(left, Boolean.FALSE, right, Boolean.FALSE, false);
     }
 
     public static Boolean or(Operand left, Operand right) {
-        Boolean l = defined(left);
-        if (Boolean.TRUE.equals(l)) {
-            return Boolean.TRUE;
-        }
-        Boolean r = defined(right);
-        if (Boolean.TRUE.equals(r)) {
-            return Boolean.TRUE;
-        }
-        if (l == null || r == null) {
-            throw INVALID;
-        }
-        return Boolean.FALSE;
+        return shortCircuit(left, Boolean.TRUE, right, Boolean.TRUE, true);
     }
 
     public static Boolean implies(Operand left, Operand right) {
+        return shortCircuit(left, Boolean.FALSE, right, Boolean.TRUE, true);
+    }
+
+    /**
+     * OCL's two-operand logic: the result is {@code decided} as soon as the left operand is {@code leftDecides} or the
+     * right one is {@code rightDecides} (whatever the other, even undefined); else undefined if either operand is,
+     * else the opposite of {@code decided}.
+     */
+    private static Boolean shortCircuit(Operand left, Boolean leftDecides, Operand right, Boolean rightDecides, boolean decided) {
         Boolean l = defined(left);
-        if (Boolean.FALSE.equals(l)) {
-            return Boolean.TRUE;
+        if (leftDecides.equals(l)) {
+            return decided;
         }
         Boolean r = defined(right);
-        if (Boolean.TRUE.equals(r)) {
-            return Boolean.TRUE;
+        if (rightDecides.equals(r)) {
+            return decided;
         }
         if (l == null || r == null) {
             throw INVALID;
         }
-        return Boolean.FALSE;
+        return !decided;
     }
 
     public static Boolean not(Boolean value) {
