@@ -5,25 +5,21 @@
 package org.rsaml.model.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 
 import org.eclipse.emf.common.util.URI;
-import org.eclipse.emf.ecore.EAttribute;
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EClassifier;
-import org.eclipse.emf.ecore.EEnum;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
+import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.resource.ResourceSet;
 import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
@@ -36,18 +32,28 @@ import org.rsaml.model.Module;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.TimeUnit;
+import org.rsaml.tests.support.models.RandomModels;
+import org.rsaml.tests.support.models.RandomModels.Shape;
+import org.rsaml.tests.support.models.RandomModels.Values;
 
-/** Every concept and every attribute of RsaML survives a save to .rsaml and a reload. */
+/**
+ * Every concept and every attribute of RsaML survives a save to .rsaml and a reload: a seeded model of every concrete class
+ * with every attribute and reference set ({@link RandomModels}, {@link Shape#EVERY_KIND}).
+ */
 class RoundTripTest {
+
+    private static final long SEED = 20261127L;
 
     @TempDir
     Path dir;
 
     @Test
     void everyConceptAndAttributeSurvivesSaveAndReload() throws Exception {
-        Map<EClass, List<EObject>> instances = new HashMap<>();
-        Architecture root = (Architecture) populate(RsamlPackage.Literals.ARCHITECTURE, instances, 0);
-        linkReferences(instances);
+        Architecture root = (Architecture) RandomModels.model(RsamlPackage.eINSTANCE, RsamlPackage.Literals.ARCHITECTURE, SEED,
+                Values.PLAIN, Shape.EVERY_KIND);
+        List<EObject> elements = new ArrayList<>();
+        elements.add(root);
+        root.eAllContents().forEachRemaining(elements::add);
 
         Set<String> concrete = new TreeSet<>();
         for (EClassifier c : RsamlPackage.eINSTANCE.getEClassifiers()) {
@@ -56,8 +62,18 @@ class RoundTripTest {
             }
         }
         Set<String> created = new TreeSet<>();
-        instances.keySet().forEach(c -> created.add(c.getName()));
+        elements.forEach(e -> created.add(e.eClass().getName()));
         assertEquals(concrete, created, "the round-trip model must hold every concrete RsaML concept");
+        List<String> unset = new ArrayList<>();
+        for (EObject e : elements) {
+            for (EStructuralFeature f : e.eClass().getEAllStructuralFeatures()) {
+                boolean stored = f.isChangeable() && !f.isDerived() && !f.isTransient() && !(f instanceof EReference r && r.isContainer());
+                if (stored && !e.eIsSet(f) && !(f instanceof EReference r && r.isContainment())) {
+                    unset.add(e.eClass().getName() + "." + f.getName());
+                }
+            }
+        }
+        assertEquals(List.of(), unset, "every attribute and reference of every element must be set, to other than its default");
 
         URI uri = URI.createFileURI(dir.resolve("all-concepts.rsaml").toString());
         ResourceSet saveSet = new ResourceSetImpl();
@@ -120,86 +136,5 @@ class RoundTripTest {
         layer.setTimeUnit(TimeUnit.NS);
         assertEquals(0.5, layer.toMilliseconds(500_000.0), 1e-12);
         assertEquals(TimeUnit.MS, RsamlFactory.eINSTANCE.createModule().getTimeUnit(), "milliseconds by default");
-    }
-
-    /** Creates an instance with every attribute set to a non-default value, and one child per containment. */
-    private EObject populate(EClass eClass, Map<EClass, List<EObject>> instances, int depth) {
-        EObject object = EcoreUtil.create(eClass);
-        instances.computeIfAbsent(eClass, k -> new ArrayList<>()).add(object);
-        int n = instances.get(eClass).size();
-        for (EAttribute attribute : eClass.getEAllAttributes()) {
-            if (attribute.isChangeable() && !attribute.isDerived() && !attribute.isTransient()) {
-                object.eSet(attribute, sample(attribute, eClass.getName() + n));
-            }
-        }
-        if (depth > 3) {
-            return object;
-        }
-        for (EReference containment : eClass.getEAllContainments()) {
-            for (EClass type : concreteSubtypes(containment.getEReferenceType())) {
-                EObject child = populate(type, instances, depth + (type == eClass ? 3 : 1));
-                if (containment.isMany()) {
-                    @SuppressWarnings("unchecked")
-                    List<EObject> list = (List<EObject>) object.eGet(containment);
-                    list.add(child);
-                } else {
-                    object.eSet(containment, child);
-                }
-            }
-        }
-        return object;
-    }
-
-    private void linkReferences(Map<EClass, List<EObject>> instances) {
-        for (List<EObject> objects : instances.values()) {
-            for (EObject object : objects) {
-                for (EReference reference : object.eClass().getEAllReferences()) {
-                    if (reference.isContainment() || reference.isContainer() || reference.isTransient()
-                            || !reference.isChangeable()) {
-                        continue;
-                    }
-                    EObject target = instances.entrySet().stream()
-                            .filter(e -> reference.getEReferenceType().isSuperTypeOf(e.getKey()))
-                            .flatMap(e -> e.getValue().stream()).findFirst().orElse(null);
-                    assertNotNull(target, "no instance for " + reference.getName());
-                    if (reference.isMany()) {
-                        @SuppressWarnings("unchecked")
-                        List<EObject> list = (List<EObject>) object.eGet(reference);
-                        list.add(target);
-                    } else {
-                        object.eSet(reference, target);
-                    }
-                }
-            }
-        }
-    }
-
-    private static List<EClass> concreteSubtypes(EClass type) {
-        List<EClass> result = new ArrayList<>();
-        for (EClassifier c : RsamlPackage.eINSTANCE.getEClassifiers()) {
-            if (c instanceof EClass e && !e.isAbstract() && !e.isInterface() && type.isSuperTypeOf(e)) {
-                result.add(e);
-            }
-        }
-        return result;
-    }
-
-    private static Object sample(EAttribute attribute, String seed) {
-        EClassifier type = attribute.getEType();
-        if (type instanceof EEnum eEnum) {
-            List<?> literals = eEnum.getELiterals();
-            return ((org.eclipse.emf.ecore.EEnumLiteral) literals.get(literals.size() - 1)).getInstance();
-        }
-        Class<?> c = type.getInstanceClass();
-        if (c == String.class) {
-            return attribute.getName() + "_" + seed;
-        }
-        if (c == double.class || c == Double.class) {
-            return 2.5;
-        }
-        if (c == int.class || c == Integer.class) {
-            return 3;
-        }
-        throw new AssertionError("no sample value for " + attribute.getName() + " of type " + c);
     }
 }

@@ -16,6 +16,10 @@ import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.rsaml.model.Architecture;
+import org.rsaml.model.RsamlPackage;
+import org.rsaml.tests.support.models.RandomModels;
+import org.rsaml.tests.support.models.RandomModels.Shape;
+import org.rsaml.tests.support.models.RandomModels.Values;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
@@ -31,6 +35,15 @@ final class Models {
         Path file = dir.resolve(name);
         Files.writeString(file, text, StandardCharsets.UTF_8);
         return ModelLoader.load(file, name);
+    }
+
+    /**
+     * Seeded random model {@code seed}: every concept, attributes set or not, odd names and numbers ({@link Values#ODD}),
+     * references of every kind; names apart among one element's children, as the textual syntax needs to name references.
+     */
+    static Architecture random(long seed) {
+        return (Architecture) RandomModels.model(RsamlPackage.eINSTANCE, RsamlPackage.Literals.ARCHITECTURE, seed, Values.ODD,
+                Shape.NAMED_APART);
     }
 
     /** Null when the models are equal (EcoreUtil.equals), else the first difference found. */

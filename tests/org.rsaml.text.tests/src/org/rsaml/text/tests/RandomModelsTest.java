@@ -32,7 +32,7 @@ class RandomModelsTest {
     void randomModelsRoundTrip() throws Exception {
         int count = Integer.getInteger("rsaml.text.randomModels", 2000);
         for (long seed = 1; seed <= count; seed++) {
-            Architecture model = new RandomModels(seed).architecture();
+            Architecture model = Models.random(seed);
             // In a resource, as a loaded model is: the writer names references within it.
             Resource resource = RsamlStandaloneSetup.newResourceSet().createResource(URI.createFileURI(temp.resolve("m.rsaml").toString()));
             resource.getContents().add(model);

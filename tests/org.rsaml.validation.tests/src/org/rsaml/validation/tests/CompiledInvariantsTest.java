@@ -18,19 +18,17 @@ import java.util.Random;
 import java.util.TreeMap;
 import java.util.stream.Stream;
 
-import org.eclipse.emf.common.util.EList;
-import org.eclipse.emf.ecore.EAttribute;
 import org.eclipse.emf.ecore.EClass;
-import org.eclipse.emf.ecore.EClassifier;
-import org.eclipse.emf.ecore.EEnum;
 import org.eclipse.emf.ecore.EObject;
-import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.tests.support.TestRepository;
+import org.rsaml.tests.support.models.RandomModels;
+import org.rsaml.tests.support.models.RandomModels.Shape;
+import org.rsaml.tests.support.models.RandomModels.Values;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.ModelLoader;
@@ -39,7 +37,8 @@ import org.rsaml.validation.internal.OclRules;
 
 /**
  * The invariants compiled to Java at build time against classic OCL's interpreter, their definition: on every rule
- * fixture, every example, the mutated examples of {@link MutatedFilesTest} and seeded random models, every invariant
+ * fixture, every example, the mutated examples of {@link MutatedFilesTest} and seeded random models ({@link RandomModels}: values
+ * at the edges, names missing and repeated, references anywhere), every invariant
  * of every element gives the same result (true, false, or undefined) both ways. Also: classic OCL's own evaluation
  * environment agrees with the one validation interprets in.
  */
@@ -118,7 +117,7 @@ class CompiledInvariantsTest {
         List<String> differences = new ArrayList<>();
         int[] compared = new int[1];
         for (int i = 0; i < RANDOM_MODELS; i++) {
-            EObject root = RandomModels.architecture(random);
+            EObject root = new RandomModels(RsamlPackage.eINSTANCE, random, Values.EDGES, Shape.ANY).create(RsamlPackage.Literals.ARCHITECTURE);
             compare(root, "random model " + i, differences, compared);
         }
         report(differences, compared[0], 10_000);
@@ -205,110 +204,5 @@ class CompiledInvariantsTest {
                     + String.join("\n", differences.subList(0, Math.min(30, differences.size()))));
         }
         assertTrue(compared >= atLeast, "too few evaluations compared: " + compared);
-    }
-
-    /** Seeded random models built through the metamodel: every class, attribute values at the edges, references anywhere. */
-    static final class RandomModels {
-        private static final double[] REALS = { 0, 1, 2.5, 10, 100, -1, -0.5, 1e-9, 1e9, 1e15, 1e300, Double.MAX_VALUE, 0.001 };
-        private static final int[] INTS = { 0, 1, 2, 3, -1, 4, Integer.MAX_VALUE, Integer.MIN_VALUE };
-        private static final String[] STRINGS = { null, "", "a", "b", "a", "x y", "/bad//topic", "~/t", "msg/Type", "\u00e9t\u00e9",
-                "n".repeat(101), "robot", "control" };
-
-        static EObject architecture(Random random) {
-            List<EObject> all = new ArrayList<>();
-            EObject root = create(RsamlPackage.Literals.ARCHITECTURE, random, all, 0);
-            for (EObject e : all) {
-                for (EReference r : e.eClass().getEAllReferences()) {
-                    if (r.isContainment() || r.isContainer() || r.isDerived() || !r.isChangeable() || r.getEOpposite() != null
-                            && r.getEOpposite().isContainment()) {
-                        continue;
-                    }
-                    List<EObject> candidates = all.stream().filter(o -> r.getEReferenceType().isInstance(o)).toList();
-                    if (candidates.isEmpty()) {
-                        continue;
-                    }
-                    if (r.isMany()) {
-                        @SuppressWarnings("unchecked")
-                        EList<EObject> list = (EList<EObject>) e.eGet(r);
-                        int n = random.nextInt(3);
-                        for (int i = 0; i < n; i++) {
-                            EObject o = candidates.get(random.nextInt(candidates.size()));
-                            if (!list.contains(o)) {
-                                list.add(o);
-                            }
-                        }
-                    } else if (random.nextInt(5) > 0) {
-                        e.eSet(r, candidates.get(random.nextInt(candidates.size())));
-                    }
-                }
-            }
-            return root;
-        }
-
-        private static EObject create(EClass eClass, Random random, List<EObject> all, int depth) {
-            EObject e = EcoreUtil.create(eClass);
-            all.add(e);
-            for (EAttribute a : eClass.getEAllAttributes()) {
-                if (!a.isChangeable() || a.isDerived() || a.isMany() || random.nextInt(6) == 0) {
-                    continue;
-                }
-                Object value = value(a.getEAttributeType(), random);
-                if (value != null || !a.getEAttributeType().getInstanceClass().isPrimitive()) {
-                    e.eSet(a, value);
-                }
-            }
-            for (EReference r : eClass.getEAllContainments()) {
-                if (!r.isChangeable() || depth > 4) {
-                    continue;
-                }
-                int n = r.isMany() ? random.nextInt(depth < 2 ? 4 : 3) : random.nextInt(2);
-                for (int i = 0; i < n; i++) {
-                    List<EClass> kinds = concrete(r.getEReferenceType());
-                    EObject child = create(kinds.get(random.nextInt(kinds.size())), random, all, depth + 1);
-                    if (r.isMany()) {
-                        @SuppressWarnings("unchecked")
-                        EList<EObject> list = (EList<EObject>) e.eGet(r);
-                        list.add(child);
-                    } else {
-                        e.eSet(r, child);
-                    }
-                }
-            }
-            return e;
-        }
-
-        private static List<EClass> concrete(EClass type) {
-            List<EClass> result = new ArrayList<>();
-            for (EClassifier c : RsamlPackage.eINSTANCE.getEClassifiers()) {
-                if (c instanceof EClass k && !k.isAbstract() && !k.isInterface() && type.isSuperTypeOf(k)) {
-                    result.add(k);
-                }
-            }
-            return result;
-        }
-
-        private static Object value(EClassifier type, Random random) {
-            Class<?> c = type.getInstanceClass();
-            if (type instanceof EEnum en) {
-                return en.getELiterals().get(random.nextInt(en.getELiterals().size())).getInstance();
-            }
-            if (c == double.class || c == Double.class) {
-                double v = REALS[random.nextInt(REALS.length)];
-                return random.nextBoolean() ? v : Math.rint(v * 10) / 10;
-            }
-            if (c == int.class || c == Integer.class) {
-                return INTS[random.nextInt(INTS.length)];
-            }
-            if (c == long.class || c == Long.class) {
-                return (long) INTS[random.nextInt(INTS.length)];
-            }
-            if (c == boolean.class || c == Boolean.class) {
-                return random.nextBoolean();
-            }
-            if (c == String.class) {
-                return STRINGS[random.nextInt(STRINGS.length)];
-            }
-            return null;
-        }
     }
 }
