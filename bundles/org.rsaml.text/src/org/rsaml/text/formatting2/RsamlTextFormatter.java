@@ -5,9 +5,11 @@
 package org.rsaml.text.formatting2;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.Keyword;
@@ -21,6 +23,11 @@ import org.eclipse.xtext.preferences.MapBasedPreferenceValues;
 import org.eclipse.xtext.preferences.TypedPreferenceValues;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
+import org.rsaml.text.grammar.Constructs;
+import org.rsaml.text.grammar.Constructs.Construct;
+import org.rsaml.text.services.RsamlTextGrammarAccess;
+
+import com.google.inject.Inject;
 
 /**
  * Lays a textual model out as {@link org.rsaml.text.serializer.RsamlTextWriter} writes it: two spaces
@@ -30,12 +37,27 @@ import org.rsaml.model.Connection;
  */
 public class RsamlTextFormatter extends AbstractJavaFormatter {
 
-    /** The keywords that begin an attribute; each starts a line of its own. */
-    private static final Set<String> LINE_STARTS = Set.of("description", "category", "declaredLayers", "unit", "type",
-            "execType", "period", "deadline", "wcet", "level", "maxExecTime", "sensors", "actuators", "synchroType",
-            "schedPolicy", "otherPolicy", "start", "dataType", "messageType", "topic", "trigger", "target", "duration", "kind",
-            "priority", "achieves", "actions", "plans", "realisedBy", "issuer", "receiver", "requests", "usedBy", "core",
-            "modules", "from", "to", "via", "maxLatency", "lifecycle");
+    /**
+     * The keywords that begin an attribute, each starting a line of its own: every attribute the grammar gives a concept
+     * with braces ({@link Constructs}), so that a keyword added to the grammar is laid out as the writer writes it.
+     */
+    private Set<String> lineStarts;
+
+    @Inject
+    void lineStarts(RsamlTextGrammarAccess grammar) {
+        lineStarts = lineStarts(new Constructs(grammar.getGrammar()));
+    }
+
+    /** The keywords of the attributes the grammar gives the concepts written with braces. */
+    public static Set<String> lineStarts(Constructs constructs) {
+        Set<String> keywords = new TreeSet<>();
+        for (Construct construct : constructs.all()) {
+            if (construct.hasBody()) {
+                construct.attributes().forEach(a -> keywords.add(a.keyword()));
+            }
+        }
+        return Collections.unmodifiableSet(keywords);
+    }
 
     /** The layout is the language's: two spaces a level, whatever the editor's preference. */
     @Override
@@ -71,7 +93,7 @@ public class RsamlTextFormatter extends AbstractJavaFormatter {
                 doc.interior(open, close, this::indent);
             }
             for (ISemanticRegion region : own) {
-                if (region.getGrammarElement() instanceof Keyword keyword && LINE_STARTS.contains(keyword.getValue())
+                if (region.getGrammarElement() instanceof Keyword keyword && lineStarts.contains(keyword.getValue())
                         && region.getOffset() > open.getOffset() && region.getEndOffset() <= close.getOffset()) {
                     doc.prepend(region, this::newLine);
                 }

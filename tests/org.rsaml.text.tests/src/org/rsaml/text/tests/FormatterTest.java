@@ -9,16 +9,26 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.Set;
+import java.util.TreeSet;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
 
 import org.eclipse.xtext.resource.XtextResource;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.resource.RsamlStandaloneSetup;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.text.RsamlTextStandaloneSetup;
 import org.rsaml.text.convert.ModelConverter;
+import org.rsaml.text.formatting2.RsamlTextFormatter;
 import org.rsaml.text.formatting2.RsamlTextFormatting;
+import org.rsaml.text.grammar.Constructs;
+import org.rsaml.text.services.RsamlTextGrammarAccess;
 import org.rsaml.validation.ModelLoader;
 
 /**
@@ -26,6 +36,8 @@ import org.rsaml.validation.ModelLoader;
  * formatting the same text with its layout spoiled gives it back, comments are kept.
  */
 class FormatterTest {
+
+    private static final int RANDOM_MODELS = 60;
 
     @TempDir
     Path temp;
@@ -54,6 +66,29 @@ class FormatterTest {
         assertTrue(formatted.contains("/* lowest */"), "the block comment is kept:\n" + formatted);
         assertTrue(formatted.contains("\n    level 0\n  }\n}\n"), "the attribute on its own line:\n" + formatted);
         assertEquals(formatted, format(formatted), "formatting again changes nothing");
+    }
+
+    /**
+     * Every attribute keyword of the grammar starts a line of its own, as the writer writes it: seeded random models,
+     * which between them write every attribute the grammar has (checked), are written, their layout spoiled, and
+     * formatted back. A keyword the formatter did not know would stay on the line before it.
+     */
+    @Test
+    void formatsRandomModelsAsTheWriterWrites() throws Exception {
+        Set<String> lineStarts = new TreeSet<>();
+        for (long seed = 1; seed <= RANDOM_MODELS; seed++) {
+            Architecture model = Models.random(seed);
+            // In a resource, as a loaded model is: the writer names references within it.
+            Resource resource = RsamlStandaloneSetup.newResourceSet().createResource(URI.createFileURI(temp.resolve("m.rsaml").toString()));
+            resource.getContents().add(model);
+            String canonical = ModelConverter.toText(model);
+            canonical.lines().map(String::strip).filter(l -> !l.isEmpty()).forEach(l -> lineStarts.add(l.split(" ", 2)[0]));
+            assertEquals(canonical, format(spoil(canonical)), "seed " + seed + ": formatting does not restore the writer's layout");
+        }
+        Set<String> unwritten = new TreeSet<>(RsamlTextFormatter.lineStarts(new Constructs(
+                RsamlTextStandaloneSetup.injector().getInstance(RsamlTextGrammarAccess.class).getGrammar())));
+        unwritten.removeAll(lineStarts);
+        assertEquals(Set.of(), unwritten, "attribute keywords of the grammar that no random model wrote, so their layout is not checked");
     }
 
     /** Every run of white space outside string literals becomes one space or three line breaks, in turn. */
