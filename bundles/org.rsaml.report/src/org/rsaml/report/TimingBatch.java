@@ -67,9 +67,11 @@ public final class TimingBatch {
      * @param outputFailed whether a timeline could not be written
      * @param json         the verdicts as JSON, or {@code null} when the run did not ask for them
      * @param findings     the timing rules' findings (RSA-22 to RSA-25), or {@code null} when the run did not ask for them
+     * @param failOn       which verdicts failed the run
+     * @param timeline     where the timelines were to be written, as the user named it, or {@code null}
      */
     public record Outcome(List<String> failing, List<String> unanalysable, boolean outputFailed, TimingJson.Document json,
-            Report findings) {
+            Report findings, TimingFailOn failOn, Path timeline) {
 
         /**
          * {@code rsaml analyze}'s exit code: 2 for input or output errors, else 1 when a model fails (or, with
@@ -79,6 +81,28 @@ public final class TimingBatch {
             int code = !unanalysable.isEmpty() || outputFailed ? ExitCodes.INPUT_ERROR
                     : failing.isEmpty() ? ExitCodes.OK : ExitCodes.FINDINGS;
             return findings == null ? code : Math.max(code, findings.exitCode());
+        }
+
+        /** Why the timelines are incomplete ({@code cannot write the timeline into DIR; ...}), or {@code null} when they are not. */
+        public String outputFailure() {
+            return outputFailed ? "cannot write the timeline into " + ModelFiles.display(timeline) + "; see the errors above" : null;
+        }
+
+        /** Which models could not be read or analysed ({@code cannot read or analyse A, B; ...}), or {@code null} when none. */
+        public String inputFailure() {
+            return unanalysable.isEmpty() ? null : "cannot read or analyse " + String.join(", ", unanalysable) + "; see the errors above";
+        }
+
+        /**
+         * Which models' verdicts fail the run under its {@link TimingFailOn} ({@code a deadline or a latency requirement
+         * can be missed in A}), or {@code null} when none does.
+         */
+        public String verdictFailure() {
+            if (failing.isEmpty()) {
+                return null;
+            }
+            return (failOn == TimingFailOn.MISS ? "a deadline or a latency requirement can be missed in "
+                    : "the timing is not proven (fail on " + failOn + ") in ") + String.join(", ", failing);
         }
     }
 
@@ -148,6 +172,6 @@ public final class TimingBatch {
             }
         }
         Report findings = request.findings() ? new Report(Rules.timing(), results, request.failOn().findingThreshold()) : null;
-        return new Outcome(List.copyOf(failing), List.copyOf(unanalysable), outputFailed, json, findings);
+        return new Outcome(List.copyOf(failing), List.copyOf(unanalysable), outputFailed, json, findings, request.failOn(), timeline);
     }
 }

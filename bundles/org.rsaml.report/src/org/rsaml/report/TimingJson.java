@@ -58,6 +58,23 @@ public final class TimingJson {
         public void write(Path file) throws IOException {
             AtomicFiles.writeString(file, text() + "\n");
         }
+
+        /**
+         * Writes the document to {@code file} (relative to {@code base}, as the user named it or as the build log
+         * shows it), replaced whole or left as it was.
+         *
+         * @return {@code null} when written, else the line that says why not
+         *         ({@code FILE: error: cannot write the timing analysis: why}, as {@link ReportFiles#writeAll} says it of reports)
+         */
+        public String writeTo(Path base, Path file) {
+            Path target = base.resolve(file);
+            try {
+                write(target);
+                return null;
+            } catch (IOException e) {
+                return Text.line(ModelFiles.display(file) + ": error: cannot write the timing analysis: " + ReportFiles.reason(e, target));
+            }
+        }
     }
 
     public static JsonObject of(ArchitectureTiming timing) {

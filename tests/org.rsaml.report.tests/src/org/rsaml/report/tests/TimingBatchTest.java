@@ -89,6 +89,11 @@ class TimingBatchTest {
         assertEquals(List.of("examples/mobile-base-latency-missed.rsaml"), outcome.failing(), "only the missing requirement fails");
         assertEquals(List.of("examples/no-such-model.rsaml"), outcome.unanalysable(), "the model that cannot be read");
         assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "a model that cannot be read makes the exit code 2");
+        assertEquals("cannot read or analyse examples/no-such-model.rsaml; see the errors above", outcome.inputFailure(),
+                "what the analyze goal fails the build with names the model that cannot be read");
+        assertEquals("a deadline or a latency requirement can be missed in examples/mobile-base-latency-missed.rsaml",
+                outcome.verdictFailure(), "what the analyze goal fails the build with names the model that can miss");
+        assertNull(outcome.outputFailure(), "no timeline was asked for, none failed");
     }
 
     @Test
@@ -125,6 +130,20 @@ class TimingBatchTest {
         assertEquals(1, heard.failures.size(), "one line says so: " + heard.failures);
         assertTrue(heard.failures.get(0).contains("error: cannot write the timeline"), heard.failures.get(0));
         assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "output that cannot be written makes the exit code 2");
+        assertEquals("cannot write the timeline into " + dir.resolve("taken").toString().replace('\\', '/') + "; see the errors above",
+                outcome.outputFailure(), "the run's failure names the directory");
+    }
+
+    @Test
+    void aTimingAnalysisThatCannotBeWrittenIsSaidInOneLine(@TempDir Path dir) throws Exception {
+        Files.writeString(dir.resolve("taken"), "a file where the directory should be");
+        TimingJson.Document json = TimingBatch.run(TestRepository.root(), List.of(MEETS),
+                new TimingBatch.Request(null, TimingFailOn.MISS, true, false), new Heard()).json();
+        String failure = json.writeTo(dir, Path.of("taken/timing.json"));
+        assertTrue(failure != null && failure.startsWith("taken/timing.json: error: cannot write the timing analysis: "),
+                "the line names the file and says why: " + failure);
+        assertNull(json.writeTo(dir, Path.of("timing.json")), "a file that can be written is written");
+        assertTrue(Files.readString(dir.resolve("timing.json")).startsWith("["), "the document is written");
     }
 
     @Test

@@ -5,7 +5,6 @@
 package org.rsaml.maven;
 
 import java.io.File;
-import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -20,7 +19,6 @@ import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
-import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
@@ -85,16 +83,12 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
         TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new MojoExecutionException(
                 "failOn is '" + failOn + "'; it is miss, not-analysed or never"));
         List<Path> shown = models.stream().map(model -> Path.of(relative(model.toPath()))).toList();
-        TimingBatch.Request request = new TimingBatch.Request(timeline == null ? null : timeline.toPath(), level, timingJson != null,
-                !reportFormats.isEmpty());
+        TimingBatch.Request request = new TimingBatch.Request(timeline == null ? null : Path.of(relative(timeline.toPath())), level,
+                timingJson != null, !reportFormats.isEmpty());
         TimingBatch.Outcome outcome = TimingBatch.run(baseDirectory.toPath(), shown, request, new TimingBatch.Listener() {
             @Override
             public void analysed(String displayName, ArchitectureTiming timing) {
-                // The analysis's verdict chooses the level: a model that fails the build is an error,
-                // one with a verdict short of "meets" a warning.
-                Consumer<CharSequence> logAt = failOnMiss && level.fails(timing.verdict()) ? log::error
-                        : timing.verdict() != Verdict.MEETS ? log::warn : log::info;
-                TimingText.render(displayName, timing).lines().forEach(logAt);
+                TimingText.render(displayName, timing).lines().forEach(logAt(level, timing.verdict()));
             }
 
             @Override
@@ -113,13 +107,12 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
             }
         });
         if (outcome.json() != null) {
-            try {
-                outcome.json().write(timingJson.toPath());
-                log.info("RsaML: timing analysis written: " + relative(timingJson.toPath()));
-            } catch (IOException e) {
-                throw new MojoExecutionException("Cannot write the RsaML timing analysis " + relative(timingJson.toPath()) + ": "
-                        + ReportFiles.reason(e, timingJson.toPath()), e);
+            String failure = outcome.json().writeTo(baseDirectory.toPath(), Path.of(relative(timingJson.toPath())));
+            if (failure != null) {
+                log.error(failure);
+                throw new MojoExecutionException("RsaML timing: " + failure);
             }
+            log.info("RsaML: timing analysis written: " + relative(timingJson.toPath()));
         }
         if (outcome.findings() != null) {
             writeReports(outcome.findings(), reportFormats, reportDirectory, format -> format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
@@ -127,16 +120,23 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
             log.info("RsaML timing findings: " + outcome.findings().summary() + "; reports in "
                     + relative(reportDirectory.toPath()));
         }
-        if (outcome.outputFailed()) {
-            throw new MojoExecutionException("RsaML timing: cannot write the timeline into " + relative(timeline.toPath()) + "; see the errors above");
+        if (outcome.outputFailure() != null) {
+            throw new MojoExecutionException("RsaML timing: " + outcome.outputFailure());
         }
-        if (!outcome.unanalysable().isEmpty()) {
-            throw new MojoFailureException("RsaML timing: cannot read or analyse " + String.join(", ", outcome.unanalysable())
-                    + "; see the errors above");
+        if (outcome.inputFailure() != null) {
+            throw new MojoFailureException("RsaML timing: " + outcome.inputFailure());
         }
-        if (failOnMiss && !outcome.failing().isEmpty()) {
-            throw new MojoFailureException("RsaML timing: " + (level == TimingFailOn.MISS ? "a deadline or a latency requirement can be missed in "
-                    : "the timing is not proven (failOn: " + level + ") in ") + String.join(", ", outcome.failing()));
+        if (failOnMiss && outcome.verdictFailure() != null) {
+            throw new MojoFailureException("RsaML timing: " + outcome.verdictFailure());
         }
+    }
+
+    /**
+     * The level a model's verdicts are logged at: error when they fail the build, warning when they fall short of
+     * "meets" without failing it (a miss with {@code failOnMiss} false, anything not analysed), else info.
+     */
+    private Consumer<CharSequence> logAt(TimingFailOn level, Verdict verdict) {
+        Log log = getLog();
+        return failOnMiss && level.fails(verdict) ? log::error : verdict != Verdict.MEETS ? log::warn : log::info;
     }
 }
