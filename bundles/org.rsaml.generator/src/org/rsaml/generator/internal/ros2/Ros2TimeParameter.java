@@ -8,6 +8,7 @@ import java.math.BigDecimal;
 
 import org.rsaml.model.TimeScaled;
 import org.rsaml.model.TimeUnit;
+import org.rsaml.model.support.RsamlTimes;
 
 /**
  * A time a node holds as a parameter (a period, a minimum interval, a link's duration), in the time
@@ -23,7 +24,7 @@ public record Ros2TimeParameter(String name, long ns, TimeUnit unit) {
 
     /** The parameter {@code stem + "_" + unit} for the time {@code ns} of {@code element}, in its unit. */
     public static Ros2TimeParameter of(String stem, long ns, TimeScaled element) {
-        TimeUnit unit = element == null || element.getTimeUnit() == null ? TimeUnit.MS : element.getTimeUnit();
+        TimeUnit unit = RsamlTimes.unit(element);
         return new Ros2TimeParameter(stem + "_" + unit.getLiteral(), ns, unit);
     }
 
