@@ -97,7 +97,11 @@ public final class TimingAnalysis {
     }
 
     private static Map<Module, Processor> allocation(Architecture architecture) throws TimingModelException {
-        Map<Module, Processor> allocation = new IdentityHashMap<>();
+        int allocated = 0;
+        for (Processor p : architecture.getProcessors()) {
+            allocated += p.getModules().size();
+        }
+        Map<Module, Processor> allocation = new IdentityHashMap<>(allocated);
         for (Processor p : architecture.getProcessors()) {
             for (Module m : p.getModules()) {
                 Processor other = allocation.putIfAbsent(m, p);

@@ -6,6 +6,7 @@ package org.rsaml.analysis.plan;
 
 import java.math.BigDecimal;
 import java.math.RoundingMode;
+import java.util.function.Supplier;
 
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.model.TimeScaled;
@@ -28,6 +29,10 @@ public final class PlanTimes {
      * {@link ExecutionPlan#MAX_TIME_NS} (not finite counts as 0).
      */
     public static long nanos(double value, TimeScaled owner) {
+        long whole = RsamlTimes.wholeNanoseconds(value, owner);
+        if (whole != RsamlTimes.NOT_WHOLE) {
+            return Math.max(0, Math.min(whole, ExecutionPlan.MAX_TIME_NS));
+        }
         BigDecimal ns = RsamlTimes.nanoseconds(value, owner);
         if (ns == null || ns.signum() <= 0) {
             return 0;
@@ -46,9 +51,24 @@ public final class PlanTimes {
      */
     public static long checked(double value, TimeScaled owner, String attribute, String label, boolean period)
             throws UnplannableException {
+        return checked(value, owner, attribute, () -> label, period);
+    }
+
+    /** The same, the label worded only when the time is refused. */
+    public static long checked(double value, TimeScaled owner, String attribute, Supplier<String> label, boolean period)
+            throws UnplannableException {
         if (value == 0) {
             return 0; // the most common time by far (not set), and always representable
         }
+        long whole = RsamlTimes.wholeNanoseconds(value, owner);
+        if (whole > 0 && whole <= ExecutionPlan.MAX_TIME_NS) {
+            return whole; // finite, positive, whole nanoseconds (so at least 1 ns), within the clock: accepted
+        }
+        return refusedOr(value, owner, attribute, label.get(), period);
+    }
+
+    private static long refusedOr(double value, TimeScaled owner, String attribute, String label, boolean period)
+            throws UnplannableException {
         TimeUnit unit = RsamlTimes.unit(owner);
         String what = attribute + " " + format(value) + " " + unit.getLiteral() + " of " + label;
         if (!Double.isFinite(value)) {

@@ -73,7 +73,7 @@ final class Planner {
                 plan.modules.add(pm);
             }
         }
-        Map<Module, PlannedModule> byModule = new IdentityHashMap<>();
+        Map<Module, PlannedModule> byModule = new IdentityHashMap<>(plan.modules.size());
         plan.modules.forEach(m -> byModule.put(m.module, m));
         for (Processor p : architecture.getProcessors()) {
             for (Module module : p.getModules()) {
@@ -154,9 +154,9 @@ final class Planner {
 
     private static void analyse(PlannedFunction f) throws UnplannableException {
         Function function = f.function;
-        long period = PlanTimes.checked(function.getPeriod(), function, "period", f.label(), true);
-        long delay = PlanTimes.checked(function.getDelay(), function, "delay", f.label(), false);
-        f.costNs = PlanTimes.checked(function.getExecDuration(), function, "execution duration", f.label(), false);
+        long period = PlanTimes.checked(function.getPeriod(), function, "period", f::label, true);
+        long delay = PlanTimes.checked(function.getDelay(), function, "delay", f::label, false);
+        f.costNs = PlanTimes.checked(function.getExecDuration(), function, "execution duration", f::label, false);
         f.timed = timed(function);
         f.periodNs = f.timed ? period : 0;
         f.deadlineNs = delay > 0 ? delay : period;
@@ -171,10 +171,10 @@ final class Planner {
     private static void analyse(PlannedAction a) throws UnplannableException {
         Action action = a.action;
         PlannedFunction f = a.function;
-        long period = PlanTimes.checked(action.getPeriod(), action, "period", a.label(), true);
-        long delay = PlanTimes.checked(action.getDelay(), action, "delay", a.label(), false);
-        a.costNs = PlanTimes.checked(action.getExecDuration(), action, "execution duration", a.label(), false);
-        a.startNs = PlanTimes.checked(action.getStartDate(), action, "start date", a.label(), false);
+        long period = PlanTimes.checked(action.getPeriod(), action, "period", a::label, true);
+        long delay = PlanTimes.checked(action.getDelay(), action, "delay", a::label, false);
+        a.costNs = PlanTimes.checked(action.getExecDuration(), action, "execution duration", a::label, false);
+        a.startNs = PlanTimes.checked(action.getStartDate(), action, "start date", a::label, false);
         boolean ownTimer = timed(action);
         a.periodNs = ownTimer ? period : 0;
         a.deadlineNs = delay > 0 ? delay : period;

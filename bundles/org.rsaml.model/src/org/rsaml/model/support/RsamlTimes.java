@@ -26,6 +26,8 @@ public final class RsamlTimes {
      */
     public static final BigDecimal MAX_NANOSECONDS = BigDecimal.valueOf(1L << 60);
 
+    private static final long MAX_WHOLE_NANOSECONDS = 1L << 60;
+
     private RsamlTimes() {
     }
 
@@ -39,7 +41,49 @@ public final class RsamlTimes {
         if (Double.isNaN(value) || Double.isInfinite(value)) {
             return null;
         }
+        long whole = wholeNanoseconds(value, owner);
+        if (whole != NOT_WHOLE) {
+            return BigDecimal.valueOf(whole);
+        }
         return decimal(value).multiply(BigDecimal.valueOf(unit(owner).getValue()));
+    }
+
+    /** What {@link #wholeNanoseconds} returns when it cannot tell the value in nanoseconds as a {@code long}. */
+    public static final long NOT_WHOLE = Long.MIN_VALUE;
+
+    /** 10^k for k = 0 to 9, as doubles (exact) and as longs. */
+    private static final double[] POWERS = { 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9 };
+    private static final long[] LONG_POWERS = { 1L, 10L, 100L, 1_000L, 10_000L, 100_000L, 1_000_000L, 10_000_000L, 100_000_000L,
+        1_000_000_000L };
+
+    /**
+     * {@link #nanoseconds} without a {@code BigDecimal}, for the times models hold (a whole number of
+     * nanoseconds, within a {@code long}): the same number, or {@link #NOT_WHOLE} when the value is not
+     * finite, not a whole number of nanoseconds, has more than 15 significant digits or does not fit, and
+     * {@link #nanoseconds} must decide. The decimal L × 10^-k (|L| &lt; 10^15, at most as many decimals as
+     * the unit has digits below the second) is the value's when L / 10^k, correctly rounded, gives the value
+     * back: no two decimals of at most 15 significant digits parse to the same double, so it is the one
+     * {@link #decimal} finds, and in nanoseconds it is L × 10^(unit digits - k), whole.
+     */
+    public static long wholeNanoseconds(double value, TimeScaled owner) {
+        int unitDigits = switch (unit(owner)) {
+            case NS -> 0;
+            case US -> 3;
+            case MS -> 6;
+            case S -> 9;
+        };
+        for (int k = 0; k <= unitDigits; k++) {
+            double scaled = value * POWERS[k];
+            if (!(Math.abs(scaled) < 1e15)) {
+                return NOT_WHOLE; // too many digits, or not finite
+            }
+            long l = (long) Math.rint(scaled);
+            if (l / POWERS[k] == value) {
+                long factor = LONG_POWERS[unitDigits - k];
+                return Math.abs(l) <= Long.MAX_VALUE / factor ? l * factor : NOT_WHOLE;
+            }
+        }
+        return NOT_WHOLE;
     }
 
     /**
@@ -75,6 +119,11 @@ public final class RsamlTimes {
      * that are not finite compare as doubles.
      */
     public static int compare(double value, TimeScaled owner, double otherValue, TimeScaled other) {
+        long wholeA = wholeNanoseconds(value, owner);
+        long wholeB = wholeA == NOT_WHOLE ? NOT_WHOLE : wholeNanoseconds(otherValue, other);
+        if (wholeB != NOT_WHOLE) {
+            return Long.compare(wholeA, wholeB);
+        }
         BigDecimal a = nanoseconds(value, owner);
         BigDecimal b = nanoseconds(otherValue, other);
         if (a == null || b == null) {
@@ -85,6 +134,10 @@ public final class RsamlTimes {
 
     /** Whether the generated code can hold the value: finite, and at most {@link #MAX_NANOSECONDS} in magnitude. */
     public static boolean representable(double value, TimeScaled owner) {
+        long whole = wholeNanoseconds(value, owner);
+        if (whole != NOT_WHOLE) {
+            return Math.abs(whole) <= MAX_WHOLE_NANOSECONDS;
+        }
         BigDecimal ns = nanoseconds(value, owner);
         return ns != null && ns.abs().compareTo(MAX_NANOSECONDS) <= 0;
     }
@@ -94,6 +147,10 @@ public final class RsamlTimes {
      * and 0 (no period) or at least 1 ns, the resolution of its timers (a shorter one would become 0).
      */
     public static boolean representablePeriod(double value, TimeScaled owner) {
+        long whole = wholeNanoseconds(value, owner);
+        if (whole != NOT_WHOLE) {
+            return Math.abs(whole) <= MAX_WHOLE_NANOSECONDS && (value <= 0 || whole >= 1);
+        }
         return representable(value, owner) && (value <= 0 || nanoseconds(value, owner).compareTo(BigDecimal.ONE) >= 0);
     }
 

@@ -182,6 +182,9 @@ public final class TimingChecks {
             byElement = failed(architecture, e);
         }
         List<Diagnostic> out = new ArrayList<>();
+        if (byElement.isEmpty()) {
+            return out; // every verdict met: no walk to put findings in document order
+        }
         for (Iterator<EObject> it = architecture.eAllContents(); ; ) {
             EObject o = it.hasNext() ? it.next() : null;
             EObject element = o == null ? architecture : o;
