@@ -126,13 +126,20 @@ Schedule::~Schedule() {
   }
   std::lock_guard<std::mutex> lock(stats_);
   // The C++ runtime's summary line (docs/timing.md), the same keys in the same order.
-  for (const Release& r : releases_) {
+  auto summary = [](const Jobs& r) {
     trace("summary " + r.label + " jobs " + std::to_string(r.jobs) + " released " +
           (r.jobs > 0 ? ms(r.first_release_ns) + ".." + ms(r.last_release_ns) + " ms" : std::string("none")) + " misses " +
           std::to_string(r.misses) + " overruns " + std::to_string(r.overruns) + " worst-response " + ms(r.worst_response_ns) +
-          " ms bound " + (r.bound_ns >= 0 ? ms(r.bound_ns) + " ms" : std::string("none")) + " deadline " + ms(r.deadline_ns) +
-          " ms worst-execution " + ms(r.worst_execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms worst-start-latency " +
-          ms(r.worst_latency_ns) + " ms sched " + (r.sched.empty() ? std::string("default") : r.sched));
+          " ms bound " + (r.bound_ns >= 0 ? ms(r.bound_ns) + " ms" : std::string("none")) + " deadline " +
+          (r.deadline_ns > 0 ? ms(r.deadline_ns) + " ms" : std::string("none")) + " worst-execution " + ms(r.worst_execution_ns) +
+          " ms modeled " + ms(r.cost_ns) + " ms worst-start-latency " + ms(r.worst_latency_ns) + " ms sched " +
+          (r.sched.empty() ? std::string("default") : r.sched));
+  };
+  for (const Release& r : releases_) {
+    summary(r);
+  }
+  if (reactions_) {
+    summary(*reactions_);
   }
   for (const Arrivals& a : arrivals_) {
     trace("summary " + module_ + ":" + a.port + " messages " + std::to_string(a.messages) + " received " +
@@ -175,21 +182,18 @@ void Schedule::busy(std::int64_t cpu_ns) const {
   }
 }
 
-void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
-                             const std::function<void()>& body) {
-  Release& r = releases_[release];
-  std::int64_t execution = 0;
-  {
-    std::lock_guard<std::mutex> lock(activation_);
-    const std::int64_t cpu = thread_cpu_ns();
-    if (simulated_load_ > 0.0 && r.cost_ns > 0) {
-      busy(static_cast<std::int64_t>(static_cast<double>(r.cost_ns) * simulated_load_));
-    }
-    body();
-    execution = thread_cpu_ns() - cpu;
+std::int64_t Schedule::run_measured(std::int64_t cost_ns, const std::function<void()>& body) const {
+  const std::int64_t cpu = thread_cpu_ns();
+  if (simulated_load_ > 0.0 && cost_ns > 0) {
+    busy(static_cast<std::int64_t>(static_cast<double>(cost_ns) * simulated_load_));
   }
-  const std::int64_t response = (clock_->now() - released).nanoseconds();
-  const std::int64_t latency = (called - released).nanoseconds();
+  body();
+  return thread_cpu_ns() - cpu;
+}
+
+void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::Time& done, std::int64_t latency_ns,
+                          std::int64_t execution_ns) {
+  const std::int64_t response = (done - released).nanoseconds();
   const std::int64_t at = (released - started_).nanoseconds();
   bool missed = false;
   bool overran = false;
@@ -201,10 +205,10 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
     }
     r.last_release_ns = at;
     r.worst_response_ns = std::max(r.worst_response_ns, response);
-    r.worst_execution_ns = std::max(r.worst_execution_ns, execution);
-    r.worst_latency_ns = std::max(r.worst_latency_ns, latency);
+    r.worst_execution_ns = std::max(r.worst_execution_ns, execution_ns);
+    r.worst_latency_ns = std::max(r.worst_latency_ns, latency_ns);
     missed = r.deadline_ns > 0 && response > r.deadline_ns;
-    overran = r.cost_ns > 0 && execution > r.cost_ns;
+    overran = r.cost_ns > 0 && execution_ns > r.cost_ns;
     r.misses += missed ? 1 : 0;
     r.overruns += overran ? 1 : 0;
   }
@@ -212,16 +216,30 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
     trace("miss " + r.label + " released " + ms(at) + " ms response " + ms(response) + " ms deadline " + ms(r.deadline_ns) + " ms");
   }
   if (overran) {
-    trace("overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution) + " ms modeled " + ms(r.cost_ns) + " ms");
+    trace("overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms");
   }
 }
 
-void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
+void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
+                             const std::function<void()>& body) {
+  Release& r = releases_[release];
+  std::int64_t execution = 0;
   {
     std::lock_guard<std::mutex> lock(activation_);
+    execution = run_measured(r.cost_ns, body);
+  }
+  record_job(r, released, clock_->now(), (called - released).nanoseconds(), execution);
+}
+
+void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
+  const rclcpp::Time arrived = clock_->now();
+  {
+    std::lock_guard<std::mutex> lock(activation_);
+    arrived_ = arrived;
+    handled_ = clock_->now();
     body();
   }
-  const std::int64_t at = (clock_->now() - started_).nanoseconds();
+  const std::int64_t at = (arrived - started_).nanoseconds();
   std::lock_guard<std::mutex> lock(stats_);
   Arrivals& a = arrivals_[port];
   ++a.messages;
@@ -229,6 +247,26 @@ void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& 
     a.first_ns = at;
   }
   a.last_ns = at;
+}
+
+void Schedule::rsaml_measure_reactions(const std::string& label, std::int64_t deadline_ns, std::int64_t cost_ns,
+                                       std::int64_t bound_ns) {
+  reactions_ = std::make_unique<Jobs>();
+  reactions_->label = label;
+  reactions_->deadline_ns = deadline_ns;
+  reactions_->cost_ns = cost_ns;
+  reactions_->bound_ns = bound_ns;
+  reactions_->sched = "default (the main executor)";
+}
+
+void Schedule::rsaml_run_reaction(const std::function<void()>& body) {
+  if (!reactions_) {
+    body();
+    return;
+  }
+  // Under the node's lock (in rsaml_run_arrival): arrived_ and handled_ are the current arrival's.
+  const std::int64_t execution = run_measured(reactions_->cost_ns, body);
+  record_job(*reactions_, arrived_, clock_->now(), (handled_ - arrived_).nanoseconds(), execution);
 }
 
 Scheduler::~Scheduler() { stop(); }

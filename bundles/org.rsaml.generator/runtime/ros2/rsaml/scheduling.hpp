@@ -6,7 +6,8 @@
 // each timed release in a callback group of its own, served by an executor thread of its own at the
 // release's real-time priority (SCHED_FIFO or SCHED_RR, the analysis's rank) on the processor's core;
 // data arrivals (reactions, input handlers) and ROS 2's own services on the process's main executor
-// at the default priority. Every job is measured (release to completion) and reported.
+// at the default priority. Every job is measured (release, or the arrival that starts a reaction, to
+// completion) and reported.
 #pragma once
 
 #include <cstddef>
@@ -27,18 +28,16 @@ namespace rsaml_ros2 {
 /** Prints one trace line, "[   12.345 ms] text", ms since the process started; flushed at once. */
 void trace(const std::string& text);
 
-/** A timed release of a node and what was observed of its jobs. */
-struct Release {
+/**
+ * What the model and the timing analysis say of the jobs of a timed release or of a node's
+ * reactions, and what was observed of them (the C++ runtime's JobBounds and JobStats in one).
+ */
+struct Jobs {
   std::string label;
-  int rank = 1;
-  bool round_robin = false;
-  bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
-  std::int64_t period_ns = 0;
   std::int64_t deadline_ns = 0;
   std::int64_t cost_ns = 0;
   std::int64_t bound_ns = -1;  // the timing analysis's worst-case response; negative: none
   std::string sched;           // the scheduling its thread got, as traced
-  rclcpp::CallbackGroup::SharedPtr group;
   std::uint64_t jobs = 0;
   std::uint64_t misses = 0;
   std::uint64_t overruns = 0;
@@ -47,6 +46,15 @@ struct Release {
   std::int64_t worst_latency_ns = 0;
   std::int64_t first_release_ns = -1;
   std::int64_t last_release_ns = -1;
+};
+
+/** A timed release of a node: its jobs and how its thread is scheduled. */
+struct Release : Jobs {
+  int rank = 1;
+  bool round_robin = false;
+  bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
+  std::int64_t period_ns = 0;
+  rclcpp::CallbackGroup::SharedPtr group;
 };
 
 /** Messages received at one entry port. */
@@ -122,13 +130,35 @@ class Schedule {
    */
   void rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
                      const std::function<void()>& body);
-  /** Runs a reaction to data under the node's lock. */
+  /**
+   * Runs what an arrival at an entry port does (its handler, and the reaction it may start) under
+   * the node's lock; the arrival is when the executor hands the message over.
+   */
   void rsaml_run_arrival(std::size_t port, const std::function<void()>& body);
+  /**
+   * Measures the node's reactions (a node that reacts to data calls it once, in its constructor),
+   * against the modeled deadline and cost and the analysis's bound (negative: none).
+   */
+  void rsaml_measure_reactions(const std::string& label, std::int64_t deadline_ns, std::int64_t cost_ns, std::int64_t bound_ns);
+  /**
+   * One reaction, inside rsaml_run_arrival(): runs `body` after the busy work of the simulated
+   * load and measures it as a job released by the arrival that started it, as the C++ runtime does.
+   */
+  void rsaml_run_reaction(const std::function<void()>& body);
 
  private:
   Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base, rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers,
            rclcpp::Clock::SharedPtr clock, double simulated_load, std::string module, int core);
   void busy(std::int64_t cpu_ns) const;
+  /** Busy work of one job of modeled cost `cost_ns` (the simulated load), then `body`; the CPU time both took. */
+  std::int64_t run_measured(std::int64_t cost_ns, const std::function<void()>& body) const;
+  /**
+   * Counts one job of `jobs` released at `released` and done at `done` (on the node's clock), which
+   * its executor called `latency_ns` after its release and which used `execution_ns` of CPU time:
+   * its response and execution, and a miss or an overrun as it happens.
+   */
+  void record_job(Jobs& jobs, const rclcpp::Time& released, const rclcpp::Time& done, std::int64_t latency_ns,
+                  std::int64_t execution_ns);
 
   rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base_;
   rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers_;
@@ -141,6 +171,9 @@ class Schedule {
   std::mutex stats_;
   std::deque<Release> releases_;
   std::deque<Arrivals> arrivals_;
+  std::unique_ptr<Jobs> reactions_;  // null when the node does not react to data
+  rclcpp::Time arrived_;             // when the executor handed over the message being handled
+  rclcpp::Time handled_;             // when its handling started (it held the node's lock)
 };
 
 /** The base of every generated plain node: an rclcpp node with its schedule. */

@@ -30,6 +30,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.PlannedModule;
+import org.rsaml.analysis.plan.Reaction;
 import org.rsaml.analysis.plan.Release;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
@@ -157,7 +158,8 @@ class Ros2LaunchTest {
     void buildsStartsAndRunsAsAnalysed(String name, @TempDir Path tmp) throws Exception {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
-        run(Ros2Test.model(name), name, tmp);
+        run(Ros2Test.model(name), name, tmp, src -> {
+        });
     }
 
     @ParameterizedTest
@@ -167,7 +169,60 @@ class Ros2LaunchTest {
         Assumptions.assumeTrue(missing == null, missing);
         Path model = tmp.resolve("random" + seed + ".rsaml");
         Files.writeString(model, JobTimingTest.randomTaskSet(seed));
-        run(model, model.getFileName().toString(), tmp);
+        run(model, model.getFileName().toString(), tmp, src -> {
+        });
+    }
+
+    /** The architect's code written into the generated packages (under src/) before they are built. */
+    interface UserCode {
+        void write(Path src) throws Exception;
+    }
+
+    private static final Pattern SHARED = Pattern.compile("shared (left|right) (\\d+) (\\S+)");
+
+    /**
+     * Messages are shared, not copied, in a component container: the producer of
+     * resources/ros2-shared-messages.rsaml publishes 1, 2, 3, ... every 20 ms to two reactive
+     * modules of the same container, whose handlers (the architect's code) print the address of
+     * each message they get. With intra-process communication both get the one message the producer
+     * published (the same address for each value); over the middleware each subscription would
+     * take a copy of its own, while in_in still holds the previous one. The run also checks what
+     * every run does (releases, rates, reactions measured).
+     */
+    @org.junit.jupiter.api.Test
+    void aMessageIsSharedByTheSubscriptionsOfAContainer(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String name = "resources/ros2-shared-messages.rsaml";
+        String out = run(Ros2Test.model(name), name, tmp, src -> {
+            Path pkg = src.resolve("shared_messages/src");
+            replace(pkg.resolve("high/Producer.cpp"), "void Producer::compute() {}", "void Producer::compute() { out_value.data += 1.0; }");
+            for (String module : List.of("left", "right")) {
+                String cls = Character.toUpperCase(module.charAt(0)) + module.substring(1);
+                Path cpp = pkg.resolve("low/" + cls + ".cpp");
+                replace(cpp, "{ (void)message; }", "{\n  std::printf(\"shared " + module + " %.0f %p\\n\", message.data, static_cast<const void*>(&message));\n"
+                        + "  std::fflush(stdout);\n}");
+                replace(cpp, "#include \"low/" + cls + ".hpp\"", "#include \"low/" + cls + ".hpp\"\n\n#include <cstdio>");
+            }
+        });
+        Map<String, Map<String, String>> seen = new TreeMap<>();
+        Matcher m = SHARED.matcher(out);
+        while (m.find()) {
+            seen.computeIfAbsent(m.group(2), v -> new TreeMap<>()).put(m.group(1), m.group(3));
+        }
+        List<String> both = seen.entrySet().stream().filter(e -> e.getValue().size() == 2).map(Map.Entry::getKey).toList();
+        assertTrue(both.size() >= 50, "both subscribers should have printed most of the producer's messages (every 20 ms for "
+                + RUN_MS + " ms): " + both.size() + " values seen by both\n" + Tools.last(out, 4000));
+        for (String value : both) {
+            Map<String, String> at = seen.get(value);
+            assertEquals(at.get("left"), at.get("right"), "message " + value + " was copied for each subscriber of the container: " + at);
+        }
+    }
+
+    private static void replace(Path file, String what, String with) throws java.io.IOException {
+        String text = Files.readString(file);
+        assertTrue(text.contains(what), file + " does not contain " + what + ":\n" + text);
+        Files.writeString(file, text.replace(what, with));
     }
 
     /** Which containers (or nodes) a launch file starts for host:=ARG, evaluated by ROS 2's launch itself. */
@@ -401,11 +456,13 @@ class Ros2LaunchTest {
         return null;
     }
 
-    private static void run(Path model, String name, Path tmp) throws Exception {
+    /** Generates, builds, launches and checks one model; the launch's output. */
+    private static String run(Path model, String name, Path tmp, UserCode code) throws Exception {
         Architecture arch = ModelLoader.load(model, name).architecture();
         String pkg = Names.snake(arch.getName());
         Path src = tmp.resolve("src");
         new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        code.write(src);
         ExecutionPlan plan = ExecutionPlan.of(arch);
         Map<Release, Long> periodsNs = new IdentityHashMap<>();
         plan.releases().forEach(r -> periodsNs.put(r, r.periodNs()));
@@ -479,7 +536,9 @@ class Ros2LaunchTest {
                 otherRealtime.addAll(PlatformCheck.otherRealtimeThreads());
             }
             Tools.ok(tmp, 10, "kill", "-INT", Long.toString(launch.pid()));
-            assertTrue(launch.waitFor(60, TimeUnit.SECONDS), "ros2 launch did not stop within 60 s of SIGINT");
+            if (!launch.waitFor(60, TimeUnit.SECONDS)) {
+                fail("ros2 launch did not stop within 60 s of SIGINT:\n" + Tools.last(Files.readString(log, StandardCharsets.UTF_8), 6000));
+            }
         } finally {
             // on a failure, the containers go too (they do not die with ros2 launch)
             launch.descendants().forEach(ProcessHandle::destroyForcibly);
@@ -578,6 +637,25 @@ class Ros2LaunchTest {
             }
             report.append("  checked against the bound: ").append(checked.stream().map(Release::label).toList()).append('\n');
         }
+        // Each node measures its reactions to data as the C++ program does: from the arrival that
+        // starts one to its completion, against the modeled deadline and cost and the analysis's bound.
+        for (PlannedModule pm : plan.modules()) {
+            if (!pm.reactive()) {
+                continue;
+            }
+            Reaction x = pm.reaction();
+            JobSummary o = observed.get(x.label());
+            assertNotNull(o, "no summary of the reactions " + x.label() + ":\n" + Tools.last(trace, 6000));
+            long bound = bounds.getOrDefault(x.label(), -1L);
+            assertEquals(bound < 0 ? "none" : JobTimingTest.ms(bound), o.bound(), x.label() + ": the analysis's bound, written into the node: " + o);
+            assertEquals(x.deadlineNs(), o.deadlineNs(), 500, x.label() + ": the modeled deadline: " + o);
+            assertEquals(x.costNs(), o.modeledNs(), 500, x.label() + ": the modeled execution time: " + o);
+            boolean fed = pm.inputs().stream().anyMatch(p -> ports.containsKey(pm.qualifiedName() + ":" + p.name()));
+            assertTrue(!fed || o.jobs() > 0, x.label() + ": messages arrived but no reaction was measured: " + o);
+            report.append(String.format(java.util.Locale.ROOT, "  %s: %d jobs, worst response %s (execution %s, start latency %s), bound %s, %s%n",
+                    x.label(), o.jobs(), JobTimingTest.ms(o.worstNs()), JobTimingTest.ms(o.executionNs()), JobTimingTest.ms(o.latencyNs()),
+                    o.bound(), o.sched()));
+        }
         if (!unchecked.isEmpty()) {
             report.append("  not checked against the bound (the response times are reported only): ").append(unchecked).append('\n');
         }
@@ -602,6 +680,7 @@ class Ros2LaunchTest {
                     + " ms, the producer sent about " + sent + " every 10 ms: false on the overseer's boolean trigger must not inhibit them\n" + report);
         }
         System.out.print(report);
+        return out;
     }
 
     /**

@@ -95,6 +95,7 @@ class Ros2Test {
                     print('container', e.package, e.executable, repr(e.namespace), e.name)
                     for c in e.composable_node_descriptions:
                         print('component', c.package, c.plugin, repr(c.namespace), c.name, repr(c.parameters))
+                        print('extra', c.name, repr(c.extra_arguments))
                         for r in c.remappings or []:
                             print('remap', r[0], r[1])
                 else:
@@ -187,6 +188,11 @@ class Ros2Test {
                     + " " + parameters)), "no process for " + c + " with the same parameters: " + nodes);
         }
         assertEquals(modules, nodeNames.size(), "node names are not unique: " + components);
+        // The nodes of a container use intra-process communication (messages shared, not copied).
+        for (String n : nodeNames) {
+            assertTrue(composed.contains("extra " + n + " [{'use_intra_process_comms': True}]"), "component " + n
+                    + " does not use intra-process communication: " + composed);
+        }
 
         // Each module has its node, named as the launch files name it.
         Map<String, String> nodesByModule = nodes(root);
@@ -240,6 +246,51 @@ class Ros2Test {
                     }
                 }
             }
+        }
+
+        // Messages by shared pointer: every subscription takes a ConstSharedPtr, which the node keeps
+        // as in_<port> (no copy on the way to the reaction), and every publication hands over a unique_ptr.
+        String nodesText = allText(root.resolve("gen"));
+        Matcher sub = Pattern.compile("this->create_subscription<([\\w:]+)>\\(.*?\\]\\(([^)]*)\\) \\{", Pattern.DOTALL).matcher(nodesText);
+        int subscriptions = 0;
+        while (sub.find()) {
+            subscriptions++;
+            assertEquals(sub.group(1) + "::ConstSharedPtr message", sub.group(2), "a subscription's callback must take the message by shared pointer");
+        }
+        int inputs = arch.getLayers().stream().flatMap(l -> l.getModules().stream()).mapToInt(m -> (int) m.getPorts().stream()
+                .filter(p -> !(p instanceof OutputPort)).count()).sum();
+        assertTrue(subscriptions >= inputs, subscriptions + " subscriptions for " + inputs + " entry ports");
+        assertFalse(nodesText.contains("= *message"), "a message is copied into an entry port");
+        Matcher entry = Pattern.compile("\\n\\s*([\\w:]+) (in_\\w+);").matcher(nodesText);
+        while (entry.find()) {
+            assertTrue(entry.group(1).endsWith("::ConstSharedPtr"), "entry port " + entry.group(2) + " holds a copy: " + entry.group(1));
+        }
+        Matcher publish = Pattern.compile("->publish\\(([^;]*)\\);").matcher(nodesText);
+        while (publish.find()) {
+            assertTrue(publish.group(1).startsWith("std::make_unique<"), "a publication that is not a unique_ptr: " + publish.group());
+        }
+
+        // colcon test: linters where installed, and the launch test, which names the entry ports that
+        // timed modules feed (each must receive messages) and is valid Python.
+        assertTrue(cmake.contains("if(BUILD_TESTING)") && cmake.contains("find_package(ament_lint_auto QUIET)")
+                && cmake.contains("add_launch_test(test/test_" + pkg + "_launch.py"), cmake);
+        Path launchTest = root.resolve("test/test_" + pkg + "_launch.py");
+        Tools.ok(out, 60, Ros2Build.python(), "-m", "py_compile", launchTest.toString());
+        Matcher fed = Pattern.compile("FED_PORTS = \\[(.*)\\]").matcher(Files.readString(launchTest));
+        assertTrue(fed.find(), "the launch test names no ports: " + launchTest);
+        Set<String> expectedFed = new TreeSet<>();
+        for (org.rsaml.analysis.plan.Flow f : org.rsaml.analysis.plan.ExecutionPlan.of(arch).flows()) {
+            if (!f.source().module().releases().isEmpty()) {
+                expectedFed.add(f.target().module().qualifiedName() + ":" + f.target().name());
+            }
+        }
+        Set<String> listed = new TreeSet<>();
+        Matcher quoted = Pattern.compile("'((?:[^'\\\\]|\\\\.)*)'").matcher(fed.group(1));
+        while (quoted.find()) {
+            listed.add(quoted.group(1));
+        }
+        if (expectedFed.stream().noneMatch(x -> x.contains("'") || x.contains("\\"))) {
+            assertEquals(expectedFed, listed, "the entry ports the launch test expects messages at");
         }
 
         // A timer per periodic function, on the node's clock, its period a parameter. (The

@@ -48,6 +48,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 			«ELSE»
 				# all in one process.
 			«ENDIF»
+			# The nodes of a container exchange messages within the process (intra-process communication): a
+			# message published is shared by the subscriptions there, neither copied nor serialized.
 			# «pkg»_processes.launch.py starts a process per node instead. Arguments:
 		«ELSE»
 			# Starts every module of the architecture as a node in a process of its own«IF rosNames.containers.exists[core >= 0]», pinned with

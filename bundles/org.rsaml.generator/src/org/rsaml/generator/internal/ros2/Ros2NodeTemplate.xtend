@@ -7,6 +7,7 @@ package org.rsaml.generator.internal.ros2
 import java.util.TreeSet
 import org.rsaml.analysis.plan.PlannedFunction
 import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.Reaction
 import org.rsaml.analysis.plan.Release
 import org.rsaml.generator.internal.cxx.CxxNames
 
@@ -104,12 +105,18 @@ class Ros2NodeTemplate extends Ros2Template {
 		    	«entities(m)»
 		    	«timers(m)»
 		    «ENDIF»
+		    «IF m.reactive»
+		    	// reactions: from the arrival that starts one to its completion, due within «m.reaction.deadlineNs» ns (0: none),
+		    	// modeled to take «m.reaction.costNs» ns; «boundComment(m.reaction)».
+		    	this->rsaml_measure_reactions(«str(m.reaction.label)», «m.reaction.deadlineNs», «m.reaction.costNs», «context.bounds.of(m.reaction).responseNs»);
+		    «ENDIF»
 		  }
 		  «IF !m.inputs.empty»
 
-		  	// Entry ports: the latest message received.
+		  	// Entry ports: the latest message received, shared with the middleware and every other
+		  	// subscriber, not copied (null until the first arrives).
 		  	«FOR p : m.inputs»
-		  		«p.rosType» «p.inName»;
+		  		«p.rosType»::ConstSharedPtr «p.inName»;
 		  	«ENDFOR»
 		  «ENDIF»
 		  «IF !m.outputs.empty»
@@ -134,20 +141,24 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	«ENDFOR»
 		  «ENDFOR»
 		  «FOR p : m.inputs»
-		  	/** Called on each message at «doc(p.name)», before the node reacts. */
+		  	/** Called on each message at «doc(p.name)», before the node reacts («p.inName» holds it too). */
 		  	virtual void «p.onName»(const «p.rosType»& message) { (void)message; }
 		  «ENDFOR»
-		  /** Publishes every output port (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF»). */
+		  /**
+		   * Publishes every output port (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF»): a copy
+		   * of the port's value, which it keeps, handed to the middleware as a unique message that the
+		   * subscriptions of the same container then share without copying it again (intra-process communication).
+		   */
 		  virtual void publish_outputs() {
 		    «IF m.managed»
 		    	«inactiveReturn»
 		    «ENDIF»
 		    «FOR p : m.outputs»
 		    	«IF p.inhibitors.empty»
-		    		«p.pubName»_->publish(«p.outName»);
+		    		«p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
 		    	«ELSE»
 		    		if («FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR») {
-		    		  «p.pubName»_->publish(«p.outName»);
+		    		  «p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
 		    		}
 		    	«ENDIF»
 		    «ENDFOR»
@@ -196,7 +207,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  «ENDFOR»
 		  «FOR p : m.inputs»
 
-		  	void «p.receiveName»(const «p.rosType»& message, bool replacing) {
+		  	void «p.receiveName»(const «p.rosType»::ConstSharedPtr& message, bool replacing) {
 		  	  «IF !p.suppressors.empty»
 		  	  	if (!replacing && («FOR l : p.suppressors SEPARATOR ' || '»active(link_«l.stem»_until_)«ENDFOR»)) {
 		  	  	  return;  // suppressed
@@ -205,7 +216,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	  	(void)replacing;
 		  	  «ENDIF»
 		  	  «p.inName» = message;
-		  	  «p.onName»(message);
+		  	  «p.onName»(*message);
 		  	  «IF m.reactive»
 		  	  	«m.reactMethod»();
 		  	  «ENDIF»
@@ -219,10 +230,12 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	  	  return;  // «IF m.cycleBoundNs > 0»at most once per wave of the cycle«ELSE»sporadic: not sooner than its period«ENDIF»
 		  	  	}
 		  	  «ENDIF»
-		  	  «FOR f : m.stepFunctions»
-		  	  	«callFunction(f)»
-		  	  «ENDFOR»
-		  	  publish_outputs();
+		  	  this->rsaml_run_reaction([this] {
+		  	    «FOR f : m.stepFunctions»
+		  	    	«callFunction(f)»
+		  	    «ENDFOR»
+		  	    publish_outputs();
+		  	  });
 		  	}
 		  «ENDIF»
 
@@ -297,11 +310,11 @@ class Ros2NodeTemplate extends Ros2Template {
 		«FOR p : m.inputs»
 			«p.subName»_ = this->create_subscription<«p.rosType»>(
 			    «str(p.topic)», «p.qos»,
-			    [this, port = «IF m.managed»«p.subName»_port_«ELSE»this->rsaml_add_arrivals(«str(p.name)»)«ENDIF»](std::shared_ptr<const «p.rosType»> message) {
+			    [this, port = «IF m.managed»«p.subName»_port_«ELSE»this->rsaml_add_arrivals(«str(p.name)»)«ENDIF»](«p.rosType»::ConstSharedPtr message) {
 			      «IF m.managed»
 			      	«inactiveReturn»
 			      «ENDIF»
-			      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(*message, false); });
+			      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(message, false); });
 			    },
 			    subscription_options);
 		«ENDFOR»
@@ -309,7 +322,7 @@ class Ros2NodeTemplate extends Ros2Template {
 			// «IF l.inhibitor»Inhibitor«ELSE»Suppressor«ENDIF» «doc(l.qualifiedName)», triggered by «IF l.trigger.assertsOnlyWhenTrue»each true on «ELSE»each message on «ENDIF»«doc(l.trigger.qualifiedName)».
 			link_«l.stem»_sub_ = this->create_subscription<«l.trigger.rosType»>(
 			    «str(l.trigger.topic)», «l.trigger.qos»,
-			    [this, port = «IF m.managed»link_«l.stem»_port_«ELSE»this->rsaml_add_arrivals(«str(l.qualifiedName)»)«ENDIF»](std::shared_ptr<const «l.trigger.rosType»> message) {
+			    [this, port = «IF m.managed»link_«l.stem»_port_«ELSE»this->rsaml_add_arrivals(«str(l.qualifiedName)»)«ENDIF»](«l.trigger.rosType»::ConstSharedPtr message) {
 			      «IF m.managed»
 			      	«inactiveReturn»
 			      «ENDIF»
@@ -321,7 +334,7 @@ class Ros2NodeTemplate extends Ros2Template {
 			        «ENDIF»
 			        link_«l.stem»_until_ = this->now() + rclcpp::Duration::from_nanoseconds(link_«l.stem»_duration_);
 			        «IF l.deliversData»
-			        	this->«l.target.receiveName»(*message, true);
+			        	this->«l.target.receiveName»(message, true);
 			        «ELSE»
 			        	(void)message;
 			        «ENDIF»
@@ -435,6 +448,13 @@ class Ros2NodeTemplate extends Ros2Template {
 		    «ENDIF»
 		  }
 	'''
+
+	/** What the analysis says of a module's reactions' response time, for a comment. */
+	def private boundComment(Reaction x) {
+		val bound = context.bounds.of(x)
+		if (bound.responseNs >= 0) '''analysed worst-case response «bound.responseNs» ns («doc(bound.why)»)'''
+		else '''no analysed bound: «doc(bound.why)»'''
+	}
 
 	def private release(Release r) {
 		switch (r.kind) {

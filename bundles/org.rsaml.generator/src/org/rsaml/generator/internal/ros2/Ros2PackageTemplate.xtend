@@ -39,6 +39,12 @@ class Ros2PackageTemplate extends Ros2Template {
 		«ENDFOR»
 	'''
 
+	/**
+	 * What colcon test needs: ament_lint_auto (the linters a package.user.xml names as test_depend
+	 * run on src/) and launch_testing for the launch test.
+	 */
+	static val TEST_DEPENDS = #["ament_lint_auto", "launch_testing", "launch_testing_ament_cmake"]
+
 	def packageXml(Ros2Manifest manifest) {
 		val description = if (doc(plan.description).empty) "The RsaML architecture " + plan.name else plan.description
 		val depends = new TreeSet<String>(#{"rclcpp", "rclcpp_components"})
@@ -50,6 +56,7 @@ class Ros2PackageTemplate extends Ros2Template {
 		generated += "buildtool_depend ament_cmake"
 		depends.forEach[generated += "depend " + it]
 		#["launch", "launch_ros", "ros2launch"].forEach[generated += "exec_depend " + it]
+		TEST_DEPENDS.forEach[generated += "test_depend " + it]
 		'''
 			<?xml version="1.0"?>
 			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
@@ -70,6 +77,10 @@ class Ros2PackageTemplate extends Ros2Template {
 			  <exec_depend>launch</exec_depend>
 			  <exec_depend>launch_ros</exec_depend>
 			  <exec_depend>ros2launch</exec_depend>
+
+			  «FOR d : TEST_DEPENDS»
+			  	<test_depend>«d»</test_depend>
+			  «ENDFOR»
 			  «FOR d : manifest.dependencies(generated)»
 			  	«d»
 			  «ENDFOR»

@@ -59,6 +59,14 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		which configures and activates them once they are up and then exits; `ros2 lifecycle get` shows
 		their states, `ros2 lifecycle set` changes them.
 		«ENDIF»
+
+		Messages are not copied on their way in: each subscription takes a `ConstSharedPtr`, which the
+		node keeps as `in_<port>` (the latest message, null until the first arrives) and whose message
+		`on_<port>` gets as a const reference. Each publication hands the middleware a `std::unique_ptr`
+		(a copy of `out_<port>`, which keeps its value); in `«pkg».launch.py` the nodes of a container use
+		intra-process communication, so the subscriptions in that process share the published message
+		instead of copying or serializing it. Intra-process communication needs a `keep_last` history:
+		keep it when overriding a topic's QoS, or use the processes launch file.
 		«IF rosNames.containers.exists[processor !== null]»
 
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
@@ -76,11 +84,18 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		`CAP_SYS_NICE` nor an `rtprio` limit), each release thread says so on standard output and runs at
 		the default priority: then the analysis's verdicts do not hold. Every node measures its jobs
 		(release to completion, on the node's clock), prints `miss` and `overrun` lines as they happen
-		and a `summary` line per release and per entry port at exit. The parameter
-		`rsaml.simulated_load:=0.9` makes every job busy-work 90 % of its modeled execution time, to see
+		and a `summary` line per release, for its reactions to data (arrival to completion) and per entry
+		port at exit. The parameter
+		`rsaml.simulated_load:=0.9` makes every job (timed release or reaction) busy-work 90 % of its modeled execution time, to see
 		the timing before the code is written.
 
-		`gen/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
+		`colcon test` runs the linters `«Ros2Manifest.FILE»` names as `<test_depend>` (through
+		`ament_lint_auto`; `gen/` excluded) and the launch test `test/test_«pkg»_launch.py`
+		(`launch_testing`: starts the nodes, stops them after a few seconds, and checks that messages
+		reached every entry port a timed module feeds and that every process exited cleanly), each where
+		installed.
+
+		`gen/`, `test/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
 		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`
 		(included by its `CMakeLists.txt`; the interfaces package's also lists interface files of your
 		own, `.srv`, `.action` or more `.msg`, in `RSAML_USER_INTERFACES`), `config/«pkg».params.yaml` and `«Ros2Manifest.FILE»`

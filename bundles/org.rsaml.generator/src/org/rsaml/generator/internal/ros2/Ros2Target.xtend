@@ -27,7 +27,7 @@ import org.rsaml.generator.spi.TargetGenerator
  * Same generation gap as the C++ target: gen/ and the build
  * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
  * Each output file has its template: Ros2NodeTemplate, Ros2ComponentTemplate, Ros2CmakeTemplate,
- * Ros2PackageTemplate, Ros2LaunchTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
+ * Ros2PackageTemplate, Ros2LaunchTemplate, Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
  */
 class Ros2Target implements TargetGenerator {
 
@@ -91,6 +91,8 @@ class Ros2Files {
 		files += GeneratedFile.user(params.path, params.params)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launch.composed)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launch.processes)
+		val launchTest = new Ros2LaunchTestTemplate(context)
+		files += GeneratedFile.generated(pkg + "/" + launchTest.path, launchTest.launchTest)
 		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {
 			files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
 		}

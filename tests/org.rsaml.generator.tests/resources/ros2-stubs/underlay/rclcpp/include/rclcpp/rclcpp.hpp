@@ -118,6 +118,7 @@ class Publisher {
  public:
   using SharedPtr = std::shared_ptr<Publisher<MessageT>>;
   void publish(const MessageT& message) { (void)message; }
+  void publish(std::unique_ptr<MessageT> message) { (void)message; }
 };
 
 // rclcpp/subscription.hpp
