@@ -186,7 +186,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		    composable_node_descriptions=[
 		        		        «FOR m : c.modules»
 		        		        	ComposableNode(package=«py(pkg)», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
-		        		        	               namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap»),
+		        		        	               namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap»,
+		        		        	               extra_arguments=[{'use_intra_process_comms': True}]),
 		        		        «ENDFOR»
 		        		    ]),
 		        	«ENDFOR»
