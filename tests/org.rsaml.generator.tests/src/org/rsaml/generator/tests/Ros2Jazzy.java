@@ -81,6 +81,23 @@ final class Ros2Jazzy {
         return missing;
     }
 
+    private static String launchTesting;
+
+    /**
+     * Why the packages' launch tests cannot run here (null when they can): ROS 2's launch_testing
+     * (launch_testing_ament_cmake, which their CMakeLists.txt looks for under BUILD_TESTING) is not
+     * installed. The ROS 2 Jazzy core of the shared folder does not have it; a full ROS 2 does.
+     */
+    static synchronized String launchTestingMissing() throws Exception {
+        if (launchTesting == null) {
+            Tools.Result r = Tools.run(Tools.root(), 60, bash("ros2 pkg prefix launch_testing_ament_cmake").toArray(String[]::new));
+            launchTesting = r.exit() == 0 ? "" : "launch_testing is absent from the ROS 2 of " + setup()
+                    + " (no launch_testing_ament_cmake): the packages' launch tests (test/test_<pkg>_launch.py) were not run; they run"
+                    + " with colcon test on a ROS 2 that has it (-Drsaml.ros2.setup=/opt/ros/jazzy/setup.bash)";
+        }
+        return launchTesting.isEmpty() ? null : launchTesting;
+    }
+
     /**
      * A bash command line run with ROS 2 sourced (and the workspaces {@code overlays}), Debian's
      * Python first on PATH (ROS 2's scripts and colcon use /usr/bin/python3).

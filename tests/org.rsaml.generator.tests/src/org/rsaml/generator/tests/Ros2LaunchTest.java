@@ -219,6 +219,38 @@ class Ros2LaunchTest {
         }
     }
 
+    /**
+     * The package's own launch test (launch_testing, test/test_&lt;pkg&gt;_launch.py), run by colcon test
+     * as a ROS 2 developer runs it: it starts the nodes, stops them and checks that messages reached
+     * the ports timed modules feed and that every process exited cleanly. Where ROS 2 has no
+     * launch_testing (the Jazzy core of the shared folder), it is skipped and says so: the package's
+     * CMakeLists.txt then adds no launch test (Ros2Test checks that it looks for launch_testing under
+     * BUILD_TESTING, and every colcon build here configures that block).
+     */
+    @org.junit.jupiter.api.Test
+    void thePackagesLaunchTestPassesUnderColconTest(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String absent = Ros2Jazzy.launchTestingMissing();
+        if (absent != null) {
+            System.err.println("Ros2LaunchTest: skipped: " + absent);
+        }
+        Assumptions.assumeTrue(absent == null, absent);
+        Path model = Ros2Test.model("resources/ros2-shared-messages.rsaml");
+        String pkg = Names.snake(ModelLoader.load(model, "ros2-shared-messages.rsaml").architecture().getName());
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        Ros2Jazzy.colconBuild(src, tmp);
+        String paths = " --build-base '" + tmp.resolve("build") + "' --install-base '" + tmp.resolve("install") + "'";
+        Tools.Result test = Tools.run(tmp, 600, Ros2Jazzy.bash("colcon --log-base '" + tmp.resolve("log") + "' test --base-paths '" + src + "'"
+                + paths + " --packages-select " + pkg + " --event-handlers console_direct+").toArray(String[]::new));
+        Tools.Result result = Tools.run(tmp, 60, Ros2Jazzy.bash("colcon test-result --verbose --test-result-base '" + tmp.resolve("build/" + pkg)
+                + "'").toArray(String[]::new));
+        assertTrue(test.exit() == 0 && result.exit() == 0 && result.output().contains("0 errors, 0 failures"),
+                "colcon test of " + pkg + ":\n" + Tools.last(test.output(), 6000) + "\n" + result.output());
+        assertTrue(result.output().contains("test_" + pkg + "_launch"), "the launch test did not run:\n" + result.output());
+    }
+
     private static void replace(Path file, String what, String with) throws java.io.IOException {
         String text = Files.readString(file);
         assertTrue(text.contains(what), file + " does not contain " + what + ":\n" + text);
