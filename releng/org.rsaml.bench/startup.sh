@@ -12,6 +12,7 @@ command -v hyperfine >/dev/null || { echo "startup.sh: needs hyperfine (apt-get 
 ./rsaml validate examples/exp2-defects.rsaml >/dev/null || true   # makes the class-data archive once (or again, if it no longer fits)
 model=examples/exp2-defects.rsaml
 out="$(mktemp)"
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
 hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" \
   -n 'java -version (the floor)' 'java -version' \
   -n './rsaml validate (launcher: CDS archive, tiered JIT, serial GC)' "./rsaml validate $model" \
@@ -30,4 +31,5 @@ for r in results:
     print(f"| {r['command']} | {ms(r['median'])} | {r['median'] / floor:.1f}× | {ms(cpu)} | {cpu / cpu_floor:.1f}× "
           f"| {ms(r['mean'])} ± {r['stddev'] * 1000:,.0f} | {ms(r['min'])} | {ms(r['max'])} |")
 PY
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
 rm -f "$out"
