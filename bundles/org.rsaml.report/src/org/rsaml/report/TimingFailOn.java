@@ -6,7 +6,7 @@ package org.rsaml.report;
 
 import java.util.Arrays;
 import java.util.Locale;
-import java.util.Optional;
+import java.util.stream.Collectors;
 
 import org.rsaml.analysis.Verdict;
 import org.rsaml.validation.Severity;
@@ -37,10 +37,16 @@ public enum TimingFailOn {
         return label;
     }
 
-    /** The level written as {@code miss}, {@code not-analysed} or {@code never}. */
-    public static Optional<TimingFailOn> parse(String text) {
+    /**
+     * The level written as {@code miss}, {@code not-analysed} or {@code never} (any case, surrounding blanks ignored).
+     *
+     * @throws IllegalArgumentException naming the value and the levels there are, as {@link FindingFailOn#parse} does
+     */
+    public static TimingFailOn parse(String text) {
         String t = text == null ? "" : text.strip().toLowerCase(Locale.ROOT);
-        return Arrays.stream(values()).filter(v -> v.label.equals(t)).findFirst();
+        return Arrays.stream(values()).filter(v -> v.label.equals(t)).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("'" + text + "' is not a level; it is one of "
+                        + Arrays.stream(values()).map(TimingFailOn::label).collect(Collectors.joining(", "))));
     }
 
     /** Whether a model whose architecture has this overall verdict fails the run. */

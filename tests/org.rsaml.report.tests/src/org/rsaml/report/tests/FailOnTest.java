@@ -10,7 +10,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.Optional;
 
 import org.junit.jupiter.api.Test;
 import org.rsaml.analysis.Verdict;
@@ -39,7 +38,7 @@ class FailOnTest {
 
     @Test
     void missFailsOnlyAMiss() {
-        TimingFailOn miss = TimingFailOn.parse("miss").orElseThrow();
+        TimingFailOn miss = TimingFailOn.parse("miss");
         assertTrue(miss.fails(Verdict.MISSES), "a possible miss fails");
         assertFalse(miss.fails(Verdict.NOT_ANALYSED), "what is not analysed does not fail by default");
         assertFalse(miss.fails(Verdict.MEETS), "a proven model passes");
@@ -48,7 +47,7 @@ class FailOnTest {
 
     @Test
     void notAnalysedFailsAllButAProvenModel() {
-        TimingFailOn strict = TimingFailOn.parse(" Not-Analysed").orElseThrow();
+        TimingFailOn strict = TimingFailOn.parse(" Not-Analysed");
         assertTrue(strict.fails(Verdict.MISSES), "a possible miss fails");
         assertTrue(strict.fails(Verdict.NOT_ANALYSED), "what is not analysed fails");
         assertFalse(strict.fails(Verdict.MEETS), "a proven model passes");
@@ -57,12 +56,14 @@ class FailOnTest {
 
     @Test
     void neverFailsNothingAndUnknownTimingLevelsAreNone() {
-        TimingFailOn never = TimingFailOn.parse("never").orElseThrow();
+        TimingFailOn never = TimingFailOn.parse("never");
         for (Verdict verdict : Verdict.values()) {
             assertFalse(never.fails(verdict), "never fails no verdict, not " + verdict);
         }
         assertNull(never.findingThreshold(), "never: no finding fails the reports");
-        assertEquals(Optional.empty(), TimingFailOn.parse("misses"), "a level that does not exist is none, for the front end to refuse");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TimingFailOn.parse("misses"));
+        assertEquals("'misses' is not a level; it is one of miss, not-analysed, never", e.getMessage(),
+                "a level that does not exist is refused, naming the levels there are");
         assertEquals("not-analysed", TimingFailOn.NOT_ANALYSED.toString(), "a level prints as the user writes it");
     }
 }

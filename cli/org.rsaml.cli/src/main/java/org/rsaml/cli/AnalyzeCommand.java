@@ -18,7 +18,6 @@ import org.rsaml.report.TimingFailOn;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Parameters;
 
 /** {@code rsaml analyze MODEL...}: schedulability per processor and end-to-end latency, with witnesses. */
@@ -50,16 +49,14 @@ final class AnalyzeCommand extends RsamlCommand {
     @Option(names = "--fail-on", defaultValue = "miss", paramLabel = "LEVEL",
             description = { "Which verdicts make the exit code 1: miss (a deadline or requirement can be missed), not-analysed",
                     "(also a task, processor or requirement not analysed: only a proven model exits 0) or never (default: ${DEFAULT-VALUE})." })
-    String failOn;
+    TimingFailOn failOn;
 
     @Override
     public Integer call() {
-        TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new ParameterException(spec.commandLine(),
-                "Invalid value for option '--fail-on': '" + failOn + "' (expected miss, not-analysed or never)"));
         ReportFormat findings = format == Format.sarif ? ReportFormat.SARIF : format == Format.junit ? ReportFormat.JUNIT : null;
         PrintWriter out = out();
         PrintWriter err = err();
-        TimingBatch.Request request = new TimingBatch.Request(timeline, level, format == Format.json, findings != null);
+        TimingBatch.Request request = new TimingBatch.Request(timeline, failOn, format == Format.json, findings != null);
         TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, request, new TimingBatch.Listener() {
             @Override
             public void analysed(String displayName, ArchitectureTiming timing) {

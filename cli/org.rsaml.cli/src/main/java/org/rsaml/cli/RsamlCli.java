@@ -20,6 +20,7 @@ import org.rsaml.diagram.DiagramView;
 import org.rsaml.generator.Target;
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.FindingFailOn;
+import org.rsaml.report.TimingFailOn;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
 
@@ -97,6 +98,7 @@ public final class RsamlCli implements Runnable {
         // Every value with a name of its own is read by its type's parse, which names the value and what it can be.
         commandLine.registerConverter(ReportFormat.class, parsedBy(ReportFormat::parse));
         commandLine.registerConverter(FindingFailOn.class, parsedBy(FindingFailOn::parse));
+        commandLine.registerConverter(TimingFailOn.class, parsedBy(TimingFailOn::parse));
         commandLine.registerConverter(DiagramView.class, parsedBy(DiagramView::parse));
         commandLine.registerConverter(DiagramFormat.class, parsedBy(DiagramFormat::parse));
         commandLine.registerConverter(Target.class, parsedBy(Target::parse));

@@ -80,8 +80,12 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
         List<ReportFormat> reportFormats = reportFormats("formats", formats);
-        TimingFailOn level = TimingFailOn.parse(failOn).orElseThrow(() -> new MojoExecutionException(
-                "failOn is '" + failOn + "'; it is miss, not-analysed or never"));
+        TimingFailOn level;
+        try {
+            level = TimingFailOn.parse(failOn);
+        } catch (IllegalArgumentException e) {
+            throw new MojoExecutionException("failOn: " + e.getMessage());
+        }
         List<Path> shown = models.stream().map(model -> Path.of(relative(model.toPath()))).toList();
         TimingBatch.Request request = new TimingBatch.Request(timeline == null ? null : Path.of(relative(timeline.toPath())), level,
                 timingJson != null, !reportFormats.isEmpty());
