@@ -178,6 +178,9 @@ public final class RsamlModelValidator {
             }
         };
         Map<Object, Object> context = diagnostician.createDefaultContext();
+        if (validator instanceof RuleEValidator) {
+            context.put(EValidator.SubstitutionLabelProvider.class, RuleEValidator.LABELS); // once, not per element
+        }
         BasicDiagnostic chain = new BasicDiagnostic();
         // One architecture validated whole: its walk judges the timing rules' prerequisites, the timing rules come after it.
         boolean whole = validator instanceof RuleEValidator && roots.size() == 1 && roots.get(0) instanceof Architecture a

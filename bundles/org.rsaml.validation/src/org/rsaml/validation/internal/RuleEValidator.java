@@ -113,12 +113,18 @@ public class RuleEValidator extends EObjectValidator {
         }
         EClassifier classifier = getEPackage().getEClassifiers().get(classifierID);
         BasicDiagnostic found = diagnostics == null ? null : new BasicDiagnostic();
-        Object clientLabels = context == null ? null : context.put(EValidator.SubstitutionLabelProvider.class, LABELS);
+        // RsaML's labels for EMF's messages, unless the validation already uses them (RsamlModelValidator's does throughout)
+        Object clientLabels = context == null ? null : context.get(EValidator.SubstitutionLabelProvider.class);
+        boolean ours = clientLabels == LABELS;
+        if (context != null && !ours) {
+            context.put(EValidator.SubstitutionLabelProvider.class, LABELS);
+        }
+        ValidationFacts facts = ValidationFacts.of(context);
         boolean result;
         try {
-            result = validateElement((EClass) classifier, eObject, found, context);
+            result = validateElement((EClass) classifier, eObject, found, context, facts);
         } finally {
-            if (context != null) {
+            if (context != null && !ours) {
                 if (clientLabels == null) {
                     context.remove(EValidator.SubstitutionLabelProvider.class);
                 } else {
@@ -131,7 +137,7 @@ public class RuleEValidator extends EObjectValidator {
                 diagnostics.add(SOURCE.equals(d.getSource()) ? d : structural(d));
             }
         }
-        if ((result || diagnostics != null) && TimingChecks.concerns(eObject) && !TimingChecks.deferred(context)) {
+        if ((result || diagnostics != null) && TimingChecks.concerns(eObject) && !(facts != null && facts.timingDeferred())) {
             for (TimingChecks.Found f : TimingChecks.on(eObject, context, rules)) {
                 result = false;
                 if (diagnostics == null) {
@@ -143,9 +149,12 @@ public class RuleEValidator extends EObjectValidator {
         return result;
     }
 
-    private boolean validateElement(EClass eClass, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
-        List<Invariant> applicable = invariants.computeIfAbsent(eClass, this::invariantsOf);
-        ValidationFacts facts = ValidationFacts.of(context);
+    private boolean validateElement(EClass eClass, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context,
+            ValidationFacts facts) {
+        List<Invariant> applicable = invariants.get(eClass);
+        if (applicable == null) {
+            applicable = invariants.computeIfAbsent(eClass, this::invariantsOf);
+        }
         boolean judging = facts != null && facts.timingDeferred(); // this walk decides the timing rules' prerequisites
         boolean result;
         if (facts != null && facts.knownStructurallySound(eObject)) {

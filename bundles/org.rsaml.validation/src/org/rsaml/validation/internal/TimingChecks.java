@@ -161,12 +161,6 @@ public final class TimingChecks {
         ValidationFacts.of(context).deferTiming();
     }
 
-    /** Whether the timing rules of this validation wait for the end of the walk ({@link #deferToAfterWalk}). */
-    static boolean deferred(Map<Object, Object> context) {
-        ValidationFacts facts = ValidationFacts.of(context);
-        return facts != null && facts.timingDeferred();
-    }
-
     /**
      * The timing findings of a deferred validation of {@code architecture} ({@link #deferToAfterWalk}), in document
      * order, as the walk would have reported them: none when an element broke a prerequisite.
