@@ -15,7 +15,7 @@ out="$(mktemp)"
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
 hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" \
   -n 'java -version (the floor)' 'java -version' \
-  -n './rsaml validate (launcher: CDS archive, tiered JIT, serial GC)' "./rsaml validate $model" \
+  -n './rsaml validate (launcher: CDS archive, C1 alone for small inputs, serial GC)' "./rsaml validate $model" \
   -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model" \
   -n './rsaml --version' './rsaml --version'
 python3 - "$out" <<'PY'
