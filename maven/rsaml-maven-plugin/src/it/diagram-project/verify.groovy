@@ -8,7 +8,7 @@ assert log.contains('BUILD SUCCESS')
 def dir = new File(basedir, 'target/rsaml/diagrams')
 def expected = ['exp2-defects', 'rover'].collectMany { m -> ['architecture', 'mission'].collectMany { v -> ['svg', 'html'].collect { f -> "$m-$v.$f" as String } } } as Set
 assert dir.list() as Set == expected
-expected.each { assert log.contains("RsaML: drew target/rsaml/diagrams/$it") }
+expected.each { assert log.contains("RsaML: wrote target/rsaml/diagrams/$it") }
 def svg = javax.xml.parsers.DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(new File(dir, 'exp2-defects-architecture.svg'))
 assert svg.documentElement.tagName == 'svg'
 // Every rule the model's <!-- expect: --> comments state decorates the HTML report.

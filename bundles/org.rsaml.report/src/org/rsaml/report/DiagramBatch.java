@@ -38,6 +38,11 @@ public final class DiagramBatch {
         void failed(List<String> lines, Throwable cause);
     }
 
+    /** What a front end says of a diagram written to {@code file} (as the user reads it): {@code wrote DIR/FILE}. */
+    public static String wrote(Path file) {
+        return "wrote " + ModelFiles.display(file);
+    }
+
     private final List<DiagramView> views;
     private final List<DiagramFormat> formats;
     private final TimingMode timing;

@@ -72,6 +72,14 @@ public record Report(List<Rule> rules, List<FileResult> results, Severity failOn
         return s.toString();
     }
 
+    /**
+     * The {@link #summary()} of a report also written as files into {@code reportsShown} (as the user reads the
+     * directory; {@code null} when none were written): {@code 3 files checked: 5 errors, 1 warning; reports in target/rsaml}.
+     */
+    public String summary(String reportsShown) {
+        return summary() + (reportsShown == null ? "" : "; reports in " + reportsShown);
+    }
+
     private static String plural(long n, String word) {
         return n + " " + word + (n == 1 ? "" : "s");
     }

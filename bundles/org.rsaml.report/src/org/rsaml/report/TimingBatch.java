@@ -38,13 +38,17 @@ public final class TimingBatch {
         /** A timeline could not be written: {@code line} says so. */
         void timelineFailed(String line);
 
-        /** A witness's timeline was written to {@code file}. */
-        default void timeline(Path file) {
-        }
+        /**
+         * A witness's timeline was written to {@code file}; {@code line} says so in the words every front end shows:
+         * {@code timeline written: DIR/FILE.svg}, DIR as the user named it.
+         */
+        void timeline(Path file, String line);
 
-        /** A model's verdicts had no witness to draw a timeline of. */
-        default void noTimeline(String displayName) {
-        }
+        /**
+         * A model's verdicts had no witness to draw a timeline of; {@code line} says so in the words every front end
+         * shows: {@code MODEL: no timeline written: ...}.
+         */
+        void noTimeline(String displayName, String line);
     }
 
     /**
@@ -81,6 +85,14 @@ public final class TimingBatch {
             int code = !unanalysable.isEmpty() || outputFailed ? ExitCodes.INPUT_ERROR
                     : failing.isEmpty() ? ExitCodes.OK : ExitCodes.FINDINGS;
             return findings == null ? code : Math.max(code, findings.exitCode());
+        }
+
+        /**
+         * The timing rules' findings in one line, as the goal's log shows it after writing their reports into
+         * {@code reportsShown}: {@code timing findings: 1 file checked: 1 error, 0 warnings; reports in target/rsaml}.
+         */
+        public String findingsSummary(String reportsShown) {
+            return "timing findings: " + findings.summary(reportsShown);
         }
 
         /** Why the timelines are incomplete ({@code cannot write the timeline into DIR; ...}), or {@code null} when they are not. */
@@ -158,9 +170,12 @@ public final class TimingBatch {
             if (timeline != null) {
                 try {
                     List<Path> written = TimingSvg.write(base.resolve(timeline), timing);
-                    written.forEach(listener::timeline);
+                    for (Path file : written) {
+                        listener.timeline(file, "timeline written: " + ModelFiles.display(timeline.resolve(file.getFileName())));
+                    }
                     if (written.isEmpty()) {
-                        listener.noTimeline(input.displayName());
+                        listener.noTimeline(input.displayName(), input.displayName()
+                                + ": no timeline written: no missed deadline or exceeded latency requirement has a witness");
                     }
                 } catch (IOException e) {
                     listener.timelineFailed(ModelFiles.display(timeline) + ": error: cannot write the timeline: " + e.getMessage());

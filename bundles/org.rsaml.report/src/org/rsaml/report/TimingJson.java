@@ -59,6 +59,11 @@ public final class TimingJson {
             AtomicFiles.writeString(file, text() + "\n");
         }
 
+        /** What a front end says once the document is written to {@code file} (as the user reads it). */
+        public static String written(Path file) {
+            return "timing analysis written: " + ModelFiles.display(file);
+        }
+
         /**
          * Writes the document to {@code file} (relative to {@code base}, as the user named it or as the build log
          * shows it), replaced whole or left as it was.

@@ -45,6 +45,7 @@ class TimingBatchTest {
         final List<Path> timelines = new ArrayList<>();
         final List<String> withoutTimeline = new ArrayList<>();
         final List<String> failures = new ArrayList<>();
+        final List<String> lines = new ArrayList<>();
 
         @Override
         public void analysed(String displayName, ArchitectureTiming timing) {
@@ -63,13 +64,15 @@ class TimingBatchTest {
         }
 
         @Override
-        public void timeline(Path file) {
+        public void timeline(Path file, String line) {
             timelines.add(file);
+            lines.add(line);
         }
 
         @Override
-        public void noTimeline(String displayName) {
+        public void noTimeline(String displayName, String line) {
             withoutTimeline.add(displayName);
+            lines.add(line);
         }
     }
 
@@ -117,7 +120,11 @@ class TimingBatchTest {
         for (Path file : heard.timelines) {
             assertEquals(dir.resolve("timeline"), file.getParent(), "timelines go into the directory asked for");
             assertTrue(Files.readString(file).contains("<svg"), file + " is an SVG image");
+            assertTrue(heard.lines.contains("timeline written: " + dir.resolve("timeline").resolve(file.getFileName()).toString().replace('\\', '/')),
+                    "each timeline is said, in the directory as named: " + heard.lines);
         }
+        assertTrue(heard.lines.contains("examples/mobile-base-latency.rsaml: no timeline written: no missed deadline or exceeded latency"
+                + " requirement has a witness"), "the model without a witness is said: " + heard.lines);
     }
 
     @Test

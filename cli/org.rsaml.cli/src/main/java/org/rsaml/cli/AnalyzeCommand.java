@@ -11,7 +11,6 @@ import java.util.Map;
 
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.TimingText;
-import org.rsaml.report.ModelFiles;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
@@ -75,13 +74,13 @@ final class AnalyzeCommand extends RsamlCommand {
             }
 
             @Override
-            public void timeline(Path file) {
-                err.println("timeline written: " + ModelFiles.display(parent.workingDirectory.relativize(file)));
+            public void timeline(Path file, String line) {
+                err.println(line);
             }
 
             @Override
-            public void noTimeline(String displayName) {
-                err.println(displayName + ": no timeline written: no missed deadline or exceeded latency requirement has a witness");
+            public void noTimeline(String displayName, String line) {
+                err.println(line);
             }
 
             @Override

@@ -68,7 +68,7 @@ final class DiagramCommand extends RsamlCommand {
         int failed = batch.draw(inputs, directory, new DiagramBatch.Listener() {
             @Override
             public void written(Path file) {
-                out.println("wrote " + ModelFiles.display(output.resolve(file.getFileName())));
+                out.println(DiagramBatch.wrote(output.resolve(file.getFileName())));
             }
 
             @Override

@@ -22,6 +22,7 @@ import org.rsaml.analysis.Verdict;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
+import org.rsaml.report.TimingJson;
 
 /**
  * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
@@ -101,8 +102,13 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
             }
 
             @Override
-            public void timeline(Path file) {
-                log.info("RsaML: timeline written: " + relative(file));
+            public void timeline(Path file, String line) {
+                log.info("RsaML: " + line);
+            }
+
+            @Override
+            public void noTimeline(String displayName, String line) {
+                log.info("RsaML: " + line);
             }
 
             @Override
@@ -116,13 +122,12 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
                 log.error(failure);
                 throw new MojoExecutionException("RsaML timing: " + failure);
             }
-            log.info("RsaML: timing analysis written: " + relative(timingJson.toPath()));
+            log.info("RsaML: " + TimingJson.Document.written(Path.of(relative(timingJson.toPath()))));
         }
         if (outcome.findings() != null) {
             writeReports(outcome.findings(), reportFormats, reportDirectory, format -> format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
                     : "rsaml-timing." + format.extension());
-            log.info("RsaML timing findings: " + outcome.findings().summary() + "; reports in "
-                    + relative(reportDirectory.toPath()));
+            log.info("RsaML: " + outcome.findingsSummary(relative(reportDirectory.toPath())));
         }
         if (outcome.outputFailure() != null) {
             throw new MojoExecutionException("RsaML timing: " + outcome.outputFailure());

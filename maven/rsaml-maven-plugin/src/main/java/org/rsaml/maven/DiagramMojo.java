@@ -90,7 +90,7 @@ public class DiagramMojo extends AbstractModelsMojo {
         int failed = batch.draw(inputs, outputDirectory.toPath(), new DiagramBatch.Listener() {
             @Override
             public void written(Path file) {
-                log.info("RsaML: drew " + relative(file));
+                log.info("RsaML: " + DiagramBatch.wrote(Path.of(relative(file))));
             }
 
             @Override

@@ -59,7 +59,7 @@ public class ValidateMojo extends AbstractModelsMojo {
         Report report = ModelBatch.validate(base, models, threshold);
         log(report);
         writeReports(report, reportFormats, reportDirectory, ValidateMojo::fileName);
-        log.info("RsaML: " + report.summary() + (reportFormats.isEmpty() ? "" : "; reports in " + relative(reportDirectory.toPath())));
+        log.info("RsaML: " + report.summary(reportFormats.isEmpty() ? null : relative(reportDirectory.toPath())));
 
         if (report.unreadable() > 0) {
             throw new MojoFailureException("RsaML could not read " + report.unreadable() + " model file"
