@@ -72,12 +72,13 @@ public final class ExecutionPlan {
     final List<Reaction> reactions = new ArrayList<>();
     final Set<String> messageTypes = new LinkedHashSet<>();
     final List<String> warnings = new ArrayList<>();
-    final Map<Port, PlannedPort> ports = new IdentityHashMap<>();
+    final Map<Port, PlannedPort> ports;
 
-    /** An empty plan, filled by the {@link Planner}. */
-    ExecutionPlan(Architecture architecture) {
+    /** An empty plan, filled by the {@link Planner}, for about {@code ports} ports (its map sized once). */
+    ExecutionPlan(Architecture architecture, int ports) {
         this.architecture = architecture;
         this.name = RsamlLabels.name(architecture);
+        this.ports = new IdentityHashMap<>(ports);
     }
 
     /**

@@ -47,7 +47,13 @@ final class Planner {
     private final ExecutionPlan plan;
 
     private Planner(Architecture architecture) {
-        this.plan = new ExecutionPlan(architecture);
+        int ports = 0;
+        for (Layer layer : architecture.getLayers()) {
+            for (Module module : layer.getModules()) {
+                ports += module.getPorts().size();
+            }
+        }
+        this.plan = new ExecutionPlan(architecture, ports);
     }
 
     static ExecutionPlan plan(Architecture architecture) throws UnplannableException {
