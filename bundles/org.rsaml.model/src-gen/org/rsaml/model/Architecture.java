@@ -22,6 +22,7 @@ import org.eclipse.emf.common.util.EList;
  *   <li>{@link org.rsaml.model.Architecture#getCategory <em>Category</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getDeclaredLayers <em>Declared Layers</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getLifecycle <em>Lifecycle</em>}</li>
+ *   <li>{@link org.rsaml.model.Architecture#getPackages <em>Packages</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getLayers <em>Layers</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getConnections <em>Connections</em>}</li>
  *   <li>{@link org.rsaml.model.Architecture#getSensors <em>Sensors</em>}</li>
@@ -123,6 +124,35 @@ public interface Architecture extends NamedElement {
 	 * @generated
 	 */
 	void setLifecycle(NodeLifecycle value);
+
+	/**
+	 * Returns the value of the '<em><b>Packages</b></em>' attribute.
+	 * The default value is <code>"single"</code>.
+	 * The literals are from the enumeration {@link org.rsaml.model.PackageLayout}.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * How the ROS 2 target divides the nodes into packages: one package for every node (single, the default), a package per layer (perLayer) or per processor (perProcessor); the message types the model names are in an interfaces package of their own in every layout. The C++ target ignores it.
+	 * <!-- end-model-doc -->
+	 * @return the value of the '<em>Packages</em>' attribute.
+	 * @see org.rsaml.model.PackageLayout
+	 * @see #setPackages(PackageLayout)
+	 * @see org.rsaml.model.RsamlPackage#getArchitecture_Packages()
+	 * @model default="single"
+	 * @generated
+	 */
+	PackageLayout getPackages();
+
+	/**
+	 * Sets the value of the '{@link org.rsaml.model.Architecture#getPackages <em>Packages</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @param value the new value of the '<em>Packages</em>' attribute.
+	 * @see org.rsaml.model.PackageLayout
+	 * @see #getPackages()
+	 * @generated
+	 */
+	void setPackages(PackageLayout value);
 
 	/**
 	 * Returns the value of the '<em><b>Layers</b></em>' containment reference list.

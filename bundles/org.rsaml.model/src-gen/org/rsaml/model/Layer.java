@@ -26,8 +26,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getLayer()
- * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames RSA13_nonNegativeTimes RSA20_representableTimes'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='modules-&gt;isUnique(normalizedName())' RSA13_nonNegativeTimes='maxExecTime &gt;= 0' RSA20_representableTimes='representable(maxExecTime)'"
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA09_uniqueNames RSA13_nonNegativeTimes RSA20_representableTimes RSA29_packageNameUsable'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA09_uniqueNames='modules-&gt;isUnique(normalizedName())' RSA13_nonNegativeTimes='maxExecTime &gt;= 0' RSA20_representableTimes='representable(maxExecTime)' RSA29_packageNameUsable='packageProblem() = null'"
  * @generated
  */
 public interface Layer extends NamedElement, TimeScaled {
@@ -126,5 +126,16 @@ public interface Layer extends NamedElement, TimeScaled {
 	 * @generated
 	 */
 	EList<org.rsaml.model.Module> getModules();
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * When the architecture asks for a ROS 2 package per layer and this layer has modules: what makes the package name made from its name unusable (no letters or digits to make it from, a name the generator takes itself, or the package name of another layer); null otherwise.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	String packageProblem();
 
 } // Layer

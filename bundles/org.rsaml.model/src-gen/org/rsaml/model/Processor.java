@@ -27,8 +27,8 @@ import org.eclipse.emf.common.util.EList;
  * </ul>
  *
  * @see org.rsaml.model.RsamlPackage#getProcessor()
- * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes'"
- *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='linkLatency &gt;= 0' RSA20_representableTimes='representable(linkLatency)'"
+ * @model annotation="http://www.eclipse.org/emf/2002/Ecore constraints='RSA13_nonNegativeTimes RSA20_representableTimes RSA29_packageNameUsable'"
+ *        annotation="http://www.eclipse.org/emf/2002/Ecore/OCL RSA13_nonNegativeTimes='linkLatency &gt;= 0' RSA20_representableTimes='representable(linkLatency)' RSA29_packageNameUsable='packageProblem() = null'"
  * @generated
  */
 public interface Processor extends NamedElement, TimeScaled {
@@ -177,5 +177,16 @@ public interface Processor extends NamedElement, TimeScaled {
 	 * @generated
 	 */
 	void setLinkLatency(double value);
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * <!-- begin-model-doc -->
+	 * When the architecture asks for a ROS 2 package per processor and modules are allocated to this processor: what makes the package name made from its name unusable (no letters or digits to make it from, a name the generator takes itself, or the package name of another processor); null otherwise.
+	 * <!-- end-model-doc -->
+	 * @model
+	 * @generated
+	 */
+	String packageProblem();
 
 } // Processor

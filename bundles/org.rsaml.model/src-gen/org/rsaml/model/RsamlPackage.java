@@ -401,13 +401,22 @@ public interface RsamlPackage extends EPackage {
 	int ARCHITECTURE__LIFECYCLE = NAMED_ELEMENT_FEATURE_COUNT + 2;
 
 	/**
+	 * The feature id for the '<em><b>Packages</b></em>' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int ARCHITECTURE__PACKAGES = NAMED_ELEMENT_FEATURE_COUNT + 3;
+
+	/**
 	 * The feature id for the '<em><b>Layers</b></em>' containment reference list.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__LAYERS = NAMED_ELEMENT_FEATURE_COUNT + 3;
+	int ARCHITECTURE__LAYERS = NAMED_ELEMENT_FEATURE_COUNT + 4;
 
 	/**
 	 * The feature id for the '<em><b>Connections</b></em>' containment reference list.
@@ -416,7 +425,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__CONNECTIONS = NAMED_ELEMENT_FEATURE_COUNT + 4;
+	int ARCHITECTURE__CONNECTIONS = NAMED_ELEMENT_FEATURE_COUNT + 5;
 
 	/**
 	 * The feature id for the '<em><b>Sensors</b></em>' containment reference list.
@@ -425,7 +434,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__SENSORS = NAMED_ELEMENT_FEATURE_COUNT + 5;
+	int ARCHITECTURE__SENSORS = NAMED_ELEMENT_FEATURE_COUNT + 6;
 
 	/**
 	 * The feature id for the '<em><b>Actuators</b></em>' containment reference list.
@@ -434,7 +443,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__ACTUATORS = NAMED_ELEMENT_FEATURE_COUNT + 6;
+	int ARCHITECTURE__ACTUATORS = NAMED_ELEMENT_FEATURE_COUNT + 7;
 
 	/**
 	 * The feature id for the '<em><b>Missions</b></em>' containment reference list.
@@ -443,7 +452,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__MISSIONS = NAMED_ELEMENT_FEATURE_COUNT + 7;
+	int ARCHITECTURE__MISSIONS = NAMED_ELEMENT_FEATURE_COUNT + 8;
 
 	/**
 	 * The feature id for the '<em><b>Supervisors</b></em>' containment reference list.
@@ -452,7 +461,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__SUPERVISORS = NAMED_ELEMENT_FEATURE_COUNT + 8;
+	int ARCHITECTURE__SUPERVISORS = NAMED_ELEMENT_FEATURE_COUNT + 9;
 
 	/**
 	 * The feature id for the '<em><b>Orders</b></em>' containment reference list.
@@ -461,7 +470,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__ORDERS = NAMED_ELEMENT_FEATURE_COUNT + 9;
+	int ARCHITECTURE__ORDERS = NAMED_ELEMENT_FEATURE_COUNT + 10;
 
 	/**
 	 * The feature id for the '<em><b>Databases</b></em>' containment reference list.
@@ -470,7 +479,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__DATABASES = NAMED_ELEMENT_FEATURE_COUNT + 10;
+	int ARCHITECTURE__DATABASES = NAMED_ELEMENT_FEATURE_COUNT + 11;
 
 	/**
 	 * The feature id for the '<em><b>Processors</b></em>' containment reference list.
@@ -479,7 +488,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__PROCESSORS = NAMED_ELEMENT_FEATURE_COUNT + 11;
+	int ARCHITECTURE__PROCESSORS = NAMED_ELEMENT_FEATURE_COUNT + 12;
 
 	/**
 	 * The feature id for the '<em><b>Latency Requirements</b></em>' containment reference list.
@@ -488,7 +497,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE__LATENCY_REQUIREMENTS = NAMED_ELEMENT_FEATURE_COUNT + 12;
+	int ARCHITECTURE__LATENCY_REQUIREMENTS = NAMED_ELEMENT_FEATURE_COUNT + 13;
 
 	/**
 	 * The number of structural features of the '<em>Architecture</em>' class.
@@ -497,7 +506,7 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 * @ordered
 	 */
-	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 13;
+	int ARCHITECTURE_FEATURE_COUNT = NAMED_ELEMENT_FEATURE_COUNT + 14;
 
 	/**
 	 * The operation id for the '<em>Normalized Name</em>' operation.
@@ -645,13 +654,22 @@ public interface RsamlPackage extends EPackage {
 	int LAYER___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
 
 	/**
+	 * The operation id for the '<em>Package Problem</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int LAYER___PACKAGE_PROBLEM = NAMED_ELEMENT_OPERATION_COUNT + 4;
+
+	/**
 	 * The number of operations of the '<em>Layer</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int LAYER_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
+	int LAYER_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 5;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.ModuleImpl <em>Module</em>}' class.
@@ -3503,13 +3521,22 @@ public interface RsamlPackage extends EPackage {
 	int PROCESSOR___REPRESENTABLE_PERIOD__DOUBLE = NAMED_ELEMENT_OPERATION_COUNT + 3;
 
 	/**
+	 * The operation id for the '<em>Package Problem</em>' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 * @ordered
+	 */
+	int PROCESSOR___PACKAGE_PROBLEM = NAMED_ELEMENT_OPERATION_COUNT + 4;
+
+	/**
 	 * The number of operations of the '<em>Processor</em>' class.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
 	 * @generated
 	 * @ordered
 	 */
-	int PROCESSOR_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 4;
+	int PROCESSOR_OPERATION_COUNT = NAMED_ELEMENT_OPERATION_COUNT + 5;
 
 	/**
 	 * The meta object id for the '{@link org.rsaml.model.impl.LatencyRequirementImpl <em>Latency Requirement</em>}' class.
@@ -3737,6 +3764,16 @@ public interface RsamlPackage extends EPackage {
 	int NODE_LIFECYCLE = 36;
 
 	/**
+	 * The meta object id for the '{@link org.rsaml.model.PackageLayout <em>Package Layout</em>}' enum.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see org.rsaml.model.PackageLayout
+	 * @see org.rsaml.model.impl.RsamlPackageImpl#getPackageLayout()
+	 * @generated
+	 */
+	int PACKAGE_LAYOUT = 37;
+
+	/**
 	 * The meta object id for the '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}' enum.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -3744,7 +3781,7 @@ public interface RsamlPackage extends EPackage {
 	 * @see org.rsaml.model.impl.RsamlPackageImpl#getLatencyKind()
 	 * @generated
 	 */
-	int LATENCY_KIND = 37;
+	int LATENCY_KIND = 38;
 
 
 	/**
@@ -3959,6 +3996,17 @@ public interface RsamlPackage extends EPackage {
 	EAttribute getArchitecture_Lifecycle();
 
 	/**
+	 * Returns the meta object for the attribute '{@link org.rsaml.model.Architecture#getPackages <em>Packages</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the attribute '<em>Packages</em>'.
+	 * @see org.rsaml.model.Architecture#getPackages()
+	 * @see #getArchitecture()
+	 * @generated
+	 */
+	EAttribute getArchitecture_Packages();
+
+	/**
 	 * Returns the meta object for the containment reference list '{@link org.rsaml.model.Architecture#getLayers <em>Layers</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -4121,6 +4169,16 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EReference getLayer_Modules();
+
+	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.Layer#packageProblem() <em>Package Problem</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Package Problem</em>' operation.
+	 * @see org.rsaml.model.Layer#packageProblem()
+	 * @generated
+	 */
+	EOperation getLayer__PackageProblem();
 
 	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.Module <em>Module</em>}'.
@@ -5131,6 +5189,16 @@ public interface RsamlPackage extends EPackage {
 	EAttribute getProcessor_LinkLatency();
 
 	/**
+	 * Returns the meta object for the '{@link org.rsaml.model.Processor#packageProblem() <em>Package Problem</em>}' operation.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for the '<em>Package Problem</em>' operation.
+	 * @see org.rsaml.model.Processor#packageProblem()
+	 * @generated
+	 */
+	EOperation getProcessor__PackageProblem();
+
+	/**
 	 * Returns the meta object for class '{@link org.rsaml.model.LatencyRequirement <em>Latency Requirement</em>}'.
 	 * <!-- begin-user-doc -->
 	 * <!-- end-user-doc -->
@@ -5274,6 +5342,16 @@ public interface RsamlPackage extends EPackage {
 	 * @generated
 	 */
 	EEnum getNodeLifecycle();
+
+	/**
+	 * Returns the meta object for enum '{@link org.rsaml.model.PackageLayout <em>Package Layout</em>}'.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @return the meta object for enum '<em>Package Layout</em>'.
+	 * @see org.rsaml.model.PackageLayout
+	 * @generated
+	 */
+	EEnum getPackageLayout();
 
 	/**
 	 * Returns the meta object for enum '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}'.
@@ -5477,6 +5555,14 @@ public interface RsamlPackage extends EPackage {
 		EAttribute ARCHITECTURE__LIFECYCLE = eINSTANCE.getArchitecture_Lifecycle();
 
 		/**
+		 * The meta object literal for the '<em><b>Packages</b></em>' attribute feature.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EAttribute ARCHITECTURE__PACKAGES = eINSTANCE.getArchitecture_Packages();
+
+		/**
 		 * The meta object literal for the '<em><b>Layers</b></em>' containment reference list feature.
 		 * <!-- begin-user-doc -->
 		 * <!-- end-user-doc -->
@@ -5597,6 +5683,14 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EReference LAYER__MODULES = eINSTANCE.getLayer_Modules();
+
+		/**
+		 * The meta object literal for the '<em><b>Package Problem</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation LAYER___PACKAGE_PROBLEM = eINSTANCE.getLayer__PackageProblem();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.ModuleImpl <em>Module</em>}' class.
@@ -6397,6 +6491,14 @@ public interface RsamlPackage extends EPackage {
 		EAttribute PROCESSOR__LINK_LATENCY = eINSTANCE.getProcessor_LinkLatency();
 
 		/**
+		 * The meta object literal for the '<em><b>Package Problem</b></em>' operation.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @generated
+		 */
+		EOperation PROCESSOR___PACKAGE_PROBLEM = eINSTANCE.getProcessor__PackageProblem();
+
+		/**
 		 * The meta object literal for the '{@link org.rsaml.model.impl.LatencyRequirementImpl <em>Latency Requirement</em>}' class.
 		 * <!-- begin-user-doc -->
 		 * <!-- end-user-doc -->
@@ -6525,6 +6627,16 @@ public interface RsamlPackage extends EPackage {
 		 * @generated
 		 */
 		EEnum NODE_LIFECYCLE = eINSTANCE.getNodeLifecycle();
+
+		/**
+		 * The meta object literal for the '{@link org.rsaml.model.PackageLayout <em>Package Layout</em>}' enum.
+		 * <!-- begin-user-doc -->
+		 * <!-- end-user-doc -->
+		 * @see org.rsaml.model.PackageLayout
+		 * @see org.rsaml.model.impl.RsamlPackageImpl#getPackageLayout()
+		 * @generated
+		 */
+		EEnum PACKAGE_LAYOUT = eINSTANCE.getPackageLayout();
 
 		/**
 		 * The meta object literal for the '{@link org.rsaml.model.LatencyKind <em>Latency Kind</em>}' enum.

@@ -30,6 +30,7 @@ import org.rsaml.model.Layer;
 import org.rsaml.model.Mission;
 import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Order;
+import org.rsaml.model.PackageLayout;
 import org.rsaml.model.Processor;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.Sensor;
@@ -46,6 +47,7 @@ import org.rsaml.model.Supervisor;
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getCategory <em>Category</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getDeclaredLayers <em>Declared Layers</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getLifecycle <em>Lifecycle</em>}</li>
+ *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getPackages <em>Packages</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getLayers <em>Layers</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getConnections <em>Connections</em>}</li>
  *   <li>{@link org.rsaml.model.impl.ArchitectureImpl#getSensors <em>Sensors</em>}</li>
@@ -120,6 +122,26 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 	 * @ordered
 	 */
 	protected NodeLifecycle lifecycle = LIFECYCLE_EDEFAULT;
+
+	/**
+	 * The default value of the '{@link #getPackages() <em>Packages</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getPackages()
+	 * @generated
+	 * @ordered
+	 */
+	protected static final PackageLayout PACKAGES_EDEFAULT = PackageLayout.SINGLE;
+
+	/**
+	 * The cached value of the '{@link #getPackages() <em>Packages</em>}' attribute.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @see #getPackages()
+	 * @generated
+	 * @ordered
+	 */
+	protected PackageLayout packages = PACKAGES_EDEFAULT;
 
 	/**
 	 * The cached value of the '{@link #getLayers() <em>Layers</em>}' containment reference list.
@@ -307,6 +329,29 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 		lifecycle = newLifecycle == null ? LIFECYCLE_EDEFAULT : newLifecycle;
 		if (eNotificationRequired())
 			eNotify(new ENotificationImpl(this, Notification.SET, RsamlPackage.ARCHITECTURE__LIFECYCLE, oldLifecycle, lifecycle));
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public PackageLayout getPackages() {
+		return packages;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public void setPackages(PackageLayout newPackages) {
+		PackageLayout oldPackages = packages;
+		packages = newPackages == null ? PACKAGES_EDEFAULT : newPackages;
+		if (eNotificationRequired())
+			eNotify(new ENotificationImpl(this, Notification.SET, RsamlPackage.ARCHITECTURE__PACKAGES, oldPackages, packages));
 	}
 
 	/**
@@ -514,6 +559,8 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return getDeclaredLayers();
 			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
 				return getLifecycle();
+			case RsamlPackage.ARCHITECTURE__PACKAGES:
+				return getPackages();
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				return getLayers();
 			case RsamlPackage.ARCHITECTURE__CONNECTIONS:
@@ -555,6 +602,9 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return;
 			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
 				setLifecycle((NodeLifecycle)newValue);
+				return;
+			case RsamlPackage.ARCHITECTURE__PACKAGES:
+				setPackages((PackageLayout)newValue);
 				return;
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				getLayers().clear();
@@ -617,6 +667,9 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
 				setLifecycle(LIFECYCLE_EDEFAULT);
 				return;
+			case RsamlPackage.ARCHITECTURE__PACKAGES:
+				setPackages(PACKAGES_EDEFAULT);
+				return;
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				getLayers().clear();
 				return;
@@ -665,6 +718,8 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 				return declaredLayers != DECLARED_LAYERS_EDEFAULT;
 			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
 				return lifecycle != LIFECYCLE_EDEFAULT;
+			case RsamlPackage.ARCHITECTURE__PACKAGES:
+				return packages != PACKAGES_EDEFAULT;
 			case RsamlPackage.ARCHITECTURE__LAYERS:
 				return layers != null && !layers.isEmpty();
 			case RsamlPackage.ARCHITECTURE__CONNECTIONS:
@@ -705,6 +760,8 @@ public class ArchitectureImpl extends NamedElementImpl implements Architecture {
 		result.append(declaredLayers);
 		result.append(", lifecycle: ");
 		result.append(lifecycle);
+		result.append(", packages: ");
+		result.append(packages);
 		result.append(')');
 		return result.toString();
 	}

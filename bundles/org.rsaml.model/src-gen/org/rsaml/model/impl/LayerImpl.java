@@ -266,6 +266,16 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 	 * @generated
 	 */
 	@Override
+	public String packageProblem() {
+		return org.rsaml.model.support.RsamlPackages.problem(this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public double toMilliseconds(final double value) {
 		return value * getTimeUnit().getValue() / 1000000.0;
 	}
@@ -508,6 +518,8 @@ public class LayerImpl extends NamedElementImpl implements Layer {
 	@Override
 	public Object eInvoke(int operationID, EList<?> arguments) throws InvocationTargetException {
 		switch (operationID) {
+			case RsamlPackage.LAYER___PACKAGE_PROBLEM:
+				return packageProblem();
 			case RsamlPackage.LAYER___TO_MILLISECONDS__DOUBLE:
 				return toMilliseconds((Double)arguments.get(0));
 			case RsamlPackage.LAYER___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE:

@@ -342,6 +342,16 @@ public class ProcessorImpl extends NamedElementImpl implements Processor {
 	 * @generated
 	 */
 	@Override
+	public String packageProblem() {
+		return org.rsaml.model.support.RsamlPackages.problem(this);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public double toMilliseconds(final double value) {
 		return value * getTimeUnit().getValue() / 1000000.0;
 	}
@@ -545,6 +555,8 @@ public class ProcessorImpl extends NamedElementImpl implements Processor {
 	@Override
 	public Object eInvoke(int operationID, EList<?> arguments) throws InvocationTargetException {
 		switch (operationID) {
+			case RsamlPackage.PROCESSOR___PACKAGE_PROBLEM:
+				return packageProblem();
 			case RsamlPackage.PROCESSOR___TO_MILLISECONDS__DOUBLE:
 				return toMilliseconds((Double)arguments.get(0));
 			case RsamlPackage.PROCESSOR___COMPARE_TIME__DOUBLE_TIMESCALED_DOUBLE:

@@ -35,6 +35,7 @@ import org.rsaml.model.Mission;
 import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
+import org.rsaml.model.PackageLayout;
 import org.rsaml.model.Plan;
 import org.rsaml.model.Processor;
 import org.rsaml.model.RTAction;
@@ -143,6 +144,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 				return createDataTypeFromString(eDataType, initialValue);
 			case RsamlPackage.NODE_LIFECYCLE:
 				return createNodeLifecycleFromString(eDataType, initialValue);
+			case RsamlPackage.PACKAGE_LAYOUT:
+				return createPackageLayoutFromString(eDataType, initialValue);
 			case RsamlPackage.LATENCY_KIND:
 				return createLatencyKindFromString(eDataType, initialValue);
 			default:
@@ -174,6 +177,8 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 				return convertDataTypeToString(eDataType, instanceValue);
 			case RsamlPackage.NODE_LIFECYCLE:
 				return convertNodeLifecycleToString(eDataType, instanceValue);
+			case RsamlPackage.PACKAGE_LAYOUT:
+				return convertPackageLayoutToString(eDataType, instanceValue);
 			case RsamlPackage.LATENCY_KIND:
 				return convertLatencyKindToString(eDataType, instanceValue);
 			default:
@@ -591,6 +596,26 @@ public class RsamlFactoryImpl extends EFactoryImpl implements RsamlFactory {
 	 * @generated
 	 */
 	public String convertNodeLifecycleToString(EDataType eDataType, Object instanceValue) {
+		return instanceValue == null ? null : instanceValue.toString();
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public PackageLayout createPackageLayoutFromString(EDataType eDataType, String initialValue) {
+		PackageLayout result = PackageLayout.get(initialValue);
+		if (result == null) throw new IllegalArgumentException("The value '" + initialValue + "' is not a valid enumerator of '" + eDataType.getName() + "'");
+		return result;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	public String convertPackageLayoutToString(EDataType eDataType, Object instanceValue) {
 		return instanceValue == null ? null : instanceValue.toString();
 	}
 

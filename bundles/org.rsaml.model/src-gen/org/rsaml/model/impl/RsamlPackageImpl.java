@@ -37,6 +37,7 @@ import org.rsaml.model.NamedElement;
 import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.Order;
 import org.rsaml.model.OutputPort;
+import org.rsaml.model.PackageLayout;
 import org.rsaml.model.Plan;
 import org.rsaml.model.Port;
 import org.rsaml.model.Processor;
@@ -324,6 +325,13 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * <!-- end-user-doc -->
 	 * @generated
 	 */
+	private EEnum packageLayoutEEnum = null;
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
 	private EEnum latencyKindEEnum = null;
 
 	/**
@@ -592,8 +600,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Layers() {
-		return (EReference)architectureEClass.getEStructuralFeatures().get(3);
+	public EAttribute getArchitecture_Packages() {
+		return (EAttribute)architectureEClass.getEStructuralFeatures().get(3);
 	}
 
 	/**
@@ -602,7 +610,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Connections() {
+	public EReference getArchitecture_Layers() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(4);
 	}
 
@@ -612,7 +620,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Sensors() {
+	public EReference getArchitecture_Connections() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(5);
 	}
 
@@ -622,7 +630,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Actuators() {
+	public EReference getArchitecture_Sensors() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(6);
 	}
 
@@ -632,7 +640,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Missions() {
+	public EReference getArchitecture_Actuators() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(7);
 	}
 
@@ -642,7 +650,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Supervisors() {
+	public EReference getArchitecture_Missions() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(8);
 	}
 
@@ -652,7 +660,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Orders() {
+	public EReference getArchitecture_Supervisors() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(9);
 	}
 
@@ -662,7 +670,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Databases() {
+	public EReference getArchitecture_Orders() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(10);
 	}
 
@@ -672,7 +680,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_Processors() {
+	public EReference getArchitecture_Databases() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(11);
 	}
 
@@ -682,8 +690,18 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
-	public EReference getArchitecture_LatencyRequirements() {
+	public EReference getArchitecture_Processors() {
 		return (EReference)architectureEClass.getEStructuralFeatures().get(12);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EReference getArchitecture_LatencyRequirements() {
+		return (EReference)architectureEClass.getEStructuralFeatures().get(13);
 	}
 
 	/**
@@ -734,6 +752,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	@Override
 	public EReference getLayer_Modules() {
 		return (EReference)layerEClass.getEStructuralFeatures().get(3);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
+	public EOperation getLayer__PackageProblem() {
+		return layerEClass.getEOperations().get(0);
 	}
 
 	/**
@@ -1682,6 +1710,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EOperation getProcessor__PackageProblem() {
+		return processorEClass.getEOperations().get(0);
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EClass getLatencyRequirement() {
 		return latencyRequirementEClass;
 	}
@@ -1822,6 +1860,16 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 	 * @generated
 	 */
 	@Override
+	public EEnum getPackageLayout() {
+		return packageLayoutEEnum;
+	}
+
+	/**
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	@Override
 	public EEnum getLatencyKind() {
 		return latencyKindEEnum;
 	}
@@ -1878,6 +1926,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEAttribute(architectureEClass, ARCHITECTURE__CATEGORY);
 		createEAttribute(architectureEClass, ARCHITECTURE__DECLARED_LAYERS);
 		createEAttribute(architectureEClass, ARCHITECTURE__LIFECYCLE);
+		createEAttribute(architectureEClass, ARCHITECTURE__PACKAGES);
 		createEReference(architectureEClass, ARCHITECTURE__LAYERS);
 		createEReference(architectureEClass, ARCHITECTURE__CONNECTIONS);
 		createEReference(architectureEClass, ARCHITECTURE__SENSORS);
@@ -1894,6 +1943,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEAttribute(layerEClass, LAYER__LEVEL);
 		createEAttribute(layerEClass, LAYER__MAX_EXEC_TIME);
 		createEReference(layerEClass, LAYER__MODULES);
+		createEOperation(layerEClass, LAYER___PACKAGE_PROBLEM);
 
 		moduleEClass = createEClass(MODULE);
 		createEReference(moduleEClass, MODULE__LAYER);
@@ -2011,6 +2061,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		createEReference(processorEClass, PROCESSOR__MODULES);
 		createEAttribute(processorEClass, PROCESSOR__HOST);
 		createEAttribute(processorEClass, PROCESSOR__LINK_LATENCY);
+		createEOperation(processorEClass, PROCESSOR___PACKAGE_PROBLEM);
 
 		latencyRequirementEClass = createEClass(LATENCY_REQUIREMENT);
 		createEReference(latencyRequirementEClass, LATENCY_REQUIREMENT__SOURCE);
@@ -2028,6 +2079,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		schedulingPolicyEEnum = createEEnum(SCHEDULING_POLICY);
 		dataTypeEEnum = createEEnum(DATA_TYPE);
 		nodeLifecycleEEnum = createEEnum(NODE_LIFECYCLE);
+		packageLayoutEEnum = createEEnum(PACKAGE_LAYOUT);
 		latencyKindEEnum = createEEnum(LATENCY_KIND);
 	}
 
@@ -2127,6 +2179,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEAttribute(getArchitecture_Category(), this.getArchitectureCategory(), "category", "hybrid", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getArchitecture_DeclaredLayers(), ecorePackage.getEInt(), "declaredLayers", "0", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getArchitecture_Lifecycle(), this.getNodeLifecycle(), "lifecycle", "plain", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
+		initEAttribute(getArchitecture_Packages(), this.getPackageLayout(), "packages", "single", 0, 1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getArchitecture_Layers(), this.getLayer(), this.getLayer_Architecture(), "layers", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		getArchitecture_Layers().getEKeys().add(this.getNamedElement_Name());
 		initEReference(getArchitecture_Connections(), this.getConnection(), this.getConnection_Architecture(), "connections", null, 0, -1, Architecture.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2153,6 +2206,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEAttribute(getLayer_MaxExecTime(), ecorePackage.getEDouble(), "maxExecTime", "0.0", 0, 1, Layer.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getLayer_Modules(), this.getModule(), this.getModule_Layer(), "modules", null, 0, -1, Layer.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		getLayer_Modules().getEKeys().add(this.getNamedElement_Name());
+
+		initEOperation(getLayer__PackageProblem(), ecorePackage.getEString(), "packageProblem", 0, 1, IS_UNIQUE, IS_ORDERED);
 
 		initEClass(moduleEClass, org.rsaml.model.Module.class, "Module", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getModule_Layer(), this.getLayer(), this.getLayer_Modules(), "layer", null, 0, 1, org.rsaml.model.Module.class, IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, !IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2284,6 +2339,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		initEAttribute(getProcessor_Host(), ecorePackage.getEString(), "host", null, 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEAttribute(getProcessor_LinkLatency(), ecorePackage.getEDouble(), "linkLatency", null, 0, 1, Processor.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_UNSETTABLE, !IS_ID, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 
+		initEOperation(getProcessor__PackageProblem(), ecorePackage.getEString(), "packageProblem", 0, 1, IS_UNIQUE, IS_ORDERED);
+
 		initEClass(latencyRequirementEClass, LatencyRequirement.class, "LatencyRequirement", !IS_ABSTRACT, !IS_INTERFACE, IS_GENERATED_INSTANCE_CLASS);
 		initEReference(getLatencyRequirement_Source(), this.getNamedElement(), null, "source", null, 1, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
 		initEReference(getLatencyRequirement_Target(), this.getNamedElement(), null, "target", null, 1, 1, LatencyRequirement.class, !IS_TRANSIENT, !IS_VOLATILE, IS_CHANGEABLE, !IS_COMPOSITE, IS_RESOLVE_PROXIES, !IS_UNSETTABLE, IS_UNIQUE, !IS_DERIVED, IS_ORDERED);
@@ -2338,6 +2395,11 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		addEEnumLiteral(nodeLifecycleEEnum, NodeLifecycle.PLAIN);
 		addEEnumLiteral(nodeLifecycleEEnum, NodeLifecycle.MANAGED);
 
+		initEEnum(packageLayoutEEnum, PackageLayout.class, "PackageLayout");
+		addEEnumLiteral(packageLayoutEEnum, PackageLayout.SINGLE);
+		addEEnumLiteral(packageLayoutEEnum, PackageLayout.PER_LAYER);
+		addEEnumLiteral(packageLayoutEEnum, PackageLayout.PER_PROCESSOR);
+
 		initEEnum(latencyKindEEnum, LatencyKind.class, "LatencyKind");
 		addEEnumLiteral(latencyKindEEnum, LatencyKind.REACTION_TIME);
 		addEEnumLiteral(latencyKindEEnum, LatencyKind.DATA_AGE);
@@ -2389,7 +2451,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (layerEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA09_uniqueNames RSA13_nonNegativeTimes RSA20_representableTimes"
+			   "constraints", "RSA09_uniqueNames RSA13_nonNegativeTimes RSA20_representableTimes RSA29_packageNameUsable"
 		   });
 		addAnnotation
 		  (moduleEClass,
@@ -2479,7 +2541,7 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		  (processorEClass,
 		   source,
 		   new String[] {
-			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes"
+			   "constraints", "RSA13_nonNegativeTimes RSA20_representableTimes RSA29_packageNameUsable"
 		   });
 	}
 
@@ -2522,7 +2584,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   new String[] {
 			   "RSA09_uniqueNames", "modules->isUnique(normalizedName())",
 			   "RSA13_nonNegativeTimes", "maxExecTime >= 0",
-			   "RSA20_representableTimes", "representable(maxExecTime)"
+			   "RSA20_representableTimes", "representable(maxExecTime)",
+			   "RSA29_packageNameUsable", "packageProblem() = null"
 		   });
 		addAnnotation
 		  (moduleEClass,
@@ -2626,7 +2689,8 @@ public class RsamlPackageImpl extends EPackageImpl implements RsamlPackage {
 		   source,
 		   new String[] {
 			   "RSA13_nonNegativeTimes", "linkLatency >= 0",
-			   "RSA20_representableTimes", "representable(linkLatency)"
+			   "RSA20_representableTimes", "representable(linkLatency)",
+			   "RSA29_packageNameUsable", "packageProblem() = null"
 		   });
 	}
 

@@ -219,6 +219,7 @@ public class RsamlTextSemanticSequencer extends AbstractDelegatingSemanticSequen
 	 *             category=ArchitectureCategory | 
 	 *             declaredLayers=Integer | 
 	 *             lifecycle=NodeLifecycle | 
+	 *             packages=PackageLayout | 
 	 *             layers+=Layer | 
 	 *             connections+=Connection | 
 	 *             sensors+=Sensor | 

@@ -47,26 +47,30 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cLifecycleKeyword_4_3_0 = (Keyword)cGroup_4_3.eContents().get(0);
 		private final Assignment cLifecycleAssignment_4_3_1 = (Assignment)cGroup_4_3.eContents().get(1);
 		private final RuleCall cLifecycleNodeLifecycleEnumRuleCall_4_3_1_0 = (RuleCall)cLifecycleAssignment_4_3_1.eContents().get(0);
-		private final Assignment cLayersAssignment_4_4 = (Assignment)cAlternatives_4.eContents().get(4);
-		private final RuleCall cLayersLayerParserRuleCall_4_4_0 = (RuleCall)cLayersAssignment_4_4.eContents().get(0);
-		private final Assignment cConnectionsAssignment_4_5 = (Assignment)cAlternatives_4.eContents().get(5);
-		private final RuleCall cConnectionsConnectionParserRuleCall_4_5_0 = (RuleCall)cConnectionsAssignment_4_5.eContents().get(0);
-		private final Assignment cSensorsAssignment_4_6 = (Assignment)cAlternatives_4.eContents().get(6);
-		private final RuleCall cSensorsSensorParserRuleCall_4_6_0 = (RuleCall)cSensorsAssignment_4_6.eContents().get(0);
-		private final Assignment cActuatorsAssignment_4_7 = (Assignment)cAlternatives_4.eContents().get(7);
-		private final RuleCall cActuatorsActuatorParserRuleCall_4_7_0 = (RuleCall)cActuatorsAssignment_4_7.eContents().get(0);
-		private final Assignment cMissionsAssignment_4_8 = (Assignment)cAlternatives_4.eContents().get(8);
-		private final RuleCall cMissionsMissionParserRuleCall_4_8_0 = (RuleCall)cMissionsAssignment_4_8.eContents().get(0);
-		private final Assignment cSupervisorsAssignment_4_9 = (Assignment)cAlternatives_4.eContents().get(9);
-		private final RuleCall cSupervisorsSupervisorParserRuleCall_4_9_0 = (RuleCall)cSupervisorsAssignment_4_9.eContents().get(0);
-		private final Assignment cOrdersAssignment_4_10 = (Assignment)cAlternatives_4.eContents().get(10);
-		private final RuleCall cOrdersOrderParserRuleCall_4_10_0 = (RuleCall)cOrdersAssignment_4_10.eContents().get(0);
-		private final Assignment cDatabasesAssignment_4_11 = (Assignment)cAlternatives_4.eContents().get(11);
-		private final RuleCall cDatabasesDatabaseParserRuleCall_4_11_0 = (RuleCall)cDatabasesAssignment_4_11.eContents().get(0);
-		private final Assignment cProcessorsAssignment_4_12 = (Assignment)cAlternatives_4.eContents().get(12);
-		private final RuleCall cProcessorsProcessorParserRuleCall_4_12_0 = (RuleCall)cProcessorsAssignment_4_12.eContents().get(0);
-		private final Assignment cLatencyRequirementsAssignment_4_13 = (Assignment)cAlternatives_4.eContents().get(13);
-		private final RuleCall cLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0 = (RuleCall)cLatencyRequirementsAssignment_4_13.eContents().get(0);
+		private final Group cGroup_4_4 = (Group)cAlternatives_4.eContents().get(4);
+		private final Keyword cPackagesKeyword_4_4_0 = (Keyword)cGroup_4_4.eContents().get(0);
+		private final Assignment cPackagesAssignment_4_4_1 = (Assignment)cGroup_4_4.eContents().get(1);
+		private final RuleCall cPackagesPackageLayoutEnumRuleCall_4_4_1_0 = (RuleCall)cPackagesAssignment_4_4_1.eContents().get(0);
+		private final Assignment cLayersAssignment_4_5 = (Assignment)cAlternatives_4.eContents().get(5);
+		private final RuleCall cLayersLayerParserRuleCall_4_5_0 = (RuleCall)cLayersAssignment_4_5.eContents().get(0);
+		private final Assignment cConnectionsAssignment_4_6 = (Assignment)cAlternatives_4.eContents().get(6);
+		private final RuleCall cConnectionsConnectionParserRuleCall_4_6_0 = (RuleCall)cConnectionsAssignment_4_6.eContents().get(0);
+		private final Assignment cSensorsAssignment_4_7 = (Assignment)cAlternatives_4.eContents().get(7);
+		private final RuleCall cSensorsSensorParserRuleCall_4_7_0 = (RuleCall)cSensorsAssignment_4_7.eContents().get(0);
+		private final Assignment cActuatorsAssignment_4_8 = (Assignment)cAlternatives_4.eContents().get(8);
+		private final RuleCall cActuatorsActuatorParserRuleCall_4_8_0 = (RuleCall)cActuatorsAssignment_4_8.eContents().get(0);
+		private final Assignment cMissionsAssignment_4_9 = (Assignment)cAlternatives_4.eContents().get(9);
+		private final RuleCall cMissionsMissionParserRuleCall_4_9_0 = (RuleCall)cMissionsAssignment_4_9.eContents().get(0);
+		private final Assignment cSupervisorsAssignment_4_10 = (Assignment)cAlternatives_4.eContents().get(10);
+		private final RuleCall cSupervisorsSupervisorParserRuleCall_4_10_0 = (RuleCall)cSupervisorsAssignment_4_10.eContents().get(0);
+		private final Assignment cOrdersAssignment_4_11 = (Assignment)cAlternatives_4.eContents().get(11);
+		private final RuleCall cOrdersOrderParserRuleCall_4_11_0 = (RuleCall)cOrdersAssignment_4_11.eContents().get(0);
+		private final Assignment cDatabasesAssignment_4_12 = (Assignment)cAlternatives_4.eContents().get(12);
+		private final RuleCall cDatabasesDatabaseParserRuleCall_4_12_0 = (RuleCall)cDatabasesAssignment_4_12.eContents().get(0);
+		private final Assignment cProcessorsAssignment_4_13 = (Assignment)cAlternatives_4.eContents().get(13);
+		private final RuleCall cProcessorsProcessorParserRuleCall_4_13_0 = (RuleCall)cProcessorsAssignment_4_13.eContents().get(0);
+		private final Assignment cLatencyRequirementsAssignment_4_14 = (Assignment)cAlternatives_4.eContents().get(14);
+		private final RuleCall cLatencyRequirementsLatencyRequirementParserRuleCall_4_14_0 = (RuleCall)cLatencyRequirementsAssignment_4_14.eContents().get(0);
 		private final Keyword cRightCurlyBracketKeyword_5 = (Keyword)cGroup.eContents().get(5);
 		
 		//Architecture returns rsaml::Architecture:
@@ -75,6 +79,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | 'category' category=ArchitectureCategory
 		//    | 'declaredLayers' declaredLayers=Integer
 		//    | 'lifecycle' lifecycle=NodeLifecycle
+		//    | 'packages' packages=PackageLayout
 		//    | layers+=Layer
 		//    | connections+=Connection
 		//    | sensors+=Sensor
@@ -93,6 +98,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'category' category=ArchitectureCategory
 		//| 'declaredLayers' declaredLayers=Integer
 		//| 'lifecycle' lifecycle=NodeLifecycle
+		//| 'packages' packages=PackageLayout
 		//| layers+=Layer
 		//| connections+=Connection
 		//| sensors+=Sensor
@@ -125,6 +131,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'category' category=ArchitectureCategory
 		//| 'declaredLayers' declaredLayers=Integer
 		//| 'lifecycle' lifecycle=NodeLifecycle
+		//| 'packages' packages=PackageLayout
 		//| layers+=Layer
 		//| connections+=Connection
 		//| sensors+=Sensor
@@ -177,65 +184,77 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//NodeLifecycle
 		public RuleCall getLifecycleNodeLifecycleEnumRuleCall_4_3_1_0() { return cLifecycleNodeLifecycleEnumRuleCall_4_3_1_0; }
 		
+		//'packages' packages=PackageLayout
+		public Group getGroup_4_4() { return cGroup_4_4; }
+		
+		//'packages'
+		public Keyword getPackagesKeyword_4_4_0() { return cPackagesKeyword_4_4_0; }
+		
+		//packages=PackageLayout
+		public Assignment getPackagesAssignment_4_4_1() { return cPackagesAssignment_4_4_1; }
+		
+		//PackageLayout
+		public RuleCall getPackagesPackageLayoutEnumRuleCall_4_4_1_0() { return cPackagesPackageLayoutEnumRuleCall_4_4_1_0; }
+		
 		//layers+=Layer
-		public Assignment getLayersAssignment_4_4() { return cLayersAssignment_4_4; }
+		public Assignment getLayersAssignment_4_5() { return cLayersAssignment_4_5; }
 		
 		//Layer
-		public RuleCall getLayersLayerParserRuleCall_4_4_0() { return cLayersLayerParserRuleCall_4_4_0; }
+		public RuleCall getLayersLayerParserRuleCall_4_5_0() { return cLayersLayerParserRuleCall_4_5_0; }
 		
 		//connections+=Connection
-		public Assignment getConnectionsAssignment_4_5() { return cConnectionsAssignment_4_5; }
+		public Assignment getConnectionsAssignment_4_6() { return cConnectionsAssignment_4_6; }
 		
 		//Connection
-		public RuleCall getConnectionsConnectionParserRuleCall_4_5_0() { return cConnectionsConnectionParserRuleCall_4_5_0; }
+		public RuleCall getConnectionsConnectionParserRuleCall_4_6_0() { return cConnectionsConnectionParserRuleCall_4_6_0; }
 		
 		//sensors+=Sensor
-		public Assignment getSensorsAssignment_4_6() { return cSensorsAssignment_4_6; }
+		public Assignment getSensorsAssignment_4_7() { return cSensorsAssignment_4_7; }
 		
 		//Sensor
-		public RuleCall getSensorsSensorParserRuleCall_4_6_0() { return cSensorsSensorParserRuleCall_4_6_0; }
+		public RuleCall getSensorsSensorParserRuleCall_4_7_0() { return cSensorsSensorParserRuleCall_4_7_0; }
 		
 		//actuators+=Actuator
-		public Assignment getActuatorsAssignment_4_7() { return cActuatorsAssignment_4_7; }
+		public Assignment getActuatorsAssignment_4_8() { return cActuatorsAssignment_4_8; }
 		
 		//Actuator
-		public RuleCall getActuatorsActuatorParserRuleCall_4_7_0() { return cActuatorsActuatorParserRuleCall_4_7_0; }
+		public RuleCall getActuatorsActuatorParserRuleCall_4_8_0() { return cActuatorsActuatorParserRuleCall_4_8_0; }
 		
 		//missions+=Mission
-		public Assignment getMissionsAssignment_4_8() { return cMissionsAssignment_4_8; }
+		public Assignment getMissionsAssignment_4_9() { return cMissionsAssignment_4_9; }
 		
 		//Mission
-		public RuleCall getMissionsMissionParserRuleCall_4_8_0() { return cMissionsMissionParserRuleCall_4_8_0; }
+		public RuleCall getMissionsMissionParserRuleCall_4_9_0() { return cMissionsMissionParserRuleCall_4_9_0; }
 		
 		//supervisors+=Supervisor
-		public Assignment getSupervisorsAssignment_4_9() { return cSupervisorsAssignment_4_9; }
+		public Assignment getSupervisorsAssignment_4_10() { return cSupervisorsAssignment_4_10; }
 		
 		//Supervisor
-		public RuleCall getSupervisorsSupervisorParserRuleCall_4_9_0() { return cSupervisorsSupervisorParserRuleCall_4_9_0; }
+		public RuleCall getSupervisorsSupervisorParserRuleCall_4_10_0() { return cSupervisorsSupervisorParserRuleCall_4_10_0; }
 		
 		//orders+=Order
-		public Assignment getOrdersAssignment_4_10() { return cOrdersAssignment_4_10; }
+		public Assignment getOrdersAssignment_4_11() { return cOrdersAssignment_4_11; }
 		
 		//Order
-		public RuleCall getOrdersOrderParserRuleCall_4_10_0() { return cOrdersOrderParserRuleCall_4_10_0; }
+		public RuleCall getOrdersOrderParserRuleCall_4_11_0() { return cOrdersOrderParserRuleCall_4_11_0; }
 		
 		//databases+=Database
-		public Assignment getDatabasesAssignment_4_11() { return cDatabasesAssignment_4_11; }
+		public Assignment getDatabasesAssignment_4_12() { return cDatabasesAssignment_4_12; }
 		
 		//Database
-		public RuleCall getDatabasesDatabaseParserRuleCall_4_11_0() { return cDatabasesDatabaseParserRuleCall_4_11_0; }
+		public RuleCall getDatabasesDatabaseParserRuleCall_4_12_0() { return cDatabasesDatabaseParserRuleCall_4_12_0; }
 		
 		//processors+=Processor
-		public Assignment getProcessorsAssignment_4_12() { return cProcessorsAssignment_4_12; }
+		public Assignment getProcessorsAssignment_4_13() { return cProcessorsAssignment_4_13; }
 		
 		//Processor
-		public RuleCall getProcessorsProcessorParserRuleCall_4_12_0() { return cProcessorsProcessorParserRuleCall_4_12_0; }
+		public RuleCall getProcessorsProcessorParserRuleCall_4_13_0() { return cProcessorsProcessorParserRuleCall_4_13_0; }
 		
 		//latencyRequirements+=LatencyRequirement
-		public Assignment getLatencyRequirementsAssignment_4_13() { return cLatencyRequirementsAssignment_4_13; }
+		public Assignment getLatencyRequirementsAssignment_4_14() { return cLatencyRequirementsAssignment_4_14; }
 		
 		//LatencyRequirement
-		public RuleCall getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0() { return cLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0; }
+		public RuleCall getLatencyRequirementsLatencyRequirementParserRuleCall_4_14_0() { return cLatencyRequirementsLatencyRequirementParserRuleCall_4_14_0; }
 		
 		//'}'
 		public Keyword getRightCurlyBracketKeyword_5() { return cRightCurlyBracketKeyword_5; }
@@ -2868,40 +2887,44 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		private final Keyword cHostKeyword_62 = (Keyword)cAlternatives.eContents().get(62);
 		private final Keyword cLinkLatencyKeyword_63 = (Keyword)cAlternatives.eContents().get(63);
 		private final Keyword cLifecycleKeyword_64 = (Keyword)cAlternatives.eContents().get(64);
-		private final Keyword cCentralizedKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
-		private final Keyword cHierarchicalKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
-		private final Keyword cBehavioralKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
-		private final Keyword cHybridKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
-		private final Keyword cOtherKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
-		private final Keyword cSimpleKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
-		private final Keyword cRealTimeKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
-		private final Keyword cPeriodicKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
-		private final Keyword cSporadicKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
-		private final Keyword cAperiodicKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
-		private final Keyword cNsKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
-		private final Keyword cUsKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
-		private final Keyword cMsKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
-		private final Keyword cSKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
-		private final Keyword cSynchronousKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
-		private final Keyword cAsynchronousKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
-		private final Keyword cFIFOKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
-		private final Keyword cSJFKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
-		private final Keyword cRRKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
-		private final Keyword cRMKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
-		private final Keyword cDMKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
-		private final Keyword cEDFKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
-		private final Keyword cLLFKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
-		private final Keyword cOTHERKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
-		private final Keyword cNumericKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
-		private final Keyword cAlphanumericKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
-		private final Keyword cBooleanKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
-		private final Keyword cStructuredKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
-		private final Keyword cReactionTimeKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
-		private final Keyword cDataAgeKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
-		private final Keyword cPlainKeyword_95 = (Keyword)cAlternatives.eContents().get(95);
-		private final Keyword cManagedKeyword_96 = (Keyword)cAlternatives.eContents().get(96);
-		private final Keyword cNaNKeyword_97 = (Keyword)cAlternatives.eContents().get(97);
-		private final Keyword cInfinityKeyword_98 = (Keyword)cAlternatives.eContents().get(98);
+		private final Keyword cPackagesKeyword_65 = (Keyword)cAlternatives.eContents().get(65);
+		private final Keyword cCentralizedKeyword_66 = (Keyword)cAlternatives.eContents().get(66);
+		private final Keyword cHierarchicalKeyword_67 = (Keyword)cAlternatives.eContents().get(67);
+		private final Keyword cBehavioralKeyword_68 = (Keyword)cAlternatives.eContents().get(68);
+		private final Keyword cHybridKeyword_69 = (Keyword)cAlternatives.eContents().get(69);
+		private final Keyword cOtherKeyword_70 = (Keyword)cAlternatives.eContents().get(70);
+		private final Keyword cSimpleKeyword_71 = (Keyword)cAlternatives.eContents().get(71);
+		private final Keyword cRealTimeKeyword_72 = (Keyword)cAlternatives.eContents().get(72);
+		private final Keyword cPeriodicKeyword_73 = (Keyword)cAlternatives.eContents().get(73);
+		private final Keyword cSporadicKeyword_74 = (Keyword)cAlternatives.eContents().get(74);
+		private final Keyword cAperiodicKeyword_75 = (Keyword)cAlternatives.eContents().get(75);
+		private final Keyword cNsKeyword_76 = (Keyword)cAlternatives.eContents().get(76);
+		private final Keyword cUsKeyword_77 = (Keyword)cAlternatives.eContents().get(77);
+		private final Keyword cMsKeyword_78 = (Keyword)cAlternatives.eContents().get(78);
+		private final Keyword cSKeyword_79 = (Keyword)cAlternatives.eContents().get(79);
+		private final Keyword cSynchronousKeyword_80 = (Keyword)cAlternatives.eContents().get(80);
+		private final Keyword cAsynchronousKeyword_81 = (Keyword)cAlternatives.eContents().get(81);
+		private final Keyword cFIFOKeyword_82 = (Keyword)cAlternatives.eContents().get(82);
+		private final Keyword cSJFKeyword_83 = (Keyword)cAlternatives.eContents().get(83);
+		private final Keyword cRRKeyword_84 = (Keyword)cAlternatives.eContents().get(84);
+		private final Keyword cRMKeyword_85 = (Keyword)cAlternatives.eContents().get(85);
+		private final Keyword cDMKeyword_86 = (Keyword)cAlternatives.eContents().get(86);
+		private final Keyword cEDFKeyword_87 = (Keyword)cAlternatives.eContents().get(87);
+		private final Keyword cLLFKeyword_88 = (Keyword)cAlternatives.eContents().get(88);
+		private final Keyword cOTHERKeyword_89 = (Keyword)cAlternatives.eContents().get(89);
+		private final Keyword cNumericKeyword_90 = (Keyword)cAlternatives.eContents().get(90);
+		private final Keyword cAlphanumericKeyword_91 = (Keyword)cAlternatives.eContents().get(91);
+		private final Keyword cBooleanKeyword_92 = (Keyword)cAlternatives.eContents().get(92);
+		private final Keyword cStructuredKeyword_93 = (Keyword)cAlternatives.eContents().get(93);
+		private final Keyword cReactionTimeKeyword_94 = (Keyword)cAlternatives.eContents().get(94);
+		private final Keyword cDataAgeKeyword_95 = (Keyword)cAlternatives.eContents().get(95);
+		private final Keyword cPlainKeyword_96 = (Keyword)cAlternatives.eContents().get(96);
+		private final Keyword cManagedKeyword_97 = (Keyword)cAlternatives.eContents().get(97);
+		private final Keyword cSingleKeyword_98 = (Keyword)cAlternatives.eContents().get(98);
+		private final Keyword cPerLayerKeyword_99 = (Keyword)cAlternatives.eContents().get(99);
+		private final Keyword cPerProcessorKeyword_100 = (Keyword)cAlternatives.eContents().get(100);
+		private final Keyword cNaNKeyword_101 = (Keyword)cAlternatives.eContents().get(101);
+		private final Keyword cInfinityKeyword_102 = (Keyword)cAlternatives.eContents().get(102);
 		
 		//Keyword:
 		//    'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2911,11 +2934,11 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//    | 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-		//    | 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle'
+		//    | 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle' | 'packages'
 		//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 		//    | 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
-		//    | 'dataAge' | 'plain' | 'managed' | 'NaN' | 'Infinity';
+		//    | 'dataAge' | 'plain' | 'managed' | 'single' | 'perLayer' | 'perProcessor' | 'NaN' | 'Infinity';
 		@Override public ParserRule getRule() { return rule; }
 		
 		//'architecture' | 'layer' | 'module' | 'function' | 'action' | 'rtAction' | 'input' | 'output' | 'connect'
@@ -2925,11 +2948,11 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//| 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 		//| 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 		//| 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-		//| 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle'
+		//| 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle' | 'packages'
 		//| 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 		//| 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 		//| 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
-		//| 'dataAge' | 'plain' | 'managed' | 'NaN' | 'Infinity'
+		//| 'dataAge' | 'plain' | 'managed' | 'single' | 'perLayer' | 'perProcessor' | 'NaN' | 'Infinity'
 		public Alternatives getAlternatives() { return cAlternatives; }
 		
 		//'architecture'
@@ -3127,107 +3150,119 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		//'lifecycle'
 		public Keyword getLifecycleKeyword_64() { return cLifecycleKeyword_64; }
 		
+		//'packages'
+		public Keyword getPackagesKeyword_65() { return cPackagesKeyword_65; }
+		
 		//'centralized'
-		public Keyword getCentralizedKeyword_65() { return cCentralizedKeyword_65; }
+		public Keyword getCentralizedKeyword_66() { return cCentralizedKeyword_66; }
 		
 		//'hierarchical'
-		public Keyword getHierarchicalKeyword_66() { return cHierarchicalKeyword_66; }
+		public Keyword getHierarchicalKeyword_67() { return cHierarchicalKeyword_67; }
 		
 		//'behavioral'
-		public Keyword getBehavioralKeyword_67() { return cBehavioralKeyword_67; }
+		public Keyword getBehavioralKeyword_68() { return cBehavioralKeyword_68; }
 		
 		//'hybrid'
-		public Keyword getHybridKeyword_68() { return cHybridKeyword_68; }
+		public Keyword getHybridKeyword_69() { return cHybridKeyword_69; }
 		
 		//'other'
-		public Keyword getOtherKeyword_69() { return cOtherKeyword_69; }
+		public Keyword getOtherKeyword_70() { return cOtherKeyword_70; }
 		
 		//'simple'
-		public Keyword getSimpleKeyword_70() { return cSimpleKeyword_70; }
+		public Keyword getSimpleKeyword_71() { return cSimpleKeyword_71; }
 		
 		//'realTime'
-		public Keyword getRealTimeKeyword_71() { return cRealTimeKeyword_71; }
+		public Keyword getRealTimeKeyword_72() { return cRealTimeKeyword_72; }
 		
 		//'periodic'
-		public Keyword getPeriodicKeyword_72() { return cPeriodicKeyword_72; }
+		public Keyword getPeriodicKeyword_73() { return cPeriodicKeyword_73; }
 		
 		//'sporadic'
-		public Keyword getSporadicKeyword_73() { return cSporadicKeyword_73; }
+		public Keyword getSporadicKeyword_74() { return cSporadicKeyword_74; }
 		
 		//'aperiodic'
-		public Keyword getAperiodicKeyword_74() { return cAperiodicKeyword_74; }
+		public Keyword getAperiodicKeyword_75() { return cAperiodicKeyword_75; }
 		
 		//'ns'
-		public Keyword getNsKeyword_75() { return cNsKeyword_75; }
+		public Keyword getNsKeyword_76() { return cNsKeyword_76; }
 		
 		//'us'
-		public Keyword getUsKeyword_76() { return cUsKeyword_76; }
+		public Keyword getUsKeyword_77() { return cUsKeyword_77; }
 		
 		//'ms'
-		public Keyword getMsKeyword_77() { return cMsKeyword_77; }
+		public Keyword getMsKeyword_78() { return cMsKeyword_78; }
 		
 		//'s'
-		public Keyword getSKeyword_78() { return cSKeyword_78; }
+		public Keyword getSKeyword_79() { return cSKeyword_79; }
 		
 		//'synchronous'
-		public Keyword getSynchronousKeyword_79() { return cSynchronousKeyword_79; }
+		public Keyword getSynchronousKeyword_80() { return cSynchronousKeyword_80; }
 		
 		//'asynchronous'
-		public Keyword getAsynchronousKeyword_80() { return cAsynchronousKeyword_80; }
+		public Keyword getAsynchronousKeyword_81() { return cAsynchronousKeyword_81; }
 		
 		//'FIFO'
-		public Keyword getFIFOKeyword_81() { return cFIFOKeyword_81; }
+		public Keyword getFIFOKeyword_82() { return cFIFOKeyword_82; }
 		
 		//'SJF'
-		public Keyword getSJFKeyword_82() { return cSJFKeyword_82; }
+		public Keyword getSJFKeyword_83() { return cSJFKeyword_83; }
 		
 		//'RR'
-		public Keyword getRRKeyword_83() { return cRRKeyword_83; }
+		public Keyword getRRKeyword_84() { return cRRKeyword_84; }
 		
 		//'RM'
-		public Keyword getRMKeyword_84() { return cRMKeyword_84; }
+		public Keyword getRMKeyword_85() { return cRMKeyword_85; }
 		
 		//'DM'
-		public Keyword getDMKeyword_85() { return cDMKeyword_85; }
+		public Keyword getDMKeyword_86() { return cDMKeyword_86; }
 		
 		//'EDF'
-		public Keyword getEDFKeyword_86() { return cEDFKeyword_86; }
+		public Keyword getEDFKeyword_87() { return cEDFKeyword_87; }
 		
 		//'LLF'
-		public Keyword getLLFKeyword_87() { return cLLFKeyword_87; }
+		public Keyword getLLFKeyword_88() { return cLLFKeyword_88; }
 		
 		//'OTHER'
-		public Keyword getOTHERKeyword_88() { return cOTHERKeyword_88; }
+		public Keyword getOTHERKeyword_89() { return cOTHERKeyword_89; }
 		
 		//'numeric'
-		public Keyword getNumericKeyword_89() { return cNumericKeyword_89; }
+		public Keyword getNumericKeyword_90() { return cNumericKeyword_90; }
 		
 		//'alphanumeric'
-		public Keyword getAlphanumericKeyword_90() { return cAlphanumericKeyword_90; }
+		public Keyword getAlphanumericKeyword_91() { return cAlphanumericKeyword_91; }
 		
 		//'boolean'
-		public Keyword getBooleanKeyword_91() { return cBooleanKeyword_91; }
+		public Keyword getBooleanKeyword_92() { return cBooleanKeyword_92; }
 		
 		//'structured'
-		public Keyword getStructuredKeyword_92() { return cStructuredKeyword_92; }
+		public Keyword getStructuredKeyword_93() { return cStructuredKeyword_93; }
 		
 		//'reactionTime'
-		public Keyword getReactionTimeKeyword_93() { return cReactionTimeKeyword_93; }
+		public Keyword getReactionTimeKeyword_94() { return cReactionTimeKeyword_94; }
 		
 		//'dataAge'
-		public Keyword getDataAgeKeyword_94() { return cDataAgeKeyword_94; }
+		public Keyword getDataAgeKeyword_95() { return cDataAgeKeyword_95; }
 		
 		//'plain'
-		public Keyword getPlainKeyword_95() { return cPlainKeyword_95; }
+		public Keyword getPlainKeyword_96() { return cPlainKeyword_96; }
 		
 		//'managed'
-		public Keyword getManagedKeyword_96() { return cManagedKeyword_96; }
+		public Keyword getManagedKeyword_97() { return cManagedKeyword_97; }
+		
+		//'single'
+		public Keyword getSingleKeyword_98() { return cSingleKeyword_98; }
+		
+		//'perLayer'
+		public Keyword getPerLayerKeyword_99() { return cPerLayerKeyword_99; }
+		
+		//'perProcessor'
+		public Keyword getPerProcessorKeyword_100() { return cPerProcessorKeyword_100; }
 		
 		//'NaN'
-		public Keyword getNaNKeyword_97() { return cNaNKeyword_97; }
+		public Keyword getNaNKeyword_101() { return cNaNKeyword_101; }
 		
 		//'Infinity'
-		public Keyword getInfinityKeyword_98() { return cInfinityKeyword_98; }
+		public Keyword getInfinityKeyword_102() { return cInfinityKeyword_102; }
 	}
 	public class RealElements extends AbstractParserRuleElementFinder {
 		private final ParserRule rule = (ParserRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.Real");
@@ -3575,6 +3610,38 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		
 		public Keyword getManagedManagedKeyword_1_0() { return cManagedManagedKeyword_1_0; }
 	}
+	public class PackageLayoutElements extends AbstractElementFinder.AbstractEnumRuleElementFinder {
+		private final EnumRule rule = (EnumRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.PackageLayout");
+		private final Alternatives cAlternatives = (Alternatives)rule.eContents().get(1);
+		private final EnumLiteralDeclaration cSingleEnumLiteralDeclaration_0 = (EnumLiteralDeclaration)cAlternatives.eContents().get(0);
+		private final Keyword cSingleSingleKeyword_0_0 = (Keyword)cSingleEnumLiteralDeclaration_0.eContents().get(0);
+		private final EnumLiteralDeclaration cPerLayerEnumLiteralDeclaration_1 = (EnumLiteralDeclaration)cAlternatives.eContents().get(1);
+		private final Keyword cPerLayerPerLayerKeyword_1_0 = (Keyword)cPerLayerEnumLiteralDeclaration_1.eContents().get(0);
+		private final EnumLiteralDeclaration cPerProcessorEnumLiteralDeclaration_2 = (EnumLiteralDeclaration)cAlternatives.eContents().get(2);
+		private final Keyword cPerProcessorPerProcessorKeyword_2_0 = (Keyword)cPerProcessorEnumLiteralDeclaration_2.eContents().get(0);
+		
+		//enum PackageLayout returns rsaml::PackageLayout:
+		//    single | perLayer | perProcessor;
+		public EnumRule getRule() { return rule; }
+		
+		//single | perLayer | perProcessor
+		public Alternatives getAlternatives() { return cAlternatives; }
+		
+		//single
+		public EnumLiteralDeclaration getSingleEnumLiteralDeclaration_0() { return cSingleEnumLiteralDeclaration_0; }
+		
+		public Keyword getSingleSingleKeyword_0_0() { return cSingleSingleKeyword_0_0; }
+		
+		//perLayer
+		public EnumLiteralDeclaration getPerLayerEnumLiteralDeclaration_1() { return cPerLayerEnumLiteralDeclaration_1; }
+		
+		public Keyword getPerLayerPerLayerKeyword_1_0() { return cPerLayerPerLayerKeyword_1_0; }
+		
+		//perProcessor
+		public EnumLiteralDeclaration getPerProcessorEnumLiteralDeclaration_2() { return cPerProcessorEnumLiteralDeclaration_2; }
+		
+		public Keyword getPerProcessorPerProcessorKeyword_2_0() { return cPerProcessorPerProcessorKeyword_2_0; }
+	}
 	public class LatencyKindElements extends AbstractElementFinder.AbstractEnumRuleElementFinder {
 		private final EnumRule rule = (EnumRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.LatencyKind");
 		private final Alternatives cAlternatives = (Alternatives)rule.eContents().get(1);
@@ -3638,6 +3705,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	private final SchedulingPolicyElements eSchedulingPolicy;
 	private final DataTypeElements eDataType;
 	private final NodeLifecycleElements eNodeLifecycle;
+	private final PackageLayoutElements ePackageLayout;
 	private final LatencyKindElements eLatencyKind;
 	private final TerminalRule tID;
 	private final TerminalRule tNUMBER;
@@ -3689,6 +3757,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 		this.eSchedulingPolicy = new SchedulingPolicyElements();
 		this.eDataType = new DataTypeElements();
 		this.eNodeLifecycle = new NodeLifecycleElements();
+		this.ePackageLayout = new PackageLayoutElements();
 		this.eLatencyKind = new LatencyKindElements();
 		this.tID = (TerminalRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.ID");
 		this.tNUMBER = (TerminalRule) GrammarUtil.findRuleForName(getGrammar(), "org.rsaml.text.RsamlText.NUMBER");
@@ -3728,6 +3797,7 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | 'category' category=ArchitectureCategory
 	//    | 'declaredLayers' declaredLayers=Integer
 	//    | 'lifecycle' lifecycle=NodeLifecycle
+	//    | 'packages' packages=PackageLayout
 	//    | layers+=Layer
 	//    | connections+=Connection
 	//    | sensors+=Sensor
@@ -4116,11 +4186,11 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	//    | 'level' | 'maxExecTime' | 'sensors' | 'actuators' | 'synchroType' | 'schedPolicy' | 'otherPolicy' | 'start'
 	//    | 'dataType' | 'messageType' | 'topic' | 'trigger' | 'target' | 'duration' | 'kind' | 'priority' | 'achieves' | 'actions'
 	//    | 'plans' | 'realisedBy' | 'issuer' | 'receiver' | 'requests' | 'usedBy' | 'core' | 'modules' | 'from' | 'to' | 'via'
-	//    | 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle'
+	//    | 'maxLatency' | 'host' | 'linkLatency' | 'lifecycle' | 'packages'
 	//    | 'centralized' | 'hierarchical' | 'behavioral' | 'hybrid' | 'other' | 'simple' | 'realTime' | 'periodic'
 	//    | 'sporadic' | 'aperiodic' | 'ns' | 'us' | 'ms' | 's' | 'synchronous' | 'asynchronous' | 'FIFO' | 'SJF' | 'RR'
 	//    | 'RM' | 'DM' | 'EDF' | 'LLF' | 'OTHER' | 'numeric' | 'alphanumeric' | 'boolean' | 'structured' | 'reactionTime'
-	//    | 'dataAge' | 'plain' | 'managed' | 'NaN' | 'Infinity';
+	//    | 'dataAge' | 'plain' | 'managed' | 'single' | 'perLayer' | 'perProcessor' | 'NaN' | 'Infinity';
 	public KeywordElements getKeywordAccess() {
 		return pKeyword;
 	}
@@ -4228,6 +4298,16 @@ public class RsamlTextGrammarAccess extends AbstractElementFinder.AbstractGramma
 	
 	public EnumRule getNodeLifecycleRule() {
 		return getNodeLifecycleAccess().getRule();
+	}
+	
+	//enum PackageLayout returns rsaml::PackageLayout:
+	//    single | perLayer | perProcessor;
+	public PackageLayoutElements getPackageLayoutAccess() {
+		return ePackageLayout;
+	}
+	
+	public EnumRule getPackageLayoutRule() {
+		return getPackageLayoutAccess().getRule();
 	}
 	
 	//enum LatencyKind returns rsaml::LatencyKind:

@@ -111,6 +111,7 @@ public class RsamlTextWriter {
         attribute(a, Literals.ARCHITECTURE__CATEGORY, "category", () -> a.getCategory().getLiteral());
         attribute(a, Literals.ARCHITECTURE__DECLARED_LAYERS, "declaredLayers", () -> Integer.toString(a.getDeclaredLayers()));
         attribute(a, Literals.ARCHITECTURE__LIFECYCLE, "lifecycle", () -> a.getLifecycle().getLiteral());
+        attribute(a, Literals.ARCHITECTURE__PACKAGES, "packages", () -> a.getPackages().getLiteral());
         a.getLayers().forEach(this::layer);
         if (!a.getConnections().isEmpty()) {
             blankLine();

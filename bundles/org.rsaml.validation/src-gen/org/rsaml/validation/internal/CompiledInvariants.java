@@ -33,6 +33,7 @@ final class CompiledInvariants {
         { "Layer", "RSA09_uniqueNames", "modules->isUnique(normalizedName())" },
         { "Layer", "RSA13_nonNegativeTimes", "maxExecTime >= 0" },
         { "Layer", "RSA20_representableTimes", "representable(maxExecTime)" },
+        { "Layer", "RSA29_packageNameUsable", "packageProblem() = null" },
         { "Module", "RSA05_realTimeModuleTiming", "type = ElementType::realTime implies (period > 0 and delay > 0)" },
         { "Module", "RSA06_realTimeModuleFunctions", "type = ElementType::realTime implies functions->forAll(f | f.type = ElementType::realTime)" },
         { "Module", "RSA08_layerExecutionBudget", "(layer <> null and layer.maxExecTime > 0) implies compareTime(execDuration, layer, layer.maxExecTime) <= 0" },
@@ -61,6 +62,7 @@ final class CompiledInvariants {
         { "Database", "RSA09_uniqueNames", "knowledge->isUnique(normalizedName())" },
         { "Processor", "RSA13_nonNegativeTimes", "linkLatency >= 0" },
         { "Processor", "RSA20_representableTimes", "representable(linkLatency)" },
+        { "Processor", "RSA29_packageNameUsable", "packageProblem() = null" },
     };
 
     /** Class, constraint, OCL text of each invariant left to the interpreter, and why. */
@@ -118,7 +120,7 @@ final class CompiledInvariants {
         case 12:
             return inv12((org.rsaml.model.Layer) self);
         case 13:
-            return inv13((org.rsaml.model.Module) self);
+            return inv13((org.rsaml.model.Layer) self);
         case 14:
             return inv14((org.rsaml.model.Module) self);
         case 15:
@@ -126,53 +128,57 @@ final class CompiledInvariants {
         case 16:
             return inv16((org.rsaml.model.Module) self);
         case 17:
-            return inv17((org.rsaml.model.Function) self);
+            return inv17((org.rsaml.model.Module) self);
         case 18:
             return inv18((org.rsaml.model.Function) self);
         case 19:
             return inv19((org.rsaml.model.Function) self);
         case 20:
-            return inv20((org.rsaml.model.Action) self);
+            return inv20((org.rsaml.model.Function) self);
         case 21:
-            return inv21((org.rsaml.model.RTAction) self);
+            return inv21((org.rsaml.model.Action) self);
         case 22:
-            return inv22((org.rsaml.model.Port) self);
+            return inv22((org.rsaml.model.RTAction) self);
         case 23:
             return inv23((org.rsaml.model.Port) self);
         case 24:
-            return inv24((org.rsaml.model.Connection) self);
+            return inv24((org.rsaml.model.Port) self);
         case 25:
             return inv25((org.rsaml.model.Connection) self);
         case 26:
-            return inv26((org.rsaml.model.SubsumptionLink) self);
+            return inv26((org.rsaml.model.Connection) self);
         case 27:
             return inv27((org.rsaml.model.SubsumptionLink) self);
         case 28:
             return inv28((org.rsaml.model.SubsumptionLink) self);
         case 29:
-            return inv29((org.rsaml.model.Inhibitor) self);
+            return inv29((org.rsaml.model.SubsumptionLink) self);
         case 30:
             return inv30((org.rsaml.model.Inhibitor) self);
         case 31:
-            return inv31((org.rsaml.model.Suppressor) self);
+            return inv31((org.rsaml.model.Inhibitor) self);
         case 32:
             return inv32((org.rsaml.model.Suppressor) self);
         case 33:
-            return inv33((org.rsaml.model.Device) self);
+            return inv33((org.rsaml.model.Suppressor) self);
         case 34:
             return inv34((org.rsaml.model.Device) self);
         case 35:
-            return inv35((org.rsaml.model.Mission) self);
+            return inv35((org.rsaml.model.Device) self);
         case 36:
-            return inv36((org.rsaml.model.Goal) self);
+            return inv36((org.rsaml.model.Mission) self);
         case 37:
-            return inv37((org.rsaml.model.Plan) self);
+            return inv37((org.rsaml.model.Goal) self);
         case 38:
-            return inv38((org.rsaml.model.Database) self);
+            return inv38((org.rsaml.model.Plan) self);
         case 39:
-            return inv39((org.rsaml.model.Processor) self);
+            return inv39((org.rsaml.model.Database) self);
         case 40:
             return inv40((org.rsaml.model.Processor) self);
+        case 41:
+            return inv41((org.rsaml.model.Processor) self);
+        case 42:
+            return inv42((org.rsaml.model.Processor) self);
         default:
             throw new IllegalArgumentException("no compiled invariant " + index);
         }
@@ -243,143 +249,153 @@ final class CompiledInvariants {
         return Boolean.valueOf(self.representable(((Number) source(Double.valueOf(self.getMaxExecTime()))).doubleValue()));
     }
 
+    /** RSA29_packageNameUsable on Layer. */
+    private static Boolean inv13(org.rsaml.model.Layer self) {
+        return eq(self.packageProblem(), null);
+    }
+
     /** RSA05_realTimeModuleTiming on Module. */
-    private static Boolean inv13(org.rsaml.model.Module self) {
+    private static Boolean inv14(org.rsaml.model.Module self) {
         return implies(() -> eq(self.getType(), org.rsaml.model.ElementType.REAL_TIME), () -> and(() -> gt(Double.valueOf(self.getPeriod()), Long.valueOf(0L)), () -> gt(Double.valueOf(self.getDelay()), Long.valueOf(0L))));
     }
 
     /** RSA06_realTimeModuleFunctions on Module. */
-    private static Boolean inv14(org.rsaml.model.Module self) {
+    private static Boolean inv15(org.rsaml.model.Module self) {
         return implies(() -> eq(self.getType(), org.rsaml.model.ElementType.REAL_TIME), () -> forAll(self.getFunctions(), (org.rsaml.model.Function v_f) -> eq(v_f.getType(), org.rsaml.model.ElementType.REAL_TIME)));
     }
 
     /** RSA08_layerExecutionBudget on Module. */
-    private static Boolean inv15(org.rsaml.model.Module self) {
+    private static Boolean inv16(org.rsaml.model.Module self) {
         return implies(() -> and(() -> ne(self.getLayer(), null), () -> gt(Double.valueOf(source(self.getLayer()).getMaxExecTime()), Long.valueOf(0L))), () -> le(Long.valueOf(self.compareTime(((Number) source(Double.valueOf(self.getExecDuration()))).doubleValue(), (org.rsaml.model.TimeScaled) self.getLayer(), ((Number) source(Double.valueOf(source(self.getLayer()).getMaxExecTime()))).doubleValue())), Long.valueOf(0L)));
     }
 
     /** RSA09_uniqueNames on Module. */
-    private static Boolean inv16(org.rsaml.model.Module self) {
+    private static Boolean inv17(org.rsaml.model.Module self) {
         return and(() -> and(() -> and(() -> isUnique(self.getPorts(), (org.rsaml.model.Port v_temp1) -> v_temp1.normalizedName()), () -> isUnique(self.getFunctions(), (org.rsaml.model.Function v_temp2) -> v_temp2.normalizedName())), () -> isUnique(self.getInhibitors(), (org.rsaml.model.Inhibitor v_temp3) -> v_temp3.normalizedName())), () -> isUnique(self.getSuppressors(), (org.rsaml.model.Suppressor v_temp4) -> v_temp4.normalizedName()));
     }
 
     /** RSA07_realTimeFunctionActions on Function. */
-    private static Boolean inv17(org.rsaml.model.Function self) {
+    private static Boolean inv18(org.rsaml.model.Function self) {
         return implies(() -> eq(self.getType(), org.rsaml.model.ElementType.REAL_TIME), () -> forAll(self.getActions(), (org.rsaml.model.Action v_a) -> eq(v_a.getType(), org.rsaml.model.ElementType.REAL_TIME)));
     }
 
     /** RSA09_uniqueNames on Function. */
-    private static Boolean inv18(org.rsaml.model.Function self) {
+    private static Boolean inv19(org.rsaml.model.Function self) {
         return isUnique(self.getActions(), (org.rsaml.model.Action v_temp1) -> v_temp1.normalizedName());
     }
 
     /** RSA27_functionWithinBudget on Function. */
-    private static Boolean inv19(org.rsaml.model.Function self) {
+    private static Boolean inv20(org.rsaml.model.Function self) {
         return and(() -> implies(() -> and(() -> ne(self.getModule(), null), () -> gt(Double.valueOf(source(self.getModule()).getExecDuration()), Long.valueOf(0L))), () -> le(Long.valueOf(self.compareTime(((Number) source(Double.valueOf(self.getExecDuration()))).doubleValue(), (org.rsaml.model.TimeScaled) self.getModule(), ((Number) source(Double.valueOf(source(self.getModule()).getExecDuration()))).doubleValue())), Long.valueOf(0L))), () -> implies(() -> and(() -> and(() -> ne(self.getModule(), null), () -> ne(source(self.getModule()).getLayer(), null)), () -> gt(Double.valueOf(source(source(self.getModule()).getLayer()).getMaxExecTime()), Long.valueOf(0L))), () -> le(Long.valueOf(self.compareTime(((Number) source(Double.valueOf(self.getExecDuration()))).doubleValue(), (org.rsaml.model.TimeScaled) source(self.getModule()).getLayer(), ((Number) source(Double.valueOf(source(source(self.getModule()).getLayer()).getMaxExecTime()))).doubleValue())), Long.valueOf(0L))));
     }
 
     /** RSA27_actionWithinBudget on Action. */
-    private static Boolean inv20(org.rsaml.model.Action self) {
+    private static Boolean inv21(org.rsaml.model.Action self) {
         return and(() -> and(() -> implies(() -> and(() -> ne(self.getFunction(), null), () -> gt(Double.valueOf(source(self.getFunction()).getExecDuration()), Long.valueOf(0L))), () -> le(Long.valueOf(self.compareTime(((Number) source(Double.valueOf(self.getExecDuration()))).doubleValue(), (org.rsaml.model.TimeScaled) self.getFunction(), ((Number) source(Double.valueOf(source(self.getFunction()).getExecDuration()))).doubleValue())), Long.valueOf(0L))), () -> implies(() -> and(() -> and(() -> ne(self.getFunction(), null), () -> ne(source(self.getFunction()).getModule(), null)), () -> gt(Double.valueOf(source(source(self.getFunction()).getModule()).getExecDuration()), Long.valueOf(0L))), () -> le(Long.valueOf(self.compareTime(((Number) source(Double.valueOf(self.getExecDuration()))).doubleValue(), (org.rsaml.model.TimeScaled) source(self.getFunction()).getModule(), ((Number) source(Double.valueOf(source(source(self.getFunction()).getModule()).getExecDuration()))).doubleValue())), Long.valueOf(0L)))), () -> implies(() -> and(() -> and(() -> and(() -> ne(self.getFunction(), null), () -> ne(source(self.getFunction()).getModule(), null)), () -> ne(source(source(self.getFunction()).getModule()).getLayer(), null)), () -> gt(Double.valueOf(source(source(source(self.getFunction()).getModule()).getLayer()).getMaxExecTime()), Long.valueOf(0L))), () -> le(Long.valueOf(self.compareTime(((Number) source(Double.valueOf(self.getExecDuration()))).doubleValue(), (org.rsaml.model.TimeScaled) source(source(self.getFunction()).getModule()).getLayer(), ((Number) source(Double.valueOf(source(source(source(self.getFunction()).getModule()).getLayer()).getMaxExecTime()))).doubleValue())), Long.valueOf(0L))));
     }
 
     /** RSA15_rtActionIsRealTime on RTAction. */
-    private static Boolean inv21(org.rsaml.model.RTAction self) {
+    private static Boolean inv22(org.rsaml.model.RTAction self) {
         return eq(self.getType(), org.rsaml.model.ElementType.REAL_TIME);
     }
 
     /** RSA18_structuredPortNamesMessageType on Port. */
-    private static Boolean inv22(org.rsaml.model.Port self) {
+    private static Boolean inv23(org.rsaml.model.Port self) {
         return implies(() -> eq(self.getDataType(), org.rsaml.model.DataType.STRUCTURED), () -> ne(self.normalizedMessageType(), null));
     }
 
     /** RSA28_topicNameUsable on Port. */
-    private static Boolean inv23(org.rsaml.model.Port self) {
+    private static Boolean inv24(org.rsaml.model.Port self) {
         return eq(self.topicProblem(), null);
     }
 
     /** RSA02_connectedPortTypes on Connection. */
-    private static Boolean inv24(org.rsaml.model.Connection self) {
+    private static Boolean inv25(org.rsaml.model.Connection self) {
         return implies(() -> and(() -> ne(self.getSource(), null), () -> ne(self.getTarget(), null)), () -> and(() -> eq(source(self.getSource()).getDataType(), source(self.getTarget()).getDataType()), () -> implies(() -> eq(source(self.getSource()).getDataType(), org.rsaml.model.DataType.STRUCTURED), () -> eq(source(self.getSource()).normalizedMessageType(), source(self.getTarget()).normalizedMessageType()))));
     }
 
     /** RSA03_adjacentLayerCommunication on Connection. */
-    private static Boolean inv25(org.rsaml.model.Connection self) {
+    private static Boolean inv26(org.rsaml.model.Connection self) {
         return let((test(or(() -> eq(self.getSource(), null), () -> eq(source(self.getSource()).getModule(), null))) ? (org.rsaml.model.Layer) null : (org.rsaml.model.Layer) source(source(self.getSource()).getModule()).getLayer()), (org.rsaml.model.Layer v_from) -> let((test(or(() -> eq(self.getTarget(), null), () -> eq(source(self.getTarget()).getModule(), null))) ? (org.rsaml.model.Layer) null : (org.rsaml.model.Layer) source(source(self.getTarget()).getModule()).getLayer()), (org.rsaml.model.Layer v_to) -> implies(() -> and(() -> ne(v_from, null), () -> ne(v_to, null)), () -> le(abs(minus(Long.valueOf(source(v_from).getLevel()), Long.valueOf(source(v_to).getLevel()))), Long.valueOf(1L)))));
     }
 
     /** RSA13_nonNegativeTimes on SubsumptionLink. */
-    private static Boolean inv26(org.rsaml.model.SubsumptionLink self) {
+    private static Boolean inv27(org.rsaml.model.SubsumptionLink self) {
         return ge(Double.valueOf(self.getDuration()), Long.valueOf(0L));
     }
 
     /** RSA20_representableTimes on SubsumptionLink. */
-    private static Boolean inv27(org.rsaml.model.SubsumptionLink self) {
+    private static Boolean inv28(org.rsaml.model.SubsumptionLink self) {
         return Boolean.valueOf(self.representable(((Number) source(Double.valueOf(self.getDuration()))).doubleValue()));
     }
 
     /** RSA26_durationBelowTriggerPeriod on SubsumptionLink. */
-    private static Boolean inv28(org.rsaml.model.SubsumptionLink self) {
+    private static Boolean inv29(org.rsaml.model.SubsumptionLink self) {
         return implies(() -> and(() -> and(() -> ne(self.getTrigger(), null), () -> ne(source(self.getTrigger()).getModule(), null)), () -> gt(Double.valueOf(self.getDuration()), Long.valueOf(0L))), () -> and(() -> and(() -> implies(() -> and(() -> and(() -> eq(source(source(self.getTrigger()).getModule()).getExecType(), org.rsaml.model.ExecutionType.PERIODIC), () -> gt(Double.valueOf(source(source(self.getTrigger()).getModule()).getPeriod()), Long.valueOf(0L))), () -> or(() -> exists(source(source(self.getTrigger()).getModule()).getFunctions(), (org.rsaml.model.Function v_f) -> not(and(() -> eq(v_f.getExecType(), org.rsaml.model.ExecutionType.PERIODIC), () -> gt(Double.valueOf(v_f.getPeriod()), Long.valueOf(0L))))), () -> not(exists(source(source(self.getTrigger()).getModule()).getFunctions(), (org.rsaml.model.Function v_f) -> or(() -> and(() -> eq(v_f.getExecType(), org.rsaml.model.ExecutionType.PERIODIC), () -> gt(Double.valueOf(v_f.getPeriod()), Long.valueOf(0L))), () -> exists(v_f.getActions(), (org.rsaml.model.Action v_a) -> and(() -> eq(v_a.getExecType(), org.rsaml.model.ExecutionType.PERIODIC), () -> gt(Double.valueOf(v_a.getPeriod()), Long.valueOf(0L))))))))), () -> gt(Long.valueOf(source(source(self.getTrigger()).getModule()).compareTime(((Number) source(Double.valueOf(source(source(self.getTrigger()).getModule()).getPeriod()))).doubleValue(), (org.rsaml.model.TimeScaled) self, ((Number) source(Double.valueOf(self.getDuration()))).doubleValue())), Long.valueOf(0L))), () -> forAll(source(source(self.getTrigger()).getModule()).getFunctions(), (org.rsaml.model.Function v_f) -> implies(() -> and(() -> eq(v_f.getExecType(), org.rsaml.model.ExecutionType.PERIODIC), () -> gt(Double.valueOf(v_f.getPeriod()), Long.valueOf(0L))), () -> gt(Long.valueOf(v_f.compareTime(((Number) source(Double.valueOf(v_f.getPeriod()))).doubleValue(), (org.rsaml.model.TimeScaled) self, ((Number) source(Double.valueOf(self.getDuration()))).doubleValue())), Long.valueOf(0L))))), () -> forAll(source(source(self.getTrigger()).getModule()).getFunctions(), (org.rsaml.model.Function v_f) -> forAll(v_f.getActions(), (org.rsaml.model.Action v_a) -> implies(() -> and(() -> eq(v_a.getExecType(), org.rsaml.model.ExecutionType.PERIODIC), () -> gt(Double.valueOf(v_a.getPeriod()), Long.valueOf(0L))), () -> gt(Long.valueOf(v_a.compareTime(((Number) source(Double.valueOf(v_a.getPeriod()))).doubleValue(), (org.rsaml.model.TimeScaled) self, ((Number) source(Double.valueOf(self.getDuration()))).doubleValue())), Long.valueOf(0L)))))));
     }
 
     /** RSA04_inhibitLayerBelow on Inhibitor. */
-    private static Boolean inv29(org.rsaml.model.Inhibitor self) {
+    private static Boolean inv30(org.rsaml.model.Inhibitor self) {
         return let((test(eq(self.getModule(), null)) ? (org.rsaml.model.Layer) null : (org.rsaml.model.Layer) source(self.getModule()).getLayer()), (org.rsaml.model.Layer v_own) -> let((test(or(() -> eq(self.getTarget(), null), () -> eq(source(self.getTarget()).getModule(), null))) ? (org.rsaml.model.Layer) null : (org.rsaml.model.Layer) source(source(self.getTarget()).getModule()).getLayer()), (org.rsaml.model.Layer v_other) -> implies(() -> and(() -> ne(v_own, null), () -> ne(v_other, null)), () -> eq(Long.valueOf(source(v_other).getLevel()), minus(Long.valueOf(source(v_own).getLevel()), Long.valueOf(1L))))));
     }
 
     /** RSA16_triggerOfOwnModule on Inhibitor. */
-    private static Boolean inv30(org.rsaml.model.Inhibitor self) {
+    private static Boolean inv31(org.rsaml.model.Inhibitor self) {
         return implies(() -> ne(self.getTrigger(), null), () -> eq(source(self.getTrigger()).getModule(), self.getModule()));
     }
 
     /** RSA04_suppressLayerBelow on Suppressor. */
-    private static Boolean inv31(org.rsaml.model.Suppressor self) {
+    private static Boolean inv32(org.rsaml.model.Suppressor self) {
         return let((test(eq(self.getModule(), null)) ? (org.rsaml.model.Layer) null : (org.rsaml.model.Layer) source(self.getModule()).getLayer()), (org.rsaml.model.Layer v_own) -> let((test(or(() -> eq(self.getTarget(), null), () -> eq(source(self.getTarget()).getModule(), null))) ? (org.rsaml.model.Layer) null : (org.rsaml.model.Layer) source(source(self.getTarget()).getModule()).getLayer()), (org.rsaml.model.Layer v_other) -> implies(() -> and(() -> ne(v_own, null), () -> ne(v_other, null)), () -> eq(Long.valueOf(source(v_other).getLevel()), minus(Long.valueOf(source(v_own).getLevel()), Long.valueOf(1L))))));
     }
 
     /** RSA16_triggerOfOwnModule on Suppressor. */
-    private static Boolean inv32(org.rsaml.model.Suppressor self) {
+    private static Boolean inv33(org.rsaml.model.Suppressor self) {
         return implies(() -> ne(self.getTrigger(), null), () -> eq(source(self.getTrigger()).getModule(), self.getModule()));
     }
 
     /** RSA13_nonNegativeTimes on Device. */
-    private static Boolean inv33(org.rsaml.model.Device self) {
+    private static Boolean inv34(org.rsaml.model.Device self) {
         return ge(Double.valueOf(self.getPeriod()), Long.valueOf(0L));
     }
 
     /** RSA20_representableTimes on Device. */
-    private static Boolean inv34(org.rsaml.model.Device self) {
+    private static Boolean inv35(org.rsaml.model.Device self) {
         return Boolean.valueOf(self.representablePeriod(((Number) source(Double.valueOf(self.getPeriod()))).doubleValue()));
     }
 
     /** RSA09_uniqueNames on Mission. */
-    private static Boolean inv35(org.rsaml.model.Mission self) {
+    private static Boolean inv36(org.rsaml.model.Mission self) {
         return and(() -> isUnique(self.getGoals(), (org.rsaml.model.Goal v_temp1) -> v_temp1.normalizedName()), () -> isUnique(self.getPlans(), (org.rsaml.model.Plan v_temp2) -> v_temp2.normalizedName()));
     }
 
     /** RSA09_uniqueNames on Goal. */
-    private static Boolean inv36(org.rsaml.model.Goal self) {
+    private static Boolean inv37(org.rsaml.model.Goal self) {
         return isUnique(self.getSubGoals(), (org.rsaml.model.Goal v_temp1) -> v_temp1.normalizedName());
     }
 
     /** RSA09_uniqueNames on Plan. */
-    private static Boolean inv37(org.rsaml.model.Plan self) {
+    private static Boolean inv38(org.rsaml.model.Plan self) {
         return isUnique(self.getActivities(), (org.rsaml.model.Activity v_temp1) -> v_temp1.normalizedName());
     }
 
     /** RSA09_uniqueNames on Database. */
-    private static Boolean inv38(org.rsaml.model.Database self) {
+    private static Boolean inv39(org.rsaml.model.Database self) {
         return isUnique(self.getKnowledge(), (org.rsaml.model.Knowledge v_temp1) -> v_temp1.normalizedName());
     }
 
     /** RSA13_nonNegativeTimes on Processor. */
-    private static Boolean inv39(org.rsaml.model.Processor self) {
+    private static Boolean inv40(org.rsaml.model.Processor self) {
         return ge(Double.valueOf(self.getLinkLatency()), Long.valueOf(0L));
     }
 
     /** RSA20_representableTimes on Processor. */
-    private static Boolean inv40(org.rsaml.model.Processor self) {
+    private static Boolean inv41(org.rsaml.model.Processor self) {
         return Boolean.valueOf(self.representable(((Number) source(Double.valueOf(self.getLinkLatency()))).doubleValue()));
+    }
+
+    /** RSA29_packageNameUsable on Processor. */
+    private static Boolean inv42(org.rsaml.model.Processor self) {
+        return eq(self.packageProblem(), null);
     }
 }

@@ -96,6 +96,8 @@ public final class MessageParameters {
         // topics
         put("portModule", o -> "'" + name(((Port) o).getModule()) + "'");
         put("topicProblem", o -> ((Port) o).topicProblem());
+        // packages
+        put("packageProblem", o -> o instanceof Layer l ? l.packageProblem() : ((Processor) o).packageProblem());
         // subsumption
         put("owner", o -> "'" + name(owner((SubsumptionLink) o)) + "'");
         put("ownerLayer", o -> layer(owner((SubsumptionLink) o).getLayer()));

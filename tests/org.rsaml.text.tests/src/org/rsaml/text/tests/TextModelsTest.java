@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.model.Module;
 import org.rsaml.model.NodeLifecycle;
+import org.rsaml.model.PackageLayout;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.text.convert.ModelConverter;
 import org.rsaml.validation.Finding;
@@ -94,6 +95,30 @@ class TextModelsTest {
                 "the written text reads back as the same model");
         assertEquals(NodeLifecycle.PLAIN, Models.read(temp, "plain.rsa", ROBOT).architecture().getLayers().get(0).getModules().get(0)
                 .effectiveLifecycle(), "without lifecycle, nodes are plain");
+    }
+
+    /**
+     * packages on the architecture chooses the ROS 2 package layout; without it, one package. The
+     * writer gives back what was written, and a layer whose name gives the package name of another
+     * is found (RSA-29) at its line of the text.
+     */
+    @Test
+    void packagesOfTheArchitectureAndALayerWhosePackageCollides() throws Exception {
+        String text = ROBOT.replace("  declaredLayers 2\n", "  declaredLayers 2\n  packages perLayer\n");
+        LoadedModel model = Models.read(temp, "layered.rsa", text);
+        assertEquals(PackageLayout.PER_LAYER, model.architecture().getPackages(), "packages perLayer on the architecture");
+        String written = ModelConverter.toText(model.architecture());
+        assertTrue(written.contains("  packages perLayer\n"), "the layout is written back:\n" + written);
+        assertEquals(null, Models.difference(model.architecture(), Models.read(temp, "again.rsa", written).architecture()),
+                "the written text reads back as the same model");
+        assertEquals(PackageLayout.SINGLE, Models.read(temp, "single.rsa", ROBOT).architecture().getPackages(),
+                "without packages, one package");
+        String colliding = text.replace("layer control {", "layer Perception {");
+        List<Finding> findings = RsamlModelValidator.validate(Models.read(temp, "colliding.rsa", colliding));
+        List<String> rsa29 = findings.stream().filter(f -> f.ruleId().equals("RSA-29")).map(f -> f.line() + " " + f.message()).toList();
+        assertEquals(2, rsa29.size(), "both layers of package robot_perception are found: " + findings);
+        assertTrue(rsa29.get(0).startsWith("5 ") && rsa29.get(0).contains("same ROS 2 package as layer 'Perception'"),
+                "the finding of layer perception, at its line: " + rsa29);
     }
 
     @Test

@@ -53,6 +53,7 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 			addCategoryPropertyDescriptor(object);
 			addDeclaredLayersPropertyDescriptor(object);
 			addLifecyclePropertyDescriptor(object);
+			addPackagesPropertyDescriptor(object);
 		}
 		return itemPropertyDescriptors;
 	}
@@ -115,6 +116,28 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 				 getString("_UI_Architecture_lifecycle_feature"),
 				 getString("_UI_PropertyDescriptor_description", "_UI_Architecture_lifecycle_feature", "_UI_Architecture_type"),
 				 RsamlPackage.Literals.ARCHITECTURE__LIFECYCLE,
+				 true,
+				 false,
+				 false,
+				 ItemPropertyDescriptor.GENERIC_VALUE_IMAGE,
+				 null,
+				 null));
+	}
+
+	/**
+	 * This adds a property descriptor for the Packages feature.
+	 * <!-- begin-user-doc -->
+	 * <!-- end-user-doc -->
+	 * @generated
+	 */
+	protected void addPackagesPropertyDescriptor(Object object) {
+		itemPropertyDescriptors.add
+			(createItemPropertyDescriptor
+				(((ComposeableAdapterFactory)adapterFactory).getRootAdapterFactory(),
+				 getResourceLocator(),
+				 getString("_UI_Architecture_packages_feature"),
+				 getString("_UI_PropertyDescriptor_description", "_UI_Architecture_packages_feature", "_UI_Architecture_type"),
+				 RsamlPackage.Literals.ARCHITECTURE__PACKAGES,
 				 true,
 				 false,
 				 false,
@@ -213,6 +236,7 @@ public class ArchitectureItemProvider extends NamedElementItemProvider {
 			case RsamlPackage.ARCHITECTURE__CATEGORY:
 			case RsamlPackage.ARCHITECTURE__DECLARED_LAYERS:
 			case RsamlPackage.ARCHITECTURE__LIFECYCLE:
+			case RsamlPackage.ARCHITECTURE__PACKAGES:
 				fireNotifyChanged(new ViewerNotification(notification, notification.getNotifier(), false, true));
 				return;
 			case RsamlPackage.ARCHITECTURE__LAYERS:

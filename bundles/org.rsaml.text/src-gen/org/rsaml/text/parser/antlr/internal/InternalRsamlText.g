@@ -203,11 +203,37 @@ ruleArchitecture returns [EObject current=null]
 			)
 			    |
 			(
+				otherlv_11='packages'
+				{
+					newLeafNode(otherlv_11, grammarAccess.getArchitectureAccess().getPackagesKeyword_4_4_0());
+				}
+				(
+					(
+						{
+							newCompositeNode(grammarAccess.getArchitectureAccess().getPackagesPackageLayoutEnumRuleCall_4_4_1_0());
+						}
+						lv_packages_12_0=rulePackageLayout
+						{
+							if ($current==null) {
+								$current = createModelElementForParent(grammarAccess.getArchitectureRule());
+							}
+							set(
+								$current,
+								"packages",
+								lv_packages_12_0,
+								"org.rsaml.text.RsamlText.PackageLayout");
+							afterParserOrEnumRuleCall();
+						}
+					)
+				)
+			)
+			    |
+			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_5_0());
 					}
-					lv_layers_11_0=ruleLayer
+					lv_layers_13_0=ruleLayer
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -215,7 +241,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"layers",
-							lv_layers_11_0,
+							lv_layers_13_0,
 							"org.rsaml.text.RsamlText.Layer");
 						afterParserOrEnumRuleCall();
 					}
@@ -225,9 +251,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_6_0());
 					}
-					lv_connections_12_0=ruleConnection
+					lv_connections_14_0=ruleConnection
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -235,7 +261,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"connections",
-							lv_connections_12_0,
+							lv_connections_14_0,
 							"org.rsaml.text.RsamlText.Connection");
 						afterParserOrEnumRuleCall();
 					}
@@ -245,9 +271,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_7_0());
 					}
-					lv_sensors_13_0=ruleSensor
+					lv_sensors_15_0=ruleSensor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -255,7 +281,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"sensors",
-							lv_sensors_13_0,
+							lv_sensors_15_0,
 							"org.rsaml.text.RsamlText.Sensor");
 						afterParserOrEnumRuleCall();
 					}
@@ -265,9 +291,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_8_0());
 					}
-					lv_actuators_14_0=ruleActuator
+					lv_actuators_16_0=ruleActuator
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -275,7 +301,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"actuators",
-							lv_actuators_14_0,
+							lv_actuators_16_0,
 							"org.rsaml.text.RsamlText.Actuator");
 						afterParserOrEnumRuleCall();
 					}
@@ -285,9 +311,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_9_0());
 					}
-					lv_missions_15_0=ruleMission
+					lv_missions_17_0=ruleMission
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -295,7 +321,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"missions",
-							lv_missions_15_0,
+							lv_missions_17_0,
 							"org.rsaml.text.RsamlText.Mission");
 						afterParserOrEnumRuleCall();
 					}
@@ -305,9 +331,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_10_0());
 					}
-					lv_supervisors_16_0=ruleSupervisor
+					lv_supervisors_18_0=ruleSupervisor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -315,7 +341,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"supervisors",
-							lv_supervisors_16_0,
+							lv_supervisors_18_0,
 							"org.rsaml.text.RsamlText.Supervisor");
 						afterParserOrEnumRuleCall();
 					}
@@ -325,9 +351,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_11_0());
 					}
-					lv_orders_17_0=ruleOrder
+					lv_orders_19_0=ruleOrder
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -335,7 +361,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"orders",
-							lv_orders_17_0,
+							lv_orders_19_0,
 							"org.rsaml.text.RsamlText.Order");
 						afterParserOrEnumRuleCall();
 					}
@@ -345,9 +371,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_12_0());
 					}
-					lv_databases_18_0=ruleDatabase
+					lv_databases_20_0=ruleDatabase
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -355,7 +381,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"databases",
-							lv_databases_18_0,
+							lv_databases_20_0,
 							"org.rsaml.text.RsamlText.Database");
 						afterParserOrEnumRuleCall();
 					}
@@ -365,9 +391,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_13_0());
 					}
-					lv_processors_19_0=ruleProcessor
+					lv_processors_21_0=ruleProcessor
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -375,7 +401,7 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"processors",
-							lv_processors_19_0,
+							lv_processors_21_0,
 							"org.rsaml.text.RsamlText.Processor");
 						afterParserOrEnumRuleCall();
 					}
@@ -385,9 +411,9 @@ ruleArchitecture returns [EObject current=null]
 			(
 				(
 					{
-						newCompositeNode(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0());
+						newCompositeNode(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_14_0());
 					}
-					lv_latencyRequirements_20_0=ruleLatencyRequirement
+					lv_latencyRequirements_22_0=ruleLatencyRequirement
 					{
 						if ($current==null) {
 							$current = createModelElementForParent(grammarAccess.getArchitectureRule());
@@ -395,16 +421,16 @@ ruleArchitecture returns [EObject current=null]
 						add(
 							$current,
 							"latencyRequirements",
-							lv_latencyRequirements_20_0,
+							lv_latencyRequirements_22_0,
 							"org.rsaml.text.RsamlText.LatencyRequirement");
 						afterParserOrEnumRuleCall();
 					}
 				)
 			)
 		)*
-		otherlv_21='}'
+		otherlv_23='}'
 		{
-			newLeafNode(otherlv_21, grammarAccess.getArchitectureAccess().getRightCurlyBracketKeyword_5());
+			newLeafNode(otherlv_23, grammarAccess.getArchitectureAccess().getRightCurlyBracketKeyword_5());
 		}
 	)
 ;
@@ -4393,208 +4419,232 @@ ruleKeyword returns [AntlrDatatypeRuleToken current=new AntlrDatatypeRuleToken()
 			newLeafNode(kw, grammarAccess.getKeywordAccess().getLifecycleKeyword_64());
 		}
 		    |
+		kw='packages'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPackagesKeyword_65());
+		}
+		    |
 		kw='centralized'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_65());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getCentralizedKeyword_66());
 		}
 		    |
 		kw='hierarchical'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_66());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHierarchicalKeyword_67());
 		}
 		    |
 		kw='behavioral'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_67());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBehavioralKeyword_68());
 		}
 		    |
 		kw='hybrid'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_68());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getHybridKeyword_69());
 		}
 		    |
 		kw='other'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_69());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOtherKeyword_70());
 		}
 		    |
 		kw='simple'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_70());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSimpleKeyword_71());
 		}
 		    |
 		kw='realTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_71());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRealTimeKeyword_72());
 		}
 		    |
 		kw='periodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_72());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPeriodicKeyword_73());
 		}
 		    |
 		kw='sporadic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_73());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSporadicKeyword_74());
 		}
 		    |
 		kw='aperiodic'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_74());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAperiodicKeyword_75());
 		}
 		    |
 		kw='ns'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_75());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNsKeyword_76());
 		}
 		    |
 		kw='us'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_76());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getUsKeyword_77());
 		}
 		    |
 		kw='ms'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_77());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getMsKeyword_78());
 		}
 		    |
 		kw='s'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_78());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSKeyword_79());
 		}
 		    |
 		kw='synchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_79());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSynchronousKeyword_80());
 		}
 		    |
 		kw='asynchronous'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_80());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAsynchronousKeyword_81());
 		}
 		    |
 		kw='FIFO'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_81());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getFIFOKeyword_82());
 		}
 		    |
 		kw='SJF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_82());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSJFKeyword_83());
 		}
 		    |
 		kw='RR'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_83());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRRKeyword_84());
 		}
 		    |
 		kw='RM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_84());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getRMKeyword_85());
 		}
 		    |
 		kw='DM'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_85());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDMKeyword_86());
 		}
 		    |
 		kw='EDF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_86());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getEDFKeyword_87());
 		}
 		    |
 		kw='LLF'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_87());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getLLFKeyword_88());
 		}
 		    |
 		kw='OTHER'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_88());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getOTHERKeyword_89());
 		}
 		    |
 		kw='numeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_89());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNumericKeyword_90());
 		}
 		    |
 		kw='alphanumeric'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_90());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getAlphanumericKeyword_91());
 		}
 		    |
 		kw='boolean'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_91());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getBooleanKeyword_92());
 		}
 		    |
 		kw='structured'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_92());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getStructuredKeyword_93());
 		}
 		    |
 		kw='reactionTime'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_93());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getReactionTimeKeyword_94());
 		}
 		    |
 		kw='dataAge'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_94());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getDataAgeKeyword_95());
 		}
 		    |
 		kw='plain'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlainKeyword_95());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPlainKeyword_96());
 		}
 		    |
 		kw='managed'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getManagedKeyword_96());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getManagedKeyword_97());
+		}
+		    |
+		kw='single'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getSingleKeyword_98());
+		}
+		    |
+		kw='perLayer'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPerLayerKeyword_99());
+		}
+		    |
+		kw='perProcessor'
+		{
+			$current.merge(kw);
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getPerProcessorKeyword_100());
 		}
 		    |
 		kw='NaN'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_97());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getNaNKeyword_101());
 		}
 		    |
 		kw='Infinity'
 		{
 			$current.merge(kw);
-			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_98());
+			newLeafNode(kw, grammarAccess.getKeywordAccess().getInfinityKeyword_102());
 		}
 	)
 ;
@@ -4997,6 +5047,41 @@ ruleNodeLifecycle returns [Enumerator current=null]
 			{
 				$current = grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
 				newLeafNode(enumLiteral_1, grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1());
+			}
+		)
+	)
+;
+
+// Rule PackageLayout
+rulePackageLayout returns [Enumerator current=null]
+@init {
+	enterRule();
+}
+@after {
+	leaveRule();
+}:
+	(
+		(
+			enumLiteral_0='single'
+			{
+				$current = grammarAccess.getPackageLayoutAccess().getSingleEnumLiteralDeclaration_0().getEnumLiteral().getInstance();
+				newLeafNode(enumLiteral_0, grammarAccess.getPackageLayoutAccess().getSingleEnumLiteralDeclaration_0());
+			}
+		)
+		    |
+		(
+			enumLiteral_1='perLayer'
+			{
+				$current = grammarAccess.getPackageLayoutAccess().getPerLayerEnumLiteralDeclaration_1().getEnumLiteral().getInstance();
+				newLeafNode(enumLiteral_1, grammarAccess.getPackageLayoutAccess().getPerLayerEnumLiteralDeclaration_1());
+			}
+		)
+		    |
+		(
+			enumLiteral_2='perProcessor'
+			{
+				$current = grammarAccess.getPackageLayoutAccess().getPerProcessorEnumLiteralDeclaration_2().getEnumLiteral().getInstance();
+				newLeafNode(enumLiteral_2, grammarAccess.getPackageLayoutAccess().getPerProcessorEnumLiteralDeclaration_2());
 			}
 		)
 	)

@@ -92,7 +92,9 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int RULE_STRING=4;
     public static final int RULE_SL_COMMENT=8;
     public static final int T__77=77;
+    public static final int T__119=119;
     public static final int T__78=78;
+    public static final int T__118=118;
     public static final int T__79=79;
     public static final int T__73=73;
     public static final int T__115=115;
@@ -100,7 +102,9 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int T__74=74;
     public static final int T__114=114;
     public static final int T__75=75;
+    public static final int T__117=117;
     public static final int T__76=76;
+    public static final int T__116=116;
     public static final int T__80=80;
     public static final int T__111=111;
     public static final int T__81=81;
@@ -248,10 +252,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__16;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:16:7: ( '}' )
-            // InternalRsamlText.g:16:9: '}'
+            // InternalRsamlText.g:16:7: ( 'packages' )
+            // InternalRsamlText.g:16:9: 'packages'
             {
-            match('}'); 
+            match("packages"); 
+
 
             }
 
@@ -268,11 +273,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__17;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:17:7: ( 'description' )
-            // InternalRsamlText.g:17:9: 'description'
+            // InternalRsamlText.g:17:7: ( '}' )
+            // InternalRsamlText.g:17:9: '}'
             {
-            match("description"); 
-
+            match('}'); 
 
             }
 
@@ -289,10 +293,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__18;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:18:7: ( 'unit' )
-            // InternalRsamlText.g:18:9: 'unit'
+            // InternalRsamlText.g:18:7: ( 'description' )
+            // InternalRsamlText.g:18:9: 'description'
             {
-            match("unit"); 
+            match("description"); 
 
 
             }
@@ -310,10 +314,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__19;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:19:7: ( 'type' )
-            // InternalRsamlText.g:19:9: 'type'
+            // InternalRsamlText.g:19:7: ( 'unit' )
+            // InternalRsamlText.g:19:9: 'unit'
             {
-            match("type"); 
+            match("unit"); 
 
 
             }
@@ -331,10 +335,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__20;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:20:7: ( 'execType' )
-            // InternalRsamlText.g:20:9: 'execType'
+            // InternalRsamlText.g:20:7: ( 'type' )
+            // InternalRsamlText.g:20:9: 'type'
             {
-            match("execType"); 
+            match("type"); 
 
 
             }
@@ -352,10 +356,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__21;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:21:7: ( 'period' )
-            // InternalRsamlText.g:21:9: 'period'
+            // InternalRsamlText.g:21:7: ( 'execType' )
+            // InternalRsamlText.g:21:9: 'execType'
             {
-            match("period"); 
+            match("execType"); 
 
 
             }
@@ -373,10 +377,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__22;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:22:7: ( 'deadline' )
-            // InternalRsamlText.g:22:9: 'deadline'
+            // InternalRsamlText.g:22:7: ( 'period' )
+            // InternalRsamlText.g:22:9: 'period'
             {
-            match("deadline"); 
+            match("period"); 
 
 
             }
@@ -394,10 +398,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__23;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:23:7: ( 'wcet' )
-            // InternalRsamlText.g:23:9: 'wcet'
+            // InternalRsamlText.g:23:7: ( 'deadline' )
+            // InternalRsamlText.g:23:9: 'deadline'
             {
-            match("wcet"); 
+            match("deadline"); 
 
 
             }
@@ -415,10 +419,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__24;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:24:7: ( 'layer' )
-            // InternalRsamlText.g:24:9: 'layer'
+            // InternalRsamlText.g:24:7: ( 'wcet' )
+            // InternalRsamlText.g:24:9: 'wcet'
             {
-            match("layer"); 
+            match("wcet"); 
 
 
             }
@@ -436,10 +440,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__25;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:25:7: ( 'level' )
-            // InternalRsamlText.g:25:9: 'level'
+            // InternalRsamlText.g:25:7: ( 'layer' )
+            // InternalRsamlText.g:25:9: 'layer'
             {
-            match("level"); 
+            match("layer"); 
 
 
             }
@@ -457,10 +461,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__26;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:26:7: ( 'maxExecTime' )
-            // InternalRsamlText.g:26:9: 'maxExecTime'
+            // InternalRsamlText.g:26:7: ( 'level' )
+            // InternalRsamlText.g:26:9: 'level'
             {
-            match("maxExecTime"); 
+            match("level"); 
 
 
             }
@@ -478,10 +482,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__27;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:27:7: ( 'module' )
-            // InternalRsamlText.g:27:9: 'module'
+            // InternalRsamlText.g:27:7: ( 'maxExecTime' )
+            // InternalRsamlText.g:27:9: 'maxExecTime'
             {
-            match("module"); 
+            match("maxExecTime"); 
 
 
             }
@@ -499,10 +503,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__28;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:28:7: ( 'sensors' )
-            // InternalRsamlText.g:28:9: 'sensors'
+            // InternalRsamlText.g:28:7: ( 'module' )
+            // InternalRsamlText.g:28:9: 'module'
             {
-            match("sensors"); 
+            match("module"); 
 
 
             }
@@ -520,10 +524,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__29;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:29:7: ( ',' )
-            // InternalRsamlText.g:29:9: ','
+            // InternalRsamlText.g:29:7: ( 'sensors' )
+            // InternalRsamlText.g:29:9: 'sensors'
             {
-            match(','); 
+            match("sensors"); 
+
 
             }
 
@@ -540,11 +545,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__30;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:30:7: ( 'actuators' )
-            // InternalRsamlText.g:30:9: 'actuators'
+            // InternalRsamlText.g:30:7: ( ',' )
+            // InternalRsamlText.g:30:9: ','
             {
-            match("actuators"); 
-
+            match(','); 
 
             }
 
@@ -561,10 +565,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__31;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:31:7: ( 'function' )
-            // InternalRsamlText.g:31:9: 'function'
+            // InternalRsamlText.g:31:7: ( 'actuators' )
+            // InternalRsamlText.g:31:9: 'actuators'
             {
-            match("function"); 
+            match("actuators"); 
 
 
             }
@@ -582,10 +586,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__32;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:32:7: ( 'synchroType' )
-            // InternalRsamlText.g:32:9: 'synchroType'
+            // InternalRsamlText.g:32:7: ( 'function' )
+            // InternalRsamlText.g:32:9: 'function'
             {
-            match("synchroType"); 
+            match("function"); 
 
 
             }
@@ -603,10 +607,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__33;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:33:7: ( 'schedPolicy' )
-            // InternalRsamlText.g:33:9: 'schedPolicy'
+            // InternalRsamlText.g:33:7: ( 'synchroType' )
+            // InternalRsamlText.g:33:9: 'synchroType'
             {
-            match("schedPolicy"); 
+            match("synchroType"); 
 
 
             }
@@ -624,10 +628,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__34;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:34:7: ( 'otherPolicy' )
-            // InternalRsamlText.g:34:9: 'otherPolicy'
+            // InternalRsamlText.g:34:7: ( 'schedPolicy' )
+            // InternalRsamlText.g:34:9: 'schedPolicy'
             {
-            match("otherPolicy"); 
+            match("schedPolicy"); 
 
 
             }
@@ -645,10 +649,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__35;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:35:7: ( 'action' )
-            // InternalRsamlText.g:35:9: 'action'
+            // InternalRsamlText.g:35:7: ( 'otherPolicy' )
+            // InternalRsamlText.g:35:9: 'otherPolicy'
             {
-            match("action"); 
+            match("otherPolicy"); 
 
 
             }
@@ -666,10 +670,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__36;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:36:7: ( 'rtAction' )
-            // InternalRsamlText.g:36:9: 'rtAction'
+            // InternalRsamlText.g:36:7: ( 'action' )
+            // InternalRsamlText.g:36:9: 'action'
             {
-            match("rtAction"); 
+            match("action"); 
 
 
             }
@@ -687,10 +691,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__37;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:37:7: ( 'start' )
-            // InternalRsamlText.g:37:9: 'start'
+            // InternalRsamlText.g:37:7: ( 'rtAction' )
+            // InternalRsamlText.g:37:9: 'rtAction'
             {
-            match("start"); 
+            match("rtAction"); 
 
 
             }
@@ -708,10 +712,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__38;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:38:7: ( 'input' )
-            // InternalRsamlText.g:38:9: 'input'
+            // InternalRsamlText.g:38:7: ( 'start' )
+            // InternalRsamlText.g:38:9: 'start'
             {
-            match("input"); 
+            match("start"); 
 
 
             }
@@ -729,10 +733,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__39;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:39:7: ( 'output' )
-            // InternalRsamlText.g:39:9: 'output'
+            // InternalRsamlText.g:39:7: ( 'input' )
+            // InternalRsamlText.g:39:9: 'input'
             {
-            match("output"); 
+            match("input"); 
 
 
             }
@@ -750,10 +754,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__40;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:40:7: ( 'dataType' )
-            // InternalRsamlText.g:40:9: 'dataType'
+            // InternalRsamlText.g:40:7: ( 'output' )
+            // InternalRsamlText.g:40:9: 'output'
             {
-            match("dataType"); 
+            match("output"); 
 
 
             }
@@ -771,10 +775,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__41;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:41:7: ( 'messageType' )
-            // InternalRsamlText.g:41:9: 'messageType'
+            // InternalRsamlText.g:41:7: ( 'dataType' )
+            // InternalRsamlText.g:41:9: 'dataType'
             {
-            match("messageType"); 
+            match("dataType"); 
 
 
             }
@@ -792,10 +796,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__42;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:42:7: ( 'topic' )
-            // InternalRsamlText.g:42:9: 'topic'
+            // InternalRsamlText.g:42:7: ( 'messageType' )
+            // InternalRsamlText.g:42:9: 'messageType'
             {
-            match("topic"); 
+            match("messageType"); 
 
 
             }
@@ -813,10 +817,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__43;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:43:7: ( 'connect' )
-            // InternalRsamlText.g:43:9: 'connect'
+            // InternalRsamlText.g:43:7: ( 'topic' )
+            // InternalRsamlText.g:43:9: 'topic'
             {
-            match("connect"); 
+            match("topic"); 
 
 
             }
@@ -834,10 +838,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__44;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:44:7: ( '->' )
-            // InternalRsamlText.g:44:9: '->'
+            // InternalRsamlText.g:44:7: ( 'connect' )
+            // InternalRsamlText.g:44:9: 'connect'
             {
-            match("->"); 
+            match("connect"); 
 
 
             }
@@ -855,10 +859,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__45;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:45:7: ( 'inhibitor' )
-            // InternalRsamlText.g:45:9: 'inhibitor'
+            // InternalRsamlText.g:45:7: ( '->' )
+            // InternalRsamlText.g:45:9: '->'
             {
-            match("inhibitor"); 
+            match("->"); 
 
 
             }
@@ -876,10 +880,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__46;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:46:7: ( 'trigger' )
-            // InternalRsamlText.g:46:9: 'trigger'
+            // InternalRsamlText.g:46:7: ( 'inhibitor' )
+            // InternalRsamlText.g:46:9: 'inhibitor'
             {
-            match("trigger"); 
+            match("inhibitor"); 
 
 
             }
@@ -897,10 +901,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__47;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:47:7: ( 'target' )
-            // InternalRsamlText.g:47:9: 'target'
+            // InternalRsamlText.g:47:7: ( 'trigger' )
+            // InternalRsamlText.g:47:9: 'trigger'
             {
-            match("target"); 
+            match("trigger"); 
 
 
             }
@@ -918,10 +922,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__48;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:48:7: ( 'duration' )
-            // InternalRsamlText.g:48:9: 'duration'
+            // InternalRsamlText.g:48:7: ( 'target' )
+            // InternalRsamlText.g:48:9: 'target'
             {
-            match("duration"); 
+            match("target"); 
 
 
             }
@@ -939,10 +943,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__49;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:49:7: ( 'suppressor' )
-            // InternalRsamlText.g:49:9: 'suppressor'
+            // InternalRsamlText.g:49:7: ( 'duration' )
+            // InternalRsamlText.g:49:9: 'duration'
             {
-            match("suppressor"); 
+            match("duration"); 
 
 
             }
@@ -960,10 +964,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__50;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:50:7: ( 'sensor' )
-            // InternalRsamlText.g:50:9: 'sensor'
+            // InternalRsamlText.g:50:7: ( 'suppressor' )
+            // InternalRsamlText.g:50:9: 'suppressor'
             {
-            match("sensor"); 
+            match("suppressor"); 
 
 
             }
@@ -981,10 +985,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__51;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:51:7: ( 'kind' )
-            // InternalRsamlText.g:51:9: 'kind'
+            // InternalRsamlText.g:51:7: ( 'sensor' )
+            // InternalRsamlText.g:51:9: 'sensor'
             {
-            match("kind"); 
+            match("sensor"); 
 
 
             }
@@ -1002,10 +1006,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__52;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:52:7: ( 'actuator' )
-            // InternalRsamlText.g:52:9: 'actuator'
+            // InternalRsamlText.g:52:7: ( 'kind' )
+            // InternalRsamlText.g:52:9: 'kind'
             {
-            match("actuator"); 
+            match("kind"); 
 
 
             }
@@ -1023,10 +1027,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__53;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:53:7: ( 'mission' )
-            // InternalRsamlText.g:53:9: 'mission'
+            // InternalRsamlText.g:53:7: ( 'actuator' )
+            // InternalRsamlText.g:53:9: 'actuator'
             {
-            match("mission"); 
+            match("actuator"); 
 
 
             }
@@ -1044,10 +1048,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__54;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:54:7: ( 'goal' )
-            // InternalRsamlText.g:54:9: 'goal'
+            // InternalRsamlText.g:54:7: ( 'mission' )
+            // InternalRsamlText.g:54:9: 'mission'
             {
-            match("goal"); 
+            match("mission"); 
 
 
             }
@@ -1065,10 +1069,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__55;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:55:7: ( 'priority' )
-            // InternalRsamlText.g:55:9: 'priority'
+            // InternalRsamlText.g:55:7: ( 'goal' )
+            // InternalRsamlText.g:55:9: 'goal'
             {
-            match("priority"); 
+            match("goal"); 
 
 
             }
@@ -1086,10 +1090,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__56;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:56:7: ( 'plan' )
-            // InternalRsamlText.g:56:9: 'plan'
+            // InternalRsamlText.g:56:7: ( 'priority' )
+            // InternalRsamlText.g:56:9: 'priority'
             {
-            match("plan"); 
+            match("priority"); 
 
 
             }
@@ -1107,10 +1111,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__57;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:57:7: ( 'achieves' )
-            // InternalRsamlText.g:57:9: 'achieves'
+            // InternalRsamlText.g:57:7: ( 'plan' )
+            // InternalRsamlText.g:57:9: 'plan'
             {
-            match("achieves"); 
+            match("plan"); 
 
 
             }
@@ -1128,10 +1132,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__58;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:58:7: ( 'activity' )
-            // InternalRsamlText.g:58:9: 'activity'
+            // InternalRsamlText.g:58:7: ( 'achieves' )
+            // InternalRsamlText.g:58:9: 'achieves'
             {
-            match("activity"); 
+            match("achieves"); 
 
 
             }
@@ -1149,10 +1153,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__59;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:59:7: ( 'actions' )
-            // InternalRsamlText.g:59:9: 'actions'
+            // InternalRsamlText.g:59:7: ( 'activity' )
+            // InternalRsamlText.g:59:9: 'activity'
             {
-            match("actions"); 
+            match("activity"); 
 
 
             }
@@ -1170,10 +1174,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__60;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:60:7: ( 'supervisor' )
-            // InternalRsamlText.g:60:9: 'supervisor'
+            // InternalRsamlText.g:60:7: ( 'actions' )
+            // InternalRsamlText.g:60:9: 'actions'
             {
-            match("supervisor"); 
+            match("actions"); 
 
 
             }
@@ -1191,10 +1195,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__61;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:61:7: ( 'plans' )
-            // InternalRsamlText.g:61:9: 'plans'
+            // InternalRsamlText.g:61:7: ( 'supervisor' )
+            // InternalRsamlText.g:61:9: 'supervisor'
             {
-            match("plans"); 
+            match("supervisor"); 
 
 
             }
@@ -1212,10 +1216,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__62;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:62:7: ( 'realisedBy' )
-            // InternalRsamlText.g:62:9: 'realisedBy'
+            // InternalRsamlText.g:62:7: ( 'plans' )
+            // InternalRsamlText.g:62:9: 'plans'
             {
-            match("realisedBy"); 
+            match("plans"); 
 
 
             }
@@ -1233,10 +1237,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__63;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:63:7: ( 'order' )
-            // InternalRsamlText.g:63:9: 'order'
+            // InternalRsamlText.g:63:7: ( 'realisedBy' )
+            // InternalRsamlText.g:63:9: 'realisedBy'
             {
-            match("order"); 
+            match("realisedBy"); 
 
 
             }
@@ -1254,10 +1258,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__64;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:64:7: ( 'issuer' )
-            // InternalRsamlText.g:64:9: 'issuer'
+            // InternalRsamlText.g:64:7: ( 'order' )
+            // InternalRsamlText.g:64:9: 'order'
             {
-            match("issuer"); 
+            match("order"); 
 
 
             }
@@ -1275,10 +1279,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__65;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:65:7: ( 'receiver' )
-            // InternalRsamlText.g:65:9: 'receiver'
+            // InternalRsamlText.g:65:7: ( 'issuer' )
+            // InternalRsamlText.g:65:9: 'issuer'
             {
-            match("receiver"); 
+            match("issuer"); 
 
 
             }
@@ -1296,10 +1300,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__66;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:66:7: ( 'requests' )
-            // InternalRsamlText.g:66:9: 'requests'
+            // InternalRsamlText.g:66:7: ( 'receiver' )
+            // InternalRsamlText.g:66:9: 'receiver'
             {
-            match("requests"); 
+            match("receiver"); 
 
 
             }
@@ -1317,10 +1321,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__67;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:67:7: ( 'database' )
-            // InternalRsamlText.g:67:9: 'database'
+            // InternalRsamlText.g:67:7: ( 'requests' )
+            // InternalRsamlText.g:67:9: 'requests'
             {
-            match("database"); 
+            match("requests"); 
 
 
             }
@@ -1338,10 +1342,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__68;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:68:7: ( 'knowledge' )
-            // InternalRsamlText.g:68:9: 'knowledge'
+            // InternalRsamlText.g:68:7: ( 'database' )
+            // InternalRsamlText.g:68:9: 'database'
             {
-            match("knowledge"); 
+            match("database"); 
 
 
             }
@@ -1359,10 +1363,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__69;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:69:7: ( 'usedBy' )
-            // InternalRsamlText.g:69:9: 'usedBy'
+            // InternalRsamlText.g:69:7: ( 'knowledge' )
+            // InternalRsamlText.g:69:9: 'knowledge'
             {
-            match("usedBy"); 
+            match("knowledge"); 
 
 
             }
@@ -1380,10 +1384,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__70;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:70:7: ( 'processor' )
-            // InternalRsamlText.g:70:9: 'processor'
+            // InternalRsamlText.g:70:7: ( 'usedBy' )
+            // InternalRsamlText.g:70:9: 'usedBy'
             {
-            match("processor"); 
+            match("usedBy"); 
 
 
             }
@@ -1401,10 +1405,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__71;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:71:7: ( 'core' )
-            // InternalRsamlText.g:71:9: 'core'
+            // InternalRsamlText.g:71:7: ( 'processor' )
+            // InternalRsamlText.g:71:9: 'processor'
             {
-            match("core"); 
+            match("processor"); 
 
 
             }
@@ -1422,10 +1426,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__72;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:72:7: ( 'host' )
-            // InternalRsamlText.g:72:9: 'host'
+            // InternalRsamlText.g:72:7: ( 'core' )
+            // InternalRsamlText.g:72:9: 'core'
             {
-            match("host"); 
+            match("core"); 
 
 
             }
@@ -1443,10 +1447,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__73;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:73:7: ( 'linkLatency' )
-            // InternalRsamlText.g:73:9: 'linkLatency'
+            // InternalRsamlText.g:73:7: ( 'host' )
+            // InternalRsamlText.g:73:9: 'host'
             {
-            match("linkLatency"); 
+            match("host"); 
 
 
             }
@@ -1464,10 +1468,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__74;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:74:7: ( 'modules' )
-            // InternalRsamlText.g:74:9: 'modules'
+            // InternalRsamlText.g:74:7: ( 'linkLatency' )
+            // InternalRsamlText.g:74:9: 'linkLatency'
             {
-            match("modules"); 
+            match("linkLatency"); 
 
 
             }
@@ -1485,10 +1489,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__75;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:75:7: ( 'latency' )
-            // InternalRsamlText.g:75:9: 'latency'
+            // InternalRsamlText.g:75:7: ( 'modules' )
+            // InternalRsamlText.g:75:9: 'modules'
             {
-            match("latency"); 
+            match("modules"); 
 
 
             }
@@ -1506,10 +1510,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__76;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:76:7: ( 'from' )
-            // InternalRsamlText.g:76:9: 'from'
+            // InternalRsamlText.g:76:7: ( 'latency' )
+            // InternalRsamlText.g:76:9: 'latency'
             {
-            match("from"); 
+            match("latency"); 
 
 
             }
@@ -1527,10 +1531,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__77;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:77:7: ( 'to' )
-            // InternalRsamlText.g:77:9: 'to'
+            // InternalRsamlText.g:77:7: ( 'from' )
+            // InternalRsamlText.g:77:9: 'from'
             {
-            match("to"); 
+            match("from"); 
 
 
             }
@@ -1548,10 +1552,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__78;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:78:7: ( 'via' )
-            // InternalRsamlText.g:78:9: 'via'
+            // InternalRsamlText.g:78:7: ( 'to' )
+            // InternalRsamlText.g:78:9: 'to'
             {
-            match("via"); 
+            match("to"); 
 
 
             }
@@ -1569,10 +1573,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__79;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:79:7: ( 'maxLatency' )
-            // InternalRsamlText.g:79:9: 'maxLatency'
+            // InternalRsamlText.g:79:7: ( 'via' )
+            // InternalRsamlText.g:79:9: 'via'
             {
-            match("maxLatency"); 
+            match("via"); 
 
 
             }
@@ -1590,10 +1594,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__80;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:80:7: ( '.' )
-            // InternalRsamlText.g:80:9: '.'
+            // InternalRsamlText.g:80:7: ( 'maxLatency' )
+            // InternalRsamlText.g:80:9: 'maxLatency'
             {
-            match('.'); 
+            match("maxLatency"); 
+
 
             }
 
@@ -1610,11 +1615,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__81;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:81:7: ( 'centralized' )
-            // InternalRsamlText.g:81:9: 'centralized'
+            // InternalRsamlText.g:81:7: ( '.' )
+            // InternalRsamlText.g:81:9: '.'
             {
-            match("centralized"); 
-
+            match('.'); 
 
             }
 
@@ -1631,10 +1635,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__82;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:82:7: ( 'hierarchical' )
-            // InternalRsamlText.g:82:9: 'hierarchical'
+            // InternalRsamlText.g:82:7: ( 'centralized' )
+            // InternalRsamlText.g:82:9: 'centralized'
             {
-            match("hierarchical"); 
+            match("centralized"); 
 
 
             }
@@ -1652,10 +1656,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__83;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:83:7: ( 'behavioral' )
-            // InternalRsamlText.g:83:9: 'behavioral'
+            // InternalRsamlText.g:83:7: ( 'hierarchical' )
+            // InternalRsamlText.g:83:9: 'hierarchical'
             {
-            match("behavioral"); 
+            match("hierarchical"); 
 
 
             }
@@ -1673,10 +1677,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__84;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:84:7: ( 'hybrid' )
-            // InternalRsamlText.g:84:9: 'hybrid'
+            // InternalRsamlText.g:84:7: ( 'behavioral' )
+            // InternalRsamlText.g:84:9: 'behavioral'
             {
-            match("hybrid"); 
+            match("behavioral"); 
 
 
             }
@@ -1694,10 +1698,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__85;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:85:7: ( 'other' )
-            // InternalRsamlText.g:85:9: 'other'
+            // InternalRsamlText.g:85:7: ( 'hybrid' )
+            // InternalRsamlText.g:85:9: 'hybrid'
             {
-            match("other"); 
+            match("hybrid"); 
 
 
             }
@@ -1715,10 +1719,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__86;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:86:7: ( 'simple' )
-            // InternalRsamlText.g:86:9: 'simple'
+            // InternalRsamlText.g:86:7: ( 'other' )
+            // InternalRsamlText.g:86:9: 'other'
             {
-            match("simple"); 
+            match("other"); 
 
 
             }
@@ -1736,10 +1740,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__87;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:87:7: ( 'realTime' )
-            // InternalRsamlText.g:87:9: 'realTime'
+            // InternalRsamlText.g:87:7: ( 'simple' )
+            // InternalRsamlText.g:87:9: 'simple'
             {
-            match("realTime"); 
+            match("simple"); 
 
 
             }
@@ -1757,10 +1761,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__88;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:88:7: ( 'periodic' )
-            // InternalRsamlText.g:88:9: 'periodic'
+            // InternalRsamlText.g:88:7: ( 'realTime' )
+            // InternalRsamlText.g:88:9: 'realTime'
             {
-            match("periodic"); 
+            match("realTime"); 
 
 
             }
@@ -1778,10 +1782,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__89;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:89:7: ( 'sporadic' )
-            // InternalRsamlText.g:89:9: 'sporadic'
+            // InternalRsamlText.g:89:7: ( 'periodic' )
+            // InternalRsamlText.g:89:9: 'periodic'
             {
-            match("sporadic"); 
+            match("periodic"); 
 
 
             }
@@ -1799,10 +1803,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__90;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:90:7: ( 'aperiodic' )
-            // InternalRsamlText.g:90:9: 'aperiodic'
+            // InternalRsamlText.g:90:7: ( 'sporadic' )
+            // InternalRsamlText.g:90:9: 'sporadic'
             {
-            match("aperiodic"); 
+            match("sporadic"); 
 
 
             }
@@ -1820,10 +1824,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__91;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:91:7: ( 'ns' )
-            // InternalRsamlText.g:91:9: 'ns'
+            // InternalRsamlText.g:91:7: ( 'aperiodic' )
+            // InternalRsamlText.g:91:9: 'aperiodic'
             {
-            match("ns"); 
+            match("aperiodic"); 
 
 
             }
@@ -1841,10 +1845,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__92;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:92:7: ( 'us' )
-            // InternalRsamlText.g:92:9: 'us'
+            // InternalRsamlText.g:92:7: ( 'ns' )
+            // InternalRsamlText.g:92:9: 'ns'
             {
-            match("us"); 
+            match("ns"); 
 
 
             }
@@ -1862,10 +1866,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__93;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:93:7: ( 'ms' )
-            // InternalRsamlText.g:93:9: 'ms'
+            // InternalRsamlText.g:93:7: ( 'us' )
+            // InternalRsamlText.g:93:9: 'us'
             {
-            match("ms"); 
+            match("us"); 
 
 
             }
@@ -1883,10 +1887,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__94;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:94:7: ( 's' )
-            // InternalRsamlText.g:94:9: 's'
+            // InternalRsamlText.g:94:7: ( 'ms' )
+            // InternalRsamlText.g:94:9: 'ms'
             {
-            match('s'); 
+            match("ms"); 
+
 
             }
 
@@ -1903,11 +1908,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__95;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:95:7: ( 'synchronous' )
-            // InternalRsamlText.g:95:9: 'synchronous'
+            // InternalRsamlText.g:95:7: ( 's' )
+            // InternalRsamlText.g:95:9: 's'
             {
-            match("synchronous"); 
-
+            match('s'); 
 
             }
 
@@ -1924,10 +1928,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__96;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:96:7: ( 'asynchronous' )
-            // InternalRsamlText.g:96:9: 'asynchronous'
+            // InternalRsamlText.g:96:7: ( 'synchronous' )
+            // InternalRsamlText.g:96:9: 'synchronous'
             {
-            match("asynchronous"); 
+            match("synchronous"); 
 
 
             }
@@ -1945,10 +1949,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__97;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:97:7: ( 'FIFO' )
-            // InternalRsamlText.g:97:9: 'FIFO'
+            // InternalRsamlText.g:97:7: ( 'asynchronous' )
+            // InternalRsamlText.g:97:9: 'asynchronous'
             {
-            match("FIFO"); 
+            match("asynchronous"); 
 
 
             }
@@ -1966,10 +1970,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__98;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:98:7: ( 'SJF' )
-            // InternalRsamlText.g:98:9: 'SJF'
+            // InternalRsamlText.g:98:7: ( 'FIFO' )
+            // InternalRsamlText.g:98:9: 'FIFO'
             {
-            match("SJF"); 
+            match("FIFO"); 
 
 
             }
@@ -1987,10 +1991,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__99;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:99:7: ( 'RR' )
-            // InternalRsamlText.g:99:9: 'RR'
+            // InternalRsamlText.g:99:7: ( 'SJF' )
+            // InternalRsamlText.g:99:9: 'SJF'
             {
-            match("RR"); 
+            match("SJF"); 
 
 
             }
@@ -2008,10 +2012,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__100;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:100:8: ( 'RM' )
-            // InternalRsamlText.g:100:10: 'RM'
+            // InternalRsamlText.g:100:8: ( 'RR' )
+            // InternalRsamlText.g:100:10: 'RR'
             {
-            match("RM"); 
+            match("RR"); 
 
 
             }
@@ -2029,10 +2033,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__101;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:101:8: ( 'DM' )
-            // InternalRsamlText.g:101:10: 'DM'
+            // InternalRsamlText.g:101:8: ( 'RM' )
+            // InternalRsamlText.g:101:10: 'RM'
             {
-            match("DM"); 
+            match("RM"); 
 
 
             }
@@ -2050,10 +2054,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__102;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:102:8: ( 'EDF' )
-            // InternalRsamlText.g:102:10: 'EDF'
+            // InternalRsamlText.g:102:8: ( 'DM' )
+            // InternalRsamlText.g:102:10: 'DM'
             {
-            match("EDF"); 
+            match("DM"); 
 
 
             }
@@ -2071,10 +2075,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__103;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:103:8: ( 'LLF' )
-            // InternalRsamlText.g:103:10: 'LLF'
+            // InternalRsamlText.g:103:8: ( 'EDF' )
+            // InternalRsamlText.g:103:10: 'EDF'
             {
-            match("LLF"); 
+            match("EDF"); 
 
 
             }
@@ -2092,10 +2096,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__104;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:104:8: ( 'OTHER' )
-            // InternalRsamlText.g:104:10: 'OTHER'
+            // InternalRsamlText.g:104:8: ( 'LLF' )
+            // InternalRsamlText.g:104:10: 'LLF'
             {
-            match("OTHER"); 
+            match("LLF"); 
 
 
             }
@@ -2113,10 +2117,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__105;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:105:8: ( 'numeric' )
-            // InternalRsamlText.g:105:10: 'numeric'
+            // InternalRsamlText.g:105:8: ( 'OTHER' )
+            // InternalRsamlText.g:105:10: 'OTHER'
             {
-            match("numeric"); 
+            match("OTHER"); 
 
 
             }
@@ -2134,10 +2138,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__106;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:106:8: ( 'alphanumeric' )
-            // InternalRsamlText.g:106:10: 'alphanumeric'
+            // InternalRsamlText.g:106:8: ( 'numeric' )
+            // InternalRsamlText.g:106:10: 'numeric'
             {
-            match("alphanumeric"); 
+            match("numeric"); 
 
 
             }
@@ -2155,10 +2159,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__107;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:107:8: ( 'boolean' )
-            // InternalRsamlText.g:107:10: 'boolean'
+            // InternalRsamlText.g:107:8: ( 'alphanumeric' )
+            // InternalRsamlText.g:107:10: 'alphanumeric'
             {
-            match("boolean"); 
+            match("alphanumeric"); 
 
 
             }
@@ -2176,10 +2180,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__108;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:108:8: ( 'structured' )
-            // InternalRsamlText.g:108:10: 'structured'
+            // InternalRsamlText.g:108:8: ( 'boolean' )
+            // InternalRsamlText.g:108:10: 'boolean'
             {
-            match("structured"); 
+            match("boolean"); 
 
 
             }
@@ -2197,10 +2201,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__109;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:109:8: ( 'reactionTime' )
-            // InternalRsamlText.g:109:10: 'reactionTime'
+            // InternalRsamlText.g:109:8: ( 'structured' )
+            // InternalRsamlText.g:109:10: 'structured'
             {
-            match("reactionTime"); 
+            match("structured"); 
 
 
             }
@@ -2218,10 +2222,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__110;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:110:8: ( 'dataAge' )
-            // InternalRsamlText.g:110:10: 'dataAge'
+            // InternalRsamlText.g:110:8: ( 'reactionTime' )
+            // InternalRsamlText.g:110:10: 'reactionTime'
             {
-            match("dataAge"); 
+            match("reactionTime"); 
 
 
             }
@@ -2239,10 +2243,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__111;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:111:8: ( 'plain' )
-            // InternalRsamlText.g:111:10: 'plain'
+            // InternalRsamlText.g:111:8: ( 'dataAge' )
+            // InternalRsamlText.g:111:10: 'dataAge'
             {
-            match("plain"); 
+            match("dataAge"); 
 
 
             }
@@ -2260,10 +2264,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__112;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:112:8: ( 'managed' )
-            // InternalRsamlText.g:112:10: 'managed'
+            // InternalRsamlText.g:112:8: ( 'plain' )
+            // InternalRsamlText.g:112:10: 'plain'
             {
-            match("managed"); 
+            match("plain"); 
 
 
             }
@@ -2281,10 +2285,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__113;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:113:8: ( 'NaN' )
-            // InternalRsamlText.g:113:10: 'NaN'
+            // InternalRsamlText.g:113:8: ( 'managed' )
+            // InternalRsamlText.g:113:10: 'managed'
             {
-            match("NaN"); 
+            match("managed"); 
 
 
             }
@@ -2302,10 +2306,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__114;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:114:8: ( 'Infinity' )
-            // InternalRsamlText.g:114:10: 'Infinity'
+            // InternalRsamlText.g:114:8: ( 'single' )
+            // InternalRsamlText.g:114:10: 'single'
             {
-            match("Infinity"); 
+            match("single"); 
 
 
             }
@@ -2323,10 +2327,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__115;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:115:8: ( '-' )
-            // InternalRsamlText.g:115:10: '-'
+            // InternalRsamlText.g:115:8: ( 'perLayer' )
+            // InternalRsamlText.g:115:10: 'perLayer'
             {
-            match('-'); 
+            match("perLayer"); 
+
 
             }
 
@@ -2338,15 +2343,98 @@ public class InternalRsamlTextLexer extends Lexer {
     }
     // $ANTLR end "T__115"
 
+    // $ANTLR start "T__116"
+    public final void mT__116() throws RecognitionException {
+        try {
+            int _type = T__116;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:116:8: ( 'perProcessor' )
+            // InternalRsamlText.g:116:10: 'perProcessor'
+            {
+            match("perProcessor"); 
+
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__116"
+
+    // $ANTLR start "T__117"
+    public final void mT__117() throws RecognitionException {
+        try {
+            int _type = T__117;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:117:8: ( 'NaN' )
+            // InternalRsamlText.g:117:10: 'NaN'
+            {
+            match("NaN"); 
+
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__117"
+
+    // $ANTLR start "T__118"
+    public final void mT__118() throws RecognitionException {
+        try {
+            int _type = T__118;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:118:8: ( 'Infinity' )
+            // InternalRsamlText.g:118:10: 'Infinity'
+            {
+            match("Infinity"); 
+
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__118"
+
+    // $ANTLR start "T__119"
+    public final void mT__119() throws RecognitionException {
+        try {
+            int _type = T__119;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:119:8: ( '-' )
+            // InternalRsamlText.g:119:10: '-'
+            {
+            match('-'); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__119"
+
     // $ANTLR start "RULE_ID"
     public final void mRULE_ID() throws RecognitionException {
         try {
             int _type = RULE_ID;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5032:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
-            // InternalRsamlText.g:5032:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:5117:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
+            // InternalRsamlText.g:5117:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             {
-            // InternalRsamlText.g:5032:11: ( '^' )?
+            // InternalRsamlText.g:5117:11: ( '^' )?
             int alt1=2;
             int LA1_0 = input.LA(1);
 
@@ -2355,7 +2443,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt1) {
                 case 1 :
-                    // InternalRsamlText.g:5032:11: '^'
+                    // InternalRsamlText.g:5117:11: '^'
                     {
                     match('^'); 
 
@@ -2373,7 +2461,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 recover(mse);
                 throw mse;}
 
-            // InternalRsamlText.g:5032:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:5117:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             loop2:
             do {
                 int alt2=2;
@@ -2422,10 +2510,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_NUMBER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5034:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
-            // InternalRsamlText.g:5034:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:5119:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
+            // InternalRsamlText.g:5119:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             {
-            // InternalRsamlText.g:5034:15: ( '-' )?
+            // InternalRsamlText.g:5119:15: ( '-' )?
             int alt3=2;
             int LA3_0 = input.LA(1);
 
@@ -2434,7 +2522,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt3) {
                 case 1 :
-                    // InternalRsamlText.g:5034:15: '-'
+                    // InternalRsamlText.g:5119:15: '-'
                     {
                     match('-'); 
 
@@ -2443,7 +2531,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:5034:20: ( '0' .. '9' )+
+            // InternalRsamlText.g:5119:20: ( '0' .. '9' )+
             int cnt4=0;
             loop4:
             do {
@@ -2457,7 +2545,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt4) {
             	case 1 :
-            	    // InternalRsamlText.g:5034:21: '0' .. '9'
+            	    // InternalRsamlText.g:5119:21: '0' .. '9'
             	    {
             	    matchRange('0','9'); 
 
@@ -2473,7 +2561,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 cnt4++;
             } while (true);
 
-            // InternalRsamlText.g:5034:32: ( '.' ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:5119:32: ( '.' ( '0' .. '9' )+ )?
             int alt6=2;
             int LA6_0 = input.LA(1);
 
@@ -2482,10 +2570,10 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt6) {
                 case 1 :
-                    // InternalRsamlText.g:5034:33: '.' ( '0' .. '9' )+
+                    // InternalRsamlText.g:5119:33: '.' ( '0' .. '9' )+
                     {
                     match('.'); 
-                    // InternalRsamlText.g:5034:37: ( '0' .. '9' )+
+                    // InternalRsamlText.g:5119:37: ( '0' .. '9' )+
                     int cnt5=0;
                     loop5:
                     do {
@@ -2499,7 +2587,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt5) {
                     	case 1 :
-                    	    // InternalRsamlText.g:5034:38: '0' .. '9'
+                    	    // InternalRsamlText.g:5119:38: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2521,7 +2609,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:5034:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:5119:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             int alt9=2;
             int LA9_0 = input.LA(1);
 
@@ -2530,7 +2618,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt9) {
                 case 1 :
-                    // InternalRsamlText.g:5034:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
+                    // InternalRsamlText.g:5119:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
                     {
                     if ( input.LA(1)=='E'||input.LA(1)=='e' ) {
                         input.consume();
@@ -2541,7 +2629,7 @@ public class InternalRsamlTextLexer extends Lexer {
                         recover(mse);
                         throw mse;}
 
-                    // InternalRsamlText.g:5034:62: ( '+' | '-' )?
+                    // InternalRsamlText.g:5119:62: ( '+' | '-' )?
                     int alt7=2;
                     int LA7_0 = input.LA(1);
 
@@ -2567,7 +2655,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                     }
 
-                    // InternalRsamlText.g:5034:73: ( '0' .. '9' )+
+                    // InternalRsamlText.g:5119:73: ( '0' .. '9' )+
                     int cnt8=0;
                     loop8:
                     do {
@@ -2581,7 +2669,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt8) {
                     	case 1 :
-                    	    // InternalRsamlText.g:5034:74: '0' .. '9'
+                    	    // InternalRsamlText.g:5119:74: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2619,11 +2707,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_STRING;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5036:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
-            // InternalRsamlText.g:5036:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
+            // InternalRsamlText.g:5121:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
+            // InternalRsamlText.g:5121:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
             {
             match('\"'); 
-            // InternalRsamlText.g:5036:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
+            // InternalRsamlText.g:5121:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
             loop10:
             do {
                 int alt10=3;
@@ -2639,7 +2727,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt10) {
             	case 1 :
-            	    // InternalRsamlText.g:5036:20: '\\\\' .
+            	    // InternalRsamlText.g:5121:20: '\\\\' .
             	    {
             	    match('\\'); 
             	    matchAny(); 
@@ -2647,7 +2735,7 @@ public class InternalRsamlTextLexer extends Lexer {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:5036:27: ~ ( ( '\\\\' | '\"' ) )
+            	    // InternalRsamlText.g:5121:27: ~ ( ( '\\\\' | '\"' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='!')||(input.LA(1)>='#' && input.LA(1)<='[')||(input.LA(1)>=']' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2684,12 +2772,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ML_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5038:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
-            // InternalRsamlText.g:5038:19: '/*' ( options {greedy=false; } : . )* '*/'
+            // InternalRsamlText.g:5123:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
+            // InternalRsamlText.g:5123:19: '/*' ( options {greedy=false; } : . )* '*/'
             {
             match("/*"); 
 
-            // InternalRsamlText.g:5038:24: ( options {greedy=false; } : . )*
+            // InternalRsamlText.g:5123:24: ( options {greedy=false; } : . )*
             loop11:
             do {
                 int alt11=2;
@@ -2714,7 +2802,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt11) {
             	case 1 :
-            	    // InternalRsamlText.g:5038:52: .
+            	    // InternalRsamlText.g:5123:52: .
             	    {
             	    matchAny(); 
 
@@ -2744,12 +2832,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_SL_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5040:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
-            // InternalRsamlText.g:5040:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:5125:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
+            // InternalRsamlText.g:5125:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
             {
             match("//"); 
 
-            // InternalRsamlText.g:5040:24: (~ ( ( '\\n' | '\\r' ) ) )*
+            // InternalRsamlText.g:5125:24: (~ ( ( '\\n' | '\\r' ) ) )*
             loop12:
             do {
                 int alt12=2;
@@ -2762,7 +2850,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt12) {
             	case 1 :
-            	    // InternalRsamlText.g:5040:24: ~ ( ( '\\n' | '\\r' ) )
+            	    // InternalRsamlText.g:5125:24: ~ ( ( '\\n' | '\\r' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='\t')||(input.LA(1)>='\u000B' && input.LA(1)<='\f')||(input.LA(1)>='\u000E' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2782,7 +2870,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
             } while (true);
 
-            // InternalRsamlText.g:5040:40: ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:5125:40: ( ( '\\r' )? '\\n' )?
             int alt14=2;
             int LA14_0 = input.LA(1);
 
@@ -2791,9 +2879,9 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt14) {
                 case 1 :
-                    // InternalRsamlText.g:5040:41: ( '\\r' )? '\\n'
+                    // InternalRsamlText.g:5125:41: ( '\\r' )? '\\n'
                     {
-                    // InternalRsamlText.g:5040:41: ( '\\r' )?
+                    // InternalRsamlText.g:5125:41: ( '\\r' )?
                     int alt13=2;
                     int LA13_0 = input.LA(1);
 
@@ -2802,7 +2890,7 @@ public class InternalRsamlTextLexer extends Lexer {
                     }
                     switch (alt13) {
                         case 1 :
-                            // InternalRsamlText.g:5040:41: '\\r'
+                            // InternalRsamlText.g:5125:41: '\\r'
                             {
                             match('\r'); 
 
@@ -2834,10 +2922,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_WS;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5042:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
-            // InternalRsamlText.g:5042:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:5127:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
+            // InternalRsamlText.g:5127:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             {
-            // InternalRsamlText.g:5042:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:5127:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             int cnt15=0;
             loop15:
             do {
@@ -2891,8 +2979,8 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ANY_OTHER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:5044:16: ( . )
-            // InternalRsamlText.g:5044:18: .
+            // InternalRsamlText.g:5129:16: ( . )
+            // InternalRsamlText.g:5129:18: .
             {
             matchAny(); 
 
@@ -2907,8 +2995,8 @@ public class InternalRsamlTextLexer extends Lexer {
     // $ANTLR end "RULE_ANY_OTHER"
 
     public void mTokens() throws RecognitionException {
-        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
-        int alt16=112;
+        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | T__116 | T__117 | T__118 | T__119 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
+        int alt16=116;
         alt16 = dfa16.predict(input);
         switch (alt16) {
             case 1 :
@@ -3647,49 +3735,77 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
                 break;
             case 106 :
-                // InternalRsamlText.g:1:656: RULE_ID
+                // InternalRsamlText.g:1:656: T__116
+                {
+                mT__116(); 
+
+                }
+                break;
+            case 107 :
+                // InternalRsamlText.g:1:663: T__117
+                {
+                mT__117(); 
+
+                }
+                break;
+            case 108 :
+                // InternalRsamlText.g:1:670: T__118
+                {
+                mT__118(); 
+
+                }
+                break;
+            case 109 :
+                // InternalRsamlText.g:1:677: T__119
+                {
+                mT__119(); 
+
+                }
+                break;
+            case 110 :
+                // InternalRsamlText.g:1:684: RULE_ID
                 {
                 mRULE_ID(); 
 
                 }
                 break;
-            case 107 :
-                // InternalRsamlText.g:1:664: RULE_NUMBER
+            case 111 :
+                // InternalRsamlText.g:1:692: RULE_NUMBER
                 {
                 mRULE_NUMBER(); 
 
                 }
                 break;
-            case 108 :
-                // InternalRsamlText.g:1:676: RULE_STRING
+            case 112 :
+                // InternalRsamlText.g:1:704: RULE_STRING
                 {
                 mRULE_STRING(); 
 
                 }
                 break;
-            case 109 :
-                // InternalRsamlText.g:1:688: RULE_ML_COMMENT
+            case 113 :
+                // InternalRsamlText.g:1:716: RULE_ML_COMMENT
                 {
                 mRULE_ML_COMMENT(); 
 
                 }
                 break;
-            case 110 :
-                // InternalRsamlText.g:1:704: RULE_SL_COMMENT
+            case 114 :
+                // InternalRsamlText.g:1:732: RULE_SL_COMMENT
                 {
                 mRULE_SL_COMMENT(); 
 
                 }
                 break;
-            case 111 :
-                // InternalRsamlText.g:1:720: RULE_WS
+            case 115 :
+                // InternalRsamlText.g:1:748: RULE_WS
                 {
                 mRULE_WS(); 
 
                 }
                 break;
-            case 112 :
-                // InternalRsamlText.g:1:728: RULE_ANY_OTHER
+            case 116 :
+                // InternalRsamlText.g:1:756: RULE_ANY_OTHER
                 {
                 mRULE_ANY_OTHER(); 
 
@@ -3703,146 +3819,144 @@ public class InternalRsamlTextLexer extends Lexer {
 
     protected DFA16 dfa16 = new DFA16(this);
     static final String DFA16_eotS =
-        "\1\uffff\1\60\1\uffff\3\60\1\uffff\6\60\1\123\1\uffff\4\60\1\137\4\60\1\uffff\13\60\1\52\2\uffff\2\52\2\uffff\5\60\2\uffff\11\60\1\uffff\1\60\1\u0091\1\60\1\u0094\13\60\1\u00a2\7\60\2\uffff\11\60\3\uffff\7\60\1\uffff\2\60\1\u00c0\3\60\1\u00c4\1\u00c5\1\u00c6\5\60\4\uffff\26\60\1\uffff\2\60\1\uffff\15\60\1\uffff\32\60\1\u0110\2\60\1\uffff\2\60\1\u0115\3\uffff\1\u0116\1\u0117\1\60\1\u0119\12\60\1\u0125\13\60\1\u0133\1\60\1\u0135\7\60\1\u013e\1\60\1\u0140\20\60\1\u0151\13\60\1\u015e\1\60\1\u0160\1\u0161\2\60\1\uffff\3\60\1\u0167\3\uffff\1\60\1\uffff\13\60\1\uffff\12\60\1\u017e\1\60\1\u0180\1\uffff\1\60\1\uffff\1\u0182\6\60\1\u0189\1\uffff\1\u018a\1\uffff\11\60\1\u0194\6\60\1\uffff\1\u019c\1\60\1\u019e\6\60\1\u01a5\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\1\u01ae\3\60\1\u01b3\21\60\1\uffff\1\60\1\uffff\1\u01c6\1\uffff\1\60\1\u01c8\1\60\1\u01cb\2\60\2\uffff\3\60\1\u01d2\2\60\1\u01d6\2\60\1\uffff\3\60\1\u01dc\3\60\1\uffff\1\u01e0\1\uffff\6\60\1\uffff\1\60\1\u01e8\2\60\1\u01eb\3\60\1\uffff\3\60\1\u01f2\1\uffff\6\60\1\u01f9\6\60\1\u0200\3\60\1\u0204\1\uffff\1\u0205\1\uffff\2\60\1\uffff\4\60\1\u020c\1\u020d\1\uffff\1\60\1\u020f\1\u0210\1\uffff\5\60\1\uffff\3\60\1\uffff\7\60\1\uffff\2\60\1\uffff\1\60\1\u0224\1\u0225\2\60\1\u0229\1\uffff\1\u022a\1\u022b\3\60\1\u022f\1\uffff\3\60\1\u0233\1\u0234\1\u0235\1\uffff\1\u0236\2\60\2\uffff\1\u0239\1\u023a\1\u023b\3\60\2\uffff\1\60\2\uffff\6\60\1\u0246\1\u0247\1\60\1\u0249\1\60\1\u024b\1\60\1\u024d\1\u024e\4\60\2\uffff\1\u0253\1\60\1\u0255\3\uffff\1\u0256\2\60\1\uffff\3\60\4\uffff\1\u025c\1\60\3\uffff\1\u025e\11\60\2\uffff\1\60\1\uffff\1\60\1\uffff\1\60\2\uffff\1\u026b\1\u026c\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\1\60\1\uffff\1\60\1\u0277\4\60\1\u027c\1\u027d\1\u027e\1\60\1\u0280\1\60\2\uffff\1\60\1\u0283\3\60\1\u0287\1\60\1\u0289\1\u028a\1\u028b\1\uffff\1\u028c\1\u028d\1\u028e\1\u028f\3\uffff\1\u0290\1\uffff\2\60\1\uffff\1\u0293\1\u0294\1\u0295\1\uffff\1\60\10\uffff\1\u0297\1\u0298\3\uffff\1\60\2\uffff\1\u029a\1\uffff";
+        "\1\uffff\1\60\1\uffff\4\60\1\uffff\5\60\1\124\1\uffff\4\60\1\140\4\60\1\uffff\13\60\1\52\2\uffff\2\52\2\uffff\5\60\2\uffff\15\60\1\uffff\1\60\1\u0097\1\60\1\u009a\10\60\1\u00a4\7\60\2\uffff\11\60\3\uffff\7\60\1\uffff\2\60\1\u00c3\3\60\1\u00c7\1\u00c8\1\u00c9\5\60\4\uffff\33\60\1\uffff\2\60\1\uffff\11\60\1\uffff\33\60\1\u0117\2\60\1\uffff\2\60\1\u011c\3\uffff\1\u011d\1\u011e\1\60\1\u0120\12\60\1\u012c\21\60\1\u0141\1\60\1\u0143\1\60\1\u0145\4\60\1\u014a\21\60\1\u015c\13\60\1\u0169\1\60\1\u016b\1\u016c\2\60\1\uffff\3\60\1\u0172\3\uffff\1\60\1\uffff\13\60\1\uffff\12\60\1\u0189\1\60\1\u018b\6\60\1\u0192\1\uffff\1\u0193\1\uffff\1\60\1\uffff\1\u0195\3\60\1\uffff\11\60\1\u01a2\7\60\1\uffff\1\u01ab\1\60\1\u01ad\6\60\1\u01b4\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\1\u01bd\3\60\1\u01c2\21\60\1\uffff\1\60\1\uffff\1\60\1\u01d7\4\60\2\uffff\1\u01dc\1\uffff\1\60\1\u01de\4\60\1\u01e4\2\60\1\u01e8\2\60\1\uffff\3\60\1\u01ee\1\u01ef\3\60\1\uffff\1\u01f3\1\uffff\6\60\1\uffff\1\60\1\u01fb\2\60\1\u01fe\3\60\1\uffff\3\60\1\u0205\1\uffff\6\60\1\u020c\6\60\1\u0213\3\60\1\u0217\2\60\1\uffff\4\60\1\uffff\1\u021e\1\uffff\3\60\1\u0222\1\u0223\1\uffff\1\60\1\u0225\1\u0226\1\uffff\5\60\2\uffff\3\60\1\uffff\7\60\1\uffff\2\60\1\uffff\1\60\1\u023a\1\u023b\2\60\1\u023f\1\uffff\1\u0240\1\u0241\3\60\1\u0245\1\uffff\3\60\1\u0249\1\u024a\1\u024b\1\uffff\1\u024c\2\60\1\uffff\1\u024f\1\u0250\1\u0251\1\60\1\u0253\1\60\1\uffff\1\u0255\2\60\2\uffff\1\60\2\uffff\6\60\1\u025f\1\u0260\1\60\1\u0262\1\60\1\u0264\1\60\1\u0266\1\u0267\4\60\2\uffff\1\u026c\1\60\1\u026e\3\uffff\1\u026f\2\60\1\uffff\3\60\4\uffff\1\u0275\1\60\3\uffff\1\60\1\uffff\1\u0278\1\uffff\11\60\2\uffff\1\60\1\uffff\1\60\1\uffff\1\60\2\uffff\1\u0285\1\u0286\2\60\1\uffff\1\60\2\uffff\5\60\1\uffff\2\60\1\uffff\1\60\1\u0292\4\60\1\u0297\1\u0298\1\u0299\1\60\1\u029b\1\60\2\uffff\1\60\1\u029e\3\60\1\u02a2\1\60\1\u02a4\1\u02a5\1\60\1\u02a7\1\uffff\1\u02a8\1\u02a9\1\u02aa\1\u02ab\3\uffff\1\u02ac\1\uffff\2\60\1\uffff\1\u02af\1\u02b0\1\u02b1\1\uffff\1\60\2\uffff\1\u02b3\6\uffff\1\u02b4\1\u02b5\3\uffff\1\60\3\uffff\1\u02b7\1\uffff";
     static final String DFA16_eofS =
-        "\u029b\uffff";
+        "\u02b8\uffff";
     static final String DFA16_minS =
-        "\1\0\1\143\1\uffff\3\141\1\uffff\1\156\1\141\1\170\1\145\1\143\1\141\1\60\1\uffff\2\162\1\145\1\156\1\60\1\151\1\157\2\151\1\uffff\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\2\uffff\1\164\2\156\1\141\1\164\1\162\1\146\1\164\1\166\1\uffff\1\151\1\60\1\160\1\60\1\151\1\162\1\145\1\162\1\151\1\141\1\145\1\156\1\144\2\163\1\60\2\156\1\150\1\141\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\141\1\150\1\163\3\uffff\1\156\1\157\1\141\1\163\1\145\1\142\1\141\1\uffff\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\4\uffff\1\150\2\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\145\1\153\3\145\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\151\1\157\1\143\1\151\1\164\1\105\1\141\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\1\145\1\160\1\162\1\143\1\155\1\145\1\160\1\145\2\143\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\164\2\162\1\60\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\141\1\157\1\145\1\151\1\143\1\141\1\147\1\145\1\60\1\162\1\141\1\162\1\154\1\101\1\164\1\143\1\114\1\162\1\156\1\154\1\60\1\102\1\60\1\143\1\147\1\145\1\124\1\157\1\162\1\145\1\60\1\156\1\60\1\170\1\141\1\147\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\1\154\1\141\1\164\1\60\1\162\1\165\1\162\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\60\1\154\2\60\1\141\1\151\1\uffff\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\171\1\141\1\60\1\143\1\60\1\uffff\1\171\1\uffff\1\60\1\145\1\164\1\171\1\144\1\151\1\163\1\60\1\uffff\1\60\1\uffff\1\145\1\164\2\145\1\147\1\157\2\162\1\120\1\60\1\164\1\145\1\166\1\145\1\144\1\151\1\uffff\1\60\1\164\1\60\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\uffff\1\145\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\157\1\60\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\143\1\164\1\uffff\1\171\1\uffff\1\60\1\uffff\1\162\1\60\1\160\1\60\1\164\1\163\2\uffff\1\143\1\145\1\144\1\60\1\145\1\156\1\60\2\157\1\uffff\1\165\1\163\1\151\1\60\1\151\2\157\1\uffff\1\60\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\60\1\144\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\60\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\60\1\151\1\144\1\164\3\145\1\60\1\156\1\154\1\145\1\60\1\uffff\1\60\1\uffff\1\145\1\143\1\uffff\1\171\1\157\1\124\1\156\2\60\1\uffff\1\124\2\60\1\uffff\1\124\1\154\1\162\2\163\1\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\60\1\171\1\164\1\60\1\uffff\2\60\1\143\1\156\1\145\1\60\1\uffff\1\172\1\114\1\151\3\60\1\uffff\1\60\1\145\1\156\2\uffff\3\60\1\162\1\151\1\143\2\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\60\1\151\1\60\1\102\1\60\1\124\2\60\1\162\1\145\1\151\1\141\2\uffff\1\60\1\165\1\60\3\uffff\1\60\1\157\1\162\1\uffff\1\145\1\141\1\157\4\uffff\1\60\1\143\3\uffff\1\60\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\60\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\171\1\uffff\1\145\1\60\2\145\1\163\1\171\3\60\1\171\1\60\1\155\2\uffff\1\141\1\60\1\145\1\163\1\143\1\60\1\145\3\60\1\uffff\4\60\3\uffff\1\60\1\uffff\1\145\1\154\1\uffff\3\60\1\uffff\1\162\10\uffff\2\60\3\uffff\1\163\2\uffff\1\60\1\uffff";
+        "\1\0\1\143\1\uffff\4\141\1\uffff\1\156\1\141\1\170\1\143\1\141\1\60\1\uffff\2\162\1\145\1\156\1\60\1\151\1\157\2\151\1\uffff\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\2\uffff\1\164\2\156\1\141\1\164\1\162\1\146\1\164\1\166\1\143\1\162\1\151\1\141\1\uffff\1\151\1\60\1\160\1\60\1\151\1\162\2\145\1\156\1\144\2\163\1\60\2\156\1\150\1\141\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\141\1\150\1\163\3\uffff\1\156\1\157\1\141\1\163\1\145\1\142\1\141\1\uffff\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\4\uffff\1\150\2\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\145\1\153\3\145\1\153\1\114\1\157\1\143\1\151\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\105\1\141\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\1\145\1\160\1\147\1\162\1\143\1\155\1\145\1\160\1\145\2\143\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\164\2\162\1\60\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\141\1\157\1\145\1\151\1\143\1\141\1\147\1\145\1\60\1\162\1\141\1\162\1\154\1\101\1\164\1\143\1\114\1\162\1\156\1\154\1\141\1\157\1\141\2\162\1\145\1\60\1\156\1\60\1\102\1\60\1\143\1\147\1\145\1\124\1\60\1\170\1\141\1\147\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\2\154\1\141\1\164\1\60\1\162\1\165\1\162\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\60\1\154\2\60\1\141\1\151\1\uffff\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\171\1\141\1\60\1\143\1\60\1\147\1\144\1\171\1\157\1\151\1\163\1\60\1\uffff\1\60\1\uffff\1\171\1\uffff\1\60\1\145\1\164\1\171\1\uffff\1\145\1\164\2\145\1\147\1\157\2\162\1\120\1\60\1\164\1\145\1\166\2\145\1\144\1\151\1\uffff\1\60\1\164\1\60\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\uffff\1\145\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\157\1\60\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\143\1\164\1\uffff\1\171\1\uffff\1\145\1\60\1\145\1\143\1\164\1\163\2\uffff\1\60\1\uffff\1\162\1\60\1\160\1\143\1\145\1\144\1\60\1\145\1\156\1\60\2\157\1\uffff\1\165\1\163\1\151\2\60\1\151\2\157\1\uffff\1\60\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\60\1\144\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\60\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\60\1\151\1\144\1\164\3\145\1\60\1\156\1\154\1\145\1\60\1\163\1\143\1\uffff\1\162\1\145\1\171\1\157\1\uffff\1\60\1\uffff\1\145\1\124\1\156\2\60\1\uffff\1\124\2\60\1\uffff\1\124\1\154\1\162\2\163\2\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\60\1\171\1\164\1\60\1\uffff\2\60\1\143\1\156\1\145\1\60\1\uffff\1\172\1\114\1\151\3\60\1\uffff\1\60\1\145\1\156\1\uffff\3\60\1\163\1\60\1\162\1\uffff\1\60\1\151\1\143\2\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\60\1\151\1\60\1\102\1\60\1\124\2\60\1\162\1\145\1\151\1\141\2\uffff\1\60\1\165\1\60\3\uffff\1\60\1\157\1\162\1\uffff\1\145\1\141\1\157\4\uffff\1\60\1\143\3\uffff\1\163\1\uffff\1\60\1\uffff\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\60\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\171\1\157\1\uffff\1\145\1\60\2\145\1\163\1\171\3\60\1\171\1\60\1\155\2\uffff\1\141\1\60\1\145\1\163\1\143\1\60\1\145\2\60\1\162\1\60\1\uffff\4\60\3\uffff\1\60\1\uffff\1\145\1\154\1\uffff\3\60\1\uffff\1\162\2\uffff\1\60\6\uffff\2\60\3\uffff\1\163\3\uffff\1\60\1\uffff";
     static final String DFA16_maxS =
-        "\1\uffff\1\163\1\uffff\1\157\1\165\1\151\1\uffff\1\163\1\171\1\170\1\162\1\143\1\163\1\172\1\uffff\2\165\1\164\1\163\1\76\1\156\1\157\1\171\1\151\1\uffff\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\2\uffff\1\164\1\162\1\156\1\163\1\164\1\162\1\156\1\171\1\166\1\uffff\1\151\1\172\1\160\1\172\1\151\1\162\1\145\1\162\1\157\1\141\1\145\1\170\1\144\2\163\1\172\2\156\1\150\1\162\1\160\1\155\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\161\1\160\1\163\3\uffff\1\156\1\157\1\141\1\163\1\145\1\142\1\141\1\uffff\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\4\uffff\1\150\1\165\1\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\145\1\153\3\145\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\151\1\157\1\143\1\156\1\164\1\114\1\141\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\2\160\1\162\1\143\1\155\1\145\1\160\1\145\1\143\1\154\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\164\2\162\1\172\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\141\1\166\1\145\1\151\1\143\1\141\1\147\1\145\1\172\1\162\1\141\1\162\1\154\1\142\1\164\1\143\1\114\1\162\1\156\1\154\1\172\1\102\1\172\1\143\1\147\1\145\1\124\1\157\1\162\1\145\1\172\1\156\1\172\1\170\1\141\1\147\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\1\154\1\141\1\164\1\172\1\162\1\165\1\162\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\172\1\154\2\172\1\141\1\151\1\uffff\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\171\1\141\1\172\1\143\1\172\1\uffff\1\171\1\uffff\1\172\1\145\1\164\1\171\1\144\1\151\1\163\1\172\1\uffff\1\172\1\uffff\1\145\1\164\2\145\1\147\1\157\2\162\1\120\1\172\1\164\1\145\1\166\1\145\1\144\1\151\1\uffff\1\172\1\164\1\172\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\uffff\1\145\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\157\1\172\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\143\1\164\1\uffff\1\171\1\uffff\1\172\1\uffff\1\162\1\172\1\160\1\172\1\164\1\163\2\uffff\1\143\1\145\1\144\1\172\1\145\1\156\1\172\2\157\1\uffff\1\165\1\163\1\151\1\172\1\151\2\157\1\uffff\1\172\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\172\1\144\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\172\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\172\1\151\1\144\1\164\3\145\1\172\1\156\1\154\1\145\1\172\1\uffff\1\172\1\uffff\1\145\1\143\1\uffff\1\171\1\157\1\124\1\156\2\172\1\uffff\1\124\2\172\1\uffff\1\156\1\154\1\162\2\163\1\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\172\1\171\1\164\1\172\1\uffff\2\172\1\143\1\156\1\145\1\172\1\uffff\1\172\1\114\1\151\3\172\1\uffff\1\172\1\145\1\156\2\uffff\3\172\1\162\1\151\1\143\2\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\172\1\151\1\172\1\102\1\172\1\124\2\172\1\162\1\145\1\151\1\141\2\uffff\1\172\1\165\1\172\3\uffff\1\172\1\157\1\162\1\uffff\1\145\1\141\1\157\4\uffff\1\172\1\143\3\uffff\1\172\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\172\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\171\1\uffff\1\145\1\172\2\145\1\163\1\171\3\172\1\171\1\172\1\155\2\uffff\1\141\1\172\1\145\1\163\1\143\1\172\1\145\3\172\1\uffff\4\172\3\uffff\1\172\1\uffff\1\145\1\154\1\uffff\3\172\1\uffff\1\162\10\uffff\2\172\3\uffff\1\163\2\uffff\1\172\1\uffff";
+        "\1\uffff\1\163\1\uffff\1\157\1\165\1\151\1\162\1\uffff\1\163\1\171\1\170\1\143\1\163\1\172\1\uffff\2\165\1\164\1\163\1\76\1\156\1\157\1\171\1\151\1\uffff\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\2\uffff\1\164\1\162\1\156\1\163\1\164\1\162\1\156\1\171\1\166\1\143\1\162\1\157\1\141\1\uffff\1\151\1\172\1\160\1\172\1\151\1\162\2\145\1\170\1\144\2\163\1\172\2\156\1\150\1\162\1\160\1\156\1\157\2\uffff\1\156\1\157\1\150\1\164\1\144\1\101\1\161\1\160\1\163\3\uffff\1\156\1\157\1\141\1\163\1\145\1\142\1\141\1\uffff\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\4\uffff\1\150\1\165\1\151\1\162\1\156\1\150\1\145\1\156\1\145\1\164\1\154\1\143\1\144\2\141\1\145\1\153\3\145\1\153\1\151\1\157\1\143\1\156\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\114\1\141\1\165\2\163\1\uffff\1\163\1\143\1\145\1\162\1\165\2\160\1\147\1\162\1\143\1\155\1\145\1\160\1\145\1\143\1\154\1\145\2\165\1\151\1\165\1\144\1\167\1\154\1\164\2\162\1\172\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\141\1\166\1\145\1\151\1\143\1\141\1\147\1\145\1\172\1\162\1\141\1\162\1\154\1\142\1\164\1\143\1\114\1\162\1\156\1\154\1\141\1\157\1\141\2\162\1\145\1\172\1\156\1\172\1\102\1\172\1\143\1\147\1\145\1\124\1\172\1\170\1\141\1\147\1\154\1\141\1\151\1\157\1\150\1\144\1\164\1\143\2\162\2\154\1\141\1\164\1\172\1\162\1\165\1\162\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\172\1\154\2\172\1\141\1\151\1\uffff\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\2\164\1\156\1\151\1\166\1\157\1\150\1\156\1\157\1\143\1\uffff\1\141\1\162\2\151\1\171\1\141\1\147\1\151\1\171\1\141\1\172\1\143\1\172\1\147\1\144\1\171\1\157\1\151\1\163\1\172\1\uffff\1\172\1\uffff\1\171\1\uffff\1\172\1\145\1\164\1\171\1\uffff\1\145\1\164\2\145\1\147\1\157\2\162\1\120\1\172\1\164\1\145\1\166\2\145\1\144\1\151\1\uffff\1\172\1\164\1\172\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\uffff\1\145\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\157\1\172\1\164\1\145\1\144\1\162\1\165\1\162\1\164\1\154\1\145\1\160\1\156\1\160\1\163\1\145\1\157\1\143\1\164\1\uffff\1\171\1\uffff\1\145\1\172\1\145\1\143\1\164\1\163\2\uffff\1\172\1\uffff\1\162\1\172\1\160\1\143\1\145\1\144\1\172\1\145\1\156\1\172\2\157\1\uffff\1\165\1\163\1\151\2\172\1\151\2\157\1\uffff\1\172\1\uffff\1\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\1\172\1\144\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\162\1\172\1\uffff\1\171\1\163\1\151\1\157\1\155\1\171\1\172\1\151\1\144\1\164\3\145\1\172\1\156\1\154\1\145\1\172\1\163\1\143\1\uffff\1\162\1\145\1\171\1\157\1\uffff\1\172\1\uffff\1\145\1\124\1\156\2\172\1\uffff\1\124\2\172\1\uffff\1\156\1\154\1\162\2\163\2\uffff\1\143\1\156\1\154\1\uffff\1\156\1\144\1\145\1\156\1\162\1\163\1\157\1\uffff\1\147\1\150\1\uffff\1\162\2\172\1\171\1\164\1\172\1\uffff\2\172\1\143\1\156\1\145\1\172\1\uffff\1\172\1\114\1\151\3\172\1\uffff\1\172\1\145\1\156\1\uffff\3\172\1\163\1\172\1\162\1\uffff\1\172\1\151\1\143\2\uffff\1\171\2\uffff\1\171\1\157\1\151\1\145\2\157\2\172\1\151\1\172\1\102\1\172\1\124\2\172\1\162\1\145\1\151\1\141\2\uffff\1\172\1\165\1\172\3\uffff\1\172\1\157\1\162\1\uffff\1\145\1\141\1\157\4\uffff\1\172\1\143\3\uffff\1\163\1\uffff\1\172\1\uffff\1\155\1\171\2\160\1\165\1\143\1\144\2\162\2\uffff\1\143\1\uffff\1\171\1\uffff\1\151\2\uffff\2\172\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\144\1\171\1\156\1\uffff\1\171\1\157\1\uffff\1\145\1\172\2\145\1\163\1\171\3\172\1\171\1\172\1\155\2\uffff\1\141\1\172\1\145\1\163\1\143\1\172\1\145\2\172\1\162\1\172\1\uffff\4\172\3\uffff\1\172\1\uffff\1\145\1\154\1\uffff\3\172\1\uffff\1\162\2\uffff\1\172\6\uffff\2\172\3\uffff\1\163\3\uffff\1\172\1\uffff";
     static final String DFA16_acceptS =
-        "\2\uffff\1\2\3\uffff\1\6\7\uffff\1\23\11\uffff\1\106\14\uffff\1\152\1\153\2\uffff\1\157\1\160\5\uffff\1\152\1\2\11\uffff\1\6\27\uffff\1\124\1\23\11\uffff\1\42\1\151\1\153\7\uffff\1\106\16\uffff\1\154\1\155\1\156\1\157\26\uffff\1\122\2\uffff\1\103\15\uffff\1\123\35\uffff\1\121\3\uffff\1\131\1\132\1\133\111\uffff\1\104\4\uffff\1\130\1\134\1\135\1\uffff\1\147\13\uffff\1\75\15\uffff\1\10\1\uffff\1\11\10\uffff\1\56\1\uffff\1\15\20\uffff\1\102\14\uffff\1\51\1\uffff\1\54\1\76\5\uffff\1\127\26\uffff\1\16\1\uffff\1\17\1\uffff\1\40\6\uffff\1\63\1\145\11\uffff\1\33\7\uffff\1\113\1\uffff\1\65\6\uffff\1\34\10\uffff\1\136\4\uffff\1\31\22\uffff\1\73\1\uffff\1\45\2\uffff\1\13\6\uffff\1\21\3\uffff\1\50\5\uffff\1\114\3\uffff\1\35\7\uffff\1\66\2\uffff\1\112\6\uffff\1\61\6\uffff\1\41\6\uffff\1\144\3\uffff\1\101\1\44\6\uffff\1\146\1\100\1\uffff\1\53\1\22\23\uffff\1\141\1\137\3\uffff\1\52\1\60\1\57\3\uffff\1\3\3\uffff\1\14\1\36\1\71\1\46\2\uffff\1\12\1\116\1\55\12\uffff\1\117\1\25\1\uffff\1\32\1\uffff\1\115\1\uffff\1\67\1\70\4\uffff\1\150\1\uffff\1\24\1\120\5\uffff\1\5\1\uffff\1\74\14\uffff\1\43\1\72\12\uffff\1\105\4\uffff\1\142\1\47\1\62\1\uffff\1\64\2\uffff\1\111\3\uffff\1\107\1\uffff\1\7\1\77\1\20\1\37\1\26\1\125\1\27\1\30\2\uffff\1\1\1\126\1\140\1\uffff\1\143\1\110\1\uffff\1\4";
+        "\2\uffff\1\2\4\uffff\1\7\6\uffff\1\24\11\uffff\1\107\14\uffff\1\156\1\157\2\uffff\1\163\1\164\5\uffff\1\156\1\2\15\uffff\1\7\24\uffff\1\125\1\24\11\uffff\1\43\1\155\1\157\7\uffff\1\107\16\uffff\1\160\1\161\1\162\1\163\33\uffff\1\123\2\uffff\1\104\11\uffff\1\124\36\uffff\1\122\3\uffff\1\132\1\133\1\134\115\uffff\1\105\4\uffff\1\131\1\135\1\136\1\uffff\1\153\13\uffff\1\76\24\uffff\1\57\1\uffff\1\11\1\uffff\1\12\4\uffff\1\16\21\uffff\1\103\14\uffff\1\52\1\uffff\1\55\1\77\5\uffff\1\130\26\uffff\1\17\1\uffff\1\20\6\uffff\1\64\1\146\1\uffff\1\41\14\uffff\1\34\10\uffff\1\114\1\uffff\1\66\6\uffff\1\35\10\uffff\1\137\4\uffff\1\32\24\uffff\1\14\4\uffff\1\74\1\uffff\1\46\5\uffff\1\22\3\uffff\1\51\5\uffff\1\115\1\150\3\uffff\1\36\7\uffff\1\67\2\uffff\1\113\6\uffff\1\62\6\uffff\1\42\6\uffff\1\145\3\uffff\1\102\6\uffff\1\45\3\uffff\1\147\1\101\1\uffff\1\54\1\23\23\uffff\1\142\1\140\3\uffff\1\53\1\61\1\60\3\uffff\1\3\3\uffff\1\15\1\37\1\72\1\47\2\uffff\1\6\1\117\1\151\1\uffff\1\56\1\uffff\1\13\11\uffff\1\120\1\26\1\uffff\1\33\1\uffff\1\116\1\uffff\1\70\1\71\4\uffff\1\154\1\uffff\1\25\1\121\5\uffff\1\5\2\uffff\1\75\14\uffff\1\44\1\73\13\uffff\1\106\4\uffff\1\143\1\50\1\63\1\uffff\1\65\2\uffff\1\112\3\uffff\1\110\1\uffff\1\10\1\100\1\uffff\1\21\1\40\1\27\1\126\1\30\1\31\2\uffff\1\1\1\127\1\141\1\uffff\1\152\1\144\1\111\1\uffff\1\4";
     static final String DFA16_specialS =
-        "\1\1\46\uffff\1\0\u0273\uffff}>";
+        "\1\0\46\uffff\1\1\u0290\uffff}>";
     static final String[] DFA16_transitionS = {
-            "\11\52\2\51\2\52\1\51\22\52\1\51\1\52\1\47\11\52\1\16\1\23\1\30\1\50\12\46\7\52\3\45\1\36\1\37\1\33\2\45\1\43\2\45\1\40\1\45\1\42\1\41\2\45\1\35\1\34\7\45\3\52\1\44\1\45\1\52\1\1\1\31\1\3\1\4\1\11\1\17\1\25\1\26\1\22\1\45\1\24\1\5\1\14\1\32\1\20\1\12\1\45\1\21\1\15\1\10\1\7\1\27\1\13\3\45\1\2\1\52\1\6\uff82\52",
+            "\11\52\2\51\2\52\1\51\22\52\1\51\1\52\1\47\11\52\1\16\1\23\1\30\1\50\12\46\7\52\3\45\1\36\1\37\1\33\2\45\1\43\2\45\1\40\1\45\1\42\1\41\2\45\1\35\1\34\7\45\3\52\1\44\1\45\1\52\1\1\1\31\1\3\1\4\1\12\1\17\1\25\1\26\1\22\1\45\1\24\1\5\1\14\1\32\1\20\1\6\1\45\1\21\1\15\1\11\1\10\1\27\1\13\3\45\1\2\1\52\1\7\uff82\52",
             "\1\54\10\uffff\1\57\3\uffff\1\55\1\uffff\1\53\1\56",
             "",
             "\1\62\3\uffff\1\64\11\uffff\1\63",
             "\1\66\3\uffff\1\65\17\uffff\1\67",
             "\1\71\3\uffff\1\72\3\uffff\1\70",
+            "\1\73\3\uffff\1\74\6\uffff\1\76\5\uffff\1\75",
             "",
-            "\1\74\4\uffff\1\75",
-            "\1\101\15\uffff\1\77\2\uffff\1\100\6\uffff\1\76",
-            "\1\102",
-            "\1\103\6\uffff\1\105\5\uffff\1\104",
+            "\1\100\4\uffff\1\101",
+            "\1\105\15\uffff\1\103\2\uffff\1\104\6\uffff\1\102",
             "\1\106",
-            "\1\107\3\uffff\1\111\3\uffff\1\112\5\uffff\1\110\3\uffff\1\113",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\2\60\1\116\1\60\1\114\3\60\1\121\6\60\1\122\3\60\1\117\1\120\3\60\1\115\1\60",
+            "\1\107",
+            "\1\110\3\uffff\1\112\3\uffff\1\113\5\uffff\1\111\3\uffff\1\114",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\2\60\1\117\1\60\1\115\3\60\1\122\6\60\1\123\3\60\1\120\1\121\3\60\1\116\1\60",
             "",
-            "\1\126\2\uffff\1\125",
-            "\1\131\1\uffff\1\127\1\130",
-            "\1\133\16\uffff\1\132",
-            "\1\134\4\uffff\1\135",
-            "\12\140\4\uffff\1\136",
-            "\1\141\4\uffff\1\142",
-            "\1\143",
-            "\1\145\5\uffff\1\144\11\uffff\1\146",
-            "\1\147",
+            "\1\127\2\uffff\1\126",
+            "\1\132\1\uffff\1\130\1\131",
+            "\1\134\16\uffff\1\133",
+            "\1\135\4\uffff\1\136",
+            "\12\141\4\uffff\1\137",
+            "\1\142\4\uffff\1\143",
+            "\1\144",
+            "\1\146\5\uffff\1\145\11\uffff\1\147",
+            "\1\150",
             "",
-            "\1\151\11\uffff\1\152",
-            "\1\153\1\uffff\1\154",
-            "\1\155",
+            "\1\152\11\uffff\1\153",
+            "\1\154\1\uffff\1\155",
             "\1\156",
-            "\1\160\4\uffff\1\157",
-            "\1\161",
+            "\1\157",
+            "\1\161\4\uffff\1\160",
             "\1\162",
             "\1\163",
             "\1\164",
             "\1\165",
             "\1\166",
+            "\1\167",
             "\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
-            "\0\167",
-            "\1\170\4\uffff\1\171",
+            "\0\170",
+            "\1\171\4\uffff\1\172",
             "",
             "",
-            "\1\173",
-            "\1\175\13\uffff\1\174",
-            "\1\176",
+            "\1\174",
+            "\1\176\13\uffff\1\175",
             "\1\177",
             "\1\u0080",
-            "",
-            "",
             "\1\u0081",
-            "\1\u0082\3\uffff\1\u0083",
-            "\1\u0084",
-            "\1\u0087\1\uffff\1\u0085\17\uffff\1\u0086",
-            "\1\u0088",
-            "\1\u0089",
-            "\1\u008a\7\uffff\1\u008b",
-            "\1\u008d\4\uffff\1\u008c",
-            "\1\u008e",
             "",
+            "",
+            "\1\u0082",
+            "\1\u0083\3\uffff\1\u0084",
+            "\1\u0085",
+            "\1\u0088\1\uffff\1\u0086\17\uffff\1\u0087",
+            "\1\u0089",
+            "\1\u008a",
+            "\1\u008b\7\uffff\1\u008c",
+            "\1\u008e\4\uffff\1\u008d",
             "\1\u008f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u0090\25\60",
-            "\1\u0092",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\17\60\1\u0093\12\60",
+            "\1\u0090",
+            "\1\u0091",
+            "\1\u0092\5\uffff\1\u0093",
+            "\1\u0094",
+            "",
             "\1\u0095",
-            "\1\u0096",
-            "\1\u0097",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u0096\25\60",
             "\1\u0098",
-            "\1\u0099\5\uffff\1\u009a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\17\60\1\u0099\12\60",
             "\1\u009b",
             "\1\u009c",
-            "\1\u009e\11\uffff\1\u009d",
-            "\1\u009f",
-            "\1\u00a0",
+            "\1\u009d",
+            "\1\u009e",
+            "\1\u00a0\11\uffff\1\u009f",
             "\1\u00a1",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00a2",
             "\1\u00a3",
-            "\1\u00a4",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u00a5",
-            "\1\u00a6\20\uffff\1\u00a7",
-            "\1\u00a8",
-            "\1\u00a9",
+            "\1\u00a6",
+            "\1\u00a7",
+            "\1\u00a8\20\uffff\1\u00a9",
             "\1\u00aa",
-            "",
-            "",
-            "\1\u00ab",
-            "\1\u00ac",
+            "\1\u00ab\1\u00ac",
             "\1\u00ad",
+            "",
+            "",
             "\1\u00ae",
             "\1\u00af",
             "\1\u00b0",
-            "\1\u00b1\1\uffff\1\u00b2\15\uffff\1\u00b3",
-            "\1\u00b5\7\uffff\1\u00b4",
-            "\1\u00b6",
-            "",
-            "",
-            "",
-            "\1\u00b7",
-            "\1\u00b8",
+            "\1\u00b1",
+            "\1\u00b2",
+            "\1\u00b3",
+            "\1\u00b4\1\uffff\1\u00b5\15\uffff\1\u00b6",
+            "\1\u00b8\7\uffff\1\u00b7",
             "\1\u00b9",
+            "",
+            "",
+            "",
             "\1\u00ba",
             "\1\u00bb",
             "\1\u00bc",
             "\1\u00bd",
-            "",
             "\1\u00be",
             "\1\u00bf",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00c0",
+            "",
             "\1\u00c1",
             "\1\u00c2",
-            "\1\u00c3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00c4",
+            "\1\u00c5",
+            "\1\u00c6",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u00c7",
-            "\1\u00c8",
-            "\1\u00c9",
             "\1\u00ca",
             "\1\u00cb",
-            "",
-            "",
-            "",
-            "",
             "\1\u00cc",
-            "\1\u00ce\13\uffff\1\u00cd",
+            "\1\u00cd",
+            "\1\u00ce",
+            "",
+            "",
+            "",
+            "",
             "\1\u00cf",
-            "\1\u00d0",
-            "\1\u00d1",
+            "\1\u00d1\13\uffff\1\u00d0",
             "\1\u00d2",
             "\1\u00d3",
             "\1\u00d4",
@@ -3860,89 +3974,87 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00e0",
             "\1\u00e1",
             "\1\u00e2",
-            "",
             "\1\u00e3",
             "\1\u00e4",
-            "",
-            "\1\u00e5",
-            "\1\u00e6",
-            "\1\u00e7",
+            "\1\u00e6\3\uffff\1\u00e7\30\uffff\1\u00e5",
             "\1\u00e8",
             "\1\u00e9",
-            "\1\u00ea",
-            "\1\u00ec\4\uffff\1\u00eb",
+            "\1\u00eb\4\uffff\1\u00ea",
+            "\1\u00ec",
             "\1\u00ed",
-            "\1\u00ee\6\uffff\1\u00ef",
+            "",
+            "\1\u00ee",
+            "\1\u00ef",
+            "",
             "\1\u00f0",
             "\1\u00f1",
             "\1\u00f2",
             "\1\u00f3",
-            "",
-            "\1\u00f4",
-            "\1\u00f5",
+            "\1\u00f4\6\uffff\1\u00f5",
             "\1\u00f6",
             "\1\u00f7",
             "\1\u00f8",
-            "\1\u00fa\12\uffff\1\u00f9",
+            "\1\u00f9",
+            "",
+            "\1\u00fa",
             "\1\u00fb",
             "\1\u00fc",
             "\1\u00fd",
             "\1\u00fe",
-            "\1\u00ff",
-            "\1\u0100",
+            "\1\u0100\12\uffff\1\u00ff",
             "\1\u0101",
             "\1\u0102",
-            "\1\u0104\10\uffff\1\u0103",
+            "\1\u0103",
+            "\1\u0104",
             "\1\u0105",
             "\1\u0106",
             "\1\u0107",
             "\1\u0108",
             "\1\u0109",
-            "\1\u010a",
-            "\1\u010b",
+            "\1\u010b\10\uffff\1\u010a",
             "\1\u010c",
             "\1\u010d",
             "\1\u010e",
             "\1\u010f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0110",
             "\1\u0111",
             "\1\u0112",
-            "",
             "\1\u0113",
             "\1\u0114",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0115",
+            "\1\u0116",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0118",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0119",
+            "",
             "\1\u011a",
             "\1\u011b",
-            "\1\u011c",
-            "\1\u011d\6\uffff\1\u011e",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u011f",
-            "\1\u0120",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0121",
             "\1\u0122",
             "\1\u0123",
-            "\1\u0124",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0124\6\uffff\1\u0125",
             "\1\u0126",
             "\1\u0127",
             "\1\u0128",
             "\1\u0129",
-            "\1\u012c\22\uffff\1\u012a\15\uffff\1\u012b",
+            "\1\u012a",
+            "\1\u012b",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u012d",
             "\1\u012e",
             "\1\u012f",
             "\1\u0130",
-            "\1\u0131",
-            "\1\u0132",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0133\22\uffff\1\u0131\15\uffff\1\u0132",
             "\1\u0134",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0135",
             "\1\u0136",
             "\1\u0137",
             "\1\u0138",
@@ -3950,63 +4062,62 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u013a",
             "\1\u013b",
             "\1\u013c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u013d\7\60",
+            "\1\u013d",
+            "\1\u013e",
             "\1\u013f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0141",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0140\7\60",
             "\1\u0142",
-            "\1\u0143",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0144",
-            "\1\u0145",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0146",
             "\1\u0147",
             "\1\u0148",
             "\1\u0149",
-            "\1\u014a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u014b",
             "\1\u014c",
             "\1\u014d",
             "\1\u014e",
             "\1\u014f",
             "\1\u0150",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0151",
             "\1\u0152",
             "\1\u0153",
             "\1\u0154",
             "\1\u0155",
-            "\1\u0157\24\uffff\1\u0156",
+            "\1\u0156",
+            "\1\u0157",
             "\1\u0158",
             "\1\u0159",
             "\1\u015a",
             "\1\u015b",
-            "\1\u015c",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u015d",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u015e",
             "\1\u015f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0162",
+            "\1\u0160",
+            "\1\u0162\24\uffff\1\u0161",
             "\1\u0163",
-            "",
             "\1\u0164",
             "\1\u0165",
             "\1\u0166",
+            "\1\u0167",
+            "\1\u0168",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u016a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u016d",
+            "\1\u016e",
+            "",
+            "\1\u016f",
+            "\1\u0170",
+            "\1\u0171",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
             "",
-            "\1\u0168",
-            "",
-            "\1\u0169",
-            "\1\u016a",
-            "\1\u016b",
-            "\1\u016c",
-            "\1\u016d",
-            "\1\u016e",
-            "\1\u016f",
-            "\1\u0170",
-            "\1\u0171",
-            "\1\u0172",
             "\1\u0173",
             "",
             "\1\u0174",
@@ -4019,13 +4130,12 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u017b",
             "\1\u017c",
             "\1\u017d",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u017e",
+            "",
             "\1\u017f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u0180",
             "\1\u0181",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0182",
             "\1\u0183",
             "\1\u0184",
             "\1\u0185",
@@ -4033,166 +4143,163 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u0187",
             "\1\u0188",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u018a",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\1\u018b",
             "\1\u018c",
             "\1\u018d",
             "\1\u018e",
             "\1\u018f",
             "\1\u0190",
             "\1\u0191",
-            "\1\u0192",
-            "\1\u0193",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0195",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0194",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0196",
             "\1\u0197",
             "\1\u0198",
+            "",
             "\1\u0199",
             "\1\u019a",
-            "",
-            "\12\60\7\uffff\17\60\1\u019b\12\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u019b",
+            "\1\u019c",
             "\1\u019d",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u019e",
             "\1\u019f",
             "\1\u01a0",
             "\1\u01a1",
-            "\1\u01a2",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01a3",
             "\1\u01a4",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01a5",
             "\1\u01a6",
             "\1\u01a7",
-            "",
             "\1\u01a8",
-            "",
-            "",
             "\1\u01a9",
-            "\1\u01aa",
-            "\1\u01ab",
-            "\1\u01ac",
-            "\1\u01ad",
             "",
+            "\12\60\7\uffff\17\60\1\u01aa\12\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ac",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ae",
             "\1\u01af",
             "\1\u01b0",
             "\1\u01b1",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01b2\7\60",
-            "\1\u01b4",
+            "\1\u01b2",
+            "\1\u01b3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01b5",
             "\1\u01b6",
+            "",
             "\1\u01b7",
+            "",
+            "",
             "\1\u01b8",
             "\1\u01b9",
             "\1\u01ba",
             "\1\u01bb",
             "\1\u01bc",
-            "\1\u01bd",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01be",
             "\1\u01bf",
             "\1\u01c0",
-            "\1\u01c1",
-            "\1\u01c2",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01c1\7\60",
             "\1\u01c3",
             "\1\u01c4",
-            "",
             "\1\u01c5",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u01c6",
             "\1\u01c7",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01c8",
             "\1\u01c9",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01ca\21\60",
+            "\1\u01ca",
+            "\1\u01cb",
             "\1\u01cc",
             "\1\u01cd",
-            "",
-            "",
             "\1\u01ce",
             "\1\u01cf",
             "\1\u01d0",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01d1\7\60",
+            "\1\u01d1",
+            "\1\u01d2",
             "\1\u01d3",
-            "\1\u01d4",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01d5\7\60",
-            "\1\u01d7",
-            "\1\u01d8",
             "",
+            "\1\u01d4",
+            "",
+            "\1\u01d5",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01d6\21\60",
+            "\1\u01d8",
             "\1\u01d9",
             "\1\u01da",
             "\1\u01db",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\1\u01dd",
-            "\1\u01de",
-            "\1\u01df",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u01df",
+            "\1\u01e0",
             "\1\u01e1",
             "\1\u01e2",
-            "\1\u01e3",
-            "\1\u01e4",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01e3\7\60",
             "\1\u01e5",
             "\1\u01e6",
-            "",
-            "\1\u01e7",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01e7\7\60",
             "\1\u01e9",
             "\1\u01ea",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u01eb",
             "\1\u01ec",
             "\1\u01ed",
-            "\1\u01ee",
-            "",
-            "\1\u01ef",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01f0",
             "\1\u01f1",
+            "\1\u01f2",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u01f3",
             "\1\u01f4",
             "\1\u01f5",
             "\1\u01f6",
             "\1\u01f7",
             "\1\u01f8",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01f9",
+            "",
             "\1\u01fa",
-            "\1\u01fb",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01fc",
             "\1\u01fd",
-            "\1\u01fe",
-            "\1\u01ff",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ff",
+            "\1\u0200",
             "\1\u0201",
+            "",
             "\1\u0202",
             "\1\u0203",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u0204",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "\1\u0206",
             "\1\u0207",
-            "",
             "\1\u0208",
             "\1\u0209",
             "\1\u020a",
             "\1\u020b",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u020d",
             "\1\u020e",
+            "\1\u020f",
+            "\1\u0210",
+            "\1\u0211",
+            "\1\u0212",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\1\u0211\31\uffff\1\u0212",
-            "\1\u0213",
             "\1\u0214",
             "\1\u0215",
             "\1\u0216",
-            "",
-            "\1\u0217",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0218",
             "\1\u0219",
             "",
@@ -4200,172 +4307,209 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u021b",
             "\1\u021c",
             "\1\u021d",
-            "\1\u021e",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\1\u021f",
             "\1\u0220",
-            "",
             "\1\u0221",
-            "\1\u0222",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u0223",
+            "\1\u0224",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0226",
-            "\1\u0227",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0228\7\60",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0227\31\uffff\1\u0228",
+            "\1\u0229",
+            "\1\u022a",
+            "\1\u022b",
             "\1\u022c",
+            "",
+            "",
             "\1\u022d",
             "\1\u022e",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u022f",
             "",
             "\1\u0230",
             "\1\u0231",
             "\1\u0232",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0233",
+            "\1\u0234",
+            "\1\u0235",
+            "\1\u0236",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0237",
             "\1\u0238",
             "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0239",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u023c",
             "\1\u023d",
-            "\1\u023e",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u023e\7\60",
             "",
-            "",
-            "\1\u023f",
-            "",
-            "",
-            "\1\u0240",
-            "\1\u0241",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0242",
             "\1\u0243",
             "\1\u0244",
-            "\1\u0245",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0246",
+            "\1\u0247",
             "\1\u0248",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u024a",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u024c",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u024f",
-            "\1\u0250",
-            "\1\u0251",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u024d",
+            "\1\u024e",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0252",
-            "",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0254",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0256",
             "\1\u0257",
+            "",
+            "",
             "\1\u0258",
+            "",
             "",
             "\1\u0259",
             "\1\u025a",
             "\1\u025b",
-            "",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u025c",
             "\1\u025d",
-            "",
-            "",
-            "",
+            "\1\u025e",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u025f",
-            "\1\u0260",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0261",
-            "\1\u0262",
-            "\1\u0263",
-            "\1\u0264",
-            "\1\u0265",
-            "\1\u0266",
-            "\1\u0267",
-            "",
-            "",
-            "\1\u0268",
-            "",
-            "\1\u0269",
-            "",
-            "\1\u026a",
-            "",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0263",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0265",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0268",
+            "\1\u0269",
+            "\1\u026a",
+            "\1\u026b",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u026d",
-            "\1\u026e",
-            "",
-            "\1\u026f",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0270",
             "\1\u0271",
+            "",
             "\1\u0272",
             "\1\u0273",
             "\1\u0274",
             "",
-            "\1\u0275",
             "",
-            "\1\u0276",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0278",
+            "\1\u0276",
+            "",
+            "",
+            "",
+            "\1\u0277",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\1\u0279",
             "\1\u027a",
             "\1\u027b",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u027c",
+            "\1\u027d",
+            "\1\u027e",
             "\1\u027f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0280",
             "\1\u0281",
             "",
             "",
             "\1\u0282",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0283",
+            "",
             "\1\u0284",
-            "\1\u0285",
-            "\1\u0286",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0287",
             "\1\u0288",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0289",
             "",
             "",
+            "\1\u028a",
+            "\1\u028b",
+            "\1\u028c",
+            "\1\u028d",
+            "\1\u028e",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u028f",
+            "\1\u0290",
             "",
             "\1\u0291",
-            "\1\u0292",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u0293",
+            "\1\u0294",
+            "\1\u0295",
             "\1\u0296",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u029a",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u029c",
             "",
             "",
+            "\1\u029d",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u029f",
+            "\1\u02a0",
+            "\1\u02a1",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u02a3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u02a6",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u02ad",
+            "\1\u02ae",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u02b2",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
             "",
@@ -4377,7 +4521,8 @@ public class InternalRsamlTextLexer extends Lexer {
             "",
             "",
             "",
-            "\1\u0299",
+            "\1\u02b6",
+            "",
             "",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
@@ -4414,23 +4559,13 @@ public class InternalRsamlTextLexer extends Lexer {
             this.transition = DFA16_transition;
         }
         public String getDescription() {
-            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
+            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | T__116 | T__117 | T__118 | T__119 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
         }
         public int specialStateTransition(int s, IntStream _input) throws NoViableAltException {
             IntStream input = _input;
         	int _s = s;
             switch ( s ) {
                     case 0 : 
-                        int LA16_39 = input.LA(1);
-
-                        s = -1;
-                        if ( ((LA16_39>='\u0000' && LA16_39<='\uFFFF')) ) {s = 119;}
-
-                        else s = 42;
-
-                        if ( s>=0 ) return s;
-                        break;
-                    case 1 : 
                         int LA16_0 = input.LA(1);
 
                         s = -1;
@@ -4444,15 +4579,15 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         else if ( (LA16_0=='l') ) {s = 5;}
 
-                        else if ( (LA16_0=='}') ) {s = 6;}
+                        else if ( (LA16_0=='p') ) {s = 6;}
 
-                        else if ( (LA16_0=='u') ) {s = 7;}
+                        else if ( (LA16_0=='}') ) {s = 7;}
 
-                        else if ( (LA16_0=='t') ) {s = 8;}
+                        else if ( (LA16_0=='u') ) {s = 8;}
 
-                        else if ( (LA16_0=='e') ) {s = 9;}
+                        else if ( (LA16_0=='t') ) {s = 9;}
 
-                        else if ( (LA16_0=='p') ) {s = 10;}
+                        else if ( (LA16_0=='e') ) {s = 10;}
 
                         else if ( (LA16_0=='w') ) {s = 11;}
 
@@ -4517,6 +4652,16 @@ public class InternalRsamlTextLexer extends Lexer {
                         else if ( ((LA16_0>='\t' && LA16_0<='\n')||LA16_0=='\r'||LA16_0==' ') ) {s = 41;}
 
                         else if ( ((LA16_0>='\u0000' && LA16_0<='\b')||(LA16_0>='\u000B' && LA16_0<='\f')||(LA16_0>='\u000E' && LA16_0<='\u001F')||LA16_0=='!'||(LA16_0>='#' && LA16_0<='+')||(LA16_0>=':' && LA16_0<='@')||(LA16_0>='[' && LA16_0<=']')||LA16_0=='`'||LA16_0=='|'||(LA16_0>='~' && LA16_0<='\uFFFF')) ) {s = 42;}
+
+                        if ( s>=0 ) return s;
+                        break;
+                    case 1 : 
+                        int LA16_39 = input.LA(1);
+
+                        s = -1;
+                        if ( ((LA16_39>='\u0000' && LA16_39<='\uFFFF')) ) {s = 120;}
+
+                        else s = 42;
 
                         if ( s>=0 ) return s;
                         break;

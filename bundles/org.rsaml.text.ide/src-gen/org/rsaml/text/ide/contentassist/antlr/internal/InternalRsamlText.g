@@ -878,6 +878,22 @@ finally {
 	restoreStackSize(stackSize);
 }
 
+// Rule PackageLayout
+rulePackageLayout
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getPackageLayoutAccess().getAlternatives()); }
+		(rule__PackageLayout__Alternatives)
+		{ after(grammarAccess.getPackageLayoutAccess().getAlternatives()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
 // Rule LatencyKind
 ruleLatencyKind
 	@init {
@@ -924,63 +940,69 @@ rule__Architecture__Alternatives_4
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLayersAssignment_4_4()); }
-		(rule__Architecture__LayersAssignment_4_4)
-		{ after(grammarAccess.getArchitectureAccess().getLayersAssignment_4_4()); }
+		{ before(grammarAccess.getArchitectureAccess().getGroup_4_4()); }
+		(rule__Architecture__Group_4_4__0)
+		{ after(grammarAccess.getArchitectureAccess().getGroup_4_4()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_5()); }
-		(rule__Architecture__ConnectionsAssignment_4_5)
-		{ after(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_5()); }
+		{ before(grammarAccess.getArchitectureAccess().getLayersAssignment_4_5()); }
+		(rule__Architecture__LayersAssignment_4_5)
+		{ after(grammarAccess.getArchitectureAccess().getLayersAssignment_4_5()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_6()); }
-		(rule__Architecture__SensorsAssignment_4_6)
-		{ after(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_6()); }
+		{ before(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_6()); }
+		(rule__Architecture__ConnectionsAssignment_4_6)
+		{ after(grammarAccess.getArchitectureAccess().getConnectionsAssignment_4_6()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_7()); }
-		(rule__Architecture__ActuatorsAssignment_4_7)
-		{ after(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_7()); }
+		{ before(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_7()); }
+		(rule__Architecture__SensorsAssignment_4_7)
+		{ after(grammarAccess.getArchitectureAccess().getSensorsAssignment_4_7()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_8()); }
-		(rule__Architecture__MissionsAssignment_4_8)
-		{ after(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_8()); }
+		{ before(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_8()); }
+		(rule__Architecture__ActuatorsAssignment_4_8)
+		{ after(grammarAccess.getArchitectureAccess().getActuatorsAssignment_4_8()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_9()); }
-		(rule__Architecture__SupervisorsAssignment_4_9)
-		{ after(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_9()); }
+		{ before(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_9()); }
+		(rule__Architecture__MissionsAssignment_4_9)
+		{ after(grammarAccess.getArchitectureAccess().getMissionsAssignment_4_9()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_10()); }
-		(rule__Architecture__OrdersAssignment_4_10)
-		{ after(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_10()); }
+		{ before(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_10()); }
+		(rule__Architecture__SupervisorsAssignment_4_10)
+		{ after(grammarAccess.getArchitectureAccess().getSupervisorsAssignment_4_10()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_11()); }
-		(rule__Architecture__DatabasesAssignment_4_11)
-		{ after(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_11()); }
+		{ before(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_11()); }
+		(rule__Architecture__OrdersAssignment_4_11)
+		{ after(grammarAccess.getArchitectureAccess().getOrdersAssignment_4_11()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_12()); }
-		(rule__Architecture__ProcessorsAssignment_4_12)
-		{ after(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_12()); }
+		{ before(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_12()); }
+		(rule__Architecture__DatabasesAssignment_4_12)
+		{ after(grammarAccess.getArchitectureAccess().getDatabasesAssignment_4_12()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_13()); }
-		(rule__Architecture__LatencyRequirementsAssignment_4_13)
-		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_13()); }
+		{ before(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_13()); }
+		(rule__Architecture__ProcessorsAssignment_4_13)
+		{ after(grammarAccess.getArchitectureAccess().getProcessorsAssignment_4_13()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_14()); }
+		(rule__Architecture__LatencyRequirementsAssignment_4_14)
+		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsAssignment_4_14()); }
 	)
 ;
 finally {
@@ -2199,207 +2221,231 @@ rule__Keyword__Alternatives
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_65()); }
+		{ before(grammarAccess.getKeywordAccess().getPackagesKeyword_65()); }
+		'packages'
+		{ after(grammarAccess.getKeywordAccess().getPackagesKeyword_65()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getCentralizedKeyword_66()); }
 		'centralized'
-		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_65()); }
+		{ after(grammarAccess.getKeywordAccess().getCentralizedKeyword_66()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_66()); }
+		{ before(grammarAccess.getKeywordAccess().getHierarchicalKeyword_67()); }
 		'hierarchical'
-		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_66()); }
+		{ after(grammarAccess.getKeywordAccess().getHierarchicalKeyword_67()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_67()); }
+		{ before(grammarAccess.getKeywordAccess().getBehavioralKeyword_68()); }
 		'behavioral'
-		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_67()); }
+		{ after(grammarAccess.getKeywordAccess().getBehavioralKeyword_68()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_68()); }
+		{ before(grammarAccess.getKeywordAccess().getHybridKeyword_69()); }
 		'hybrid'
-		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_68()); }
+		{ after(grammarAccess.getKeywordAccess().getHybridKeyword_69()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_69()); }
+		{ before(grammarAccess.getKeywordAccess().getOtherKeyword_70()); }
 		'other'
-		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_69()); }
+		{ after(grammarAccess.getKeywordAccess().getOtherKeyword_70()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_70()); }
+		{ before(grammarAccess.getKeywordAccess().getSimpleKeyword_71()); }
 		'simple'
-		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_70()); }
+		{ after(grammarAccess.getKeywordAccess().getSimpleKeyword_71()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_71()); }
+		{ before(grammarAccess.getKeywordAccess().getRealTimeKeyword_72()); }
 		'realTime'
-		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_71()); }
+		{ after(grammarAccess.getKeywordAccess().getRealTimeKeyword_72()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_72()); }
+		{ before(grammarAccess.getKeywordAccess().getPeriodicKeyword_73()); }
 		'periodic'
-		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_72()); }
+		{ after(grammarAccess.getKeywordAccess().getPeriodicKeyword_73()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_73()); }
+		{ before(grammarAccess.getKeywordAccess().getSporadicKeyword_74()); }
 		'sporadic'
-		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_73()); }
+		{ after(grammarAccess.getKeywordAccess().getSporadicKeyword_74()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_74()); }
+		{ before(grammarAccess.getKeywordAccess().getAperiodicKeyword_75()); }
 		'aperiodic'
-		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_74()); }
+		{ after(grammarAccess.getKeywordAccess().getAperiodicKeyword_75()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNsKeyword_75()); }
+		{ before(grammarAccess.getKeywordAccess().getNsKeyword_76()); }
 		'ns'
-		{ after(grammarAccess.getKeywordAccess().getNsKeyword_75()); }
+		{ after(grammarAccess.getKeywordAccess().getNsKeyword_76()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getUsKeyword_76()); }
+		{ before(grammarAccess.getKeywordAccess().getUsKeyword_77()); }
 		'us'
-		{ after(grammarAccess.getKeywordAccess().getUsKeyword_76()); }
+		{ after(grammarAccess.getKeywordAccess().getUsKeyword_77()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getMsKeyword_77()); }
+		{ before(grammarAccess.getKeywordAccess().getMsKeyword_78()); }
 		'ms'
-		{ after(grammarAccess.getKeywordAccess().getMsKeyword_77()); }
+		{ after(grammarAccess.getKeywordAccess().getMsKeyword_78()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSKeyword_78()); }
+		{ before(grammarAccess.getKeywordAccess().getSKeyword_79()); }
 		's'
-		{ after(grammarAccess.getKeywordAccess().getSKeyword_78()); }
+		{ after(grammarAccess.getKeywordAccess().getSKeyword_79()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_79()); }
+		{ before(grammarAccess.getKeywordAccess().getSynchronousKeyword_80()); }
 		'synchronous'
-		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_79()); }
+		{ after(grammarAccess.getKeywordAccess().getSynchronousKeyword_80()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_80()); }
+		{ before(grammarAccess.getKeywordAccess().getAsynchronousKeyword_81()); }
 		'asynchronous'
-		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_80()); }
+		{ after(grammarAccess.getKeywordAccess().getAsynchronousKeyword_81()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_81()); }
+		{ before(grammarAccess.getKeywordAccess().getFIFOKeyword_82()); }
 		'FIFO'
-		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_81()); }
+		{ after(grammarAccess.getKeywordAccess().getFIFOKeyword_82()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_82()); }
+		{ before(grammarAccess.getKeywordAccess().getSJFKeyword_83()); }
 		'SJF'
-		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_82()); }
+		{ after(grammarAccess.getKeywordAccess().getSJFKeyword_83()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRRKeyword_83()); }
+		{ before(grammarAccess.getKeywordAccess().getRRKeyword_84()); }
 		'RR'
-		{ after(grammarAccess.getKeywordAccess().getRRKeyword_83()); }
+		{ after(grammarAccess.getKeywordAccess().getRRKeyword_84()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getRMKeyword_84()); }
+		{ before(grammarAccess.getKeywordAccess().getRMKeyword_85()); }
 		'RM'
-		{ after(grammarAccess.getKeywordAccess().getRMKeyword_84()); }
+		{ after(grammarAccess.getKeywordAccess().getRMKeyword_85()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDMKeyword_85()); }
+		{ before(grammarAccess.getKeywordAccess().getDMKeyword_86()); }
 		'DM'
-		{ after(grammarAccess.getKeywordAccess().getDMKeyword_85()); }
+		{ after(grammarAccess.getKeywordAccess().getDMKeyword_86()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_86()); }
+		{ before(grammarAccess.getKeywordAccess().getEDFKeyword_87()); }
 		'EDF'
-		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_86()); }
+		{ after(grammarAccess.getKeywordAccess().getEDFKeyword_87()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_87()); }
+		{ before(grammarAccess.getKeywordAccess().getLLFKeyword_88()); }
 		'LLF'
-		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_87()); }
+		{ after(grammarAccess.getKeywordAccess().getLLFKeyword_88()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_88()); }
+		{ before(grammarAccess.getKeywordAccess().getOTHERKeyword_89()); }
 		'OTHER'
-		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_88()); }
+		{ after(grammarAccess.getKeywordAccess().getOTHERKeyword_89()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_89()); }
+		{ before(grammarAccess.getKeywordAccess().getNumericKeyword_90()); }
 		'numeric'
-		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_89()); }
+		{ after(grammarAccess.getKeywordAccess().getNumericKeyword_90()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_90()); }
+		{ before(grammarAccess.getKeywordAccess().getAlphanumericKeyword_91()); }
 		'alphanumeric'
-		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_90()); }
+		{ after(grammarAccess.getKeywordAccess().getAlphanumericKeyword_91()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_91()); }
+		{ before(grammarAccess.getKeywordAccess().getBooleanKeyword_92()); }
 		'boolean'
-		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_91()); }
+		{ after(grammarAccess.getKeywordAccess().getBooleanKeyword_92()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_92()); }
+		{ before(grammarAccess.getKeywordAccess().getStructuredKeyword_93()); }
 		'structured'
-		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_92()); }
+		{ after(grammarAccess.getKeywordAccess().getStructuredKeyword_93()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_93()); }
+		{ before(grammarAccess.getKeywordAccess().getReactionTimeKeyword_94()); }
 		'reactionTime'
-		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_93()); }
+		{ after(grammarAccess.getKeywordAccess().getReactionTimeKeyword_94()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_94()); }
+		{ before(grammarAccess.getKeywordAccess().getDataAgeKeyword_95()); }
 		'dataAge'
-		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_94()); }
+		{ after(grammarAccess.getKeywordAccess().getDataAgeKeyword_95()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getPlainKeyword_95()); }
+		{ before(grammarAccess.getKeywordAccess().getPlainKeyword_96()); }
 		'plain'
-		{ after(grammarAccess.getKeywordAccess().getPlainKeyword_95()); }
+		{ after(grammarAccess.getKeywordAccess().getPlainKeyword_96()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getManagedKeyword_96()); }
+		{ before(grammarAccess.getKeywordAccess().getManagedKeyword_97()); }
 		'managed'
-		{ after(grammarAccess.getKeywordAccess().getManagedKeyword_96()); }
+		{ after(grammarAccess.getKeywordAccess().getManagedKeyword_97()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_97()); }
+		{ before(grammarAccess.getKeywordAccess().getSingleKeyword_98()); }
+		'single'
+		{ after(grammarAccess.getKeywordAccess().getSingleKeyword_98()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getPerLayerKeyword_99()); }
+		'perLayer'
+		{ after(grammarAccess.getKeywordAccess().getPerLayerKeyword_99()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getPerProcessorKeyword_100()); }
+		'perProcessor'
+		{ after(grammarAccess.getKeywordAccess().getPerProcessorKeyword_100()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getKeywordAccess().getNaNKeyword_101()); }
 		'NaN'
-		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_97()); }
+		{ after(grammarAccess.getKeywordAccess().getNaNKeyword_101()); }
 	)
 	|
 	(
-		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_98()); }
+		{ before(grammarAccess.getKeywordAccess().getInfinityKeyword_102()); }
 		'Infinity'
-		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_98()); }
+		{ after(grammarAccess.getKeywordAccess().getInfinityKeyword_102()); }
 	)
 ;
 finally {
@@ -2685,6 +2731,33 @@ rule__NodeLifecycle__Alternatives
 		{ before(grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1()); }
 		('managed')
 		{ after(grammarAccess.getNodeLifecycleAccess().getManagedEnumLiteralDeclaration_1()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__PackageLayout__Alternatives
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getPackageLayoutAccess().getSingleEnumLiteralDeclaration_0()); }
+		('single')
+		{ after(grammarAccess.getPackageLayoutAccess().getSingleEnumLiteralDeclaration_0()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getPackageLayoutAccess().getPerLayerEnumLiteralDeclaration_1()); }
+		('perLayer')
+		{ after(grammarAccess.getPackageLayoutAccess().getPerLayerEnumLiteralDeclaration_1()); }
+	)
+	|
+	(
+		{ before(grammarAccess.getPackageLayoutAccess().getPerProcessorEnumLiteralDeclaration_2()); }
+		('perProcessor')
+		{ after(grammarAccess.getPackageLayoutAccess().getPerProcessorEnumLiteralDeclaration_2()); }
 	)
 ;
 finally {
@@ -3029,6 +3102,60 @@ rule__Architecture__Group_4_3__1__Impl
 	{ before(grammarAccess.getArchitectureAccess().getLifecycleAssignment_4_3_1()); }
 	(rule__Architecture__LifecycleAssignment_4_3_1)
 	{ after(grammarAccess.getArchitectureAccess().getLifecycleAssignment_4_3_1()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+
+rule__Architecture__Group_4_4__0
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Architecture__Group_4_4__0__Impl
+	rule__Architecture__Group_4_4__1
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__Group_4_4__0__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getArchitectureAccess().getPackagesKeyword_4_4_0()); }
+	'packages'
+	{ after(grammarAccess.getArchitectureAccess().getPackagesKeyword_4_4_0()); }
+)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__Group_4_4__1
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	rule__Architecture__Group_4_4__1__Impl
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__Group_4_4__1__Impl
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+(
+	{ before(grammarAccess.getArchitectureAccess().getPackagesAssignment_4_4_1()); }
+	(rule__Architecture__PackagesAssignment_4_4_1)
+	{ after(grammarAccess.getArchitectureAccess().getPackagesAssignment_4_4_1()); }
 )
 ;
 finally {
@@ -10332,150 +10459,165 @@ finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__LayersAssignment_4_4
+rule__Architecture__PackagesAssignment_4_4_1
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getPackagesPackageLayoutEnumRuleCall_4_4_1_0()); }
+		rulePackageLayout
+		{ after(grammarAccess.getArchitectureAccess().getPackagesPackageLayoutEnumRuleCall_4_4_1_0()); }
+	)
+;
+finally {
+	restoreStackSize(stackSize);
+}
+
+rule__Architecture__LayersAssignment_4_5
+	@init {
+		int stackSize = keepStackSize();
+	}
+:
+	(
+		{ before(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_5_0()); }
 		ruleLayer
-		{ after(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_4_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getLayersLayerParserRuleCall_4_5_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__ConnectionsAssignment_4_5
+rule__Architecture__ConnectionsAssignment_4_6
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_6_0()); }
 		ruleConnection
-		{ after(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_5_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getConnectionsConnectionParserRuleCall_4_6_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__SensorsAssignment_4_6
+rule__Architecture__SensorsAssignment_4_7
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_7_0()); }
 		ruleSensor
-		{ after(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_6_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getSensorsSensorParserRuleCall_4_7_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__ActuatorsAssignment_4_7
+rule__Architecture__ActuatorsAssignment_4_8
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_8_0()); }
 		ruleActuator
-		{ after(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_7_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getActuatorsActuatorParserRuleCall_4_8_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__MissionsAssignment_4_8
+rule__Architecture__MissionsAssignment_4_9
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_9_0()); }
 		ruleMission
-		{ after(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_8_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getMissionsMissionParserRuleCall_4_9_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__SupervisorsAssignment_4_9
+rule__Architecture__SupervisorsAssignment_4_10
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_10_0()); }
 		ruleSupervisor
-		{ after(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_9_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getSupervisorsSupervisorParserRuleCall_4_10_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__OrdersAssignment_4_10
+rule__Architecture__OrdersAssignment_4_11
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_11_0()); }
 		ruleOrder
-		{ after(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_10_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getOrdersOrderParserRuleCall_4_11_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__DatabasesAssignment_4_11
+rule__Architecture__DatabasesAssignment_4_12
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_12_0()); }
 		ruleDatabase
-		{ after(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_11_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getDatabasesDatabaseParserRuleCall_4_12_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__ProcessorsAssignment_4_12
+rule__Architecture__ProcessorsAssignment_4_13
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_13_0()); }
 		ruleProcessor
-		{ after(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_12_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getProcessorsProcessorParserRuleCall_4_13_0()); }
 	)
 ;
 finally {
 	restoreStackSize(stackSize);
 }
 
-rule__Architecture__LatencyRequirementsAssignment_4_13
+rule__Architecture__LatencyRequirementsAssignment_4_14
 	@init {
 		int stackSize = keepStackSize();
 	}
 :
 	(
-		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0()); }
+		{ before(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_14_0()); }
 		ruleLatencyRequirement
-		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_13_0()); }
+		{ after(grammarAccess.getArchitectureAccess().getLatencyRequirementsLatencyRequirementParserRuleCall_4_14_0()); }
 	)
 ;
 finally {

@@ -92,7 +92,9 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int RULE_STRING=6;
     public static final int RULE_SL_COMMENT=8;
     public static final int T__77=77;
+    public static final int T__119=119;
     public static final int T__78=78;
+    public static final int T__118=118;
     public static final int T__79=79;
     public static final int T__73=73;
     public static final int T__115=115;
@@ -100,7 +102,9 @@ public class InternalRsamlTextLexer extends Lexer {
     public static final int T__74=74;
     public static final int T__114=114;
     public static final int T__75=75;
+    public static final int T__117=117;
     public static final int T__76=76;
+    public static final int T__116=116;
     public static final int T__80=80;
     public static final int T__111=111;
     public static final int T__81=81;
@@ -1509,10 +1513,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__76;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:76:7: ( 'centralized' )
-            // InternalRsamlText.g:76:9: 'centralized'
+            // InternalRsamlText.g:76:7: ( 'packages' )
+            // InternalRsamlText.g:76:9: 'packages'
             {
-            match("centralized"); 
+            match("packages"); 
 
 
             }
@@ -1530,10 +1534,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__77;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:77:7: ( 'hierarchical' )
-            // InternalRsamlText.g:77:9: 'hierarchical'
+            // InternalRsamlText.g:77:7: ( 'centralized' )
+            // InternalRsamlText.g:77:9: 'centralized'
             {
-            match("hierarchical"); 
+            match("centralized"); 
 
 
             }
@@ -1551,10 +1555,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__78;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:78:7: ( 'behavioral' )
-            // InternalRsamlText.g:78:9: 'behavioral'
+            // InternalRsamlText.g:78:7: ( 'hierarchical' )
+            // InternalRsamlText.g:78:9: 'hierarchical'
             {
-            match("behavioral"); 
+            match("hierarchical"); 
 
 
             }
@@ -1572,10 +1576,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__79;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:79:7: ( 'hybrid' )
-            // InternalRsamlText.g:79:9: 'hybrid'
+            // InternalRsamlText.g:79:7: ( 'behavioral' )
+            // InternalRsamlText.g:79:9: 'behavioral'
             {
-            match("hybrid"); 
+            match("behavioral"); 
 
 
             }
@@ -1593,10 +1597,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__80;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:80:7: ( 'other' )
-            // InternalRsamlText.g:80:9: 'other'
+            // InternalRsamlText.g:80:7: ( 'hybrid' )
+            // InternalRsamlText.g:80:9: 'hybrid'
             {
-            match("other"); 
+            match("hybrid"); 
 
 
             }
@@ -1614,10 +1618,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__81;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:81:7: ( 'simple' )
-            // InternalRsamlText.g:81:9: 'simple'
+            // InternalRsamlText.g:81:7: ( 'other' )
+            // InternalRsamlText.g:81:9: 'other'
             {
-            match("simple"); 
+            match("other"); 
 
 
             }
@@ -1635,10 +1639,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__82;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:82:7: ( 'realTime' )
-            // InternalRsamlText.g:82:9: 'realTime'
+            // InternalRsamlText.g:82:7: ( 'simple' )
+            // InternalRsamlText.g:82:9: 'simple'
             {
-            match("realTime"); 
+            match("simple"); 
 
 
             }
@@ -1656,10 +1660,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__83;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:83:7: ( 'periodic' )
-            // InternalRsamlText.g:83:9: 'periodic'
+            // InternalRsamlText.g:83:7: ( 'realTime' )
+            // InternalRsamlText.g:83:9: 'realTime'
             {
-            match("periodic"); 
+            match("realTime"); 
 
 
             }
@@ -1677,10 +1681,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__84;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:84:7: ( 'sporadic' )
-            // InternalRsamlText.g:84:9: 'sporadic'
+            // InternalRsamlText.g:84:7: ( 'periodic' )
+            // InternalRsamlText.g:84:9: 'periodic'
             {
-            match("sporadic"); 
+            match("periodic"); 
 
 
             }
@@ -1698,10 +1702,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__85;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:85:7: ( 'aperiodic' )
-            // InternalRsamlText.g:85:9: 'aperiodic'
+            // InternalRsamlText.g:85:7: ( 'sporadic' )
+            // InternalRsamlText.g:85:9: 'sporadic'
             {
-            match("aperiodic"); 
+            match("sporadic"); 
 
 
             }
@@ -1719,10 +1723,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__86;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:86:7: ( 'ns' )
-            // InternalRsamlText.g:86:9: 'ns'
+            // InternalRsamlText.g:86:7: ( 'aperiodic' )
+            // InternalRsamlText.g:86:9: 'aperiodic'
             {
-            match("ns"); 
+            match("aperiodic"); 
 
 
             }
@@ -1740,10 +1744,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__87;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:87:7: ( 'us' )
-            // InternalRsamlText.g:87:9: 'us'
+            // InternalRsamlText.g:87:7: ( 'ns' )
+            // InternalRsamlText.g:87:9: 'ns'
             {
-            match("us"); 
+            match("ns"); 
 
 
             }
@@ -1761,10 +1765,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__88;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:88:7: ( 'ms' )
-            // InternalRsamlText.g:88:9: 'ms'
+            // InternalRsamlText.g:88:7: ( 'us' )
+            // InternalRsamlText.g:88:9: 'us'
             {
-            match("ms"); 
+            match("us"); 
 
 
             }
@@ -1782,10 +1786,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__89;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:89:7: ( 's' )
-            // InternalRsamlText.g:89:9: 's'
+            // InternalRsamlText.g:89:7: ( 'ms' )
+            // InternalRsamlText.g:89:9: 'ms'
             {
-            match('s'); 
+            match("ms"); 
+
 
             }
 
@@ -1802,11 +1807,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__90;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:90:7: ( 'synchronous' )
-            // InternalRsamlText.g:90:9: 'synchronous'
+            // InternalRsamlText.g:90:7: ( 's' )
+            // InternalRsamlText.g:90:9: 's'
             {
-            match("synchronous"); 
-
+            match('s'); 
 
             }
 
@@ -1823,10 +1827,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__91;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:91:7: ( 'asynchronous' )
-            // InternalRsamlText.g:91:9: 'asynchronous'
+            // InternalRsamlText.g:91:7: ( 'synchronous' )
+            // InternalRsamlText.g:91:9: 'synchronous'
             {
-            match("asynchronous"); 
+            match("synchronous"); 
 
 
             }
@@ -1844,10 +1848,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__92;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:92:7: ( 'FIFO' )
-            // InternalRsamlText.g:92:9: 'FIFO'
+            // InternalRsamlText.g:92:7: ( 'asynchronous' )
+            // InternalRsamlText.g:92:9: 'asynchronous'
             {
-            match("FIFO"); 
+            match("asynchronous"); 
 
 
             }
@@ -1865,10 +1869,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__93;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:93:7: ( 'SJF' )
-            // InternalRsamlText.g:93:9: 'SJF'
+            // InternalRsamlText.g:93:7: ( 'FIFO' )
+            // InternalRsamlText.g:93:9: 'FIFO'
             {
-            match("SJF"); 
+            match("FIFO"); 
 
 
             }
@@ -1886,10 +1890,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__94;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:94:7: ( 'RR' )
-            // InternalRsamlText.g:94:9: 'RR'
+            // InternalRsamlText.g:94:7: ( 'SJF' )
+            // InternalRsamlText.g:94:9: 'SJF'
             {
-            match("RR"); 
+            match("SJF"); 
 
 
             }
@@ -1907,10 +1911,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__95;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:95:7: ( 'RM' )
-            // InternalRsamlText.g:95:9: 'RM'
+            // InternalRsamlText.g:95:7: ( 'RR' )
+            // InternalRsamlText.g:95:9: 'RR'
             {
-            match("RM"); 
+            match("RR"); 
 
 
             }
@@ -1928,10 +1932,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__96;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:96:7: ( 'DM' )
-            // InternalRsamlText.g:96:9: 'DM'
+            // InternalRsamlText.g:96:7: ( 'RM' )
+            // InternalRsamlText.g:96:9: 'RM'
             {
-            match("DM"); 
+            match("RM"); 
 
 
             }
@@ -1949,10 +1953,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__97;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:97:7: ( 'EDF' )
-            // InternalRsamlText.g:97:9: 'EDF'
+            // InternalRsamlText.g:97:7: ( 'DM' )
+            // InternalRsamlText.g:97:9: 'DM'
             {
-            match("EDF"); 
+            match("DM"); 
 
 
             }
@@ -1970,10 +1974,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__98;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:98:7: ( 'LLF' )
-            // InternalRsamlText.g:98:9: 'LLF'
+            // InternalRsamlText.g:98:7: ( 'EDF' )
+            // InternalRsamlText.g:98:9: 'EDF'
             {
-            match("LLF"); 
+            match("EDF"); 
 
 
             }
@@ -1991,10 +1995,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__99;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:99:7: ( 'OTHER' )
-            // InternalRsamlText.g:99:9: 'OTHER'
+            // InternalRsamlText.g:99:7: ( 'LLF' )
+            // InternalRsamlText.g:99:9: 'LLF'
             {
-            match("OTHER"); 
+            match("LLF"); 
 
 
             }
@@ -2012,10 +2016,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__100;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:100:8: ( 'numeric' )
-            // InternalRsamlText.g:100:10: 'numeric'
+            // InternalRsamlText.g:100:8: ( 'OTHER' )
+            // InternalRsamlText.g:100:10: 'OTHER'
             {
-            match("numeric"); 
+            match("OTHER"); 
 
 
             }
@@ -2033,10 +2037,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__101;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:101:8: ( 'alphanumeric' )
-            // InternalRsamlText.g:101:10: 'alphanumeric'
+            // InternalRsamlText.g:101:8: ( 'numeric' )
+            // InternalRsamlText.g:101:10: 'numeric'
             {
-            match("alphanumeric"); 
+            match("numeric"); 
 
 
             }
@@ -2054,10 +2058,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__102;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:102:8: ( 'boolean' )
-            // InternalRsamlText.g:102:10: 'boolean'
+            // InternalRsamlText.g:102:8: ( 'alphanumeric' )
+            // InternalRsamlText.g:102:10: 'alphanumeric'
             {
-            match("boolean"); 
+            match("alphanumeric"); 
 
 
             }
@@ -2075,10 +2079,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__103;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:103:8: ( 'structured' )
-            // InternalRsamlText.g:103:10: 'structured'
+            // InternalRsamlText.g:103:8: ( 'boolean' )
+            // InternalRsamlText.g:103:10: 'boolean'
             {
-            match("structured"); 
+            match("boolean"); 
 
 
             }
@@ -2096,10 +2100,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__104;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:104:8: ( 'reactionTime' )
-            // InternalRsamlText.g:104:10: 'reactionTime'
+            // InternalRsamlText.g:104:8: ( 'structured' )
+            // InternalRsamlText.g:104:10: 'structured'
             {
-            match("reactionTime"); 
+            match("structured"); 
 
 
             }
@@ -2117,10 +2121,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__105;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:105:8: ( 'dataAge' )
-            // InternalRsamlText.g:105:10: 'dataAge'
+            // InternalRsamlText.g:105:8: ( 'reactionTime' )
+            // InternalRsamlText.g:105:10: 'reactionTime'
             {
-            match("dataAge"); 
+            match("reactionTime"); 
 
 
             }
@@ -2138,10 +2142,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__106;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:106:8: ( 'plain' )
-            // InternalRsamlText.g:106:10: 'plain'
+            // InternalRsamlText.g:106:8: ( 'dataAge' )
+            // InternalRsamlText.g:106:10: 'dataAge'
             {
-            match("plain"); 
+            match("dataAge"); 
 
 
             }
@@ -2159,10 +2163,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__107;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:107:8: ( 'managed' )
-            // InternalRsamlText.g:107:10: 'managed'
+            // InternalRsamlText.g:107:8: ( 'plain' )
+            // InternalRsamlText.g:107:10: 'plain'
             {
-            match("managed"); 
+            match("plain"); 
 
 
             }
@@ -2180,10 +2184,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__108;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:108:8: ( 'NaN' )
-            // InternalRsamlText.g:108:10: 'NaN'
+            // InternalRsamlText.g:108:8: ( 'managed' )
+            // InternalRsamlText.g:108:10: 'managed'
             {
-            match("NaN"); 
+            match("managed"); 
 
 
             }
@@ -2201,10 +2205,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__109;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:109:8: ( 'Infinity' )
-            // InternalRsamlText.g:109:10: 'Infinity'
+            // InternalRsamlText.g:109:8: ( 'single' )
+            // InternalRsamlText.g:109:10: 'single'
             {
-            match("Infinity"); 
+            match("single"); 
 
 
             }
@@ -2222,10 +2226,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__110;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:110:8: ( '{' )
-            // InternalRsamlText.g:110:10: '{'
+            // InternalRsamlText.g:110:8: ( 'perLayer' )
+            // InternalRsamlText.g:110:10: 'perLayer'
             {
-            match('{'); 
+            match("perLayer"); 
+
 
             }
 
@@ -2242,10 +2247,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__111;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:111:8: ( '}' )
-            // InternalRsamlText.g:111:10: '}'
+            // InternalRsamlText.g:111:8: ( 'perProcessor' )
+            // InternalRsamlText.g:111:10: 'perProcessor'
             {
-            match('}'); 
+            match("perProcessor"); 
+
 
             }
 
@@ -2262,10 +2268,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__112;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:112:8: ( ',' )
-            // InternalRsamlText.g:112:10: ','
+            // InternalRsamlText.g:112:8: ( 'NaN' )
+            // InternalRsamlText.g:112:10: 'NaN'
             {
-            match(','); 
+            match("NaN"); 
+
 
             }
 
@@ -2282,10 +2289,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__113;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:113:8: ( '->' )
-            // InternalRsamlText.g:113:10: '->'
+            // InternalRsamlText.g:113:8: ( 'Infinity' )
+            // InternalRsamlText.g:113:10: 'Infinity'
             {
-            match("->"); 
+            match("Infinity"); 
 
 
             }
@@ -2303,10 +2310,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__114;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:114:8: ( '.' )
-            // InternalRsamlText.g:114:10: '.'
+            // InternalRsamlText.g:114:8: ( '{' )
+            // InternalRsamlText.g:114:10: '{'
             {
-            match('.'); 
+            match('{'); 
 
             }
 
@@ -2323,10 +2330,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = T__115;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:115:8: ( '-' )
-            // InternalRsamlText.g:115:10: '-'
+            // InternalRsamlText.g:115:8: ( '}' )
+            // InternalRsamlText.g:115:10: '}'
             {
-            match('-'); 
+            match('}'); 
 
             }
 
@@ -2338,15 +2345,96 @@ public class InternalRsamlTextLexer extends Lexer {
     }
     // $ANTLR end "T__115"
 
+    // $ANTLR start "T__116"
+    public final void mT__116() throws RecognitionException {
+        try {
+            int _type = T__116;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:116:8: ( ',' )
+            // InternalRsamlText.g:116:10: ','
+            {
+            match(','); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__116"
+
+    // $ANTLR start "T__117"
+    public final void mT__117() throws RecognitionException {
+        try {
+            int _type = T__117;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:117:8: ( '->' )
+            // InternalRsamlText.g:117:10: '->'
+            {
+            match("->"); 
+
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__117"
+
+    // $ANTLR start "T__118"
+    public final void mT__118() throws RecognitionException {
+        try {
+            int _type = T__118;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:118:8: ( '.' )
+            // InternalRsamlText.g:118:10: '.'
+            {
+            match('.'); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__118"
+
+    // $ANTLR start "T__119"
+    public final void mT__119() throws RecognitionException {
+        try {
+            int _type = T__119;
+            int _channel = DEFAULT_TOKEN_CHANNEL;
+            // InternalRsamlText.g:119:8: ( '-' )
+            // InternalRsamlText.g:119:10: '-'
+            {
+            match('-'); 
+
+            }
+
+            state.type = _type;
+            state.channel = _channel;
+        }
+        finally {
+        }
+    }
+    // $ANTLR end "T__119"
+
     // $ANTLR start "RULE_ID"
     public final void mRULE_ID() throws RecognitionException {
         try {
             int _type = RULE_ID;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12123:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
-            // InternalRsamlText.g:12123:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:12265:9: ( ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )* )
+            // InternalRsamlText.g:12265:11: ( '^' )? ( 'a' .. 'z' | 'A' .. 'Z' | '_' ) ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             {
-            // InternalRsamlText.g:12123:11: ( '^' )?
+            // InternalRsamlText.g:12265:11: ( '^' )?
             int alt1=2;
             int LA1_0 = input.LA(1);
 
@@ -2355,7 +2443,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt1) {
                 case 1 :
-                    // InternalRsamlText.g:12123:11: '^'
+                    // InternalRsamlText.g:12265:11: '^'
                     {
                     match('^'); 
 
@@ -2373,7 +2461,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 recover(mse);
                 throw mse;}
 
-            // InternalRsamlText.g:12123:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
+            // InternalRsamlText.g:12265:40: ( 'a' .. 'z' | 'A' .. 'Z' | '_' | '0' .. '9' )*
             loop2:
             do {
                 int alt2=2;
@@ -2422,10 +2510,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_NUMBER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12125:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
-            // InternalRsamlText.g:12125:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:12267:13: ( ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )? )
+            // InternalRsamlText.g:12267:15: ( '-' )? ( '0' .. '9' )+ ( '.' ( '0' .. '9' )+ )? ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             {
-            // InternalRsamlText.g:12125:15: ( '-' )?
+            // InternalRsamlText.g:12267:15: ( '-' )?
             int alt3=2;
             int LA3_0 = input.LA(1);
 
@@ -2434,7 +2522,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt3) {
                 case 1 :
-                    // InternalRsamlText.g:12125:15: '-'
+                    // InternalRsamlText.g:12267:15: '-'
                     {
                     match('-'); 
 
@@ -2443,7 +2531,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:12125:20: ( '0' .. '9' )+
+            // InternalRsamlText.g:12267:20: ( '0' .. '9' )+
             int cnt4=0;
             loop4:
             do {
@@ -2457,7 +2545,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt4) {
             	case 1 :
-            	    // InternalRsamlText.g:12125:21: '0' .. '9'
+            	    // InternalRsamlText.g:12267:21: '0' .. '9'
             	    {
             	    matchRange('0','9'); 
 
@@ -2473,7 +2561,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 cnt4++;
             } while (true);
 
-            // InternalRsamlText.g:12125:32: ( '.' ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:12267:32: ( '.' ( '0' .. '9' )+ )?
             int alt6=2;
             int LA6_0 = input.LA(1);
 
@@ -2482,10 +2570,10 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt6) {
                 case 1 :
-                    // InternalRsamlText.g:12125:33: '.' ( '0' .. '9' )+
+                    // InternalRsamlText.g:12267:33: '.' ( '0' .. '9' )+
                     {
                     match('.'); 
-                    // InternalRsamlText.g:12125:37: ( '0' .. '9' )+
+                    // InternalRsamlText.g:12267:37: ( '0' .. '9' )+
                     int cnt5=0;
                     loop5:
                     do {
@@ -2499,7 +2587,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt5) {
                     	case 1 :
-                    	    // InternalRsamlText.g:12125:38: '0' .. '9'
+                    	    // InternalRsamlText.g:12267:38: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2521,7 +2609,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
             }
 
-            // InternalRsamlText.g:12125:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
+            // InternalRsamlText.g:12267:51: ( ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+ )?
             int alt9=2;
             int LA9_0 = input.LA(1);
 
@@ -2530,7 +2618,7 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt9) {
                 case 1 :
-                    // InternalRsamlText.g:12125:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
+                    // InternalRsamlText.g:12267:52: ( 'e' | 'E' ) ( '+' | '-' )? ( '0' .. '9' )+
                     {
                     if ( input.LA(1)=='E'||input.LA(1)=='e' ) {
                         input.consume();
@@ -2541,7 +2629,7 @@ public class InternalRsamlTextLexer extends Lexer {
                         recover(mse);
                         throw mse;}
 
-                    // InternalRsamlText.g:12125:62: ( '+' | '-' )?
+                    // InternalRsamlText.g:12267:62: ( '+' | '-' )?
                     int alt7=2;
                     int LA7_0 = input.LA(1);
 
@@ -2567,7 +2655,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                     }
 
-                    // InternalRsamlText.g:12125:73: ( '0' .. '9' )+
+                    // InternalRsamlText.g:12267:73: ( '0' .. '9' )+
                     int cnt8=0;
                     loop8:
                     do {
@@ -2581,7 +2669,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                         switch (alt8) {
                     	case 1 :
-                    	    // InternalRsamlText.g:12125:74: '0' .. '9'
+                    	    // InternalRsamlText.g:12267:74: '0' .. '9'
                     	    {
                     	    matchRange('0','9'); 
 
@@ -2619,11 +2707,11 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_STRING;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12127:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
-            // InternalRsamlText.g:12127:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
+            // InternalRsamlText.g:12269:13: ( '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"' )
+            // InternalRsamlText.g:12269:15: '\"' ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )* '\"'
             {
             match('\"'); 
-            // InternalRsamlText.g:12127:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
+            // InternalRsamlText.g:12269:19: ( '\\\\' . | ~ ( ( '\\\\' | '\"' ) ) )*
             loop10:
             do {
                 int alt10=3;
@@ -2639,7 +2727,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt10) {
             	case 1 :
-            	    // InternalRsamlText.g:12127:20: '\\\\' .
+            	    // InternalRsamlText.g:12269:20: '\\\\' .
             	    {
             	    match('\\'); 
             	    matchAny(); 
@@ -2647,7 +2735,7 @@ public class InternalRsamlTextLexer extends Lexer {
             	    }
             	    break;
             	case 2 :
-            	    // InternalRsamlText.g:12127:27: ~ ( ( '\\\\' | '\"' ) )
+            	    // InternalRsamlText.g:12269:27: ~ ( ( '\\\\' | '\"' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='!')||(input.LA(1)>='#' && input.LA(1)<='[')||(input.LA(1)>=']' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2684,12 +2772,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ML_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12129:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
-            // InternalRsamlText.g:12129:19: '/*' ( options {greedy=false; } : . )* '*/'
+            // InternalRsamlText.g:12271:17: ( '/*' ( options {greedy=false; } : . )* '*/' )
+            // InternalRsamlText.g:12271:19: '/*' ( options {greedy=false; } : . )* '*/'
             {
             match("/*"); 
 
-            // InternalRsamlText.g:12129:24: ( options {greedy=false; } : . )*
+            // InternalRsamlText.g:12271:24: ( options {greedy=false; } : . )*
             loop11:
             do {
                 int alt11=2;
@@ -2714,7 +2802,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt11) {
             	case 1 :
-            	    // InternalRsamlText.g:12129:52: .
+            	    // InternalRsamlText.g:12271:52: .
             	    {
             	    matchAny(); 
 
@@ -2744,12 +2832,12 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_SL_COMMENT;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12131:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
-            // InternalRsamlText.g:12131:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:12273:17: ( '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )? )
+            // InternalRsamlText.g:12273:19: '//' (~ ( ( '\\n' | '\\r' ) ) )* ( ( '\\r' )? '\\n' )?
             {
             match("//"); 
 
-            // InternalRsamlText.g:12131:24: (~ ( ( '\\n' | '\\r' ) ) )*
+            // InternalRsamlText.g:12273:24: (~ ( ( '\\n' | '\\r' ) ) )*
             loop12:
             do {
                 int alt12=2;
@@ -2762,7 +2850,7 @@ public class InternalRsamlTextLexer extends Lexer {
 
                 switch (alt12) {
             	case 1 :
-            	    // InternalRsamlText.g:12131:24: ~ ( ( '\\n' | '\\r' ) )
+            	    // InternalRsamlText.g:12273:24: ~ ( ( '\\n' | '\\r' ) )
             	    {
             	    if ( (input.LA(1)>='\u0000' && input.LA(1)<='\t')||(input.LA(1)>='\u000B' && input.LA(1)<='\f')||(input.LA(1)>='\u000E' && input.LA(1)<='\uFFFF') ) {
             	        input.consume();
@@ -2782,7 +2870,7 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
             } while (true);
 
-            // InternalRsamlText.g:12131:40: ( ( '\\r' )? '\\n' )?
+            // InternalRsamlText.g:12273:40: ( ( '\\r' )? '\\n' )?
             int alt14=2;
             int LA14_0 = input.LA(1);
 
@@ -2791,9 +2879,9 @@ public class InternalRsamlTextLexer extends Lexer {
             }
             switch (alt14) {
                 case 1 :
-                    // InternalRsamlText.g:12131:41: ( '\\r' )? '\\n'
+                    // InternalRsamlText.g:12273:41: ( '\\r' )? '\\n'
                     {
-                    // InternalRsamlText.g:12131:41: ( '\\r' )?
+                    // InternalRsamlText.g:12273:41: ( '\\r' )?
                     int alt13=2;
                     int LA13_0 = input.LA(1);
 
@@ -2802,7 +2890,7 @@ public class InternalRsamlTextLexer extends Lexer {
                     }
                     switch (alt13) {
                         case 1 :
-                            // InternalRsamlText.g:12131:41: '\\r'
+                            // InternalRsamlText.g:12273:41: '\\r'
                             {
                             match('\r'); 
 
@@ -2834,10 +2922,10 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_WS;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12133:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
-            // InternalRsamlText.g:12133:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:12275:9: ( ( ' ' | '\\t' | '\\r' | '\\n' )+ )
+            // InternalRsamlText.g:12275:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             {
-            // InternalRsamlText.g:12133:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
+            // InternalRsamlText.g:12275:11: ( ' ' | '\\t' | '\\r' | '\\n' )+
             int cnt15=0;
             loop15:
             do {
@@ -2891,8 +2979,8 @@ public class InternalRsamlTextLexer extends Lexer {
         try {
             int _type = RULE_ANY_OTHER;
             int _channel = DEFAULT_TOKEN_CHANNEL;
-            // InternalRsamlText.g:12135:16: ( . )
-            // InternalRsamlText.g:12135:18: .
+            // InternalRsamlText.g:12277:16: ( . )
+            // InternalRsamlText.g:12277:18: .
             {
             matchAny(); 
 
@@ -2907,8 +2995,8 @@ public class InternalRsamlTextLexer extends Lexer {
     // $ANTLR end "RULE_ANY_OTHER"
 
     public void mTokens() throws RecognitionException {
-        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
-        int alt16=112;
+        // InternalRsamlText.g:1:8: ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | T__116 | T__117 | T__118 | T__119 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER )
+        int alt16=116;
         alt16 = dfa16.predict(input);
         switch (alt16) {
             case 1 :
@@ -3647,49 +3735,77 @@ public class InternalRsamlTextLexer extends Lexer {
                 }
                 break;
             case 106 :
-                // InternalRsamlText.g:1:656: RULE_ID
+                // InternalRsamlText.g:1:656: T__116
+                {
+                mT__116(); 
+
+                }
+                break;
+            case 107 :
+                // InternalRsamlText.g:1:663: T__117
+                {
+                mT__117(); 
+
+                }
+                break;
+            case 108 :
+                // InternalRsamlText.g:1:670: T__118
+                {
+                mT__118(); 
+
+                }
+                break;
+            case 109 :
+                // InternalRsamlText.g:1:677: T__119
+                {
+                mT__119(); 
+
+                }
+                break;
+            case 110 :
+                // InternalRsamlText.g:1:684: RULE_ID
                 {
                 mRULE_ID(); 
 
                 }
                 break;
-            case 107 :
-                // InternalRsamlText.g:1:664: RULE_NUMBER
+            case 111 :
+                // InternalRsamlText.g:1:692: RULE_NUMBER
                 {
                 mRULE_NUMBER(); 
 
                 }
                 break;
-            case 108 :
-                // InternalRsamlText.g:1:676: RULE_STRING
+            case 112 :
+                // InternalRsamlText.g:1:704: RULE_STRING
                 {
                 mRULE_STRING(); 
 
                 }
                 break;
-            case 109 :
-                // InternalRsamlText.g:1:688: RULE_ML_COMMENT
+            case 113 :
+                // InternalRsamlText.g:1:716: RULE_ML_COMMENT
                 {
                 mRULE_ML_COMMENT(); 
 
                 }
                 break;
-            case 110 :
-                // InternalRsamlText.g:1:704: RULE_SL_COMMENT
+            case 114 :
+                // InternalRsamlText.g:1:732: RULE_SL_COMMENT
                 {
                 mRULE_SL_COMMENT(); 
 
                 }
                 break;
-            case 111 :
-                // InternalRsamlText.g:1:720: RULE_WS
+            case 115 :
+                // InternalRsamlText.g:1:748: RULE_WS
                 {
                 mRULE_WS(); 
 
                 }
                 break;
-            case 112 :
-                // InternalRsamlText.g:1:728: RULE_ANY_OTHER
+            case 116 :
+                // InternalRsamlText.g:1:756: RULE_ANY_OTHER
                 {
                 mRULE_ANY_OTHER(); 
 
@@ -3703,17 +3819,17 @@ public class InternalRsamlTextLexer extends Lexer {
 
     protected DFA16 dfa16 = new DFA16(this);
     static final String DFA16_eotS =
-        "\1\uffff\10\60\1\114\25\60\3\uffff\1\164\1\uffff\1\52\2\uffff\2\52\2\uffff\5\60\1\uffff\7\60\1\u008b\23\60\1\uffff\12\60\1\u00b2\1\60\1\u00b5\12\60\1\u00c0\3\60\1\u00c4\1\u00c5\1\u00c6\5\60\13\uffff\20\60\1\uffff\46\60\1\uffff\2\60\1\uffff\4\60\1\u010d\5\60\1\uffff\2\60\1\u0115\3\uffff\1\u0116\1\u0117\1\60\1\u0119\24\60\1\u012f\14\60\1\u013d\13\60\1\u0149\1\u014b\12\60\1\u0158\1\u0159\1\60\1\u015b\4\60\1\u0160\1\uffff\1\u0161\5\60\1\u0167\3\uffff\1\60\1\uffff\11\60\1\u0172\1\60\1\u0174\11\60\1\uffff\6\60\1\u0184\3\60\1\u0188\1\u018a\1\60\1\uffff\7\60\1\u0193\3\60\1\uffff\1\u0197\1\uffff\1\u0198\13\60\2\uffff\1\60\1\uffff\1\u01a5\3\60\2\uffff\5\60\1\uffff\1\u01ae\2\60\1\u01b2\6\60\1\uffff\1\60\1\uffff\2\60\1\u01bd\14\60\1\uffff\1\60\1\u01cb\1\u01cc\1\uffff\1\60\1\uffff\5\60\1\u01d4\2\60\1\uffff\1\60\1\u01d8\1\60\2\uffff\2\60\1\u01dd\10\60\1\u01e6\1\uffff\1\60\1\u01e8\2\60\1\u01eb\3\60\1\uffff\2\60\1\u01f1\1\uffff\6\60\1\u01f8\2\60\1\u01fb\1\uffff\1\u01fc\2\60\1\u01ff\11\60\2\uffff\1\60\1\u020a\4\60\1\u020f\1\uffff\3\60\1\uffff\4\60\1\uffff\2\60\1\u021a\5\60\1\uffff\1\u0220\1\uffff\2\60\1\uffff\1\60\1\u0224\1\u0225\2\60\1\uffff\1\u0228\1\u022a\1\u022b\3\60\1\uffff\2\60\2\uffff\2\60\1\uffff\1\60\1\u0234\1\u0235\1\60\1\u0237\1\60\1\u0239\1\u023a\2\60\1\uffff\1\u023d\3\60\1\uffff\4\60\1\u0245\1\60\1\u0247\1\u0248\1\u0249\1\u024a\1\uffff\2\60\1\u024d\1\u024e\1\60\1\uffff\1\u0250\2\60\2\uffff\1\u0253\1\60\1\uffff\1\u0255\2\uffff\1\u0256\3\60\1\u025a\3\60\2\uffff\1\60\1\uffff\1\60\2\uffff\1\u0260\1\60\1\uffff\7\60\1\uffff\1\u0269\4\uffff\2\60\2\uffff\1\u026c\1\uffff\2\60\1\uffff\1\60\2\uffff\3\60\1\uffff\1\60\1\u0274\1\60\1\u0276\1\60\1\uffff\2\60\1\u027a\1\u027b\3\60\1\u027f\1\uffff\2\60\1\uffff\1\60\1\u0283\3\60\1\u0287\1\u0288\1\uffff\1\u0289\1\uffff\1\60\1\u028b\1\u028c\2\uffff\1\u028d\1\u028e\1\u028f\1\uffff\1\u0290\2\60\1\uffff\1\u0293\1\u0294\1\u0295\3\uffff\1\u0296\6\uffff\1\60\1\u0298\4\uffff\1\60\1\uffff\1\u029a\1\uffff";
+        "\1\uffff\10\60\1\114\25\60\3\uffff\1\165\1\uffff\1\52\2\uffff\2\52\2\uffff\5\60\1\uffff\7\60\1\u008c\23\60\1\uffff\13\60\1\u00b5\1\60\1\u00b8\12\60\1\u00c3\3\60\1\u00c7\1\u00c8\1\u00c9\5\60\13\uffff\20\60\1\uffff\50\60\1\uffff\2\60\1\uffff\4\60\1\u0114\5\60\1\uffff\2\60\1\u011c\3\uffff\1\u011d\1\u011e\1\60\1\u0120\24\60\1\u0136\14\60\1\u0144\14\60\1\u0151\1\u0153\15\60\1\u0163\1\u0164\1\60\1\u0166\4\60\1\u016b\1\uffff\1\u016c\5\60\1\u0172\3\uffff\1\60\1\uffff\11\60\1\u017d\1\60\1\u017f\11\60\1\uffff\6\60\1\u018f\3\60\1\u0193\1\u0195\1\60\1\uffff\7\60\1\u019e\4\60\1\uffff\1\u01a3\1\uffff\1\u01a4\16\60\2\uffff\1\60\1\uffff\1\u01b4\3\60\2\uffff\5\60\1\uffff\1\u01bd\2\60\1\u01c1\6\60\1\uffff\1\60\1\uffff\2\60\1\u01cc\14\60\1\uffff\1\60\1\u01da\1\u01db\1\uffff\1\60\1\uffff\5\60\1\u01e3\2\60\1\uffff\1\60\1\u01e7\1\u01e8\1\60\2\uffff\2\60\1\u01ed\13\60\1\u01f9\1\uffff\1\60\1\u01fb\2\60\1\u01fe\3\60\1\uffff\2\60\1\u0204\1\uffff\6\60\1\u020b\2\60\1\u020e\1\uffff\1\u020f\2\60\1\u0212\11\60\2\uffff\1\60\1\u021d\4\60\1\u0222\1\uffff\3\60\2\uffff\4\60\1\uffff\5\60\1\u0230\5\60\1\uffff\1\u0236\1\uffff\2\60\1\uffff\1\60\1\u023a\1\u023b\2\60\1\uffff\1\u023e\1\u0240\1\u0241\3\60\1\uffff\2\60\2\uffff\2\60\1\uffff\1\60\1\u024a\1\u024b\1\60\1\u024d\1\60\1\u024f\1\u0250\2\60\1\uffff\1\u0253\3\60\1\uffff\4\60\1\u025b\1\60\1\u025d\1\u025e\1\u025f\1\60\1\u0261\1\u0262\1\u0263\1\uffff\2\60\1\u0266\1\u0267\1\60\1\uffff\1\u0269\2\60\2\uffff\1\u026c\1\60\1\uffff\1\u026e\2\uffff\1\u026f\3\60\1\u0273\3\60\2\uffff\1\60\1\uffff\1\60\2\uffff\1\u0279\1\60\1\uffff\7\60\1\uffff\1\u0282\3\uffff\1\60\3\uffff\2\60\2\uffff\1\u0286\1\uffff\2\60\1\uffff\1\60\2\uffff\3\60\1\uffff\1\60\1\u028e\1\60\1\u0290\1\60\1\uffff\2\60\1\u0294\1\u0295\3\60\1\u0299\1\uffff\3\60\1\uffff\1\60\1\u029e\3\60\1\u02a2\1\u02a3\1\uffff\1\u02a4\1\uffff\1\60\1\u02a6\1\u02a7\2\uffff\1\u02a8\1\u02a9\1\u02aa\1\uffff\1\60\1\u02ac\2\60\1\uffff\1\u02af\1\u02b0\1\u02b1\3\uffff\1\u02b2\5\uffff\1\u02b3\1\uffff\1\60\1\u02b5\5\uffff\1\60\1\uffff\1\u02b7\1\uffff";
     static final String DFA16_eofS =
-        "\u029b\uffff";
+        "\u02b8\uffff";
     static final String DFA16_minS =
-        "\1\0\1\143\2\141\1\162\1\145\1\156\1\162\1\141\1\60\1\157\1\145\1\141\1\151\1\156\1\141\1\170\1\143\2\151\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\60\1\uffff\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\1\uffff\1\164\1\166\1\146\1\144\1\163\1\156\1\163\1\60\1\156\1\157\1\101\1\141\1\150\1\163\1\164\1\144\1\150\1\156\1\164\1\156\1\160\2\156\1\150\1\141\1\155\1\157\1\uffff\2\141\1\151\1\162\1\164\1\141\1\162\1\157\1\156\1\151\1\60\1\160\1\60\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\13\uffff\1\150\2\151\1\162\1\156\1\150\3\145\1\153\1\145\1\165\1\163\1\105\1\141\1\163\1\uffff\1\143\1\155\2\143\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\145\1\163\1\143\1\145\1\162\1\165\1\160\1\162\1\154\1\151\1\143\1\157\1\151\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\60\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\157\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\143\1\154\1\151\1\170\1\141\1\147\1\141\1\164\1\60\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\60\1\147\3\162\1\157\1\150\1\144\1\164\1\143\1\154\1\141\2\60\1\156\1\145\1\162\1\157\1\101\1\162\1\141\1\154\1\164\1\154\2\60\1\102\1\60\1\143\1\147\1\145\1\124\1\60\1\uffff\1\60\1\141\1\151\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\60\1\143\1\60\1\141\1\171\1\145\1\157\1\145\1\164\1\145\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\164\2\60\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\60\1\164\1\145\1\144\1\uffff\1\60\1\uffff\1\60\1\163\1\151\1\144\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\60\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\60\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\143\1\60\1\156\1\143\1\145\1\144\1\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\60\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\60\2\157\1\uffff\1\165\1\60\1\151\2\uffff\1\163\1\164\1\60\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\60\1\uffff\1\162\1\60\1\160\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\60\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\60\1\145\1\154\1\60\1\uffff\1\60\1\124\1\156\1\60\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\60\1\171\1\151\2\163\1\60\1\uffff\1\124\1\154\1\162\1\uffff\1\143\1\157\1\171\1\143\1\uffff\2\145\1\60\1\164\1\144\1\145\1\156\1\147\1\uffff\1\60\1\uffff\1\145\1\150\1\uffff\1\162\2\60\1\171\1\164\1\uffff\3\60\1\143\1\156\1\145\1\uffff\1\156\1\145\2\uffff\1\151\1\143\1\uffff\1\171\2\60\1\102\1\60\1\124\2\60\1\162\1\151\1\uffff\1\60\1\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\60\1\162\4\60\1\uffff\1\151\1\114\2\60\1\145\1\uffff\1\60\1\151\1\141\2\uffff\1\60\1\165\1\uffff\1\60\2\uffff\1\60\1\157\1\162\1\143\1\60\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\60\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\60\4\uffff\1\157\1\141\2\uffff\1\60\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\uffff\1\145\1\60\1\145\1\60\1\155\1\uffff\1\171\1\144\2\60\1\145\1\163\1\171\1\60\1\uffff\1\156\1\171\1\uffff\1\141\1\60\1\145\1\163\1\143\2\60\1\uffff\1\60\1\uffff\1\145\2\60\2\uffff\3\60\1\uffff\1\60\1\145\1\154\1\uffff\3\60\3\uffff\1\60\6\uffff\1\162\1\60\4\uffff\1\163\1\uffff\1\60\1\uffff";
+        "\1\0\1\143\2\141\1\162\1\145\1\156\1\162\1\141\1\60\1\157\2\141\1\151\1\156\1\141\1\170\1\143\2\151\1\145\1\163\1\111\1\112\2\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\60\1\uffff\1\101\2\uffff\1\0\1\52\2\uffff\1\143\1\150\1\145\1\171\1\160\1\uffff\1\164\1\166\1\146\1\144\1\163\1\156\1\163\1\60\1\156\1\157\1\101\1\141\1\150\1\163\1\164\1\144\1\150\1\156\1\164\1\156\1\160\2\156\1\150\1\141\1\155\1\157\1\uffff\2\141\1\151\1\162\1\143\1\164\1\141\1\162\1\157\1\156\1\151\1\60\1\160\1\60\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\60\1\155\2\106\3\60\2\106\1\110\1\116\1\146\13\uffff\1\150\2\151\1\162\1\156\1\150\3\145\1\153\1\145\1\165\1\163\1\105\1\141\1\163\1\uffff\1\143\1\155\2\143\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\145\1\163\1\143\1\145\1\162\1\165\1\160\1\147\1\162\1\154\1\151\1\143\1\157\1\114\1\153\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\60\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\60\3\uffff\2\60\1\105\1\60\2\151\1\157\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\143\1\154\1\151\1\170\1\141\1\147\1\141\1\164\1\60\1\164\1\124\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\60\1\147\3\162\1\157\1\150\1\144\1\164\1\143\2\154\1\141\2\60\1\156\1\145\1\162\1\157\1\141\1\162\1\141\1\101\1\162\1\141\1\154\1\164\1\154\2\60\1\102\1\60\1\143\1\147\1\145\1\124\1\60\1\uffff\1\60\1\141\1\151\1\166\1\145\1\162\1\60\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\60\1\143\1\60\1\141\1\171\1\145\1\157\1\145\1\164\1\145\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\60\1\151\1\162\1\164\2\60\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\60\1\164\2\145\1\144\1\uffff\1\60\1\uffff\1\60\1\163\1\151\1\144\1\171\1\157\1\147\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\60\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\60\1\151\1\145\1\60\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\143\1\60\1\156\1\143\1\145\1\144\1\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\60\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\60\2\157\1\uffff\1\165\2\60\1\151\2\uffff\1\163\1\164\1\60\1\145\1\143\1\145\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\60\1\uffff\1\162\1\60\1\160\1\143\1\60\1\157\1\156\1\143\1\uffff\1\164\1\143\1\60\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\60\1\145\1\154\1\60\1\uffff\1\60\1\124\1\156\1\60\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\60\1\171\1\151\2\163\1\60\1\uffff\1\124\1\154\1\162\2\uffff\1\143\1\157\1\171\1\143\1\uffff\1\162\1\145\1\163\2\145\1\60\1\164\1\144\1\145\1\156\1\147\1\uffff\1\60\1\uffff\1\145\1\150\1\uffff\1\162\2\60\1\171\1\164\1\uffff\3\60\1\143\1\156\1\145\1\uffff\1\156\1\145\2\uffff\1\151\1\143\1\uffff\1\171\2\60\1\102\1\60\1\124\2\60\1\162\1\151\1\uffff\1\60\1\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\60\1\162\3\60\1\163\3\60\1\uffff\1\151\1\114\2\60\1\145\1\uffff\1\60\1\151\1\141\2\uffff\1\60\1\165\1\uffff\1\60\2\uffff\1\60\1\157\1\162\1\143\1\60\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\60\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\60\3\uffff\1\163\3\uffff\1\157\1\141\2\uffff\1\60\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\uffff\1\145\1\60\1\145\1\60\1\155\1\uffff\1\171\1\144\2\60\1\145\1\163\1\171\1\60\1\uffff\1\157\1\156\1\171\1\uffff\1\141\1\60\1\145\1\163\1\143\2\60\1\uffff\1\60\1\uffff\1\145\2\60\2\uffff\3\60\1\uffff\1\162\1\60\1\145\1\154\1\uffff\3\60\3\uffff\1\60\5\uffff\1\60\1\uffff\1\162\1\60\5\uffff\1\163\1\uffff\1\60\1\uffff";
     static final String DFA16_maxS =
-        "\1\uffff\1\163\1\151\1\163\1\165\1\164\1\163\1\165\1\157\1\172\1\157\1\162\1\165\1\156\1\163\1\171\1\170\1\143\1\151\1\171\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\76\1\uffff\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\1\uffff\1\171\1\166\1\156\1\144\1\163\1\170\1\163\1\172\1\156\1\157\1\101\1\161\1\160\1\163\1\164\1\144\1\150\1\162\1\164\1\156\1\160\2\156\1\150\1\162\1\155\1\157\1\uffff\2\141\1\157\1\162\1\164\1\163\1\162\1\157\1\156\1\151\1\172\1\160\1\172\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\13\uffff\1\150\1\165\1\151\1\162\1\156\1\150\3\145\1\153\1\145\1\165\1\163\1\114\1\141\1\163\1\uffff\1\143\1\155\1\143\1\154\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\160\1\163\1\143\1\145\1\162\1\165\1\160\1\162\1\154\1\156\1\143\1\157\1\151\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\172\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\166\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\143\1\154\1\151\1\170\1\141\1\147\1\141\1\164\1\172\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\172\1\147\3\162\1\157\1\150\1\144\1\164\1\143\1\154\1\141\2\172\1\156\1\145\1\162\1\157\1\142\1\162\1\141\1\154\1\164\1\154\2\172\1\102\1\172\1\143\1\147\1\145\1\124\1\172\1\uffff\1\172\1\141\1\151\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\172\1\143\1\172\1\141\1\171\1\145\1\157\1\145\1\164\1\145\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\164\2\172\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\172\1\164\1\145\1\144\1\uffff\1\172\1\uffff\1\172\1\163\1\151\1\144\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\172\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\172\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\143\1\172\1\156\1\143\1\145\1\144\1\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\172\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\172\2\157\1\uffff\1\165\1\172\1\151\2\uffff\1\163\1\164\1\172\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\172\1\uffff\1\162\1\172\1\160\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\172\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\172\1\145\1\154\1\172\1\uffff\1\172\1\124\1\156\1\172\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\172\1\171\1\151\2\163\1\172\1\uffff\1\156\1\154\1\162\1\uffff\1\143\1\157\1\171\1\143\1\uffff\2\145\1\172\1\164\1\144\1\145\1\156\1\147\1\uffff\1\172\1\uffff\1\145\1\150\1\uffff\1\162\2\172\1\171\1\164\1\uffff\3\172\1\143\1\156\1\145\1\uffff\1\156\1\145\2\uffff\1\151\1\143\1\uffff\1\171\2\172\1\102\1\172\1\124\2\172\1\162\1\151\1\uffff\2\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\172\1\162\4\172\1\uffff\1\151\1\114\2\172\1\145\1\uffff\1\172\1\151\1\141\2\uffff\1\172\1\165\1\uffff\1\172\2\uffff\1\172\1\157\1\162\1\143\1\172\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\172\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\172\4\uffff\1\157\1\141\2\uffff\1\172\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\uffff\1\145\1\172\1\145\1\172\1\155\1\uffff\1\171\1\144\2\172\1\145\1\163\1\171\1\172\1\uffff\1\156\1\171\1\uffff\1\141\1\172\1\145\1\163\1\143\2\172\1\uffff\1\172\1\uffff\1\145\2\172\2\uffff\3\172\1\uffff\1\172\1\145\1\154\1\uffff\3\172\3\uffff\1\172\6\uffff\1\162\1\172\4\uffff\1\163\1\uffff\1\172\1\uffff";
+        "\1\uffff\1\163\1\151\1\163\1\165\1\164\1\163\1\165\1\157\1\172\1\157\1\162\1\165\1\156\1\163\1\171\1\170\1\143\1\151\1\171\1\157\1\165\1\111\1\112\1\122\1\115\1\104\1\114\1\124\1\141\1\156\3\uffff\1\76\1\uffff\1\172\2\uffff\1\uffff\1\57\2\uffff\1\143\1\164\1\145\1\171\1\160\1\uffff\1\171\1\166\1\156\1\144\1\163\1\170\1\163\1\172\1\156\1\157\1\101\1\161\1\160\1\163\1\164\1\144\1\150\1\162\1\164\1\156\1\160\2\156\1\150\1\162\1\156\1\157\1\uffff\2\141\1\157\1\162\1\143\1\164\1\163\1\162\1\157\1\156\1\151\1\172\1\160\1\172\1\151\1\162\2\145\1\141\1\163\1\145\1\142\1\150\1\157\1\172\1\155\2\106\3\172\2\106\1\110\1\116\1\146\13\uffff\1\150\1\165\1\151\1\162\1\156\1\150\3\145\1\153\1\145\1\165\1\163\1\114\1\141\1\163\1\uffff\1\143\1\155\1\143\1\154\1\145\2\165\1\151\1\165\1\160\2\145\1\156\2\145\1\164\1\160\1\163\1\143\1\145\1\162\1\165\1\160\1\147\1\162\1\154\1\156\1\143\1\157\1\151\1\153\1\141\1\143\1\154\1\144\1\141\1\167\1\144\1\164\1\144\1\uffff\1\145\1\151\1\uffff\2\147\1\143\1\164\1\172\1\164\2\162\1\141\1\154\1\uffff\1\145\1\117\1\172\3\uffff\2\172\1\105\1\172\2\151\1\166\1\141\1\145\1\151\1\143\1\141\1\162\1\156\1\154\1\114\1\143\1\154\1\151\1\170\1\141\1\147\1\141\1\164\1\172\1\164\1\151\1\164\1\151\1\145\1\164\1\142\1\145\1\165\2\162\1\145\1\172\1\147\3\162\1\157\1\150\1\144\1\164\1\143\2\154\1\141\2\172\1\156\1\145\1\162\1\157\1\141\1\162\1\141\1\142\1\162\1\141\1\154\1\164\1\154\2\172\1\102\1\172\1\143\1\147\1\145\1\124\1\172\1\uffff\1\172\1\141\1\151\1\166\1\145\1\162\1\172\3\uffff\1\122\1\uffff\1\156\1\164\1\156\1\151\1\164\1\166\1\157\1\150\1\156\1\172\1\143\1\172\1\141\1\171\1\145\1\157\1\145\1\164\1\145\1\147\1\151\1\uffff\1\151\1\163\2\151\1\166\1\163\1\172\1\151\1\162\1\164\2\172\1\143\1\uffff\1\157\1\141\1\145\1\166\2\162\1\120\1\172\1\164\2\145\1\144\1\uffff\1\172\1\uffff\1\172\1\163\1\151\1\144\1\171\1\157\1\147\1\141\1\171\1\147\1\151\1\162\2\151\1\145\2\uffff\1\171\1\uffff\1\172\1\145\1\164\1\171\2\uffff\1\162\1\144\1\151\1\141\1\151\1\uffff\1\172\1\151\1\145\1\172\1\164\1\157\1\145\1\144\1\162\1\165\1\uffff\1\171\1\uffff\1\164\1\143\1\172\1\156\1\143\1\145\1\144\1\145\2\157\1\145\1\155\1\157\1\145\1\164\1\uffff\1\164\2\172\1\uffff\1\157\1\uffff\1\164\1\162\1\154\1\163\1\151\1\172\2\157\1\uffff\1\165\2\172\1\151\2\uffff\1\163\1\164\1\172\1\145\1\143\1\145\1\163\1\160\1\145\1\160\1\145\1\156\1\157\1\144\1\172\1\uffff\1\162\1\172\1\160\1\143\1\172\1\157\1\156\1\143\1\uffff\1\164\1\143\1\172\1\uffff\1\171\1\162\1\163\1\151\1\157\1\155\1\172\1\145\1\154\1\172\1\uffff\1\172\1\124\1\156\1\172\1\124\2\156\1\144\1\145\1\156\1\162\1\163\1\157\2\uffff\1\154\1\172\1\171\1\151\2\163\1\172\1\uffff\1\156\1\154\1\162\2\uffff\1\143\1\157\1\171\1\143\1\uffff\1\162\1\145\1\163\2\145\1\172\1\164\1\144\1\145\1\156\1\147\1\uffff\1\172\1\uffff\1\145\1\150\1\uffff\1\162\2\172\1\171\1\164\1\uffff\3\172\1\143\1\156\1\145\1\uffff\1\156\1\145\2\uffff\1\151\1\143\1\uffff\1\171\2\172\1\102\1\172\1\124\2\172\1\162\1\151\1\uffff\2\172\2\157\1\uffff\1\171\1\157\1\151\1\145\1\172\1\162\3\172\1\163\3\172\1\uffff\1\151\1\114\2\172\1\145\1\uffff\1\172\1\151\1\141\2\uffff\1\172\1\165\1\uffff\1\172\2\uffff\1\172\1\157\1\162\1\143\1\172\1\155\1\171\1\160\2\uffff\1\171\1\uffff\1\151\2\uffff\1\172\1\143\1\uffff\1\145\2\162\1\160\1\165\1\143\1\144\1\uffff\1\172\3\uffff\1\163\3\uffff\1\157\1\141\2\uffff\1\172\1\uffff\1\143\1\154\1\uffff\1\162\2\uffff\1\165\1\151\1\171\1\uffff\1\145\1\172\1\145\1\172\1\155\1\uffff\1\171\1\144\2\172\1\145\1\163\1\171\1\172\1\uffff\1\157\1\156\1\171\1\uffff\1\141\1\172\1\145\1\163\1\143\2\172\1\uffff\1\172\1\uffff\1\145\2\172\2\uffff\3\172\1\uffff\1\162\1\172\1\145\1\154\1\uffff\3\172\3\uffff\1\172\5\uffff\1\172\1\uffff\1\162\1\172\5\uffff\1\163\1\uffff\1\172\1\uffff";
     static final String DFA16_acceptS =
-        "\37\uffff\1\144\1\145\1\146\1\uffff\1\150\1\uffff\1\152\1\153\2\uffff\1\157\1\160\5\uffff\1\152\33\uffff\1\117\43\uffff\1\144\1\145\1\146\1\147\1\151\1\153\1\150\1\154\1\155\1\156\1\157\20\uffff\1\116\46\uffff\1\115\2\uffff\1\74\12\uffff\1\114\3\uffff\1\124\1\125\1\126\106\uffff\1\75\7\uffff\1\123\1\127\1\130\1\uffff\1\142\25\uffff\1\73\15\uffff\1\71\13\uffff\1\17\1\uffff\1\20\14\uffff\1\57\1\33\1\uffff\1\34\4\uffff\1\40\1\77\5\uffff\1\122\12\uffff\1\2\1\uffff\1\41\17\uffff\1\7\3\uffff\1\23\1\uffff\1\106\10\uffff\1\50\3\uffff\1\63\1\140\14\uffff\1\53\10\uffff\1\131\3\uffff\1\5\12\uffff\1\3\15\uffff\1\65\1\10\7\uffff\1\14\3\uffff\1\107\4\uffff\1\36\10\uffff\1\70\1\uffff\1\55\2\uffff\1\105\5\uffff\1\62\6\uffff\1\27\2\uffff\1\72\1\16\2\uffff\1\141\12\uffff\1\11\4\uffff\1\43\12\uffff\1\137\5\uffff\1\54\3\uffff\1\134\1\132\2\uffff\1\21\1\uffff\1\15\1\61\10\uffff\1\4\1\6\1\uffff\1\110\1\uffff\1\66\1\67\2\uffff\1\31\7\uffff\1\112\1\uffff\1\60\1\111\1\24\1\51\2\uffff\1\37\1\56\1\uffff\1\35\2\uffff\1\143\1\uffff\1\44\1\113\3\uffff\1\101\5\uffff\1\12\10\uffff\1\26\2\uffff\1\25\7\uffff\1\76\1\uffff\1\64\3\uffff\1\13\1\22\3\uffff\1\135\3\uffff\1\104\3\uffff\1\100\1\42\1\52\1\uffff\1\47\1\102\1\45\1\120\1\46\1\30\2\uffff\1\1\1\121\1\133\1\136\1\uffff\1\103\1\uffff\1\32";
+        "\37\uffff\1\150\1\151\1\152\1\uffff\1\154\1\uffff\1\156\1\157\2\uffff\1\163\1\164\5\uffff\1\156\33\uffff\1\120\44\uffff\1\150\1\151\1\152\1\153\1\155\1\157\1\154\1\160\1\161\1\162\1\163\20\uffff\1\117\50\uffff\1\116\2\uffff\1\74\12\uffff\1\115\3\uffff\1\125\1\126\1\127\112\uffff\1\75\7\uffff\1\124\1\130\1\131\1\uffff\1\146\25\uffff\1\73\15\uffff\1\71\14\uffff\1\17\1\uffff\1\20\17\uffff\1\57\1\33\1\uffff\1\34\4\uffff\1\40\1\77\5\uffff\1\123\12\uffff\1\2\1\uffff\1\41\17\uffff\1\7\3\uffff\1\23\1\uffff\1\107\10\uffff\1\50\4\uffff\1\63\1\141\17\uffff\1\53\10\uffff\1\132\3\uffff\1\5\12\uffff\1\3\15\uffff\1\65\1\10\7\uffff\1\14\3\uffff\1\110\1\143\4\uffff\1\36\13\uffff\1\70\1\uffff\1\55\2\uffff\1\106\5\uffff\1\62\6\uffff\1\27\2\uffff\1\72\1\16\2\uffff\1\142\12\uffff\1\11\4\uffff\1\43\15\uffff\1\140\5\uffff\1\54\3\uffff\1\135\1\133\2\uffff\1\21\1\uffff\1\15\1\61\10\uffff\1\4\1\6\1\uffff\1\111\1\uffff\1\66\1\67\2\uffff\1\31\7\uffff\1\113\1\uffff\1\60\1\112\1\144\1\uffff\1\102\1\24\1\51\2\uffff\1\37\1\56\1\uffff\1\35\2\uffff\1\147\1\uffff\1\44\1\114\3\uffff\1\101\5\uffff\1\12\10\uffff\1\26\3\uffff\1\25\7\uffff\1\76\1\uffff\1\64\3\uffff\1\13\1\22\3\uffff\1\136\4\uffff\1\105\3\uffff\1\100\1\42\1\52\1\uffff\1\47\1\103\1\45\1\121\1\46\1\uffff\1\30\2\uffff\1\1\1\122\1\134\1\137\1\145\1\uffff\1\104\1\uffff\1\32";
     static final String DFA16_specialS =
-        "\1\1\46\uffff\1\0\u0273\uffff}>";
+        "\1\0\46\uffff\1\1\u0290\uffff}>";
     static final String[] DFA16_transitionS = {
             "\11\52\2\51\2\52\1\51\22\52\1\51\1\52\1\47\11\52\1\41\1\42\1\43\1\50\12\46\7\52\3\45\1\31\1\32\1\26\2\45\1\36\2\45\1\33\1\45\1\35\1\34\2\45\1\30\1\27\7\45\3\52\1\44\1\45\1\52\1\1\1\24\1\10\1\14\1\20\1\4\1\12\1\23\1\6\1\45\1\15\1\2\1\3\1\25\1\7\1\13\1\45\1\5\1\11\1\17\1\16\1\22\1\21\3\45\1\37\1\52\1\40\uff82\52",
             "\1\54\10\uffff\1\57\3\uffff\1\55\1\uffff\1\53\1\56",
@@ -3726,88 +3842,86 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\103\3\uffff\1\104\11\uffff\1\102",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\2\60\1\110\1\60\1\106\3\60\1\112\6\60\1\113\3\60\1\111\1\105\3\60\1\107\1\60",
             "\1\115",
-            "\1\120\6\uffff\1\116\5\uffff\1\117",
-            "\1\121\3\uffff\1\122\17\uffff\1\123",
-            "\1\125\4\uffff\1\124",
-            "\1\126\4\uffff\1\127",
-            "\1\133\15\uffff\1\131\2\uffff\1\132\6\uffff\1\130",
-            "\1\134",
+            "\1\121\3\uffff\1\120\6\uffff\1\116\5\uffff\1\117",
+            "\1\122\3\uffff\1\123\17\uffff\1\124",
+            "\1\126\4\uffff\1\125",
+            "\1\127\4\uffff\1\130",
+            "\1\134\15\uffff\1\132\2\uffff\1\133\6\uffff\1\131",
             "\1\135",
             "\1\136",
-            "\1\140\5\uffff\1\137\11\uffff\1\141",
-            "\1\142\11\uffff\1\143",
-            "\1\144\1\uffff\1\145",
-            "\1\146",
+            "\1\137",
+            "\1\141\5\uffff\1\140\11\uffff\1\142",
+            "\1\143\11\uffff\1\144",
+            "\1\145\1\uffff\1\146",
             "\1\147",
-            "\1\151\4\uffff\1\150",
-            "\1\152",
+            "\1\150",
+            "\1\152\4\uffff\1\151",
             "\1\153",
             "\1\154",
             "\1\155",
             "\1\156",
             "\1\157",
+            "\1\160",
             "",
             "",
             "",
-            "\12\165\4\uffff\1\163",
+            "\12\166\4\uffff\1\164",
             "",
             "\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
-            "\0\167",
-            "\1\170\4\uffff\1\171",
+            "\0\170",
+            "\1\171\4\uffff\1\172",
             "",
             "",
-            "\1\173",
-            "\1\175\13\uffff\1\174",
-            "\1\176",
+            "\1\174",
+            "\1\176\13\uffff\1\175",
             "\1\177",
             "\1\u0080",
+            "\1\u0081",
             "",
-            "\1\u0082\4\uffff\1\u0081",
-            "\1\u0083",
-            "\1\u0085\7\uffff\1\u0084",
-            "\1\u0086",
+            "\1\u0083\4\uffff\1\u0082",
+            "\1\u0084",
+            "\1\u0086\7\uffff\1\u0085",
             "\1\u0087",
-            "\1\u0089\11\uffff\1\u0088",
-            "\1\u008a",
+            "\1\u0088",
+            "\1\u008a\11\uffff\1\u0089",
+            "\1\u008b",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u008c",
             "\1\u008d",
             "\1\u008e",
-            "\1\u008f\1\uffff\1\u0090\15\uffff\1\u0091",
-            "\1\u0093\7\uffff\1\u0092",
-            "\1\u0094",
+            "\1\u008f",
+            "\1\u0090\1\uffff\1\u0091\15\uffff\1\u0092",
+            "\1\u0094\7\uffff\1\u0093",
             "\1\u0095",
             "\1\u0096",
             "\1\u0097",
-            "\1\u0098\3\uffff\1\u0099",
-            "\1\u009a",
+            "\1\u0098",
+            "\1\u0099\3\uffff\1\u009a",
             "\1\u009b",
             "\1\u009c",
             "\1\u009d",
             "\1\u009e",
             "\1\u009f",
-            "\1\u00a0\20\uffff\1\u00a1",
-            "\1\u00a2",
-            "\1\u00a3",
-            "",
-            "\1\u00a4",
+            "\1\u00a0",
+            "\1\u00a1\20\uffff\1\u00a2",
+            "\1\u00a3\1\u00a4",
             "\1\u00a5",
-            "\1\u00a7\5\uffff\1\u00a6",
-            "\1\u00a8",
-            "\1\u00a9",
-            "\1\u00ac\1\uffff\1\u00ab\17\uffff\1\u00aa",
-            "\1\u00ad",
-            "\1\u00ae",
-            "\1\u00af",
+            "",
+            "\1\u00a6",
+            "\1\u00a7",
+            "\1\u00a9\5\uffff\1\u00a8",
+            "\1\u00aa",
+            "\1\u00ab",
+            "\1\u00ac",
+            "\1\u00af\1\uffff\1\u00ae\17\uffff\1\u00ad",
             "\1\u00b0",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u00b1\25\60",
+            "\1\u00b1",
+            "\1\u00b2",
             "\1\u00b3",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\17\60\1\u00b4\12\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\4\60\1\u00b4\25\60",
             "\1\u00b6",
-            "\1\u00b7",
-            "\1\u00b8",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\17\60\1\u00b7\12\60",
             "\1\u00b9",
             "\1\u00ba",
             "\1\u00bb",
@@ -3815,34 +3929,34 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00bd",
             "\1\u00be",
             "\1\u00bf",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00c0",
             "\1\u00c1",
             "\1\u00c2",
-            "\1\u00c3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u00c4",
+            "\1\u00c5",
+            "\1\u00c6",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u00c7",
-            "\1\u00c8",
-            "\1\u00c9",
             "\1\u00ca",
             "\1\u00cb",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
             "\1\u00cc",
-            "\1\u00cd\13\uffff\1\u00ce",
+            "\1\u00cd",
+            "\1\u00ce",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "",
             "\1\u00cf",
-            "\1\u00d0",
-            "\1\u00d1",
+            "\1\u00d0\13\uffff\1\u00d1",
             "\1\u00d2",
             "\1\u00d3",
             "\1\u00d4",
@@ -3851,17 +3965,17 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00d7",
             "\1\u00d8",
             "\1\u00d9",
-            "\1\u00da\6\uffff\1\u00db",
+            "\1\u00da",
+            "\1\u00db",
             "\1\u00dc",
-            "\1\u00dd",
-            "",
-            "\1\u00de",
+            "\1\u00dd\6\uffff\1\u00de",
             "\1\u00df",
             "\1\u00e0",
-            "\1\u00e2\10\uffff\1\u00e1",
+            "",
+            "\1\u00e1",
+            "\1\u00e2",
             "\1\u00e3",
-            "\1\u00e4",
-            "\1\u00e5",
+            "\1\u00e5\10\uffff\1\u00e4",
             "\1\u00e6",
             "\1\u00e7",
             "\1\u00e8",
@@ -3871,63 +3985,61 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u00ec",
             "\1\u00ed",
             "\1\u00ee",
-            "\1\u00f0\12\uffff\1\u00ef",
+            "\1\u00ef",
+            "\1\u00f0",
             "\1\u00f1",
-            "\1\u00f2",
-            "\1\u00f3",
+            "\1\u00f3\12\uffff\1\u00f2",
             "\1\u00f4",
             "\1\u00f5",
             "\1\u00f6",
             "\1\u00f7",
             "\1\u00f8",
-            "\1\u00fa\4\uffff\1\u00f9",
+            "\1\u00f9",
+            "\1\u00fa",
             "\1\u00fb",
             "\1\u00fc",
-            "\1\u00fd",
-            "\1\u00fe",
+            "\1\u00fe\4\uffff\1\u00fd",
             "\1\u00ff",
             "\1\u0100",
-            "\1\u0101",
-            "\1\u0102",
-            "\1\u0103",
+            "\1\u0102\3\uffff\1\u0103\30\uffff\1\u0101",
             "\1\u0104",
             "\1\u0105",
             "\1\u0106",
-            "",
             "\1\u0107",
             "\1\u0108",
-            "",
             "\1\u0109",
             "\1\u010a",
             "\1\u010b",
             "\1\u010c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u010d",
+            "",
             "\1\u010e",
             "\1\u010f",
+            "",
             "\1\u0110",
             "\1\u0111",
             "\1\u0112",
-            "",
             "\1\u0113",
-            "\1\u0114",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0115",
+            "\1\u0116",
+            "\1\u0117",
             "\1\u0118",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0119",
+            "",
             "\1\u011a",
             "\1\u011b",
-            "\1\u011c\6\uffff\1\u011d",
-            "\1\u011e",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u011f",
-            "\1\u0120",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0121",
             "\1\u0122",
-            "\1\u0123",
-            "\1\u0124",
+            "\1\u0123\6\uffff\1\u0124",
             "\1\u0125",
             "\1\u0126",
             "\1\u0127",
@@ -3938,77 +4050,77 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u012c",
             "\1\u012d",
             "\1\u012e",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u012f",
             "\1\u0130",
-            "\1\u0132\24\uffff\1\u0131",
+            "\1\u0131",
+            "\1\u0132",
             "\1\u0133",
             "\1\u0134",
             "\1\u0135",
-            "\1\u0136",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0137",
-            "\1\u0138",
-            "\1\u0139",
+            "\1\u0139\24\uffff\1\u0138",
             "\1\u013a",
             "\1\u013b",
             "\1\u013c",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u013d",
             "\1\u013e",
             "\1\u013f",
             "\1\u0140",
             "\1\u0141",
             "\1\u0142",
             "\1\u0143",
-            "\1\u0144",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0145",
             "\1\u0146",
             "\1\u0147",
             "\1\u0148",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u014a\7\60",
+            "\1\u0149",
+            "\1\u014a",
+            "\1\u014b",
             "\1\u014c",
             "\1\u014d",
             "\1\u014e",
             "\1\u014f",
-            "\1\u0152\22\uffff\1\u0151\15\uffff\1\u0150",
-            "\1\u0153",
+            "\1\u0150",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0152\7\60",
             "\1\u0154",
             "\1\u0155",
             "\1\u0156",
             "\1\u0157",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0158",
+            "\1\u0159",
             "\1\u015a",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u015c",
-            "\1\u015d",
+            "\1\u015d\22\uffff\1\u015c\15\uffff\1\u015b",
             "\1\u015e",
             "\1\u015f",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0160",
+            "\1\u0161",
             "\1\u0162",
-            "\1\u0163",
-            "\1\u0164",
-            "\1\u0165",
-            "\1\u0166",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0165",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0167",
             "\1\u0168",
-            "",
             "\1\u0169",
             "\1\u016a",
-            "\1\u016b",
-            "\1\u016c",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u016d",
             "\1\u016e",
             "\1\u016f",
             "\1\u0170",
             "\1\u0171",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
             "\1\u0173",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0174",
             "\1\u0175",
             "\1\u0176",
             "\1\u0177",
@@ -4017,368 +4129,401 @@ public class InternalRsamlTextLexer extends Lexer {
             "\1\u017a",
             "\1\u017b",
             "\1\u017c",
-            "\1\u017d",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u017e",
-            "\1\u017f",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0180",
             "\1\u0181",
             "\1\u0182",
             "\1\u0183",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0184",
             "\1\u0185",
             "\1\u0186",
             "\1\u0187",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\17\60\1\u0189\12\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u018b",
+            "\1\u0188",
             "",
+            "\1\u0189",
+            "\1\u018a",
+            "\1\u018b",
             "\1\u018c",
             "\1\u018d",
             "\1\u018e",
-            "\1\u018f",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0190",
             "\1\u0191",
             "\1\u0192",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0194",
-            "\1\u0195",
+            "\12\60\7\uffff\17\60\1\u0194\12\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0196",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0197",
+            "\1\u0198",
             "\1\u0199",
             "\1\u019a",
             "\1\u019b",
             "\1\u019c",
             "\1\u019d",
-            "\1\u019e",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u019f",
             "\1\u01a0",
             "\1\u01a1",
             "\1\u01a2",
-            "\1\u01a3",
-            "",
-            "",
-            "\1\u01a4",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01a5",
             "\1\u01a6",
             "\1\u01a7",
             "\1\u01a8",
-            "",
-            "",
             "\1\u01a9",
             "\1\u01aa",
             "\1\u01ab",
             "\1\u01ac",
             "\1\u01ad",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ae",
             "\1\u01af",
             "\1\u01b0",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01b1\7\60",
+            "\1\u01b1",
+            "\1\u01b2",
+            "",
+            "",
             "\1\u01b3",
-            "\1\u01b4",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01b5",
             "\1\u01b6",
             "\1\u01b7",
+            "",
+            "",
             "\1\u01b8",
-            "",
             "\1\u01b9",
-            "",
             "\1\u01ba",
             "\1\u01bb",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01bc\7\60",
+            "\1\u01bc",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01be",
             "\1\u01bf",
-            "\1\u01c0",
-            "\1\u01c1",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01c0\7\60",
             "\1\u01c2",
             "\1\u01c3",
             "\1\u01c4",
             "\1\u01c5",
             "\1\u01c6",
             "\1\u01c7",
+            "",
             "\1\u01c8",
+            "",
             "\1\u01c9",
-            "",
             "\1\u01ca",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01cb\7\60",
             "\1\u01cd",
-            "",
             "\1\u01ce",
             "\1\u01cf",
             "\1\u01d0",
             "\1\u01d1",
             "\1\u01d2",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01d3\7\60",
+            "\1\u01d3",
+            "\1\u01d4",
             "\1\u01d5",
             "\1\u01d6",
-            "",
             "\1\u01d7",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01d8",
+            "",
             "\1\u01d9",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
+            "\1\u01dc",
             "",
-            "\1\u01da",
-            "\1\u01db",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01dc\21\60",
+            "\1\u01dd",
             "\1\u01de",
             "\1\u01df",
             "\1\u01e0",
             "\1\u01e1",
-            "\1\u01e2",
-            "\1\u01e3",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u01e2\7\60",
             "\1\u01e4",
             "\1\u01e5",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u01e7",
+            "\1\u01e6",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u01e9",
-            "\1\u01ea",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u01ec",
-            "\1\u01ed",
-            "\1\u01ee",
             "",
+            "",
+            "\1\u01ea",
+            "\1\u01eb",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\10\60\1\u01ec\21\60",
+            "\1\u01ee",
             "\1\u01ef",
             "\1\u01f0",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u01f1",
             "\1\u01f2",
             "\1\u01f3",
             "\1\u01f4",
             "\1\u01f5",
             "\1\u01f6",
             "\1\u01f7",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u01f9",
-            "\1\u01fa",
+            "\1\u01f8",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
+            "\1\u01fa",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01fc",
             "\1\u01fd",
-            "\1\u01fe",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u01ff",
             "\1\u0200",
             "\1\u0201",
+            "",
             "\1\u0202",
             "\1\u0203",
-            "\1\u0204",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "\1\u0205",
             "\1\u0206",
             "\1\u0207",
             "\1\u0208",
-            "",
-            "",
             "\1\u0209",
+            "\1\u020a",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u020b",
             "\1\u020c",
             "\1\u020d",
-            "\1\u020e",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u0210\31\uffff\1\u0211",
-            "\1\u0212",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0210",
+            "\1\u0211",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0213",
-            "",
             "\1\u0214",
             "\1\u0215",
             "\1\u0216",
             "\1\u0217",
-            "",
             "\1\u0218",
             "\1\u0219",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u021a",
             "\1\u021b",
+            "",
+            "",
             "\1\u021c",
-            "\1\u021d",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u021e",
             "\1\u021f",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u0220",
             "\1\u0221",
-            "\1\u0222",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u0223",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0223\31\uffff\1\u0224",
+            "\1\u0225",
             "\1\u0226",
-            "\1\u0227",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u0229\7\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0227",
+            "\1\u0228",
+            "\1\u0229",
+            "\1\u022a",
+            "",
+            "\1\u022b",
             "\1\u022c",
             "\1\u022d",
             "\1\u022e",
-            "",
             "\1\u022f",
-            "\1\u0230",
-            "",
-            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0231",
             "\1\u0232",
-            "",
             "\1\u0233",
+            "\1\u0234",
+            "\1\u0235",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0236",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0237",
             "\1\u0238",
+            "",
+            "\1\u0239",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u023b",
             "\1\u023c",
+            "\1\u023d",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u023e",
-            "\1\u023f",
-            "\1\u0240",
-            "",
-            "\1\u0241",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\22\60\1\u023f\7\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0242",
             "\1\u0243",
             "\1\u0244",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0246",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u024b",
+            "\1\u0245",
+            "\1\u0246",
+            "",
+            "",
+            "\1\u0247",
+            "\1\u0248",
+            "",
+            "\1\u0249",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u024c",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u024e",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u024f",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0251",
             "\1\u0252",
             "",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0254",
+            "\1\u0255",
+            "\1\u0256",
             "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0257",
             "\1\u0258",
             "\1\u0259",
+            "\1\u025a",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u025b",
             "\1\u025c",
-            "\1\u025d",
-            "",
-            "",
-            "\1\u025e",
-            "",
-            "\1\u025f",
-            "",
-            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\1\u0261",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0260",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
-            "\1\u0262",
-            "\1\u0263",
             "\1\u0264",
             "\1\u0265",
-            "\1\u0266",
-            "\1\u0267",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0268",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "",
             "\1\u026a",
             "\1\u026b",
             "",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
             "\1\u026d",
-            "\1\u026e",
             "",
-            "\1\u026f",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0270",
             "\1\u0271",
             "\1\u0272",
-            "",
-            "\1\u0273",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0274",
             "\1\u0275",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u0276",
+            "",
+            "",
             "\1\u0277",
             "",
             "\1\u0278",
-            "\1\u0279",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u027a",
+            "",
+            "\1\u027b",
             "\1\u027c",
             "\1\u027d",
             "\1\u027e",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u027f",
             "\1\u0280",
             "\1\u0281",
             "",
-            "\1\u0282",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "\1\u0283",
+            "",
+            "",
+            "",
             "\1\u0284",
             "\1\u0285",
-            "\1\u0286",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u0287",
+            "\1\u0288",
+            "",
+            "\1\u0289",
+            "",
             "",
             "\1\u028a",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u028b",
+            "\1\u028c",
             "",
-            "",
+            "\1\u028d",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
+            "\1\u028f",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\1\u0291",
+            "",
             "\1\u0292",
-            "",
+            "\1\u0293",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
-            "",
-            "",
-            "",
-            "",
-            "",
-            "",
+            "\1\u0296",
             "\1\u0297",
+            "\1\u0298",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u029a",
+            "\1\u029b",
+            "\1\u029c",
+            "",
+            "\1\u029d",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u029f",
+            "\1\u02a0",
+            "\1\u02a1",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u02a5",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u02ab",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\1\u02ad",
+            "\1\u02ae",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             "",
             "",
             "",
             "",
-            "\1\u0299",
+            "",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "\1\u02b4",
+            "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
+            "",
+            "",
+            "",
+            "",
+            "",
+            "\1\u02b6",
             "",
             "\12\60\7\uffff\32\60\4\uffff\1\60\1\uffff\32\60",
             ""
@@ -4414,23 +4559,13 @@ public class InternalRsamlTextLexer extends Lexer {
             this.transition = DFA16_transition;
         }
         public String getDescription() {
-            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
+            return "1:1: Tokens : ( T__11 | T__12 | T__13 | T__14 | T__15 | T__16 | T__17 | T__18 | T__19 | T__20 | T__21 | T__22 | T__23 | T__24 | T__25 | T__26 | T__27 | T__28 | T__29 | T__30 | T__31 | T__32 | T__33 | T__34 | T__35 | T__36 | T__37 | T__38 | T__39 | T__40 | T__41 | T__42 | T__43 | T__44 | T__45 | T__46 | T__47 | T__48 | T__49 | T__50 | T__51 | T__52 | T__53 | T__54 | T__55 | T__56 | T__57 | T__58 | T__59 | T__60 | T__61 | T__62 | T__63 | T__64 | T__65 | T__66 | T__67 | T__68 | T__69 | T__70 | T__71 | T__72 | T__73 | T__74 | T__75 | T__76 | T__77 | T__78 | T__79 | T__80 | T__81 | T__82 | T__83 | T__84 | T__85 | T__86 | T__87 | T__88 | T__89 | T__90 | T__91 | T__92 | T__93 | T__94 | T__95 | T__96 | T__97 | T__98 | T__99 | T__100 | T__101 | T__102 | T__103 | T__104 | T__105 | T__106 | T__107 | T__108 | T__109 | T__110 | T__111 | T__112 | T__113 | T__114 | T__115 | T__116 | T__117 | T__118 | T__119 | RULE_ID | RULE_NUMBER | RULE_STRING | RULE_ML_COMMENT | RULE_SL_COMMENT | RULE_WS | RULE_ANY_OTHER );";
         }
         public int specialStateTransition(int s, IntStream _input) throws NoViableAltException {
             IntStream input = _input;
         	int _s = s;
             switch ( s ) {
                     case 0 : 
-                        int LA16_39 = input.LA(1);
-
-                        s = -1;
-                        if ( ((LA16_39>='\u0000' && LA16_39<='\uFFFF')) ) {s = 119;}
-
-                        else s = 42;
-
-                        if ( s>=0 ) return s;
-                        break;
-                    case 1 : 
                         int LA16_0 = input.LA(1);
 
                         s = -1;
@@ -4517,6 +4652,16 @@ public class InternalRsamlTextLexer extends Lexer {
                         else if ( ((LA16_0>='\t' && LA16_0<='\n')||LA16_0=='\r'||LA16_0==' ') ) {s = 41;}
 
                         else if ( ((LA16_0>='\u0000' && LA16_0<='\b')||(LA16_0>='\u000B' && LA16_0<='\f')||(LA16_0>='\u000E' && LA16_0<='\u001F')||LA16_0=='!'||(LA16_0>='#' && LA16_0<='+')||(LA16_0>=':' && LA16_0<='@')||(LA16_0>='[' && LA16_0<=']')||LA16_0=='`'||LA16_0=='|'||(LA16_0>='~' && LA16_0<='\uFFFF')) ) {s = 42;}
+
+                        if ( s>=0 ) return s;
+                        break;
+                    case 1 : 
+                        int LA16_39 = input.LA(1);
+
+                        s = -1;
+                        if ( ((LA16_39>='\u0000' && LA16_39<='\uFFFF')) ) {s = 120;}
+
+                        else s = 42;
 
                         if ( s>=0 ) return s;
                         break;
