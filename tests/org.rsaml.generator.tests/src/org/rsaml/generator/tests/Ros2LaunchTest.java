@@ -113,7 +113,7 @@ class Ros2LaunchTest {
     private static void tune(Path root, ExecutionPlan plan, Map<Release, Long> periodsNs) throws Exception {
         Release r = plan.releases().stream().filter(x -> x.module().releases().size() == 1)
                 .max(java.util.Comparator.comparingLong(Release::periodNs)).orElseThrow();
-        String node = Ros2Test.nodes(root).get(r.module().qualifiedName());
+        String node = Ros2Test.nodes(root.getParent()).get(r.module().qualifiedName());
         Path file = root.resolve("config/" + root.getFileName() + ".params.yaml");
         List<String> lines = new ArrayList<>(Files.readAllLines(file));
         int section = lines.indexOf(node + ":");
@@ -489,7 +489,7 @@ class Ros2LaunchTest {
     }
 
     /** Generates, builds, launches and checks one model; the launch's output. */
-    private static String run(Path model, String name, Path tmp, UserCode code) throws Exception {
+    static String run(Path model, String name, Path tmp, UserCode code) throws Exception {
         Architecture arch = ModelLoader.load(model, name).architecture();
         String pkg = Names.snake(arch.getName());
         Path src = tmp.resolve("src");
@@ -522,7 +522,7 @@ class Ros2LaunchTest {
         Path install = Ros2Jazzy.colconBuild(src, tmp);
 
         // Launch, wait for every node, let it run, interrupt it.
-        Map<String, String> nodes = Ros2Test.nodes(src.resolve(pkg));
+        Map<String, String> nodes = Ros2Test.nodes(src);
         Path log = tmp.resolve("launch.log");
         int domain = 1 + (int) (ProcessHandle.current().pid() % 100);
         ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + pkg + ".launch.py simulated_load:=" + LOAD + remaps, install))

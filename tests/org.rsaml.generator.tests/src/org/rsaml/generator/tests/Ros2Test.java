@@ -469,9 +469,11 @@ class Ros2Test {
         return nodes;
     }
 
+    /** The generated base classes of the nodes under root: a package, or a workspace of packages (any package layout). */
     private static List<Path> bases(Path root) throws Exception {
-        try (Stream<Path> s = Files.walk(root.resolve("gen"))) {
-            return s.filter(f -> f.toString().endsWith("Base.hpp")).sorted().toList();
+        try (Stream<Path> s = Files.walk(root)) {
+            return s.filter(f -> f.toString().endsWith("Base.hpp") && f.getParent().getParent().getFileName().toString().equals("gen"))
+                    .sorted().toList();
         }
     }
 

@@ -98,6 +98,20 @@ class RuleMessagesTest {
     }
 
     @Test
+    void aLayerWhosePackageNameIsUnusableSaysWhyAndNamesTheLayerItClashesWith() throws Exception {
+        assertEquals(sorted(List.of(
+                "robot/Drivers: Layer 'Drivers' would put its nodes in the same ROS 2 package as layer 'drivers' (the package name ending"
+                        + " _drivers, packages perLayer); rename one of them",
+                "robot/drivers: Layer 'drivers' would put its nodes in the same ROS 2 package as layer 'Drivers' (the package name ending"
+                        + " _drivers, packages perLayer); rename one of them",
+                "robot/interfaces: Layer 'interfaces' would put its nodes in the package ending _interfaces, the package of the model's"
+                        + " message types (packages perLayer); rename the layer",
+                "robot/\u5bfc\u822a: Layer '\u5bfc\u822a' has no ASCII letter or digit in its name to make the name of its nodes' ROS 2 package"
+                        + " from (packages perLayer); a ROS package name is lower-case letters, digits and underscores: rename the layer")),
+                sorted(messages("rule-RSA-29-violated.rsaml", "RSA-29")));
+    }
+
+    @Test
     void timesTheGeneratedCodeCannotHoldNameTheLimit() throws Exception {
         List<String> messages = messages("rule-RSA-20-violated.rsaml", "RSA-20");
         String limit = "; times may be at most 1152921504606846976 ns (2^60, about 36.5 years) and a period above 0 at least 1 ns";

@@ -5,6 +5,7 @@
 package org.rsaml.generator.internal.ros2
 
 import java.util.Set
+import org.rsaml.generator.internal.Names
 import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cxx.CxxNames
 
@@ -143,6 +144,156 @@ class Ros2CmakeTemplate extends Ros2Template {
 	def private managed() {
 		!rosNames.managedModules.empty
 	}
+
+	/**
+	 * The CMakeLists.txt of a package of nodes (packages perLayer or perProcessor): its nodes as
+	 * components of the shared library ${PROJECT_NAME} and an executable each, on the scheduling
+	 * runtime of the runtime package.
+	 */
+	def nodesCmake(Ros2Packages.NodePackage np) {
+		val runtime = context.packages.runtime
+		val lifecycle = np.modules.exists[rosNames.managed(it)]
+		val messages = context.messagePackages(np.modules)
+		'''
+			# «banner»
+			# The nodes of «Names.comment(np.holds)»: each an rclcpp component of the shared library
+			# ${PROJECT_NAME} and an executable of its own, on the scheduling runtime of «runtime».
+			# Your additions go in user.cmake, included below.
+			cmake_minimum_required(VERSION 3.8)
+			project(«np.name» LANGUAGES CXX)
+
+			if(NOT CMAKE_CXX_STANDARD)
+			  set(CMAKE_CXX_STANDARD 17)
+			  set(CMAKE_CXX_STANDARD_REQUIRED ON)
+			endif()
+
+			find_package(ament_cmake REQUIRED)
+			find_package(rclcpp REQUIRED)
+			find_package(rclcpp_components REQUIRED)
+			«IF lifecycle»
+				find_package(rclcpp_lifecycle REQUIRED)
+			«ENDIF»
+			find_package(Threads REQUIRED)
+			find_package(«runtime» REQUIRED)
+			«FOR p : messages»
+				find_package(«p» REQUIRED)
+			«ENDFOR»
+
+			add_library(${PROJECT_NAME} SHARED
+			  «FOR m : np.modules»
+			  	gen/«m.layerId»/«m.className»Component.cpp
+			  	src/«m.layerId»/«m.className».cpp
+			  «ENDFOR»
+			)
+			target_include_directories(${PROJECT_NAME} PUBLIC gen src)
+			target_link_libraries(${PROJECT_NAME} PUBLIC «runtime»::«runtime» rclcpp::rclcpp«IF lifecycle» rclcpp_lifecycle::rclcpp_lifecycle«ENDIF» Threads::Threads«FOR p : messages» ${«p»_TARGETS}«ENDFOR» PRIVATE rclcpp_components::component)
+			rclcpp_components_register_nodes(${PROJECT_NAME}
+			  «FOR m : np.modules»
+			  	"«context.plugin(m)»"
+			  «ENDFOR»
+			)
+
+			# An executable per node, scheduled as in the container of «runtime».
+			«FOR m : np.modules»
+				add_executable(«m.executable» gen/«m.layerId»/«m.mainName».cpp)
+				target_link_libraries(«m.executable» PRIVATE ${PROJECT_NAME})
+			«ENDFOR»
+
+			include(user.cmake)
+
+			install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
+			install(TARGETS«FOR m : np.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
+
+			ament_package()
+		'''
+	}
+
+	/**
+	 * The CMakeLists.txt of the runtime package (packages perLayer or perProcessor): the scheduling
+	 * runtime as the shared library ${PROJECT_NAME}, exported with its headers to the packages of
+	 * nodes, which must share it in a process (the container finds their releases through it); the
+	 * component container; the lifecycle manager when some node is managed.
+	 */
+	def runtimeCmake() '''
+		# «banner»
+		# The scheduling runtime of the nodes' packages (the shared library ${PROJECT_NAME}, which they
+		# link: the nodes of a container share it), the component container of the launch files«IF managed»
+		# and the lifecycle manager«ENDIF». Your additions go in user.cmake, included below.
+		cmake_minimum_required(VERSION 3.8)
+		project(«context.packages.runtime» LANGUAGES CXX)
+
+		if(NOT CMAKE_CXX_STANDARD)
+		  set(CMAKE_CXX_STANDARD 17)
+		  set(CMAKE_CXX_STANDARD_REQUIRED ON)
+		endif()
+
+		find_package(ament_cmake REQUIRED)
+		find_package(rclcpp REQUIRED)
+		find_package(rclcpp_components REQUIRED)
+		«IF managed»
+			find_package(lifecycle_msgs REQUIRED)
+		«ENDIF»
+		find_package(Threads REQUIRED)
+
+		add_library(${PROJECT_NAME} SHARED gen/rsaml/scheduling.cpp)
+		target_include_directories(${PROJECT_NAME} PUBLIC
+		  "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/gen>" "$<INSTALL_INTERFACE:include/${PROJECT_NAME}>")
+		target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp Threads::Threads)
+
+		# The component container of the launch file: each timed release on a thread at its priority.
+		add_executable(«rosNames.containerExecutable» gen/rsaml/container.cpp)
+		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
+
+		«IF managed»
+			# The lifecycle manager of the launch files: configures and activates the managed nodes.
+			add_executable(«rosNames.lifecycleManagerExecutable» gen/rsaml/lifecycle_manager.cpp)
+			target_link_libraries(«rosNames.lifecycleManagerExecutable» PRIVATE rclcpp::rclcpp ${lifecycle_msgs_TARGETS})
+
+		«ENDIF»
+		include(user.cmake)
+
+		install(DIRECTORY gen/rsaml DESTINATION include/${PROJECT_NAME} FILES_MATCHING PATTERN "*.hpp")
+		install(TARGETS ${PROJECT_NAME} EXPORT export_${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
+		install(TARGETS «rosNames.containerExecutable»«IF managed» «rosNames.lifecycleManagerExecutable»«ENDIF» DESTINATION lib/${PROJECT_NAME})
+
+		ament_export_targets(export_${PROJECT_NAME} HAS_LIBRARY_TARGET)
+		ament_export_dependencies(rclcpp)
+		ament_package()
+	'''
+
+	/**
+	 * The CMakeLists.txt of the package named after the architecture when the nodes are in packages
+	 * of their own: the launch files and the parameters file.
+	 */
+	def systemCmake() '''
+		# «banner»
+		# The launch files and the parameters file of the architecture; the nodes are in the packages
+		# «FOR np : context.packages.nodePackages SEPARATOR ", "»«np.name»«ENDFOR», the container«IF managed» and the lifecycle manager«ENDIF» in
+		# «context.packages.runtime». Your additions go in user.cmake, included below.
+		cmake_minimum_required(VERSION 3.8)
+		project(«pkg» NONE)
+
+		find_package(ament_cmake REQUIRED)
+
+		include(user.cmake)
+
+		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
+
+		ament_package()
+	'''
+
+	def runtimeUserCmake() '''
+		# «Templates.USER_OWNED» CMakeLists.txt includes it before
+		# ament_package(). The scheduling runtime is the shared library ${PROJECT_NAME}.
+	'''
+
+	def systemUserCmake() '''
+		# «Templates.USER_OWNED» CMakeLists.txt includes it before
+		# ament_package(). This package holds the launch files and the parameters file; install more of
+		# yours here, e.g.
+		#   install(DIRECTORY maps DESTINATION share/${PROJECT_NAME})
+		# The nodes are built in their own packages: what they need goes in their user.cmake.
+	'''
 
 	def interfacesUserCmake() '''
 		# «Templates.USER_OWNED» CMakeLists.txt includes it before

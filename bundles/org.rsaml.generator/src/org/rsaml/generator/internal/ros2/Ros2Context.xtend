@@ -32,8 +32,10 @@ class Ros2Context {
 	public val ReleaseBounds bounds
 	/** The first line of every regenerated file. */
 	public val String banner
-	/** The nodes' package (and C++ namespace). */
+	/** The package named after the architecture (and C++ namespace): the launch files', and with packages single every node's. */
 	public val String pkg
+	/** Which package each node goes into (Architecture.packages). */
+	public val Ros2Packages packages
 
 	new(ExecutionPlan plan, String project, OutputContext output) {
 		this.plan = plan
@@ -41,6 +43,7 @@ class Ros2Context {
 		this.rosNames = new Ros2Names(plan, names)
 		this.output = output
 		this.pkg = names.project
+		this.packages = new Ros2Packages(plan, names)
 		this.banner = Templates.banner(plan)
 		this.bounds = ReleaseBounds.of(plan)
 	}
@@ -64,13 +67,23 @@ class Ros2Context {
 
 	/** ROS packages the nodes use, sorted: std_msgs, the interfaces package, packages named on ports. */
 	def messagePackages() {
-		val packages = new TreeSet<String>
-		for (m : plan.modules) {
+		messagePackages(plan.modules)
+	}
+
+	/** ROS packages the nodes of these modules use, sorted. */
+	def messagePackages(Iterable<PlannedModule> modules) {
+		val used = new TreeSet<String>
+		for (m : modules) {
 			for (p : m.ports) {
-				packages += rosNames.rosPackage(p)
+				used += rosNames.rosPackage(p)
 			}
 		}
-		packages
+		used
+	}
+
+	/** The package of a module's node. */
+	def nodePackage(PlannedModule m) {
+		packages.of(m).name
 	}
 
 	/** The architect's package.user.xml of a package, or the defaults it starts with. */

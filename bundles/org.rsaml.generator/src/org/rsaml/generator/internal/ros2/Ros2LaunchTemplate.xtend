@@ -179,13 +179,13 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        			# The modules no processor names.
 		        		«ENDIF»
 		        		ComposableNodeContainer(
-		        		    name=«py(c.name)», namespace=namespace, package=«py(pkg)»,
+		        		    name=«py(c.name)», namespace=namespace, package=«py(context.packages.runtime)»,
 		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«IF c.core >= 0»
 		        		    prefix=«prefix(c.processor, c.core)»,«ENDIF»«IF hosted»
 		        		    condition=«onHost(c.processor)»,«ENDIF»
 		        		    composable_node_descriptions=[
 		        		        «FOR m : c.modules»
-		        		        	ComposableNode(package=«py(pkg)», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
+		        		        	ComposableNode(package=«py(context.nodePackage(m))», plugin=«py(context.plugin(m))», name=«py(m.rosNode)»,
 		        		        	               namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap»,
 		        		        	               extra_arguments=[{'use_intra_process_comms': True}]),
 		        		        «ENDFOR»
@@ -193,7 +193,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	«ENDFOR»
 		        «ELSE»
 		        	«FOR m : plan.modules»
-		        		Node(package=«py(pkg)», executable=«py(m.executable)», name=«py(m.rosNode)»,
+		        		Node(package=«py(context.nodePackage(m))», executable=«py(m.executable)», name=«py(m.rosNode)»,
 		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.core >= 0»,
 		        		     prefix=«prefix(m.processor, m.core)»«ENDIF»«IF hosted»,
 		        		     condition=«onHost(m.processor)»«ENDIF»),
@@ -201,7 +201,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        «ENDIF»
 		        «FOR c : rosNames.containers.filter[modules.exists[managed]]»
 		        	# The managed nodes«IF c.processor !== null» of processor '«Names.comment(c.processor.name)»'«ENDIF»: configured, then activated, once they are up.
-		        	Node(package=«py(pkg)», executable=«py(rosNames.lifecycleManagerExecutable)», name=«py(c.name.replaceFirst("_container$", "") + "_lifecycle_manager")»,
+		        	Node(package=«py(context.packages.runtime)», executable=«py(rosNames.lifecycleManagerExecutable)», name=«py(c.name.replaceFirst("_container$", "") + "_lifecycle_manager")»,
 		        	     namespace=namespace, output='screen',
 		        	     parameters=[{'node_names': [«FOR m : c.modules.filter[managed] SEPARATOR ", "»«py(m.rosNode)»«ENDFOR»]}]«IF hosted»,
 		        	     condition=«onHost(c.processor)»«ENDIF»),

@@ -92,6 +92,77 @@ class Ros2PackageTemplate extends Ros2Template {
 		'''
 	}
 
+	/** The manifest of the package named after the architecture when the nodes are in packages of their own: the launch files and the parameters file. */
+	def systemPackageXml(Ros2Manifest manifest) {
+		val description = if (doc(plan.description).empty) "The RsaML architecture " + plan.name else plan.description
+		val run = new TreeSet<String>
+		run += context.packages.runtime
+		context.packages.nodePackages.forEach[run += name]
+		run += #["launch", "launch_ros", "ros2launch"]
+		manifestXml(pkg, doc(description) + " (launch files and parameters)", manifest, #[], run)
+	}
+
+	/** The manifest of the runtime package: the scheduling runtime, the component container, the lifecycle manager. */
+	def runtimePackageXml(Ros2Manifest manifest) {
+		val depends = new TreeSet<String>(#{"rclcpp", "rclcpp_components"})
+		if (!context.rosNames.managedModules.empty) {
+			depends += "lifecycle_msgs"
+		}
+		manifestXml(context.packages.runtime, "The scheduling runtime and component container of the RsaML architecture " + doc(plan.name),
+			manifest, depends, #[])
+	}
+
+	/** The manifest of a package of nodes: what its nodes use, and the runtime package. */
+	def nodesPackageXml(Ros2Packages.NodePackage np, Ros2Manifest manifest) {
+		val depends = new TreeSet<String>(#{"rclcpp", "rclcpp_components", context.packages.runtime})
+		depends += context.messagePackages(np.modules)
+		if (np.modules.exists[rosNames.managed(it)]) {
+			depends += "rclcpp_lifecycle"
+		}
+		manifestXml(np.name, "The nodes of " + np.holds + " of the RsaML architecture " + doc(plan.name), manifest, depends, #[])
+	}
+
+	/** A package.xml of ament_cmake with these dependencies and what the architect's package.user.xml adds. */
+	def private manifestXml(String name, String description, Ros2Manifest manifest, Iterable<String> depends, Iterable<String> execDepends) {
+		val generated = <String>newHashSet
+		generated += "buildtool_depend ament_cmake"
+		depends.forEach[generated += "depend " + it]
+		execDepends.forEach[generated += "exec_depend " + it]
+		'''
+			<?xml version="1.0"?>
+			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
+			<!-- «Names.xml(banner)» -->
+			<!-- Version, maintainers, licences, URLs, authors and further dependencies: «Ros2Manifest.FILE» (yours). -->
+			<package format="3">
+			  <name>«name»</name>
+			  <version>«manifest.version»</version>
+			  <description>«Names.xml(description)»</description>
+			  «people(manifest)»
+
+			  <buildtool_depend>ament_cmake</buildtool_depend>
+			  «IF !depends.empty»
+
+			  	«FOR p : depends»
+			  		<depend>«p»</depend>
+			  	«ENDFOR»
+			  «ENDIF»
+			  «IF !execDepends.empty»
+
+			  	«FOR p : execDepends»
+			  		<exec_depend>«p»</exec_depend>
+			  	«ENDFOR»
+			  «ENDIF»
+			  «FOR d : manifest.dependencies(generated)»
+			  	«d»
+			  «ENDFOR»
+
+			  <export>
+			    <build_type>ament_cmake</build_type>
+			  </export>
+			</package>
+		'''
+	}
+
 	def interfacesPackageXml(Ros2Manifest manifest, Set<String> deps) {
 		val generated = <String>newHashSet
 		generated += "buildtool_depend ament_cmake"

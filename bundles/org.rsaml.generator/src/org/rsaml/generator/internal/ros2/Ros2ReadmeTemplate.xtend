@@ -23,7 +23,7 @@ class Ros2ReadmeTemplate extends Ros2Template {
 
 		ament_cmake packages of the RsaML architecture '«doc(plan.name)»', created by
 		`rsaml generate --target ros2`, for ROS 2 Humble, Jazzy, Kilted and Rolling: a node per module,
-		each an rclcpp component of the library `«pkg»` and an executable of its own, a timer per
+		each an rclcpp component of the library `«IF context.packages.single»«pkg»«ELSE»of its package«ENDIF»` and an executable of its own, a timer per
 		periodic function, a topic per group of connected ports. Put this directory in a colcon
 		workspace's `src/`, then:
 
@@ -35,6 +35,17 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		ros2 launch «pkg» «pkg».launch.py namespace:=robot2 use_sim_time:=true
 		```
 
+		«IF !context.packages.single»
+			The nodes are in packages of their own (`packages «plan.architecture.packages.literal»` in the model):
+			«FOR np : context.packages.nodePackages SEPARATOR ", "»`«np.name»` («doc(np.holds)»)«ENDFOR»; each builds its nodes
+			as components of its library and an executable each, and depends only on what they use. `«context.packages.runtime»`
+			holds the scheduling runtime (a shared library every node links, so that the nodes of a container
+			share it), the component container«IF !rosNames.managedModules.empty» and the lifecycle manager«ENDIF»; `«pkg»` the launch files and the
+			parameters file«IF !context.generatedMessages.empty»; `«rosNames.interfacesPackage»` the message types«ENDIF». The model's `packages` chooses the layout
+			(`single`, `perLayer`, `perProcessor`). Generating this directory again with another layout is
+			refused while your classes are in the old packages, with the list of files to move.
+
+		«ENDIF»
 		Topics are relative, so `namespace:=...` isolates a second robot.«IF !rosNames.topicArguments.empty» The topics the model names
 		(«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»`«t.key»`«ENDFOR») take another name with a launch argument each
 		(«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»`«t.value»:=NAME`«ENDFOR»), in every node.«ENDIF» The model's periods, minimum

@@ -43,6 +43,7 @@ class Ros2Target implements TargetGenerator {
 		val warnings = <String>newArrayList
 		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace")
 		val context = new Ros2Context(plan, project, output)
+		context.packages.checkUserCodeIsHere(plan, context.names, output)
 		val files = new Ros2Files(context)
 		for (cycle : plan.reactiveCycles) {
 			warnings += "modules " + cycle.map[qualifiedName].join(" -> ")
@@ -83,31 +84,51 @@ class Ros2Files {
 		val launch = new Ros2LaunchTemplate(context)
 		val user = new Ros2UserTemplate(context)
 		val files = <GeneratedFile>newArrayList
-		files += GeneratedFile.generated(pkg + "/package.xml", manifests.packageXml(context.manifest(pkg)))
+		val packages = context.packages
+		if (packages.single) {
+			files += GeneratedFile.generated(pkg + "/package.xml", manifests.packageXml(context.manifest(pkg)))
+			files += GeneratedFile.generated(pkg + "/CMakeLists.txt", cmake.cmake)
+		} else {
+			files += GeneratedFile.generated(pkg + "/package.xml", manifests.systemPackageXml(context.manifest(pkg)))
+			files += GeneratedFile.generated(pkg + "/CMakeLists.txt", cmake.systemCmake)
+			val rpkg = packages.runtime
+			files += GeneratedFile.generated(rpkg + "/package.xml", manifests.runtimePackageXml(context.manifest(rpkg)))
+			files += GeneratedFile.user(rpkg + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(rpkg))
+			files += GeneratedFile.generated(rpkg + "/CMakeLists.txt", cmake.runtimeCmake)
+			files += GeneratedFile.user(rpkg + "/user.cmake", cmake.runtimeUserCmake)
+			for (np : packages.nodePackages) {
+				files += GeneratedFile.generated(np.name + "/package.xml", manifests.nodesPackageXml(np, context.manifest(np.name)))
+				files += GeneratedFile.user(np.name + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(np.name))
+				files += GeneratedFile.generated(np.name + "/CMakeLists.txt", cmake.nodesCmake(np))
+				files += GeneratedFile.user(np.name + "/user.cmake", cmake.userCmake)
+			}
+		}
 		files += GeneratedFile.user(pkg + "/" + Ros2Manifest.FILE, Ros2Manifest.initialText(pkg))
-		files += GeneratedFile.generated(pkg + "/CMakeLists.txt", cmake.cmake)
-		files += GeneratedFile.user(pkg + "/user.cmake", cmake.userCmake)
+		files += GeneratedFile.user(pkg + "/user.cmake", if (packages.single) cmake.userCmake else cmake.systemUserCmake)
 		val params = new Ros2ParamsTemplate(context)
 		files += GeneratedFile.user(params.path, params.params)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launch.composed)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launch.processes)
 		val launchTest = new Ros2LaunchTestTemplate(context)
 		files += GeneratedFile.generated(pkg + "/" + launchTest.path, launchTest.launchTest)
+		val rpkg = packages.runtime
 		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {
-			files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
+			files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, runtimeFile(f))
 		}
 		if (!rosNames.managedModules.empty) {
 			for (f : #["lifecycle.hpp", "lifecycle_manager.cpp"]) {
-				files += GeneratedFile.generated(pkg + "/gen/rsaml/" + f, runtimeFile(f))
+				files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, runtimeFile(f))
 			}
 		}
-		files += GeneratedFile.generated(pkg + "/gen/rsaml/realtime.hpp", "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
+		files += GeneratedFile.generated(rpkg + "/gen/rsaml/realtime.hpp", "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
 		for (m : context.plan.modules) {
-			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", node.base(m))
-			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.className + "Component.cpp", component.component(m))
-			files += GeneratedFile.generated(pkg + "/gen/" + m.layerId + "/" + m.mainName + ".cpp", component.nodeMain(m))
-			files += GeneratedFile.user(pkg + "/src/" + m.layerId + "/" + m.className + ".hpp", user.header(m), m.hooks, m.stubs, CxxCode.IDENTIFIERS)
-			files += GeneratedFile.user(pkg + "/src/" + m.layerId + "/" + m.className + ".cpp", user.source(m))
+			val npkg = context.nodePackage(m)
+			files += GeneratedFile.generated(npkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", node.base(m))
+			files += GeneratedFile.generated(npkg + "/gen/" + m.layerId + "/" + m.className + "Component.cpp", component.component(m))
+			files += GeneratedFile.generated(npkg + "/gen/" + m.layerId + "/" + m.mainName + ".cpp", component.nodeMain(m))
+			val sources = Ros2Packages.userFiles(npkg, names, m)
+			files += GeneratedFile.user(sources.get(0), user.header(m), m.hooks, m.stubs, CxxCode.IDENTIFIERS)
+			files += GeneratedFile.user(sources.get(1), user.source(m))
 		}
 		val messages = context.generatedMessages
 		if (!messages.empty) {

@@ -1,0 +1,62 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * The package layouts on a real ROS 2 ({@link Ros2Jazzy}): a model with {@code packages perLayer}
+ * and with {@code packages perProcessor}, generated, built with colcon (the runtime package before
+ * the packages of nodes that link it, the package of the launch files last) and run as
+ * {@link Ros2LaunchTest} runs the default layout: every node starts, loaded by a container of the
+ * runtime package from its own package; every release runs at its period (one of them at the period
+ * the parameters file of the launch files' package gives it); messages reach every connected port at
+ * their publisher's rate; the topics the model names exist; everything exits cleanly on SIGINT. By
+ * default the mobile base of examples/mobile-base-latency.rsaml in each of the two layouts;
+ * {@code -Drsaml.ros2.layouts=all} runs every example without errors in both.
+ */
+class Ros2LayoutLaunchTest {
+
+    static final List<String> LAYOUTS = List.of("perLayer", "perProcessor");
+
+    static List<Arguments> runs() throws Exception {
+        List<String> examples = "all".equals(Tools.option("rsaml.ros2.layouts")) ? Tools.cleanExamples() : List.of(Ros2LaunchTest.TUNED);
+        List<Arguments> runs = new ArrayList<>();
+        for (String layout : LAYOUTS) {
+            for (String example : examples) {
+                runs.add(Arguments.of(layout, example));
+            }
+        }
+        return runs;
+    }
+
+    private static final Pattern ARCHITECTURE = Pattern.compile("<rsaml:Architecture\\s");
+
+    @ParameterizedTest
+    @MethodSource("runs")
+    void eachLayoutBuildsStartsAndRuns(String layout, String example, @TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String text = Files.readString(Tools.example(example));
+        Matcher m = ARCHITECTURE.matcher(text);
+        assertTrue(m.find(), example + " has no architecture element");
+        Path model = tmp.resolve(example);
+        Files.writeString(model, text.substring(0, m.end()) + "packages=\"" + layout + "\" " + text.substring(m.end()));
+        Ros2LaunchTest.run(model, example, tmp);
+    }
+}
