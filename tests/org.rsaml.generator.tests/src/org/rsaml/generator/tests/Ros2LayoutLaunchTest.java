@@ -27,15 +27,16 @@ import org.junit.jupiter.params.provider.MethodSource;
  * runtime package from its own package; every release runs at its period (one of them at the period
  * the parameters file of the launch files' package gives it); messages reach every connected port at
  * their publisher's rate; the topics the model names exist; everything exits cleanly on SIGINT. By
- * default the mobile base of examples/mobile-base-latency.rsaml in each of the two layouts;
- * {@code -Drsaml.ros2.layouts=all} runs every example without errors in both.
+ * default the mobile base of examples/mobile-base-latency.rsaml in each of the two layouts; the
+ * models {@code -Drsaml.ros2.examples} chooses for {@link Ros2LaunchTest} ({@code all}: every example
+ * without errors, and its own models) run in both layouts too.
  */
 class Ros2LayoutLaunchTest {
 
     static final List<String> LAYOUTS = List.of("perLayer", "perProcessor");
 
     static List<Arguments> runs() throws Exception {
-        List<String> examples = "all".equals(Tools.option("rsaml.ros2.layouts")) ? Tools.cleanExamples() : List.of(Ros2LaunchTest.TUNED);
+        List<String> examples = Tools.option("rsaml.ros2.examples").isBlank() ? List.of(Ros2LaunchTest.TUNED) : Ros2LaunchTest.models();
         List<Arguments> runs = new ArrayList<>();
         for (String layout : LAYOUTS) {
             for (String example : examples) {
@@ -52,10 +53,10 @@ class Ros2LayoutLaunchTest {
     void eachLayoutBuildsStartsAndRuns(String layout, String example, @TempDir Path tmp) throws Exception {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
-        String text = Files.readString(Tools.example(example));
+        String text = Files.readString(Ros2Test.model(example));
         Matcher m = ARCHITECTURE.matcher(text);
         assertTrue(m.find(), example + " has no architecture element");
-        Path model = tmp.resolve(example);
+        Path model = tmp.resolve(Path.of(example).getFileName().toString());
         Files.writeString(model, text.substring(0, m.end()) + "packages=\"" + layout + "\" " + text.substring(m.end()));
         Ros2LaunchTest.run(model, example, tmp);
     }
