@@ -115,6 +115,20 @@ class Ros2CmakeTemplate extends Ros2Template {
 
 		include(user.cmake)
 
+		«testing(true)»
+
+		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
+		install(TARGETS «rosNames.containerExecutable»«IF managed» «rosNames.lifecycleManagerExecutable»«ENDIF»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
+		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
+
+		ament_package()
+	'''
+
+	/**
+	 * The BUILD_TESTING block of a package: the linters its package.user.xml names, where installed,
+	 * and (launch) the launch test of the package that holds the launch files.
+	 */
+	def private testing(boolean launch) '''
 		if(BUILD_TESTING)
 		  # The linters package.user.xml names as <test_depend> (ament_lint_common, ament_cmake_cpplint,
 		  # ...), where installed; what is regenerated (gen/, the launch files and the launch test) is
@@ -124,20 +138,16 @@ class Ros2CmakeTemplate extends Ros2Template {
 		    file(GLOB_RECURSE AMENT_LINT_AUTO_FILE_EXCLUDE gen/* launch/*.launch.py «launchTest.path»)
 		    ament_lint_auto_find_test_dependencies()
 		  endif()
-		  # The launch test: starts the nodes, checks that messages flow and that they exit cleanly.
-		  find_package(launch_testing_ament_cmake QUIET)
-		  if(launch_testing_ament_cmake_FOUND)
-		    add_launch_test(«launchTest.path» TIMEOUT 120)
-		  else()
-		    message(STATUS "launch_testing_ament_cmake not found: «launchTest.path» is not run")
-		  endif()
+		  «IF launch»
+		  	# The launch test: starts the nodes, checks that messages flow and that they exit cleanly.
+		  	find_package(launch_testing_ament_cmake QUIET)
+		  	if(launch_testing_ament_cmake_FOUND)
+		  	  add_launch_test(«launchTest.path» TIMEOUT 120)
+		  	else()
+		  	  message(STATUS "launch_testing_ament_cmake not found: «launchTest.path» is not run")
+		  	endif()
+		  «ENDIF»
 		endif()
-
-		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
-		install(TARGETS «rosNames.containerExecutable»«IF managed» «rosNames.lifecycleManagerExecutable»«ENDIF»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
-		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
-
-		ament_package()
 	'''
 
 	/** Whether some node is managed: then the package uses rclcpp_lifecycle and builds the lifecycle manager. */
@@ -200,6 +210,8 @@ class Ros2CmakeTemplate extends Ros2Template {
 			«ENDFOR»
 
 			include(user.cmake)
+
+			«testing(false)»
 
 			install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
 			install(TARGETS«FOR m : np.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
@@ -276,6 +288,8 @@ class Ros2CmakeTemplate extends Ros2Template {
 		find_package(ament_cmake REQUIRED)
 
 		include(user.cmake)
+
+		«testing(true)»
 
 		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
 

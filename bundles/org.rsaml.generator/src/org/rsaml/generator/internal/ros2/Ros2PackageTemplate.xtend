@@ -99,7 +99,7 @@ class Ros2PackageTemplate extends Ros2Template {
 		run += context.packages.runtime
 		context.packages.nodePackages.forEach[run += name]
 		run += #["launch", "launch_ros", "ros2launch"]
-		manifestXml(pkg, doc(description) + " (launch files and parameters)", manifest, #[], run)
+		manifestXml(pkg, doc(description) + " (launch files and parameters)", manifest, #[], run, TEST_DEPENDS)
 	}
 
 	/** The manifest of the runtime package: the scheduling runtime, the component container, the lifecycle manager. */
@@ -109,7 +109,7 @@ class Ros2PackageTemplate extends Ros2Template {
 			depends += "lifecycle_msgs"
 		}
 		manifestXml(context.packages.runtime, "The scheduling runtime and component container of the RsaML architecture " + doc(plan.name),
-			manifest, depends, #[])
+			manifest, depends, #[], #[])
 	}
 
 	/** The manifest of a package of nodes: what its nodes use, and the runtime package. */
@@ -119,15 +119,18 @@ class Ros2PackageTemplate extends Ros2Template {
 		if (np.modules.exists[rosNames.managed(it)]) {
 			depends += "rclcpp_lifecycle"
 		}
-		manifestXml(np.name, "The nodes of " + np.holds + " of the RsaML architecture " + doc(plan.name), manifest, depends, #[])
+		manifestXml(np.name, "The nodes of " + np.holds + " of the RsaML architecture " + doc(plan.name), manifest, depends, #[],
+			#["ament_lint_auto"])
 	}
 
 	/** A package.xml of ament_cmake with these dependencies and what the architect's package.user.xml adds. */
-	def private manifestXml(String name, String description, Ros2Manifest manifest, Iterable<String> depends, Iterable<String> execDepends) {
+	def private manifestXml(String name, String description, Ros2Manifest manifest, Iterable<String> depends, Iterable<String> execDepends,
+			Iterable<String> testDepends) {
 		val generated = <String>newHashSet
 		generated += "buildtool_depend ament_cmake"
 		depends.forEach[generated += "depend " + it]
 		execDepends.forEach[generated += "exec_depend " + it]
+		testDepends.forEach[generated += "test_depend " + it]
 		'''
 			<?xml version="1.0"?>
 			<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
@@ -150,6 +153,12 @@ class Ros2PackageTemplate extends Ros2Template {
 
 			  	«FOR p : execDepends»
 			  		<exec_depend>«p»</exec_depend>
+			  	«ENDFOR»
+			  «ENDIF»
+			  «IF !testDepends.empty»
+
+			  	«FOR p : testDepends»
+			  		<test_depend>«p»</test_depend>
 			  	«ENDFOR»
 			  «ENDIF»
 			  «FOR d : manifest.dependencies(generated)»
