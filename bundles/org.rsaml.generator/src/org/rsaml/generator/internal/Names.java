@@ -4,11 +4,11 @@
  */
 package org.rsaml.generator.internal;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 
+import org.rsaml.model.support.RsamlPackages;
 import org.rsaml.model.support.RsamlText;
 
 /**
@@ -117,28 +117,13 @@ public final class Names {
         return s.toLowerCase(Locale.ROOT);
     }
 
-    /** The words of a name, split at underscores and at lower-to-upper case changes. */
+    /**
+     * The words of a name, split at underscores and other characters and at lower-to-upper case
+     * changes: RsaML's one rule, {@link RsamlPackages#words(String)}, which also makes the package
+     * names the ROS 2 rule RSA-29 checks.
+     */
     public static List<String> words(String raw) {
-        List<String> words = new ArrayList<>();
-        for (String part : collapse(raw).split("_")) {
-            if (part.isEmpty()) {
-                continue;
-            }
-            int start = 0;
-            for (int i = 1; i < part.length(); i++) {
-                char prev = part.charAt(i - 1);
-                char c = part.charAt(i);
-                boolean lowerToUpper = (Character.isLowerCase(prev) || Character.isDigit(prev)) && Character.isUpperCase(c);
-                boolean acronymEnd = Character.isUpperCase(prev) && Character.isUpperCase(c) && i + 1 < part.length()
-                        && Character.isLowerCase(part.charAt(i + 1));
-                if (lowerToUpper || acronymEnd) {
-                    words.add(part.substring(start, i));
-                    start = i;
-                }
-            }
-            words.add(part.substring(start));
-        }
-        return words;
+        return RsamlPackages.words(raw);
     }
 
     private static String collapse(String raw) {

@@ -54,7 +54,8 @@ public final class RsamlPackages {
      * The words of a name: runs of ASCII letters and digits, split at every other character and at
      * lower-to-upper case changes ({@code eMoveSP} gives {@code e}, {@code Move}, {@code SP}; an
      * acronym ends before the capital of the next word: {@code HTTPServer} gives {@code HTTP},
-     * {@code Server}).
+     * {@code Server}). RsaML's one rule for the words of a name: the generators make every name of
+     * the generated code from these words too.
      */
     public static List<String> words(String raw) {
         List<String> words = new ArrayList<>();

@@ -490,14 +490,6 @@ class Ros2LaunchTest {
 
     /** Generates, builds, launches and checks one model; the launch's output. */
     static String run(Path model, String name, Path tmp, UserCode code) throws Exception {
-        return run(model, name, tmp, code, null);
-    }
-
-    /**
-     * As {@link #run(Path, String, Path, UserCode)}; with {@code unbounded}, the reason the response
-     * times are reported but not held to the analysis's bounds in this run (another run checks them).
-     */
-    static String run(Path model, String name, Path tmp, UserCode code, String unbounded) throws Exception {
         Architecture arch = ModelLoader.load(model, name).architecture();
         String pkg = Names.snake(arch.getName());
         Path src = tmp.resolve("src");
@@ -654,10 +646,6 @@ class Ros2LaunchTest {
                 continue;
             }
             checked.add(r);
-        }
-        if (unbounded != null) {
-            checked.forEach(r -> unchecked.add(r.label() + " (" + unbounded + ")"));
-            checked.clear();
         }
         if (!checked.isEmpty() && !otherRealtime.isEmpty()) {
             PlatformCheck.otherRealtime("Ros2LaunchTest " + name, otherRealtime);
