@@ -60,7 +60,7 @@ final class Palette {
     /** Undoes every command run since the last call. */
     void undoAll() {
         for (; changes > 0; changes--) {
-            project.domain().getCommandStack().undo();
+            project.undo();
         }
     }
 
