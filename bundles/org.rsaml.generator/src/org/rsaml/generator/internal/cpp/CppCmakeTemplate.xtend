@@ -34,7 +34,9 @@ class CppCmakeTemplate extends CppTemplate {
 		add_executable(${RSAML_TARGET}
 		  gen/main.cpp
 		  gen/Architecture.cpp
-		  gen/rsaml/runtime.cpp
+		  «FOR f : CppTarget.RUNTIME_SOURCES»
+		  	gen/rsaml/«f»
+		  «ENDFOR»
 		  «FOR m : plan.modules»
 		  	«dir(m)»«m.baseName».cpp
 		  	«userSourcePath(m)»

@@ -7,6 +7,7 @@ package org.rsaml.generator.internal.cpp
 import java.io.IOException
 import java.io.UncheckedIOException
 import java.nio.charset.StandardCharsets
+import java.util.List
 import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cxx.CxxCode
 import org.rsaml.generator.internal.cxx.CxxNames
@@ -21,11 +22,23 @@ import org.rsaml.generator.spi.TargetGenerator
  * The C++17 target: a CMake project with one class per module. The generated part of each module
  * (gen/LAYER/ModuleBase.*) declares its typed ports, runs its functions and is regenerated; the
  * architect's part (src/LAYER/Module.*) implements the actions and is created once. The runtime
- * (gen/rsaml/) is the same for every model: the files runtime/cpp/rsaml/* of this bundle, and runtime/cxx/rsaml/realtime.hpp, which the ROS 2 nodes share.
+ * (gen/rsaml/) is the same for every model: the files runtime/cpp/rsaml/* of this bundle (RUNTIME_HEADERS,
+ * RUNTIME_SOURCES), and runtime/cxx/rsaml/realtime.hpp, which the ROS 2 nodes share.
  * Each output file has its template: CppModuleTemplate, CppArchitectureTemplate, CppCmakeTemplate,
  * CppMessagesTemplate, CppReadmeTemplate, and the user code every C++ target shares (cxx.UserCode).
  */
 class CppTarget implements TargetGenerator {
+
+	/**
+	 * The C++ runtime's headers in runtime/cpp/rsaml/ of this bundle: runtime.hpp, which generated code includes,
+	 * and the headers of its parts, which it includes. Every project carries them in gen/rsaml/.
+	 */
+	public static val List<String> RUNTIME_HEADERS = #["runtime.hpp", "clock.hpp", "options.hpp", "trace.hpp", "measure.hpp", "module.hpp",
+		"ports.hpp", "system.hpp", "internal.hpp"]
+
+	/** The C++ runtime's sources in runtime/cpp/rsaml/ of this bundle, one per concern; each project's CMake build compiles them. */
+	public static val List<String> RUNTIME_SOURCES = #["options.cpp", "clock.cpp", "trace.cpp", "measure.cpp", "module.cpp", "system.cpp",
+		"scheduling.cpp"]
 
 	override id() {
 		"cpp"
@@ -95,8 +108,9 @@ class CppFiles {
 	def files() {
 		val files = <GeneratedFile>newArrayList
 		files += GeneratedFile.generated("CMakeLists.txt", cmake.cmake)
-		files += GeneratedFile.generated("gen/rsaml/runtime.hpp", "// " + banner + "\n" + CppTarget.runtimeFile("rsaml/runtime.hpp"))
-		files += GeneratedFile.generated("gen/rsaml/runtime.cpp", "// " + banner + "\n" + CppTarget.runtimeFile("rsaml/runtime.cpp"))
+		for (f : CppTarget.RUNTIME_HEADERS + CppTarget.RUNTIME_SOURCES) {
+			files += GeneratedFile.generated("gen/rsaml/" + f, "// " + banner + "\n" + CppTarget.runtimeFile("rsaml/" + f))
+		}
 		files += GeneratedFile.generated("gen/rsaml/realtime.hpp", "// " + banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
 		files += GeneratedFile.generated("gen/messages.hpp", messages.messages)
 		files += GeneratedFile.generated("gen/Architecture.hpp", architecture.architectureHeader)

@@ -1,0 +1,36 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// What each job of a timed release or a reaction is measured against, and what was measured.
+#pragma once
+
+#include <cstdint>
+
+#include "rsaml/clock.hpp"
+
+namespace rsaml {
+
+/**
+ * What the model and the timing analysis say of each job of a timed release or a reaction; the
+ * runtime measures every job against it.
+ */
+struct JobBounds {
+  Nanos deadline;  // relative deadline: the modeled delay, or the period (minimum interval); 0: none
+  Nanos cost;      // modeled execution time; 0 when the model gives none
+  Nanos response;  // the analysis's worst-case response time; negative when it gives none
+};
+
+/** What a release thread (or a module's worker, of its reactions) observed of its jobs. */
+struct JobStats {
+  std::uint64_t jobs = 0;
+  std::uint64_t misses = 0;
+  std::uint64_t overruns = 0;
+  Nanos worst_response{0};
+  Nanos worst_execution{0};
+  Nanos worst_start_latency{0};
+  Clock::time_point first_release{};  // of the first job; the summary gives it and the last since the run's start
+  Clock::time_point last_release{};
+};
+
+}  // namespace rsaml

@@ -1,0 +1,201 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// Modules: their activations, their worker threads, their reactions; and the links between their ports.
+#include "rsaml/module.hpp"
+
+#include <limits>
+
+#include "rsaml/internal.hpp"
+#include "rsaml/ports.hpp"
+#include "rsaml/system.hpp"
+#include "rsaml/trace.hpp"
+
+namespace rsaml {
+
+using internal::consume;
+using internal::thread_cpu_time;
+
+namespace {
+
+thread_local Activation* current_activation = nullptr;
+
+}  // namespace
+
+Link::Link(std::string name, Nanos duration)
+    : name_(std::move(name)), duration_(duration), until_(std::numeric_limits<Clock::rep>::min()) {}
+
+void Link::trigger() { until_.store((Clock::now() + duration_).time_since_epoch().count()); }
+
+bool Link::active() const { return Clock::now().time_since_epoch().count() < until_.load(); }
+
+Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
+    : module(module), wave(wave), timed(timed), release(release), lock(module.mutex_), previous_(current_activation) {
+  current_activation = this;
+  if (module.depth_++ == 0) {
+    for (auto& latch : module.latches_) {
+      latch();
+    }
+  }
+}
+
+Activation::~Activation() {
+  --module.depth_;
+  current_activation = previous_;
+}
+
+Activation* Activation::current() { return current_activation; }
+
+Module::Module(System& system, std::string name, int core, std::string host, int cpu)
+    : system_(system), name_(std::move(name)), core_(core), host_(std::move(host)), cpu_(cpu >= 0 ? cpu : core) {}
+
+Module::~Module() { stop_worker(); }
+
+void Module::post(std::uint64_t wave, std::function<void()> work) {
+  {
+    std::lock_guard<std::mutex> lock(mail_mutex_);
+    if (stopping_) {
+      return;
+    }
+    mail_.push_back(Mail{wave, Clock::now(), std::move(work)});
+  }
+  mail_cv_.notify_one();
+}
+
+void Module::start_worker() {
+  if (!worker_.joinable()) {
+    worker_ = std::thread([this] { run_worker(); });
+    system_.place(worker_.native_handle(), name_, *this);
+  }
+}
+
+void Module::stop_worker() {
+  {
+    std::lock_guard<std::mutex> lock(mail_mutex_);
+    stopping_ = true;
+  }
+  mail_cv_.notify_all();
+  if (worker_.joinable()) {
+    worker_.join();
+  }
+}
+
+void Module::run_worker() {
+  const std::string sched = system_.schedule_worker(name_);
+  if (reactions_) {
+    reactions_->sched = sched;
+  }
+  for (;;) {
+    Mail mail;
+    {
+      std::unique_lock<std::mutex> lock(mail_mutex_);
+      mail_cv_.wait(lock, [this] { return stopping_ || !mail_.empty(); });
+      if (stopping_) {
+        return;
+      }
+      mail = std::move(mail_.front());
+      mail_.pop_front();
+    }
+    // A reaction's job is released by the arrival of the data that starts it.
+    Activation activation(*this, mail.wave, false, mail.arrived);
+    mail.work();
+  }
+}
+
+void Module::start_step(std::uint64_t wave) {
+  Activation activation(*this, wave, false, Clock::now());
+  waves_.insert(wave);
+  trace("start " + name_);
+  on_start();
+  publish_outputs();
+}
+
+void Module::timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
+                           Nanos busy) {
+  Activation activation(*this, system_.new_wave(), true, release);
+  waves_.insert(activation.wave);
+  trace("release " + label);
+  if (busy.count() > 0) {
+    consume(busy);
+  }
+  body();
+}
+
+void Module::run_action(const char* label, Nanos offset, const std::function<void()>& body) {
+  Activation* activation = Activation::current();
+  if (activation && activation->timed && offset.count() > 0) {
+    // Other activations of this module may run while this one waits for the action's start date.
+    activation->lock.unlock();
+    const bool go_on = system_.sleep_until(activation->release + offset);
+    activation->lock.lock();
+    if (!go_on) {
+      return;
+    }
+  }
+  trace("action " + name_ + "." + label);
+  body();
+}
+
+bool Module::begin_reaction(Nanos min_interval) {
+  Activation* activation = Activation::current();
+  if (activation) {
+    if (!waves_.insert(activation->wave).second) {
+      return false;
+    }
+    while (waves_.size() > 1024) {
+      waves_.erase(waves_.begin());
+    }
+  }
+  // Arrivals, not the worker's start times, are at least min_interval apart: the sporadic task the
+  // analysis assumes, released by the arrivals.
+  const Clock::time_point arrived = activation ? activation->release : Clock::now();
+  if (min_interval.count() > 0 && reacted_ && arrived - last_reaction_ < min_interval) {
+    return false;
+  }
+  reacted_ = true;
+  last_reaction_ = arrived;
+  trace("react " + name_);
+  return true;
+}
+
+void Module::measure_reactions(std::string label, JobBounds bounds) {
+  reactions_ = &system_.reactions(*this, std::move(label), bounds);
+}
+
+void Module::react(Nanos min_interval, const std::function<void()>& body) {
+  if (!begin_reaction(min_interval)) {
+    return;
+  }
+  Activation* activation = Activation::current();
+  const Clock::time_point arrived = activation ? activation->release : Clock::now();
+  const Clock::time_point started = Clock::now();
+  const Nanos cpu = thread_cpu_time();
+  if (reactions_) {
+    const Nanos busy = system_.busy_work(reactions_->bounds.cost);
+    if (busy.count() > 0) {
+      consume(busy);
+    }
+  }
+  body();
+  if (reactions_) {
+    system_.reaction_done(*reactions_, arrived, started, Clock::now(), thread_cpu_time() - cpu);
+  }
+}
+
+bool Module::due(Clock::time_point& last, Nanos min_interval) {
+  const Clock::time_point now = Clock::now();
+  if (last != Clock::time_point{} && now - last < min_interval) {
+    return false;
+  }
+  last = now;
+  return true;
+}
+
+void Module::trace(const std::string& text) const {
+  if (Trace::enabled()) {
+    Trace::line(text);
+  }
+}
+
+}  // namespace rsaml

@@ -1,0 +1,146 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// The base of every generated module class: its activations, its worker thread, its reactions.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "rsaml/clock.hpp"
+#include "rsaml/measure.hpp"
+
+namespace rsaml {
+
+class System;
+class Module;
+
+/** A module's reactions and what its worker thread observed of them. */
+struct Reactions {
+  Module* module;
+  std::string label;
+  JobBounds bounds;
+  std::string sched;  // the scheduling the worker got, as the trace says it
+  JobStats stats;
+};
+
+/**
+ * The work a module is doing, on the current thread: the module's lock is held, and data sent
+ * belongs to the activation's wave (a timed release or the start starts a wave; data carries it on,
+ * and a module reacts at most once per wave, so cycles of reacting modules end).
+ */
+class Activation {
+ public:
+  Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release);
+  ~Activation();
+  Activation(const Activation&) = delete;
+  Activation& operator=(const Activation&) = delete;
+  static Activation* current();
+
+  Module& module;
+  const std::uint64_t wave;
+  const bool timed;
+  const Clock::time_point release;
+  std::unique_lock<std::recursive_mutex> lock;
+
+ private:
+  Activation* previous_;
+};
+
+/** The base of every generated module class. */
+class Module {
+ public:
+  /**
+   * core: the CPU core the module's threads are pinned to (its processor's), or -1 for the OS's
+   * choice; host: its processor's host, "" for the main host; cpu: the CPU of this machine its core
+   * is, when this one program runs several hosts' processors (-1: the core's own number).
+   */
+  Module(System& system, std::string name, int core = -1, std::string host = "", int cpu = -1);
+  virtual ~Module();
+  Module(const Module&) = delete;
+  Module& operator=(const Module&) = delete;
+
+  /** layer/module, as in the model. */
+  const std::string& name() const { return name_; }
+  System& system() { return system_; }
+  int core() const { return core_; }
+  const std::string& host() const { return host_; }
+  /** The CPU of this machine its threads are pinned to: its core, or another host's core's CPU here. */
+  int cpu() const { return cpu_; }
+
+  // Used by the runtime and the generated code.
+  void post(std::uint64_t wave, std::function<void()> work);
+  void start_worker();
+  void stop_worker();
+  void start_step(std::uint64_t wave);
+  /**
+   * Measures the module's reactions (a module that reacts to data calls it once, in its constructor):
+   * each from the arrival that starts it to its completion, against bounds.
+   */
+  void measure_reactions(std::string label, JobBounds bounds);
+  /**
+   * A reaction to the data that has arrived: runs body (the step functions and the sending of the
+   * outputs) when begin_reaction() lets it, after the busy work, and measures it.
+   */
+  void react(Nanos min_interval, const std::function<void()>& body);
+  /** Runs one job of a timed release; busy: CPU time it consumes first (the --busy-work stand-in for user code). */
+  void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
+                     Nanos busy = Nanos(0));
+  /** Registers an entry port's latch: each activation starts with the latest value of every port. */
+  void add_input(std::function<void()> latch) { latches_.push_back(std::move(latch)); }
+
+ protected:
+  /** Called once when the run starts, lowest layer first, before the outputs are first sent. */
+  virtual void on_start() {}
+  /** Sends every output port's value; called after each activation. */
+  virtual void publish_outputs() {}
+  /** Runs an action; in a timed release, first waits until the action's offset in the period. */
+  void run_action(const char* label, Nanos offset, const std::function<void()>& body);
+  /**
+   * Whether the data that started the current activation starts a reaction: once per wave, and its
+   * arrival not sooner than min_interval after the arrival that started the previous reaction.
+   */
+  bool begin_reaction(Nanos min_interval);
+  /** Whether a sporadic function may run again (and, if so, notes that it runs now). */
+  static bool due(Clock::time_point& last, Nanos min_interval);
+  /** Adds a line to the run's trace. */
+  void trace(const std::string& text) const;
+
+ private:
+  friend class Activation;
+  struct Mail {
+    std::uint64_t wave;
+    Clock::time_point arrived;
+    std::function<void()> work;
+  };
+  void run_worker();
+
+  System& system_;
+  std::string name_;
+  int core_;
+  std::string host_;
+  int cpu_;
+  std::recursive_mutex mutex_;
+  std::mutex mail_mutex_;
+  std::condition_variable mail_cv_;
+  std::deque<Mail> mail_;
+  bool stopping_ = false;
+  std::thread worker_;
+  std::set<std::uint64_t> waves_;
+  std::vector<std::function<void()>> latches_;
+  int depth_ = 0;
+  Clock::time_point last_reaction_{};
+  bool reacted_ = false;
+  Reactions* reactions_ = nullptr;  // owned by the system; null when not measured
+};
+
+}  // namespace rsaml

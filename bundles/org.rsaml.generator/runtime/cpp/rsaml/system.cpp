@@ -1,0 +1,131 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// The running architecture: its modules, their timed releases, the start and the stop.
+#include "rsaml/system.hpp"
+
+#include <algorithm>
+#include <csignal>
+
+#include "rsaml/internal.hpp"
+#include "rsaml/trace.hpp"
+
+namespace rsaml {
+
+using internal::thread_cpu_time;
+
+namespace {
+
+volatile std::sig_atomic_t interrupted = 0;
+
+void on_signal(int) { interrupted = 1; }
+
+}  // namespace
+
+System::System(std::string name) : name_(std::move(name)) {}
+
+System::~System() {
+  stopping_ = true;
+  for (auto& release : releases_) {
+    if (release->thread.joinable()) {
+      release->thread.join();
+    }
+  }
+}
+
+void System::add(Module& module) { modules_.push_back(&module); }
+
+void System::every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
+                   JobBounds bounds, std::function<void()> body) {
+  releases_.push_back(std::unique_ptr<Release>(new Release{&module, std::move(label), period, offset, policy, rank, bounds,
+                                                           std::move(body), std::thread(), std::string(), JobStats()}));
+}
+
+Reactions& System::reactions(Module& module, std::string label, JobBounds bounds) {
+  reactions_.push_back(std::unique_ptr<Reactions>(new Reactions{&module, std::move(label), bounds, std::string(), JobStats()}));
+  return *reactions_.back();
+}
+
+void System::run_release(Release& release) {
+  schedule_self(release);
+  Clock::time_point next;
+  {
+    std::unique_lock<std::mutex> lock(epoch_mutex_);
+    ++ready_;
+    epoch_cv_.notify_all();
+    epoch_cv_.wait(lock, [this] { return epoch_set_; });
+    next = epoch_ + release.offset;
+  }
+  const Nanos busy = busy_work(release.bounds.cost);
+  // Releases stay on the grid epoch + offset + k * period, however long one of them takes.
+  while (sleep_until(next)) {
+    const Clock::time_point started = Clock::now();
+    const Nanos cpu = thread_cpu_time();
+    release.stats.worst_start_latency =
+        std::max(release.stats.worst_start_latency, std::chrono::duration_cast<Nanos>(started - next));
+    release.module->timed_release(release.label, next, release.body, busy);
+    const Nanos used = thread_cpu_time() - cpu;
+    job_done(release, next, Clock::now(), used);
+    next += release.period;
+  }
+}
+
+int System::run(const Options& options) {
+  const Clock::time_point start = Clock::now();
+  start_ = start;
+  options_ = options;
+  Trace::configure(options.trace, start);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  Trace::line("run " + name_ +
+              (options.run_for_ms >= 0 ? " for " + std::to_string(options.run_for_ms) + " ms" : std::string(" until interrupted")));
+  // Every module sends its initial outputs before any reacts: the start is one wave.
+  const std::uint64_t start_wave = new_wave();
+  for (Module* module : modules_) {
+    module->start_step(start_wave);
+  }
+  claim_cores();
+  for (Module* module : modules_) {
+    module->start_worker();
+  }
+  // Each release thread gets its core and its priority before its first job: they all wait for
+  // the epoch, set once the last one is placed.
+  for (auto& release : releases_) {
+    Release* r = release.get();
+    r->thread = std::thread([this, r] { run_release(*r); });
+  }
+  {
+    std::unique_lock<std::mutex> lock(epoch_mutex_);
+    epoch_cv_.wait(lock, [this] { return ready_ == releases_.size(); });
+    // The first releases come a moment later, when every release thread is asleep waiting for them.
+    epoch_ = Clock::now() + std::chrono::milliseconds(2);
+    epoch_set_ = true;
+  }
+  epoch_cv_.notify_all();
+  const Clock::time_point deadline =
+      options.run_for_ms >= 0 ? start + std::chrono::milliseconds(options.run_for_ms) : Clock::time_point::max();
+  while (!interrupted) {
+    const Clock::time_point now = Clock::now();
+    if (now >= deadline) {
+      break;
+    }
+    std::this_thread::sleep_until(std::min(deadline, now + std::chrono::milliseconds(20)));
+  }
+  stopping_ = true;
+  for (auto& release : releases_) {
+    if (release->thread.joinable()) {
+      release->thread.join();
+    }
+  }
+  for (Module* module : modules_) {
+    module->stop_worker();
+  }
+  const long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+  print_summary();
+  Trace::line("stop after " + std::to_string(ms) + " ms");
+  Trace::flush();
+  return 0;
+}
+
+}  // namespace rsaml
