@@ -169,6 +169,26 @@ std::size_t Schedule::rsaml_add_release(const std::string& label, int rank, bool
   return releases_.size() - 1;
 }
 
+void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, const rclcpp::Time& expected, const rclcpp::Time& called) {
+  const std::int64_t first = (expected - started_).nanoseconds() + period_ns;
+  const std::int64_t until = (called - started_).nanoseconds();
+  if (period_ns <= 0 || first >= until) {
+    return;
+  }
+  const std::int64_t dropped = (until - first + period_ns - 1) / period_ns;  // first + k * period < until
+  const std::int64_t last = first + (dropped - 1) * period_ns;
+  Release& r = releases_[release];
+  {
+    std::lock_guard<std::mutex> lock(stats_);
+    r.jobs += static_cast<std::uint64_t>(dropped);
+    r.misses += static_cast<std::uint64_t>(dropped);
+    r.last_release_ns = last;
+  }
+  trace("miss " + r.label + " released " + ms(first) + (dropped > 1 ? ".." + ms(last) : std::string()) + " ms not run (" +
+        std::to_string(dropped) + (dropped > 1 ? " releases" : " release") + "): ROS 2's timer dropped " +
+        (dropped > 1 ? "them" : "it") + ", as its previous release was called " + ms((called - expected).nanoseconds()) + " ms late");
+}
+
 std::size_t Schedule::rsaml_add_arrivals(const std::string& port) {
   Arrivals a;
   a.port = port;
@@ -281,6 +301,14 @@ void Scheduler::add(Schedule& node) {
     const int core = node.rsaml_core();
     worker->thread = std::thread([executor, release, core] {
       place(*release, core);
+      // A timer created before its thread had its scheduling restarts now (a stopped one stays
+      // stopped), so that its first release does not fall due while the thread was not yet there.
+      release->group->find_timer_ptrs_if([](const rclcpp::TimerBase::SharedPtr& timer) {
+        if (!timer->is_canceled()) {
+          timer->reset();
+        }
+        return false;
+      });
       executor->spin();
     });
     workers_.push_back(std::move(worker));

@@ -100,15 +100,18 @@ class Schedule {
   /**
    * The timer of a release, on the node's clock, in the release's group: each job runs `body`
    * through rsaml_run_job(), released at the timer's expected call time (ROS 2 Jazzy and later; before,
-   * at the time the callback starts, and the release latency is not measured).
+   * at the time the callback starts, and the release latency is not measured). A job is released every
+   * period: a release ROS 2's timer drops when it calls a period or more late is counted as a job that
+   * missed its deadline (rsaml_count_dropped). The timer restarts when the release's thread has its scheduling.
    */
   template <typename BodyT>
   rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {
 #if RCLCPP_VERSION_GTE(28, 0, 0)
     return rclcpp::create_timer(
         base_, timers_, clock_, rclcpp::Duration::from_nanoseconds(period_ns),
-        [this, release, body](const rclcpp::TimerInfo& info) {
+        [this, release, period_ns, body](const rclcpp::TimerInfo& info) {
           this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
+          this->rsaml_count_dropped(release, period_ns, info.expected_call_time, info.actual_call_time);
         },
         releases_[release].group);
 #else
@@ -121,6 +124,15 @@ class Schedule {
         releases_[release].group);
 #endif
   }
+  /**
+   * The releases ROS 2's timer dropped in a call at `called` of its release `expected`: a timer that
+   * calls a period or more late moves its next call past `called` (rcl_timer_call), so the releases
+   * due in between, expected + k * period before `called`, never run. Each is counted as a job of its
+   * own that missed its deadline, and traced (`miss <label> released ... ms not run (N releases) ...`), so the release's
+   * jobs stay on its grid and none is lost silently. (They are not run late: after a long stall, a
+   * backlog run back to back at real-time priority would hold the CPU for as long again.)
+   */
+  void rsaml_count_dropped(std::size_t release, std::int64_t period_ns, const rclcpp::Time& expected, const rclcpp::Time& called);
   std::size_t rsaml_add_arrivals(const std::string& port);
 
   /**

@@ -49,20 +49,19 @@ import org.rsaml.validation.ModelLoader;
  * summary of every release, the analysis's bound written into the program, the jobs counted, the
  * busy work consumed, and misses and overruns reported as they happen.
  * <p>
- * The platform's part of a response, which the model does not count, is measured: the start latency
- * of the run's releases that nothing in the model delays, or a calibration run, plus a stated
- * constant for the bookkeeping ({@link PlatformCheck}); every check says the allowance it used and
- * where it came from. While other programs' real-time threads run, the bound is not checked, and
- * the test says so ({@link PlatformCheck#otherRealtime}); with {@code RSAML_TIMING_BOUNDS=required}
- * (CI) that fails instead.
+ * Each run is checked by {@link CppJobCheck}. The platform's part of a response, which the model does
+ * not count, is measured: the start latency of the run's releases that nothing in the model delays, or
+ * a calibration run, plus a stated constant for the bookkeeping and the CPU time other programs'
+ * real-time threads used during the run ({@link PlatformCheck#boundCheck}); every check says the
+ * allowance it used and where it came from. While other programs' real-time threads use more than
+ * {@link OtherRealtime#TOLERATED_NS} during a run, its bounds are not checked, and the test says so,
+ * naming them and their CPU time; with {@code RSAML_TIMING_BOUNDS=required} (CI) that fails instead.
  * <p>
- * Slow on a shared machine (6.5 minutes on two cores under a load average near 20, mostly building the
+ * Slow on a shared machine (6.5 to 7 minutes on two cores under a load average of 20 to 30, mostly building the
  * programs): run it alone with {@code -Dtest=JobTimingTest -Dsurefire.failIfNoSpecifiedTests=false}
  * (or one method, {@code -Dtest=JobTimingTest#anEdfProcessorRunsUnderSchedDeadline}).
  */
 class JobTimingTest {
-
-    static final long RUN_MS = 700;
 
     static String ms(long ns) {
         return String.format(Locale.ROOT, "%.3f ms", ns / 1e6);
@@ -101,7 +100,7 @@ class JobTimingTest {
         Path out = tmp.resolve("project");
         new RsamlGenerator().generate(Tools.example(example), Target.CPP, out, false);
         Architecture arch = ModelLoader.load(Tools.example(example), example).architecture();
-        runAndCheck(arch, out, example);
+        CppJobCheck.runAndCheck(arch, out, example);
     }
 
     /**
@@ -116,7 +115,7 @@ class JobTimingTest {
         Path out = tmp.resolve("project");
         new RsamlGenerator().generate(model, Target.CPP, out, false);
         Architecture arch = ModelLoader.load(model, model.getFileName().toString()).architecture();
-        runAndCheck(arch, out, "random" + seed);
+        CppJobCheck.runAndCheck(arch, out, "random" + seed);
         ArchitectureTiming timing = TimingAnalysis.analyse(arch);
         assertEquals(Verdict.MEETS, timing.verdict(), "seed " + seed + ": the generated sets are meant to be schedulable");
     }
@@ -167,10 +166,10 @@ class JobTimingTest {
         Architecture arch = writeAndGenerate(tmp, "sporadic", layers, processors, out, false);
         Map<String, Long> bounds = bounds(TimingAnalysis.analyse(arch));
         assertEquals(5_000_000L, bounds.get("tasks/consumer (reaction)"), "the analysis's bound of the reaction: " + bounds);
-        JobSummary s = runAndCheck(arch, out, "sporadic").get("tasks/consumer (reaction)");
+        JobSummary s = CppJobCheck.runAndCheck(arch, out, "sporadic").get("tasks/consumer (reaction)");
         // a message every 10 ms, a reaction to every other one: about one every 20 ms
-        long expected = RUN_MS / 20;
-        assertTrue(s.jobs() >= expected / 2 && s.jobs() <= expected + 2, "about " + expected + " reactions in " + RUN_MS + " ms: " + s);
+        long expected = CppJobCheck.RUN_MS / 20;
+        assertTrue(s.jobs() >= expected / 2 && s.jobs() <= expected + 2, "about " + expected + " reactions in " + CppJobCheck.RUN_MS + " ms: " + s);
         assertTrue(s.worstNs() >= s.executionNs(), "a response includes the reaction's execution: " + s);
     }
 
@@ -193,7 +192,7 @@ class JobTimingTest {
                 .findFirst().orElseThrow();
         assertEquals(Verdict.MISSES, b.verdict(), "the analysis predicts B's miss: " + b.explanation());
 
-        Map<String, JobSummary> asModeled = runAndCheck(arch, out, "overloaded");
+        Map<String, JobSummary> asModeled = CppJobCheck.runAndCheck(arch, out, "overloaded");
         JobSummary sb = asModeled.get("tasks/b.f");
         if (sb.asAnalysed()) {
             assertTrue(sb.misses() > 0, "B's miss, predicted by the analysis, was not observed: " + sb);
@@ -227,7 +226,7 @@ class JobTimingTest {
         Path out = tmp.resolve("project");
         Architecture arch = writeAndGenerate(tmp, "edf", layers, processors, out, false);
         assertEquals(Verdict.MEETS, TimingAnalysis.analyse(arch).verdict(), "EDF schedules A and B");
-        Map<String, JobSummary> run = runAndCheck(arch, out, "edf");
+        Map<String, JobSummary> run = CppJobCheck.runAndCheck(arch, out, "edf");
         for (JobSummary s : run.values()) {
             long period = s.label().equals("tasks/a.f") ? 5 : 7;
             long cost = s.label().equals("tasks/a.f") ? 2 : 4;
@@ -276,58 +275,11 @@ class JobTimingTest {
                 assertTrue(line.startsWith("cpu navigation/obstacleDetector") && line.contains(" core 0 of host nav-board on CPU 1 (one program runs every host"),
                         "the board's core 0 on a CPU of its own, said: " + line);
             }
-            runAndCheck(arch, out, "two-hosts");
+            CppJobCheck.runAndCheck(arch, out, "two-hosts");
         } else {
             assertTrue(board.stream().allMatch(l -> l.endsWith(" not available: default")),
                     "on one CPU, the board's CPU 1 is not there, said plainly: " + board);
         }
-    }
-
-    /**
-     * Null when the release's threads have a CPU to themselves on this machine, as the analysis
-     * assumes: its processor's core has a CPU here and no other thread of the program strays onto it
-     * (the runtime confines the threads without a core to the cores no processor claims), or it has
-     * no core and those unclaimed cores are exactly one. Else why not. The cores of processors on
-     * other hosts have CPUs of their own in the program ({@link OneMachineCpus}).
-     */
-    static String notApart(Architecture arch, org.rsaml.model.Module module) {
-        int cores = Runtime.getRuntime().availableProcessors();
-        Map<org.rsaml.model.Processor, Integer> cpus = OneMachineCpus.of(arch);
-        boolean coreless = false;
-        java.util.Set<String> corelessHosts = new java.util.TreeSet<>();
-        for (org.rsaml.model.Layer layer : arch.getLayers()) {
-            for (org.rsaml.model.Module m : layer.getModules()) {
-                org.rsaml.model.Processor p = processor(arch, m);
-                if (p == null || p.getCore() < 0) {
-                    coreless = true;
-                    corelessHosts.add(RsamlLabels.host(p));
-                } else {
-                    int cpu = cpus.get(p);
-                    if (cpu >= cores) {
-                        return "processor " + p.getName() + "'s core " + p.getCore() + (cpu == p.getCore() ? "" : " (CPU " + cpu + " here)")
-                                + " is not among this machine's " + cores + ", so its threads run anywhere";
-                    }
-                }
-            }
-        }
-        if (corelessHosts.size() > 1) {
-            return "the modules without a core of hosts " + corelessHosts + " share the unclaimed cores";
-        }
-        int unclaimed = cores - new java.util.HashSet<>(cpus.values()).size();
-        org.rsaml.model.Processor p = processor(arch, module);
-        for (org.rsaml.model.Processor q : arch.getProcessors()) {
-            if (q != p && q.isSetSchedPolicy() && q.getSchedPolicy() == org.rsaml.model.SchedulingPolicy.EDF && !q.getModules().isEmpty()) {
-                return "the deadline threads of EDF processor " + q.getName() + " run on every core";
-            }
-        }
-        if (p != null && p.getCore() >= 0) {
-            return coreless && unclaimed == 0 ? "no core is left for the modules without one, so they run on every core" : null;
-        }
-        return unclaimed == 1 ? null : "it has no core of its own and shares " + unclaimed + " cores";
-    }
-
-    private static org.rsaml.model.Processor processor(Architecture arch, org.rsaml.model.Module m) {
-        return arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst().orElse(null);
     }
 
     static String module(String name, long period, double cost, String policy) {
@@ -353,110 +305,5 @@ class JobTimingTest {
                 + "\" category=\"other\" declaredLayers=\"1\">\n"
                 + "  <layers name=\"tasks\" timeUnit=\"ms\" level=\"0\" maxExecTime=\"1000.0\">\n" + modules + "  </layers>\n" + processors
                 + "</rsaml:Architecture>\n";
-    }
-
-    /** A bound to check once the run's allowance is known. */
-    private record Bounded(String label, org.rsaml.model.Module module, JobSummary summary, long bound) {
-    }
-
-    /** Where the job was scheduled as analysed, its bound to check; else noted in unchecked. */
-    private static void toCheck(Architecture arch, org.rsaml.model.Module module, String label, JobSummary s, Long bound,
-            List<Bounded> checks, List<String> unchecked) {
-        if (bound == null) {
-            return;
-        }
-        String apart = notApart(arch, module);
-        if (!s.asAnalysed() || apart != null) {
-            unchecked.add(label + " (" + (apart != null ? apart : s.sched()) + ")");
-            return;
-        }
-        checks.add(new Bounded(label, module, s, bound));
-    }
-
-    /**
-     * Runs the program with busy work as modeled and checks every release's summary against the
-     * model and the analysis; the bound itself where the release was scheduled as analysed.
-     */
-    static Map<String, JobSummary> runAndCheck(Architecture arch, Path project, String what) throws Exception {
-        Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
-        String output;
-        java.util.Set<String> otherRealtime;
-        try (PlatformCheck.RealtimeWatch watch = new PlatformCheck.RealtimeWatch()) {
-            output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS), "--quiet", "--busy-work", "100");
-            otherRealtime = watch.seen();
-        }
-        Map<String, JobSummary> summaries = JobSummary.of(output);
-        ExecutionPlan plan = ExecutionPlan.of(arch);
-        Map<String, Long> bounds = bounds(TimingAnalysis.analyse(arch));
-        RunTrace trace = new RunTrace(output);
-        List<String> labels = new ArrayList<>(plan.releases().stream().map(Release::label).toList());
-        plan.reactions().forEach(x -> labels.add(x.label()));
-        assertEquals(labels.stream().sorted().toList(), summaries.keySet().stream().sorted().toList(),
-                what + ": a summary line per timed release and per reacting module\n" + Tools.last(output, 3000));
-        List<String> unchecked = new ArrayList<>();
-        List<Bounded> checks = new ArrayList<>();
-        for (Reaction x : plan.reactions()) {
-            JobSummary s = summaries.get(x.label());
-            Long bound = bounds.get(x.label());
-            assertEquals(bound == null ? "none" : ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
-            assertEquals(x.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline of the reactions: " + s);
-            assertEquals(x.costNs(), s.modeledNs(), what + ": the modeled execution time of a reaction: " + s);
-            if (s.jobs() > 0) {
-                assertTrue(s.executionNs() >= x.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
-            }
-            assertEquals(s.misses(), trace.matching("miss " + x.label() + " job ").size(), what + ": a line per miss of " + x.label());
-            assertEquals(s.overruns(), trace.matching("overrun " + x.label() + " job ").size(), what + ": a line per overrun of " + x.label());
-            toCheck(arch, x.module().module(), x.label(), s, bound, checks, unchecked);
-        }
-        for (Release r : plan.releases()) {
-            JobSummary s = summaries.get(r.label());
-            Long bound = bounds.get(r.label());
-            assertEquals(bound == null ? "none" : ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
-            assertEquals(r.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline: " + s);
-            assertEquals(r.costNs(), s.modeledNs(), what + ": the modeled execution time: " + s);
-            // about one a period; the releases go on until the threads see the stop (within 20 ms, later on a loaded machine)
-            long expected = (RUN_MS * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
-            long most = ((RUN_MS + 500) * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
-            assertTrue(s.jobs() >= Math.max(1, expected / 2) && s.jobs() <= most,
-                    what + ": " + s.jobs() + " jobs of " + r.label() + " in " + RUN_MS + " ms, expected about " + expected);
-            assertTrue(s.executionNs() >= r.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
-            assertEquals((s.jobs() - 1) * r.periodNs(), s.lastNs() - s.firstNs(), 2_000,
-                    what + ": the jobs of " + r.label() + " released on its grid, one every period, none skipped: " + s);
-            assertEquals(s.misses(), trace.matching("miss " + r.label() + " job ").size(), what + ": a line per miss of " + r.label());
-            assertEquals(s.overruns(), trace.matching("overrun " + r.label() + " job ").size(),
-                    what + ": a line per overrun of " + r.label());
-            if (s.misses() > 0) {
-                assertTrue(s.worstNs() > s.deadlineNs(), what + ": a miss is a response past the deadline: " + s);
-            }
-            toCheck(arch, r.module().module(), r.label(), s, bound, checks, unchecked);
-        }
-        if (!checks.isEmpty() && !otherRealtime.isEmpty()) {
-            PlatformCheck.otherRealtime("JobTimingTest " + what, otherRealtime);
-            checks.forEach(c -> unchecked.add(c.label() + " (other programs' real-time threads ran)"));
-            checks.clear();
-        }
-        if (!checks.isEmpty()) {
-            PlatformCheck.Allowance allowance = PlatformCheck.forRun(
-                    PlatformCheck.probes(arch, plan, summaries, r -> notApart(arch, r.module().module())), summaries);
-            if (allowance == null) {
-                checks.forEach(c -> unchecked.add(c.label() + " (the calibration run got no real-time scheduling)"));
-                checks.clear();
-            } else {
-                System.out.println("JobTimingTest " + what + ": allowance for the platform " + allowance);
-            }
-            for (Bounded c : checks) {
-                JobSummary s = c.summary();
-                System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s, bound %s, worst start latency %s, %s%n",
-                        what, c.label(), s.jobs(), ms(s.worstNs()), ms(c.bound()), ms(s.latencyNs()), s.sched());
-                assertTrue(s.worstNs() <= c.bound() + allowance.ns(), what + ": " + c.label() + " responded in " + ms(s.worstNs())
-                        + ", more than the analysis's bound " + ms(c.bound()) + " plus the platform's allowance " + allowance + "\n"
-                        + Tools.last(output, 3000));
-            }
-        }
-        if (!unchecked.isEmpty()) {
-            System.out.println("JobTimingTest " + what + ": not scheduled as analysed on this machine: " + unchecked
-                    + ": the bound is not asserted for them, only the measurement and the report");
-        }
-        return summaries;
     }
 }

@@ -1,0 +1,187 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import org.rsaml.analysis.TimingAnalysis;
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.analysis.plan.Reaction;
+import org.rsaml.analysis.plan.Release;
+import org.rsaml.generator.internal.cxx.OneMachineCpus;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.support.RsamlLabels;
+
+/**
+ * Runs a generated C++ program as {@link JobTimingTest} does (with {@code --busy-work 100}, for
+ * {@link #RUN_MS}) and checks its summary lines against the model and the timing analysis
+ * (docs/timing.md, "What the C++ program measures"): a line per timed release and per reacting
+ * module, the analysis's bound written into the program, the modeled deadline and execution time,
+ * about one job a period on the release's grid, the busy work consumed, a line per miss and per
+ * overrun; and, for the releases scheduled as analysed with a CPU of their own, the worst observed
+ * response within the bound plus the platform's allowance, as {@link PlatformCheck#boundCheck}
+ * decides (said on standard output where not).
+ */
+final class CppJobCheck {
+    private CppJobCheck() {
+    }
+
+    static final long RUN_MS = 700;
+
+    /**
+     * Null when the release's threads have a CPU to themselves on this machine, as the analysis
+     * assumes: its processor's core has a CPU here and no other thread of the program strays onto it
+     * (the runtime confines the threads without a core to the cores no processor claims), or it has
+     * no core and those unclaimed cores are exactly one. Else why not. The cores of processors on
+     * other hosts have CPUs of their own in the program ({@link OneMachineCpus}).
+     */
+    static String notApart(Architecture arch, org.rsaml.model.Module module) {
+        int cores = Runtime.getRuntime().availableProcessors();
+        Map<org.rsaml.model.Processor, Integer> cpus = OneMachineCpus.of(arch);
+        boolean coreless = false;
+        java.util.Set<String> corelessHosts = new java.util.TreeSet<>();
+        for (org.rsaml.model.Layer layer : arch.getLayers()) {
+            for (org.rsaml.model.Module m : layer.getModules()) {
+                org.rsaml.model.Processor p = processor(arch, m);
+                if (p == null || p.getCore() < 0) {
+                    coreless = true;
+                    corelessHosts.add(RsamlLabels.host(p));
+                } else {
+                    int cpu = cpus.get(p);
+                    if (cpu >= cores) {
+                        return "processor " + p.getName() + "'s core " + p.getCore() + (cpu == p.getCore() ? "" : " (CPU " + cpu + " here)")
+                                + " is not among this machine's " + cores + ", so its threads run anywhere";
+                    }
+                }
+            }
+        }
+        if (corelessHosts.size() > 1) {
+            return "the modules without a core of hosts " + corelessHosts + " share the unclaimed cores";
+        }
+        int unclaimed = cores - new java.util.HashSet<>(cpus.values()).size();
+        org.rsaml.model.Processor p = processor(arch, module);
+        for (org.rsaml.model.Processor q : arch.getProcessors()) {
+            if (q != p && q.isSetSchedPolicy() && q.getSchedPolicy() == org.rsaml.model.SchedulingPolicy.EDF && !q.getModules().isEmpty()) {
+                return "the deadline threads of EDF processor " + q.getName() + " run on every core";
+            }
+        }
+        if (p != null && p.getCore() >= 0) {
+            return coreless && unclaimed == 0 ? "no core is left for the modules without one, so they run on every core" : null;
+        }
+        return unclaimed == 1 ? null : "it has no core of its own and shares " + unclaimed + " cores";
+    }
+
+    private static org.rsaml.model.Processor processor(Architecture arch, org.rsaml.model.Module m) {
+        return arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst().orElse(null);
+    }
+
+    /** A bound to check once the run's allowance is known. */
+    private record Bounded(String label, org.rsaml.model.Module module, JobSummary summary, long bound) {
+    }
+
+    /** Where the job was scheduled as analysed, its bound to check; else noted in unchecked. */
+    private static void toCheck(Architecture arch, org.rsaml.model.Module module, String label, JobSummary s, Long bound,
+            List<Bounded> checks, List<String> unchecked) {
+        if (bound == null) {
+            return;
+        }
+        String apart = notApart(arch, module);
+        if (!s.asAnalysed() || apart != null) {
+            unchecked.add(label + " (" + (apart != null ? apart : s.sched()) + ")");
+            return;
+        }
+        checks.add(new Bounded(label, module, s, bound));
+    }
+
+    /**
+     * Runs the program with busy work as modeled and checks every release's summary against the
+     * model and the analysis; the bound itself where the release was scheduled as analysed.
+     */
+    static Map<String, JobSummary> runAndCheck(Architecture arch, Path project, String what) throws Exception {
+        Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
+        String output;
+        OtherRealtime.Use others;
+        try (OtherRealtime.Watch watch = new OtherRealtime.Watch()) {
+            output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS), "--quiet", "--busy-work", "100");
+            others = watch.stop();
+        }
+        Map<String, JobSummary> summaries = JobSummary.of(output);
+        ExecutionPlan plan = ExecutionPlan.of(arch);
+        Map<String, Long> bounds = JobTimingTest.bounds(TimingAnalysis.analyse(arch));
+        RunTrace trace = new RunTrace(output);
+        List<String> labels = new ArrayList<>(plan.releases().stream().map(Release::label).toList());
+        plan.reactions().forEach(x -> labels.add(x.label()));
+        assertEquals(labels.stream().sorted().toList(), summaries.keySet().stream().sorted().toList(),
+                what + ": a summary line per timed release and per reacting module\n" + Tools.last(output, 3000));
+        List<String> unchecked = new ArrayList<>();
+        List<Bounded> checks = new ArrayList<>();
+        for (Reaction x : plan.reactions()) {
+            JobSummary s = summaries.get(x.label());
+            Long bound = bounds.get(x.label());
+            assertEquals(bound == null ? "none" : JobTimingTest.ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
+            assertEquals(x.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline of the reactions: " + s);
+            assertEquals(x.costNs(), s.modeledNs(), what + ": the modeled execution time of a reaction: " + s);
+            if (s.jobs() > 0) {
+                assertTrue(s.executionNs() >= x.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
+            }
+            assertEquals(s.misses(), trace.matching("miss " + x.label() + " job ").size(), what + ": a line per miss of " + x.label());
+            assertEquals(s.overruns(), trace.matching("overrun " + x.label() + " job ").size(), what + ": a line per overrun of " + x.label());
+            toCheck(arch, x.module().module(), x.label(), s, bound, checks, unchecked);
+        }
+        for (Release r : plan.releases()) {
+            JobSummary s = summaries.get(r.label());
+            Long bound = bounds.get(r.label());
+            assertEquals(bound == null ? "none" : JobTimingTest.ms(bound), s.bound(), what + ": the analysis's bound, written into the program: " + s);
+            assertEquals(r.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline: " + s);
+            assertEquals(r.costNs(), s.modeledNs(), what + ": the modeled execution time: " + s);
+            // about one a period; the releases go on until the threads see the stop (within 20 ms, later on a loaded machine)
+            long expected = (RUN_MS * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
+            long most = ((RUN_MS + 500) * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
+            assertTrue(s.jobs() >= Math.max(1, expected / 2) && s.jobs() <= most,
+                    what + ": " + s.jobs() + " jobs of " + r.label() + " in " + RUN_MS + " ms, expected about " + expected);
+            assertTrue(s.executionNs() >= r.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
+            assertEquals((s.jobs() - 1) * r.periodNs(), s.lastNs() - s.firstNs(), 2_000,
+                    what + ": the jobs of " + r.label() + " released on its grid, one every period, none skipped: " + s);
+            assertEquals(s.misses(), trace.matching("miss " + r.label() + " job ").size(), what + ": a line per miss of " + r.label());
+            assertEquals(s.overruns(), trace.matching("overrun " + r.label() + " job ").size(),
+                    what + ": a line per overrun of " + r.label());
+            if (s.misses() > 0) {
+                assertTrue(s.worstNs() > s.deadlineNs(), what + ": a miss is a response past the deadline: " + s);
+            }
+            toCheck(arch, r.module().module(), r.label(), s, bound, checks, unchecked);
+        }
+        if (!checks.isEmpty()) {
+            PlatformCheck.BoundCheck check = PlatformCheck.boundCheck("JobTimingTest " + what, others,
+                    () -> PlatformCheck.probes(arch, plan, summaries, r -> notApart(arch, r.module().module())), summaries);
+            PlatformCheck.Allowance allowance = check.allowance();
+            if (allowance == null) {
+                checks.forEach(c -> unchecked.add(c.label() + " (" + check.notChecked() + ")"));
+                checks.clear();
+            } else {
+                System.out.println("JobTimingTest " + what + ": allowance for the platform " + allowance);
+            }
+            for (Bounded c : checks) {
+                JobSummary s = c.summary();
+                System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s, bound %s, worst start latency %s, %s%n",
+                        what, c.label(), s.jobs(), JobTimingTest.ms(s.worstNs()), JobTimingTest.ms(c.bound()), JobTimingTest.ms(s.latencyNs()), s.sched());
+                assertTrue(s.worstNs() <= c.bound() + allowance.ns(), what + ": " + c.label() + " responded in " + JobTimingTest.ms(s.worstNs())
+                        + ", more than the analysis's bound " + JobTimingTest.ms(c.bound()) + " plus the platform's allowance " + allowance + "\n"
+                        + Tools.last(output, 3000));
+            }
+        }
+        if (!unchecked.isEmpty()) {
+            System.out.println("JobTimingTest " + what + ": not scheduled as analysed on this machine: " + unchecked
+                    + ": the bound is not asserted for them, only the measurement and the report");
+        }
+        return summaries;
+    }
+}
