@@ -8,6 +8,7 @@ import java.util.TreeSet
 import org.rsaml.analysis.plan.ExecutionPlan
 import org.rsaml.analysis.plan.LinkPlan
 import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.PlannedPort
 import org.rsaml.analysis.plan.Release
 import org.rsaml.analysis.plan.PlannedFunction
 import org.rsaml.generator.internal.Templates
@@ -133,6 +134,46 @@ class Ros2Context {
 			times.put(rosNames.rosNode(m), timeParameters(m).map[name].toList)
 		}
 		times
+	}
+
+	/**
+	 * Every parameter the parameters file gives each node, by node name, with the model's value as
+	 * the file writes it: the times in their units, then the QoS overrides. Generating again checks a
+	 * kept file against them (Ros2ParamsCheck).
+	 */
+	def modelParameters() {
+		val nodes = new java.util.LinkedHashMap<String, java.util.Map<String, String>>
+		for (m : plan.modules) {
+			val values = new java.util.LinkedHashMap<String, String>
+			timeParameters(m).forEach[values.put(name, value)]
+			values.putAll(qosParameters(m))
+			nodes.put(rosNames.rosNode(m), values)
+		}
+		nodes
+	}
+
+	/**
+	 * The QoS a module's node creates its publishers and subscriptions with, as the parameters that
+	 * override it (qos_overrides.TOPIC.publisher|subscription.POLICY, TOPIC as the model names it).
+	 */
+	def qosParameters(PlannedModule m) {
+		val parameters = new java.util.LinkedHashMap<String, String>
+		for (p : m.outputs) {
+			qos(p, "publisher", parameters)
+		}
+		for (p : m.inputs) {
+			qos(p, "subscription", parameters)
+		}
+		for (l : linksOf(m)) {
+			if (!m.inputs.exists[rosNames.topic(it) == rosNames.topic(l.trigger)]) {
+				qos(l.trigger, "subscription", parameters)
+			}
+		}
+		parameters
+	}
+
+	def private qos(PlannedPort p, String entity, java.util.Map<String, String> into) {
+		rosNames.qosPolicies(p).forEach[policy, value|into.putIfAbsent("qos_overrides." + rosNames.topic(p) + "." + entity + "." + policy, value)]
 	}
 
 	/** Every time parameter of a module's node, in the order the node declares them. */

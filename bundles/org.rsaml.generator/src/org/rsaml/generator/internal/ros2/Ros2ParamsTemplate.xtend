@@ -4,9 +4,6 @@
  */
 package org.rsaml.generator.internal.ros2
 
-import java.util.LinkedHashSet
-import org.rsaml.analysis.plan.PlannedModule
-import org.rsaml.analysis.plan.PlannedPort
 import org.rsaml.generator.internal.Templates
 
 /**
@@ -32,7 +29,8 @@ class Ros2ParamsTemplate extends Ros2Template {
 	def params() '''
 		# Parameters of the nodes of the RsaML architecture '«doc(plan.name)»'. «Templates.USER_OWNED»
 		# Both launch files load it (params_file:=PATH loads another file); a node takes the model's value
-		# for a parameter this file does not set, so a value here overrides the model's.
+		# for a parameter this file does not set, so a value here overrides the model's (generating again
+		# warns, naming the line, about a value that differs from the model's and a name no node has).
 		# Times are in the model's units, as each name ends: _ns, _us, _ms or _s.
 		# QoS of a topic: qos_overrides.TOPIC.publisher.POLICY or qos_overrides.TOPIC.subscription.POLICY
 		# (reliability: reliable or best_effort; history: keep_last or keep_all; depth: a number), TOPIC
@@ -46,30 +44,9 @@ class Ros2ParamsTemplate extends Ros2Template {
 			    «FOR p : context.timeParameters(m)»
 			    	«p.name»: «p.value»
 			    «ENDFOR»
-			    «FOR q : qosOf(m)»
-			    	«q»
+			    «FOR q : context.qosParameters(m).entrySet»
+			    	«q.key»: «q.value»
 			    «ENDFOR»
 		«ENDFOR»
 	'''
-
-	/** The QoS the node's publishers and subscriptions are created with, as override parameters. */
-	def private qosOf(PlannedModule m) {
-		val lines = new LinkedHashSet<String>
-		for (p : m.outputs) {
-			lines += qos(p, "publisher")
-		}
-		for (p : m.inputs) {
-			lines += qos(p, "subscription")
-		}
-		for (l : context.linksOf(m)) {
-			if (!m.inputs.exists[topic == l.trigger.topic]) {
-				lines += qos(l.trigger, "subscription")
-			}
-		}
-		lines
-	}
-
-	def private qos(PlannedPort p, String entity) {
-		p.qosPolicies.entrySet.map["qos_overrides." + p.topic + "." + entity + "." + key + ": " + value]
-	}
 }

@@ -52,7 +52,7 @@ class Ros2Target implements TargetGenerator {
 				+ " (the shortest period that feeds the cycle; parameter " + cycle.map[context.reactionParameter(it).name].toSet.join(", ") + ")"
 		}
 		val params = new Ros2ParamsTemplate(context).path
-		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.staleTimes(params, it, context.timeNames)]
+		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.check(params, it, context.modelParameters)]
 		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 }
