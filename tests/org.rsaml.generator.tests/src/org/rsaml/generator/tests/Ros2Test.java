@@ -10,7 +10,6 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.math.BigDecimal;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -32,8 +31,6 @@ import org.rsaml.generator.Target;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.Connection;
-import org.rsaml.model.ExecutionType;
-import org.rsaml.model.Function;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
@@ -248,82 +245,10 @@ class Ros2Test {
             }
         }
 
-        // Messages by shared pointer: every subscription takes a ConstSharedPtr, which the node keeps
-        // as in_<port> (no copy on the way to the reaction), and every publication hands over a unique_ptr.
-        String nodesText = allText(root.resolve("gen"));
-        Matcher sub = Pattern.compile("this->create_subscription<([\\w:]+)>\\(.*?\\]\\(([^)]*)\\) \\{", Pattern.DOTALL).matcher(nodesText);
-        int subscriptions = 0;
-        while (sub.find()) {
-            subscriptions++;
-            assertEquals(sub.group(1) + "::ConstSharedPtr message", sub.group(2), "a subscription's callback must take the message by shared pointer");
-        }
-        int inputs = arch.getLayers().stream().flatMap(l -> l.getModules().stream()).mapToInt(m -> (int) m.getPorts().stream()
-                .filter(p -> !(p instanceof OutputPort)).count()).sum();
-        assertTrue(subscriptions >= inputs, subscriptions + " subscriptions for " + inputs + " entry ports");
-        assertFalse(nodesText.contains("= *message"), "a message is copied into an entry port");
-        Matcher entry = Pattern.compile("\\n\\s*([\\w:]+) (in_\\w+);").matcher(nodesText);
-        while (entry.find()) {
-            assertTrue(entry.group(1).endsWith("::ConstSharedPtr"), "entry port " + entry.group(2) + " holds a copy: " + entry.group(1));
-        }
-        Matcher publish = Pattern.compile("->publish\\(([^;]*)\\);").matcher(nodesText);
-        while (publish.find()) {
-            assertTrue(publish.group(1).startsWith("std::make_unique<"), "a publication that is not a unique_ptr: " + publish.group());
-        }
-
-        // colcon test: linters where installed, and the launch test, which names the entry ports that
-        // timed modules feed (each must receive messages) and is valid Python.
-        assertTrue(cmake.contains("if(BUILD_TESTING)") && cmake.contains("find_package(ament_lint_auto QUIET)")
-                && cmake.contains("add_launch_test(test/test_" + pkg + "_launch.py"), cmake);
-        Path launchTest = root.resolve("test/test_" + pkg + "_launch.py");
-        Tools.ok(out, 60, Ros2Build.python(), "-m", "py_compile", launchTest.toString());
-        Matcher fed = Pattern.compile("FED_PORTS = \\[(.*)\\]").matcher(Files.readString(launchTest));
-        assertTrue(fed.find(), "the launch test names no ports: " + launchTest);
-        Set<String> expectedFed = new TreeSet<>();
-        for (org.rsaml.analysis.plan.Flow f : org.rsaml.analysis.plan.ExecutionPlan.of(arch).flows()) {
-            if (!f.source().module().releases().isEmpty()) {
-                expectedFed.add(f.target().module().qualifiedName() + ":" + f.target().name());
-            }
-        }
-        Set<String> listed = new TreeSet<>();
-        Matcher quoted = Pattern.compile("'((?:[^'\\\\]|\\\\.)*)'").matcher(fed.group(1));
-        while (quoted.find()) {
-            listed.add(quoted.group(1));
-        }
-        if (expectedFed.stream().noneMatch(x -> x.contains("'") || x.contains("\\"))) {
-            assertEquals(expectedFed, listed, "the entry ports the launch test expects messages at");
-        }
-
-        // A timer per periodic function, on the node's clock, its period a parameter. (The
-        // scheduling runtime in gen/rsaml/ stamps its trace lines with the steady clock; its timers
-        // are the node's.)
-        String all = allText(root.resolve("gen"));
-        String scheduling = Files.readString(root.resolve("gen/rsaml/scheduling.hpp"));
-        assertTrue(scheduling.contains("rclcpp::create_timer(\n        base_, timers_, clock_,") && scheduling.contains("node.get_clock()"),
-                "the timers of a plain or managed node are on the node's clock:\n" + scheduling);
-        assertFalse(all.contains("create_wall_timer"), "a wall timer ignores use_sim_time");
-        assertFalse(all.contains("steady_clock"), "steady_clock ignores use_sim_time");
-        assertTrue(all.contains("publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();"));
-        for (Layer layer : arch.getLayers()) {
-            for (Module m : layer.getModules()) {
-                for (Function f : m.getFunctions()) {
-                    if (f.getExecType() == ExecutionType.PERIODIC && f.getPeriod() > 0) {
-                        // in the function's unit, as the model and the parameters file write it
-                        String value = new BigDecimal(Double.toString(f.getPeriod())).stripTrailingZeros().toPlainString();
-                        value = value.contains(".") ? value : value + ".0";
-                        String unit = f.getTimeUnit().getLiteral();
-                        Matcher p = Pattern.compile("(timer_release_\\w+)_period_ = nanoseconds\\(\"([\\w.]+\\.period_" + unit
-                                + ")\", this->declare_parameter<double>\\(\"\\2\", " + Pattern.quote(value) + "\\), " + f.getTimeUnit().getValue()
-                                + "\\.0\\);").matcher(all);
-                        assertTrue(p.find(), "no period parameter for " + f.getName() + " (" + value + " " + unit + ")");
-                        String given = nodeParameters.get(nodesByModule.get(key(m)));
-                        assertTrue(given.contains(".period_" + unit + "': " + value), "the launch files do not give node "
-                                + nodesByModule.get(key(m)) + " the period of " + f.getName() + " from the parameters file: " + given);
-                        assertTrue(all.contains(p.group(1) + "_ = this->rsaml_add_timer("), "no timer for " + f.getName());
-                        assertTrue(all.contains(p.group(1) + "_period_, [this]"), "the timer of " + f.getName() + " does not take its period parameter");
-                    }
-                }
-            }
-        }
+        // Messages by shared pointer, the package's launch test, the timers and their period parameters.
+        Ros2NodeCode.assertMessagesByPointer(arch, root);
+        Ros2NodeCode.assertLaunchTest(arch, pkg, root, cmake);
+        Ros2NodeCode.assertTimers(arch, root, nodeParameters, nodesByModule);
     }
 
     private static final Pattern LINK = Pattern.compile("// (?:Inhibitor|Suppressor) (\\S+), triggered by [^\\n]*\\n\\s*link_(\\w+)_sub_ = "
@@ -339,7 +264,7 @@ class Ros2Test {
     void linksAreAssertedOnlyByTrueOnBooleanTriggers(@TempDir Path tmp) throws Exception {
         Path out = tmp.resolve("ws");
         new RsamlGenerator().generate(Tools.example("subsumption-brooks.rsaml"), Target.ROS2, out, false);
-        String all = allText(out.resolve("subsumption_mobile_robot/gen"));
+        String all = Ros2NodeCode.allText(out.resolve("subsumption_mobile_robot/gen"));
         Matcher link = LINK.matcher(all);
         Set<String> booleans = new TreeSet<>();
         Set<String> others = new TreeSet<>();
@@ -452,7 +377,7 @@ class Ros2Test {
         return Tools.run(root, 60, command.toArray(String[]::new));
     }
 
-    private static String key(Module m) {
+    static String key(Module m) {
         return m.getLayer().getName() + "/" + m.getName();
     }
 
@@ -500,16 +425,5 @@ class Ros2Test {
             }
         }
         return found;
-    }
-
-    private static String allText(Path dir) throws Exception {
-        StringBuilder sb = new StringBuilder();
-        try (Stream<Path> s = Files.walk(dir)) {
-            for (Path p : s.filter(f -> f.toString().endsWith(".hpp") || f.toString().endsWith(".cpp"))
-                    .filter(f -> !f.getParent().getFileName().toString().equals("rsaml")).sorted().toList()) {
-                sb.append(Files.readString(p)).append('\n');
-            }
-        }
-        return sb.toString();
     }
 }

@@ -14,17 +14,20 @@ import org.rsaml.generator.internal.cxx.CxxNames
 /**
  * A module's node, the generated base class gen/LAYER/ModuleBase.hpp: its parameters, publishers,
  * subscriptions (subsumption links among them) and timers on the scheduling runtime, the virtual
- * methods the architect's class overrides, and how a release or an arrival runs them.
+ * methods the architect's class overrides, and how a release or an arrival runs them. What only a
+ * managed (rclcpp_lifecycle) node has, its transitions, is Ros2ManagedNodeTemplate's.
  */
 class Ros2NodeTemplate extends Ros2Template {
 
 	val extension CxxNames names
 	val extension Ros2Names rosNames
+	val Ros2ManagedNodeTemplate managed
 
 	new(Ros2Context context) {
 		super(context)
 		this.names = context.names
 		this.rosNames = context.rosNames
+		this.managed = new Ros2ManagedNodeTemplate(context, this)
 	}
 
 	def private headersOf(PlannedModule m) {
@@ -89,18 +92,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		      : ::«names.project»::rsaml_ros2::«IF m.managed»ScheduledLifecycleNode«ELSE»ScheduledNode«ENDIF»(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
 		    «parameters(m)»
 		    «IF m.managed»
-		    	// Created unconfigured: publishers and subscriptions come with configure, timers with activate.
-		    	«FOR r : m.releases»
-		    		«r.timerMember»_release_ = this->rsaml_add_release(
-		    		    «str(r.label)», «r.rank», «IF r.policy == org.rsaml.model.SchedulingPolicy.RR»true«ELSE»false«ENDIF», «r.deadlineNs», «r.costNs», «r.timerMember»_period_,
-		    		    «context.bounds.of(r).responseNs», «IF r.edf»true«ELSE»false«ENDIF»);
-		    	«ENDFOR»
-		    	«FOR p : m.inputs»
-		    		«p.subName»_port_ = this->rsaml_add_arrivals(«str(p.name)»);
-		    	«ENDFOR»
-		    	«FOR l : context.linksOf(m)»
-		    		link_«l.stem»_port_ = this->rsaml_add_arrivals(«str(l.qualifiedName)»);
-		    	«ENDFOR»
+		    	«managed.construction(m)»
 		    «ELSE»
 		    	«entities(m)»
 		    	«timers(m)»
@@ -151,7 +143,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		   */
 		  virtual void publish_outputs() {
 		    «IF m.managed»
-		    	«inactiveReturn»
+		    	«managed.inactiveReturn»
 		    «ENDIF»
 		    «FOR p : m.outputs»
 		    	«IF p.inhibitors.empty»
@@ -165,7 +157,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  }
 		  «IF m.managed»
 
-		  	«transitions(m)»
+		  	«managed.transitions(m)»
 		  «ENDIF»
 
 		 private:
@@ -180,7 +172,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  }
 
 		  «IF m.managed»
-		  	«releaseEntities(m)»
+		  	«managed.releaseEntities(m)»
 
 		  «ENDIF»
 		  /** Whether a subsumption link is active now (on the node's clock). */
@@ -199,7 +191,7 @@ class Ros2NodeTemplate extends Ros2Template {
 
 		  	void «r.method»() {
 		  	  «IF m.managed»
-		  	  	«inactiveReturn»
+		  	  	«managed.inactiveReturn»
 		  	  «ENDIF»
 		  	  «release(r)»
 		  	  publish_outputs();
@@ -265,15 +257,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	rclcpp::TimerBase::SharedPtr «r.timerMember»_;
 		  «ENDFOR»
 		  «IF m.managed»
-		  	«FOR r : m.releases»
-		  		std::size_t «r.timerMember»_release_;
-		  	«ENDFOR»
-		  	«FOR p : m.inputs»
-		  		std::size_t «p.subName»_port_;
-		  	«ENDFOR»
-		  	«FOR l : context.linksOf(m)»
-		  		std::size_t link_«l.stem»_port_;
-		  	«ENDFOR»
+		  	«managed.members(m)»
 		  «ENDIF»
 		};
 
@@ -297,7 +281,7 @@ class Ros2NodeTemplate extends Ros2Template {
 	'''
 
 	/** Creates the publishers and subscriptions: in the constructor of a plain node, when a managed node is configured. */
-	def private entities(PlannedModule m) '''
+	def entities(PlannedModule m) '''
 		rclcpp::PublisherOptions publisher_options;
 		publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
 		rclcpp::SubscriptionOptions subscription_options;
@@ -312,7 +296,7 @@ class Ros2NodeTemplate extends Ros2Template {
 			    «str(p.topic)», «p.qos»,
 			    [this, port = «IF m.managed»«p.subName»_port_«ELSE»this->rsaml_add_arrivals(«str(p.name)»)«ENDIF»](«p.rosType»::ConstSharedPtr message) {
 			      «IF m.managed»
-			      	«inactiveReturn»
+			      	«managed.inactiveReturn»
 			      «ENDIF»
 			      this->rsaml_run_arrival(port, [&] { this->«p.receiveName»(message, false); });
 			    },
@@ -324,7 +308,7 @@ class Ros2NodeTemplate extends Ros2Template {
 			    «str(l.trigger.topic)», «l.trigger.qos»,
 			    [this, port = «IF m.managed»link_«l.stem»_port_«ELSE»this->rsaml_add_arrivals(«str(l.qualifiedName)»)«ENDIF»](«l.trigger.rosType»::ConstSharedPtr message) {
 			      «IF m.managed»
-			      	«inactiveReturn»
+			      	«managed.inactiveReturn»
 			      «ENDIF»
 			      this->rsaml_run_arrival(port, [&] {
 			        «IF l.trigger.assertsOnlyWhenTrue»
@@ -343,13 +327,12 @@ class Ros2NodeTemplate extends Ros2Template {
 			    subscription_options);
 		«ENDFOR»
 	'''
-
 	/**
 	 * Creates the timers of the releases: in the constructor of a plain node, when a managed node is
 	 * activated (its releases and their callback groups exist from its constructor on, so that their
 	 * executor threads serve the timers whenever they are created).
 	 */
-	def private timers(PlannedModule m) '''
+	def timers(PlannedModule m) '''
 		«FOR r : m.releases»
 			// «r.kind.name.toLowerCase» «doc(r.label)» every «r.periodNs» ns («r.why»): rank «r.rank»«IF r.edf» (EDF: SCHED_DEADLINE)«ENDIF», deadline «r.deadlineNs» ns, cost «r.costNs» ns;
 			// «context.boundComment(r)»
@@ -364,90 +347,6 @@ class Ros2NodeTemplate extends Ros2Template {
 		«ENDFOR»
 	'''
 
-
-	/** A managed node drops what arrives while it is not active. */
-	def private inactiveReturn() '''
-		if (!this->rsaml_active()) {
-		  return;  // not active
-		}
-	'''
-
-	/** The transitions of a managed node. */
-	def private transitions(PlannedModule m) '''
-		  // The transitions of the managed node; an override of yours calls these.
-		  CallbackReturn on_configure(const rclcpp_lifecycle::State& state) override {
-		    (void)state;
-		    «entities(m)»
-		    this->rsaml_state(false, "inactive");
-		    return CallbackReturn::SUCCESS;
-		  }
-
-		  CallbackReturn on_activate(const rclcpp_lifecycle::State& state) override {
-		    (void)state;
-		    «FOR p : m.outputs»
-		    	«p.pubName»_->on_activate();
-		    «ENDFOR»
-		    «timers(m)»
-		    this->rsaml_state(true, "active");
-		    return CallbackReturn::SUCCESS;
-		  }
-
-		  CallbackReturn on_deactivate(const rclcpp_lifecycle::State& state) override {
-		    (void)state;
-		    this->rsaml_state(false, "inactive");
-		    rsaml_stop_timers();
-		    «FOR p : m.outputs»
-		    	«p.pubName»_->on_deactivate();
-		    «ENDFOR»
-		    return CallbackReturn::SUCCESS;
-		  }
-
-		  CallbackReturn on_cleanup(const rclcpp_lifecycle::State& state) override {
-		    (void)state;
-		    rsaml_release_entities();
-		    this->rsaml_state(false, "unconfigured");
-		    return CallbackReturn::SUCCESS;
-		  }
-
-		  CallbackReturn on_shutdown(const rclcpp_lifecycle::State& state) override {
-		    (void)state;
-		    this->rsaml_state(false, "finalized");
-		    rsaml_release_entities();
-		    return CallbackReturn::SUCCESS;
-		  }
-	'''
-
-	/** What a managed node releases when it is deactivated, cleaned up or shut down. */
-	def private releaseEntities(PlannedModule m) '''
-		  void rsaml_stop_timers() {
-		    «FOR r : m.releases»
-		    	if («r.timerMember»_) {
-		    	  «r.timerMember»_->cancel();
-		    	  «r.timerMember»_.reset();
-		    	}
-		    «ENDFOR»
-		  }
-
-		  void rsaml_release_entities() {
-		    rsaml_stop_timers();
-		    «FOR p : m.outputs»
-		    	«p.pubName»_.reset();
-		    «ENDFOR»
-		    «FOR p : m.inputs»
-		    	«p.subName»_.reset();
-		    «ENDFOR»
-		    «FOR l : context.linksOf(m)»
-		    	link_«l.stem»_sub_.reset();
-		    	link_«l.stem»_until_.reset();
-		    «ENDFOR»
-		    «FOR f : m.stepFunctions.filter[minIntervalNs > 0]»
-		    	«f.lastRunMember».reset();
-		    «ENDFOR»
-		    «IF m.reactive && m.reactionIntervalNs > 0»
-		    	last_reaction_.reset();
-		    «ENDIF»
-		  }
-	'''
 
 	/** What the analysis says of a module's reactions' response time, for a comment. */
 	def private boundComment(Reaction x) {

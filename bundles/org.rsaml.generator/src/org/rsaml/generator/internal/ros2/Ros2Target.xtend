@@ -26,8 +26,9 @@ import org.rsaml.generator.spi.TargetGenerator
  * the analysis's real-time priority, in the package's component container or a node's own process.
  * Same generation gap as the C++ target: gen/ and the build
  * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
- * Each output file has its template: Ros2NodeTemplate, Ros2ComponentTemplate, Ros2CmakeTemplate,
- * Ros2PackageTemplate, Ros2LaunchTemplate, Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
+ * Each output file has its template: Ros2NodeTemplate (with Ros2ManagedNodeTemplate for a managed
+ * node), Ros2ComponentTemplate, Ros2CmakeTemplate, Ros2PackageTemplate, Ros2LaunchTemplate,
+ * Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
  */
 class Ros2Target implements TargetGenerator {
 

@@ -1,0 +1,200 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.generator.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.generator.RsamlGenerator;
+import org.rsaml.generator.Target;
+import org.rsaml.generator.internal.Names;
+import org.rsaml.validation.ModelLoader;
+
+/**
+ * What the generated ROS 2 packages' launch files and build do on a real ROS 2 ({@link Ros2Jazzy}),
+ * apart from running a system ({@link Ros2LaunchTest}): host:= starts only one host's containers or
+ * nodes, the launch prefixes pin each to its CPU, an invalid parameters file is refused with its
+ * line, and the package's own launch test passes under colcon test where ROS 2 has launch_testing.
+ */
+class Ros2LaunchFilesTest {
+
+    /**
+     * The package's own launch test (launch_testing, test/test_&lt;pkg&gt;_launch.py), run by colcon test
+     * as a ROS 2 developer runs it: it starts the nodes, stops them and checks that messages reached
+     * the ports timed modules feed and that every process exited cleanly. Where ROS 2 has no
+     * launch_testing (the Jazzy core of the shared folder), it is skipped and says so: the package's
+     * CMakeLists.txt then adds no launch test (Ros2Test checks that it looks for launch_testing under
+     * BUILD_TESTING, and every colcon build here configures that block).
+     */
+    @Test
+    void thePackagesLaunchTestPassesUnderColconTest(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String absent = Ros2Jazzy.launchTestingMissing();
+        if (absent != null) {
+            System.err.println("Ros2LaunchFilesTest: skipped: " + absent);
+        }
+        Assumptions.assumeTrue(absent == null, absent);
+        Path model = Ros2Test.model("resources/ros2-shared-messages.rsaml");
+        String pkg = Names.snake(ModelLoader.load(model, "ros2-shared-messages.rsaml").architecture().getName());
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        Ros2Jazzy.colconBuild(src, tmp);
+        String paths = " --build-base '" + tmp.resolve("build") + "' --install-base '" + tmp.resolve("install") + "'";
+        Tools.Result test = Tools.run(tmp, 600, Ros2Jazzy.bash("colcon --log-base '" + tmp.resolve("log") + "' test --base-paths '" + src + "'"
+                + paths + " --packages-select " + pkg + " --event-handlers console_direct+").toArray(String[]::new));
+        Tools.Result result = Tools.run(tmp, 60, Ros2Jazzy.bash("colcon test-result --verbose --test-result-base '" + tmp.resolve("build/" + pkg)
+                + "'").toArray(String[]::new));
+        assertTrue(test.exit() == 0 && result.exit() == 0 && result.output().contains("0 errors, 0 failures"),
+                "colcon test of " + pkg + ":\n" + Tools.last(test.output(), 6000) + "\n" + result.output());
+        assertTrue(result.output().contains("test_" + pkg + "_launch"), "the launch test did not run:\n" + result.output());
+    }
+
+    /** Which containers (or nodes) a launch file starts for host:=ARG, evaluated by ROS 2's launch itself. */
+    private static final String STARTED = """
+            import importlib.util, sys
+            from launch import LaunchContext
+            from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
+            sys.dont_write_bytecode = True
+            spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
+            context = LaunchContext()
+            entities = m.generate_launch_description().entities
+            for e in entities:
+                if type(e).__name__ == 'DeclareLaunchArgument':
+                    context.launch_configurations[e.name] = perform_substitutions(context, e.default_value) if e.name != 'params_file' else sys.argv[3]
+            context.launch_configurations['host'] = sys.argv[2]
+            started = []
+            for e in [a for e in entities if type(e).__name__ == 'OpaqueFunction' for a in e.execute(context)]:
+                if e.condition is None or e.condition.evaluate(context):
+                    started.append(perform_substitutions(context, normalize_to_list_of_substitutions(e._Node__node_name)))
+            print('started', ' '.join(sorted(started)))
+            """;
+
+    /**
+     * A processor on another host: mobile-base-latency with its navigation processor on the board
+     * "nav-board". Both launch files take host:=, and ROS 2's launch starts only that host's
+     * containers (or nodes): main is the processors without a host; empty, every one.
+     */
+    @Test
+    void theHostArgumentStartsOnlyTheNodesOfOneHost(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        String nav = "<processors name=\"core1\"";
+        assertTrue(text.contains(nav));
+        Path model = tmp.resolve("two-hosts.rsaml");
+        Files.writeString(model, text.replace(nav, nav + " host=\"nav-board\" linkLatency=\"2.0\""));
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        String pkg = Names.snake(ModelLoader.load(model, "two-hosts.rsaml").architecture().getName());
+        Path script = tmp.resolve("started.py");
+        Files.writeString(script, STARTED);
+        Map<String, String> expected = Map.of("", "started " + pkg + "_core0_container " + pkg + "_core1_container", "main",
+                "started " + pkg + "_core0_container", "nav-board", "started " + pkg + "_core1_container", "elsewhere", "started");
+        String params = src.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
+        for (Map.Entry<String, String> e : expected.entrySet()) {
+            String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py")
+                    + "' '" + e.getKey() + "' '" + params + "'").toArray(String[]::new));
+            assertTrue(out.strip().endsWith(e.getValue()), "host:=" + e.getKey() + " should start " + e.getValue() + ":\n" + out);
+        }
+        String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
+                + "_processes.launch.py") + "' nav-board '" + params + "'").toArray(String[]::new));
+        assertTrue(processes.strip().endsWith("started navigation_obstacle_detector navigation_path_planner"),
+                "the navigation nodes alone:\n" + processes);
+    }
+
+    /** Runs each started process's launch prefix for host:=ARG on a command that prints the CPUs it may use, as "node cpus". */
+    private static final String PINNED = """
+            import importlib.util, shlex, subprocess, sys
+            from launch import LaunchContext
+            from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
+            sys.dont_write_bytecode = True
+            spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
+            context = LaunchContext()
+            entities = m.generate_launch_description().entities
+            for e in entities:
+                if type(e).__name__ == 'DeclareLaunchArgument':
+                    context.launch_configurations[e.name] = perform_substitutions(context, e.default_value) if e.name != 'params_file' else sys.argv[3]
+            context.launch_configurations['host'] = sys.argv[2]
+            for e in [a for e in entities if type(e).__name__ == 'OpaqueFunction' for a in e.execute(context)]:
+                if type(e).__name__ in ('Node', 'ComposableNodeContainer') and (e.condition is None or e.condition.evaluate(context)):
+                    name = perform_substitutions(context, normalize_to_list_of_substitutions(e._Node__node_name))
+                    prefix = shlex.split(perform_substitutions(context, e.process_description.prefix))
+                    out = subprocess.run(prefix + ['sh', '-c', 'grep Cpus_allowed_list /proc/self/status'], capture_output=True, text=True)
+                    print(name, out.stdout.split()[-1], out.stderr.strip())
+            """;
+
+    /**
+     * An invalid edit of a parameters file, on ROS 2's own launch: refused before any node starts,
+     * with the file, the line and what is wrong, as launch reports an error (no Python traceback).
+     */
+    @Test
+    void anInvalidParametersFileIsRefusedWithItsLine(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        Path model = Tools.example(Ros2LaunchTest.TUNED);
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        String pkg = Names.snake(ModelLoader.load(model, Ros2LaunchTest.TUNED).architecture().getName());
+        Path params = src.resolve(pkg + "/config/" + pkg + ".params.yaml");
+        List<String> lines = new ArrayList<>(Files.readAllLines(params));
+        int line = java.util.stream.IntStream.range(0, lines.size()).filter(i -> lines.get(i).matches("\\s+[\\w.]+\\.period_ms: [\\d.]+"))
+                .findFirst().orElseThrow() + 1;
+        String name = lines.get(line - 1).strip().split(":")[0];
+        lines.set(line - 1, lines.get(line - 1).replaceFirst(": [\\d.]+$", ": -5"));
+        Files.write(params, lines);
+        Tools.Result r = Tools.run(tmp, 120, Ros2Jazzy.bash("ros2 launch '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py") + "' params_file:='"
+                + params + "'").toArray(String[]::new));
+        assertTrue(r.exit() != 0, "ros2 launch took the invalid parameters file:\n" + r.output());
+        assertTrue(r.output().contains(params + ":" + line + ": " + name + " of node ") && r.output().contains("must be a positive number of ms"),
+                "no error naming " + params + ", line " + line + " and " + name + ":\n" + r.output());
+        assertTrue(!r.output().contains("Traceback"), "a traceback instead of an error:\n" + r.output());
+    }
+
+    /**
+     * Two hosts' "core 0" on one machine: mobile-base-latency with its navigation processor on core 0
+     * of the board "nav-board". The analysis counts the two apart; a launch without host:= (one
+     * machine starts every host) pins the board's core 0 to CPU 1, as the C++ program does, and one
+     * with host:=nav-board pins it to its core 0. ROS 2's launch evaluates the prefixes, which are run.
+     */
+    @Test
+    void oneMachineGivesEachHostsCoreACpuOfItsOwn(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        Assumptions.assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "one CPU: no second CPU to pin to");
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        String nav = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
+        assertTrue(text.contains(nav));
+        Path model = tmp.resolve("two-hosts.rsaml");
+        Files.writeString(model, text.replace(nav, "<processors name=\"core1\" description=\"Core 0 of the board.\" core=\"0\" host=\"nav-board\""));
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        String pkg = Names.snake(ModelLoader.load(model, "two-hosts.rsaml").architecture().getName());
+        Path script = tmp.resolve("pinned.py");
+        Files.writeString(script, PINNED);
+        String params = src.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
+        Map<String, String> expected = Map.of("", pkg + "_core0_container 0\n" + pkg + "_core1_container 1", "nav-board",
+                pkg + "_core1_container 0");
+        for (Map.Entry<String, String> e : expected.entrySet()) {
+            String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py")
+                    + "' '" + e.getKey() + "' '" + params + "'").toArray(String[]::new));
+            List<String> lines = out.lines().filter(l -> l.startsWith(pkg + "_")).map(String::strip).sorted().toList();
+            assertEquals(e.getValue(), String.join("\n", lines), "host:=" + e.getKey() + ": each container and the CPU it is pinned to:\n" + out);
+        }
+        String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
+                + "_processes.launch.py") + "' '' '" + params + "'").toArray(String[]::new));
+        assertTrue(processes.contains("navigation_obstacle_detector 1") && processes.contains("control_velocity_controller 0"),
+                "without host:=, the board's nodes on CPU 1, the main host's on CPU 0:\n" + processes);
+    }
+}
