@@ -224,7 +224,12 @@ class Ros2ExtensionTest {
 
         // Invalid edits: each refused with the file and its line; generating again keeps it.
         int line = (int) edited.substring(0, edited.indexOf("    " + name + ": 40")).lines().count() + 1;
+        String history = "qos_overrides.speed_limit.publisher.history: ";
+        int historyLine = (int) edited.substring(0, edited.indexOf("    " + history + "keep_last\n")).lines().count() + 1;
         Map<String, String> invalid = Map.of(
+                // rclcpp refuses intra-process communication (on in a container) with keep_all
+                edited.replace("    " + history + "keep_last\n", "    " + history + "keep_all\n"), ":" + historyLine + ": " + history.strip()
+                        + " 'keep_all': the nodes of a container share messages within the process",
                 edited.replace("    " + name + ": 40\n", "    " + name + ": fast\n"), ":" + line + ": " + name + " of node " + node
                         + " must be a positive number of ms (the unit its name ends with), not 'fast'",
                 edited.replace("    " + name + ": 40\n", "    " + name.replace("_ms", "_us") + ": 40\n"), ":" + line + ": node '" + node
@@ -238,6 +243,9 @@ class Ros2ExtensionTest {
             generator.generate(model, Target.ROS2, out, false);
             assertEquals(e.getKey(), Files.readString(params), "generating again changed the architect's invalid parameters file");
         }
+        Files.writeString(params, edited.replace("    " + history + "keep_last\n", "    " + history + "keep_all\n"));
+        Tools.Result processes = Ros2Test.launch(root.resolve("launch/" + pkg + "_processes.launch.py"));
+        assertEquals(0, processes.exit(), "a process per node takes keep_all (no intra-process communication):\n" + processes.output());
 
         // A function renamed in the model: generating again says which line of the file names its old
         // parameter, and the launch files refuse that line.

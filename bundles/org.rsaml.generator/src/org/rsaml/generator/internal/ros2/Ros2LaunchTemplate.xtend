@@ -152,6 +152,12 @@ class Ros2LaunchTemplate extends Ros2Template {
 		                                     % (name, node, time.group(1), value))
 		                    value = float(value)  # a time written without a decimal point
 		                if name.startswith('qos_overrides.'):
+		                    «IF composed»
+		                    	if (name.endswith('.history') and value == 'keep_all') or (name.endswith('.depth') and value == 0):
+		                    	    raise refuse(source, '%s: %r: the nodes of a container share messages within the process (intra-process'
+		                    	                 ' communication), which needs a keep_last history of depth 1 or more; keep that here, or'
+		                    	                 ' start the nodes with «pkg»_processes.launch.py' % (name, value))
+		                    «ENDIF»
 		                    topic, _, policy = name[len('qos_overrides.'):].rpartition('.')
 		                    topic, _, entity = topic.rpartition('.')
 		                    name = 'qos_overrides.%s.%s.%s' % (resolve(topic), entity, policy)

@@ -33,7 +33,9 @@ class Ros2ParamsTemplate extends Ros2Template {
 		# warns, naming the line, about a value that differs from the model's and a name no node has).
 		# Times are in the model's units, as each name ends: _ns, _us, _ms or _s.
 		# QoS of a topic: qos_overrides.TOPIC.publisher.POLICY or qos_overrides.TOPIC.subscription.POLICY
-		# (reliability: reliable or best_effort; history: keep_last or keep_all; depth: a number), TOPIC
+		# (reliability: reliable or best_effort; history: keep_last, or keep_all with «pkg»_processes.launch.py
+		# only, as «pkg».launch.py shares messages within a container, which needs keep_last; depth: a
+		# number, at least 1 with «pkg».launch.py), TOPIC
 		# as the model names it: the launch files give the override to the topic's name as remapped
 		# (a <topic>_topic:=NAME argument) and resolve a relative one in namespace:=NS, as ROS 2 names
 		# the parameter after the resolved topic (/NS/NAME).

@@ -104,7 +104,8 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		`ament_lint_auto`; `gen/` excluded) and the launch test `test/test_«pkg»_launch.py`
 		(`launch_testing`: starts the nodes, stops them after a few seconds, and checks that messages
 		reached every entry port a timed module feeds and that every process exited cleanly), each where
-		installed.
+		installed. (RsaML's own tests run the launch test only on a ROS 2 that has `launch_testing`; on
+		the one its CI uses, without it, they compile it and say it was skipped.)
 
 		`gen/`, `test/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
 		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`
