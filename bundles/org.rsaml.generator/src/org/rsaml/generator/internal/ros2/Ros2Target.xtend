@@ -54,6 +54,13 @@ class Ros2Target implements TargetGenerator {
 		}
 		val params = new Ros2ParamsTemplate(context).path
 		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.check(params, it, context.modelParameters)]
+		for (m : plan.modules.filter[!inputs.empty]) {
+			val inputs = new java.util.LinkedHashMap<String, String>
+			m.inputs.forEach[inputs.put(context.names.inName(it), context.names.onName(it))]
+			for (path : Ros2Packages.userFiles(context.nodePackage(m), context.names, m)) {
+				output.userFile(path).ifPresent[warnings += Ros2UserCodeCheck.valueReads(path, it, inputs)]
+			}
+		}
 		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 }
