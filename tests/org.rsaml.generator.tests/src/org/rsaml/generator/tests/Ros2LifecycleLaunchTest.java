@@ -42,7 +42,7 @@ class Ros2LifecycleLaunchTest {
      * {@code -Dtest=Ros2LifecycleLaunchTest} runs it alone.
      */
     @Test
-        void bothLaunchFilesBringTheManagedNodesToActive(@TempDir Path tmp) throws Exception {
+    void bothLaunchFilesBringTheManagedNodesToActive(@TempDir Path tmp) throws Exception {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
         Path model = Ros2Test.model("resources/ros2-lifecycle.rsaml");
