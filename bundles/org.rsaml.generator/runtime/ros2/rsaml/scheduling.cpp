@@ -301,14 +301,6 @@ void Scheduler::add(Schedule& node) {
     const int core = node.rsaml_core();
     worker->thread = std::thread([executor, release, core] {
       place(*release, core);
-      // A timer created before its thread had its scheduling restarts now (a stopped one stays
-      // stopped), so that its first release does not fall due while the thread was not yet there.
-      release->group->find_timer_ptrs_if([](const rclcpp::TimerBase::SharedPtr& timer) {
-        if (!timer->is_canceled()) {
-          timer->reset();
-        }
-        return false;
-      });
       executor->spin();
     });
     workers_.push_back(std::move(worker));

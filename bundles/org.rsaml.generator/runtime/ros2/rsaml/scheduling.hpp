@@ -102,7 +102,8 @@ class Schedule {
    * through rsaml_run_job(), released at the timer's expected call time (ROS 2 Jazzy and later; before,
    * at the time the callback starts, and the release latency is not measured). A job is released every
    * period: a release ROS 2's timer drops when it calls a period or more late is counted as a job that
-   * missed its deadline (rsaml_count_dropped). The timer restarts when the release's thread has its scheduling.
+   * missed its deadline (rsaml_count_dropped). The timers of a node start with the node (restarting each when its thread had its
+   * scheduling raised the top rank's start latency on ROS 2 beyond the bounds; see docs/timing.md).
    */
   template <typename BodyT>
   rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {

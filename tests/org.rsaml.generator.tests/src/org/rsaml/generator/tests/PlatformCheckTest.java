@@ -27,22 +27,23 @@ import org.junit.jupiter.api.io.TempDir;
 class PlatformCheckTest {
 
     /** A thread's stat line: pid, comm, state, then fields 4 to 52, with utime/stime (14, 15) and the policy (41) set. */
-    private static String stat(long tid, String comm, long utime, long stime, int policy) {
+    private static String stat(long tid, String comm, long flags, long utime, long stime, int policy) {
         StringBuilder sb = new StringBuilder(tid + " (" + comm + ") S");
         for (int field = 4; field <= 52; field++) {
-            sb.append(' ').append(field == 14 ? utime : field == 15 ? stime : field == 41 ? policy : 0);
+            sb.append(' ').append(field == 9 ? flags : field == 14 ? utime : field == 15 ? stime : field == 41 ? policy : 0);
         }
         return sb.append('\n').toString();
     }
 
-    /** Writes /proc/PID (its cmdline, stat and one thread's stat, with a schedstat when cpuNs >= 0). */
+    /** Writes /proc/PID (its stat and one thread's stat, with a schedstat when cpuNs >= 0). */
     private static void thread(Path proc, long pid, String command, long tid, String name, int policy, long cpuNs, long ticks)
             throws Exception {
         Path p = Files.createDirectories(proc.resolve(Long.toString(pid)));
-        Files.writeString(p.resolve("cmdline"), command.isEmpty() ? "" : "/usr/sbin/" + command + "\0");
-        Files.writeString(p.resolve("stat"), stat(pid, command.isEmpty() ? "kworker/0:1" : command, 0, 0, 0));
+        // a kernel thread (command "") has PF_KTHREAD among its flags; a user process's flags here are PF_FORKNOEXEC | PF_RANDOMIZE
+        long flags = command.isEmpty() ? 0x00208040L : 0x00400040L;
+        Files.writeString(p.resolve("stat"), stat(pid, command.isEmpty() ? "kworker/0:1" : command, flags, 0, 0, 0));
         Path t = Files.createDirectories(p.resolve("task/" + tid));
-        Files.writeString(t.resolve("stat"), stat(tid, name, ticks, 0, policy));
+        Files.writeString(t.resolve("stat"), stat(tid, name, flags, ticks, 0, policy));
         if (cpuNs >= 0) {
             Files.writeString(t.resolve("schedstat"), cpuNs + " 1200 7\n");
         } else {
