@@ -103,7 +103,7 @@ class Schedule {
    * at the time the callback starts, and the release latency is not measured). A job is released every
    * period: a release ROS 2's timer drops when it calls a period or more late is counted as a job that
    * missed its deadline (rsaml_count_dropped). The timers of a node start with the node (restarting each when its thread had its
-   * scheduling raised the top rank's start latency on ROS 2 beyond the bounds; see docs/timing.md).
+   * scheduling went with bound checks failing on ROS 2; see docs/timing.md).
    */
   template <typename BodyT>
   rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {
