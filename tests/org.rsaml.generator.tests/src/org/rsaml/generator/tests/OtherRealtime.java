@@ -102,7 +102,7 @@ final class OtherRealtime {
                 }
                 for (Path task : tasks) {
                     String stat = Files.readString(task.resolve("stat"));
-                    String[] fields = stat.substring(stat.lastIndexOf(')') + 2).split(" "); // fields[0] is field 3
+                    String[] fields = fields(stat);
                     int policy = Integer.parseInt(fields[38]);
                     if (policy == 1 || policy == 2 || policy == 6) {
                         found.add(new RtThread(pid, Long.parseLong(task.getFileName().toString()), command, comm(stat), cpuNs(task, fields)));
@@ -125,8 +125,12 @@ final class OtherRealtime {
      * real-time threads keep both cores busy would delay any of their threads that maps memory or faults a page in.
      */
     static boolean kernelThread(String stat) {
-        String[] fields = stat.substring(stat.lastIndexOf(')') + 2).split(" "); // fields[0] is field 3
-        return (Long.parseUnsignedLong(fields[6]) & KERNEL_THREAD) != 0;
+        return (Long.parseUnsignedLong(fields(stat)[6]) & KERNEL_THREAD) != 0;
+    }
+
+    /** The fields of a stat after the command's closing parenthesis: [0] is field 3 (the state). */
+    private static String[] fields(String stat) {
+        return stat.substring(stat.lastIndexOf(')') + 2).split(" ");
     }
 
     private static String comm(String stat) {

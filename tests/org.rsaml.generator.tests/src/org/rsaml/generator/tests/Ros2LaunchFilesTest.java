@@ -61,9 +61,12 @@ class Ros2LaunchFilesTest {
         assertTrue(result.output().contains("test_" + pkg + "_launch"), "the launch test did not run:\n" + result.output());
     }
 
-    /** Which containers (or nodes) a launch file starts for host:=ARG, evaluated by ROS 2's launch itself. */
-    private static final String STARTED = """
-            import importlib.util, sys
+    /**
+     * Loads the launch file sys.argv[1] and sets its arguments as ROS 2's launch would, with host:=sys.argv[2] and
+     * params_file:=sys.argv[3]; the scripts below go on from its context and entities.
+     */
+    private static final String LAUNCH_CONTEXT = """
+            import importlib.util, shlex, subprocess, sys
             from launch import LaunchContext
             from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
             sys.dont_write_bytecode = True
@@ -74,6 +77,10 @@ class Ros2LaunchFilesTest {
                 if type(e).__name__ == 'DeclareLaunchArgument':
                     context.launch_configurations[e.name] = perform_substitutions(context, e.default_value) if e.name != 'params_file' else sys.argv[3]
             context.launch_configurations['host'] = sys.argv[2]
+            """;
+
+    /** Which containers (or nodes) a launch file starts for host:=ARG, evaluated by ROS 2's launch itself. */
+    private static final String STARTED = LAUNCH_CONTEXT + """
             started = []
             for e in [a for e in entities if type(e).__name__ == 'OpaqueFunction' for a in e.execute(context)]:
                 if e.condition is None or e.condition.evaluate(context):
@@ -115,18 +122,7 @@ class Ros2LaunchFilesTest {
     }
 
     /** Runs each started process's launch prefix for host:=ARG on a command that prints the CPUs it may use, as "node cpus". */
-    private static final String PINNED = """
-            import importlib.util, shlex, subprocess, sys
-            from launch import LaunchContext
-            from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
-            sys.dont_write_bytecode = True
-            spec = importlib.util.spec_from_file_location('l', sys.argv[1]); m = importlib.util.module_from_spec(spec); spec.loader.exec_module(m)
-            context = LaunchContext()
-            entities = m.generate_launch_description().entities
-            for e in entities:
-                if type(e).__name__ == 'DeclareLaunchArgument':
-                    context.launch_configurations[e.name] = perform_substitutions(context, e.default_value) if e.name != 'params_file' else sys.argv[3]
-            context.launch_configurations['host'] = sys.argv[2]
+    private static final String PINNED = LAUNCH_CONTEXT + """
             for e in [a for e in entities if type(e).__name__ == 'OpaqueFunction' for a in e.execute(context)]:
                 if type(e).__name__ in ('Node', 'ComposableNodeContainer') and (e.condition is None or e.condition.evaluate(context)):
                     name = perform_substitutions(context, normalize_to_list_of_substitutions(e._Node__node_name))
