@@ -130,7 +130,6 @@ class Subscription {
 
 // rclcpp/callback_group.hpp
 enum class CallbackGroupType { MutuallyExclusive, Reentrant };
-class TimerBase;
 
 class CallbackGroup {
  public:
@@ -139,13 +138,6 @@ class CallbackGroup {
       : type_(group_type), automatic_(automatically_add_to_executor_with_node) {}
   CallbackGroupType type() const { return type_; }
   bool automatically_add_to_executor_with_node() const { return automatic_; }
-  template <typename Function>
-  std::shared_ptr<TimerBase> find_timer_ptrs_if(Function func) const {
-    static_assert(std::is_invocable_r_v<bool, Function, const std::shared_ptr<TimerBase>&>,
-                  "find_timer_ptrs_if takes a predicate of a timer's shared pointer");
-    (void)func;
-    return nullptr;
-  }
 
  private:
   CallbackGroupType type_;
@@ -163,8 +155,6 @@ class TimerBase {
   using SharedPtr = std::shared_ptr<TimerBase>;
   virtual ~TimerBase() = default;
   void cancel() {}
-  void reset() {}
-  bool is_canceled() { return false; }
 };
 
 // rclcpp/node_interfaces/node_base_interface.hpp, node_timers_interface.hpp
