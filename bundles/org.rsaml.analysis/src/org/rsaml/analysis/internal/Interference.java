@@ -56,14 +56,7 @@ final class Interference {
             w = Long.MIN_VALUE; // recomputed (and reported too large) by the next at()
             return;
         }
-        int i = size++;
-        while (i > 0 && heapKey[(i - 1) / 2] > limit[k]) {
-            heap[i] = heap[(i - 1) / 2];
-            heapKey[i] = heapKey[(i - 1) / 2];
-            i = (i - 1) / 2;
-        }
-        heap[i] = k;
-        heapKey[i] = limit[k];
+        up(heapKey, heap, size++, limit[k], k);
     }
 
     /** Entry {@code k}'s cost has just changed by {@code delta}. */
@@ -124,27 +117,50 @@ final class Interference {
         return sum;
     }
 
+    /** The entry at place {@code i}, whose limit has grown, moved down to where its new key belongs. */
     private void down(int i) {
         int k = heap[i];
-        long key = limit[k];
+        down(heapKey, heap, size, i, limit[k], k);
+    }
+
+    /**
+     * Puts {@code (key, item)} into the hole at place {@code i} of the min-heap {@code keys}/{@code items}
+     * of {@code size} places, moving smaller children up until it fits.
+     */
+    static void down(long[] keys, int[] items, int size, int i, long key, int item) {
         while (true) {
             int child = 2 * i + 1;
             if (child >= size) {
                 break;
             }
-            if (child + 1 < size && heapKey[child + 1] < heapKey[child]) {
+            if (child + 1 < size && keys[child + 1] < keys[child]) {
                 child++;
             }
-            if (heapKey[child] >= key) {
+            if (keys[child] >= key) {
                 break;
             }
-            heap[i] = heap[child];
-            heapKey[i] = heapKey[child];
+            keys[i] = keys[child];
+            items[i] = items[child];
             i = child;
         }
-        heap[i] = k;
-        heapKey[i] = key;
+        keys[i] = key;
+        items[i] = item;
     }
+
+    /**
+     * Puts {@code (key, item)} into the hole at place {@code i} (the heap's new last place) of the min-heap
+     * {@code keys}/{@code items}, moving larger parents down until it fits.
+     */
+    static void up(long[] keys, int[] items, int i, long key, int item) {
+        while (i > 0 && keys[(i - 1) / 2] > key) {
+            keys[i] = keys[(i - 1) / 2];
+            items[i] = items[(i - 1) / 2];
+            i = (i - 1) / 2;
+        }
+        keys[i] = key;
+        items[i] = item;
+    }
+
     /**
      * The interference of a busy period's later jobs, continued from the first job's window of an
      * {@link Interference} without changing it (the next task's first job starts near where this one's
@@ -242,14 +258,7 @@ final class Interference {
                 key = java.util.Arrays.copyOf(key, 2 * size);
                 item = java.util.Arrays.copyOf(item, 2 * size);
             }
-            int i = size++;
-            while (i > 0 && key[(i - 1) / 2] > k) {
-                key[i] = key[(i - 1) / 2];
-                item[i] = item[(i - 1) / 2];
-                i = (i - 1) / 2;
-            }
-            key[i] = k;
-            item[i] = it;
+            up(key, item, size++, k, it);
         }
 
         private void pop() {
@@ -257,26 +266,7 @@ final class Interference {
             if (size == 0) {
                 return;
             }
-            long k = key[size];
-            int it = item[size];
-            int i = 0;
-            while (true) {
-                int child = 2 * i + 1;
-                if (child >= size) {
-                    break;
-                }
-                if (child + 1 < size && key[child + 1] < key[child]) {
-                    child++;
-                }
-                if (key[child] >= k) {
-                    break;
-                }
-                key[i] = key[child];
-                item[i] = item[child];
-                i = child;
-            }
-            key[i] = k;
-            item[i] = it;
+            down(key, item, size, 0, key[size], item[size]);
         }
     }
 }
