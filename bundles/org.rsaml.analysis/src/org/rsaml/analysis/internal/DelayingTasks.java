@@ -47,6 +47,9 @@ final class DelayingTasks {
     private final List<Integer> joined = new ArrayList<>();
     private int withCost;
     private long longestPeriod;
+    /** Counted for {@link AnalysisCounts}: summaries given from the tree, and the nodes their searches opened. */
+    long summaries;
+    long opened;
 
     /** Over {@code tasks}, none joined yet; their jitters are those the summaries count. */
     DelayingTasks(List<Task> tasks) {
@@ -126,6 +129,7 @@ final class DelayingTasks {
         // of an earlier task), and tasks in their order, as the definition lists ties
         PriorityQueue<long[]> open = new PriorityQueue<>((a, b) -> a[0] != b[0] ? Long.compare(b[0], a[0])
                 : a[1] != b[1] ? Long.compare(a[1], b[1]) : Long.compare(a[2], b[2]));
+        summaries++;
         open.add(new long[] { bound(1, completion), 0, 1 }); // {bound, 0: node 1: task, node or task index}
         Map<String, Long> listed = new LinkedHashMap<>();
         while (!open.isEmpty() && listed.size() < MissWitnesses.MAX_LISTED) {
@@ -139,6 +143,7 @@ final class DelayingTasks {
                 continue;
             }
             int v = (int) e[2];
+            opened++;
             if (v >= leaves) {
                 int i = taskAt[v - leaves];
                 if (i != self && i >= 0 && maxCost[v] > 0) {

@@ -27,6 +27,9 @@ final class Interference {
     private int size;
     private long w = Long.MIN_VALUE;
     private long sum;
+    /** Counted for {@link AnalysisCounts}: evaluations at a window, and heap steps (entries recounted). */
+    long evaluations;
+    long steps;
 
     /** Over the first {@code n} entries of the arrays, which may grow up to their length through {@link #add}. */
     public Interference(long[] period, long[] cost, long[] jitter, int n) {
@@ -88,12 +91,14 @@ final class Interference {
     }
 
     private long advance(long window) {
+        evaluations++;
         if (window < w) {
             w = Long.MIN_VALUE;
         }
         if (w == Long.MIN_VALUE) {
             sum = 0;
             size = 0;
+            steps += n;
             for (int k = 0; k < n; k++) {
                 count(k, window);
                 sum = Math.addExact(sum, Math.multiplyExact(jobs[k], cost[k]));
@@ -108,6 +113,7 @@ final class Interference {
         }
         w = window;
         while (size > 0 && heapKey[0] < window) {
+            steps++;
             int k = heap[0];
             long before = jobs[k];
             count(k, window);
@@ -179,6 +185,9 @@ final class Interference {
         private int size;
         private long w = Long.MIN_VALUE;
         private long sum;
+        /** Counted for {@link AnalysisCounts}, as the first's. */
+        long evaluations;
+        long steps;
 
         Later(Interference first) {
             this.first = first;
@@ -207,10 +216,12 @@ final class Interference {
         }
 
         private long advance(long window) {
+            evaluations++;
             if (w == Long.MIN_VALUE || window < w) {
                 // from scratch: every entry counted at the window (not met in a busy period's later jobs)
                 size = 0;
                 sum = 0;
+                steps += first.n;
                 for (int k = 0; k < first.n; k++) {
                     count(k, window);
                     sum = Math.addExact(sum, Math.multiplyExact(jobs[k], first.cost[k]));
@@ -221,6 +232,7 @@ final class Interference {
             }
             w = window;
             while (size > 0 && key[0] < window) {
+                steps++;
                 int it = item[0];
                 pop();
                 int k;

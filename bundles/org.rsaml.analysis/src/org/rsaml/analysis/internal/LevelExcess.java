@@ -255,6 +255,8 @@ final class LevelExcess {
         private final long period;
         private final long jitter;
         private final long removed;
+        /** Whether every window asked for was found in the level's walk (else the task iterated itself). */
+        boolean answered = true;
 
         private Tied(long period, long jitter, long removed) {
             this.period = period;
@@ -264,7 +266,9 @@ final class LevelExcess {
 
         /** {@link LevelExcess#window} of this task. */
         long window(long q, long own, long start) {
-            return LevelExcess.this.window(q, own, start, period, jitter, removed);
+            long w = LevelExcess.this.window(q, own, start, period, jitter, removed);
+            answered &= w != UNKNOWN;
+            return w;
         }
     }
 
@@ -291,6 +295,11 @@ final class LevelExcess {
             t = segmentEnd + 1;
         }
         return UNKNOWN;
+    }
+
+    /** The releases (pieces of constant demand) of the level's busy period. */
+    int pieces() {
+        return pieces;
     }
 
     /** The end of the level's busy period. */

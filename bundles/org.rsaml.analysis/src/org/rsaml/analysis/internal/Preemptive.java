@@ -66,14 +66,16 @@ public final class Preemptive {
      * @param seed             a lower bound of the window the first job needs beyond its own cost: the
      *                         first-job window of a task p with hp(p) and p itself all delaying this task
      *                         (the window of this task is at least its cost plus p's); 0 when none is known
-     * @param firstWindow      when not null, receives this task's first-job window (or -1)
+     * @param firstWindow      when not null, receives this task's first-job window (or -1); when it has three
+     *                         places, also the jobs of its busy period examined and the last job's window
+     *                         (for {@link AnalysisCounts})
      * @param overload         the level's utilisation as the verdict of an overload states it
      * @param summary          the witness of a miss
      */
     static TaskResult of(Task task, int effective, Interference interference, Interference.Later later, LevelExcess.Tied tied, long[] period, long[] cost, int n, long base,
             double levelUtilisation, long seed, long[] firstWindow, Supplier<Double> overload, Summary summary) {
         if (firstWindow != null) {
-            firstWindow[0] = -1;
+            java.util.Arrays.fill(firstWindow, -1);
         }
         Task analysed = effective == task.priority() ? task
                 : new Task(task.name(), task.period(), task.deadline(), task.cost(), effective, task.jitter(), task.group());
@@ -95,7 +97,8 @@ public final class Preemptive {
             long steps = 0;
             long w = -1;
             boolean moved = false;
-            for (long q = 0;; q++) {
+            long q = 0;
+            for (;; q++) {
                 if (q >= ResponseTimes.MAX_JOBS) {
                     return ResponseTimes.notAnalysed(task, "its busy period holds more than " + ResponseTimes.MAX_JOBS + " of its jobs");
                 }
@@ -141,6 +144,10 @@ public final class Preemptive {
                 if (Math.addExact(w, task.jitter()) <= Math.multiplyExact(q + 1, task.period())) {
                     break;
                 }
+            }
+            if (firstWindow != null && firstWindow.length >= 3) {
+                firstWindow[1] = q + 1;
+                firstWindow[2] = w;
             }
             long worstResponse = worst;
             long job = worstJob;

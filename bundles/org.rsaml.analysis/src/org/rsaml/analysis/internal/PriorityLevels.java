@@ -72,7 +72,8 @@ public final class PriorityLevels {
         double utilisation = 0;
         long seed = 0;
         int seedLevel = Integer.MAX_VALUE;
-        long[] window = new long[1];
+        long[] window = new long[3]; // the first job's window, the jobs of the busy period, the last job's window
+        AnalysisCounts counts = AnalysisCounts.current();
         int joined = 0;
         int analysed = 0;
         while (joined < n) {
@@ -105,6 +106,10 @@ public final class PriorityLevels {
             }
             // many tasks analysed at one level share its busy period: one walk of it for all of them
             LevelExcess excess = ties >= SHARED_LEVEL ? LevelExcess.of(period, cost, jitter, entries, utilisation) : null;
+            if (counts != null && excess != null) {
+                counts.levelsWalked++;
+                counts.levelReleases += excess.pieces();
+            }
             for (; analysed < n && effective[byEffective[analysed]] >= level; analysed++) {
                 int i = byEffective[analysed];
                 if (skipped.contains(i)) {
@@ -124,10 +129,35 @@ public final class PriorityLevels {
                 cost[entryOf[i]] += c;
                 interference.costChanged(entryOf[i], c);
                 levelWindow = Math.max(levelWindow, window[0]);
+                if (counts != null) {
+                    count(counts, out[i], tied, window);
+                }
             }
             // the next level's first job needs at least this level's window beyond its own cost
             seed = Math.max(0, levelWindow);
             seedLevel = level;
+        }
+        if (counts != null) {
+            counts.iterations += interference.evaluations + later.evaluations;
+            counts.firstJobSteps += interference.steps;
+            counts.laterJobSteps += later.steps;
+            counts.summaries += prefix.summaries;
+            counts.nodesOpened += prefix.opened;
+        }
+    }
+
+    private static void count(AnalysisCounts counts, TaskResult result, LevelExcess.Tied tied, long[] window) {
+        counts.tasks++;
+        boolean iterated = window[1] > 0;
+        counts.overloaded += !iterated && result.responseTime().isEmpty() && result.verdict() == org.rsaml.analysis.Verdict.MISSES ? 1 : 0;
+        counts.jobs += Math.max(0, window[1]);
+        counts.longestBusyPeriod = Math.max(counts.longestBusyPeriod, window[2]);
+        if (tied != null && iterated) {
+            if (tied.answered) {
+                counts.tiedDecided++;
+            } else {
+                counts.tiedIterated++;
+            }
         }
     }
 
