@@ -16,6 +16,7 @@ import org.rsaml.analysis.SchedulabilityAnalysis;
 import org.rsaml.analysis.Task;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.Verdict;
+import org.rsaml.analysis.internal.AnalysisCounts;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.ArchitectureCategory;
 import org.rsaml.model.ElementType;
@@ -37,7 +38,10 @@ import org.rsaml.model.SchedulingPolicy;
  * among the first-in-first-out ones (all tied, analysed preemptively); each with its growth against the same workload at the
  * size before (1.0: linear); (2) an architecture of M periodic modules on 4
  * processors, each module connected to the next and every 50th also three ahead, with 100 latency
- * requirements each spanning 10 modules. Prints Markdown tables of medians.
+ * requirements each spanning 10 modules. Prints Markdown tables of medians, and beside each row of (1) what the analysis
+ * did there, counted in a run of its own ({@link AnalysisCounts}): jobs, iteration steps, heap steps, the longest busy
+ * period, tied tasks read from a level's walk, the summary witnesses' nodes opened. {@code -Drsaml.bench.timing=key,...}
+ * picks workloads of (1) (harmonic, periods12, distinct-0.8, distinct-0.99, fifo, round-robin; all by default).
  */
 public final class TimingBench {
 
@@ -51,8 +55,12 @@ public final class TimingBench {
     private record Timed(ProcessorResult result, long cpuNs, long wallNs, int runs) {
     }
 
-    /** A workload of the one-processor table: its task set of n tasks, and the tasks that run first in, first out. */
-    private record Workload(String name, java.util.function.IntFunction<List<Task>> tasks, java.util.function.Function<List<Task>, Set<String>> fifo) {
+    /**
+     * A workload of the one-processor table: the key that picks it ({@code -Drsaml.bench.timing=key,...}), its task set of n
+     * tasks, and the tasks that run first in, first out.
+     */
+    private record Workload(String key, String name, java.util.function.IntFunction<List<Task>> tasks,
+            java.util.function.Function<List<Task>, Set<String>> fifo) {
     }
 
     /**
@@ -107,23 +115,32 @@ public final class TimingBench {
         // sized with the architecture, so that the short run of TimingBenchTest stays short
         int[] sizes = java.util.stream.IntStream.of(1_000, 10_000, 50_000).map(n -> Math.min(n, Math.max(10, 50 * modules))).distinct()
                 .toArray();
-        List<Workload> workloads = List.of(
-                new Workload("harmonic periods (5 ms × 2^k), U = 0.99", n -> harmonic(n, 0.99, new Random(n)), t -> Set.of()),
-                new Workload("12 periods dividing 1.2 s, U = 0.8", n -> taskSet(n, new Random(n)), t -> Set.of()),
-                new Workload("distinct periods, U = 0.8", n -> distinctPeriods(n, 0.8, new Random(n)), t -> Set.of()),
-                new Workload("distinct periods, U = 0.99", n -> distinctPeriods(n, 0.99, new Random(n)), t -> Set.of()),
-                new Workload("first in, first out at the top rank (all tasks), distinct periods, U = 0.8",
+        List<Workload> all = List.of(
+                new Workload("harmonic", "harmonic periods (5 ms × 2^k), U = 0.99", n -> harmonic(n, 0.99, new Random(n)), t -> Set.of()),
+                new Workload("periods12", "12 periods dividing 1.2 s, U = 0.8", n -> taskSet(n, new Random(n)), t -> Set.of()),
+                new Workload("distinct-0.8", "distinct periods, U = 0.8", n -> distinctPeriods(n, 0.8, new Random(n)), t -> Set.of()),
+                new Workload("distinct-0.99", "distinct periods, U = 0.99", n -> distinctPeriods(n, 0.99, new Random(n)), t -> Set.of()),
+                new Workload("fifo", "first in, first out at the top rank (all tasks), distinct periods, U = 0.8",
                         n -> sameRank(distinctPeriods(n, 0.8, new Random(n))), t -> fifo(t, 0)),
-                new Workload("one top rank, all tasks first in, first out but one round robin, distinct periods, U = 0.8",
+                new Workload("round-robin", "one top rank, all tasks first in, first out but one round robin, distinct periods, U = 0.8",
                         n -> sameRank(distinctPeriods(n, 0.8, new Random(n))), t -> fifo(t, 1)));
+        String picked = System.getProperty("rsaml.bench.timing", "all");
+        List<Workload> workloads = all.stream().filter(w -> picked.equals("all") || List.of(picked.split(",")).contains(w.key())).toList();
+        if (workloads.isEmpty()) {
+            throw new IllegalArgumentException("rsaml.bench.timing: '" + picked + "' names none of "
+                    + all.stream().map(Workload::key).toList() + " (or all)");
+        }
         for (Workload w : workloads) { // JIT
             List<Task> tasks = w.tasks().apply(Math.min(1_000, sizes[0]));
             SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks, w.fifo().apply(tasks));
         }
+        System.out.println("Load average (1 min) at the start: " + ValidationBench.loadAverage());
+        System.out.println();
         System.out.println("| tasks on one processor | n | analysis, CPU time (median) | wall time | per task | anchor: the tasks sorted by"
                 + " period, CPU time | ÷ anchor | growth ÷ growth of n (the same set at the size before) | verdict | misses"
-                + " | critical-instant schedules (segments) |");
-        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|");
+                + " | critical-instant schedules (segments) | jobs of the busy periods | iteration steps | heap steps (first jobs + later jobs)"
+                + " | heap steps ÷ n | longest busy period | tied tasks read from the level's walk / iterated | summary nodes opened (per summary) |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         for (Workload w : workloads) {
             long previous = -1;
             int previousN = 0;
@@ -136,13 +153,22 @@ public final class TimingBench {
                 long schedules = r.tasks().stream().filter(t -> t.witness() != null && !t.witness().summary()).count();
                 long segments = r.tasks().stream().filter(t -> t.witness() != null).mapToLong(t -> t.witness().schedule().size()).sum();
                 String growth = previous <= 0 ? "" : String.format("%.2f", (double) timed.cpuNs() / previous / ((double) n / previousN));
-                System.out.printf("| %s | %,d | %,d ms (%d runs) | %,d ms | %.1f µs | %.2f ms | %.0f× | %s | %s (U = %s) | %,d | %,d (%,d) |%n",
+                // what the analysis did, counted in a run of its own (not timed)
+                AnalysisCounts c = new AnalysisCounts();
+                c.during(() -> SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks, w.fifo().apply(tasks)));
+                System.out.printf("| %s | %,d | %,d ms (%d runs) | %,d ms | %.1f µs | %.2f ms | %.0f× | %s | %s (U = %s) | %,d | %,d (%,d)"
+                        + " | %,d | %,d | %,d + %,d | %.0f | %s | %,d / %,d | %,d (%s) |%n",
                         w.name(), n, timed.cpuNs() / MS, timed.runs(), timed.wallNs() / MS, timed.cpuNs() / 1e3 / n, anchor / 1e6,
-                        (double) timed.cpuNs() / Math.max(1, anchor), growth, r.verdict(), r.utilisationText(), misses, schedules, segments);
+                        (double) timed.cpuNs() / Math.max(1, anchor), growth, r.verdict(), r.utilisationText(), misses, schedules, segments,
+                        c.jobs, c.iterations, c.firstJobSteps, c.laterJobSteps, (double) (c.firstJobSteps + c.laterJobSteps) / n,
+                        c.longestBusyPeriod <= 0 ? "" : org.rsaml.model.support.RsamlTimes.text(c.longestBusyPeriod), c.tiedDecided, c.tiedIterated,
+                        c.nodesOpened, c.summaries == 0 ? "" : String.format("%.0f", (double) c.nodesOpened / c.summaries));
                 previous = Math.max(1, timed.cpuNs());
                 previousN = n;
             }
         }
+        System.out.println();
+        System.out.println("Load average (1 min) after the table: " + ValidationBench.loadAverage());
         Architecture a = architecture(modules, 100);
         TimingAnalysis.analyse(a); // JIT
         long[] times = new long[RUNS];

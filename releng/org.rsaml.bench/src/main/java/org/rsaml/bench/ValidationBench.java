@@ -43,8 +43,11 @@ public final class ValidationBench {
 
     private static final long MS = 1_000_000L;
     private static final String ROW = "ROW ";
-    /** How often the anchor and the full validation are measured, alternately (their medians are shown). */
-    private static final int PAIRS = 3;
+    /**
+     * How often the anchor and the full validation are measured, alternately (their medians are shown, and
+     * each pair's ratio): {@code rsaml.bench.pairs}, 3 by default.
+     */
+    private static final int PAIRS = Math.max(1, Integer.getInteger("rsaml.bench.pairs", 3));
 
     public static void main(String[] args) throws Exception {
         if (args.length == 3 && args[0].equals("--one")) {
@@ -52,7 +55,11 @@ public final class ValidationBench {
             return;
         }
         List<String> rows = new ArrayList<>();
-        for (String shape : new String[] { "deployed", "overloaded" }) {
+        for (String shape : System.getProperty("rsaml.bench.shapes", "deployed,overloaded").split(",")) {
+            shape = shape.trim();
+            if (!shape.equals("deployed") && !shape.equals("overloaded")) {
+                throw new IllegalArgumentException("rsaml.bench.shapes: '" + shape + "' is neither deployed nor overloaded");
+            }
             for (String size : args[0].split(",")) {
                 String row = child(shape, Integer.parseInt(size.trim()));
                 System.out.println(row);
@@ -64,8 +71,8 @@ public final class ValidationBench {
         System.out.println();
         System.out.println("| shape | elements | file | load | EMF structural checks (the anchor) | full validation | ÷ structural"
                 + " | OCL invariants alone (compiled) | ÷ structural | the same interpreted by classic OCL | ÷ structural"
-                + " | timing analysis alone | peak RSS | findings | load average (1 min) |");
-        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+                + " | timing analysis alone | peak RSS | findings | load average (1 min) | each pair: anchor, full validation, ratio |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
         rows.forEach(System.out::println);
     }
 
@@ -92,7 +99,7 @@ public final class ValidationBench {
             }
         }
         int exit = p.waitFor();
-        return row != null ? row : "| " + shape + " | " + size + " | failed (exit " + exit + ") | | | | | | | | | | | | |";
+        return row != null ? row : "| " + shape + " | " + size + " | failed (exit " + exit + ") | | | | | | | | | | | | | |";
     }
 
     private static Architecture architecture(String shape, int elements) {
@@ -166,13 +173,22 @@ public final class ValidationBench {
         Timer timing = t.stop();
 
         System.out.println(ROW + String.format(
-                "| %s | %,d | %.1f MB | %s | %s | %s | %s | %s | %s | %s | %s | %s | %,d MB | %,d (%,d structural, %,d invariants violated) | %s to %s |",
+                "| %s | %,d | %.1f MB | %s | %s | %s | %s | %s | %s | %s | %s | %s | %,d MB | %,d (%,d structural, %,d invariants violated) | %s to %s | %s |",
                 shape, elements, bytes / 1e6, load, structure, validate, validate.over(structure), ocl, ocl.over(structure),
                 interpreted, interpreted.over(structure), timing,
-                peakRss() >> 20, findings.size(), structural.size(), violated, loadBefore, loadAverage()));
+                peakRss() >> 20, findings.size(), structural.size(), violated, loadBefore, loadAverage(), pairs(structures, validations)));
         Files.delete(file);
         Files.delete(small);
         Files.delete(dir);
+    }
+
+    /** Each pair in the order measured: the anchor's and the full validation's CPU time (ms) and their ratio. */
+    private static String pairs(Timer[] structures, Timer[] validations) {
+        List<String> each = new ArrayList<>();
+        for (int i = 0; i < structures.length; i++) {
+            each.add(String.format("%,d / %,d ms %s", structures[i].cpu() / MS, validations[i].cpu() / MS, validations[i].over(structures[i])));
+        }
+        return String.join("; ", each);
     }
 
     /**
