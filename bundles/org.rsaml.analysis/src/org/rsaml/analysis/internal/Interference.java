@@ -5,31 +5,28 @@
 package org.rsaml.analysis.internal;
 
 /**
- * The interference sum_k ceil((w + J_k) / T_k) C_k of the entries, kept up to date as w grows:
- * each entry waits in a heap, keyed by the largest w its job count holds for, so a step touches
- * only the entries whose count changes (O(log n) each), not every entry. Over a whole busy
- * period that is one heap operation per interfering job released in it, instead of one pass over
- * all entries per step. Entries can be added and their costs changed while it is in use (a caller
- * walking down the priority levels keeps one for all its tasks, whose windows mostly grow from task
- * to task too); should w ever fall, the counts are recomputed from scratch.
+ * The interference sum_k ceil((w + J_k) / T_k) C_k of the entries, kept up to date as w grows: each
+ * entry waits in a {@link Calendar} by the largest w its job count holds for (its next release, at most
+ * a period ahead), so a step touches only the entries whose count changes, not every entry, and costs
+ * O(1) for each of them and for each bucket passed: over a whole busy period O(1) per interfering job
+ * released in it, whatever the number of entries (a binary heap, before, paid O(log n) each). Entries
+ * can be added and their costs changed while it is in use (a caller walking down the priority levels
+ * keeps one for all its tasks, whose windows mostly grow from task to task too); when the releases get
+ * denser than the buckets were cut for, the calendar is cut again, finer (at most once per halving);
+ * should w ever fall, the counts are recomputed from scratch.
  */
 final class Interference {
     private final long[] period;
     private final long[] cost;
     private final long[] jitter;
     private int n;
-    private final long[] jobs;
-    /** The entry's count holds while w &lt;= limit: ceil((w + J) / T) = jobs. */
-    private final long[] limit;
-    private final int[] heap;
-    /** The key of each heap place, {@code limit[heap[i]]}, kept beside it: the sifts read no other array. */
-    private final long[] heapKey;
-    private int size;
+    private final Calendar calendar;
+    /** sum_k 1/T_k over the entries: the releases per nanosecond. */
+    private double rate;
     private long w = Long.MIN_VALUE;
     private long sum;
-    /** Counted for {@link AnalysisCounts}: evaluations at a window, and heap steps (entries recounted). */
+    /** Counted for {@link AnalysisCounts}: evaluations at a window (the entries recounted: the calendar's steps). */
     long evaluations;
-    long steps;
 
     /** Over the first {@code n} entries of the arrays, which may grow up to their length through {@link #add}. */
     public Interference(long[] period, long[] cost, long[] jitter, int n) {
@@ -37,10 +34,15 @@ final class Interference {
         this.cost = cost;
         this.jitter = jitter;
         this.n = n;
-        this.jobs = new long[period.length];
-        this.limit = new long[period.length];
-        this.heap = new int[period.length];
-        this.heapKey = new long[period.length];
+        this.calendar = new Calendar(period.length);
+        for (int k = 0; k < n; k++) {
+            rate += 1.0 / period[k];
+        }
+    }
+
+    /** Entries whose counts were recounted, for {@link AnalysisCounts}. */
+    long steps() {
+        return calendar.steps;
     }
 
     /** Entry {@code k}, the next one, has been filled in (its cost may still be 0). */
@@ -49,17 +51,22 @@ final class Interference {
             throw new IllegalArgumentException("entries are added in order: " + k + " after " + n);
         }
         n++;
+        rate += 1.0 / period[k];
         if (w == Long.MIN_VALUE) {
             return;
         }
         try {
-            count(k, w);
-            sum = Math.addExact(sum, Math.multiplyExact(jobs[k], cost[k]));
+            calendar.count(k, w, period, jitter);
+            sum = Math.addExact(sum, Math.multiplyExact(calendar.jobs[k], cost[k]));
         } catch (ArithmeticException e) {
             w = Long.MIN_VALUE; // recomputed (and reported too large) by the next at()
             return;
         }
-        up(heapKey, heap, size++, limit[k], k);
+        if (Calendar.shiftFor(rate) < calendar.shift - 1) {
+            recut(); // the releases got denser than the buckets: cut them finer, with k in
+        } else {
+            calendar.file(k);
+        }
     }
 
     /** Entry {@code k}'s cost has just changed by {@code delta}. */
@@ -68,16 +75,18 @@ final class Interference {
             return;
         }
         try {
-            sum = Math.addExact(sum, Math.multiplyExact(jobs[k], delta));
+            sum = Math.addExact(sum, Math.multiplyExact(calendar.jobs[k], delta));
         } catch (ArithmeticException e) {
             w = Long.MIN_VALUE;
         }
     }
 
-    private void count(int k, long window) {
-        long x = Math.addExact(window, jitter[k]);
-        jobs[k] = x / period[k] + (x % period[k] == 0 ? 0 : 1);
-        limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], period[k]), jitter[k]);
+    /** Every entry filed again in buckets cut for the present rate. */
+    private void recut() {
+        calendar.cut(Calendar.shiftFor(rate));
+        for (int k = 0; k < n; k++) {
+            calendar.file(k);
+        }
     }
 
     /** The interference in a window of length {@code window}. */
@@ -97,112 +106,165 @@ final class Interference {
         }
         if (w == Long.MIN_VALUE) {
             sum = 0;
-            size = 0;
-            steps += n;
+            calendar.steps += n;
             for (int k = 0; k < n; k++) {
-                count(k, window);
-                sum = Math.addExact(sum, Math.multiplyExact(jobs[k], cost[k]));
-                heap[size] = k;
-                heapKey[size++] = limit[k];
+                calendar.count(k, window, period, jitter);
+                sum = Math.addExact(sum, Math.multiplyExact(calendar.jobs[k], cost[k]));
             }
-            for (int i = size / 2 - 1; i >= 0; i--) {
-                down(i);
-            }
+            recut();
             w = window;
             return sum;
         }
+        sum = calendar.advance(w, window, period, jitter, cost, sum);
         w = window;
-        while (size > 0 && heapKey[0] < window) {
-            steps++;
-            int k = heap[0];
-            long before = jobs[k];
-            count(k, window);
-            sum = Math.addExact(sum, Math.multiplyExact(jobs[k] - before, cost[k]));
-            down(0);
-        }
         return sum;
     }
 
-    /** The entry at place {@code i}, whose limit has grown, moved down to where its new key belongs. */
-    private void down(int i) {
-        int k = heap[i];
-        down(heapKey, heap, size, i, limit[k], k);
-    }
-
     /**
-     * Puts {@code (key, item)} into the hole at place {@code i} of the min-heap {@code keys}/{@code items}
-     * of {@code size} places, moving smaller children up until it fits.
+     * Entries filed by the largest window their job count holds for, in buckets as wide as the mean gap
+     * between the entries' releases (a power of two of nanoseconds, at most 1 / sum_k 1/T_k), so that a
+     * bucket holds about one release, and at least twice as many buckets as entries: every limit lies at
+     * most a period past the window, and an entry a round or more ahead is looked at and filed back once
+     * per round, which the round's releases (about as many as the buckets) pay for.
      */
-    static void down(long[] keys, int[] items, int size, int i, long key, int item) {
-        while (true) {
-            int child = 2 * i + 1;
-            if (child >= size) {
-                break;
-            }
-            if (child + 1 < size && keys[child + 1] < keys[child]) {
-                child++;
-            }
-            if (keys[child] >= key) {
-                break;
-            }
-            keys[i] = keys[child];
-            items[i] = items[child];
-            i = child;
-        }
-        keys[i] = key;
-        items[i] = item;
-    }
+    static final class Calendar {
+        /** Per entry: its job count, and the largest window it holds for: ceil((w + J) / T) = jobs while w &lt;= limit. */
+        final long[] jobs;
+        final long[] limit;
+        /** Per entry: the next entry of its bucket (-1: none); per bucket: its first entry. */
+        final int[] next;
+        final int[] head;
+        final int mask;
+        /** The bucket of a limit is (limit &gt;&gt; shift) &amp; mask. */
+        int shift;
+        /** Entries recounted, for {@link AnalysisCounts}. */
+        long steps;
 
-    /**
-     * Puts {@code (key, item)} into the hole at place {@code i} (the heap's new last place) of the min-heap
-     * {@code keys}/{@code items}, moving larger parents down until it fits.
-     */
-    static void up(long[] keys, int[] items, int i, long key, int item) {
-        while (i > 0 && keys[(i - 1) / 2] > key) {
-            keys[i] = keys[(i - 1) / 2];
-            items[i] = items[(i - 1) / 2];
-            i = (i - 1) / 2;
+        Calendar(int size) {
+            jobs = new long[size];
+            limit = new long[size];
+            next = new int[size];
+            head = new int[Integer.highestOneBit(Math.max(1, size)) << 2]; // at least twice the entries
+            mask = head.length - 1;
+            java.util.Arrays.fill(head, -1);
         }
-        keys[i] = key;
-        items[i] = item;
+
+        /** The shift whose buckets are no wider than the mean gap between releases, 1 / rate. */
+        static int shiftFor(double rate) {
+            double gap = 1 / rate;
+            return gap >= 0x1p62 ? 62 : Math.max(0, 63 - Long.numberOfLeadingZeros(Math.max(1, (long) gap)));
+        }
+
+        /** Empty, with buckets of width 2^shift. */
+        void cut(int shift) {
+            java.util.Arrays.fill(head, -1);
+            this.shift = shift;
+        }
+
+        int bucket(long limit) {
+            return (int) (limit >> shift) & mask;
+        }
+
+        void count(int k, long window, long[] period, long[] jitter) {
+            long x = Math.addExact(window, jitter[k]);
+            jobs[k] = x / period[k] + (x % period[k] == 0 ? 0 : 1);
+            limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], period[k]), jitter[k]);
+        }
+
+        void file(int k) {
+            int b = bucket(limit[k]);
+            next[k] = head[b];
+            head[b] = k;
+        }
+
+        /**
+         * From window {@code w} (every filed limit at or above it) to {@code window}: the entries whose limit lies
+         * below the window, which lie in the buckets from w's to (window - 1)'s (a round at most), recounted; the
+         * interference {@code sum} changed by their new jobs.
+         */
+        long advance(long w, long window, long[] period, long[] jitter, long[] cost, long sum) {
+            if (window == w) {
+                return sum;
+            }
+            long from = w >> shift;
+            long buckets = Math.min(((window - 1) >> shift) - from + 1, head.length);
+            for (long i = 0; i < buckets; i++) {
+                int b = (int) (from + i) & mask;
+                int k = head[b];
+                head[b] = -1;
+                while (k >= 0) {
+                    int after = next[k];
+                    if (limit[k] < window) {
+                        steps++;
+                        long before = jobs[k];
+                        count(k, window, period, jitter);
+                        sum = Math.addExact(sum, Math.multiplyExact(jobs[k] - before, cost[k]));
+                    }
+                    file(k);
+                    k = after;
+                }
+            }
+            return sum;
+        }
     }
 
     /**
      * The interference of a busy period's later jobs, continued from the first job's window of an
      * {@link Interference} without changing it (the next task's first job starts near where this one's
-     * did): the entries whose counts change are taken from the first's heap as a tree, smallest first
-     * (a place's children join a small heap of their own once the place is taken), and go on in that
-     * small heap with their new counts. No copy of every entry: a step costs O(log s) for the s entries
-     * the later jobs have touched.
+     * did): the first's buckets are read from its window on, and an entry whose count changes is taken
+     * from them (marked taken) into a calendar of its own, cut as the first's, with its new count. No
+     * copy of every entry: a step costs O(1) per entry whose count changes and per bucket passed.
      */
     static final class Later {
         private final Interference first;
-        private final long[] jobs;
-        private final long[] limit;
-        /** The small heap: keys, and items (a place of the first's heap, or -(entry + 1)). */
-        private long[] key = new long[64];
-        private int[] item = new int[64];
-        private int size;
+        private final Calendar own;
+        /** The mark of the entries taken from the first since {@link #start}, and the entries taken, in order. */
+        private final int[] taken;
+        private int mark;
+        private final int[] touched;
+        private int touchedCount;
+        /** The first of the first's buckets still to read (an unmasked index: the last one read may hold entries left). */
+        private long firstFrom;
+        /** Whether every entry is in this calendar (counted from scratch, or all taken from the first). */
+        private boolean all;
         private long w = Long.MIN_VALUE;
         private long sum;
         /** Counted for {@link AnalysisCounts}, as the first's. */
         long evaluations;
-        long steps;
 
         Later(Interference first) {
             this.first = first;
-            this.jobs = new long[first.period.length];
-            this.limit = new long[first.period.length];
+            int size = first.period.length;
+            this.own = new Calendar(size);
+            this.taken = new int[size];
+            this.touched = new int[size];
+        }
+
+        /** Entries recounted, for {@link AnalysisCounts}. */
+        long steps() {
+            return own.steps;
+        }
+
+        /** Empties this calendar: only the buckets of the entries it holds. */
+        private void empty() {
+            for (int i = 0; i < touchedCount; i++) {
+                own.head[own.bucket(own.limit[touched[i]])] = -1;
+            }
+            touchedCount = 0;
         }
 
         /** From the first's present window and counts. */
         void start() {
-            size = 0;
+            empty();
+            if (++mark == 0) {
+                java.util.Arrays.fill(taken, 0);
+                mark = 1;
+            }
             w = first.w;
             sum = first.sum;
-            if (w != Long.MIN_VALUE && first.size > 0) {
-                push(first.heapKey[0], 0);
-            }
+            own.shift = first.calendar.shift;
+            all = w == Long.MIN_VALUE;
+            firstFrom = all ? 0 : w >> own.shift;
         }
 
         /** The interference in a window of length {@code window}. */
@@ -215,70 +277,57 @@ final class Interference {
             }
         }
 
+        private void take(int k) {
+            taken[k] = mark;
+            touched[touchedCount++] = k;
+        }
+
         private long advance(long window) {
             evaluations++;
             if (w == Long.MIN_VALUE || window < w) {
                 // from scratch: every entry counted at the window (not met in a busy period's later jobs)
-                size = 0;
+                empty();
                 sum = 0;
-                steps += first.n;
+                own.steps += first.n;
+                own.shift = Calendar.shiftFor(first.rate);
                 for (int k = 0; k < first.n; k++) {
-                    count(k, window);
-                    sum = Math.addExact(sum, Math.multiplyExact(jobs[k], first.cost[k]));
-                    push(limit[k], -(k + 1));
+                    own.count(k, window, first.period, first.jitter);
+                    sum = Math.addExact(sum, Math.multiplyExact(own.jobs[k], first.cost[k]));
+                    take(k);
+                    own.file(k);
                 }
+                all = true;
                 w = window;
                 return sum;
             }
+            if (window == w) {
+                return sum;
+            }
+            // the entries taken before
+            sum = own.advance(w, window, first.period, first.jitter, first.cost, sum);
             w = window;
-            while (size > 0 && key[0] < window) {
-                steps++;
-                int it = item[0];
-                pop();
-                int k;
-                long before;
-                if (it >= 0) {
-                    // a place of the first's heap: its entry not yet touched here, its children next
-                    k = first.heap[it];
-                    before = first.jobs[k];
-                    int child = 2 * it + 1;
-                    if (child < first.size) {
-                        push(first.heapKey[child], child);
+            if (!all) {
+                // the entries not taken yet: the first's buckets from where the last reading stopped (that bucket again) to
+                // the window's, a round at most; an entry whose limit lies below the window is taken
+                Calendar from = first.calendar;
+                long to = (window - 1) >> from.shift;
+                long last = Math.min(to, firstFrom + from.head.length - 1);
+                for (long i = firstFrom; i <= last; i++) {
+                    for (int k = from.head[(int) i & from.mask]; k >= 0; k = from.next[k]) {
+                        if (taken[k] != mark && from.limit[k] < window) {
+                            own.steps++;
+                            take(k);
+                            own.count(k, window, first.period, first.jitter);
+                            sum = Math.addExact(sum, Math.multiplyExact(own.jobs[k] - from.jobs[k], first.cost[k]));
+                            own.file(k);
+                        }
                     }
-                    if (child + 1 < first.size) {
-                        push(first.heapKey[child + 1], child + 1);
-                    }
-                } else {
-                    k = -it - 1;
-                    before = jobs[k];
                 }
-                count(k, window);
-                sum = Math.addExact(sum, Math.multiplyExact(jobs[k] - before, first.cost[k]));
-                push(limit[k], -(k + 1));
+                // the entries left lie in the window's bucket or after it (their limits are not below the window)
+                firstFrom = to;
+                all = touchedCount == first.n;
             }
             return sum;
-        }
-
-        private void count(int k, long window) {
-            long x = Math.addExact(window, first.jitter[k]);
-            jobs[k] = x / first.period[k] + (x % first.period[k] == 0 ? 0 : 1);
-            limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], first.period[k]), first.jitter[k]);
-        }
-
-        private void push(long k, int it) {
-            if (size == key.length) {
-                key = java.util.Arrays.copyOf(key, 2 * size);
-                item = java.util.Arrays.copyOf(item, 2 * size);
-            }
-            up(key, item, size++, k, it);
-        }
-
-        private void pop() {
-            size--;
-            if (size == 0) {
-                return;
-            }
-            down(key, item, size, 0, key[size], item[size]);
         }
     }
 }

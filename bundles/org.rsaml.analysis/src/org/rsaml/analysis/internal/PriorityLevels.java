@@ -139,8 +139,8 @@ public final class PriorityLevels {
         }
         if (counts != null) {
             counts.iterations += interference.evaluations + later.evaluations;
-            counts.firstJobSteps += interference.steps;
-            counts.laterJobSteps += later.steps;
+            counts.firstJobSteps += interference.steps();
+            counts.laterJobSteps += later.steps();
             counts.summaries += prefix.summaries;
             counts.nodesOpened += prefix.opened;
         }
