@@ -83,7 +83,9 @@ class Ros2CmakeTemplate extends Ros2Template {
 		«ENDFOR»
 
 		add_library(${PROJECT_NAME} SHARED
-		  gen/rsaml/scheduling.cpp
+		  «FOR f : Ros2Target.RUNTIME_SOURCES»
+		  	gen/rsaml/«f»
+		  «ENDFOR»
 		  «FOR m : plan.modules»
 		  	gen/«m.layerId»/«m.className»Component.cpp
 		  	src/«m.layerId»/«m.className».cpp
@@ -97,16 +99,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 		  «ENDFOR»
 		)
 
-		# The component container of the launch file: each timed release on a thread at its priority.
-		add_executable(«rosNames.containerExecutable» gen/rsaml/container.cpp)
-		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
-
-		«IF managed»
-			# The lifecycle manager of the launch files: configures and activates the managed nodes.
-			add_executable(«rosNames.lifecycleManagerExecutable» gen/rsaml/lifecycle_manager.cpp)
-			target_link_libraries(«rosNames.lifecycleManagerExecutable» PRIVATE rclcpp::rclcpp ${lifecycle_msgs_TARGETS})
-
-		«ENDIF»
+		«runtimeExecutables»
 		# An executable per node, scheduled as in the container.
 		«FOR m : plan.modules»
 			add_executable(«m.executable» gen/«m.layerId»/«m.mainName».cpp)
@@ -148,6 +141,23 @@ class Ros2CmakeTemplate extends Ros2Template {
 		  	endif()
 		  «ENDIF»
 		endif()
+	'''
+
+	/**
+	 * The executables of the package that holds the scheduling runtime: the component container of the launch
+	 * files, and the lifecycle manager when some node is managed.
+	 */
+	def private runtimeExecutables() '''
+		# The component container of the launch file: each timed release on a thread at its priority.
+		add_executable(«rosNames.containerExecutable» gen/rsaml/«Ros2Target.CONTAINER_SOURCE»)
+		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
+
+		«IF managed»
+			# The lifecycle manager of the launch files: configures and activates the managed nodes.
+			add_executable(«rosNames.lifecycleManagerExecutable» gen/rsaml/«Ros2Target.LIFECYCLE_MANAGER_SOURCE»)
+			target_link_libraries(«rosNames.lifecycleManagerExecutable» PRIVATE rclcpp::rclcpp ${lifecycle_msgs_TARGETS})
+
+		«ENDIF»
 	'''
 
 	/** Whether some node is managed: then the package uses rclcpp_lifecycle and builds the lifecycle manager. */
@@ -247,21 +257,12 @@ class Ros2CmakeTemplate extends Ros2Template {
 		«ENDIF»
 		find_package(Threads REQUIRED)
 
-		add_library(${PROJECT_NAME} SHARED gen/rsaml/scheduling.cpp)
+		add_library(${PROJECT_NAME} SHARED«FOR f : Ros2Target.RUNTIME_SOURCES» gen/rsaml/«f»«ENDFOR»)
 		target_include_directories(${PROJECT_NAME} PUBLIC
 		  "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/gen>" "$<INSTALL_INTERFACE:include/${PROJECT_NAME}>")
 		target_link_libraries(${PROJECT_NAME} PUBLIC rclcpp::rclcpp Threads::Threads)
 
-		# The component container of the launch file: each timed release on a thread at its priority.
-		add_executable(«rosNames.containerExecutable» gen/rsaml/container.cpp)
-		target_link_libraries(«rosNames.containerExecutable» PRIVATE ${PROJECT_NAME} rclcpp_components::component_manager)
-
-		«IF managed»
-			# The lifecycle manager of the launch files: configures and activates the managed nodes.
-			add_executable(«rosNames.lifecycleManagerExecutable» gen/rsaml/lifecycle_manager.cpp)
-			target_link_libraries(«rosNames.lifecycleManagerExecutable» PRIVATE rclcpp::rclcpp ${lifecycle_msgs_TARGETS})
-
-		«ENDIF»
+		«runtimeExecutables»
 		include(user.cmake)
 
 		install(DIRECTORY gen/rsaml DESTINATION include/${PROJECT_NAME} FILES_MATCHING PATTERN "*.hpp")

@@ -4,6 +4,7 @@
  */
 package org.rsaml.generator.internal.ros2
 
+import java.util.List
 import java.util.TreeSet
 import org.rsaml.analysis.plan.ExecutionPlan
 import org.rsaml.analysis.plan.PlannedModule
@@ -31,6 +32,33 @@ import org.rsaml.generator.spi.TargetGenerator
  * Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
  */
 class Ros2Target implements TargetGenerator {
+
+	/**
+	 * The scheduling runtime's library in runtime/ros2/rsaml/ of this bundle: its headers, which the nodes include,
+	 * and its sources, compiled into the shared library the nodes of a process share.
+	 */
+	public static val List<String> RUNTIME_HEADERS = #["scheduling.hpp"]
+	public static val List<String> RUNTIME_SOURCES = #["scheduling.cpp"]
+
+	/** The component container's source in runtime/ros2/rsaml/; the launch files start it. */
+	public static val String CONTAINER_SOURCE = "container.cpp"
+
+	/** What managed nodes add in runtime/ros2/rsaml/: the header of their base class, and the lifecycle manager's source. */
+	public static val List<String> LIFECYCLE_HEADERS = #["lifecycle.hpp"]
+	public static val String LIFECYCLE_MANAGER_SOURCE = "lifecycle_manager.cpp"
+
+	/** Every file of runtime/ros2/rsaml/ a package carries in gen/rsaml/; the lifecycle's when some node is {@code managed}. */
+	def static List<String> runtimeFiles(boolean managed) {
+		val files = newArrayList
+		files += RUNTIME_HEADERS
+		files += RUNTIME_SOURCES
+		files += CONTAINER_SOURCE
+		if (managed) {
+			files += LIFECYCLE_HEADERS
+			files += LIFECYCLE_MANAGER_SOURCE
+		}
+		files
+	}
 
 	override id() {
 		"ros2"
@@ -120,13 +148,8 @@ class Ros2Files {
 		val launchTest = new Ros2LaunchTestTemplate(context)
 		files += GeneratedFile.generated(pkg + "/" + launchTest.path, launchTest.launchTest)
 		val rpkg = packages.runtime
-		for (f : #["scheduling.hpp", "scheduling.cpp", "container.cpp"]) {
+		for (f : Ros2Target.runtimeFiles(!rosNames.managedModules.empty)) {
 			files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, runtimeFile(f))
-		}
-		if (!rosNames.managedModules.empty) {
-			for (f : #["lifecycle.hpp", "lifecycle_manager.cpp"]) {
-				files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, runtimeFile(f))
-			}
 		}
 		files += GeneratedFile.generated(rpkg + "/gen/rsaml/realtime.hpp", "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
 		for (m : context.plan.modules) {
