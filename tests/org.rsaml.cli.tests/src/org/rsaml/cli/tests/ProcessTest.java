@@ -9,6 +9,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.FileTime;
 import java.util.List;
 
 import org.junit.jupiter.api.Test;
@@ -64,6 +66,54 @@ class ProcessTest {
         for (ExpectedFinding e : ValidateCommandTest.exp2()) {
             assertTrue(again.out().contains("\"ruleId\": \"" + e.ruleId() + "\""), () -> "the JSON report has " + e.what() + "\n" + again);
         }
+    }
+
+    @Test
+    void launcherInACopiedTreeMakesItsClassDataAgainUsesItAndShowsARefusal(@TempDir Path dir) throws Exception {
+        // As a tree copied, moved or restored from a CI cache with its files' times kept: the jar, the launcher and
+        // the class data made for the repository's own path, now somewhere else.
+        Path tree = Files.createDirectories(dir.resolve("tree"));
+        Path target = Files.createDirectories(tree.resolve("cli/org.rsaml.cli/target"));
+        Files.createDirectories(tree.resolve("examples"));
+        Files.copy(Cli.ROOT.resolve("rsaml"), tree.resolve("rsaml"), StandardCopyOption.COPY_ATTRIBUTES);
+        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), tree.resolve("examples/exp2-defects.rsaml"));
+        Path built = Cli.ROOT.resolve("cli/org.rsaml.cli/target");
+        for (String name : List.of("rsaml.jar", "rsaml.jsa", "rsaml.jsa.stamp", "rsaml.aot", "rsaml.aot.stamp")) {
+            if (Files.exists(built.resolve(name))) {
+                Files.copy(built.resolve(name), target.resolve(name), StandardCopyOption.COPY_ATTRIBUTES);
+            }
+        }
+        Path log = dir.resolve("classes-loaded.log");
+        List<String> validate = List.of("env", "RSAML_JAVA_OPTS=-Xlog:class+load=info:file=" + log, "./rsaml", "validate",
+                "examples/exp2-defects.rsaml");
+
+        Cli.Result r = Cli.process(tree, validate);
+        assertEquals(1, r.code(), r::toString);
+        assertTrue(r.out().endsWith(ValidateCommandTest.exp2Summary() + "\n"), r::toString);
+        assertEquals("", r.err(), "no JVM warning: the class data was made again for this tree and accepted");
+        String loaded = Files.readString(log);
+        assertTrue(loaded.contains("org.rsaml.cli.ValidateCommand source: shared objects file"),
+                () -> "RsaML's classes come from the class data made for this tree (AOT cache or CDS archive):\n"
+                        + loaded.lines().filter(l -> l.contains("org.rsaml.cli.")).toList());
+
+        // The jar changes under class data whose stamp still claims to fit it: the JVM refuses the class data, and
+        // says so on standard error; the run itself is unchanged.
+        Path jar = target.resolve("rsaml.jar");
+        long changed = Files.getLastModifiedTime(jar).toMillis() / 1000 + 3600;
+        Files.setLastModifiedTime(jar, FileTime.fromMillis(changed * 1000));
+        for (String name : List.of("rsaml.jsa.stamp", "rsaml.aot.stamp")) {
+            Path stamp = target.resolve(name);
+            if (Files.exists(stamp)) {
+                // The stamp starts with the jar's size and modification time in seconds (the launcher's stat -c '%s %Y').
+                String[] fields = Files.readString(stamp).split(" ", 3);
+                Files.writeString(stamp, fields[0] + " " + changed + " " + fields[2]);
+            }
+        }
+        Cli.Result refused = Cli.process(tree, validate);
+        assertEquals(1, refused.code(), refused::toString);
+        assertEquals(r.out(), refused.out(), "the same report without the class data");
+        assertTrue(refused.err().contains("archive") || refused.err().contains("AOT cache"),
+                () -> "the JVM's refusal of the class data is shown, not hidden:\n" + refused);
     }
 
     @Test
