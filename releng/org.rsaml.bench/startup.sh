@@ -2,30 +2,40 @@
 # SPDX-License-Identifier: EPL-2.0
 # Start-up benchmark of the rsaml command: whole processes, as CI runs them, timed by hyperfine
 # (Debian package hyperfine). Run from anywhere; the jar is built first if it is missing. Prints wall and
-# CPU times, each with its ratio to java -version's (on a shared machine the CPU ratio is the steadier one).
+# CPU times, each with its ratio to java -version's of the same JDK (on a shared machine the CPU ratio is the
+# steadier one), and the load average before and after.
 # Usage: releng/org.rsaml.bench/startup.sh [runs]
+# RSAML_BENCH_JDKS: more JDKs (their homes, separated by spaces) to run ./rsaml with beside the java on the PATH,
+# e.g. RSAML_BENCH_JDKS=/usr/lib/jvm/temurin-25-jdk-amd64 (./rsaml then uses that JDK's AOT cache).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs="${1:-20}"
 command -v hyperfine >/dev/null || { echo "startup.sh: needs hyperfine (apt-get install hyperfine)" >&2; exit 2; }
 [ -f cli/org.rsaml.cli/target/rsaml.jar ] || ./mvnw -q -B -DskipTests -pl cli/org.rsaml.cli -am package
-./rsaml validate examples/exp2-defects.rsaml >/dev/null || true   # makes the class-data archive once (or again, if it no longer fits)
 model=examples/exp2-defects.rsaml
+# Each JDK's class data is made once (or again, if it no longer fits) before anything is timed.
+./rsaml validate "$model" >/dev/null || true
+commands=(-n 'java -version (the floor)' 'java -version'
+  -n './rsaml validate' "./rsaml validate $model"
+  -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model"
+  -n './rsaml --version' './rsaml --version')
+for jdk in ${RSAML_BENCH_JDKS:-}; do
+  JAVA_HOME="$jdk" ./rsaml validate "$model" >/dev/null || true
+  v="$(sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$jdk/release" 2>/dev/null)"
+  commands+=(-n "java -version (the floor), Java ${v:-?}" "$jdk/bin/java -version"
+    -n "./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk ./rsaml validate $model")
+done
 out="$(mktemp)"
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
-hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" \
-  -n 'java -version (the floor)' 'java -version' \
-  -n './rsaml validate (launcher: CDS archive, C1 alone for small inputs, serial GC)' "./rsaml validate $model" \
-  -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model" \
-  -n './rsaml --version' './rsaml --version'
+hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" "${commands[@]}"
 python3 - "$out" <<'PY'
 import json, sys
 results = json.load(open(sys.argv[1]))["results"]
-floor = results[0]["median"]
 print("| command | median (wall) | ÷ java -version | CPU (user + system, mean) | ÷ java -version | mean ± σ | min | max |")
 print("|---|---:|---:|---:|---:|---:|---:|---:|")
-cpu_floor = results[0]["user"] + results[0]["system"]
 for r in results:
+    if r["command"].startswith("java -version"):
+        floor, cpu_floor = r["median"], r["user"] + r["system"]   # the floor of the rows that follow (same JDK)
     ms = lambda v: f"{v * 1000:,.0f} ms"
     cpu = r["user"] + r["system"]
     print(f"| {r['command']} | {ms(r['median'])} | {r['median'] / floor:.1f}× | {ms(cpu)} | {cpu / cpu_floor:.1f}× "
