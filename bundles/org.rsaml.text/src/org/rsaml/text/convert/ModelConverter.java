@@ -6,6 +6,7 @@ package org.rsaml.text.convert;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
@@ -19,6 +20,7 @@ import org.rsaml.model.Architecture;
 import org.rsaml.model.resource.ModelFormats;
 import org.rsaml.model.resource.RsamlResource;
 import org.rsaml.model.resource.RsamlStandaloneSetup;
+import org.rsaml.model.support.AtomicFiles;
 import org.rsaml.text.RsamlTextStandaloneSetup;
 import org.rsaml.text.serializer.RsamlTextWriter;
 import org.rsaml.validation.LoadedModel;
@@ -57,18 +59,18 @@ public final class ModelConverter {
             throw new IOException("is the input itself; name another file");
         }
         LoadedModel model = ModelLoader.load(input, inputShown);
-        byte[] bytes;
+        String converted;
         try {
-            bytes = ModelFormats.isText(output.toString()) ? toText(model.architecture()).getBytes(java.nio.charset.StandardCharsets.UTF_8)
-                    : toXmi(model.architecture(), output);
+            converted = ModelFormats.isText(output.toString()) ? toText(model.architecture()) : toXmi(model.architecture(), output);
         } catch (RsamlTextWriter.UnwritableModelException e) {
             throw new ModelLoadException(inputShown, e.getMessage());
         }
-        Path parent = output.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
+        // Replaced whole: a failed write leaves the file the user had, never a truncated model.
+        try {
+            AtomicFiles.writeString(output, converted);
+        } catch (IOException e) {
+            throw new IOException(AtomicFiles.reason(e, output), e);
         }
-        Files.write(output, bytes);
     }
 
     /** The model in the textual syntax, in its canonical layout. */
@@ -76,13 +78,13 @@ public final class ModelConverter {
         return RsamlTextStandaloneSetup.injector().getInstance(RsamlTextWriter.class).write(architecture);
     }
 
-    private static byte[] toXmi(Architecture architecture, Path output) throws IOException {
+    private static String toXmi(Architecture architecture, Path output) throws IOException {
         ResourceSet resourceSet = RsamlStandaloneSetup.newResourceSet();
         Resource resource = new RsamlResource(URI.createFileURI(output.toAbsolutePath().toString()));
         resourceSet.getResources().add(resource);
         resource.getContents().add(EcoreUtil.copy(architecture));
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         resource.save(bytes, Map.of(XMLResource.OPTION_ENCODING, "UTF-8"));
-        return bytes.toByteArray();
+        return bytes.toString(StandardCharsets.UTF_8);
     }
 }

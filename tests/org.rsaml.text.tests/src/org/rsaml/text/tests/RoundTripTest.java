@@ -85,4 +85,23 @@ class RoundTripTest {
 
         assertEquals(written, ModelConverter.toText(fromXmi.architecture()), shown + ": text -> XMI -> text gives other text");
     }
+
+    @Test
+    void convertingOverAFileReplacesItWholeNeverRewritingItInPlace() throws Exception {
+        Path text = temp.resolve("exp2-defects.rsa");
+        String edited = "// the architect's text, being edited\n";
+        Files.writeString(text, edited);
+        // A second name of the same file: what a reader holding the old file, or an editor's buffer of it, keeps.
+        Path held = temp.resolve("held.rsa");
+        Files.createLink(held, text);
+        ModelConverter.convert(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml", text);
+        assertEquals(edited, Files.readString(held),
+                "the old file is replaced, not truncated and rewritten in place: a failed write would leave it whole");
+        assertNull(Models.difference(ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml").architecture(),
+                ModelLoader.load(text, "exp2-defects.rsa").architecture()), "the converted model is in its place");
+        try (Stream<Path> files = Files.list(temp)) {
+            assertEquals(List.of("exp2-defects.rsa", "held.rsa"), files.map(f -> f.getFileName().toString()).sorted().toList(),
+                    "no temporary file is left beside it");
+        }
+    }
 }
