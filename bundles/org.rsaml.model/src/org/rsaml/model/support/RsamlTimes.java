@@ -8,6 +8,7 @@ import java.math.BigDecimal;
 import java.math.MathContext;
 import java.math.RoundingMode;
 
+import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.TimeScaled;
 import org.rsaml.model.TimeUnit;
 
@@ -31,9 +32,12 @@ public final class RsamlTimes {
     private RsamlTimes() {
     }
 
-    /** The unit of an element's time values; milliseconds when not set. */
+    /** The unit of time values whose element names none: the metamodel's default of {@code timeUnit} (milliseconds). */
+    public static final TimeUnit DEFAULT_UNIT = (TimeUnit) RsamlPackage.Literals.TIME_SCALED__TIME_UNIT.getDefaultValue();
+
+    /** The unit of an element's time values; {@link #DEFAULT_UNIT} when not set. */
     public static TimeUnit unit(TimeScaled owner) {
-        return owner == null || owner.getTimeUnit() == null ? TimeUnit.MS : owner.getTimeUnit();
+        return owner == null || owner.getTimeUnit() == null ? DEFAULT_UNIT : owner.getTimeUnit();
     }
 
     /** The value in nanoseconds, exactly; {@code null} for NaN and infinities. */

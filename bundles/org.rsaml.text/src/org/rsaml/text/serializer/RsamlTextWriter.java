@@ -41,7 +41,7 @@ import org.rsaml.model.Sensor;
 import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.Supervisor;
 import org.rsaml.model.TimeScaled;
-import org.rsaml.model.TimeUnit;
+import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.text.naming.RsamlTextNameIndex;
 import org.rsaml.text.naming.RsamlTextQualifiedNameProvider;
 import org.rsaml.text.naming.RsamlTextSyntax;
@@ -313,14 +313,14 @@ public class RsamlTextWriter {
         if (!e.eIsSet(feature)) {
             return false;
         }
-        line(keyword + " " + number(value) + " " + e.getTimeUnit().getLiteral());
+        line(keyword + " " + number(value) + " " + RsamlTimes.unit(e).getLiteral());
         return true;
     }
 
     /** The unit on its own, when it is not the default and no time value carries it. */
     private void unitIfUnwritten(TimeScaled e, boolean written) {
-        if (!written && e.getTimeUnit() != TimeUnit.MS) {
-            line("unit " + e.getTimeUnit().getLiteral());
+        if (!written && RsamlTimes.unit(e) != RsamlTimes.DEFAULT_UNIT) {
+            line("unit " + RsamlTimes.unit(e).getLiteral());
         }
     }
 
