@@ -51,6 +51,37 @@ class RepositoryDocsTest {
         assertEquals(List.of(), missing, "folders missing from README's repository structure");
     }
 
+    /**
+     * Every entry at the top of the repository (files and folders; what .gitignore leaves out apart) is named at the
+     * start of a line of the structure, alone or in a list ({@code LICENSE, NOTICE}, {@code .ci/run}).
+     */
+    @Test
+    void theReadmeStructureNamesEveryTopLevelEntry() throws Exception {
+        String readme = Files.readString(ROOT.resolve("README.md"));
+        int open = readme.indexOf("```", readme.indexOf("## Repository structure"));
+        String block = readme.substring(open + 3, readme.indexOf("```", open + 3));
+        Set<String> named = new TreeSet<>();
+        for (String line : block.split("\n")) {
+            if (!line.isBlank() && !line.startsWith(" ")) {
+                for (String entry : line.split(" {2,}")[0].split(",")) {
+                    named.add(entry.strip().split("/")[0]);
+                }
+            }
+        }
+        Set<String> ignored = new TreeSet<>(Set.of(".git"));
+        for (String pattern : Files.readAllLines(ROOT.resolve(".gitignore"))) {
+            String name = pattern.strip().replaceAll("^/|/$", "");
+            if (!name.isEmpty() && !name.contains("/") && !name.contains("*")) {
+                ignored.add(name);
+            }
+        }
+        List<String> unnamed = new ArrayList<>();
+        try (Stream<Path> entries = Files.list(ROOT)) {
+            entries.map(e -> e.getFileName().toString()).filter(n -> !ignored.contains(n) && !named.contains(n)).sorted().forEach(unnamed::add);
+        }
+        assertEquals(List.of(), unnamed, "top-level entries README's repository structure does not name (it names " + named + ")");
+    }
+
     /** One test bundle per production bundle ({@code bundles/x} is tested by {@code tests/x.tests}), as STYLE.md asks. */
     @Test
     void everyBundleHasItsTestBundle() throws Exception {
