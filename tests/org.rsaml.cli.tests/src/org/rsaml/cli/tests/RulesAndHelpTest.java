@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 import org.rsaml.validation.Rule;
@@ -24,18 +25,19 @@ class RulesAndHelpTest {
         Cli.Result r = Cli.run("rules");
         assertEquals(0, r.code(), r::toString);
         List<String> lines = r.outLines();
-        assertEquals(Rules.all().size(), lines.size(), r::toString);
-        assertTrue(lines.get(8).matches("RSA-08 +error +layer-execution-budget +Every module's execution duration stays within .*"), lines.get(8));
-        assertTrue(lines.get(11).matches("RSA-11 +warning +deadline-within-period +.*"), lines.get(11));
+        assertEquals(Rules.all().size(), lines.size(), () -> "one line per rule of the catalogue:\n" + r);
+        for (int i = 0; i < lines.size(); i++) {
+            Rule rule = Rules.all().get(i);
+            String line = lines.get(i);
+            assertTrue(line.matches(Pattern.quote(rule.id()) + " +" + rule.severity().label() + " +" + Pattern.quote(rule.name()) + " +\\S.*"),
+                    () -> "the catalogue's " + rule.id() + " listed in its place with its severity, name and description: " + line);
+        }
 
         Cli.Result verbose = Cli.run("rules", "--verbose");
-        assertTrue(verbose.out().contains("fix: Shorten the module's execution duration"), verbose::toString);
         for (Rule rule : Rules.all()) {
             assertTrue(verbose.out().contains("scope: " + rule.scope() + "\n"), () -> rule.id() + "'s scope missing:\n" + verbose.out());
             assertTrue(verbose.out().contains("fix: " + rule.remediation() + "\n"), () -> rule.id() + "'s fix missing");
         }
-        assertTrue(verbose.out().contains("scope: Modules of a layer whose maxExecTime is above 0; a layer without maxExecTime"),
-                verbose::toString);
     }
 
     @Test
