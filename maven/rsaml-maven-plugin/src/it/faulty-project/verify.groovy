@@ -6,7 +6,7 @@
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD FAILURE')
 assert log.contains("[ERROR] src/main/rsaml/rover.rsaml:8:5: error RSA-08: Module 'planner' takes 20.0 ms but layer 'decision' allows at most 2.0 ms")
-assert log.contains('RsaML validation failed: 2 files checked: 1 error, 0 warnings (failOn: error)')
+assert log.contains('RsaML validation failed: 2 files checked: 1 error, 0 warnings (fail on error)')
 def sarif = new groovy.json.JsonSlurper().parse(new File(basedir, 'target/rsaml/rsaml.sarif'))
 def result = sarif.runs[0].results[0]
 assert result.ruleId == 'RSA-08'

@@ -6,7 +6,7 @@
 def log = new File(basedir, 'build.log').text
 assert log.contains('BUILD FAILURE')
 assert log.contains('[WARNING] src/main/rsaml/odometry.rsaml:5:5: warning RSA-11: ')
-assert log.contains('(failOn: warning)')
+assert log.contains('(fail on warning)')
 ['rsaml.sarif', 'TEST-rsaml.xml', 'rsaml.json', 'rsaml.txt'].each {
     assert new File(basedir, "target/rsaml/$it").isFile() : "$it written"
 }

@@ -4,9 +4,9 @@
  */
 package org.rsaml.diagram;
 
-import java.util.Arrays;
 import java.util.Locale;
-import java.util.stream.Collectors;
+
+import org.rsaml.model.support.Choices;
 
 /** How a diagram is written. */
 public enum DiagramFormat {
@@ -22,12 +22,6 @@ public enum DiagramFormat {
 
     /** @throws IllegalArgumentException naming the accepted values */
     public static DiagramFormat parse(String value) {
-        for (DiagramFormat format : values()) {
-            if (format.id().equalsIgnoreCase(value == null ? "" : value.trim())) {
-                return format;
-            }
-        }
-        throw new IllegalArgumentException("unknown format '" + value + "'; expected one of "
-                + Arrays.stream(values()).map(DiagramFormat::id).collect(Collectors.joining(", ")));
+        return Choices.parse(values(), DiagramFormat::id, "format", value);
     }
 }

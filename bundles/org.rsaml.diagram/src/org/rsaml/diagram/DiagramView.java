@@ -4,9 +4,9 @@
  */
 package org.rsaml.diagram;
 
-import java.util.Arrays;
 import java.util.Locale;
-import java.util.stream.Collectors;
+
+import org.rsaml.model.support.Choices;
 
 /** What a diagram shows of an architecture. */
 public enum DiagramView {
@@ -22,12 +22,6 @@ public enum DiagramView {
 
     /** @throws IllegalArgumentException naming the accepted values */
     public static DiagramView parse(String value) {
-        for (DiagramView view : values()) {
-            if (view.id().equalsIgnoreCase(value == null ? "" : value.trim())) {
-                return view;
-            }
-        }
-        throw new IllegalArgumentException("unknown view '" + value + "'; expected one of "
-                + Arrays.stream(values()).map(DiagramView::id).collect(Collectors.joining(", ")));
+        return Choices.parse(values(), DiagramView::id, "view", value);
     }
 }

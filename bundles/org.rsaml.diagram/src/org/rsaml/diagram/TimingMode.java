@@ -4,11 +4,10 @@
  */
 package org.rsaml.diagram;
 
-import java.util.Arrays;
 import java.util.Locale;
-import java.util.stream.Collectors;
 
 import org.rsaml.model.Architecture;
+import org.rsaml.model.support.Choices;
 
 /** Whether the architecture view draws the timing analysis over the architecture. */
 public enum TimingMode {
@@ -35,12 +34,6 @@ public enum TimingMode {
 
     /** @throws IllegalArgumentException naming the accepted values */
     public static TimingMode parse(String value) {
-        for (TimingMode mode : values()) {
-            if (mode.id().equalsIgnoreCase(value == null ? "" : value.trim())) {
-                return mode;
-            }
-        }
-        throw new IllegalArgumentException("unknown timing mode '" + value + "'; expected one of "
-                + Arrays.stream(values()).map(TimingMode::id).collect(Collectors.joining(", ")));
+        return Choices.parse(values(), TimingMode::id, "timing mode", value);
     }
 }

@@ -90,11 +90,24 @@ public final class DiagramBatch {
     }
 
     /**
-     * Draws every usable input into {@code directory} (ask {@link #refusal} first).
-     *
-     * @return the number of inputs that could not be read or drawn
+     * What a batch did: how many models could not be read or drawn, and what that means for the run (findings never
+     * change it; the validate command and goal judge those).
      */
-    public int draw(List<ModelFiles.Input> inputs, Path directory, Listener listener) {
+    public record Outcome(int failed) {
+
+        /** {@code rsaml diagram}'s exit code: 2 when a model could not be read or drawn, else 0. */
+        public int exitCode() {
+            return failed == 0 ? ExitCodes.OK : ExitCodes.INPUT_ERROR;
+        }
+
+        /** Why the run fails ({@code could not draw 2 models; see the errors above}), or {@code null} when every model was drawn. */
+        public String failure() {
+            return failed == 0 ? null : "could not draw " + failed + " model" + (failed == 1 ? "" : "s") + "; see the errors above";
+        }
+    }
+
+    /** Draws every usable input into {@code directory} (ask {@link #refusal} first). */
+    public Outcome draw(List<ModelFiles.Input> inputs, Path directory, Listener listener) {
         int failed = 0;
         for (ModelFiles.Input input : inputs) {
             if (input.unusable() != null) {
@@ -117,6 +130,6 @@ public final class DiagramBatch {
                 failed++;
             }
         }
-        return failed;
+        return new Outcome(failed);
     }
 }

@@ -4,10 +4,7 @@
  */
 package org.rsaml.report;
 
-import java.util.Arrays;
-import java.util.Locale;
-import java.util.stream.Collectors;
-
+import org.rsaml.model.support.Choices;
 import org.rsaml.validation.Severity;
 
 /**
@@ -47,10 +44,7 @@ public enum FindingFailOn {
      * @throws IllegalArgumentException naming the value and the levels there are
      */
     public static FindingFailOn parse(String text) {
-        String t = text == null ? "" : text.strip().toLowerCase(Locale.ROOT);
-        return Arrays.stream(values()).filter(v -> v.label.equals(t)).findFirst()
-                .orElseThrow(() -> new IllegalArgumentException("'" + text + "' is not a level; it is one of "
-                        + Arrays.stream(values()).map(FindingFailOn::label).collect(Collectors.joining(", "))));
+        return Choices.parse(values(), FindingFailOn::label, "level", text);
     }
 
     @Override

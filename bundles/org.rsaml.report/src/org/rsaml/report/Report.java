@@ -55,6 +55,24 @@ public record Report(List<Rule> rules, List<FileResult> results, Severity failOn
         return hasFailingFindings() ? ExitCodes.FINDINGS : ExitCodes.OK;
     }
 
+    /**
+     * Why the run fails, in the words of {@link #exitCode()}'s decision, as a build says it after the findings
+     * ({@code could not read 1 model file; see the errors above}, {@code validation failed: 2 files checked: 1 error,
+     * 0 warnings (fail on error)}), or {@code null} when it passes.
+     */
+    public String failure() {
+        return switch (exitCode()) {
+            case ExitCodes.INPUT_ERROR -> "could not read " + plural(unreadable(), "model file") + "; see the errors above";
+            case ExitCodes.FINDINGS -> "validation failed: " + summary() + failingOn(failOn.label());
+            default -> null;
+        };
+    }
+
+    /** How a failure names the level that decided it, for every check alike: {@code  (fail on error)}. */
+    static String failingOn(String level) {
+        return " (fail on " + level + ")";
+    }
+
     /** One line: {@code 3 files checked: 5 errors, 1 warning; 1 file could not be read}. */
     public String summary() {
         StringBuilder s = new StringBuilder();

@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.Writer;
 import java.util.Locale;
 
+import org.rsaml.model.support.Choices;
 import org.rsaml.report.internal.JUnitReport;
 import org.rsaml.report.internal.JsonReport;
 import org.rsaml.report.internal.SarifReport;
@@ -57,18 +58,22 @@ public enum ReportFormat {
         return extension;
     }
 
+    /**
+     * The name of a report file of this format in a build's report directory: {@code STEM.EXT}, and for JUnit
+     * {@code TEST-STEM.xml}, the prefix by which CI servers (Surefire's convention) find test reports.
+     */
+    public String fileName(String stem) {
+        return (this == JUNIT ? "TEST-" : "") + stem + "." + extension;
+    }
+
     /** The name users type: {@code text}, {@code json}, {@code sarif}, {@code junit}. */
     public String id() {
         return name().toLowerCase(Locale.ROOT);
     }
 
+    /** The format a user names ({@code text}, {@code json}, {@code sarif}, {@code junit}; any case). */
     public static ReportFormat parse(String name) {
-        for (ReportFormat format : values()) {
-            if (format.id().equalsIgnoreCase(name.trim())) {
-                return format;
-            }
-        }
-        throw new IllegalArgumentException("unknown report format '" + name + "' (expected text, json, sarif or junit)");
+        return Choices.parse(values(), ReportFormat::id, "report format", name);
     }
 
     /**

@@ -70,7 +70,7 @@ public final class TimingBatch {
      * @param unanalysable the models that could not be read or analysed
      * @param outputFailed whether a timeline could not be written
      * @param json         the verdicts as JSON, or {@code null} when the run did not ask for them
-     * @param findings     the timing rules' findings (RSA-22 to RSA-25), or {@code null} when the run did not ask for them
+     * @param findings     the timing rules' findings, or {@code null} when the run did not ask for them
      * @param failOn       which verdicts failed the run
      * @param timeline     where the timelines were to be written, as the user named it, or {@code null}
      */
@@ -107,14 +107,14 @@ public final class TimingBatch {
 
         /**
          * Which models' verdicts fail the run under its {@link TimingFailOn} ({@code a deadline or a latency requirement
-         * can be missed in A}), or {@code null} when none does.
+         * can be missed in A (fail on miss)}), or {@code null} when none does.
          */
         public String verdictFailure() {
             if (failing.isEmpty()) {
                 return null;
             }
             return (failOn == TimingFailOn.MISS ? "a deadline or a latency requirement can be missed in "
-                    : "the timing is not proven (fail on " + failOn + ") in ") + String.join(", ", failing);
+                    : "the timing is not proven in ") + String.join(", ", failing) + Report.failingOn(failOn.label());
         }
     }
 

@@ -4,11 +4,8 @@
  */
 package org.rsaml.report;
 
-import java.util.Arrays;
-import java.util.Locale;
-import java.util.stream.Collectors;
-
 import org.rsaml.analysis.Verdict;
+import org.rsaml.model.support.Choices;
 import org.rsaml.validation.Severity;
 
 /**
@@ -43,10 +40,7 @@ public enum TimingFailOn {
      * @throws IllegalArgumentException naming the value and the levels there are, as {@link FindingFailOn#parse} does
      */
     public static TimingFailOn parse(String text) {
-        String t = text == null ? "" : text.strip().toLowerCase(Locale.ROOT);
-        return Arrays.stream(values()).filter(v -> v.label.equals(t)).findFirst()
-                .orElseThrow(() -> new IllegalArgumentException("'" + text + "' is not a level; it is one of "
-                        + Arrays.stream(values()).map(TimingFailOn::label).collect(Collectors.joining(", "))));
+        return Choices.parse(values(), TimingFailOn::label, "level", text);
     }
 
     /** Whether a model whose architecture has this overall verdict fails the run. */
@@ -59,8 +53,8 @@ public enum TimingFailOn {
     }
 
     /**
-     * The lowest severity of the timing rules' findings (RSA-22 to RSA-25) that fails the run in the
-     * SARIF and JUnit reports: the errors are the misses, RSA-24 (not analysed) is a warning.
+     * The lowest severity of the timing rules' findings ({@code Rules.timing()}) that fails the run in the
+     * SARIF and JUnit reports: the errors are the misses, "not analysed" is a warning.
      */
     public Severity findingThreshold() {
         return switch (this) {

@@ -111,11 +111,11 @@ class DiagramCommandTest {
         String model = Cli.ROOT.resolve("examples/exp1-hybrid.rsaml").toString();
         Cli.Result view = Cli.runIn(dir, "diagram", "--view", "deployment", "-o", "out", model);
         assertEquals(2, view.code(), view::toString);
-        assertTrue(view.err().contains("unknown view 'deployment'; expected one of architecture, mission"), view::toString);
+        assertTrue(view.err().contains("'deployment' is not a view; it is one of architecture, mission"), view::toString);
 
         Cli.Result format = Cli.runIn(dir, "diagram", "--format", "png", "-o", "out", model);
         assertEquals(2, format.code(), format::toString);
-        assertTrue(format.err().contains("unknown format 'png'; expected one of svg, html"), format::toString);
+        assertTrue(format.err().contains("'png' is not a format; it is one of svg, html"), format::toString);
 
         Files.writeString(dir.resolve("afile"), "mine");
         Cli.Result file = Cli.runIn(dir, "diagram", "-o", "afile", model);

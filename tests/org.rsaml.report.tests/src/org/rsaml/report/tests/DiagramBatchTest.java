@@ -20,6 +20,7 @@ import org.rsaml.diagram.DiagramFormat;
 import org.rsaml.diagram.DiagramView;
 import org.rsaml.diagram.TimingMode;
 import org.rsaml.report.DiagramBatch;
+import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
 import org.rsaml.tests.support.TestRepository;
 
@@ -85,9 +86,11 @@ class DiagramBatchTest {
         assertEquals(Optional.empty(), BOTH_VIEWS.clash(inputs, Path.of("out")), "models with different names do not clash");
         Heard heard = new Heard();
 
-        int failed = BOTH_VIEWS.draw(inputs, dir.resolve("out"), heard);
+        DiagramBatch.Outcome outcome = BOTH_VIEWS.draw(inputs, dir.resolve("out"), heard);
 
-        assertEquals(2, failed, "the unparsable and the missing model fail: " + heard.failures);
+        assertEquals(2, outcome.failed(), "the unparsable and the missing model fail: " + heard.failures);
+        assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "rsaml diagram exits with 2 when a model could not be drawn");
+        assertEquals("could not draw 2 models; see the errors above", outcome.failure(), "what the diagram goal fails the build with");
         assertTrue(heard.failures.stream().anyMatch(l -> l.startsWith("broken.rsaml:")), "the unparsable model is named: " + heard.failures);
         assertTrue(heard.failures.stream().anyMatch(l -> l.startsWith("missing.rsaml:")), "the missing model is named: " + heard.failures);
         List<String> names = heard.written.stream().map(p -> p.getFileName().toString()).sorted().toList();

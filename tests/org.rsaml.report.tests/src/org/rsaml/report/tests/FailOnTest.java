@@ -10,11 +10,21 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
+import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.Verdict;
+import org.rsaml.diagram.DiagramView;
+import org.rsaml.diagram.TimingMode;
 import org.rsaml.report.FindingFailOn;
+import org.rsaml.report.ModelBatch;
+import org.rsaml.report.ReportFormat;
+import org.rsaml.report.Report;
+import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
+import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Severity;
 
 /** The levels a user writes for {@code --fail-on} and {@code failOn}, and what each makes fail. */
@@ -65,5 +75,58 @@ class FailOnTest {
         assertEquals("'misses' is not a level; it is one of miss, not-analysed, never", e.getMessage(),
                 "a level that does not exist is refused, naming the levels there are");
         assertEquals("not-analysed", TimingFailOn.NOT_ANALYSED.toString(), "a level prints as the user writes it");
+    }
+
+    @Test
+    void aFailedRunNamesTheLevelThatFailedItAlikeForFindingsAndVerdicts() {
+        Path exp2 = Path.of("examples/exp2-defects.rsaml");
+        Report errors = ModelBatch.validate(TestRepository.root(), List.of(exp2), FindingFailOn.parse("error").threshold());
+        assertEquals("validation failed: " + errors.summary() + " (fail on error)", errors.failure(),
+                "what the validate goal fails the build with: the summary and the level, as the user wrote it");
+        Report warnings = ModelBatch.validate(TestRepository.root(), List.of(exp2), FindingFailOn.parse("warning").threshold());
+        assertTrue(warnings.failure().endsWith(" (fail on warning)"), "the level that failed the run: " + warnings.failure());
+        assertNull(ModelBatch.validate(TestRepository.root(), List.of(exp2), FindingFailOn.parse("never").threshold()).failure(),
+                "never: the findings fail nothing");
+        Report unreadable = ModelBatch.validate(TestRepository.root(), List.of(exp2, Path.of("examples/no-such-model.rsaml")), null);
+        assertEquals("could not read 1 model file; see the errors above", unreadable.failure(),
+                "a model that cannot be read fails the run whatever the level, and the failure says so");
+
+        TimingBatch.Listener quiet = new TimingBatch.Listener() {
+            @Override
+            public void analysed(String displayName, ArchitectureTiming timing) {
+            }
+
+            @Override
+            public void unanalysable(List<String> lines) {
+            }
+
+            @Override
+            public void timelineFailed(String line) {
+            }
+
+            @Override
+            public void timeline(Path file, String line) {
+            }
+
+            @Override
+            public void noTimeline(String displayName, String line) {
+            }
+        };
+        String missed = TimingBatch.run(TestRepository.root(), List.of(Path.of("examples/mobile-base-latency-missed.rsaml")), null,
+                TimingFailOn.parse("not-analysed"), quiet).verdictFailure();
+        assertTrue(missed != null && missed.endsWith(" (fail on not-analysed)"),
+                "the analyze goal's failure names its level as validate's does: " + missed);
+    }
+
+    @Test
+    void everyChoiceAUserWritesIsReadAndRefusedAlike() {
+        assertEquals(ReportFormat.SARIF, ReportFormat.parse(" SARIF "), "a report format, any case and blanks");
+        IllegalArgumentException format = assertThrows(IllegalArgumentException.class, () -> ReportFormat.parse(null));
+        assertEquals("'null' is not a report format; it is one of text, json, sarif, junit", format.getMessage(),
+                "no format is refused as levels are, naming the formats there are");
+        IllegalArgumentException view = assertThrows(IllegalArgumentException.class, () -> DiagramView.parse("deployment"));
+        assertEquals("'deployment' is not a view; it is one of architecture, mission", view.getMessage(),
+                "a diagram's view is refused in the same words");
+        assertEquals(TimingMode.OFF, TimingMode.parse("Off"), "a timing mode, any case");
     }
 }

@@ -88,4 +88,14 @@ class ReportFilesTest {
         assertEquals(complete.toString(), Files.readString(dir.resolve("out/rsaml.txt")),
                 "the other file is written, and complete although the run is quiet");
     }
+
+    @Test
+    void aBuildsReportFilesAreNamedByOneRuleAndReadBackAsTheirFormat() {
+        for (ReportFormat format : ReportFormat.values()) {
+            String name = format.fileName("rsaml-timing");
+            assertEquals(format, ReportFormat.ofFileName(name), name + " is read back as " + format);
+        }
+        assertEquals("TEST-rsaml.xml", ReportFormat.JUNIT.fileName("rsaml"), "JUnit reports carry the TEST- prefix CI servers look for");
+        assertEquals("rsaml.sarif", ReportFormat.SARIF.fileName("rsaml"), "other reports are the stem and the format's extension");
+    }
 }

@@ -94,7 +94,7 @@ class TimingBatchTest {
         assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "a model that cannot be read makes the exit code 2");
         assertEquals("cannot read or analyse examples/no-such-model.rsaml; see the errors above", outcome.inputFailure(),
                 "what the analyze goal fails the build with names the model that cannot be read");
-        assertEquals("a deadline or a latency requirement can be missed in examples/mobile-base-latency-missed.rsaml",
+        assertEquals("a deadline or a latency requirement can be missed in examples/mobile-base-latency-missed.rsaml (fail on miss)",
                 outcome.verdictFailure(), "what the analyze goal fails the build with names the model that can miss");
         assertNull(outcome.outputFailure(), "no timeline was asked for, none failed");
     }

@@ -37,7 +37,7 @@ final class AnalyzeCommand extends RsamlCommand {
 
     @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
             description = { "Format written to standard output: text or json (the verdicts and witnesses), sarif or junit",
-                    "(the timing rules' findings RSA-22 to RSA-25, as validate reports them) (default: ${DEFAULT-VALUE})." })
+                    "(the timing rules' findings, as validate reports them; 'rsaml rules' lists the rules) (default: ${DEFAULT-VALUE})." })
     Format format;
 
     @Option(names = "--timeline", paramLabel = "DIR",

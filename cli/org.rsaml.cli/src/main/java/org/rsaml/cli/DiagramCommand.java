@@ -8,7 +8,6 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.List;
 
-import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
 import org.rsaml.report.DiagramBatch;
 import org.rsaml.diagram.DiagramFormat;
@@ -65,7 +64,7 @@ final class DiagramCommand extends RsamlCommand {
         batch.refusal(inputs, directory, output).ifPresent(refusal -> {
             throw new CommandLine.ParameterException(spec.commandLine(), refusal);
         });
-        int failed = batch.draw(inputs, directory, new DiagramBatch.Listener() {
+        DiagramBatch.Outcome outcome = batch.draw(inputs, directory, new DiagramBatch.Listener() {
             @Override
             public void written(Path file) {
                 out.println(DiagramBatch.wrote(output.resolve(file.getFileName())));
@@ -79,8 +78,7 @@ final class DiagramCommand extends RsamlCommand {
                 }
             }
         });
-        int code = failed == 0 ? ExitCodes.OK : ExitCodes.INPUT_ERROR;
         out.flush();
-        return code;
+        return outcome.exitCode();
     }
 }

@@ -18,14 +18,12 @@ import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.rsaml.report.FileResult;
-import org.rsaml.report.FindingFailOn;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFiles;
 import org.rsaml.report.ReportFormat;
 import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.Finding;
-import org.rsaml.validation.Severity;
 
 /** What every RsaML goal shares: {@code skip}, the project's paths, fail-on levels, findings in the build log. */
 abstract class AbstractRsamlMojo extends AbstractMojo {
@@ -59,10 +57,13 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
         return ProjectPaths.relative(baseDirectory.toPath(), path);
     }
 
-    /** {@code error}, {@code warning} or {@code never} (then {@code null}: findings never fail the build). */
-    static Severity failOn(String parameter, String value) throws MojoExecutionException {
+    /**
+     * The value of a goal's {@code parameter} as the report bundle's {@code parser} reads it (a fail-on level, a report
+     * format); a value it refuses stops the build, named by the parameter.
+     */
+    static <T> T parameter(String parameter, String value, Function<String, T> parser) throws MojoExecutionException {
         try {
-            return FindingFailOn.parse(value).threshold();
+            return parser.apply(value);
         } catch (IllegalArgumentException e) {
             throw new MojoExecutionException(parameter + ": " + e.getMessage());
         }
@@ -96,11 +97,7 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
             if (name.isBlank()) {
                 continue;
             }
-            try {
-                result.add(ReportFormat.parse(name));
-            } catch (IllegalArgumentException e) {
-                throw new MojoExecutionException(parameter + ": " + e.getMessage());
-            }
+            result.add(parameter(parameter, name, ReportFormat::parse));
         }
         return result;
     }

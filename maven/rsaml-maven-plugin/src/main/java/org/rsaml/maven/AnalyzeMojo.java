@@ -28,7 +28,7 @@ import org.rsaml.report.TimingJson;
  * Analyses the timing of RsaML models as the generated runtime runs them (docs/timing.md): the
  * build fails when a deadline or a latency requirement can be missed (with {@code failOn} not-analysed,
  * also when anything is not analysed; {@link TimingFailOn} decides, as for rsaml analyze); the verdicts, with their
- * witnesses, are logged, and the timing rules' findings (RSA-22 to RSA-25) are written as reports
+ * witnesses, are logged, and the timing rules' findings ({@code rsaml rules} lists them) are written as reports
  * ({@code target/rsaml/rsaml-timing.sarif}, {@code TEST-rsaml-timing.xml}) by the writers validate uses;
  * {@code timingJson} names a file for the verdicts as JSON, as {@code rsaml analyze --format json} prints them.
  * A model that cannot be read or analysed fails the build whatever {@code failOnMiss} says, after
@@ -81,12 +81,7 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
     void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
         List<ReportFormat> reportFormats = reportFormats("formats", formats);
-        TimingFailOn level;
-        try {
-            level = TimingFailOn.parse(failOn);
-        } catch (IllegalArgumentException e) {
-            throw new MojoExecutionException("failOn: " + e.getMessage());
-        }
+        TimingFailOn level = parameter("failOn", failOn, TimingFailOn::parse);
         List<Path> shown = models.stream().map(model -> Path.of(relative(model.toPath()))).toList();
         TimingBatch.Request request = new TimingBatch.Request(timeline == null ? null : Path.of(relative(timeline.toPath())), level,
                 timingJson != null, !reportFormats.isEmpty());
@@ -125,8 +120,7 @@ public class AnalyzeMojo extends AbstractRsamlMojo {
             log.info("RsaML: " + TimingJson.Document.written(Path.of(relative(timingJson.toPath()))));
         }
         if (outcome.findings() != null) {
-            writeReports(outcome.findings(), reportFormats, reportDirectory, format -> format == ReportFormat.JUNIT ? "TEST-rsaml-timing.xml"
-                    : "rsaml-timing." + format.extension());
+            writeReports(outcome.findings(), reportFormats, reportDirectory, format -> format.fileName("rsaml-timing"));
             log.info("RsaML: " + outcome.findingsSummary(relative(reportDirectory.toPath())));
         }
         if (outcome.outputFailure() != null) {

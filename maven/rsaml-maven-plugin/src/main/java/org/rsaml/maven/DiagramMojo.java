@@ -61,21 +61,16 @@ public class DiagramMojo extends AbstractModelsMojo {
         Log log = getLog();
         List<DiagramView> diagramViews = new ArrayList<>();
         List<DiagramFormat> formats = new ArrayList<>();
-        TimingMode timingMode;
-        try {
-            timingMode = TimingMode.parse(timing);
-            for (String view : views) {
-                if (!view.isBlank()) {
-                    diagramViews.add(DiagramView.parse(view));
-                }
+        TimingMode timingMode = parameter("timing", timing, TimingMode::parse);
+        for (String view : views) {
+            if (!view.isBlank()) {
+                diagramViews.add(parameter("views", view, DiagramView::parse));
             }
-            for (String format : diagramFormats) {
-                if (!format.isBlank()) {
-                    formats.add(DiagramFormat.parse(format));
-                }
+        }
+        for (String format : diagramFormats) {
+            if (!format.isBlank()) {
+                formats.add(parameter("diagramFormats", format, DiagramFormat::parse));
             }
-        } catch (IllegalArgumentException e) {
-            throw new MojoExecutionException("diagram: " + e.getMessage());
         }
         List<Path> models = models();
         if (models.isEmpty()) {
@@ -87,7 +82,7 @@ public class DiagramMojo extends AbstractModelsMojo {
         if (refusal.isPresent()) {
             throw new MojoFailureException(refusal.get());
         }
-        int failed = batch.draw(inputs, outputDirectory.toPath(), new DiagramBatch.Listener() {
+        DiagramBatch.Outcome outcome = batch.draw(inputs, outputDirectory.toPath(), new DiagramBatch.Listener() {
             @Override
             public void written(Path file) {
                 log.info("RsaML: " + DiagramBatch.wrote(Path.of(relative(file))));
@@ -98,8 +93,8 @@ public class DiagramMojo extends AbstractModelsMojo {
                 lines.forEach(log::error);
             }
         });
-        if (failed > 0) {
-            throw new MojoFailureException("RsaML could not draw " + failed + " model" + (failed == 1 ? "" : "s") + "; see the errors above");
+        if (outcome.failure() != null) {
+            throw new MojoFailureException("RsaML " + outcome.failure());
         }
     }
 

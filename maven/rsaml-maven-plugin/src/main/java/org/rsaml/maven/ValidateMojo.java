@@ -14,10 +14,10 @@ import org.apache.maven.plugin.logging.Log;
 import org.apache.maven.plugins.annotations.LifecyclePhase;
 import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
+import org.rsaml.report.FindingFailOn;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFormat;
-import org.rsaml.validation.Severity;
 
 /**
  * Validates the project's RsaML models against every RsaML rule. Findings appear in the build log
@@ -48,7 +48,7 @@ public class ValidateMojo extends AbstractModelsMojo {
     @Override
     void run() throws MojoExecutionException, MojoFailureException {
         Log log = getLog();
-        Severity threshold = failOn("failOn", failOn);
+        FindingFailOn level = parameter("failOn", failOn, FindingFailOn::parse);
         List<ReportFormat> reportFormats = reportFormats("formats", formats);
         List<Path> models = models();
         if (models.isEmpty()) {
@@ -56,24 +56,14 @@ public class ValidateMojo extends AbstractModelsMojo {
         }
 
         Path base = baseDirectory.toPath();
-        Report report = ModelBatch.validate(base, models, threshold);
+        Report report = ModelBatch.validate(base, models, level.threshold());
         log(report);
-        writeReports(report, reportFormats, reportDirectory, ValidateMojo::fileName);
+        writeReports(report, reportFormats, reportDirectory, format -> format.fileName("rsaml"));
         log.info("RsaML: " + report.summary(reportFormats.isEmpty() ? null : relative(reportDirectory.toPath())));
 
-        if (report.unreadable() > 0) {
-            throw new MojoFailureException("RsaML could not read " + report.unreadable() + " model file"
-                    + (report.unreadable() == 1 ? "" : "s") + "; see the errors above");
+        String failure = report.failure();
+        if (failure != null) {
+            throw new MojoFailureException("RsaML " + failure);
         }
-        if (report.hasFailingFindings()) {
-            throw new MojoFailureException("RsaML validation failed: " + report.summary() + " (failOn: " + failOn + ")");
-        }
-    }
-
-    static String fileName(ReportFormat format) {
-        return switch (format) {
-            case JUNIT -> "TEST-rsaml.xml";
-            default -> "rsaml." + format.extension();
-        };
     }
 }

@@ -102,7 +102,7 @@ class AnalyzeMojoLevelsTest {
         Recorded log = new Recorded();
         MojoFailureException failure = assertThrows(MojoFailureException.class, () -> goal("missed.rsaml", true, "miss", log).execute(),
                 "a possible miss fails the build by default");
-        assertEquals("RsaML timing: a deadline or a latency requirement can be missed in missed.rsaml", failure.getMessage(),
+        assertEquals("RsaML timing: a deadline or a latency requirement can be missed in missed.rsaml (fail on miss)", failure.getMessage(),
                 "the failure names the model");
         assertTrue(log.at("ERROR").stream().anyMatch(l -> l.contains("verdict: MISSES")),
                 () -> "the miss is logged as an error:\n" + String.join("\n", log.lines));
@@ -121,7 +121,7 @@ class AnalyzeMojoLevelsTest {
         Recorded strict = new Recorded();
         MojoFailureException failure = assertThrows(MojoFailureException.class,
                 () -> goal("llf.rsaml", true, "not-analysed", strict).execute(), "failOn not-analysed fails a model not proven");
-        assertEquals("RsaML timing: the timing is not proven (fail on not-analysed) in llf.rsaml (not analysed)", failure.getMessage(),
+        assertEquals("RsaML timing: the timing is not proven in llf.rsaml (not analysed) (fail on not-analysed)", failure.getMessage(),
                 "the failure says why and names the model");
         assertTrue(strict.at("ERROR").stream().anyMatch(l -> l.contains("llf.rsaml: timing not analysed")),
                 () -> "not analysed is an error under failOn not-analysed:\n" + String.join("\n", strict.lines));
