@@ -107,7 +107,7 @@ class SiriusDiagramsTest {
         return dir;
     }
 
-    /** What the workbench did while the diagrams were drawn (jobs that ran, problems logged), told when a check fails. */
+    /** What the workbench does (jobs that ran, problems logged); a failed check tells what it did while its example was drawn. */
     private static final List<String> HAPPENINGS = java.util.Collections.synchronizedList(new ArrayList<>());
 
     private static final ILogListener LOGGED = (status, plugin) -> {
@@ -269,7 +269,10 @@ class SiriusDiagramsTest {
         return result;
     }
 
-    /** What drawing an example's two diagrams showed: the decorations of both and the geometry of each. */
+    /**
+     * What drawing an example's two diagrams showed: the decorations of both and the geometry of each, and what the
+     * workbench did meanwhile (from "drawing EXAMPLE" on; not what it did for the examples drawn before).
+     */
     private record Drawn(List<String> decorations, List<DiagramGeometry> geometries, List<String> happenings) {
     }
 
@@ -283,6 +286,7 @@ class SiriusDiagramsTest {
         }
         Architecture architecture = project.architecture(example);
         String base = example.replace(".rsaml", "");
+        int from = HAPPENINGS.size();
         HAPPENINGS.add("drawing " + example);
         List<String> shown = new ArrayList<>();
         List<DiagramGeometry> geometries = new ArrayList<>();
@@ -314,7 +318,11 @@ class SiriusDiagramsTest {
                 project.delete(diagram);
             }
         }
-        done = new Drawn(shown, geometries, List.copyOf(HAPPENINGS));
+        List<String> happenings;
+        synchronized (HAPPENINGS) {
+            happenings = List.copyOf(HAPPENINGS.subList(from, HAPPENINGS.size()));
+        }
+        done = new Drawn(shown, geometries, happenings);
         DRAWN.put(example, done);
         return done;
     }

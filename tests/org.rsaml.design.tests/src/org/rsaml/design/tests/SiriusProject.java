@@ -119,8 +119,9 @@ final class SiriusProject {
 
     /**
      * Whether the workspace's build of the models just copied in (RsaML's builder marks their findings) is still to come
-     * or running: the diagrams are drawn after it, as a user opens them once the build is done. A build running while
-     * the first diagram was drawn left that diagram unarranged on a fresh workspace.
+     * or running: the project is ready once it is done, as for a user who opens diagrams after the build, so that no
+     * test step runs under it. (The unarranged first diagram once put down to this build came from Sirius's background
+     * save; see the class comment.)
      */
     private static boolean building() {
         return Job.getJobManager().find(org.eclipse.core.resources.ResourcesPlugin.FAMILY_AUTO_BUILD).length > 0
