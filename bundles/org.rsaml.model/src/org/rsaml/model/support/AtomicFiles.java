@@ -18,13 +18,17 @@ import java.nio.file.NotDirectoryException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFileAttributeView;
+import java.nio.file.attribute.PosixFilePermission;
+import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
 
 /**
- * The one way RsaML writes a file it produces (a report, a diagram, a timeline): into a hidden temporary file beside
- * it, then moved over it, so a reader never sees half a file and a failure leaves the old one. The file gets the
- * permissions any program's output gets (those the umask allows; {@code Files.createTempFile} would make it
- * owner-only), since CI often reads it as another user.
+ * The one way RsaML writes a file it produces (a report, a diagram, a timeline, a converted model): into a hidden
+ * temporary file beside it, then moved over it, so a reader never sees half a file and a failure leaves the old one. A
+ * new file gets the permissions any program's output gets (those the umask allows; {@code Files.createTempFile} would
+ * make it owner-only), since CI often reads it as another user; a file replaced keeps its own, and one reached through
+ * a symbolic link is replaced where the link points, the link kept.
  */
 public final class AtomicFiles {
 
@@ -49,15 +53,27 @@ public final class AtomicFiles {
      */
     public static void write(Path file, Content content) throws IOException {
         Path target = file.toAbsolutePath();
-        Path dir = target.getParent();
-        Files.createDirectories(dir);
+        Files.createDirectories(target.getParent());
         if (Files.isDirectory(target)) {
             throw new FileSystemException(target.toString(), null, "it is a directory");
         }
+        // A file that is there already is replaced where it really is (through a symbolic link, the link stays)
+        // and keeps its own permissions.
+        Set<PosixFilePermission> permissions = null;
+        if (Files.exists(target)) {
+            target = target.toRealPath();
+            if (Files.getFileStore(target).supportsFileAttributeView(PosixFileAttributeView.class)) {
+                permissions = Files.getPosixFilePermissions(target);
+            }
+        }
+        Path dir = target.getParent();
         Path temp = newTemp(dir, target.getFileName().toString());
         try {
             try (Writer out = Files.newBufferedWriter(temp, StandardCharsets.UTF_8)) {
                 content.writeTo(out);
+            }
+            if (permissions != null) {
+                Files.setPosixFilePermissions(temp, permissions);
             }
             try {
                 Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);

@@ -6,6 +6,7 @@ package org.rsaml.model.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.FileSystemException;
@@ -59,5 +60,25 @@ class AtomicFilesTest {
         assertEquals("it is a directory", AtomicFiles.reason(e, taken), "the reason, without repeating the file");
         assertEquals("permission denied (/x/y)", AtomicFiles.reason(new java.nio.file.AccessDeniedException("/x/y"), taken),
                 "another file is named");
+    }
+
+    @Test
+    void aFileReachedThroughALinkIsReplacedWhereItIsAndKeepsItsPermissions(@TempDir Path dir) throws Exception {
+        Path real = Files.writeString(Files.createDirectories(dir.resolve("shared")).resolve("robot.rsa"), "old");
+        Path link = Files.createSymbolicLink(dir.resolve("robot.rsa"), Path.of("shared/robot.rsa"));
+        boolean posix = Files.getFileStore(real).supportsFileAttributeView("posix");
+        if (posix) {
+            Files.setPosixFilePermissions(real, java.nio.file.attribute.PosixFilePermissions.fromString("rw-rw----"));
+        }
+        AtomicFiles.writeString(link, "new");
+        assertTrue(Files.isSymbolicLink(link), "the link is still a link");
+        assertEquals("new", Files.readString(real), "the file the link points at is replaced");
+        if (posix) {
+            assertEquals("rw-rw----", java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(real)),
+                    "a replaced file keeps its own permissions (here group-writable)");
+        }
+        try (Stream<Path> files = Files.list(real.getParent())) {
+            assertEquals(List.of(real), files.toList(), "no temporary file is left beside it");
+        }
     }
 }
