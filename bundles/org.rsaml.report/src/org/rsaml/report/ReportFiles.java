@@ -53,6 +53,23 @@ public final class ReportFiles {
     }
 
     /**
+     * The exit code of a run that wrote {@code report} to its report files with {@code failures} ({@link #writeAll}'s
+     * lines): 2 when a report file could not be written, else the report's own.
+     */
+    public static int exitCode(Report report, List<String> failures) {
+        return failures.isEmpty() ? report.exitCode() : ExitCodes.INPUT_ERROR;
+    }
+
+    /**
+     * Why a run fails when report files could not be written ({@code cannot write 2 reports; see the errors above}),
+     * or {@code null} when every one was.
+     */
+    public static String failure(List<String> failures) {
+        return failures.isEmpty() ? null
+                : "cannot write " + (failures.size() == 1 ? "a report" : failures.size() + " reports") + "; see the errors above";
+    }
+
+    /**
      * Why a file operation failed, as the operating system says it ({@code permission denied},
      * {@code not a directory}, ...), naming the file when it is not {@code target}.
      */

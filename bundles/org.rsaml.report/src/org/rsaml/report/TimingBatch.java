@@ -113,10 +113,21 @@ public final class TimingBatch {
             if (failing.isEmpty()) {
                 return null;
             }
-            return (failOn == TimingFailOn.MISS ? "a deadline or a latency requirement can be missed in "
-                    : "the timing is not proven in ") + String.join(", ", failing) + Report.failingOn(failOn.label());
+            List<String> missed = failing.stream().filter(m -> !m.endsWith(NOT_ANALYSED)).toList();
+            List<String> unproven = failing.stream().filter(m -> m.endsWith(NOT_ANALYSED)).toList();
+            List<String> parts = new java.util.ArrayList<>();
+            if (!missed.isEmpty()) {
+                parts.add("a deadline or a latency requirement can be missed in " + String.join(", ", missed));
+            }
+            if (!unproven.isEmpty()) {
+                parts.add("the timing is not proven in " + String.join(", ", unproven));
+            }
+            return String.join("; ", parts) + Report.failingOn(failOn.label());
         }
     }
+
+    /** How {@link Outcome#failing()} marks a model that fails because something in it is not analysed. */
+    private static final String NOT_ANALYSED = " (not analysed)";
 
     private TimingBatch() {
     }
@@ -183,7 +194,7 @@ public final class TimingBatch {
                 }
             }
             if (request.failOn().fails(timing.verdict())) {
-                failing.add(input.displayName() + (timing.verdict() == Verdict.MISSES ? "" : " (not analysed)"));
+                failing.add(input.displayName() + (timing.verdict() == Verdict.MISSES ? "" : NOT_ANALYSED));
             }
         }
         Report findings = request.findings() ? new Report(Rules.timing(), results, request.failOn().findingThreshold()) : null;

@@ -20,6 +20,7 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelBatch;
 import org.rsaml.report.Report;
 import org.rsaml.report.ReportFiles;
@@ -80,6 +81,10 @@ class ReportFilesTest {
 
         assertEquals(List.of("taken.sarif: error: cannot write the sarif report: it is a directory"), failures,
                 "the file that cannot be written is named, with the reason, as the user named it");
+        assertEquals(ExitCodes.INPUT_ERROR, ReportFiles.exitCode(report, failures), "a report file not written makes the exit code 2");
+        assertEquals("cannot write a report; see the errors above", ReportFiles.failure(failures), "what a goal fails the build with");
+        assertEquals(report.exitCode(), ReportFiles.exitCode(report, List.of()), "every file written: the report's own exit code");
+        assertEquals(null, ReportFiles.failure(List.of()), "every file written: no failure");
         StringWriter complete = new StringWriter();
         ReportFormat.TEXT.write(report, complete, OPTIONS);
         StringWriter shortened = new StringWriter();

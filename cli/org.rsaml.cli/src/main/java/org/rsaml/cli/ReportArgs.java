@@ -12,7 +12,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.rsaml.report.ExitCodes;
 import org.rsaml.report.FindingFailOn;
 import org.rsaml.report.FileResult;
 import org.rsaml.report.Report;
@@ -112,7 +111,7 @@ final class ReportArgs {
         out.flush();
         List<String> failures = ReportFiles.writeAll(report, files, cli.workingDirectory, options);
         failures.forEach(err::println);
-        int code = failures.isEmpty() ? report.exitCode() : ExitCodes.INPUT_ERROR;
+        int code = ReportFiles.exitCode(report, failures);
         err.flush();
         return code;
     }

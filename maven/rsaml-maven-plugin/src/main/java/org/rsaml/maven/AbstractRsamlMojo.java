@@ -111,10 +111,10 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
         }
         List<String> failures = ReportFiles.writeAll(report, files, baseDirectory.toPath(),
                 new ReportOptions(pluginVersion, baseDirectory.toPath(), false));
-        if (!failures.isEmpty()) {
-            failures.forEach(getLog()::error);
-            throw new MojoExecutionException("Cannot write " + (failures.size() == 1 ? "an RsaML report" : failures.size() + " RsaML reports")
-                    + "; see the errors above");
+        failures.forEach(getLog()::error);
+        String failure = ReportFiles.failure(failures);
+        if (failure != null) {
+            throw new MojoExecutionException("RsaML: " + failure);
         }
     }
 }
