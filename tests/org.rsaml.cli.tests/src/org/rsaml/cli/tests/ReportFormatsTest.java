@@ -134,9 +134,9 @@ class ReportFormatsTest {
                     () -> catalogued.id() + "'s default level is its severity in the catalogue");
         }
 
-        // What the models with findings state: exp2's defects and the missed latency requirement.
+        // What the examples' expect comments state, in the order they are checked.
         List<String> expected = new ArrayList<>();
-        for (String model : List.of("examples/exp2-defects.rsaml", "examples/mobile-base-latency-missed.rsaml")) {
+        for (String model : ValidateCommandTest.exampleModels()) {
             ExpectedFinding.of(Cli.ROOT.resolve(model)).forEach(e -> expected.add(model + " " + e.ruleId() + "@" + e.line() + ":" + e.column()));
         }
         JsonArray results = run.getAsJsonArray("results");

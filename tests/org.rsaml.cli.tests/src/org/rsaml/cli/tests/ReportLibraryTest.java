@@ -44,14 +44,14 @@ class ReportLibraryTest {
             }
             return RsamlModelValidator.validate(file, shown);
         });
-        assertEquals(3, report.results().size());
-        assertTrue(report.results().get(0).readable());
+        assertEquals(EXAMPLES.size(), report.results().size(), "one result per model named, the failing one included");
+        assertTrue(report.results().get(0).readable(), "the model before the failing one is checked");
         FileResult failed = report.results().get(1);
-        assertFalse(failed.readable());
+        assertFalse(failed.readable(), "the model whose check failed has no findings, an error");
         assertEquals("examples/exp2-defects.rsaml: error: internal error while checking this file (a defect in RsaML, please report it): "
-                + "java.lang.IllegalStateException: boom", failed.error().toString());
-        assertTrue(report.results().get(2).readable());
-        assertEquals(2, report.exitCode());
+                + "java.lang.IllegalStateException: boom", failed.error().toString(), "the error names the file and says it is RsaML's defect");
+        assertTrue(report.results().get(2).readable(), "the model after the failing one is still checked");
+        assertEquals(2, report.exitCode(), "a file that could not be checked makes the exit code 2");
         assertWellFormed(report);
     }
 
@@ -64,12 +64,12 @@ class ReportLibraryTest {
         Report report = ModelBatch.run(Cli.ROOT, EXAMPLES.subList(0, 1), Severity.WARNING, List.of(latency),
                 (file, shown) -> List.of(new Finding(latency, Severity.WARNING, "chain a -> b takes 12 ms, deadline 10 ms",
                         "robot/a", "//@layers.0", shown, 3, 5)));
-        assertEquals(1, report.exitCode());
+        assertEquals(1, report.exitCode(), "a warning at or above the threshold makes the exit code 1");
         String text = write(ReportFormat.TEXT, report);
         assertEquals("examples/exp1-hybrid.rsaml:3:5: warning RSA-T1: chain a -> b takes 12 ms, deadline 10 ms\n"
-                + "1 file checked: 0 errors, 1 warning\n", text);
-        assertTrue(write(ReportFormat.SARIF, report).contains("\"id\": \"RSA-T1\""));
-        assertTrue(write(ReportFormat.JUNIT, report).contains("RSA-T1 end-to-end-latency"));
+                + "1 file checked: 0 errors, 1 warning\n", text, "the text report words the other check's finding as validate's");
+        assertTrue(write(ReportFormat.SARIF, report).contains("\"id\": \"RSA-T1\""), "SARIF lists the other check's rule");
+        assertTrue(write(ReportFormat.JUNIT, report).contains("RSA-T1 end-to-end-latency"), "JUnit has a test for the other check's rule");
         assertWellFormed(report);
     }
 
@@ -82,7 +82,7 @@ class ReportLibraryTest {
     /** JSON and SARIF parse (SARIF against its schema), JUnit XML parses. */
     static void assertWellFormed(Report report) throws Exception {
         JsonParser.parseString(write(ReportFormat.JSON, report));
-        assertEquals(Set.of(), ReportFormatsTest.sarifProblems(write(ReportFormat.SARIF, report)));
+        assertEquals(Set.of(), ReportFormatsTest.sarifProblems(write(ReportFormat.SARIF, report)), "the SARIF report conforms to the schema");
         DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(new InputSource(new StringReader(write(ReportFormat.JUNIT, report))));
     }
 }

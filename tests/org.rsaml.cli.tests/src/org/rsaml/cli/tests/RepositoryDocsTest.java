@@ -53,7 +53,8 @@ class RepositoryDocsTest {
 
     /**
      * Every entry at the top of the repository (files and folders; what .gitignore leaves out apart) is named at the
-     * start of a line of the structure, alone or in a list ({@code LICENSE, NOTICE}, {@code .ci/run}).
+     * start of a line of the structure, alone or in a list ({@code LICENSE, NOTICE}, {@code .ci/run}), and every entry
+     * named there exists.
      */
     @Test
     void theReadmeStructureNamesEveryTopLevelEntry() throws Exception {
@@ -61,13 +62,18 @@ class RepositoryDocsTest {
         int open = readme.indexOf("```", readme.indexOf("## Repository structure"));
         String block = readme.substring(open + 3, readme.indexOf("```", open + 3));
         Set<String> named = new TreeSet<>();
+        List<String> absent = new ArrayList<>();
         for (String line : block.split("\n")) {
             if (!line.isBlank() && !line.startsWith(" ")) {
                 for (String entry : line.split(" {2,}")[0].split(",")) {
                     named.add(entry.strip().split("/")[0]);
+                    if (!Files.exists(ROOT.resolve(entry.strip()))) {
+                        absent.add(entry.strip());
+                    }
                 }
             }
         }
+        assertEquals(List.of(), absent, "entries README's repository structure names at the top that the repository does not have");
         Set<String> ignored = new TreeSet<>(Set.of(".git"));
         for (String pattern : Files.readAllLines(ROOT.resolve(".gitignore"))) {
             String name = pattern.strip().replaceAll("^/|/$", "");
