@@ -120,7 +120,8 @@ public final class TimingText {
         out.append("latency requirement '").append(l.name()).append("' from ").append(l.from()).append(" to ").append(l.to()).append(": ")
                 .append(l.dataAge() ? "data age" : "reaction time").append(" at most ").append(RsamlTimes.text(l.maxNs()))
                 .append(l.via().isEmpty() ? "" : ", the paths through " + String.join(", then ", l.via())).append('\n');
-        out.append("  verdict: ").append(word(l.verdict())).append(": ").append(l.explanation()).append('\n');
+        String said = word(l.verdict()) + ": ";
+        out.append("  verdict: ").append(l.explanation().startsWith(said) ? "" : said).append(l.explanation()).append('\n');
         if (!l.worstPath().isEmpty()) {
             out.append("  worst path (").append(l.paths()).append(l.paths() == 1 ? " path" : " paths").append(" examined; reaction time ")
                     .append(l.reactionNs() < 0 ? "-" : RsamlTimes.text(l.reactionNs())).append(", data age ")

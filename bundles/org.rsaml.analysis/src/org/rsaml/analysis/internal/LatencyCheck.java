@@ -4,10 +4,13 @@
  */
 package org.rsaml.analysis.internal;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
 import org.eclipse.emf.ecore.EObject;
+import org.rsaml.analysis.Hop;
+import org.rsaml.analysis.PathBound;
 import org.rsaml.analysis.LatencyResult;
 import org.rsaml.analysis.Verdict;
 import org.rsaml.analysis.internal.Latencies.Stage;
@@ -72,42 +75,77 @@ final class LatencyCheck {
         }
         PathSearch search = new PathSearch(plan, stages, age, via, requirement.getTarget() instanceof Actuator a ? a : null,
                 requirement.getTarget() instanceof EntryPort e ? e : null);
+        LongestPaths dp = new LongestPaths(search, stages, age, via);
+        List<Runnable> roots = new ArrayList<>();
         if (requirement.getSource() instanceof Sensor s) {
             for (PlannedModule m : plan.modules()) {
                 if (m.module().getSensors().contains(s) && search.reaches(m)) {
-                    Stage st = stages.get(m);
-                    if (st.hop() != null && m.reactive() && m.releases().isEmpty()) {
-                        st = new Stage(null, 0, m.qualifiedName() + " reacts to data only: reading sensor " + from
-                                + " does not start it, so nothing bounds when it reads the sensor");
-                    }
+                    Stage st0 = stages.get(m);
+                    Stage st = st0.hop() != null && m.reactive() && m.releases().isEmpty()
+                            ? new Stage(null, 0, m.qualifiedName() + " reacts to data only: reading sensor " + from
+                                    + " does not start it, so nothing bounds when it reads the sensor")
+                            : st0;
                     search.enter(m, st);
+                    roots.add(() -> dp.enter(m, st));
                 }
             }
         } else if (requirement.getSource() instanceof OutputPort p && plan.port(p) != null) {
             PlannedPort port = plan.port(p);
             search.start(port.module(), port);
+            roots.add(() -> dp.start(port.module(), port));
         } else {
             return fail(name, from, to, maxNs, age, "the source " + from + " is neither a sensor nor an output port of a module: choose one");
         }
+        int paths = search.paths();
+        long worstReaction = search.worstReaction();
+        long worstAge = search.worstAge();
+        List<Hop> worstPath = search.worstPath();
+        List<PathBound> listed = search.longestFirst();
+        boolean cut = search.cut();
+        boolean exact = true;
+        String mayBeUnbounded = null;
+        if (cut) {
+            // too many paths to follow each: the worst bound by dynamic programming, exact where no cycle of stages with a bound
+            roots.forEach(Runnable::run);
+            exact = !dp.cyclic();
+            if (exact) {
+                worstReaction = dp.worstReaction();
+                worstAge = dp.worstAge();
+                PathBound worst = dp.worst();
+                worstPath = worst == null ? List.of() : worst.hops();
+                if (worst != null && !listed.contains(worst)) {
+                    List<PathBound> more = new ArrayList<>(listed);
+                    more.add(0, worst);
+                    listed = more.subList(0, Math.min(more.size(), LatencyResult.MAX_LISTED_PATHS));
+                }
+                paths = (int) Math.min(Integer.MAX_VALUE, Math.max(paths, dp.bounded()));
+                mayBeUnbounded = dp.mayPassUnbounded();
+            }
+        }
         Verdict verdict;
         String explanation;
-        int paths = search.paths();
-        long bound = age ? search.worstAge() : search.worstReaction();
+        long bound = age ? worstAge : worstReaction;
         String what = age ? "maximum data age" : "worst-case reaction time";
-        if (paths > PathSearch.MAX_PATHS) {
-            verdict = Verdict.NOT_ANALYSED;
-            explanation = "not analysed: more than " + PathSearch.MAX_PATHS + " " + pathWord + "s from " + from + " to " + to;
-        } else if (paths == 0) {
-            verdict = Verdict.MISSES;
-            explanation = through.isEmpty()
-                    ? "no path of connections leads from " + from + " to " + to + ": the data never arrives"
-                    : "no " + pathWord + " leads from " + from + " to " + to + ": the data never arrives that way";
-        } else if (bound > maxNs) {
+        String stopped = "following each " + pathWord + " from " + from + " to " + to + " stopped after " + PathSearch.MAX_STEPS
+                + " steps (" + search.paths() + " reached the target)";
+        if (bound > maxNs) {
             verdict = Verdict.MISSES;
             explanation = "the " + what + " can reach " + RsamlTimes.text(bound) + ", more than " + RsamlTimes.text(maxNs);
         } else if (search.unbounded() != null) {
             verdict = Verdict.NOT_ANALYSED;
             explanation = "not analysed: " + search.unbounded();
+        } else if (!exact) {
+            verdict = Verdict.NOT_ANALYSED;
+            explanation = "not analysed: " + stopped + ", and the paths pass a cycle of modules, where the longest is only found"
+                    + " by following each: break the cycle, or name the path with via";
+        } else if (mayBeUnbounded != null) {
+            verdict = Verdict.NOT_ANALYSED;
+            explanation = "not analysed: " + mayBeUnbounded + ", and paths from " + from + " to " + to + " may pass it; " + stopped;
+        } else if (paths == 0 || bound < 0) {
+            verdict = Verdict.MISSES;
+            explanation = through.isEmpty()
+                    ? "no path of connections leads from " + from + " to " + to + ": the data never arrives"
+                    : "no " + pathWord + " leads from " + from + " to " + to + ": the data never arrives that way";
         } else {
             verdict = Verdict.MEETS;
             explanation = "the " + what + " is at most " + RsamlTimes.text(bound) + " over " + paths + " "
@@ -115,8 +153,8 @@ final class LatencyCheck {
                             : (paths == 1 ? "path" : "paths") + " through " + String.join(", then ", through))
                     + ", within " + RsamlTimes.text(maxNs);
         }
-        return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, search.worstReaction(), search.worstAge(),
-                search.worstPath(), Math.min(paths, PathSearch.MAX_PATHS), explanation, through, search.longestFirst());
+        return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, worstReaction, worstAge,
+                worstPath, paths, explanation, through, listed);
     }
 
     private LatencyResult fail(String name, String from, String to, long maxNs, boolean age, String why) {

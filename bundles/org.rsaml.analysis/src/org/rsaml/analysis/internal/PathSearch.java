@@ -34,11 +34,13 @@ import org.rsaml.model.support.RsamlLabels;
  * no recursion), only through the modules from which its target can be reached: each path's bound is
  * the sum of its stages (and of the links it crosses between hosts), recorded when the path reaches the
  * target through the requirement's {@code via} elements; the worst, and the longest paths for the list.
+ * The walk is bounded by the steps it takes ({@link #MAX_STEPS}), dead ends included: past them it stops
+ * ({@link #cut()}) and the worst bound is taken from {@link LongestPaths} where that is exact.
  */
 final class PathSearch {
 
-    /** Paths examined per requirement before giving up (said so, never a silent pass). */
-    static final int MAX_PATHS = 100_000;
+    /** Steps of the walk per requirement before it stops (said so, never a silent pass). */
+    static final int MAX_STEPS = 1_000_000;
 
     private final ExecutionPlan plan;
     private final Map<PlannedModule, Stage> stages;
@@ -54,9 +56,13 @@ final class PathSearch {
     private final Comparator<PathBound> longest;
     /** The longest paths found so far (the shortest of them first, to be replaced). */
     private final PriorityQueue<PathBound> listed;
-    /** The modules from which the target can be reached: the search goes nowhere else. */
-    private final Set<PlannedModule> reaching;
+    /**
+     * The modules from which the target can be reached, each with the fewest steps it takes: the search goes
+     * nowhere else, and tries the nearest first (so that a walk cut short has found paths to report).
+     */
+    private final Map<PlannedModule, Integer> reaching;
     private int paths;
+    private int work;
     private long worstReaction = -1;
     private long worstAge = -1;
     private List<Hop> worstPath = List.of();
@@ -85,12 +91,22 @@ final class PathSearch {
 
     /** Whether the target can be reached from module m. */
     boolean reaches(PlannedModule m) {
-        return reaching.contains(m);
+        return reaching.containsKey(m);
     }
 
-    /** How many paths reached the target (beyond {@link #MAX_PATHS}: the search stopped). */
+    /** How many paths reached the target (all of them unless {@link #cut()}). */
     int paths() {
         return paths;
+    }
+
+    /** Whether the walk stopped after {@link #MAX_STEPS} steps, before following every path. */
+    boolean cut() {
+        return work > MAX_STEPS;
+    }
+
+    /** Whether module m drives the requirement's actuator. */
+    boolean drives(PlannedModule m) {
+        return actuator != null && m.module().getActuators().contains(actuator);
     }
 
     long worstReaction() {
@@ -129,7 +145,7 @@ final class PathSearch {
      * port), whether it arrives at the target entry port, and where the path goes on: into a
      * module's stage ({@code enter}), or past an inhibitor to the inhibited port ({@code inhibitor}).
      */
-    private record Step(List<EObject> adds, boolean arrives, PlannedModule next, LinkPlan inhibitor) {
+    record Step(List<EObject> adds, boolean arrives, PlannedModule next, LinkPlan inhibitor) {
     }
 
     /** A module on the current path, with the steps out of it not taken yet. */
@@ -181,7 +197,7 @@ final class PathSearch {
      * actuator; link: the hops of the link crossed to reach m (0 or 1, already on the path).
      */
     private void push(PlannedModule m, Stage st, int trailBefore, int link) {
-        if (paths > MAX_PATHS || !visited.add(m)) {
+        if (cut() || !visited.add(m)) {
             trail.subList(trailBefore, trail.size()).clear();
             hops.subList(hops.size() - link, hops.size()).clear();
             return;
@@ -196,7 +212,7 @@ final class PathSearch {
         } else {
             hops.add(st.hop());
         }
-        if (actuator != null && m.module().getActuators().contains(actuator)) {
+        if (drives(m)) {
             record(st.periodNs());
         }
         stack.push(new Frame(m, st.periodNs(), steps(m, null), trailBefore, before, link + (st.hop() != null ? 1 : 0), false));
@@ -205,7 +221,7 @@ final class PathSearch {
     private void search() {
         while (!stack.isEmpty()) {
             Frame f = stack.peek();
-            if (f.next == f.steps.size() || paths > MAX_PATHS) {
+            if (f.next == f.steps.size() || ++work > MAX_STEPS) {
                 stack.pop();
                 hops.subList(hops.size() - f.hop, hops.size()).clear();
                 pathUnbounded = f.unboundedBefore;
@@ -225,16 +241,15 @@ final class PathSearch {
             if (step.arrives()) {
                 record(f.period);
             }
-            if (next == null || visited.contains(next) || !reaching.contains(next)) {
+            if (next == null || visited.contains(next) || !reaching.containsKey(next)) {
                 trail.subList(before, trail.size()).clear();
                 hops.subList(hops.size() - link, hops.size()).clear();
             } else if (step.inhibitor() == null) {
                 push(next, stages.get(next), before, link);
-            } else if (paths <= MAX_PATHS) {
+            } else if (!cut()) {
                 LinkPlan inhibitor = step.inhibitor();
                 visited.add(next);
-                hops.add(new Hop(inhibitor.qualifiedName(), next.module(), "inhibits " + inhibitor.target().qualifiedName()
-                        + " from the trigger's message on, at once", 0, 0));
+                hops.add(inhibits(inhibitor, next));
                 stack.push(new Frame(next, 0, steps(next, inhibitor.target()), before, pathUnbounded, link + 1, false));
             } else {
                 trail.subList(before, trail.size()).clear();
@@ -250,7 +265,7 @@ final class PathSearch {
      * an inhibitor's, at once to the inhibited output port, whose module then sends nothing more
      * there, while what it sent before still travels on.
      */
-    private List<Step> steps(PlannedModule m, PlannedPort only) {
+    List<Step> steps(PlannedModule m, PlannedPort only) {
         List<Step> steps = new ArrayList<>();
         for (PlannedPort out : m.outputs()) {
             if (only != null && out != only) {
@@ -269,6 +284,7 @@ final class PathSearch {
                 }
             }
         }
+        steps.sort(Comparator.comparingInt((Step s) -> s.arrives() ? -1 : reaching.getOrDefault(s.next(), Integer.MAX_VALUE)));
         return steps;
     }
 
@@ -277,7 +293,7 @@ final class PathSearch {
      * hosts: the link latencies of both processors (0 each when not given), as a hop of its own;
      * null on one host or when neither processor gives a latency.
      */
-    private static Hop crossing(PlannedModule a, PlannedModule b) {
+    static Hop crossing(PlannedModule a, PlannedModule b) {
         String from = RsamlLabels.host(a.processor());
         String to = RsamlLabels.host(b.processor());
         if (from.equals(to)) {
@@ -292,6 +308,12 @@ final class PathSearch {
                 + " and " + processorName(b.processor()) + ")", ns, 0);
     }
 
+    /** The hop of an inhibitor whose trigger's message blocks its target at once. */
+    static Hop inhibits(LinkPlan inhibitor, PlannedModule target) {
+        return new Hop(inhibitor.qualifiedName(), target.module(), "inhibits " + inhibitor.target().qualifiedName()
+                + " from the trigger's message on, at once", 0, 0);
+    }
+
     private static long linkNs(org.rsaml.model.Processor p) {
         return p == null ? 0 : PlanTimes.nanos(p.getLinkLatency(), p);
     }
@@ -304,8 +326,8 @@ final class PathSearch {
         return p == null ? "the default processor" : "processor " + RsamlLabels.name(p);
     }
 
-    /** The modules with a path of flows to the target (the target's own module included). */
-    private Set<PlannedModule> reaching() {
+    /** The modules with a path of flows to the target (the target's own module included), with its fewest steps. */
+    private Map<PlannedModule, Integer> reaching() {
         Map<PlannedModule, List<PlannedModule>> upstream = new HashMap<>();
         List<PlannedModule> todo = new ArrayList<>();
         for (Flow f : plan.flows()) {
@@ -327,14 +349,22 @@ final class PathSearch {
                 }
             }
         }
-        Set<PlannedModule> seen = new HashSet<>();
-        while (!todo.isEmpty()) {
-            PlannedModule m = todo.remove(todo.size() - 1);
-            if (seen.add(m)) {
-                todo.addAll(upstream.getOrDefault(m, List.of()));
+        Map<PlannedModule, Integer> distance = new HashMap<>();
+        ArrayDeque<PlannedModule> queue = new ArrayDeque<>();
+        for (PlannedModule m : todo) {
+            if (distance.putIfAbsent(m, 0) == null) {
+                queue.add(m);
             }
         }
-        return seen;
+        while (!queue.isEmpty()) {
+            PlannedModule m = queue.poll();
+            for (PlannedModule u : upstream.getOrDefault(m, List.of())) {
+                if (distance.putIfAbsent(u, distance.get(m) + 1) == null) {
+                    queue.add(u);
+                }
+            }
+        }
+        return distance;
     }
 
     private void record(long lastPeriod) {
