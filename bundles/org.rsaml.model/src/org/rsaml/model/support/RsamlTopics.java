@@ -7,8 +7,12 @@ package org.rsaml.model.support;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
+import java.util.HashMap;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
 
@@ -88,40 +92,145 @@ public final class RsamlTopics {
     /**
      * What makes the topic this port names unusable (completing "output port 'x' of module 'm' "),
      * or null: it is not a valid ROS 2 name, a port connected to it names another topic, or a port
-     * it is not connected to names the same topic.
+     * it is not connected to names the same topic. One port's answer reads the whole architecture:
+     * to check every port, take {@link #table} once and ask it.
      */
     public static String problem(Port port) {
-        String topic = named(port);
-        if (topic == null) {
+        if (named(port) == null) {
             return null;
         }
-        if (!isValid(topic)) {
-            return "names the topic '" + topic + "', which is not a ROS 2 topic name";
-        }
-        List<Port> group = connected(port);
-        for (Port p : group) {
-            String other = named(p);
-            if (p != port && other != null && !same(other, topic)) {
-                return "names the topic '" + topic + "', but " + describe(p) + ", connected to it, names '" + other
-                        + "': connected ports share one topic";
+        Architecture architecture = architecture(port);
+        return architecture == null ? new Table(List.of(connected(port))).problem(port) : table(architecture).problem(port);
+    }
+
+    /** The topics of an architecture's ports, read once (linear in its ports and connections). */
+    public static Table table(Architecture architecture) {
+        List<Port> ports = new ArrayList<>();
+        for (Layer l : architecture.getLayers()) {
+            for (Module m : l.getModules()) {
+                ports.addAll(m.getPorts());
             }
         }
-        Architecture architecture = port.getModule() == null || port.getModule().getLayer() == null ? null
-                : port.getModule().getLayer().getArchitecture();
-        if (architecture != null) {
-            for (Layer l : architecture.getLayers()) {
-                for (Module m : l.getModules()) {
-                    for (Port p : m.getPorts()) {
-                        String other = named(p);
-                        if (other != null && !group.contains(p) && same(other, topic)) {
-                            return "names the topic '" + topic + "', as " + describe(p) + " does, which it is not connected to:"
-                                    + " ROS 2 would connect them";
+        return new Table(groups(ports));
+    }
+
+    private static Architecture architecture(Port port) {
+        return port.getModule() == null || port.getModule().getLayer() == null ? null : port.getModule().getLayer().getArchitecture();
+    }
+
+    /** The ports in groups of ports connected to each other (directly or through other ports), in model order. */
+    private static List<List<Port>> groups(List<Port> ports) {
+        Map<Port, Port> parent = new IdentityHashMap<>();
+        for (Port p : ports) {
+            parent.put(p, p);
+        }
+        for (Port p : ports) {
+            if (p instanceof OutputPort o) {
+                for (Connection c : o.getOutgoing()) {
+                    Port t = c.getTarget();
+                    if (t != null && parent.containsKey(t)) {
+                        Port a = root(parent, p);
+                        Port b = root(parent, t);
+                        if (a != b) {
+                            parent.put(b, a);
                         }
                     }
                 }
             }
         }
-        return null;
+        Map<Port, List<Port>> byRoot = new LinkedHashMap<>();
+        for (Port p : ports) {
+            byRoot.computeIfAbsent(root(parent, p), k -> new ArrayList<>()).add(p);
+        }
+        return new ArrayList<>(byRoot.values());
+    }
+
+    private static Port root(Map<Port, Port> parent, Port p) {
+        Port r = p;
+        while (parent.get(r) != r) {
+            r = parent.get(r);
+        }
+        while (parent.get(p) != r) {
+            Port next = parent.get(p);
+            parent.put(p, r);
+            p = next;
+        }
+        return r;
+    }
+
+    /**
+     * The topics named in an architecture, by group of connected ports: each port's problem is then
+     * found without reading the other ports again.
+     */
+    public static final class Table {
+
+        /** Each port naming a topic: its group's index. */
+        private final Map<Port, Integer> groupOf = new IdentityHashMap<>();
+        /** Per group: the first two ports (model order) that name different topics. */
+        private final List<Port[]> distinct = new ArrayList<>();
+        /** Per topic (as compared): the first port naming it in each of the first two groups that do. */
+        private final Map<String, Port[]> namers = new HashMap<>();
+        private final Map<String, int[]> namerGroups = new HashMap<>();
+
+        Table(List<List<Port>> groups) {
+            for (int g = 0; g < groups.size(); g++) {
+                Port[] two = new Port[2];
+                for (Port p : groups.get(g)) {
+                    String topic = named(p);
+                    if (topic == null) {
+                        continue;
+                    }
+                    groupOf.put(p, g);
+                    if (two[0] == null) {
+                        two[0] = p;
+                    } else if (two[1] == null && !same(named(two[0]), topic)) {
+                        two[1] = p;
+                    }
+                    String key = strip(topic);
+                    Port[] ports = namers.computeIfAbsent(key, k -> new Port[2]);
+                    int[] in = namerGroups.computeIfAbsent(key, k -> new int[] { -1, -1 });
+                    if (in[0] == -1) {
+                        in[0] = g;
+                        ports[0] = p;
+                    } else if (in[0] != g && in[1] == -1) {
+                        in[1] = g;
+                        ports[1] = p;
+                    }
+                }
+                distinct.add(two);
+            }
+        }
+
+        /** As {@link RsamlTopics#problem}, for a port of this table's architecture. */
+        public String problem(Port port) {
+            String topic = named(port);
+            if (topic == null) {
+                return null;
+            }
+            if (!isValid(topic)) {
+                return "names the topic '" + topic + "', which is not a ROS 2 topic name";
+            }
+            Integer g = groupOf.get(port);
+            if (g == null) {
+                return null;
+            }
+            for (Port p : distinct.get(g)) {
+                if (p != null && p != port && !same(named(p), topic)) {
+                    return "names the topic '" + topic + "', but " + describe(p) + ", connected to it, names '" + named(p)
+                            + "': connected ports share one topic";
+                }
+            }
+            String key = strip(topic);
+            int[] in = namerGroups.get(key);
+            for (int i = 0; i < 2; i++) {
+                if (in[i] != -1 && in[i] != g) {
+                    Port p = namers.get(key)[i];
+                    return "names the topic '" + topic + "', as " + describe(p) + " does, which it is not connected to:"
+                            + " ROS 2 would connect them";
+                }
+            }
+            return null;
+        }
     }
 
     /** Whether two names are one topic where the nodes run in the root namespace (the default). */

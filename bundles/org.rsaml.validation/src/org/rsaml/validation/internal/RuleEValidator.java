@@ -5,6 +5,7 @@
 package org.rsaml.validation.internal;
 
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -23,9 +24,12 @@ import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.EValidator;
 import org.eclipse.emf.ecore.util.EObjectValidator;
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.rsaml.model.Architecture;
 import org.rsaml.model.Module;
+import org.rsaml.model.Port;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.support.RsamlLabels;
+import org.rsaml.model.support.RsamlTopics;
 import org.rsaml.validation.Rule;
 import org.rsaml.validation.Rules;
 import org.rsaml.validation.RsamlValidationSetup;
@@ -236,6 +240,22 @@ public class RuleEValidator extends EObjectValidator {
                 ModuleActivation.CONSTRAINT.equals(constraint), false), eObject, diagnostics, context);
     }
 
+    /** RSA-28's constraint, as named in rsaml.ecore. */
+    private static final String TOPICS = "RSA28_topicNameUsable";
+
+    /** What makes the topic a port names unusable ({@code Port.topicProblem()}), from its architecture's table, read once per validation. */
+    private static String topicProblem(Map<Object, Object> context, Port port) {
+        Architecture architecture = port.getModule() == null || port.getModule().getLayer() == null ? null
+                : port.getModule().getLayer().getArchitecture();
+        if (context == null || architecture == null) {
+            return port.topicProblem();
+        }
+        @SuppressWarnings("unchecked")
+        Map<Architecture, RsamlTopics.Table> tables = (Map<Architecture, RsamlTopics.Table>) context.computeIfAbsent(RsamlTopics.Table.class,
+                k -> new IdentityHashMap<Architecture, RsamlTopics.Table>());
+        return tables.computeIfAbsent(architecture, RsamlTopics::table).problem(port);
+    }
+
     private boolean check(Invariant invariant, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
         EClass eClass = invariant.declaredOn();
         String constraint = invariant.constraint();
@@ -244,6 +264,9 @@ public class RuleEValidator extends EObjectValidator {
             // RSA-19's fixpoint once per validation, not one OCL closure per module (same set; see ModuleActivation).
             if (invariant.activation() && eObject instanceof Module module) {
                 satisfied = ModuleActivation.of(context).isActivated(module);
+            } else if (TOPICS.equals(constraint) && eObject instanceof Port port) {
+                // RSA-28's topic table once per validation, not a pass over every port per port (same answers; see RsamlTopics).
+                satisfied = topicProblem(context, port) == null;
             } else if (invariant.evaluator() != null) {
                 satisfied = OclRules.evaluate(invariant.evaluator(), eObject);
             } else {
@@ -274,7 +297,9 @@ public class RuleEValidator extends EObjectValidator {
         Rule rule = Rules.forConstraint(constraint).orElse(Rules.STRUCTURE);
         String message;
         try {
-            message = MessageParameters.render(rule.message(), eObject);
+            message = TOPICS.equals(constraint) && eObject instanceof Port port
+                    ? MessageParameters.render(rule.message(), eObject, Map.of("topicProblem", String.valueOf(topicProblem(context, port))))
+                    : MessageParameters.render(rule.message(), eObject);
         } catch (RuntimeException e) {
             // The finding stands; its message template does not fit this element, and the text says so.
             message = MessageParameters.capitalized(MessageParameters.element(eObject)) + " violates " + rule.id()
