@@ -5,6 +5,8 @@
 package org.rsaml.validation.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 
 import java.util.List;
@@ -18,6 +20,7 @@ import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.TimeUnit;
+import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.Finding;
 import org.rsaml.validation.LoadedModel;
@@ -30,11 +33,17 @@ class FindingsTest {
     @Test
     void findingLocatesItsElementByFragmentAndPosition() throws Exception {
         LoadedModel model = ModelLoader.load(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
-        Finding f = RsamlModelValidator.validate(model).stream().filter(x -> x.ruleId().equals("RSA-08")).findFirst().orElseThrow();
-        EObject element = model.resource().getEObject(f.uriFragment());
-        assertEquals("resourceChecker", ((Module) element).getName());
-        assertEquals("exp2.rsaml:" + f.line() + ":" + f.column() + ": error RSA-08: " + f.message(), f.toString());
-        assertSame(element, model.resource().getEObject("//@layers[name='control']/@modules[name='resourceChecker']"));
+        List<Finding> findings = RsamlModelValidator.validate(model);
+        assertFalse(findings.isEmpty(), "exp2 has findings");
+        for (Finding f : findings) {
+            EObject element = model.resource().getEObject(f.uriFragment());
+            assertNotNull(element, () -> f + ": its fragment " + f.uriFragment() + " leads to an element");
+            assertEquals(f.qualifiedName(), RsamlLabels.qualifiedName(element), () -> f + ": the fragment leads to the element the finding names");
+            assertSame(element, model.resource().getEObject(model.resource().getURIFragment(element)),
+                    () -> f + ": the element's own fragment leads back to it");
+            assertEquals("exp2.rsaml:" + f.line() + ":" + f.column() + ": " + f.severity().label() + " " + f.ruleId() + ": " + f.message(),
+                    f.toString(), "a finding prints in compiler style: file:line:column: severity id: message");
+        }
     }
 
     @Test
