@@ -39,8 +39,8 @@ class InternalPackagesTest {
 
     private static final Pattern FRIENDS = Pattern.compile("x-friends:=\"([^\"]*)\"");
 
-    /** The package of an imported type: the name up to its first capitalised part. */
-    private static final Pattern IMPORT = Pattern.compile("^import (?:static )?([a-z]\\w*(?:\\.[a-z]\\w*)*)\\.[A-Z]", Pattern.MULTILINE);
+    /** The package of a type a source names, imported or written out in full: the name up to its first capitalised part. */
+    private static final Pattern IMPORT = Pattern.compile("(?<![\\w.])(org\\.rsaml(?:\\.[a-z]\\w*)+)\\.[A-Z]");
 
     @Test
     void aTestBundleThatImportsAnInternalPackageIsItsFriend() throws IOException {
