@@ -20,6 +20,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.generator.GenerationException;
 import org.rsaml.generator.GenerationRefusedException;
+import org.rsaml.generator.GenerationResult;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
 
@@ -164,18 +165,44 @@ class Ros2PackagesTest {
         assertFalse(Files.exists(tmp.resolve("ws")), "nothing is written");
     }
 
+    /** Moves each file the refusal says to move ("Move each ...: A -> B, C -> D."). */
+    private static void moveAsSaid(Path out, String message) throws Exception {
+        String marker = "(paths in the output directory): ";
+        assertTrue(message.contains(marker), "the refusal lists the files to move: " + message);
+        String list = message.substring(message.indexOf(marker) + marker.length());
+        for (String move : list.substring(0, list.indexOf(". ")).split(", ")) {
+            Path from = out.resolve(move.split(" -> ")[0]);
+            Path to = out.resolve(move.split(" -> ")[1]);
+            Files.createDirectories(to.getParent());
+            Files.move(from, to);
+        }
+    }
+
+    private static void append(Path file, String text) throws Exception {
+        Files.writeString(file, Files.readString(file) + text);
+    }
+
     /**
      * From one package to a package per layer: the architect's classes are in mobile_base/src/, where
-     * the new layout does not look. Generating refuses, writes nothing and lists each move; once the
-     * files are moved as it says, it generates, keeps them (still the architect's) and removes the
-     * regenerated files of the old layout.
+     * the new layout does not look. Generating refuses, writes nothing and lists each move, and says
+     * that what mobile_base's user.cmake and package.user.xml add (for every node, with single) now
+     * belongs to the packages of the nodes; once the classes are moved as it says, it generates,
+     * keeps them (still the architect's) and removes the regenerated files of the old layout, warns
+     * once more about those two files, and keeps the parameters file with the architect's edit (the
+     * launch package's in every layout, still loaded by both launch files) and the README.
      */
     @Test
     void changingTheLayoutNeverLeavesTheArchitectsCodeBehind(@TempDir Path tmp) throws Exception {
         Path out = tmp.resolve("ws");
         new RsamlGenerator().generate(model(tmp, "single"), Target.ROS2, out, false);
         Path mine = out.resolve(PKG + "/src/navigation/ObstacleDetector.cpp");
-        Files.writeString(mine, Files.readString(mine) + "\n// the detection of mine\n");
+        append(mine, "\n// the detection of mine\n");
+        append(out.resolve(PKG + "/user.cmake"), "find_package(tf2_ros REQUIRED)\n");
+        Path manifest = out.resolve(PKG + "/package.user.xml");
+        Files.writeString(manifest, Files.readString(manifest).replace("<!-- <depend>tf2_ros</depend> -->", "<depend>tf2_ros</depend>"));
+        Path params = out.resolve(PKG + "/config/" + PKG + ".params.yaml");
+        append(params, "# tuned on the robot\n");
+        append(out.resolve("README.md"), "\nOur notes.\n");
         Map<String, byte[]> before = Tools.snapshot(out);
         Path layered = model(tmp, "perLayer");
         GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(layered, Target.ROS2, out, false));
@@ -187,20 +214,106 @@ class Ros2PackagesTest {
                         + " is said: " + message);
             }
         }
-        assertTrue(message.contains("packages perLayer") && message.contains("set packages back to single"), message);
+        for (String file : List.of("user.cmake", "package.user.xml")) {
+            String said = "what " + PKG + "/" + file + " adds for the nodes now built elsewhere goes into ";
+            String into = message.substring(message.indexOf(said) + said.length()).split("[;.] ")[0];
+            assertTrue(message.contains(said) && into.contains(PKG + "_navigation/" + file) && into.contains(PKG + "_control/" + file),
+                    "what " + file + " adds for the nodes is said to go to their packages: " + message);
+        }
+        assertTrue(message.contains("packages single (this output) to perLayer (the model)") && message.contains("set packages back to single"), message);
         assertTrue(Tools.sameFiles(before, Tools.snapshot(out)), "the refused generation changed the output");
 
-        for (String move : message.substring(message.indexOf("): ") + 3).split(" \\(and what")[0].split(", ")) {
-            Path from = out.resolve(move.split(" -> ")[0]);
-            Path to = out.resolve(move.split(" -> ")[1]);
-            Files.createDirectories(to.getParent());
-            Files.move(from, to);
-        }
-        new RsamlGenerator().generate(layered, Target.ROS2, out, false);
-        Path moved = out.resolve(PKG + "_navigation/src/navigation/ObstacleDetector.cpp");
-        assertTrue(Files.readString(moved).endsWith("// the detection of mine\n"), "the architect's code is kept where it was moved");
+        moveAsSaid(out, message);
+        GenerationResult moved = new RsamlGenerator().generate(layered, Target.ROS2, out, false);
+        assertTrue(Files.readString(out.resolve(PKG + "_navigation/src/navigation/ObstacleDetector.cpp")).endsWith("// the detection of mine\n"),
+                "the architect's code is kept where it was moved");
         assertFalse(Files.exists(out.resolve(PKG + "/gen/navigation/ObstacleDetectorBase.hpp")), "the old layout's generated node is removed from " + PKG);
         assertFalse(Files.readString(out.resolve(PKG + "/CMakeLists.txt")).contains("add_library"), PKG + " builds no nodes any more");
         assertTrue(Files.exists(out.resolve(PKG + "_navigation/gen/navigation/ObstacleDetectorBase.hpp")), "the nodes are generated in their package");
+        assertEquals(1, moved.warnings().stream().filter(w -> w.contains(PKG + "/user.cmake adds for the nodes")
+                && w.contains(PKG + "/package.user.xml adds for the nodes")).count(), "the two files are named once more: " + moved.warnings());
+        for (String kept : List.of(PKG + "/config/" + PKG + ".params.yaml", PKG + "/user.cmake", PKG + "/package.user.xml", "README.md")) {
+            assertEquals(new String(before.get(kept)), Files.readString(out.resolve(kept)), kept + " is kept as the architect left it");
+        }
+        for (String launch : List.of(PKG + ".launch.py", PKG + "_processes.launch.py")) {
+            assertTrue(Files.readString(out.resolve(PKG + "/launch/" + launch)).contains("'config', '" + PKG + ".params.yaml'"),
+                    launch + " still loads the architect's parameters file");
+        }
+        assertEquals(List.of(), new RsamlGenerator().generate(layered, Target.ROS2, out, false).warnings().stream()
+                .filter(w -> w.contains("layout changed")).toList(), "the layout change is said when it happens, not on every run");
+    }
+
+    /**
+     * From a package per layer back to one package: the classes move, and the navigation package's
+     * user.cmake and the runtime package's package.user.xml, which add something of the architect's,
+     * would be left in packages that no longer exist; generating refuses and names each with the file
+     * to merge it into. The control package's files, as RsaML created them, are not in the way; once
+     * the rest is moved and merged, generating names them as left over, to delete.
+     */
+    @Test
+    void backToOnePackageTheOldPackagesFilesOfTheArchitectsAreMergedNotLeftBehind(@TempDir Path tmp) throws Exception {
+        Path out = tmp.resolve("ws");
+        new RsamlGenerator().generate(model(tmp, "perLayer"), Target.ROS2, out, false);
+        append(out.resolve(PKG + "_navigation/user.cmake"), "target_compile_definitions(${PROJECT_NAME} PRIVATE NAV_TUNED=1)\n");
+        Path runtimeManifest = out.resolve(PKG + "_runtime/package.user.xml");
+        Files.writeString(runtimeManifest, Files.readString(runtimeManifest).replace("<license>TODO</license>", "<license>Apache-2.0</license>"));
+        Map<String, byte[]> before = Tools.snapshot(out);
+        Path single = model(tmp, "single");
+        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(single, Target.ROS2, out, false));
+        String message = e.toString();
+        assertTrue(message.contains(PKG + "_navigation/src/navigation/PathPlanner.hpp -> " + PKG + "/src/navigation/PathPlanner.hpp"), message);
+        assertTrue(message.contains(PKG + "_navigation/user.cmake into " + PKG + "/user.cmake")
+                && message.contains(PKG + "_runtime/package.user.xml into " + PKG + "/package.user.xml"),
+                "the files that add something are named with where they go: " + message);
+        assertFalse(message.contains(PKG + "_control/user.cmake") || message.contains(PKG + "_navigation/package.user.xml"),
+                "files as RsaML created them are not in the way: " + message);
+        assertTrue(Tools.sameFiles(before, Tools.snapshot(out)), "the refused generation changed the output");
+
+        moveAsSaid(out, message);
+        append(out.resolve(PKG + "/user.cmake"), Files.readString(out.resolve(PKG + "_navigation/user.cmake")));
+        Files.delete(out.resolve(PKG + "_navigation/user.cmake"));
+        Files.move(runtimeManifest, out.resolve(PKG + "/package.user.xml"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        GenerationResult merged = new RsamlGenerator().generate(single, Target.ROS2, out, false);
+        assertTrue(Files.readString(out.resolve(PKG + "/package.xml")).contains("<license>Apache-2.0</license>"), "the merged manifest is in effect");
+        assertTrue(Files.readString(out.resolve(PKG + "/user.cmake")).contains("NAV_TUNED=1"), "the merged user.cmake is kept");
+        List<String> leftOver = merged.warnings().stream().filter(w -> w.contains("left over")).toList();
+        assertEquals(1, leftOver.size(), "the unused files are named: " + merged.warnings());
+        for (String f : List.of(PKG + "_control/user.cmake", PKG + "_control/package.user.xml", PKG + "_navigation/package.user.xml")) {
+            assertTrue(leftOver.get(0).contains(f), f + " is named as left over: " + leftOver);
+        }
+    }
+
+    /**
+     * The README is the architect's (created once), so what a generation made of the model is in
+     * GENERATED.md, regenerated every time, which the README links: after a change of layout the
+     * README is as the architect left it and GENERATED.md tells the new packages. A README that does
+     * not link GENERATED.md (written by an earlier RsaML, or by hand) is kept and named in a warning.
+     */
+    @Test
+    void theReadmeIsTheArchitectsAndLinksTheRegeneratedFacts(@TempDir Path tmp) throws Exception {
+        Path out = tmp.resolve("ws");
+        new RsamlGenerator().generate(model(tmp, "single"), Target.ROS2, out, false);
+        Path readme = out.resolve("README.md");
+        Path generated = out.resolve("GENERATED.md");
+        assertTrue(Files.readString(readme).contains("[GENERATED.md](GENERATED.md)"), "the README links GENERATED.md:\n" + Files.readString(readme));
+        assertTrue(Files.readString(generated).startsWith("<!-- Generated by RsaML") && Files.readString(generated).contains("ros2 launch " + PKG + " "
+                + PKG + ".launch.py"), "GENERATED.md says it is regenerated, and how to launch:\n" + Files.readString(generated));
+        assertFalse(Files.readString(generated).contains(PKG + "_navigation"), "one package: no package per layer is named");
+        append(readme, "\nOur robot's notes.\n");
+        String notes = Files.readString(readme);
+        Path layered = model(tmp, "perLayer");
+        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(layered, Target.ROS2, out, false));
+        moveAsSaid(out, e.toString());
+        new RsamlGenerator().generate(layered, Target.ROS2, out, false);
+        assertEquals(notes, Files.readString(readme), "the README is kept as the architect left it");
+        String facts = Files.readString(generated);
+        assertTrue(facts.contains("`packages perLayer` in the model") && facts.contains("`" + PKG + "_navigation` (layer 'navigation')"),
+                "GENERATED.md tells the new layout:\n" + facts);
+
+        Files.writeString(readme, "# mobile base\n\nWritten by an earlier RsaML.\n");
+        GenerationResult old = new RsamlGenerator().generate(layered, Target.ROS2, out, false);
+        assertEquals(1, old.warnings().stream().filter(w -> w.startsWith("README.md") && w.contains("does not link GENERATED.md")).count(),
+                "a README without the link is named: " + old.warnings());
+        assertEquals("# mobile base\n\nWritten by an earlier RsaML.\n", Files.readString(readme), "and kept");
     }
 }

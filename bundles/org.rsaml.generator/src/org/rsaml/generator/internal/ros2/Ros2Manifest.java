@@ -185,6 +185,18 @@ public final class Ros2Manifest {
         return new Ros2Manifest(elements);
     }
 
+    /**
+     * Whether the architect's file says something of their own: elements other than those RsaML
+     * created it with (comments aside); a file that is not a valid {@code package.user.xml} does too.
+     */
+    public static boolean hasAdditions(String path, String text) {
+        try {
+            return !parse(path, text).elements.equals(initial("").elements);
+        } catch (GenerationException e) {
+            return true;
+        }
+    }
+
     public String version() {
         return elements.stream().filter(e -> e.tag().equals("version")).map(Element::text).findFirst().orElse("0.1.0");
     }

@@ -7,9 +7,11 @@ package org.rsaml.generator.internal.ros2;
 import java.util.ArrayList;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.PlannedLayer;
@@ -141,37 +143,148 @@ public final class Ros2Packages {
         return List.of(dir + ".hpp", dir + ".cpp");
     }
 
+    /** The setting under which the output's manifest keeps the layout it was generated with. */
+    public static final String KEPT_LAYOUT = "packages";
+
+    /** The architect's files every package of nodes, the runtime package and the launch files' package have, beside package.xml. */
+    private static final List<String> PACKAGE_FILES = List.of("user.cmake", Ros2Manifest.FILE);
+
     /**
-     * Refuses a layout that would leave the architect's code behind: when a module's class of the
-     * architect's is not where this layout puts it but where another layout put it (the output was
-     * generated with another packages), nothing is written and the exception lists what to move.
+     * A package of a layout: its name, the modules whose nodes it builds, and whether it builds the
+     * scheduling runtime.
      */
-    public void checkUserCodeIsHere(ExecutionPlan plan, CxxNames names, OutputContext output) throws GenerationException {
-        List<String> moves = new ArrayList<>();
-        String from = null;
+    private record Part(String name, List<PlannedModule> modules, boolean runtime) {
+    }
+
+    /** Every package of this layout that has a user.cmake and a package.user.xml, but the interfaces package (the same in every layout). */
+    private List<Part> parts() {
+        if (single()) {
+            return List.of(new Part(system, nodePackages.get(0).modules, true));
+        }
+        List<Part> parts = new ArrayList<>(List.of(new Part(system, List.of(), false), new Part(runtime, List.of(), true)));
+        nodePackages.forEach(np -> parts.add(new Part(np.name, np.modules, false)));
+        return parts;
+    }
+
+    /**
+     * The layout this output was generated with: the one its manifest keeps; for an output generated
+     * before the manifest kept it, the other layout where the architect's classes are (and this one's
+     * are not); null when it cannot have been another.
+     */
+    private PackageLayout previous(ExecutionPlan plan, CxxNames names, OutputContext output) {
+        PackageLayout kept = PackageLayout.get(output.kept().getOrDefault(KEPT_LAYOUT, ""));
+        if (kept != null) {
+            return kept;
+        }
         for (PackageLayout other : PackageLayout.VALUES) {
-            if (other == layout) {
-                continue;
-            }
-            Ros2Packages then = new Ros2Packages(plan, names, other);
+            Ros2Packages then = other == layout ? this : new Ros2Packages(plan, names, other);
             for (PlannedModule m : plan.modules()) {
                 List<String> now = userFiles(of(m).name, names, m);
                 List<String> before = userFiles(then.of(m).name, names, m);
                 for (int i = 0; i < now.size(); i++) {
                     if (!now.get(i).equals(before.get(i)) && output.userFile(now.get(i)).isEmpty() && output.userFile(before.get(i)).isPresent()) {
-                        moves.add(before.get(i) + " -> " + now.get(i));
-                        from = Optional.ofNullable(from).orElse(other.getLiteral());
+                        return other;
                     }
                 }
             }
         }
-        if (moves.isEmpty()) {
-            return;
+        return null;
+    }
+
+    /** Whether a user.cmake holds more than comments (RsaML creates it with comments only). */
+    static boolean cmakeHasAdditions(String text) {
+        return text.lines().map(String::strip).anyMatch(l -> !l.isEmpty() && !l.startsWith("#"));
+    }
+
+    /**
+     * Keeps the architect's code where it is built when the layout changes (the output was generated
+     * with another {@code packages}). Refuses, with nothing written and the list of what to do, when
+     * a file of theirs would be left in a package this layout no longer has or no longer builds that
+     * module in: each module's class (to move), and each old package's user.cmake and
+     * package.user.xml that adds something of theirs (to merge into the files of the packages that now
+     * build its nodes, then delete). The parameters file, the message files and the README are in the
+     * same place in every layout. Returns warnings: a user.cmake or package.user.xml that stays but
+     * whose package no longer builds nodes it added to (single to perLayer: the launch files' package
+     * keeps its name), and the old packages' files that add nothing and are no longer used.
+     */
+    public List<String> checkUserCodeIsHere(ExecutionPlan plan, CxxNames names, OutputContext output) throws GenerationException {
+        PackageLayout before = previous(plan, names, output);
+        if (before == null || before == layout) {
+            return List.of();
         }
-        throw new GenerationException(moves.get(0).replaceFirst(" -> .*", ""), "nothing generated: the model asks for packages "
-                + layout.getLiteral() + ", but your code in this output is where packages " + from + " put it; generating would leave it"
-                + " behind. Move each file of yours to its new package (paths in the output directory): " + String.join(", ", moves)
-                + " (and what your user.cmake and package.user.xml of the old package add for these nodes to those of the new one),"
-                + " then generate again; or set packages back to " + from + ".");
+        Ros2Packages then = new Ros2Packages(plan, names, before);
+        List<String> moves = new ArrayList<>();
+        for (PlannedModule m : plan.modules()) {
+            List<String> now = userFiles(of(m).name, names, m);
+            List<String> old = userFiles(then.of(m).name, names, m);
+            for (int i = 0; i < now.size(); i++) {
+                if (!now.get(i).equals(old.get(i)) && output.userFile(now.get(i)).isEmpty() && output.userFile(old.get(i)).isPresent()) {
+                    moves.add(old.get(i) + " -> " + now.get(i));
+                }
+            }
+        }
+        Map<String, Part> nowParts = new LinkedHashMap<>();
+        parts().forEach(p -> nowParts.put(p.name(), p));
+        List<String> merges = new ArrayList<>();
+        List<String> stays = new ArrayList<>();
+        List<String> unused = new ArrayList<>();
+        for (Part old : then.parts()) {
+            Part same = nowParts.get(old.name());
+            // The packages that now build what this one built and the package at its path does not.
+            Set<String> into = new LinkedHashSet<>();
+            for (PlannedModule m : old.modules()) {
+                if (same == null || !same.modules().contains(m)) {
+                    into.add(of(m).name);
+                }
+            }
+            if (old.runtime() && (same == null || !same.runtime())) {
+                into.add(runtime);
+            }
+            for (String file : PACKAGE_FILES) {
+                String path = old.name() + "/" + file;
+                Optional<String> text = output.userFile(path);
+                if (text.isEmpty()) {
+                    continue;
+                }
+                boolean additions = file.equals(Ros2Manifest.FILE) ? Ros2Manifest.hasAdditions(path, text.get()) : cmakeHasAdditions(text.get());
+                List<String> targets = into.stream().map(p -> p + "/" + file).toList();
+                if (same == null && additions) {
+                    merges.add(path + " into " + String.join(" and ", targets));
+                } else if (same == null) {
+                    unused.add(path);
+                } else if (additions && !targets.isEmpty()) {
+                    stays.add("what " + path + " adds for " + (old.modules().isEmpty() ? "the scheduling runtime" : "the nodes")
+                            + " now built elsewhere goes into " + String.join(" and ", targets));
+                }
+            }
+        }
+        String change = "packages " + before.getLiteral() + " (this output) to " + layout.getLiteral() + " (the model)";
+        if (!moves.isEmpty() || !merges.isEmpty()) {
+            List<String> todo = new ArrayList<>();
+            if (!moves.isEmpty()) {
+                todo.add("Move each of these files of yours to its new package (paths in the output directory): " + String.join(", ", moves) + ".");
+            }
+            if (!merges.isEmpty()) {
+                todo.add("These files of yours are in packages the new layout does not have; merge what each adds into the files of the"
+                        + " packages that now build its nodes, then delete it: " + String.join("; ", merges) + ".");
+            }
+            if (!stays.isEmpty()) {
+                todo.add("Also, " + String.join("; ", stays) + ".");
+            }
+            String first = moves.isEmpty() ? merges.get(0).replaceFirst(" into .*", "") : moves.get(0).replaceFirst(" -> .*", "");
+            throw new GenerationException(first, "nothing generated: the layout changes from " + change + ", and generating would leave"
+                    + " your code behind where nothing builds it. " + String.join(" ", todo) + " Then generate again; or set packages back to "
+                    + before.getLiteral() + ".");
+        }
+        List<String> warnings = new ArrayList<>();
+        if (!stays.isEmpty()) {
+            warnings.add("the layout changed from " + change + ": " + String.join("; ", stays)
+                    + " (the package it is in no longer builds those)");
+        }
+        if (!unused.isEmpty()) {
+            warnings.add("the layout changed from " + change + ": " + String.join(", ", unused) + " are left over in packages the new"
+                    + " layout does not have, unchanged since RsaML created them and no longer used; delete them");
+        }
+        return warnings;
     }
 }

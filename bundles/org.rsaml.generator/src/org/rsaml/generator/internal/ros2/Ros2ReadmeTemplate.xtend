@@ -6,8 +6,16 @@ package org.rsaml.generator.internal.ros2
 
 import org.rsaml.generator.internal.cxx.CxxNames
 
-/** The output's README.md (the architect's, created once): how to build, launch and tune the packages. */
+/**
+ * The output's README.md, the architect's (created once, never overwritten), and GENERATED.md beside
+ * it, regenerated every time with what this generation made of the model (the package layout, the
+ * managed nodes, the topics, the parameters, the scheduling, the files that are the architect's), so
+ * that a README written long ago never states stale facts: it links GENERATED.md.
+ */
 class Ros2ReadmeTemplate extends Ros2Template {
+
+	/** The regenerated file the README links. */
+	public static val GENERATED = "GENERATED.md"
 
 	val extension CxxNames names
 	val extension Ros2Names rosNames
@@ -18,13 +26,35 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		this.rosNames = context.rosNames
 	}
 
+	/** The README the architect starts with: what the packages are, how to start them, and the link to GENERATED.md. */
 	def readme() '''
 		# «doc(plan.name)» for ROS 2
 
 		ament_cmake packages of the RsaML architecture '«doc(plan.name)»', created by
+		`rsaml generate --target ros2`, for ROS 2 Humble, Jazzy, Kilted and Rolling. This README is
+		yours: created once, never overwritten; say here what your robot's packages are for.
+
+		**[«GENERATED»](«GENERATED»)** is regenerated from the model every time: how to build, launch
+		and tune the packages, which package holds which nodes, the topics, the parameters, the
+		managed nodes, how the nodes are scheduled and which files are yours.
+
+		```sh
+		colcon build
+		source install/setup.bash
+		ros2 launch «pkg» «pkg».launch.py
+		```
+	'''
+
+	/** GENERATED.md: the facts of this generation, regenerated every time. */
+	def generated() '''
+		<!-- «context.banner.replace("--", "- -")» Your notes go in README.md. -->
+		# «doc(plan.name)» for ROS 2: what RsaML generated
+
+		ament_cmake packages of the RsaML architecture '«doc(plan.name)»', created by
 		`rsaml generate --target ros2`, for ROS 2 Humble, Jazzy, Kilted and Rolling: a node per module,
 		each an rclcpp component of the library `«IF context.packages.single»«pkg»«ELSE»of its package«ENDIF»` and an executable of its own, a timer per
-		periodic function, a topic per group of connected ports. Put this directory in a colcon
+		periodic function, a topic per group of connected ports. This file is regenerated every time
+		(edit the model, or README.md for notes of yours). Put this directory in a colcon
 		workspace's `src/`, then:
 
 		```sh
@@ -43,7 +73,9 @@ class Ros2ReadmeTemplate extends Ros2Template {
 			share it), the component container«IF !rosNames.managedModules.empty» and the lifecycle manager«ENDIF»; `«pkg»` the launch files and the
 			parameters file«IF !context.generatedMessages.empty»; `«rosNames.interfacesPackage»` the message types«ENDIF». The model's `packages` chooses the layout
 			(`single`, `perLayer`, `perProcessor`). Generating this directory again with another layout is
-			refused while your classes are in the old packages, with the list of files to move.
+			refused while files of yours (your classes, and a `user.cmake` or `«Ros2Manifest.FILE»` that adds
+			something) are in packages the new layout no longer builds them in, with the list of files to move
+			or merge.
 
 		«ENDIF»
 		Topics are relative, so `namespace:=...` isolates a second robot.«IF !rosNames.topicArguments.empty» The topics the model names
@@ -107,12 +139,12 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		installed. (RsaML's own tests run the launch test only on a ROS 2 that has `launch_testing`; on
 		the one its CI uses, without it, they compile it and say it was skipped.)
 
-		`gen/`, `test/`, `package.xml`, `CMakeLists.txt` and the launch files are regenerated every time. Yours,
+		`gen/`, `test/`, `package.xml`, `CMakeLists.txt`, the launch files and this file are regenerated every time. Yours,
 		created once and never overwritten: `src/`, the `.msg` files, each package's `user.cmake`
 		(included by its `CMakeLists.txt`; the interfaces package's also lists interface files of your
 		own, `.srv`, `.action` or more `.msg`, in `RSAML_USER_INTERFACES`), `config/«pkg».params.yaml` and `«Ros2Manifest.FILE»`
 		(version, maintainers, licences, URLs, authors and further dependencies, merged into
-		`package.xml`). Types of other packages used in a generated `.msg` file are found and declared
+		`package.xml`), and `README.md`. Types of other packages used in a generated `.msg` file are found and declared
 		when you generate again.
 	'''
 }

@@ -29,7 +29,8 @@ import org.rsaml.generator.spi.TargetGenerator
  * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
  * Each output file has its template: Ros2NodeTemplate (with Ros2ManagedNodeTemplate for a managed
  * node), Ros2ComponentTemplate, Ros2CmakeTemplate, Ros2PackageTemplate, Ros2LaunchTemplate,
- * Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate.
+ * Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate (README.md, the
+ * architect's, and GENERATED.md, regenerated).
  */
 class Ros2Target implements TargetGenerator {
 
@@ -72,7 +73,7 @@ class Ros2Target implements TargetGenerator {
 		val warnings = <String>newArrayList
 		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace")
 		val context = new Ros2Context(plan, project, output)
-		context.packages.checkUserCodeIsHere(plan, context.names, output)
+		warnings += context.packages.checkUserCodeIsHere(plan, context.names, output)
 		val files = new Ros2Files(context)
 		for (cycle : plan.reactiveCycles) {
 			warnings += "modules " + cycle.map[qualifiedName].join(" -> ")
@@ -89,7 +90,13 @@ class Ros2Target implements TargetGenerator {
 				output.userFile(path).ifPresent[warnings += Ros2UserCodeCheck.valueReads(path, it, inputs)]
 			}
 		}
-		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project})
+		output.userFile("README.md").filter[!contains(Ros2ReadmeTemplate.GENERATED)].ifPresent[
+			warnings += "README.md (yours, kept as it is) does not link " + Ros2ReadmeTemplate.GENERATED + ", which generating rewrites every"
+				+ " time with what it made of the model (the package layout, the nodes, topics, parameters and managed nodes, the files"
+				+ " that are yours): what your README says of them is as of when it was written; link " + Ros2ReadmeTemplate.GENERATED
+				+ " from it (or delete README.md to have it created again)"
+		]
+		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project, Ros2Packages.KEPT_LAYOUT -> plan.architecture.packages.literal})
 	}
 }
 
@@ -179,7 +186,9 @@ class Ros2Files {
 				files += GeneratedFile.user(ipkg + "/msg/" + t.rosName + ".msg", user.message(t))
 			}
 		}
-		files += GeneratedFile.user("README.md", new Ros2ReadmeTemplate(context).readme)
+		val readme = new Ros2ReadmeTemplate(context)
+		files += GeneratedFile.user("README.md", readme.readme)
+		files += GeneratedFile.generated(Ros2ReadmeTemplate.GENERATED, readme.generated)
 		files
 	}
 
