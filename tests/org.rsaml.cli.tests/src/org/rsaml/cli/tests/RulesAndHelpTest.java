@@ -43,40 +43,40 @@ class RulesAndHelpTest {
     @Test
     void rulesAsJson() {
         Cli.Result r = Cli.run("rules", "--format", "json");
-        assertEquals(0, r.code());
+        assertEquals(0, r.code(), r::toString);
         JsonArray rules = JsonParser.parseString(r.out()).getAsJsonArray();
-        assertEquals(Rules.all().size(), rules.size());
+        assertEquals(Rules.all().size(), rules.size(), "one JSON object per rule of the catalogue");
         for (int i = 0; i < rules.size(); i++) {
             Rule rule = Rules.all().get(i);
-            assertEquals(rule.id(), rules.get(i).getAsJsonObject().get("id").getAsString());
-            assertEquals(rule.severity().label(), rules.get(i).getAsJsonObject().get("severity").getAsString());
-            assertEquals(rule.remediation(), rules.get(i).getAsJsonObject().get("help").getAsString());
-            assertEquals(rule.scope(), rules.get(i).getAsJsonObject().get("scope").getAsString());
+            assertEquals(rule.id(), rules.get(i).getAsJsonObject().get("id").getAsString(), "the catalogue's order");
+            assertEquals(rule.severity().label(), rules.get(i).getAsJsonObject().get("severity").getAsString(), rule.id() + "'s severity");
+            assertEquals(rule.remediation(), rules.get(i).getAsJsonObject().get("help").getAsString(), rule.id() + "'s help is its fix");
+            assertEquals(rule.scope(), rules.get(i).getAsJsonObject().get("scope").getAsString(), rule.id() + "'s scope");
         }
     }
 
     @Test
     void versionIsTheBuiltOne() {
         Cli.Result r = Cli.run("--version");
-        assertEquals(0, r.code());
-        assertEquals("rsaml " + System.getProperty("rsaml.version"), r.outLines().get(0));
+        assertEquals(0, r.code(), r::toString);
+        assertEquals("rsaml " + System.getProperty("rsaml.version"), r.outLines().get(0), "the version of the build that made the jar");
     }
 
     @Test
     void helpOnEveryCommand() {
         Cli.Result top = Cli.run("--help");
-        assertEquals(0, top.code());
+        assertEquals(0, top.code(), top::toString);
         for (String expected : List.of("Usage: rsaml", "validate", "generate", "rules", "--version", "Exit codes:", "2   usage error")) {
             assertTrue(top.out().contains(expected), () -> expected + " missing:\n" + top.out());
         }
         Cli.Result validate = Cli.run("validate", "--help");
-        assertEquals(0, validate.code());
+        assertEquals(0, validate.code(), validate::toString);
         for (String expected : List.of("Usage: rsaml validate", "--format", "--output", "--fail-on", "--quiet", "--debug")) {
             assertTrue(validate.out().contains(expected), () -> expected + " missing:\n" + validate.out());
         }
-        assertEquals(validate.out(), Cli.run("help", "validate").out());
+        assertEquals(validate.out(), Cli.run("help", "validate").out(), "'rsaml help validate' prints what 'validate --help' does");
         Cli.Result rules = Cli.run("rules", "--help");
-        assertEquals(0, rules.code());
+        assertEquals(0, rules.code(), rules::toString);
         assertTrue(rules.out().contains("Usage: rsaml rules"), rules::toString);
     }
 }
