@@ -72,17 +72,8 @@ class ProcessTest {
     void launcherInACopiedTreeMakesItsClassDataAgainUsesItAndShowsARefusal(@TempDir Path dir) throws Exception {
         // As a tree copied, moved or restored from a CI cache with its files' times kept: the jar, the launcher and
         // the class data made for the repository's own path, now somewhere else.
-        Path tree = Files.createDirectories(dir.resolve("tree"));
-        Path target = Files.createDirectories(tree.resolve("cli/org.rsaml.cli/target"));
-        Files.createDirectories(tree.resolve("examples"));
-        Files.copy(Cli.ROOT.resolve("rsaml"), tree.resolve("rsaml"), StandardCopyOption.COPY_ATTRIBUTES);
-        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), tree.resolve("examples/exp2-defects.rsaml"));
-        Path built = Cli.ROOT.resolve("cli/org.rsaml.cli/target");
-        for (String name : List.of("rsaml.jar", "rsaml.jsa", "rsaml.jsa.stamp", "rsaml.aot", "rsaml.aot.stamp")) {
-            if (Files.exists(built.resolve(name))) {
-                Files.copy(built.resolve(name), target.resolve(name), StandardCopyOption.COPY_ATTRIBUTES);
-            }
-        }
+        Path tree = copyTree(dir.resolve("tree"));
+        Path target = tree.resolve("cli/org.rsaml.cli/target");
         Path log = dir.resolve("classes-loaded.log");
         List<String> validate = List.of("env", "RSAML_JAVA_OPTS=-Xlog:class+load=info:file=" + log, "./rsaml", "validate",
                 "examples/exp2-defects.rsaml");
@@ -114,6 +105,93 @@ class ProcessTest {
         assertEquals(r.out(), refused.out(), "the same report without the class data");
         assertTrue(refused.err().contains("archive") || refused.err().contains("AOT cache"),
                 () -> "the JVM's refusal of the class data is shown, not hidden:\n" + refused);
+    }
+
+    /** The launcher, the jar with its class data and one example, copied to {@code tree} with their files' times. */
+    private static Path copyTree(Path tree) throws Exception {
+        Path target = Files.createDirectories(tree.resolve("cli/org.rsaml.cli/target"));
+        Files.createDirectories(tree.resolve("examples"));
+        Files.copy(Cli.ROOT.resolve("rsaml"), tree.resolve("rsaml"), StandardCopyOption.COPY_ATTRIBUTES);
+        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), tree.resolve("examples/exp2-defects.rsaml"));
+        Path built = Cli.ROOT.resolve("cli/org.rsaml.cli/target");
+        for (String name : List.of("rsaml.jar", "rsaml.jsa", "rsaml.jsa.stamp", "rsaml.aot", "rsaml.aot.stamp")) {
+            if (Files.exists(built.resolve(name))) {
+                Files.copy(built.resolve(name), target.resolve(name), StandardCopyOption.COPY_ATTRIBUTES);
+            }
+        }
+        return tree;
+    }
+
+    @Test
+    void launcherInAReadOnlyTreeKeepsItsClassDataInTheUsersCache(@TempDir Path dir) throws Exception {
+        // A tree whose class data was made where it was written, then used read-only at another path (an installed
+        // or mounted tree): the class data beside the jar does not fit and that folder cannot be written.
+        Path tree = copyTree(dir.resolve("tree"));
+        Path ro = Files.createDirectories(dir.resolve("ro"));
+        Path cache = dir.resolve("cache");
+        Path log = dir.resolve("classes-loaded.log");
+        List<String> validate = List.of("./rsaml", "validate", "examples/exp2-defects.rsaml");
+        Cli.Result normal = Cli.process(tree, validate);
+        assertEquals(1, normal.code(), normal::toString);
+        assertTrue(normal.out().endsWith(ValidateCommandTest.exp2Summary() + "\n"), normal::toString);
+
+        // As root (CI, containers) file permissions do not stop writes, so the tree is bind-mounted read-only in a
+        // mount namespace of the run's own; otherwise it is moved and made read-only. Either way the run first
+        // checks that it cannot write beside the jar, and fails the test if it can.
+        boolean root = "root".equals(System.getProperty("user.name"));
+        if (!root) {
+            Files.delete(ro);
+            Files.move(tree, ro);
+            assertEquals(0, Cli.process(dir, List.of("chmod", "-R", "a-w", ro.toString())).code(), "chmod");
+        }
+        String script = (root ? "mount --bind \"$1\" \"$2\" && mount -o remount,bind,ro \"$2\" && " : "")
+                + "cd \"$2\" && if touch cli/org.rsaml.cli/target/probe 2>/dev/null; then echo 'the tree is writable' >&2; exit 99; fi"
+                + " && exec env XDG_CACHE_HOME=\"$3\" RSAML_JAVA_OPTS=-Xlog:class+load=info:file=\"$4\" ./rsaml validate examples/exp2-defects.rsaml";
+        List<String> readOnly = new java.util.ArrayList<>(root ? List.of("unshare", "-m") : List.of());
+        readOnly.addAll(List.of("sh", "-c", script, "sh", tree.toString(), ro.toString(), cache.toString(), log.toString()));
+        try {
+            Cli.Result first = Cli.process(dir, readOnly);
+            assertEquals(normal.code(), first.code(), first::toString);
+            assertEquals(normal.out(), first.out(), "the same report as in a writable tree");
+            assertEquals("", first.err(), "no error and no JVM warning: the class data was made in the user's cache");
+            List<Path> kept;
+            try (var folders = Files.list(cache.resolve("rsaml"))) {
+                kept = folders.toList();
+            }
+            assertEquals(1, kept.size(), () -> "one folder of class data for this jar: " + kept);
+            assertEquals("rwx------", java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(kept.get(0))),
+                    "the user's class data is the user's alone");
+            Path data;
+            try (var files = Files.list(kept.get(0))) {
+                data = files.filter(f -> f.toString().endsWith(".jsa") || f.toString().endsWith(".aot")).findFirst().orElseThrow();
+            }
+            String loaded = Files.readString(log);
+            assertTrue(loaded.contains("org.rsaml.cli.ValidateCommand source: shared objects file"),
+                    () -> "RsaML's classes come from the class data in the user's cache");
+            Object made = Files.readAttributes(data, java.nio.file.attribute.BasicFileAttributes.class).fileKey();
+            FileTime madeAt = Files.getLastModifiedTime(data);
+
+            Cli.Result second = Cli.process(dir, readOnly);
+            assertEquals(normal.code(), second.code(), second::toString);
+            assertEquals(normal.out(), second.out(), "the same report again");
+            assertEquals("", second.err(), second::toString);
+            assertEquals(made, Files.readAttributes(data, java.nio.file.attribute.BasicFileAttributes.class).fileKey(),
+                    "no training on every run: the second run used the class data the first one made");
+            assertEquals(madeAt, Files.getLastModifiedTime(data), "the class data was not made again");
+
+            // Nowhere to keep class data (the cache is inside the read-only tree): the run goes on without it, and says why.
+            List<String> nowhere = new java.util.ArrayList<>(readOnly);
+            nowhere.set(nowhere.size() - 2, ro.resolve("examples/cache").toString());
+            Cli.Result without = Cli.process(dir, nowhere);
+            assertEquals(normal.code(), without.code(), without::toString);
+            assertEquals(normal.out(), without.out(), "the same report without class data");
+            assertTrue(without.err().startsWith("rsaml: starting without class data: neither ")
+                    && without.err().lines().count() == 1, () -> "one line on standard error says why:\n" + without);
+        } finally {
+            if (!root) {
+                Cli.process(dir, List.of("chmod", "-R", "u+w", ro.toString()));
+            }
+        }
     }
 
     @Test
