@@ -24,10 +24,13 @@ public final class AnalysisCounts {
     public long jobs;
     /** Steps of the fixed-point iterations (an interference evaluated at a window). */
     public long iterations;
-    /** Heap steps of the first jobs' interference: an entry whose job count changed (or was counted afresh). */
+    /** Entries of the first jobs' interference recounted: their job count changed (or was counted afresh). */
     public long firstJobSteps;
-    /** Heap steps of the later jobs' interference ({@code Interference.Later}). */
+    /** Entries of the later jobs' interference recounted ({@code Interference.Later}). */
     public long laterJobSteps;
+    /** Buckets of the interference's calendars passed, and entries looked at in them (recounted or filed back). */
+    public long bucketsPassed;
+    public long entriesLookedAt;
     /** The largest window (ns) a task's busy period reached: its length, for the last job. */
     public long longestBusyPeriod;
     /** Tasks tied at a shared level whose every window was read from the level's one walk ({@code LevelExcess}). */
@@ -60,9 +63,9 @@ public final class AnalysisCounts {
     @Override
     public String toString() {
         return String.format(java.util.Locale.ROOT,
-                "tasks %,d (overloaded %,d), jobs %,d, iterations %,d, heap steps %,d first + %,d later, longest busy period %,d ns,"
+                "tasks %,d (overloaded %,d), jobs %,d, iterations %,d, entries recounted %,d first + %,d later (buckets passed %,d, entries looked at %,d), longest busy period %,d ns,"
                         + " tied %,d read + %,d iterated (%,d levels, %,d releases), summaries %,d (%,d nodes opened)",
-                tasks, overloaded, jobs, iterations, firstJobSteps, laterJobSteps, longestBusyPeriod, tiedDecided, tiedIterated,
+                tasks, overloaded, jobs, iterations, firstJobSteps, laterJobSteps, bucketsPassed, entriesLookedAt, longestBusyPeriod, tiedDecided, tiedIterated,
                 levelsWalked, levelReleases, summaries, nodesOpened);
     }
 }

@@ -40,9 +40,9 @@ final class Interference {
         }
     }
 
-    /** Entries whose counts were recounted, for {@link AnalysisCounts}. */
-    long steps() {
-        return calendar.steps;
+    /** The calendar, whose counts {@link AnalysisCounts} adds up. */
+    Calendar calendar() {
+        return calendar;
     }
 
     /** Entry {@code k}, the next one, has been filled in (its cost may still be 0). */
@@ -137,8 +137,10 @@ final class Interference {
         final int mask;
         /** The bucket of a limit is (limit &gt;&gt; shift) &amp; mask. */
         int shift;
-        /** Entries recounted, for {@link AnalysisCounts}. */
+        /** Entries recounted, buckets passed and entries looked at in them, for {@link AnalysisCounts}. */
         long steps;
+        long passed;
+        long looked;
 
         Calendar(int size) {
             jobs = new long[size];
@@ -188,11 +190,13 @@ final class Interference {
             }
             long from = w >> shift;
             long buckets = Math.min(((window - 1) >> shift) - from + 1, head.length);
+            passed += buckets;
             for (long i = 0; i < buckets; i++) {
                 int b = (int) (from + i) & mask;
                 int k = head[b];
                 head[b] = -1;
                 while (k >= 0) {
+                    looked++;
                     int after = next[k];
                     if (limit[k] < window) {
                         steps++;
@@ -240,9 +244,9 @@ final class Interference {
             this.touched = new int[size];
         }
 
-        /** Entries recounted, for {@link AnalysisCounts}. */
-        long steps() {
-            return own.steps;
+        /** The calendar of the entries taken, whose counts {@link AnalysisCounts} adds up. */
+        Calendar calendar() {
+            return own;
         }
 
         /** Empties this calendar: only the buckets of the entries it holds. */
@@ -312,8 +316,10 @@ final class Interference {
                 Calendar from = first.calendar;
                 long to = (window - 1) >> from.shift;
                 long last = Math.min(to, firstFrom + from.head.length - 1);
+                own.passed += last - firstFrom + 1;
                 for (long i = firstFrom; i <= last; i++) {
                     for (int k = from.head[(int) i & from.mask]; k >= 0; k = from.next[k]) {
+                        own.looked++;
                         if (taken[k] != mark && from.limit[k] < window) {
                             own.steps++;
                             take(k);

@@ -139,8 +139,10 @@ public final class PriorityLevels {
         }
         if (counts != null) {
             counts.iterations += interference.evaluations + later.evaluations;
-            counts.firstJobSteps += interference.steps();
-            counts.laterJobSteps += later.steps();
+            counts.firstJobSteps += interference.calendar().steps;
+            counts.laterJobSteps += later.calendar().steps;
+            counts.bucketsPassed += interference.calendar().passed + later.calendar().passed;
+            counts.entriesLookedAt += interference.calendar().looked + later.calendar().looked;
             counts.summaries += prefix.summaries;
             counts.nodesOpened += prefix.opened;
         }

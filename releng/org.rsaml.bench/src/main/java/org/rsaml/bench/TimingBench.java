@@ -39,7 +39,7 @@ import org.rsaml.model.SchedulingPolicy;
  * size before (1.0: linear); (2) an architecture of M periodic modules on 4
  * processors, each module connected to the next and every 50th also three ahead, with 100 latency
  * requirements each spanning 10 modules. Prints Markdown tables of medians, and beside each row of (1) what the analysis
- * did there, counted in a run of its own ({@link AnalysisCounts}): jobs, iteration steps, heap steps, the longest busy
+ * did there, counted in a run of its own ({@link AnalysisCounts}): jobs, iteration steps, entries recounted, the longest busy
  * period, tied tasks read from a level's walk, the summary witnesses' nodes opened. {@code -Drsaml.bench.timing=key,...}
  * picks workloads of (1) (harmonic, periods12, distinct-0.8, distinct-0.99, fifo, round-robin; all by default).
  */
@@ -138,9 +138,9 @@ public final class TimingBench {
         System.out.println();
         System.out.println("| tasks on one processor | n | analysis, CPU time (median) | wall time | per task | anchor: the tasks sorted by"
                 + " period, CPU time | ÷ anchor | growth ÷ growth of n (the same set at the size before) | verdict | misses"
-                + " | critical-instant schedules (segments) | jobs of the busy periods | iteration steps | heap steps (first jobs + later jobs)"
-                + " | heap steps ÷ n | longest busy period | tied tasks read from the level's walk / iterated | summary nodes opened (per summary) |");
-        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+                + " | critical-instant schedules (segments) | jobs of the busy periods | iteration steps | entries recounted (first jobs + later jobs)"
+                + " | recounted ÷ n | calendar buckets passed | entries looked at | longest busy period | tied tasks read from the level's walk / iterated | summary nodes opened (per summary) |");
+        System.out.println("|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
         for (Workload w : workloads) {
             long previous = -1;
             int previousN = 0;
@@ -157,10 +157,10 @@ public final class TimingBench {
                 AnalysisCounts c = new AnalysisCounts();
                 c.during(() -> SchedulabilityAnalysis.analyse("cpu", org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY, tasks, w.fifo().apply(tasks)));
                 System.out.printf("| %s | %,d | %,d ms (%d runs) | %,d ms | %.1f µs | %.2f ms | %.0f× | %s | %s (U = %s) | %,d | %,d (%,d)"
-                        + " | %,d | %,d | %,d + %,d | %.0f | %s | %,d / %,d | %,d (%s) |%n",
+                        + " | %,d | %,d | %,d + %,d | %.0f | %,d | %,d | %s | %,d / %,d | %,d (%s) |%n",
                         w.name(), n, timed.cpuNs() / MS, timed.runs(), timed.wallNs() / MS, timed.cpuNs() / 1e3 / n, anchor / 1e6,
                         (double) timed.cpuNs() / Math.max(1, anchor), growth, r.verdict(), r.utilisationText(), misses, schedules, segments,
-                        c.jobs, c.iterations, c.firstJobSteps, c.laterJobSteps, (double) (c.firstJobSteps + c.laterJobSteps) / n,
+                        c.jobs, c.iterations, c.firstJobSteps, c.laterJobSteps, (double) (c.firstJobSteps + c.laterJobSteps) / n, c.bucketsPassed, c.entriesLookedAt,
                         c.longestBusyPeriod <= 0 ? "" : org.rsaml.model.support.RsamlTimes.text(c.longestBusyPeriod), c.tiedDecided, c.tiedIterated,
                         c.nodesOpened, c.summaries == 0 ? "" : String.format("%.0f", (double) c.nodesOpened / c.summaries));
                 previous = Math.max(1, timed.cpuNs());
