@@ -53,6 +53,14 @@ public enum TimingFailOn {
     }
 
     /**
+     * How seriously a front end shows a model's verdict under this level (the level a build log gives its lines): an
+     * error when it fails the run, a warning when it falls short of "meets" without failing it, else information.
+     */
+    public Severity shown(Verdict verdict) {
+        return fails(verdict) ? Severity.ERROR : verdict != Verdict.MEETS ? Severity.WARNING : Severity.INFO;
+    }
+
+    /**
      * The lowest severity of the timing rules' findings ({@code Rules.timing()}) that fails the run in the
      * SARIF and JUnit reports: the errors are the misses, "not analysed" is a warning.
      */

@@ -53,6 +53,10 @@ class FailOnTest {
         assertFalse(miss.fails(Verdict.NOT_ANALYSED), "what is not analysed does not fail by default");
         assertFalse(miss.fails(Verdict.MEETS), "a proven model passes");
         assertEquals(Severity.ERROR, miss.findingThreshold(), "in SARIF and JUnit, the timing rules' errors (the misses) fail");
+        assertEquals(Severity.ERROR, miss.shown(Verdict.MISSES), "a verdict that fails the run is shown as an error");
+        assertEquals(Severity.WARNING, miss.shown(Verdict.NOT_ANALYSED), "short of meets without failing: a warning");
+        assertEquals(Severity.INFO, miss.shown(Verdict.MEETS), "a proven model: information");
+        assertEquals(Severity.WARNING, TimingFailOn.NEVER.shown(Verdict.MISSES), "a miss that fails nothing is a warning");
     }
 
     @Test

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 import java.util.function.Function;
 
 import org.apache.maven.plugin.AbstractMojo;
@@ -24,6 +25,7 @@ import org.rsaml.report.ReportFormat;
 import org.rsaml.report.ReportOptions;
 import org.rsaml.report.Text;
 import org.rsaml.validation.Finding;
+import org.rsaml.validation.Severity;
 
 /** What every RsaML goal shares: {@code skip}, the project's paths, fail-on levels, findings in the build log. */
 abstract class AbstractRsamlMojo extends AbstractMojo {
@@ -80,14 +82,19 @@ abstract class AbstractRsamlMojo extends AbstractMojo {
                 }
             }
             for (Finding finding : result.findings()) {
-                String line = Text.line(finding.toString());
-                switch (finding.severity()) {
-                    case ERROR -> log.error(line);
-                    case WARNING -> log.warn(line);
-                    case INFO -> log.info(line);
-                }
+                logAt(finding.severity()).accept(Text.line(finding.toString()));
             }
         }
+    }
+
+    /** The build log's method for lines of {@code severity}: a finding's, or how a verdict is shown. */
+    Consumer<CharSequence> logAt(Severity severity) {
+        Log log = getLog();
+        return switch (severity) {
+            case ERROR -> log::error;
+            case WARNING -> log::warn;
+            case INFO -> log::info;
+        };
     }
 
     /** The report formats a goal's {@code parameter} names; blank entries are ignored. */
