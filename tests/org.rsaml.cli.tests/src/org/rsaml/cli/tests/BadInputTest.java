@@ -69,7 +69,7 @@ class BadInputTest {
         Cli.Result plain = Cli.runIn(Cli.INPUTS, "validate", "malformed.rsaml");
         assertNoStackTrace(plain);
         Cli.Result debug = Cli.runIn(Cli.INPUTS, "--debug", "validate", "malformed.rsaml");
-        assertEquals(2, debug.code());
+        assertEquals(2, debug.code(), debug::toString);
         assertTrue(debug.err().contains("malformed.rsaml: cause of the error above:"), debug::toString);
         assertTrue(debug.err().contains("\tat "), debug::toString);
     }
@@ -77,7 +77,7 @@ class BadInputTest {
     @Test
     void structuredFormatsAlsoTellAPersonOnStandardError() {
         Cli.Result r = Cli.runIn(Cli.INPUTS, "validate", "--format", "json", "empty.rsaml");
-        assertEquals(2, r.code());
+        assertEquals(2, r.code(), r::toString);
         assertTrue(r.err().startsWith("empty.rsaml: error: the file is empty"), r::toString);
         assertTrue(r.out().startsWith("{"), r::toString);
     }

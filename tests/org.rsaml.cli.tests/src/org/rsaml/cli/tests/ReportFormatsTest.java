@@ -70,7 +70,7 @@ class ReportFormatsTest {
         Cli.Result r = Cli.run("validate", "--format", "json", "examples", "tests/org.rsaml.cli.tests/resources/inputs/empty.rsaml");
         assertEquals(2, r.code(), r::toString);
         JsonObject doc = JsonParser.parseString(r.out()).getAsJsonObject();
-        assertEquals(System.getProperty("rsaml.version"), doc.getAsJsonObject("tool").get("version").getAsString());
+        assertEquals(System.getProperty("rsaml.version"), doc.getAsJsonObject("tool").get("version").getAsString(), "the tool's version is the build's");
         JsonArray files = doc.getAsJsonArray("files");
         List<String> examples = ValidateCommandTest.exampleModels();
         assertEquals(examples.size() + 1, files.size(), "every example and the empty file are listed: " + files);
@@ -107,20 +107,20 @@ class ReportFormatsTest {
         assertEquals(examples.size(), summary.get("files").getAsInt(), "the summary counts the readable files");
         long errors = expected.stream().filter(e -> e.severity().equals("error")).count() + 1;
         assertEquals(errors, summary.get("errors").getAsInt(), "exp2-defects' errors and the missed latency requirement");
-        assertEquals(1, summary.get("unreadable").getAsInt());
-        assertEquals(2, summary.get("exitCode").getAsInt());
+        assertEquals(1, summary.get("unreadable").getAsInt(), "the malformed input is counted as unreadable");
+        assertEquals(2, summary.get("exitCode").getAsInt(), "an unreadable input makes the exit code 2, and the summary says so");
     }
 
     @Test
     void sarifConformsToTheSchemaAndLocatesEveryFinding() throws Exception {
         Cli.Result r = Cli.run("validate", "--format", "sarif", "examples", "tests/org.rsaml.cli.tests/resources/inputs/malformed.rsaml");
         assertEquals(2, r.code(), r::toString);
-        assertEquals(Set.of(), sarifProblems(r.out()));
+        assertEquals(Set.of(), sarifProblems(r.out()), "the SARIF output conforms to the SARIF 2.1.0 schema");
         JsonObject run = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject();
         JsonObject driver = run.getAsJsonObject("tool").getAsJsonObject("driver");
-        assertEquals("rsaml", driver.get("name").getAsString());
+        assertEquals("rsaml", driver.get("name").getAsString(), "the driver is rsaml");
         JsonArray rules = driver.getAsJsonArray("rules");
-        assertEquals(Rules.all().size(), rules.size());
+        assertEquals(Rules.all().size(), rules.size(), "the driver lists every rule of the catalogue");
         for (var element : rules) {
             JsonObject rule = element.getAsJsonObject();
             Rule catalogued = Rules.byId(rule.get("id").getAsString()).orElseThrow(() -> new AssertionError("a driver rule of the catalogue: " + rule));
@@ -156,9 +156,9 @@ class ReportFormatsTest {
         assertEquals(expected, seen, "each result in its file, located where the model's expectation says");
 
         JsonObject invocation = run.getAsJsonArray("invocations").get(0).getAsJsonObject();
-        assertFalse(invocation.get("executionSuccessful").getAsBoolean());
+        assertFalse(invocation.get("executionSuccessful").getAsBoolean(), "an unreadable input makes the invocation unsuccessful");
         JsonObject notification = invocation.getAsJsonArray("toolExecutionNotifications").get(0).getAsJsonObject();
-        assertTrue(notification.getAsJsonObject("message").get("text").getAsString().startsWith("malformed XML"));
+        assertTrue(notification.getAsJsonObject("message").get("text").getAsString().startsWith("malformed XML"), "the notification says why the input could not be read");
         assertEquals(6, notification.getAsJsonArray("locations").get(0).getAsJsonObject().getAsJsonObject("physicalLocation")
                 .getAsJsonObject("region").get("startLine").getAsInt());
     }
@@ -219,7 +219,7 @@ class ReportFormatsTest {
         assertTrue(finding.get("message").getAsString().length() < 1000, "JSON message summarised");
 
         String sarif = Cli.runIn(dir, "validate", "--format", "sarif", "long-path.rsaml").out();
-        assertEquals(Set.of(), sarifProblems(sarif));
+        assertEquals(Set.of(), sarifProblems(sarif), "the SARIF report conforms to the SARIF 2.1.0 schema");
         boolean whole = false;
         for (var r : JsonParser.parseString(sarif).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject().getAsJsonArray("results")) {
             JsonObject o = r.getAsJsonObject();
@@ -242,10 +242,10 @@ class ReportFormatsTest {
     void sarifNamesFilesWithSpacesAsUris() throws Exception {
         Cli.Result r = Cli.runIn(Cli.INPUTS, "validate", "--format", "sarif", "--fail-on", "never", "dir with space", "warnings-only.rsaml");
         assertEquals(0, r.code(), r::toString);
-        assertEquals(Set.of(), sarifProblems(r.out()));
+        assertEquals(Set.of(), sarifProblems(r.out()), "the SARIF output conforms to the SARIF 2.1.0 schema");
         JsonObject result = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
                 .getAsJsonArray("results").get(0).getAsJsonObject();
-        assertEquals("warning", result.get("level").getAsString());
+        assertEquals("warning", result.get("level").getAsString(), "the result has its finding's severity");
         assertEquals("RSA-11", result.get("ruleId").getAsString());
         assertTrue(r.out().contains(Cli.INPUTS.toUri().toString()), "the base URI is the working directory");
     }
@@ -308,12 +308,12 @@ class ReportFormatsTest {
                 Cli.ROOT.resolve("examples").toString());
         assertEquals(1, r.code(), r::toString);
         assertTrue(r.out().contains("error RSA-08"), r::toString);
-        assertEquals(Set.of(), sarifProblems(Files.readString(dir.resolve("reports/rsaml.sarif"))));
+        assertEquals(Set.of(), sarifProblems(Files.readString(dir.resolve("reports/rsaml.sarif"))), "the SARIF file conforms to the schema");
         long errors = ValidateCommandTest.exampleModels().stream().flatMap(m -> expectations(m).stream())
                 .filter(e -> e.severity().equals("error")).count();
         assertEquals(errors, JsonParser.parseString(Files.readString(dir.resolve("reports/rsaml.json"))).getAsJsonObject()
                 .getAsJsonObject("summary").get("errors").getAsInt(), "the JSON report counts the errors the examples state");
-        assertTrue(Files.readString(dir.resolve("reports/TEST-rsaml.xml")).startsWith("<?xml"));
+        assertTrue(Files.readString(dir.resolve("reports/TEST-rsaml.xml")).startsWith("<?xml"), "the JUnit file is XML");
         try (var listing = Files.list(dir.resolve("reports"))) {
             assertEquals(3, listing.count(), "no temporary file is left behind");
         }
@@ -333,7 +333,7 @@ class ReportFormatsTest {
         try (var listing = Files.list(dir)) {
             assertEquals(3, listing.count(), "no temporary or partial file is left behind");
         }
-        assertTrue(Files.isDirectory(dir.resolve("taken.sarif")));
+        assertTrue(Files.isDirectory(dir.resolve("taken.sarif")), "the directory in the report's place is left as it was");
     }
 
     @Test
@@ -365,10 +365,10 @@ class ReportFormatsTest {
             fromJson.add(name + ":" + error.get("line").getAsInt() + ":" + error.get("column").getAsInt() + ": error: "
                     + error.get("message").getAsString());
         }
-        assertEquals(lines, fromJson);
+        assertEquals(lines, fromJson, "the JSON report holds the same input errors as the text output");
 
         String sarif = Files.readString(dir.resolve("r.sarif"));
-        assertEquals(Set.of(), sarifProblems(sarif));
+        assertEquals(Set.of(), sarifProblems(sarif), "the SARIF report conforms to the SARIF 2.1.0 schema");
         JsonArray notifications = JsonParser.parseString(sarif).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
                 .getAsJsonArray("invocations").get(0).getAsJsonObject().getAsJsonArray("toolExecutionNotifications");
         List<String> fromSarif = new ArrayList<>();
@@ -379,16 +379,16 @@ class ReportFormatsTest {
             fromSarif.add(name + ":" + region.get("startLine").getAsInt() + ":" + region.get("startColumn").getAsInt() + ": error: "
                     + notification.getAsJsonObject("message").get("text").getAsString());
         }
-        assertEquals(lines, fromSarif);
+        assertEquals(lines, fromSarif, "the SARIF notifications are the same input errors as the text output");
 
         List<ReportTestSuite> suites;
         try (InputStreamReader in = new InputStreamReader(Files.newInputStream(dir.resolve("r.xml")), StandardCharsets.UTF_8)) {
             suites = new TestSuiteXmlParser(new NullConsoleLogger()).parse(in);
         }
         ReportTestCase load = suites.get(0).getTestCases().get(0);
-        assertTrue(load.hasError());
+        assertTrue(load.hasError(), "the unreadable input is a JUnit error");
         assertTrue(load.getFailureMessage().endsWith("(and 11 more errors, all listed in the text below)"), load.getFailureMessage());
-        assertEquals(lines, load.getFailureDetail().lines().toList());
+        assertEquals(lines, load.getFailureDetail().lines().toList(), "the JUnit error carries every input error's line");
 
         // Generation refuses the model with the same lines.
         Cli.Result generate = Cli.runIn(Cli.INPUTS, "generate", "--target", "cpp", "-o", dir.resolve("out").toString(), name);

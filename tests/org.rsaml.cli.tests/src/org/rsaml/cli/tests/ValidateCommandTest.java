@@ -171,11 +171,11 @@ class ValidateCommandTest {
     @Test
     void quietPrintsWhatFailsTheRunAndItsSummary() {
         Cli.Result warnings = Cli.run("validate", "--quiet", Cli.INPUTS.resolve("warnings-only.rsaml").toString());
-        assertEquals(0, warnings.code());
+        assertEquals(0, warnings.code(), warnings::toString);
         assertEquals("", warnings.out(), warnings::toString);
 
         Cli.Result errors = Cli.run("validate", "-q", "examples/exp2-defects.rsaml");
-        assertEquals(1, errors.code());
+        assertEquals(1, errors.code(), errors::toString);
         List<String> expected = new java.util.ArrayList<>(EXP2_FINDINGS);
         expected.add(exp2Summary());
         assertEquals(expected, errors.outLines());
@@ -217,7 +217,7 @@ class ValidateCommandTest {
     @Test
     void aFileNamedTwiceIsValidatedOnce() {
         Cli.Result r = Cli.run("validate", "examples/exp2-defects.rsaml", "examples", "./examples/exp2-defects.rsaml");
-        assertEquals(1, r.code());
+        assertEquals(1, r.code(), r::toString);
         assertEquals(EXAMPLES_FINDINGS.size() + EXAMPLES_CLEAN.size() + 1, r.outLines().size(), r::toString);
         assertTrue(r.out().contains(exampleModels().size() + " files checked"), r::toString);
     }
