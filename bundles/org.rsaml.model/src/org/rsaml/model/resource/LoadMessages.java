@@ -278,6 +278,11 @@ final class LoadMessages {
     private static String illegalValue(IllegalValueException v) {
         EStructuralFeature feature = v.getFeature();
         Object value = v.getValue();
+        if (value instanceof EObject o && feature.isMany() && feature.getEType().isInstance(o) && v.getObject() != null
+                && v.getObject().eGet(feature) instanceof java.util.List<?> values && values.contains(o)) {
+            // EMF refuses a second mention of one element in a reference that holds each element once
+            return "reference " + feature.getName() + " names " + label(o) + " twice: name each element once";
+        }
         if (value instanceof EObject o) {
             String expected = feature.getEType() instanceof EClass type && (type.isAbstract() || type.isInterface())
                     ? or(concreteSubclasses(type).stream().map(k -> article(k.getName())).toList())

@@ -106,6 +106,20 @@ class LoadErrorsTest {
     }
 
     @Test
+    void anElementNamedTwiceInAReferenceThatHoldsEachOnceIsSaidSo() throws Exception {
+        Path file = write(dir, "via.rsaml", model("""
+                  <layers name="a">
+                    <modules name="detector"/>
+                  </layers>
+                  <latencyRequirements name="r" maxLatency="10.0" via="//@layers.0/@modules.0 //@layers.0/@modules.0"/>
+                """));
+        Resource.Diagnostic d = open(file).getErrors().get(0);
+        assertEquals("reference via names 'detector' twice: name each element once", d.getMessage(),
+                "the duplicate is the problem, not the kind of element");
+        assertEquals("6:3", d.getLine() + ":" + d.getColumn());
+    }
+
+    @Test
     void aRootInNoNamespaceIsNamed() throws Exception {
         Resource r = open(write(dir, "plain.rsaml", "<?xml version=\"1.0\"?>\n<Architecture name=\"r\"/>\n"));
         assertEquals("2:1: element 'Architecture' is in no namespace, so this is not an RsaML model; an RsaML model's root is"
