@@ -56,10 +56,20 @@ public final class ModelFiles {
                     entries.add(unusable(shown, "cannot list the directory: " + reason(e)));
                     continue;
                 }
-                if (found.isEmpty()) {
+                Path folder = realPath(path);
+                List<Input> refusedLinks = new ArrayList<>();
+                for (Path link : directoryLinksUnder(path)) {
+                    Path target = realPath(link);
+                    if (folder != null && target != null && !target.startsWith(folder) && hasModels(target)) {
+                        // Walking the folder does not follow links to directories; one that leads out is said, as a file link is.
+                        refusedLinks.add(unusable(display(named.resolve(path.relativize(link)).normalize()), "refused: a symbolic link"
+                                + " to a directory leads out of the folder '" + shown + "' (to " + display(target)
+                                + "), so its models are not validated; name the target itself to validate them"));
+                    }
+                }
+                if (found.isEmpty() && refusedLinks.isEmpty()) {
                     entries.add(unusable(shown, "no " + EXTENSION + " (or ." + ModelFormats.TEXT_EXTENSION + ") files in this directory or below it"));
                 }
-                Path folder = realPath(path);
                 for (Path file : found) {
                     String fileShown = display(named.resolve(path.relativize(file)).normalize());
                     Path target = realPath(file);
@@ -71,6 +81,7 @@ public final class ModelFiles {
                     }
                     add(entries, seen, file, fileShown);
                 }
+                entries.addAll(refusedLinks);
             } else if (Files.exists(path)) {
                 add(entries, seen, path, shown);
             } else {
@@ -89,6 +100,24 @@ public final class ModelFiles {
                     .filter(Files::isRegularFile)
                     .sorted()
                     .toList();
+        }
+    }
+
+    /** The symbolic links to directories under a directory (not followed by {@link #modelsUnder}), sorted; hidden folders are skipped. */
+    private static List<Path> directoryLinksUnder(Path directory) {
+        try (Stream<Path> walk = Files.walk(directory)) {
+            return walk.filter(p -> !hiddenBelow(directory, p)).filter(p -> Files.isSymbolicLink(p) && Files.isDirectory(p)).sorted().toList();
+        } catch (IOException | UncheckedIOException e) {
+            return List.of(); // the directory's own listing reports what cannot be read
+        }
+    }
+
+    /** Whether a directory holds model files (its own links to directories not followed). */
+    private static boolean hasModels(Path directory) {
+        try {
+            return !modelsUnder(directory).isEmpty();
+        } catch (IOException | UncheckedIOException e) {
+            return false;
         }
     }
 

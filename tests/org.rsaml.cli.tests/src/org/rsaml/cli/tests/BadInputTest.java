@@ -139,6 +139,24 @@ class BadInputTest {
         assertNoStackTrace(r);
     }
 
+    @Test
+    void aFolderIsValidatedWithoutFollowingADirectoryLinkOutOfItAndSaysSo(@TempDir Path dir) throws Exception {
+        Path outside = Files.createDirectories(dir.resolve("elsewhere"));
+        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), outside.resolve("secret.rsaml"));
+        Path folder = Files.createDirectories(dir.resolve("models"));
+        Files.copy(Cli.INPUTS.resolve("clean.rsaml"), folder.resolve("clean.rsaml"));
+        Files.createSymbolicLink(folder.resolve("linkdir"), outside);
+        Files.createSymbolicLink(folder.resolve("same"), Path.of("."));
+        Cli.Result r = Cli.runIn(dir, "validate", "models");
+        assertEquals(2, r.code(), r::toString);
+        assertTrue(r.out().contains("models/linkdir: error: refused: a symbolic link to a directory leads out of the folder 'models'"),
+                r::toString);
+        assertFalse(r.out().contains("RSA-"), () -> "the link's models were not read\n" + r);
+        assertFalse(r.out().contains("models/same"), () -> "a link that stays in the folder is not refused\n" + r);
+        assertEquals("1 file checked: 0 errors, 0 warnings; 1 input could not be read", r.outLines().get(r.outLines().size() - 1), r::toString);
+        assertNoStackTrace(r);
+    }
+
     /**
      * A model that fits the heap is read under every collector: the check that gives up before the
      * collector thrashes looks at what the old generation keeps after a collection, not at the young
