@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 
+import org.rsaml.model.support.RsamlNames;
 import org.rsaml.model.support.RsamlPackages;
 import org.rsaml.model.support.RsamlText;
 
@@ -20,33 +21,6 @@ public final class Names {
 
     private Names() {
     }
-
-    /** C++17 keywords and alternative tokens, and names the generated code or common headers take. */
-    static final Set<String> CPP_RESERVED = Set.of("alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand",
-            "bitor", "bool", "break", "case", "catch", "char", "char8_t", "char16_t", "char32_t", "class", "compl",
-            "concept", "const", "consteval", "constexpr", "constinit", "const_cast", "continue", "co_await",
-            "co_return", "co_yield", "decltype", "default", "delete", "do", "double", "dynamic_cast", "else", "enum",
-            "explicit", "export", "extern", "false", "float", "for", "friend", "goto", "if", "inline", "int", "long",
-            "mutable", "namespace", "new", "noexcept", "not", "not_eq", "nullptr", "operator", "or", "or_eq",
-            "private", "protected", "public", "register", "reinterpret_cast", "requires", "return", "short",
-            "signed", "sizeof", "static", "static_assert", "static_cast", "struct", "switch", "template", "this",
-            "thread_local", "throw", "true", "try", "typedef", "typeid", "typename", "union", "unsigned", "using",
-            "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq", "final", "override", "import",
-            "module",
-            // Macros of the C library and of GCC's GNU modes, and namespaces the generated code uses.
-            "NULL", "EOF", "assert", "errno", "stdin", "stdout", "stderr", "linux", "unix", "i386", "main", "std",
-            "rsaml", "rclcpp", "msg");
-
-    /** Python keywords and soft keywords (launch files). */
-    static final Set<String> PYTHON_RESERVED = Set.of("False", "None", "True", "and", "as", "assert", "async",
-            "await", "break", "class", "continue", "def", "del", "elif", "else", "except", "finally", "for", "from",
-            "global", "if", "import", "in", "is", "lambda", "nonlocal", "not", "or", "pass", "raise", "return", "try",
-            "while", "with", "yield", "match", "case", "type");
-
-    /** Device names Windows refuses as file names, whatever the extension. */
-    private static final Set<String> WINDOWS_DEVICES = Set.of("con", "prn", "aux", "nul", "com1", "com2", "com3",
-            "com4", "com5", "com6", "com7", "com8", "com9", "lpt1", "lpt2", "lpt3", "lpt4", "lpt5", "lpt6", "lpt7",
-            "lpt8", "lpt9");
 
     /**
      * The name as an identifier: every character outside {@code [A-Za-z0-9_]} (path separators,
@@ -91,20 +65,14 @@ public final class Names {
         return reserved(s) ? s + "_" : s;
     }
 
-    /** {@code eMoveSP} to {@code e_move_sp}: for ROS package, node, executable and topic names. */
+    /** {@code eMoveSP} to {@code e_move_sp}: for ROS package, node, executable and topic names ({@link RsamlNames#snake}). */
     public static String snake(String raw) {
-        List<String> words = words(raw);
-        String s = words.isEmpty() ? "unnamed" : String.join("_", words).toLowerCase(Locale.ROOT);
-        if (Character.isDigit(s.charAt(0))) {
-            s = "n" + s;
-        }
-        return reserved(s) ? s + "_" : s;
+        return RsamlNames.snake(raw);
     }
 
-    /** Whether a name may not be used as it is in generated code or as a file name. */
+    /** Whether a name may not be used as it is in generated code or as a file name ({@link RsamlNames#reserved}). */
     public static boolean reserved(String s) {
-        return CPP_RESERVED.contains(s) || PYTHON_RESERVED.contains(s)
-                || WINDOWS_DEVICES.contains(s.toLowerCase(Locale.ROOT));
+        return RsamlNames.reserved(s);
     }
 
     /**

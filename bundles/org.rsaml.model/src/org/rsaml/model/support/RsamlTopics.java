@@ -40,6 +40,14 @@ public final class RsamlTopics {
      */
     private static final Pattern TOPIC = Pattern.compile("/?[A-Za-z_][A-Za-z0-9_]*(?:/[A-Za-z_][A-Za-z0-9_]*)*");
 
+    /** The longest full topic name (with its leading slash) ROS 2 takes: RMW_TOPIC_MAX_NAME_LENGTH, 255 less 8 for prefixes. */
+    public static final int MAX_FULL_NAME = 255 - 8;
+
+    /** The topics every ROS 2 node uses in the root namespace, with what they carry. */
+    private static final Map<String, String> ROS2_TOPICS = Map.of(
+            "rosout", "every node publishes its log messages there as rcl_interfaces/msg/Log",
+            "parameter_events", "every node publishes its parameter changes there as rcl_interfaces/msg/ParameterEvent");
+
     private RsamlTopics() {
     }
 
@@ -91,8 +99,8 @@ public final class RsamlTopics {
 
     /**
      * What makes the topic this port names unusable (completing "output port 'x' of module 'm' "),
-     * or null: it is not a valid ROS 2 name, a port connected to it names another topic, or a port
-     * it is not connected to names the same topic. One port's answer reads the whole architecture:
+     * or null: it is not a valid ROS 2 name, its full name is longer than ROS 2 takes, ROS 2 itself uses
+     * it, a port connected to it names another topic, or a port it is not connected to names the same topic. One port's answer reads the whole architecture:
      * to check every port, take {@link #table} once and ask it.
      */
     public static String problem(Port port) {
@@ -100,18 +108,17 @@ public final class RsamlTopics {
             return null;
         }
         Architecture architecture = architecture(port);
-        return architecture == null ? new Table(List.of(connected(port))).problem(port) : table(architecture).problem(port);
+        return architecture == null ? new Table(List.of(connected(port)), null).problem(port) : table(architecture).problem(port);
     }
 
     /** The topics of an architecture's ports, read once (linear in its ports and connections). */
     public static Table table(Architecture architecture) {
-        List<Port> ports = new ArrayList<>();
-        for (Layer l : architecture.getLayers()) {
-            for (Module m : l.getModules()) {
-                ports.addAll(m.getPorts());
-            }
-        }
-        return new Table(groups(ports));
+        return table(new RsamlNames.Ids(architecture));
+    }
+
+    /** Likewise, with the architecture's names already made. */
+    public static Table table(RsamlNames.Ids ids) {
+        return new Table(groups(ids.ports()), ids);
     }
 
     private static Architecture architecture(Port port) {
@@ -159,28 +166,40 @@ public final class RsamlTopics {
     }
 
     /**
-     * The topics named in an architecture, by group of connected ports: each port's problem is then
-     * found without reading the other ports again.
+     * The topics of an architecture, by group of connected ports: the topic a group names (the first its
+     * ports name), else the default topic of its first output port ({@link RsamlNames.Ids#defaultTopic});
+     * each port's problem and topic are then found without reading the other ports again.
      */
     public static final class Table {
 
-        /** Each port naming a topic: its group's index. */
+        /** Each port: its group's index. */
         private final Map<Port, Integer> groupOf = new IdentityHashMap<>();
-        /** Per group: the first two ports (model order) that name different topics. */
+        /** Per group: the first two ports that name different topics. */
         private final List<Port[]> distinct = new ArrayList<>();
+        /** Per group: its topic (null without ids), and the port whose default it is (null when named). */
+        private final List<String> topics = new ArrayList<>();
+        private final List<Port> defaulted = new ArrayList<>();
         /** Per topic (as compared): the first port naming it in each of the first two groups that do. */
         private final Map<String, Port[]> namers = new HashMap<>();
         private final Map<String, int[]> namerGroups = new HashMap<>();
+        /** Per default topic (as compared) of a group that names none: that group's index. */
+        private final Map<String, Integer> defaults = new HashMap<>();
+        private final RsamlNames.Ids ids;
 
-        Table(List<List<Port>> groups) {
+        Table(List<List<Port>> groups, RsamlNames.Ids ids) {
+            this.ids = ids;
             for (int g = 0; g < groups.size(); g++) {
                 Port[] two = new Port[2];
+                Port firstOutput = null;
                 for (Port p : groups.get(g)) {
+                    groupOf.put(p, g);
+                    if (firstOutput == null && p instanceof OutputPort) {
+                        firstOutput = p;
+                    }
                     String topic = named(p);
                     if (topic == null) {
                         continue;
                     }
-                    groupOf.put(p, g);
                     if (two[0] == null) {
                         two[0] = p;
                     } else if (two[1] == null && !same(named(two[0]), topic)) {
@@ -198,7 +217,20 @@ public final class RsamlTopics {
                     }
                 }
                 distinct.add(two);
+                Port owner = two[0] != null || ids == null ? null : firstOutput != null ? firstOutput : groups.get(g).get(0);
+                String topic = two[0] != null ? named(two[0]) : owner == null ? null : ids.defaultTopic(owner);
+                topics.add(topic);
+                defaulted.add(owner);
+                if (owner != null) {
+                    defaults.putIfAbsent(strip(topic), g);
+                }
             }
+        }
+
+        /** The topic of a port of this table's architecture in the generated code: its group's named topic, else a default one. */
+        public String topic(Port port) {
+            Integer g = groupOf.get(port);
+            return g == null ? null : topics.get(g);
         }
 
         /** As {@link RsamlTopics#problem}, for a port of this table's architecture. */
@@ -209,6 +241,15 @@ public final class RsamlTopics {
             }
             if (!isValid(topic)) {
                 return "names the topic '" + topic + "', which is not a ROS 2 topic name";
+            }
+            String full = "/" + strip(topic);
+            if (full.length() > MAX_FULL_NAME) {
+                return "names the topic '" + topic + "', whose full name " + full.substring(0, 20) + "... has " + full.length()
+                        + " characters, more than the " + MAX_FULL_NAME + " ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH): shorten it";
+            }
+            String own = ROS2_TOPICS.get(strip(topic));
+            if (own != null) {
+                return "names the topic '" + topic + "', which ROS 2 itself uses (" + own + "): choose another name";
             }
             Integer g = groupOf.get(port);
             if (g == null) {
@@ -228,6 +269,12 @@ public final class RsamlTopics {
                     return "names the topic '" + topic + "', as " + describe(p) + " does, which it is not connected to:"
                             + " ROS 2 would connect them";
                 }
+            }
+            Integer other = defaults.get(key);
+            if (other != null && other.intValue() != g.intValue()) {
+                Port p = defaulted.get(other);
+                return "names the topic '" + topic + "', which is the default topic of " + describe(p) + " (" + topics.get(other)
+                        + "), which it is not connected to: ROS 2 would connect them; name another topic, or connect the ports";
             }
             return null;
         }

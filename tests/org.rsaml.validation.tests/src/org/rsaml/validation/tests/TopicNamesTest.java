@@ -50,4 +50,40 @@ class TopicNamesTest {
                         + " which it is not connected to: ROS 2 would connect them"),
                 found, "only the two ports naming one topic without a connection");
     }
+
+    @Test
+    void aNamedTopicThatIsAnotherPortsDefaultTopicIsFoundNamingBothPorts(@TempDir Path tmp) throws Exception {
+        List<String> found = findings(tmp, "clash.rsaml", model(0,
+                "<modules name=\"odometry\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"pose\""
+                        + " dataType=\"structured\" messageType=\"geometry_msgs/msg/Pose2D\"/></modules>",
+                "<modules name=\"detector\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\""
+                        + " name=\"speedLimit\" dataType=\"numeric\" topic=\"base/odometry/pose\"/></modules>"));
+        assertEquals(List.of("robot/base/detector/speedLimit: Output port 'speedLimit' of module 'detector' names the topic"
+                + " 'base/odometry/pose', which is the default topic of output port 'pose' of module 'odometry' (base/odometry/pose),"
+                + " which it is not connected to: ROS 2 would connect them; name another topic, or connect the ports"), found,
+                "the generated nodes would publish a Float64 and a Pose2D on one topic");
+    }
+
+    @Test
+    void aTopicRos2UsesItselfOrTooLongForRos2IsAFinding(@TempDir Path tmp) throws Exception {
+        String tooLong = "a/" + "b".repeat(245);
+        String justFits = "c/" + "d".repeat(244);
+        List<String> found = findings(tmp, "own.rsaml", model(0,
+                "<modules name=\"a\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"/rosout\"/></modules>",
+                "<modules name=\"b\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"parameter_events\"/></modules>",
+                "<modules name=\"c\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"" + tooLong + "\"/></modules>",
+                "<modules name=\"d\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"" + justFits + "\"/></modules>"));
+        assertEquals(List.of(
+                "robot/base/a/o: Output port 'o' of module 'a' names the topic '/rosout', which ROS 2 itself uses (every node publishes"
+                        + " its log messages there as rcl_interfaces/msg/Log): choose another name",
+                "robot/base/b/o: Output port 'o' of module 'b' names the topic 'parameter_events', which ROS 2 itself uses (every node"
+                        + " publishes its parameter changes there as rcl_interfaces/msg/ParameterEvent): choose another name",
+                "robot/base/c/o: Output port 'o' of module 'c' names the topic '" + tooLong + "', whose full name /a/bbbbbbbbbbbbbbbbb..."
+                        + " has 248 characters, more than the 247 ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH): shorten it"),
+                found, "a full name of 247 characters is taken");
+    }
 }

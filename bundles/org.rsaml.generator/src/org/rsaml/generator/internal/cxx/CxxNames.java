@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 
 import org.rsaml.generator.internal.NameScope;
+import org.rsaml.model.support.RsamlNames;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.LinkPlan;
@@ -66,8 +67,8 @@ public final class CxxNames {
             "positive", "active", "publisher_options", "subscription_options" };
 
     /** Folder names the generated projects use themselves. */
-    private static final String[] FOLDERS = { "rsaml", "msg", "gen", "src", "launch", "include", "build", "architecture",
-            "messages", "main", "user" };
+    /** Layer ids, node names and default topics, as the rule on ROS 2 topics (RSA-28) knows them. */
+    private final RsamlNames.Ids ids;
 
     private final String project;
     private final Map<PlannedLayer, String> layerIds = new IdentityHashMap<>();
@@ -110,17 +111,16 @@ public final class CxxNames {
 
     public CxxNames(ExecutionPlan plan, String project) {
         this.project = project;
-        NameScope layerScope = new NameScope(true, FOLDERS);
+        ids = new RsamlNames.Ids(plan.architecture());
         for (PlannedLayer l : plan.layers()) {
-            layerIds.put(l, layerScope.allocate(Names.snake(l.layer().getName())));
+            layerIds.put(l, ids.layer(l.layer()));
         }
         Map<PlannedLayer, NameScope> classes = new HashMap<>();
-        Map<PlannedLayer, NameScope> nodes = new HashMap<>();
         for (PlannedModule m : plan.modules()) {
             ModuleNames n = new ModuleNames();
             n.className = classes.computeIfAbsent(m.layer(), k -> new NameScope(true))
                     .allocate(Names.pascal(m.module().getName()), "", "", "", "Base", "", "Main");
-            n.nodeName = nodes.computeIfAbsent(m.layer(), k -> new NameScope(false)).allocate(Names.snake(m.module().getName()));
+            n.nodeName = ids.node(m.module());
             String[] reserved = java.util.Arrays.copyOf(CLASS_RESERVED, CLASS_RESERVED.length + 3);
             reserved[CLASS_RESERVED.length] = n.className;
             reserved[CLASS_RESERVED.length + 1] = n.className + "Base";
@@ -181,6 +181,11 @@ public final class CxxNames {
     }
 
     /** Folder and namespace of a layer. */
+    /** The architecture's layer ids, node names and default ROS 2 topics. */
+    public RsamlNames.Ids ids() {
+        return ids;
+    }
+
     public String layerId(PlannedLayer l) {
         return layerIds.get(l);
     }

@@ -6,14 +6,12 @@ package org.rsaml.generator.internal.ros2;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.IdentityHashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -149,14 +147,11 @@ public final class Ros2Names {
     }
 
     private void assignTopics(ExecutionPlan plan, CxxNames names) {
-        Map<PlannedPort, String> own = new HashMap<>();
+        // the topic of each port, named or default, as the rule on topics (RSA-28) sees it
+        RsamlTopics.Table table = RsamlTopics.table(names.ids());
         List<PlannedPort> all = new ArrayList<>();
         for (PlannedModule m : plan.modules()) {
-            NameScope segments = new NameScope(false);
-            for (PlannedPort p : m.ports()) {
-                own.put(p, names.layerId(m) + "/" + names.nodeName(m) + "/" + segments.allocate(Names.snake(p.port().getName())));
-                all.add(p);
-            }
+            all.addAll(m.ports());
         }
         Map<PlannedPort, PlannedPort> parent = new HashMap<>();
         for (PlannedPort p : all) {
@@ -169,25 +164,21 @@ public final class Ros2Names {
                 parent.put(b, a);
             }
         }
-        Map<PlannedPort, String> topicOfRoot = new HashMap<>();
         Map<PlannedPort, Boolean> sensorOfRoot = new HashMap<>();
         NameScope arguments = new NameScope(false, "namespace", "use_sim_time", "simulated_load");
         for (PlannedPort p : all) {
             String named = RsamlTopics.named(p.port());
-            if (named != null && topicOfRoot.putIfAbsent(find(parent, p), named) == null && !topicArguments.containsKey(named)) {
+            if (named != null && named.equals(table.topic(p.port())) && !topicArguments.containsKey(named)) {
                 topicArguments.put(named, arguments.allocate(Names.stem(named.replaceFirst("^/", "").replace('/', '_') + "_topic")));
             }
         }
         for (PlannedPort p : all) {
-            if (!p.entry()) {
-                topicOfRoot.putIfAbsent(find(parent, p), own.get(p));
-                if (!p.module().module().getSensors().isEmpty() && p.module().module().getActuators().isEmpty()) {
-                    sensorOfRoot.put(find(parent, p), true);
-                }
+            if (!p.entry() && !p.module().module().getSensors().isEmpty() && p.module().module().getActuators().isEmpty()) {
+                sensorOfRoot.put(find(parent, p), true);
             }
         }
         for (PlannedPort p : all) {
-            topics.put(p, topicOfRoot.getOrDefault(find(parent, p), own.get(p)));
+            topics.put(p, table.topic(p.port()));
             sensorTopics.put(p, sensorOfRoot.getOrDefault(find(parent, p), false));
         }
     }
@@ -199,31 +190,42 @@ public final class Ros2Names {
      * none reaches it; never again after the first reaction when nothing is timed).
      */
     private void boundCycles(ExecutionPlan plan) {
-        Map<PlannedModule, List<PlannedModule>> feeders = new HashMap<>();
+        if (plan.reactiveCycles().isEmpty()) {
+            return;
+        }
+        // A module's bound is the shortest period of the releases of the modules its data comes from (itself
+        // included). Spreading each release's period downstream, the shortest first, and stopping where a module
+        // already has one, visits every module and every feeding edge once (not a search upstream per module).
+        Map<PlannedModule, List<PlannedModule>> fed = new HashMap<>();
         for (Flow f : plan.flows()) {
-            feeders.computeIfAbsent(f.target().module(), k -> new ArrayList<>()).add(f.source().module());
+            fed.computeIfAbsent(f.source().module(), k -> new ArrayList<>()).add(f.target().module());
         }
         for (LinkPlan l : plan.links()) {
             if (l.deliversData()) {
-                feeders.computeIfAbsent(l.target().module(), k -> new ArrayList<>()).add(l.trigger().module());
+                fed.computeIfAbsent(l.trigger().module(), k -> new ArrayList<>()).add(l.target().module());
             }
         }
-        long shortest = plan.releases().stream().mapToLong(Release::periodNs).min().orElse(ExecutionPlan.MAX_TIME_NS);
-        for (List<PlannedModule> cycle : plan.reactiveCycles()) {
-            for (PlannedModule m : cycle) {
-                Set<PlannedModule> seen = Collections.newSetFromMap(new IdentityHashMap<>());
-                Deque<PlannedModule> todo = new ArrayDeque<>(List.of(m));
-                long bound = Long.MAX_VALUE;
+        List<Release> releases = new ArrayList<>(plan.releases());
+        releases.sort(java.util.Comparator.comparingLong(Release::periodNs));
+        long shortest = releases.isEmpty() ? ExecutionPlan.MAX_TIME_NS : releases.get(0).periodNs();
+        Map<PlannedModule, Long> bounds = new IdentityHashMap<>();
+        Deque<PlannedModule> todo = new ArrayDeque<>();
+        for (Release r : releases) {
+            PlannedModule from = r.module();
+            if (bounds.putIfAbsent(from, r.periodNs()) == null) {
+                todo.add(from);
                 while (!todo.isEmpty()) {
-                    PlannedModule u = todo.pop();
-                    if (seen.add(u)) {
-                        for (Release r : u.releases()) {
-                            bound = Math.min(bound, r.periodNs());
+                    for (PlannedModule next : fed.getOrDefault(todo.pop(), List.of())) {
+                        if (bounds.putIfAbsent(next, r.periodNs()) == null) {
+                            todo.add(next);
                         }
-                        todo.addAll(feeders.getOrDefault(u, List.of()));
                     }
                 }
-                cycleBounds.put(m, bound == Long.MAX_VALUE ? shortest : bound);
+            }
+        }
+        for (List<PlannedModule> cycle : plan.reactiveCycles()) {
+            for (PlannedModule m : cycle) {
+                cycleBounds.put(m, bounds.getOrDefault(m, shortest));
             }
         }
     }
