@@ -43,7 +43,7 @@ class Ros2CycleBoundsTest {
 
     @Test
     void eachModuleOfALargeRingReactsAtMostOncePerTheShortestPeriodThatReachesIt(@TempDir Path tmp) throws Exception {
-        int n = 50_000;
+        int n = 20_000;
         StringBuilder modules = new StringBuilder();
         StringBuilder connections = new StringBuilder();
         for (String[] timed : new String[][] { { "slow", "100.0" }, { "fast", "50.0" }, { "lone", "200.0" } }) {
