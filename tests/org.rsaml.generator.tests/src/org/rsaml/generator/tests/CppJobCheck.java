@@ -95,6 +95,7 @@ final class CppJobCheck {
             return;
         }
         String apart = notApart(arch, module);
+        PlatformCheck.requireRealtime("JobTimingTest", label, s.sched());
         if (!s.asAnalysed() || apart != null) {
             unchecked.add(label + " (" + (apart != null ? apart : s.sched()) + ")");
             return;

@@ -94,6 +94,17 @@ class JobTimingTest {
         return bounds;
     }
 
+    /** Per task name (the release's label), the analysis's verdict. */
+    static Map<String, Verdict> verdicts(ArchitectureTiming timing) {
+        Map<String, Verdict> verdicts = new HashMap<>();
+        for (ProcessorTiming p : timing.processors()) {
+            for (TaskResult t : p.result().tasks()) {
+                verdicts.put(t.task().name(), t.verdict());
+            }
+        }
+        return verdicts;
+    }
+
     @ParameterizedTest
     @MethodSource("timedExamples")
     void everyJobOfAnExampleStaysWithinItsBound(String example, @TempDir Path tmp) throws Exception {

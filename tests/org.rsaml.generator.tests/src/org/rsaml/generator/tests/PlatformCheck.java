@@ -112,6 +112,20 @@ final class PlatformCheck {
     }
 
     /**
+     * Where the bound check is required (CI), a release (or reaction) the analysis bounds that ran
+     * without real-time priority fails the test, naming it: its bound could not be checked, and a
+     * required check may not pass by checking nothing. A release of an EDF processor that the kernel
+     * refused SCHED_DEADLINE and that runs at its real-time rank instead ({@code ... instead of EDF})
+     * is not held to EDF's bound, and is not a failure here.
+     */
+    static void requireRealtime(String what, String label, String sched) {
+        if (required() && sched.startsWith("default")) {
+            fail(what + ": " + label + " ran without real-time priority (sched " + sched + "), so its bound cannot be checked, and"
+                    + " RSAML_TIMING_BOUNDS=required (CI) demands the check: run the tests as root or with CAP_SYS_NICE, or an rtprio limit");
+        }
+    }
+
+    /**
      * The releases of a run that measure the platform: alone at the highest rank of a processor that
      * schedules by fixed priorities, scheduled as analysed, with the CPU of their processor to
      * themselves ({@code apart}: null when so). Their start latency is the timer's wake-up and the
