@@ -67,6 +67,7 @@ public final class TimingBatch {
      *
      * @param failing      the models whose verdict fails under the run's {@link TimingFailOn} (with "(not analysed)"
      *                     when the verdict is not a miss)
+     * @param missed       those of {@code failing} that fail because a deadline or a latency requirement can be missed
      * @param unanalysable the models that could not be read or analysed
      * @param outputFailed whether a timeline could not be written
      * @param json         the verdicts as JSON, or {@code null} when the run did not ask for them
@@ -74,7 +75,7 @@ public final class TimingBatch {
      * @param failOn       which verdicts failed the run
      * @param timeline     where the timelines were to be written, as the user named it, or {@code null}
      */
-    public record Outcome(List<String> failing, List<String> unanalysable, boolean outputFailed, TimingJson.Document json,
+    public record Outcome(List<String> failing, List<String> missed, List<String> unanalysable, boolean outputFailed, TimingJson.Document json,
             Report findings, TimingFailOn failOn, Path timeline) {
 
         /**
@@ -113,8 +114,7 @@ public final class TimingBatch {
             if (failing.isEmpty()) {
                 return null;
             }
-            List<String> missed = failing.stream().filter(m -> !m.endsWith(NOT_ANALYSED)).toList();
-            List<String> unproven = failing.stream().filter(m -> m.endsWith(NOT_ANALYSED)).toList();
+            List<String> unproven = failing.stream().filter(m -> !missed.contains(m)).toList();
             List<String> parts = new java.util.ArrayList<>();
             if (!missed.isEmpty()) {
                 parts.add("a deadline or a latency requirement can be missed in " + String.join(", ", missed));
@@ -125,9 +125,6 @@ public final class TimingBatch {
             return String.join("; ", parts) + Report.failingOn(failOn.label());
         }
     }
-
-    /** How {@link Outcome#failing()} marks a model that fails because something in it is not analysed. */
-    private static final String NOT_ANALYSED = " (not analysed)";
 
     private TimingBatch() {
     }
@@ -153,6 +150,7 @@ public final class TimingBatch {
      */
     public static Outcome run(Path base, List<Path> paths, Request request, Listener listener) {
         List<String> failing = new ArrayList<>();
+        List<String> missed = new ArrayList<>();
         List<String> unanalysable = new ArrayList<>();
         List<FileResult> results = new ArrayList<>();
         TimingJson.Document json = request.json() ? new TimingJson.Document() : null;
@@ -194,10 +192,15 @@ public final class TimingBatch {
                 }
             }
             if (request.failOn().fails(timing.verdict())) {
-                failing.add(input.displayName() + (timing.verdict() == Verdict.MISSES ? "" : NOT_ANALYSED));
+                if (timing.verdict() == Verdict.MISSES) {
+                    failing.add(input.displayName());
+                    missed.add(input.displayName());
+                } else {
+                    failing.add(input.displayName() + " (not analysed)");
+                }
             }
         }
         Report findings = request.findings() ? new Report(Rules.timing(), results, request.failOn().findingThreshold()) : null;
-        return new Outcome(List.copyOf(failing), List.copyOf(unanalysable), outputFailed, json, findings, request.failOn(), timeline);
+        return new Outcome(List.copyOf(failing), List.copyOf(missed), List.copyOf(unanalysable), outputFailed, json, findings, request.failOn(), timeline);
     }
 }

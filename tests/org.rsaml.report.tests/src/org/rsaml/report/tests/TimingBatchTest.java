@@ -110,6 +110,23 @@ class TimingBatchTest {
     }
 
     @Test
+    void underNotAnalysedAMissIsStillWordedAsAMissAndTheUnprovenApart(@TempDir Path dir) throws Exception {
+        String model = Files.readString(TestRepository.root().resolve(MEETS));
+        String llf = model.replace("core=\"0\" modules", "core=\"0\" schedPolicy=\"LLF\" modules")
+                .replace("core=\"1\" modules", "core=\"1\" schedPolicy=\"LLF\" modules");
+        assertFalse(llf.equals(model), "both processors declared LLF, which the analysis does not decide");
+        Files.writeString(dir.resolve("llf.rsaml"), llf);
+        Files.copy(TestRepository.root().resolve(MISSES), dir.resolve("missed.rsaml"));
+
+        TimingBatch.Outcome outcome = TimingBatch.run(dir, List.of(Path.of("llf.rsaml"), Path.of("missed.rsaml")), null,
+                TimingFailOn.NOT_ANALYSED, new Heard());
+
+        assertEquals(List.of("llf.rsaml (not analysed)", "missed.rsaml"), outcome.failing(), "both fail, in the order named");
+        assertEquals("a deadline or a latency requirement can be missed in missed.rsaml; the timing is not proven in llf.rsaml (not analysed)"
+                + " (fail on not-analysed)", outcome.verdictFailure(), "the miss is said as a miss, the unproven model apart");
+    }
+
+    @Test
     void aWitnessIsDrawnAsATimelineAndAModelWithoutOneIsSaid(@TempDir Path dir) throws Exception {
         Heard heard = new Heard();
         TimingBatch.Outcome outcome = run(List.of(MEETS, MISSES), dir.resolve("timeline"), TimingFailOn.MISS, heard);

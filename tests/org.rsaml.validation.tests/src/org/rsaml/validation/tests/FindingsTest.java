@@ -7,7 +7,7 @@ package org.rsaml.validation.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
-import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
@@ -18,6 +18,7 @@ import org.rsaml.model.ElementType;
 import org.rsaml.model.ExecutionType;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
+import org.rsaml.model.NamedElement;
 import org.rsaml.model.RsamlFactory;
 import org.rsaml.model.TimeUnit;
 import org.rsaml.model.support.RsamlLabels;
@@ -39,8 +40,10 @@ class FindingsTest {
             EObject element = model.resource().getEObject(f.uriFragment());
             assertNotNull(element, () -> f + ": its fragment " + f.uriFragment() + " leads to an element");
             assertEquals(f.qualifiedName(), RsamlLabels.qualifiedName(element), () -> f + ": the fragment leads to the element the finding names");
-            assertSame(element, model.resource().getEObject(model.resource().getURIFragment(element)),
-                    () -> f + ": the element's own fragment leads back to it");
+            if (element.eContainer() != null && element instanceof NamedElement named && named.getName() != null) {
+                assertTrue(f.uriFragment().contains("[name='"),
+                        () -> f + ": reports carry a named element's name-keyed fragment, not an index: " + f.uriFragment());
+            }
             assertEquals("exp2.rsaml:" + f.line() + ":" + f.column() + ": " + f.severity().label() + " " + f.ruleId() + ": " + f.message(),
                     f.toString(), "a finding prints in compiler style: file:line:column: severity id: message");
         }
