@@ -220,6 +220,10 @@ public final class TimingBench {
         return rateMonotonic(periods, weights, sum, u);
     }
 
+    /**
+     * Tasks t0..t(n-1) with these periods, rate-monotonic priorities (the shortest period highest, distinct,
+     * ties by index) and implicit deadlines; task i's share of the utilisation {@code u} is weights[i] / sum.
+     */
     private static List<Task> rateMonotonic(long[] periods, double[] weights, double sum, double u) {
         int n = periods.length;
         Integer[] order = new Integer[n];
@@ -240,7 +244,6 @@ public final class TimingBench {
 
     /** n tasks, rate-monotonic priorities (distinct, ties by index), total utilisation about 0.8. */
     static List<Task> taskSet(int n, Random random) {
-        List<Task> tasks = new ArrayList<>();
         long[] periods = new long[n];
         double[] weights = new double[n];
         double sum = 0;
@@ -249,20 +252,7 @@ public final class TimingBench {
             weights[i] = random.nextDouble();
             sum += weights[i];
         }
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        java.util.Arrays.sort(order, (x, y) -> Long.compare(periods[y], periods[x]));
-        int[] priority = new int[n];
-        for (int rank = 0; rank < n; rank++) {
-            priority[order[rank]] = rank + 1;
-        }
-        for (int i = 0; i < n; i++) {
-            long cost = Math.max(1, (long) (0.8 * weights[i] / sum * periods[i]));
-            tasks.add(Task.implicit("t" + i, periods[i], cost, priority[i]));
-        }
-        return tasks;
+        return rateMonotonic(periods, weights, sum, 0.8);
     }
 
     /**
@@ -279,20 +269,7 @@ public final class TimingBench {
             weights[i] = random.nextDouble();
             sum += weights[i];
         }
-        Integer[] order = new Integer[n];
-        for (int i = 0; i < n; i++) {
-            order[i] = i;
-        }
-        java.util.Arrays.sort(order, (x, y) -> Long.compare(periods[y], periods[x]));
-        List<Task> tasks = new ArrayList<>();
-        int[] priority = new int[n];
-        for (int rank = 0; rank < n; rank++) {
-            priority[order[rank]] = rank + 1;
-        }
-        for (int i = 0; i < n; i++) {
-            tasks.add(Task.implicit("t" + i, periods[i], Math.max(1, (long) (u * weights[i] / sum * periods[i])), priority[i]));
-        }
-        return tasks;
+        return rateMonotonic(periods, weights, sum, u);
     }
 
     /**
