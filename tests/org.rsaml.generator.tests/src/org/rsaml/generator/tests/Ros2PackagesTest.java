@@ -111,7 +111,7 @@ class Ros2PackagesTest {
                 "the packages: the launch files', one per layer, the messages', the runtime's");
         nodePackage(packages, out, PKG + "_navigation", "navigation", List.of("ObstacleDetector", "PathPlanner"), List.of("std_msgs"));
         nodePackage(packages, out, PKG + "_control", "control", List.of("VelocityController", "Odometry"), List.of(PKG + "_interfaces", "std_msgs"));
-        assertEquals(List.of("CMakeLists.txt", "config/" + PKG + ".params.yaml", "launch/" + PKG + ".launch.py", "launch/" + PKG + "_processes.launch.py",
+        assertEquals(List.of("CMakeLists.txt", "config/" + PKG + ".params.yaml", "gen/" + PKG + ".params.yaml", "launch/" + PKG + ".launch.py", "launch/" + PKG + "_processes.launch.py",
                 "package.user.xml", "package.xml", "user.cmake"), packages.get(PKG).stream().filter(f -> !f.startsWith("test/")).toList(),
                 "the package named after the architecture holds the launch files and the parameters file");
         String system = parsed(out.resolve(PKG + "/package.xml"));

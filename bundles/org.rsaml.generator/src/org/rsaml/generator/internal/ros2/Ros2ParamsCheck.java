@@ -6,6 +6,9 @@ package org.rsaml.generator.internal.ros2;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -19,7 +22,9 @@ import java.util.regex.Pattern;
  * the file was written, or the file was edited: either way the file's value is the one the node
  * runs with), a time the node no longer has (a function renamed, a unit changed: the launch files
  * refuse the file), a parameter no node declares (a misspelt name, which ROS 2 ignores), a
- * section of a node the package does not have, and a file the launch files cannot read.
+ * section of a node the package does not have, a node or parameter of the model the file lacks (a
+ * module added, a line deleted: the file no longer has every parameter; the regenerated copy beside
+ * it has), and a file the launch files cannot read.
  */
 final class Ros2ParamsCheck {
 
@@ -41,9 +46,9 @@ final class Ros2ParamsCheck {
     /**
      * The warnings about the parameters file {@code text} (at {@code path} in the output) given
      * {@code model}: each node's parameters with the model's values (times in their units, QoS), by
-     * node name.
+     * node name; {@code current} is where the regenerated copy with every parameter is.
      */
-    static List<String> check(String path, String text, Map<String, Map<String, String>> model) {
+    static List<String> check(String path, String text, Map<String, Map<String, String>> model, String current) {
         List<String> warnings = new ArrayList<>();
         Ros2ParamsFile file = Ros2ParamsFile.read(text);
         if (file.error() != null) {
@@ -71,7 +76,7 @@ final class Ros2ParamsCheck {
                 if (!same(p.value(), modelValue)) {
                     warnings.add(at + "node '" + p.node() + "' parameter " + p.name() + " is " + p.value() + " in this file but " + modelValue
                             + " in the model; the file's value is the one the node runs with (the file is yours and kept when you generate):"
-                            + " to take the model's, edit the line to '" + p.name() + ": " + modelValue + "' or delete it");
+                            + " to take the model's, edit the line to '" + p.name() + ": " + modelValue + "'");
                 }
             } else if (TIME.matcher(p.name()).matches()) {
                 List<String> times = values.keySet().stream().filter(n -> TIME.matcher(n).matches()).toList();
@@ -82,7 +87,41 @@ final class Ros2ParamsCheck {
                         + "); ROS 2 ignores it: correct the name or remove the line");
             }
         }
+        lacking(path, text, file, model, current, warnings);
         return warnings;
+    }
+
+    /**
+     * Warns about each node of the model without a section in the file and each parameter of the
+     * model a node's section lacks (a wildcard section's parameters count for every node).
+     */
+    private static void lacking(String path, String text, Ros2ParamsFile file, Map<String, Map<String, String>> model, String current,
+            List<String> warnings) {
+        Map<String, Integer> sections = new LinkedHashMap<>();
+        file.sections().forEach(s -> sections.putIfAbsent(s.node(), s.line()));
+        Map<String, Set<String>> present = new HashMap<>();
+        Set<String> everyNode = new HashSet<>();
+        for (Ros2ParamsFile.Parameter p : file.parameters()) {
+            (p.node().contains("*") ? everyNode : present.computeIfAbsent(p.node(), n -> new HashSet<>())).add(p.name());
+        }
+        String from = current + " (regenerated every time, with every parameter as the model now has it)";
+        int end = Math.max(1, (int) text.chars().filter(c -> c == '\n').count());
+        for (Map.Entry<String, Map<String, String>> node : model.entrySet()) {
+            Set<String> names = present.getOrDefault(node.getKey(), Set.of());
+            Map<String, String> missing = new LinkedHashMap<>(node.getValue());
+            missing.keySet().removeIf(n -> names.contains(n) || everyNode.contains(n));
+            Integer line = sections.get(node.getKey());
+            if (line == null && !missing.isEmpty()) {
+                List<String> values = missing.entrySet().stream().map(e -> e.getKey() + ": " + e.getValue()).toList();
+                warnings.add(path + ":" + end + ": this file has no section for node '" + node.getKey() + "' (a module added since the file was"
+                        + " written, or its section deleted); the node runs with the model's values (" + String.join(", ", values)
+                        + "), which you cannot tune here: copy its section into this file from " + from);
+            } else if (line != null) {
+                missing.forEach((name, value) -> warnings.add(path + ":" + line + ": node '" + node.getKey() + "' has no line for parameter " + name
+                        + "; the node runs with the model's value " + value + ": to have every parameter here, add '" + name + ": " + value
+                        + "' to its ros__parameters (as in " + from + ")"));
+            }
+        }
     }
 
     /** Whether a node with the model's parameters {@code values} declares {@code name}. */

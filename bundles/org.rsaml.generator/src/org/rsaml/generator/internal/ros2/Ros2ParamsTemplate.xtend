@@ -10,7 +10,8 @@ import org.rsaml.generator.internal.Templates
  * config/&lt;pkg&gt;.params.yaml, the architect's (created once, never overwritten): every parameter
  * of every node with the model's value, times in the model's units and each topic's QoS, in the
  * format of ROS 2's parameter files. Both launch files load it; a node takes the model's value for
- * what the file does not set.
+ * what the file does not set. The same text, regenerated, is gen/&lt;pkg&gt;.params.yaml: the
+ * complete current file, from which the architect copies what the kept one lacks.
  */
 class Ros2ParamsTemplate extends Ros2Template {
 
@@ -26,11 +27,34 @@ class Ros2ParamsTemplate extends Ros2Template {
 		pkg + "/config/" + pkg + ".params.yaml"
 	}
 
-	def params() '''
-		# Parameters of the nodes of the RsaML architecture '«doc(plan.name)»'. «Templates.USER_OWNED»
-		# Both launch files load it (params_file:=PATH loads another file); a node takes the model's value
-		# for a parameter this file does not set, so a value here overrides the model's (generating again
-		# warns, naming the line, about a value that differs from the model's and a name no node has).
+	/** The path of the regenerated copy: every parameter as the model now has it, never loaded. */
+	def currentPath() {
+		pkg + "/gen/" + pkg + ".params.yaml"
+	}
+
+	/** The architect's file, as created. */
+	def params() {
+		params(false)
+	}
+
+	/** The regenerated copy beside it. */
+	def current() {
+		params(true)
+	}
+
+	def private params(boolean current) '''
+		«IF current»
+			# «banner»
+			# Every parameter of the nodes of the RsaML architecture '«doc(plan.name)»' as the model now has it: the
+			# complete current form of «path.substring(pkg.length + 1)», which is yours and kept. No launch file loads this
+			# copy: copy from it what yours lacks (generating warns, naming each node and parameter yours lacks).
+		«ELSE»
+			# Parameters of the nodes of the RsaML architecture '«doc(plan.name)»'. «Templates.USER_OWNED»
+		«ENDIF»
+		# Both launch files load «path.substring(pkg.length + 1)» (params_file:=PATH loads another file); a node takes the
+		# model's value for a parameter that file does not set, so a value there overrides the model's (generating
+		# again warns, naming the line, about a value that differs from the model's, a name no node has, and a
+		# node or parameter the file lacks: «currentPath.substring(pkg.length + 1)» has every one, regenerated each time).
 		# Times are in the model's units, as each name ends: _ns, _us, _ms or _s.
 		# QoS of a topic: qos_overrides.TOPIC.publisher.POLICY or qos_overrides.TOPIC.subscription.POLICY
 		# (reliability: reliable or best_effort; history: keep_last, or keep_all with «pkg»_processes.launch.py

@@ -91,7 +91,10 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		or use `params_file:=` for the installed copy). Its values win over the model's. A QoS override
 		there names the topic as the model does; the launch files give it to the topic as remapped and
 		namespaced, the name ROS 2 looks the override up by. A file they cannot take (not YAML, a time
-		that is not a positive number, a time a node no longer has) is refused with its line.
+		that is not a positive number, a time a node no longer has) is refused with its line. The file is
+		yours and kept: `«pkg»/gen/«pkg».params.yaml`, regenerated every time and loaded by no launch file,
+		is its complete current form, to copy from what yours lacks (generating again names each node and
+		parameter it lacks).
 		«IF !rosNames.managedModules.empty»
 
 		Managed nodes (`rclcpp_lifecycle`): «FOR m : rosNames.managedModules SEPARATOR ", "»`«m.rosNode»`«ENDFOR». Each starts unconfigured;

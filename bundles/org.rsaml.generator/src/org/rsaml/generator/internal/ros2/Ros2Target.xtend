@@ -26,7 +26,8 @@ import org.rsaml.generator.spi.TargetGenerator
  * files runtime/ros2/rsaml/* of this bundle): each timed release on an executor thread of its own at
  * the analysis's real-time priority, in the package's component container or a node's own process.
  * Same generation gap as the C++ target: gen/ and the build
- * files are regenerated; src/, the .msg files, user.cmake and package.user.xml are the architect's.
+ * files are regenerated; src/, the .msg files, user.cmake, package.user.xml and
+ * config/&lt;pkg&gt;.params.yaml are the architect's (gen/&lt;pkg&gt;.params.yaml is its current form).
  * Each output file has its template: Ros2NodeTemplate (with Ros2ManagedNodeTemplate for a managed
  * node), Ros2ComponentTemplate, Ros2CmakeTemplate, Ros2PackageTemplate, Ros2LaunchTemplate,
  * Ros2LaunchTestTemplate, Ros2ParamsTemplate, Ros2UserTemplate, Ros2ReadmeTemplate (README.md, the
@@ -81,8 +82,9 @@ class Ros2Target implements TargetGenerator {
 				+ cycle.map[files.cycleBound(it)].join(", ")
 				+ " (the shortest period that feeds the cycle; parameter " + cycle.map[context.reactionParameter(it).name].toSet.join(", ") + ")"
 		}
-		val params = new Ros2ParamsTemplate(context).path
-		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.check(params, it, context.modelParameters)]
+		val paramsTemplate = new Ros2ParamsTemplate(context)
+		val params = paramsTemplate.path
+		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.check(params, it, context.modelParameters, paramsTemplate.currentPath)]
 		for (m : plan.modules.filter[!inputs.empty]) {
 			val inputs = new java.util.LinkedHashMap<String, String>
 			m.inputs.forEach[inputs.put(context.names.inName(it), context.names.onName(it))]
@@ -150,6 +152,7 @@ class Ros2Files {
 		files += GeneratedFile.user(pkg + "/user.cmake", if (packages.single) cmake.userCmake else cmake.systemUserCmake)
 		val params = new Ros2ParamsTemplate(context)
 		files += GeneratedFile.user(params.path, params.params)
+		files += GeneratedFile.generated(params.currentPath, params.current)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + ".launch.py", launch.composed)
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launch.processes)
 		val launchTest = new Ros2LaunchTestTemplate(context)
