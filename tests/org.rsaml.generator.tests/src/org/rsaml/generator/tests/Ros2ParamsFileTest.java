@@ -144,21 +144,25 @@ class Ros2ParamsFileTest {
         int line = lineOf("    plan.period_ms: 100.0\n");
         Files.writeString(params, Files.readString(params).replace("    plan.period_ms: 100.0\n", "    plan.perod_ms: 100.0\n"));
         List<String> warnings = generateAgain();
-        assertTrue(warnings.size() == 1 && warnings.get(0).startsWith(PKG + "/config/" + PKG + ".params.yaml:" + line + ": node '" + NODE
+        int section = lineOf(NODE + ":\n");
+        assertTrue(warnings.size() == 2 && warnings.get(0).startsWith(PKG + "/config/" + PKG + ".params.yaml:" + line + ": node '" + NODE
                 + "' has no parameter plan.perod_ms (its parameters: plan.period_ms") && warnings.get(0).endsWith("correct the name or remove the line"),
                 "the misspelt name, its line and the node's parameters: " + warnings);
+        assertTrue(warnings.get(1).startsWith(FILE + ":" + section + ": node '" + NODE + "' has no line for parameter plan.period_ms;"),
+                "the name the misspelling stands for, missing from the node's section: " + warnings);
 
         Files.writeString(params, Files.readString(params).replace("    plan.perod_ms: 100.0\n", "    plan.period_ms: 100.0\n")
                 .replace("    qos_overrides.speed_limit.publisher.reliability:", "    qos_overrides.speed_limt.publisher.reliability:"));
         warnings = generateAgain();
-        assertTrue(warnings.size() == 1 && warnings.get(0).contains("has no parameter qos_overrides.speed_limt.publisher.reliability"),
-                "a QoS override of a topic the node does not have: " + warnings);
+        assertTrue(warnings.size() == 2 && warnings.get(0).contains("has no parameter qos_overrides.speed_limt.publisher.reliability")
+                && warnings.get(1).contains("has no line for parameter qos_overrides.speed_limit.publisher.reliability"),
+                "a QoS override of a topic the node does not have, and the override it stands for missing: " + warnings);
 
         String text = Files.readString(params).replace("qos_overrides.speed_limt.", "qos_overrides.speed_limit.");
         Files.writeString(params, text + "navigation_path_planer:\n  ros__parameters:\n    plan.period_ms: 100.0\n");
-        int section = (int) text.chars().filter(c -> c == '\n').count() + 1;
+        int unknown = (int) text.chars().filter(c -> c == '\n').count() + 1;
         warnings = generateAgain();
-        assertTrue(warnings.size() == 1 && warnings.get(0).startsWith(PKG + "/config/" + PKG + ".params.yaml:" + section
+        assertTrue(warnings.size() == 1 && warnings.get(0).startsWith(PKG + "/config/" + PKG + ".params.yaml:" + unknown
                 + ": there is no node 'navigation_path_planer' in this package (its nodes: "), "a section of a node the package lacks: " + warnings);
 
         Files.writeString(params, text.replace("    plan.period_ms: 100.0\n", "\tplan.period_ms: 100.0\n"));

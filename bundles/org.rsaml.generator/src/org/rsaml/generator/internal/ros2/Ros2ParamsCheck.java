@@ -104,7 +104,7 @@ final class Ros2ParamsCheck {
         for (Ros2ParamsFile.Parameter p : file.parameters()) {
             (p.node().contains("*") ? everyNode : present.computeIfAbsent(p.node(), n -> new HashSet<>())).add(p.name());
         }
-        String from = current + " (regenerated every time, with every parameter as the model now has it)";
+        String from = current + ", regenerated every time with every parameter as the model now has it";
         int end = Math.max(1, (int) text.chars().filter(c -> c == '\n').count());
         for (Map.Entry<String, Map<String, String>> node : model.entrySet()) {
             Set<String> names = present.getOrDefault(node.getKey(), Set.of());
@@ -119,7 +119,7 @@ final class Ros2ParamsCheck {
             } else if (line != null) {
                 missing.forEach((name, value) -> warnings.add(path + ":" + line + ": node '" + node.getKey() + "' has no line for parameter " + name
                         + "; the node runs with the model's value " + value + ": to have every parameter here, add '" + name + ": " + value
-                        + "' to its ros__parameters (as in " + from + ")"));
+                        + "' to its ros__parameters, as in " + from));
             }
         }
     }
