@@ -5,7 +5,8 @@
 // The component container of a processor: as rclcpp_components' component_container (a
 // single-threaded executor for ROS 2's services and the nodes' data arrivals), and each timed
 // release of a node of this package on an executor thread of its own at its real-time priority
-// (rsaml/scheduling.hpp). Components of other packages run on the main executor.
+// (rsaml/scheduling.hpp). Components of other packages run on the main executor. On SIGINT it
+// serves its managed nodes until the lifecycle manager has deactivated and cleaned them up.
 #include <map>
 #include <memory>
 
@@ -55,12 +56,12 @@ class Container : public rclcpp_components::ComponentManager {
 }  // namespace rsaml_ros2
 
 int main(int argc, char* argv[]) {
-  rclcpp::init(argc, argv);
+  rsaml_ros2::init(argc, argv);
   {
     auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
     auto container = std::make_shared<rsaml_ros2::Container>(executor);
     executor->add_node(container);
-    executor->spin();
+    rsaml_ros2::spin(*executor);
   }
   rclcpp::shutdown();
   return 0;

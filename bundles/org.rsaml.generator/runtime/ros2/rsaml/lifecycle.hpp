@@ -9,6 +9,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstring>
 #include <string>
 
 #include <rclcpp_lifecycle/lifecycle_node.hpp>
@@ -26,6 +27,11 @@ class ScheduledLifecycleNode : public rclcpp_lifecycle::LifecycleNode, public Sc
         Schedule(static_cast<rclcpp_lifecycle::LifecycleNode&>(*this), module, core),
         module_(std::move(module)) {}
 
+ /** "inactive" or "active" while the node is configured; else null. */
+  const char* rsaml_configured_state() const override {
+    return active_.load() ? "active" : configured_.load() ? "inactive" : nullptr;
+  }
+
  protected:
   /** Whether the node is active: its releases and reactions run only then. */
   bool rsaml_active() const { return active_.load(); }
@@ -33,12 +39,14 @@ class ScheduledLifecycleNode : public rclcpp_lifecycle::LifecycleNode, public Sc
   /** Records a transition's outcome (active or not) and says it in the trace: "state MODULE active". */
   void rsaml_state(bool active, const char* state) {
     active_.store(active);
+    configured_.store(active || std::strcmp(state, "inactive") == 0);
     trace("state " + module_ + " " + state);
   }
 
  private:
   std::string module_;
   std::atomic<bool> active_{false};
+  std::atomic<bool> configured_{false};
 };
 
 }  // namespace rsaml_ros2

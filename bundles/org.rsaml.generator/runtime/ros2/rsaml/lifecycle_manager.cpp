@@ -5,12 +5,17 @@
 // The lifecycle manager of a package's managed nodes, started by both launch files: it configures
 // and then activates each node its parameter node_names names (relative names resolve in its
 // namespace), waiting for each to come up, whether it runs in a container or in a process of its
-// own. It logs each node's state and exits once every one is active (with status 1 when a node
-// refuses a transition; on SIGINT, quietly).
+// own, and logs each node's state. It then stays until SIGINT or SIGTERM (ros2 launch stopping, or
+// Ctrl-C), when it deactivates and cleans up every node it reached, the last one first, while
+// their processes wait for it (rsaml/scheduling.hpp: spin). It exits with status 1 when a node
+// refuses a transition or does not answer.
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <lifecycle_msgs/msg/state.hpp>
@@ -25,38 +30,61 @@ using lifecycle_msgs::msg::State;
 using lifecycle_msgs::msg::Transition;
 using lifecycle_msgs::srv::ChangeState;
 using lifecycle_msgs::srv::GetState;
+using Clock = std::chrono::steady_clock;
 
-/** The response to a request, or null when ROS 2 shuts down first. */
+/** How long the nodes are given to be deactivated and cleaned up (their processes wait 3 s for it). */
+constexpr std::chrono::milliseconds BRING_DOWN{2500};
+
+std::atomic<int> stop_signals{0};
+
+void on_stop_signal(int) { stop_signals.fetch_add(1); }
+
+bool stopping() { return stop_signals.load() > 0 || !rclcpp::ok(); }
+
+/** A managed node: its name and the clients of its lifecycle services. */
+struct Managed {
+  std::string name;
+  rclcpp::Client<GetState>::SharedPtr get;
+  rclcpp::Client<ChangeState>::SharedPtr change;
+  bool reached = false;  // its services answered: it is brought down at the end
+};
+
+/**
+ * The response to a request, or null when none came by `deadline` or, when `interruptible`, once
+ * SIGINT or SIGTERM came.
+ */
 template <typename ServiceT>
 typename ServiceT::Response::SharedPtr call(const rclcpp::Node::SharedPtr& node, const typename rclcpp::Client<ServiceT>::SharedPtr& client,
-                                            typename ServiceT::Request::SharedPtr request) {
+                                            typename ServiceT::Request::SharedPtr request, Clock::time_point deadline, bool interruptible) {
   auto future = client->async_send_request(request);
-  if (rclcpp::spin_until_future_complete(node, future) != rclcpp::FutureReturnCode::SUCCESS) {
-    return nullptr;
+  while (rclcpp::ok() && Clock::now() < deadline && !(interruptible && stop_signals.load() > 0)) {
+    if (rclcpp::spin_until_future_complete(node, future, std::chrono::milliseconds(50)) == rclcpp::FutureReturnCode::SUCCESS) {
+      return future.get();
+    }
   }
-  return future.get();
+  return nullptr;
 }
 
-/** Brings one node to active: 0 when it is, 1 when it refused, -1 when ROS 2 shut down first. */
-int activate(const rclcpp::Node::SharedPtr& node, const std::string& name) {
-  auto get = node->create_client<GetState>(name + "/get_state");
-  auto change = node->create_client<ChangeState>(name + "/change_state");
-  for (int waited = 0; !get->wait_for_service(std::chrono::seconds(1)) || !change->wait_for_service(std::chrono::seconds(1)); ++waited) {
-    if (!rclcpp::ok()) {
+/** Brings one node to active: 0 when it is, 1 when it refused, -1 when SIGINT or SIGTERM came first. */
+int activate(const rclcpp::Node::SharedPtr& node, Managed& m) {
+  for (int waited = 0; !m.get->wait_for_service(std::chrono::seconds(1)) || !m.change->wait_for_service(std::chrono::seconds(1)); ++waited) {
+    if (stopping()) {
       return -1;
     }
     if (waited % 10 == 9) {
-      RCLCPP_INFO(node->get_logger(), "waiting for the managed node %s", name.c_str());
+      RCLCPP_INFO(node->get_logger(), "waiting for the managed node %s", m.name.c_str());
     }
   }
-  while (rclcpp::ok()) {
-    auto state = call<GetState>(node, get, std::make_shared<GetState::Request>());
+  m.reached = true;
+  const auto forever = Clock::time_point::max();
+  while (!stopping()) {
+    auto state = call<GetState>(node, m.get, std::make_shared<GetState::Request>(), forever, true);
     if (!state) {
       return -1;
     }
     const std::uint8_t id = state->current_state.id;
     if (id == State::PRIMARY_STATE_ACTIVE) {
-      RCLCPP_INFO(node->get_logger(), "%s is active", name.c_str());
+      RCLCPP_INFO(node->get_logger(), "%s is active", m.name.c_str());
       return 0;
     }
     auto request = std::make_shared<ChangeState::Request>();
@@ -65,15 +93,15 @@ int activate(const rclcpp::Node::SharedPtr& node, const std::string& name) {
     } else if (id == State::PRIMARY_STATE_INACTIVE) {
       request->transition.id = Transition::TRANSITION_ACTIVATE;
     } else {
-      RCLCPP_ERROR(node->get_logger(), "%s is %s: it cannot be brought to active", name.c_str(), state->current_state.label.c_str());
+      RCLCPP_ERROR(node->get_logger(), "%s is %s: it cannot be brought to active", m.name.c_str(), state->current_state.label.c_str());
       return 1;
     }
-    auto changed = call<ChangeState>(node, change, request);
+    auto changed = call<ChangeState>(node, m.change, request, forever, true);
     if (!changed) {
       return -1;
     }
     if (!changed->success) {
-      RCLCPP_ERROR(node->get_logger(), "%s refused to %s (see its log)", name.c_str(),
+      RCLCPP_ERROR(node->get_logger(), "%s refused to %s (see its log)", m.name.c_str(),
                    request->transition.id == Transition::TRANSITION_CONFIGURE ? "configure" : "activate");
       return 1;
     }
@@ -81,19 +109,72 @@ int activate(const rclcpp::Node::SharedPtr& node, const std::string& name) {
   return -1;
 }
 
+/** Deactivates (when active) and cleans up one node by `deadline`: 0 when it is then unconfigured, else 1. */
+int bring_down(const rclcpp::Node::SharedPtr& node, Managed& m, Clock::time_point deadline) {
+  while (true) {
+    auto state = call<GetState>(node, m.get, std::make_shared<GetState::Request>(), deadline, false);
+    if (!state) {
+      RCLCPP_ERROR(node->get_logger(), "%s did not say its state in time: it was not deactivated and cleaned up", m.name.c_str());
+      return 1;
+    }
+    const std::uint8_t id = state->current_state.id;
+    auto request = std::make_shared<ChangeState::Request>();
+    if (id == State::PRIMARY_STATE_ACTIVE) {
+      request->transition.id = Transition::TRANSITION_DEACTIVATE;
+    } else if (id == State::PRIMARY_STATE_INACTIVE) {
+      request->transition.id = Transition::TRANSITION_CLEANUP;
+    } else if (id == State::PRIMARY_STATE_UNCONFIGURED || id == State::PRIMARY_STATE_FINALIZED) {
+      RCLCPP_INFO(node->get_logger(), "%s is %s", m.name.c_str(), state->current_state.label.c_str());
+      return 0;
+    } else {
+      RCLCPP_ERROR(node->get_logger(), "%s is %s: it cannot be cleaned up", m.name.c_str(), state->current_state.label.c_str());
+      return 1;
+    }
+    auto changed = call<ChangeState>(node, m.change, request, deadline, false);
+    if (!changed || !changed->success) {
+      RCLCPP_ERROR(node->get_logger(), "%s %s to %s (see its log)", m.name.c_str(), changed ? "refused" : "did not answer in time",
+                   request->transition.id == Transition::TRANSITION_DEACTIVATE ? "deactivate" : "clean up");
+      return 1;
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char* argv[]) {
-  rclcpp::init(argc, argv);
+  rclcpp::init(argc, argv, rclcpp::InitOptions(), rclcpp::SignalHandlerOptions::None);
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
   int status = 0;
   {
     auto node = std::make_shared<rclcpp::Node>("lifecycle_manager");
-    const auto names = node->declare_parameter<std::vector<std::string>>("node_names", std::vector<std::string>{});
-    for (const std::string& name : names) {
-      const int result = activate(node, name);
+    std::vector<Managed> managed;
+    for (const std::string& name : node->declare_parameter<std::vector<std::string>>("node_names", std::vector<std::string>{})) {
+      Managed m;
+      m.name = name;
+      m.get = node->create_client<GetState>(name + "/get_state");
+      m.change = node->create_client<ChangeState>(name + "/change_state");
+      managed.push_back(m);
+    }
+    for (Managed& m : managed) {
+      const int result = activate(node, m);
       if (result != 0) {
         status = result > 0 ? 1 : 0;
         break;
+      }
+    }
+    if (!stopping()) {
+      RCLCPP_INFO(node->get_logger(), "%s; on SIGINT they are deactivated and cleaned up",
+                  status == 0 ? "every managed node is active" : "not every managed node is active");
+    }
+    while (!stopping()) {
+      rclcpp::spin_some(node);
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    const auto deadline = Clock::now() + BRING_DOWN;
+    for (auto m = managed.rbegin(); m != managed.rend(); ++m) {
+      if (m->reached && bring_down(node, *m, deadline) != 0) {
+        status = 1;
       }
     }
   }

@@ -6,7 +6,9 @@
 #include "rsaml/realtime.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -27,6 +29,9 @@ const std::chrono::steady_clock::time_point trace_start = std::chrono::steady_cl
 std::mutex trace_mutex;
 std::mutex registry_mutex;
 std::unordered_map<const rclcpp::node_interfaces::NodeBaseInterface*, Schedule*> registry;
+std::atomic<int> stop_signals{0};
+
+void on_stop_signal(int) { stop_signals.fetch_add(1); }
 
 std::string ms(std::int64_t ns) {
   char text[32];
@@ -106,6 +111,27 @@ void trace(const std::string& text) {
   std::fflush(stdout);
 }
 
+void init(int argc, char** argv) {
+  rclcpp::init(argc, argv, rclcpp::InitOptions(), rclcpp::SignalHandlerOptions::None);
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+}
+
+void spin(rclcpp::Executor& executor, std::chrono::milliseconds grace) {
+  while (stop_signals.load() == 0 && rclcpp::ok()) {
+    executor.spin_once(std::chrono::milliseconds(100));
+  }
+  const auto until = std::chrono::steady_clock::now() + grace;
+  std::vector<std::string> configured = Schedule::rsaml_configured();
+  while (!configured.empty() && stop_signals.load() < 2 && rclcpp::ok() && std::chrono::steady_clock::now() < until) {
+    executor.spin_once(std::chrono::milliseconds(20));
+    configured = Schedule::rsaml_configured();
+  }
+  for (const std::string& node : configured) {
+    trace("state " + node + " at exit: no lifecycle manager deactivated it");
+  }
+}
+
 Schedule::Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base,
                    rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers, rclcpp::Clock::SharedPtr clock,
                    double simulated_load, std::string module, int core)
@@ -151,6 +177,19 @@ Schedule* Schedule::rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* b
   std::lock_guard<std::mutex> lock(registry_mutex);
   auto found = registry.find(base);
   return found == registry.end() ? nullptr : found->second;
+}
+
+std::vector<std::string> Schedule::rsaml_configured() {
+  std::vector<std::string> configured;
+  std::lock_guard<std::mutex> lock(registry_mutex);
+  for (const auto& entry : registry) {
+    const char* state = entry.second->rsaml_configured_state();
+    if (state != nullptr) {
+      configured.push_back(entry.second->module_ + " " + state);
+    }
+  }
+  std::sort(configured.begin(), configured.end());
+  return configured;
 }
 
 std::size_t Schedule::rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns,

@@ -10,6 +10,7 @@
 // completion) and reported.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
@@ -27,6 +28,21 @@ namespace rsaml_ros2 {
 
 /** Prints one trace line, "[   12.345 ms] text", ms since the process started; flushed at once. */
 void trace(const std::string& text);
+
+/**
+ * rclcpp::init without rclcpp's signal handlers: SIGINT and SIGTERM ask spin() below to stop, so that
+ * the process can still serve its managed nodes' transitions while the lifecycle manager (which gets
+ * the same signal from ros2 launch, or from the terminal) deactivates and cleans them up.
+ */
+void init(int argc, char** argv);
+
+/**
+ * Spins the process's main executor until SIGINT or SIGTERM (see init()); then, while a managed node
+ * of the process is still configured (inactive or active), goes on serving it for at most `grace`, a
+ * second signal ending the wait; a node still configured then is said in the trace. A process of
+ * plain nodes stops at once.
+ */
+void spin(rclcpp::Executor& executor, std::chrono::milliseconds grace = std::chrono::milliseconds(3000));
 
 /**
  * What the model and the timing analysis say of the jobs of a timed release or of a node's
@@ -84,6 +100,11 @@ class Schedule {
 
   /** The schedule of a node base interface, when it is a generated node of this package; else null. */
   static Schedule* rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base);
+  /** The managed nodes of this process that are configured (inactive or active), as "module state". */
+  static std::vector<std::string> rsaml_configured();
+
+  /** The state of a managed node when it is configured ("inactive" or "active"); else (and for a plain node) null. */
+  virtual const char* rsaml_configured_state() const { return nullptr; }
 
   /** The CPU core of the node's processor, or -1. */
   int rsaml_core() const { return core_; }
@@ -224,7 +245,7 @@ class Scheduler {
 /** main() of a node's own process: the node, its release threads and a main executor for the rest. */
 template <typename NodeT>
 int run_standalone(int argc, char** argv) {
-  rclcpp::init(argc, argv);
+  init(argc, argv);
   int status = 0;
   {
     rclcpp::executors::SingleThreadedExecutor executor;
@@ -232,7 +253,7 @@ int run_standalone(int argc, char** argv) {
     Scheduler scheduler;
     scheduler.add(*node);
     executor.add_node(node->get_node_base_interface());
-    executor.spin();
+    spin(executor);
     scheduler.stop();
   }
   rclcpp::shutdown();

@@ -29,7 +29,8 @@ import org.rsaml.validation.ModelLoader;
 
 /**
  * Managed (rclcpp_lifecycle) nodes of a generated package on a real ROS 2 ({@link Ros2Jazzy}), with
- * each launch file: brought to active by the package's lifecycle manager.
+ * each launch file: brought to active by the package's lifecycle manager, and deactivated and
+ * cleaned up by it when the launch stops.
  */
 class Ros2LifecycleLaunchTest {
 
@@ -38,7 +39,9 @@ class Ros2LifecycleLaunchTest {
      * plain), with each launch file: the package's lifecycle manager configures and activates them,
      * so that ROS 2 itself ({@code ros2 lifecycle get}) reports exactly them as lifecycle nodes, both
      * active; each traced configure, then activate; their messages flow (the mapper receives the
-     * lidar's scans, the plain monitor the mapper's maps); everything exits cleanly on SIGINT.
+     * lidar's scans, the plain monitor the mapper's maps); on SIGINT the lifecycle manager deactivates
+     * each, then cleans it up (traced by the node, seen by the manager) while the node's process waits
+     * for it, and everything exits cleanly.
      * {@code -Dtest=Ros2LifecycleLaunchTest} runs it alone.
      */
     @Test
@@ -89,9 +92,19 @@ class Ros2LifecycleLaunchTest {
             assertEquals(expected, reported, file + ": the lifecycle nodes and their states, as ros2 lifecycle get reports them:\n" + states);
             for (String m : managed) {
                 int configured = out.indexOf("state " + m + " inactive");
-                assertTrue(configured >= 0 && configured < out.indexOf("state " + m + " active"),
+                int active = out.indexOf("state " + m + " active");
+                assertTrue(configured >= 0 && configured < active,
                         file + ": " + m + " was not configured before it was activated:\n" + Tools.last(out, 6000));
+                // On SIGINT the lifecycle manager deactivates it, then cleans it up, while its process waits for that.
+                int deactivated = out.indexOf("state " + m + " inactive", active);
+                int cleaned = out.indexOf("state " + m + " unconfigured", Math.max(deactivated, 0));
+                assertTrue(deactivated > active && cleaned > deactivated, file + ": on SIGINT, " + m
+                        + " was not deactivated and then cleaned up:\n" + Tools.last(out, 6000));
+                assertTrue(out.contains(": " + nodes.get(m) + " is unconfigured"), file + ": the lifecycle manager did not see "
+                        + m + " unconfigured:\n" + Tools.last(out, 6000));
             }
+            assertFalse(out.contains("no lifecycle manager deactivated it"), () -> file + ": a managed node was left configured:\n"
+                    + Tools.last(out, 6000));
             assertFalse(out.contains("process has died"), () -> file + ": a process died:\n" + Tools.last(out, 6000));
             Map<String, double[]> ports = new TreeMap<>();
             Matcher p = Ros2LaunchTest.PORT.matcher(out);

@@ -206,7 +206,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	«ENDFOR»
 		        «ENDIF»
 		        «FOR c : rosNames.containers.filter[modules.exists[managed]]»
-		        	# The managed nodes«IF c.processor !== null» of processor '«Names.comment(c.processor.name)»'«ENDIF»: configured, then activated, once they are up.
+		        	# The managed nodes«IF c.processor !== null» of processor '«Names.comment(c.processor.name)»'«ENDIF»: configured, then activated, once they are up; deactivated and cleaned up when the launch stops.
 		        	Node(package=«py(context.packages.runtime)», executable=«py(rosNames.lifecycleManagerExecutable)», name=«py(c.name.replaceFirst("_container$", "") + "_lifecycle_manager")»,
 		        	     namespace=namespace, output='screen',
 		        	     parameters=[{'node_names': [«FOR m : c.modules.filter[managed] SEPARATOR ", "»«py(m.rosNode)»«ENDFOR»]}]«IF hosted»,

@@ -102,8 +102,10 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		starts its timers, *deactivate* stops both, *cleanup* and *shutdown* release them; while it is
 		not active it publishes nothing and drops what arrives (an override of yours of `on_configure`
 		and the like calls the generated one). Both launch files start `«rosNames.lifecycleManagerExecutable»`,
-		which configures and activates them once they are up and then exits; `ros2 lifecycle get` shows
-		their states, `ros2 lifecycle set` changes them.
+		which configures and activates them once they are up and, when the launch stops (SIGINT or
+		SIGTERM, Ctrl-C), deactivates and cleans them up before it exits (their processes serve them
+		for at most 3 s meanwhile); `ros2 lifecycle get` shows their states, `ros2 lifecycle set`
+		changes them.
 		«ENDIF»
 
 		Messages are not copied on their way in: each subscription takes a `ConstSharedPtr`, which the

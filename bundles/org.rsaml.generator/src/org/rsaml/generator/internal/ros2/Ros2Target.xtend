@@ -207,6 +207,6 @@ class Ros2Files {
 		val text = try new String(in.readAllBytes, java.nio.charset.StandardCharsets.UTF_8) finally in.close
 		"// " + context.banner + "\n" + text.replace("namespace rsaml_ros2 {", "namespace " + names.project + "::rsaml_ros2 {")
 			.replace("}  // namespace rsaml_ros2", "}  // namespace " + names.project + "::rsaml_ros2")
-			.replace("rsaml_ros2::Container", names.project + "::rsaml_ros2::Container")
+			.replaceAll("(?<![\\w:])rsaml_ros2::", names.project + "::rsaml_ros2::")
 	}
 }

@@ -289,9 +289,14 @@ TimerBase::SharedPtr create_timer(std::shared_ptr<node_interfaces::NodeBaseInter
 }
 
 // rclcpp/utilities.hpp, rclcpp/executors.hpp
-inline void init(int argc, char const* const* argv) {
+class InitOptions {};
+enum class SignalHandlerOptions { All, SigInt, SigTerm, None };
+inline void init(int argc, char const* const* argv, const InitOptions& init_options = InitOptions(),
+                 SignalHandlerOptions signal_handler_options = SignalHandlerOptions::All) {
   (void)argc;
   (void)argv;
+  (void)init_options;
+  (void)signal_handler_options;
 }
 inline void spin(std::shared_ptr<Node> node) { (void)node; }
 inline bool shutdown() { return true; }
@@ -317,6 +322,7 @@ class Executor {
     (void)notify;
   }
   virtual void spin() = 0;
+  void spin_once(std::chrono::nanoseconds timeout = std::chrono::nanoseconds(-1)) { (void)timeout; }
   void cancel() {}
   bool is_spinning() { return false; }
 };
