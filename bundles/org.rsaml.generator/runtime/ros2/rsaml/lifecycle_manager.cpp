@@ -109,34 +109,40 @@ int activate(const rclcpp::Node::SharedPtr& node, Managed& m) {
   return -1;
 }
 
-/** Deactivates (when active) and cleans up one node by `deadline`: 0 when it is then unconfigured, else 1. */
+/**
+ * Deactivates (when active) and cleans up one node by `deadline`: 0 when it is then unconfigured, else
+ * 1. A successful cleanup is the node's word that it is unconfigured: its process may exit at once.
+ */
 int bring_down(const rclcpp::Node::SharedPtr& node, Managed& m, Clock::time_point deadline) {
-  while (true) {
-    auto state = call<GetState>(node, m.get, std::make_shared<GetState::Request>(), deadline, false);
-    if (!state) {
-      RCLCPP_ERROR(node->get_logger(), "%s did not say its state in time: it was not deactivated and cleaned up", m.name.c_str());
-      return 1;
+  auto state = call<GetState>(node, m.get, std::make_shared<GetState::Request>(), deadline, false);
+  if (!state) {
+    RCLCPP_ERROR(node->get_logger(), "%s did not say its state in time: it was not deactivated and cleaned up", m.name.c_str());
+    return 1;
+  }
+  const std::uint8_t id = state->current_state.id;
+  if (id == State::PRIMARY_STATE_UNCONFIGURED || id == State::PRIMARY_STATE_FINALIZED) {
+    RCLCPP_INFO(node->get_logger(), "%s is %s", m.name.c_str(), state->current_state.label.c_str());
+    return 0;
+  }
+  if (id != State::PRIMARY_STATE_ACTIVE && id != State::PRIMARY_STATE_INACTIVE) {
+    RCLCPP_ERROR(node->get_logger(), "%s is %s: it cannot be cleaned up", m.name.c_str(), state->current_state.label.c_str());
+    return 1;
+  }
+  for (const std::uint8_t transition : {Transition::TRANSITION_DEACTIVATE, Transition::TRANSITION_CLEANUP}) {
+    if (transition == Transition::TRANSITION_DEACTIVATE && id != State::PRIMARY_STATE_ACTIVE) {
+      continue;
     }
-    const std::uint8_t id = state->current_state.id;
     auto request = std::make_shared<ChangeState::Request>();
-    if (id == State::PRIMARY_STATE_ACTIVE) {
-      request->transition.id = Transition::TRANSITION_DEACTIVATE;
-    } else if (id == State::PRIMARY_STATE_INACTIVE) {
-      request->transition.id = Transition::TRANSITION_CLEANUP;
-    } else if (id == State::PRIMARY_STATE_UNCONFIGURED || id == State::PRIMARY_STATE_FINALIZED) {
-      RCLCPP_INFO(node->get_logger(), "%s is %s", m.name.c_str(), state->current_state.label.c_str());
-      return 0;
-    } else {
-      RCLCPP_ERROR(node->get_logger(), "%s is %s: it cannot be cleaned up", m.name.c_str(), state->current_state.label.c_str());
-      return 1;
-    }
+    request->transition.id = transition;
     auto changed = call<ChangeState>(node, m.change, request, deadline, false);
     if (!changed || !changed->success) {
       RCLCPP_ERROR(node->get_logger(), "%s %s to %s (see its log)", m.name.c_str(), changed ? "refused" : "did not answer in time",
-                   request->transition.id == Transition::TRANSITION_DEACTIVATE ? "deactivate" : "clean up");
+                   transition == Transition::TRANSITION_DEACTIVATE ? "deactivate" : "clean up");
       return 1;
     }
   }
+  RCLCPP_INFO(node->get_logger(), "%s is unconfigured", m.name.c_str());
+  return 0;
 }
 
 }  // namespace

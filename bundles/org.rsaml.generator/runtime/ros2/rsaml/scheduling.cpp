@@ -123,9 +123,15 @@ void spin(rclcpp::Executor& executor, std::chrono::milliseconds grace) {
   }
   const auto until = std::chrono::steady_clock::now() + grace;
   std::vector<std::string> configured = Schedule::rsaml_configured();
+  const bool managed = !configured.empty();
   while (!configured.empty() && stop_signals.load() < 2 && rclcpp::ok() && std::chrono::steady_clock::now() < until) {
     executor.spin_once(std::chrono::milliseconds(20));
     configured = Schedule::rsaml_configured();
+  }
+  // The last cleanup's answer is on its way to the lifecycle manager: a moment more for its delivery.
+  const auto linger = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+  while (managed && configured.empty() && stop_signals.load() < 2 && rclcpp::ok() && std::chrono::steady_clock::now() < linger) {
+    executor.spin_once(std::chrono::milliseconds(20));
   }
   for (const std::string& node : configured) {
     trace("state " + node + " at exit: no lifecycle manager deactivated it");

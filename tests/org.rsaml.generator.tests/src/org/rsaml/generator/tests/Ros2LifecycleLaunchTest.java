@@ -41,7 +41,10 @@ class Ros2LifecycleLaunchTest {
      * active; each traced configure, then activate; their messages flow (the mapper receives the
      * lidar's scans, the plain monitor the mapper's maps); on SIGINT the lifecycle manager deactivates
      * each, then cleans it up (traced by the node, seen by the manager) while the node's process waits
-     * for it, and everything exits cleanly.
+     * for it, and everything exits cleanly. Then, without the launch files, when one side of a
+     * managed node is gone: a node process whose lifecycle manager was killed says on SIGINT that its
+     * node was left active and exits, and a lifecycle manager whose node process was killed says on
+     * SIGINT that the node was not cleaned up and exits with status 1 (neither waits for long).
      * {@code -Dtest=Ros2LifecycleLaunchTest} runs it alone.
      */
     @Test
@@ -80,7 +83,11 @@ class Ros2LifecycleLaunchTest {
                 states = Tools.ok(tmp, 60, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + domain
                         + "; ros2 lifecycle get --no-daemon --spin-time 3", install).toArray(String[]::new));
                 Tools.ok(tmp, 10, "kill", "-INT", Long.toString(launch.pid()));
-                assertTrue(launch.waitFor(60, TimeUnit.SECONDS), file + ": ros2 launch did not stop within 60 s of SIGINT");
+                boolean stopped = launch.waitFor(60, TimeUnit.SECONDS);
+                String processes = stopped ? "" : Tools.run(tmp, 10, "bash", "-c", "ps -eo pid,ppid,stat,cls,rtprio,pcpu,args --forest | cut -c1-160"
+                        + "; grep -E 'State|Sig' /proc/" + launch.pid() + "/status; uptime").output();
+                String shown = Tools.last(processes, 6000);
+                assertTrue(stopped, () -> file + ": ros2 launch did not stop within 60 s of SIGINT:\n" + tail(log) + "\n" + shown);
             } finally {
                 launch.descendants().forEach(ProcessHandle::destroyForcibly);
                 launch.destroyForcibly();
@@ -116,5 +123,75 @@ class Ros2LifecycleLaunchTest {
                         + (ports.containsKey(port) ? (long) ports.get(port)[0] : 0) + "):\n" + Tools.last(out, 6000));
             }
         }
+        String lidar = nodes.get("perception/lidar");
+        // The lifecycle manager killed: the node's process, on SIGINT, serves it a while, says it is left active and exits.
+        try (Started node = start(tmp, install, domain, pkg, lidar, "orphaned-node");
+                Started manager = start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
+                        "orphaned-node-manager")) {
+            node.await("state perception/lidar active");
+            manager.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            String out = node.stop();
+            assertTrue(out.contains("state perception/lidar active at exit: no lifecycle manager deactivated it"),
+                    "a node left active says so at exit:\n" + Tools.last(out, 4000));
+            assertEquals(0, node.process.exitValue(), () -> "the node's process exits cleanly:\n" + Tools.last(out, 4000));
+        }
+        // The node's process killed: the lifecycle manager, on SIGINT, says the node was not cleaned up and exits with 1.
+        try (Started node = start(tmp, install, domain, pkg, lidar, "lost-node");
+                Started manager = start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
+                        "lost-node-manager")) {
+            manager.await(lidar + " is active");
+            node.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            String out = manager.stop();
+            assertTrue(out.contains(lidar + " did not say its state in time: it was not deactivated and cleaned up"),
+                    "the lifecycle manager says which node it could not bring down:\n" + Tools.last(out, 4000));
+            assertEquals(1, manager.process.exitValue(), () -> "the lifecycle manager fails:\n" + Tools.last(out, 4000));
+        }
+    }
+
+    /** The end of a log, for a failure's message. */
+    private static String tail(Path log) {
+        try {
+            return Tools.last(Files.readString(log, StandardCharsets.UTF_8), 8000);
+        } catch (java.io.IOException e) {
+            return "(" + log + " unreadable: " + e.getMessage() + ")";
+        }
+    }
+
+    /** A process of an installed executable of the package (with its arguments), its output in a log; killed when closed. */
+    private record Started(Process process, Path log) implements AutoCloseable {
+        /** Waits (at most 120 s) until the output says {@code text}. */
+        void await(String text) throws Exception {
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+            while (!Files.readString(log, StandardCharsets.UTF_8).contains(text)) {
+                String o = Files.readString(log, StandardCharsets.UTF_8);
+                if (!process.isAlive() || System.nanoTime() > until) {
+                    fail(log.getFileName() + ": did not say '" + text + "' within 120 s:\n" + Tools.last(o, 4000));
+                }
+                Thread.sleep(200);
+            }
+        }
+
+        /** SIGINT, then its output once it exited (it must within 30 s). */
+        String stop() throws Exception {
+            Tools.ok(log.getParent(), 10, "kill", "-INT", Long.toString(process.pid()));
+            boolean exited = process.waitFor(30, TimeUnit.SECONDS);
+            String out = Files.readString(log, StandardCharsets.UTF_8);
+            assertTrue(exited, () -> log.getFileName() + ": still running 30 s after SIGINT:\n" + Tools.last(out, 4000));
+            return out;
+        }
+
+        @Override
+        public void close() {
+            process.descendants().forEach(ProcessHandle::destroyForcibly);
+            process.destroyForcibly();
+        }
+    }
+
+    private static Started start(Path tmp, Path install, int domain, String pkg, String executable, String name) throws Exception {
+        Path log = tmp.resolve(name + ".log");
+        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable, install))
+                .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+        Ros2Jazzy.isolate(pb.environment(), domain);
+        return new Started(pb.start(), log);
     }
 }
