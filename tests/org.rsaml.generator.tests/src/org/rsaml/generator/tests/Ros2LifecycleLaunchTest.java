@@ -62,7 +62,8 @@ class Ros2LifecycleLaunchTest {
         int domain = 1 + (int) ((ProcessHandle.current().pid() + 50) % 100);
         for (String file : List.of(pkg + ".launch.py", pkg + "_processes.launch.py")) {
             Path log = tmp.resolve(file + ".log");
-            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + file, install))
+            // SIGINT at its default even where this test was started with it ignored (a background job): launch then ignores it.
+            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec env --default-signal=INT ros2 launch " + pkg + " " + file, install))
                     .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
             Ros2Jazzy.isolate(pb.environment(), domain);
             Process launch = pb.start();
@@ -189,7 +190,8 @@ class Ros2LifecycleLaunchTest {
 
     private static Started start(Path tmp, Path install, int domain, String pkg, String executable, String name) throws Exception {
         Path log = tmp.resolve(name + ".log");
-        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable, install))
+        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec env --default-signal=INT \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable,
+                install))
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         Ros2Jazzy.isolate(pb.environment(), domain);
         return new Started(pb.start(), log);
