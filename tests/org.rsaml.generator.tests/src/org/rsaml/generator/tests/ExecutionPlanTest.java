@@ -31,27 +31,27 @@ class ExecutionPlanTest {
         ExecutionPlan plan = plan("exp3-task-interpreter.rsaml");
         // Lowest layer first: the start order.
         assertEquals(List.of("motionControl/motionController", "interpretation/taskInterpreter"),
-                plan.modules().stream().map(PlannedModule::qualifiedName).toList());
-        assertEquals(1, plan.releases().size());
+                plan.modules().stream().map(PlannedModule::qualifiedName).toList(), "modules start lowest layer first");
+        assertEquals(1, plan.releases().size(), "exp3 has one periodic release: the motion controller's function");
         Release r = plan.releases().get(0);
-        assertEquals(ReleaseKind.FUNCTION, r.kind());
-        assertEquals("motionControl/motionController.executeInstructions", r.label());
-        assertEquals(20_000_000L, r.periodNs());
-        assertEquals(20_000_000L, r.deadlineNs());
-        assertEquals(6_000_000L, r.costNs());
-        assertEquals(SchedulingPolicy.RM, r.policy());
+        assertEquals(ReleaseKind.FUNCTION, r.kind(), "the release is a periodic function's");
+        assertEquals("motionControl/motionController.executeInstructions", r.label(), "the release is labelled module.function");
+        assertEquals(20_000_000L, r.periodNs(), "the release's period is the model's 20 ms");
+        assertEquals(20_000_000L, r.deadlineNs(), "the release's deadline defaults to its period");
+        assertEquals(6_000_000L, r.costNs(), "the release's cost is the six actions' 6 ms");
+        assertEquals(SchedulingPolicy.RM, r.policy(), "the release is scheduled rate monotonic, as the model says");
         assertEquals(2, r.rank(), "the only rate-monotonic release ranks just above the base priority");
         // Its six actions run inline, each at its start date within the period.
         assertEquals(List.of(0L, 1_000_000L, 2_000_000L, 3_000_000L, 4_000_000L, 5_000_000L),
-                r.function().inlineActions().stream().map(a -> a.offsetNs()).toList());
+                r.function().inlineActions().stream().map(a -> a.offsetNs()).toList(), "the six actions run at their start dates, 1 ms apart");
 
-        assertEquals(1, plan.reactions().size());
+        assertEquals(1, plan.reactions().size(), "exp3 has one reactive module");
         PlannedModule interpreter = plan.reactions().get(0).module();
-        assertEquals("interpretation/taskInterpreter", interpreter.qualifiedName());
-        assertTrue(interpreter.reactive() && !interpreter.periodic());
-        assertNull(plan.modules().get(0).reaction());
-        assertEquals(2, plan.flows().size());
-        assertTrue(plan.reactiveCycles().isEmpty());
+        assertEquals("interpretation/taskInterpreter", interpreter.qualifiedName(), "the reactive module is the task interpreter");
+        assertTrue(interpreter.reactive() && !interpreter.periodic(), "the interpreter reacts to inputs and is not periodic");
+        assertNull(plan.modules().get(0).reaction(), "the periodic motion controller has no reaction");
+        assertEquals(2, plan.flows().size(), "exp3's two connections become two flows");
+        assertTrue(plan.reactiveCycles().isEmpty(), "exp3 has no reactive cycle");
         assertTrue(plan.warnings().isEmpty(), plan.warnings()::toString);
     }
 
@@ -74,9 +74,9 @@ class ExecutionPlanTest {
     @Test
     void exp1HasAReactiveCycleThePlanNames() throws Exception {
         List<List<PlannedModule>> cycles = plan("exp1-hybrid.rsaml").reactiveCycles();
-        assertEquals(1, cycles.size());
+        assertEquals(1, cycles.size(), "exp1 has exactly one reactive cycle");
         assertEquals(List.of("functional/m01", "control/requestChecker", "control/resourceChecker", "decision/temporalExecutive"),
-                cycles.get(0).stream().map(PlannedModule::qualifiedName).toList());
-        assertFalse(cycles.get(0).stream().anyMatch(PlannedModule::periodic));
+                cycles.get(0).stream().map(PlannedModule::qualifiedName).toList(), "the cycle names its modules in flow order");
+        assertFalse(cycles.get(0).stream().anyMatch(PlannedModule::periodic), "the cycle has only reactive modules");
     }
 }

@@ -29,41 +29,41 @@ class NamesTest {
     @CsvSource({ "../../etc/passwd, etc_passwd", "class, class_", "None, None_", "3d camera, n3d_camera", "a--b  c, a_b_c",
             "__init__, init", "été, t", "linux, linux_", "'', unnamed" })
     void identifiers(String raw, String expected) {
-        assertEquals(expected, Names.identifier(raw));
+        assertEquals(expected, Names.identifier(raw), "the model name '" + raw + "' becomes a safe identifier");
     }
 
     @ParameterizedTest
     @CsvSource({ "taskInterpreter, TaskInterpreter, task_interpreter", "eMoveSP, EMoveSP, e_move_sp",
             "motor-left, MotorLeft, motor_left", "none, None_, none", "HTTPServer, HTTPServer, http_server" })
     void classAndRosNames(String raw, String pascal, String snake) {
-        assertEquals(pascal, Names.pascal(raw));
-        assertEquals(snake, Names.snake(raw));
+        assertEquals(pascal, Names.pascal(raw), "'" + raw + "' becomes the class name " + pascal);
+        assertEquals(snake, Names.snake(raw), "'" + raw + "' becomes the ROS name " + snake);
     }
 
     @ParameterizedTest
     @CsvSource({ "Pose2D, pose2_d", "MotionInstruction, motion_instruction", "LaserScan, laser_scan", "Twist, twist" })
     void rosidlHeaderNames(String type, String header) {
-        assertEquals(header, Names.rosidlHeaderStem(type));
+        assertEquals(header, Names.rosidlHeaderStem(type), "the ROS message type " + type + " is included from the header rosidl generates");
     }
 
     @Test
     void collisionsGetSuffixesInModelOrder() {
         NameScope files = new NameScope(true);
-        assertEquals("Foo", files.allocate("Foo"));
-        assertEquals("foo_2", files.allocate("foo"));
-        assertEquals("Foo_3", files.allocate("Foo"));
+        assertEquals("Foo", files.allocate("Foo"), "the first name is kept as it is");
+        assertEquals("foo_2", files.allocate("foo"), "a name that differs only in case gets a suffix (files are case-insensitive on some systems)");
+        assertEquals("Foo_3", files.allocate("Foo"), "the third name of the same spelling gets the next suffix");
         NameScope members = new NameScope(false, "react");
-        assertEquals("x", members.allocate("x", "in_", "", "on_", ""));
-        assertEquals("react_2", members.allocate("react"));
-        assertTrue(members.isTaken("in_x") && members.isTaken("on_x"));
+        assertEquals("x", members.allocate("x", "in_", "", "on_", ""), "a member name without a collision is kept");
+        assertEquals("react_2", members.allocate("react"), "a reserved member name gets a suffix");
+        assertTrue(members.isTaken("in_x") && members.isTaken("on_x"), "the derived port members in_x and on_x are reserved with x");
     }
 
     @Test
     void stringsAndCommentsCannotEscape() {
-        assertEquals("\"a\\\"b\\\\c\\012\\303\\251\"", Names.cppString("a\"b\\c\né"));
-        assertEquals("'it\\'s'", Names.pythonString("it's"));
-        assertEquals("a * / b", Names.comment("a */ b\\"));
-        assertEquals("x &lt;y&gt; &amp;", Names.xml("x <y> &"));
+        assertEquals("\"a\\\"b\\\\c\\012\\303\\251\"", Names.cppString("a\"b\\c\né"), "a C++ string literal escapes quotes, backslashes, newlines and non-ASCII bytes");
+        assertEquals("'it\\'s'", Names.pythonString("it's"), "a Python string literal escapes its quote");
+        assertEquals("a * / b", Names.comment("a */ b\\"), "a model text can neither close a C++ comment nor continue it with a trailing backslash");
+        assertEquals("x &lt;y&gt; &amp;", Names.xml("x <y> &"), "a model text cannot open XML markup");
     }
 
     /** A model full of hostile names generates a project whose files are exactly these, and that builds and runs. */
