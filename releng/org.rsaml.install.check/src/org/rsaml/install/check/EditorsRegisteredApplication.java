@@ -14,7 +14,6 @@ import org.eclipse.core.runtime.content.IContentType;
 import org.eclipse.equinox.app.IApplication;
 import org.eclipse.equinox.app.IApplicationContext;
 import org.osgi.framework.Bundle;
-import org.osgi.framework.FrameworkUtil;
 
 /**
  * Checks, in an Eclipse into which RsaML's editors feature was installed with p2, what a user relies on to open a
@@ -45,13 +44,7 @@ public class EditorsRegisteredApplication implements IApplication {
     }
 
     private void checkEveryBundleResolves() {
-        int installed = 0;
-        for (Bundle bundle : FrameworkUtil.getBundle(getClass()).getBundleContext().getBundles()) {
-            installed++;
-            if (bundle.getState() == Bundle.INSTALLED) {
-                failures.add(bundle.getSymbolicName() + " " + bundle.getVersion() + " is installed but does not resolve");
-            }
-        }
+        int installed = InstalledBundles.checkResolve(id -> true, failures);
         System.out.println("bundles installed: " + installed);
         for (String id : List.of("org.rsaml.model.editor", "org.rsaml.design", "org.eclipse.emf.edit.ui", "org.eclipse.sirius",
                 "org.eclipse.sirius.diagram.ui")) {

@@ -24,7 +24,6 @@ import org.eclipse.core.resources.ResourcesPlugin;
 import org.eclipse.core.runtime.CoreException;
 import org.eclipse.equinox.app.IApplication;
 import org.eclipse.equinox.app.IApplicationContext;
-import org.osgi.framework.Bundle;
 import org.osgi.framework.FrameworkUtil;
 import org.rsaml.tests.support.ExpectedFinding;
 
@@ -60,15 +59,7 @@ public class WorkspaceBuildApplication implements IApplication {
     }
 
     private void checkRsamlBundlesResolve() {
-        int found = 0;
-        for (Bundle bundle : context().getBundles()) {
-            if (isInstalledRsaml(bundle.getSymbolicName())) {
-                found++;
-                if (bundle.getState() == Bundle.INSTALLED) {
-                    failures.add(bundle.getSymbolicName() + " " + bundle.getVersion() + " is installed but does not resolve");
-                }
-            }
-        }
+        int found = InstalledBundles.checkResolve(WorkspaceBuildApplication::isInstalledRsaml, failures);
         System.out.println("RsaML bundles installed: " + found);
         if (found == 0) {
             failures.add("no RsaML bundle is installed");
