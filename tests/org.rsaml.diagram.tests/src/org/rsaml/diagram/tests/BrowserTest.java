@@ -11,10 +11,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.Iterator;
 import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.resource.Resource;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.rsaml.analysis.ArchitectureTiming;
@@ -46,8 +49,6 @@ import com.google.gson.JsonObject;
  */
 class BrowserTest {
 
-    private static final String MODULE = "hybridMobileRobotWithDefects/control/resourceChecker";
-
     private static final String MISSED = "mobile-base-latency-missed.rsaml";
 
     private static final Path EXP2 = TestRepository.example("exp2-defects.rsaml");
@@ -56,17 +57,36 @@ class BrowserTest {
     /** What exp2 must give, from its {@code <!-- expect: -->} comments. */
     private static List<ExpectedFinding> expected;
     private static JsonObject timing;
+    /** The module the page is asked to click: the first module exp2's expectations name (its over-budget module). */
+    private static org.rsaml.model.Module module;
+    private static String moduleName;
 
     @BeforeAll
     static void openTheReports() throws Exception {
         Files.createDirectories(Browser.OUT);
         expected = ExpectedFinding.of(EXP2);
+        module = firstModuleWithAFinding();
+        moduleName = RsamlLabels.qualifiedName(module);
         Path page = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(EXP2,
                 "examples/exp2-defects.rsaml", DiagramFormat.HTML, Browser.OUT);
-        seen = Browser.run("exp2-report", List.of(page.toString()), List.of(MODULE));
+        seen = Browser.run("exp2-report", List.of(page.toString()), List.of(moduleName));
         Path timed = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example(MISSED), "examples/" + MISSED, DiagramFormat.HTML,
                 Browser.OUT.resolve("timing"));
         timing = Browser.run("timing-report", List.of(timed.toString()), List.of()).getAsJsonObject("overlay");
+    }
+
+    /** The element of the first expectation of exp2 that is a module (the page lists a module's attributes and findings). */
+    private static org.rsaml.model.Module firstModuleWithAFinding() throws Exception {
+        Resource model = ModelLoader.load(EXP2, "examples/exp2-defects.rsaml").resource();
+        for (ExpectedFinding e : expected) {
+            for (Iterator<EObject> all = model.getAllContents(); all.hasNext();) {
+                if (all.next() instanceof org.rsaml.model.Module m && RsamlLabels.qualifiedName(m).equals(e.qualifiedName())) {
+                    return m;
+                }
+            }
+        }
+        throw new AssertionError(EXP2 + " states no finding on a module in its <!-- expect: --> comments; the page's click on"
+                + " a module needs one: " + expected);
     }
 
     @Test
@@ -123,12 +143,13 @@ class BrowserTest {
     @Test
     void clickingAnElementListsItsAttributesAndFindings() throws Exception {
         JsonObject element = seen.getAsJsonObject("element");
-        assertEquals("Module " + MODULE, element.get("details").getAsString(), "the clicked element is named");
-        assertEquals("2.5", element.getAsJsonObject("attributes").get("execDuration").getAsString(), "its attributes are listed");
-        ExpectedFinding own = ExpectedFinding.on(EXP2, MODULE);
+        assertEquals("Module " + moduleName, element.get("details").getAsString(), "the clicked element is named");
+        assertEquals(RsamlLabels.number(module.getExecDuration()), element.getAsJsonObject("attributes").get("execDuration").getAsString(),
+                "its attributes are listed, its execution duration as the model states it");
+        ExpectedFinding own = ExpectedFinding.on(EXP2, moduleName);
         assertEquals(List.of(own.severity() + " " + own.diagnosticMessage()), strings(element.getAsJsonArray("findings")),
                 "its own finding, worded as the command line words it");
-        assertEquals(List.of(MODULE), strings(element.getAsJsonArray("highlighted")), "only the element is highlighted");
+        assertEquals(List.of(moduleName), strings(element.getAsJsonArray("highlighted")), "only the element is highlighted");
     }
 
     @Test
