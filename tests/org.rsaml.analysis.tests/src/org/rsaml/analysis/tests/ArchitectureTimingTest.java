@@ -54,36 +54,36 @@ class ArchitectureTimingTest {
     @Test
     void twoProcessorsAndALatencyThatHolds() throws Exception {
         ArchitectureTiming timing = TimingAnalysis.analyse(example("mobile-base-latency.rsaml"));
-        assertEquals(List.of("core0", "core1"), timing.processors().stream().map(ProcessorTiming::name).toList());
+        assertEquals(List.of("core0", "core1"), timing.processors().stream().map(ProcessorTiming::name).toList(), "mobile-base-latency's two processors are analysed, in the model's order");
         ProcessorTiming core0 = timing.processors().get(0);
-        assertEquals(SchedulingPolicy.FIXED_PRIORITY, core0.result().policy());
+        assertEquals(SchedulingPolicy.FIXED_PRIORITY, core0.result().policy(), "core0 is analysed as fixed-priority (rate monotonic)");
         // rate monotonic: the odometry (5 ms) preempts the controller (10 ms) once
-        assertEquals(1 * MS, task(core0, "control/odometry.integrate").responseTime().getAsLong());
-        assertEquals(3 * MS, task(core0, "control/velocityController.control").responseTime().getAsLong());
+        assertEquals(1 * MS, task(core0, "control/odometry.integrate").responseTime().getAsLong(), "the odometry (5 ms, highest rank) responds within its own 1 ms");
+        assertEquals(3 * MS, task(core0, "control/velocityController.control").responseTime().getAsLong(), "the velocity controller responds in 3 ms: its own 2 ms plus one odometry preemption");
         ProcessorTiming core1 = timing.processors().get(1);
-        assertEquals(4 * MS, task(core1, "navigation/obstacleDetector.detect").responseTime().getAsLong());
+        assertEquals(4 * MS, task(core1, "navigation/obstacleDetector.detect").responseTime().getAsLong(), "the obstacle detector, alone at its rank on core1, responds in its 4 ms");
         // the planner (30 ms every 100 ms) is preempted by two detector jobs
-        assertEquals(38 * MS, task(core1, "navigation/pathPlanner.plan").responseTime().getAsLong());
-        assertEquals(Verdict.MEETS, timing.verdict());
+        assertEquals(38 * MS, task(core1, "navigation/pathPlanner.plan").responseTime().getAsLong(), "the path planner responds in 38 ms: its 30 ms plus two detector preemptions");
+        assertEquals(Verdict.MEETS, timing.verdict(), "every task of mobile-base-latency meets its deadline");
 
         LatencyResult l = timing.latencies().get(0);
-        assertEquals("scanToWheels", l.name());
+        assertEquals("scanToWheels", l.name(), "the model's latency requirement is reported by its name");
         assertEquals(Verdict.MEETS, l.verdict(), l.explanation());
-        assertEquals(37 * MS, l.reactionNs());
-        assertEquals(List.of("navigation/obstacleDetector", "control/velocityController"), l.worstPath().stream().map(Hop::label).toList());
-        assertEquals(20 * MS, l.worstPath().get(0).waitNs());
-        assertEquals(4 * MS, l.worstPath().get(0).responseNs());
-        assertEquals(13 * MS, l.worstPath().get(1).totalNs());
+        assertEquals(37 * MS, l.reactionNs(), "the worst reaction from scan to wheels is 37 ms");
+        assertEquals(List.of("navigation/obstacleDetector", "control/velocityController"), l.worstPath().stream().map(Hop::label).toList(), "the worst path runs from the obstacle detector to the velocity controller");
+        assertEquals(20 * MS, l.worstPath().get(0).waitNs(), "the detector's input waits up to one period (20 ms) on the worst path");
+        assertEquals(4 * MS, l.worstPath().get(0).responseNs(), "the detector's hop costs its response time (4 ms)");
+        assertEquals(13 * MS, l.worstPath().get(1).totalNs(), "the controller's hop costs 13 ms in all (wait and response)");
     }
 
     @Test
     void aSlowerDetectorMissesTheRequirement() throws Exception {
         ArchitectureTiming timing = TimingAnalysis.analyse(example("mobile-base-latency-missed.rsaml"));
         LatencyResult l = timing.latencies().get(0);
-        assertEquals(Verdict.MISSES, l.verdict());
-        assertEquals(57 * MS, l.reactionNs());
+        assertEquals(Verdict.MISSES, l.verdict(), "the slower detector makes the reaction exceed the 50 ms requirement: " + l.explanation());
+        assertEquals(57 * MS, l.reactionNs(), "the worst reaction with the slower detector is 57 ms");
         assertTrue(l.explanation().contains("57 ms, more than 50 ms"), l.explanation());
-        assertEquals(Verdict.MISSES, timing.verdict());
+        assertEquals(Verdict.MISSES, timing.verdict(), "a missed latency requirement makes the whole architecture miss");
         String text = TimingText.render("m.rsaml", timing);
         assertTrue(text.contains("navigation/obstacleDetector: +44 ms (wait 40 ms + response 4 ms)"), text);
     }
@@ -92,15 +92,15 @@ class ArchitectureTimingTest {
     @Test
     void experimentThree() throws Exception {
         ArchitectureTiming timing = TimingAnalysis.analyse(example("exp3-task-interpreter.rsaml"));
-        assertEquals(1, timing.processors().size());
+        assertEquals(1, timing.processors().size(), "exp3 has no deployment: one processor");
         ProcessorTiming p = timing.processors().get(0);
-        assertEquals(TimingAnalysis.DEFAULT_PROCESSOR, p.name());
+        assertEquals(TimingAnalysis.DEFAULT_PROCESSOR, p.name(), "an architecture without processors is analysed on the default processor");
         TaskResult exec = task(p, "motionControl/motionController.executeInstructions");
         assertEquals(11 * MS, exec.task().cost(), "6 ms of execution and 5 ms of start dates");
-        assertEquals(11 * MS, exec.responseTime().getAsLong());
-        assertEquals(Verdict.MEETS, exec.verdict());
-        assertEquals(1, timing.excluded().size());
-        assertEquals("interpretation/taskInterpreter", timing.excluded().get(0).label());
+        assertEquals(11 * MS, exec.responseTime().getAsLong(), "the executor responds in its 11 ms of cost (alone at its rank)");
+        assertEquals(Verdict.MEETS, exec.verdict(), "the executor meets its deadline");
+        assertEquals(1, timing.excluded().size(), "exactly one module is left out of the periodic analysis");
+        assertEquals("interpretation/taskInterpreter", timing.excluded().get(0).label(), "the sporadic task interpreter is the module left out");
         assertTrue(timing.excluded().get(0).reason().contains("execType sporadic"), timing.excluded().get(0).reason());
     }
 
@@ -111,9 +111,9 @@ class ArchitectureTimingTest {
         extra.setName("core2");
         extra.getModules().add(a.getLayers().get(1).getModules().get(0));
         a.getProcessors().add(extra);
-        TimingModelException e = assertThrows(TimingModelException.class, () -> TimingAnalysis.analyse(a));
+        TimingModelException e = assertThrows(TimingModelException.class, () -> TimingAnalysis.analyse(a), "a module allocated to two processors is refused, not analysed twice");
         assertEquals("module control/velocityController is allocated to two processors, 'core0' and 'core2': remove it from one of them",
-                e.getMessage());
+                e.getMessage(), "the refusal names the module, both processors and the fix");
     }
 
     @Test
@@ -122,19 +122,19 @@ class ArchitectureTimingTest {
         a.getProcessors().get(1).setSchedPolicy(org.rsaml.model.SchedulingPolicy.EDF);
         ArchitectureTiming timing = TimingAnalysis.analyse(a);
         ProcessorTiming core1 = timing.processors().get(1);
-        assertEquals(SchedulingPolicy.EDF, core1.result().policy());
-        assertEquals(Verdict.MEETS, core1.result().verdict());
+        assertEquals(SchedulingPolicy.EDF, core1.result().policy(), "a processor set to EDF is analysed by processor demand");
+        assertEquals(Verdict.MEETS, core1.result().verdict(), "core1's tasks meet their deadlines under EDF");
         assertTrue(core1.notes().get(0).contains("the generated C++ runtime runs each timed release under SCHED_DEADLINE"),
                 core1.notes().get(0));
         // without response times under EDF the latency through core 1 is not bounded, and says so
-        assertEquals(Verdict.NOT_ANALYSED, timing.latencies().get(0).verdict());
+        assertEquals(Verdict.NOT_ANALYSED, timing.latencies().get(0).verdict(), "without EDF response times the latency through core1 is reported as not analysed");
     }
 
     /** Processors without a core share the cores no processor claims: a processor analysed alone proves nothing. */
     @Test
     void processorsWithoutACoreShareTheUnclaimedCpusAndAreNotAnalysed() throws Exception {
         ArchitectureTiming timing = TimingAnalysis.analyse(fixture("deployment-two-without-core.rsaml"));
-        assertEquals(List.of("p1", "p2", "default"), timing.processors().stream().map(ProcessorTiming::name).toList());
+        assertEquals(List.of("p1", "p2", "default"), timing.processors().stream().map(ProcessorTiming::name).toList(), "every processor is reported, the default one (the unclaimed cores) last");
         for (ProcessorTiming p : timing.processors()) {
             assertEquals(Verdict.NOT_ANALYSED, p.result().verdict(), p.name());
             for (TaskResult t : p.result().tasks()) {
@@ -146,7 +146,7 @@ class ArchitectureTimingTest {
                         t.explanation());
             }
         }
-        assertEquals(Verdict.NOT_ANALYSED, timing.verdict());
+        assertEquals(Verdict.NOT_ANALYSED, timing.verdict(), "processors without a core of their own make the architecture's verdict not analysed");
         String text = TimingText.render("m.rsaml", timing);
         assertTrue(text.contains("l/a.fa   40 ms     12 ms  8 ms         2     -      -  not analysed"), text);
         assertTrue(text.contains("bound Liu & Layland (sufficient): U <= 1.0000 not applicable: task 'l/a.fa' has a deadline other than its period"), text);
@@ -163,17 +163,17 @@ class ArchitectureTimingTest {
             assertTrue(t.explanation().startsWith("not analysed: processors 'p1' and 'p2' claim the same core 1"), t.explanation());
         }
         TaskResult alone = processor(timing, "p3").result().tasks().get(0);
-        assertEquals(Verdict.MEETS, alone.verdict());
-        assertEquals(5 * MS, alone.responseTime().getAsLong());
+        assertEquals(Verdict.MEETS, alone.verdict(), "p3, on a core of its own, is analysed and meets its deadline");
+        assertEquals(5 * MS, alone.responseTime().getAsLong(), "p3's task responds in its own 5 ms");
     }
 
     /** One processor without a core gets the cores no processor claims to itself: analysed as before. */
     @Test
     void oneProcessorWithoutACoreIsAnalysed() throws Exception {
         ArchitectureTiming timing = TimingAnalysis.analyse(fixture("deployment-one-without-core.rsaml"));
-        assertEquals(8 * MS, task(processor(timing, "core0"), "l/a.fa").responseTime().getAsLong());
-        assertEquals(10 * MS, task(processor(timing, "default"), "l/b2.fb2").responseTime().getAsLong());
-        assertEquals(Verdict.MEETS, timing.verdict());
+        assertEquals(8 * MS, task(processor(timing, "core0"), "l/a.fa").responseTime().getAsLong(), "core0's task responds in 8 ms");
+        assertEquals(10 * MS, task(processor(timing, "default"), "l/b2.fb2").responseTime().getAsLong(), "the processor without a core, given the unclaimed cores, is analysed: l/b2.fb2 responds in 10 ms");
+        assertEquals(Verdict.MEETS, timing.verdict(), "one processor without a core leaves the architecture analysable, and it meets");
         // every example with a deployment gives each processor a core of its own
         for (String example : List.of("hierarchical-nasrem.rsaml", "mobile-base-latency.rsaml", "mobile-base-latency-missed.rsaml")) {
             for (ProcessorTiming p : TimingAnalysis.analyse(example(example)).processors()) {
@@ -188,8 +188,8 @@ class ArchitectureTimingTest {
         ArchitectureTiming timing = TimingAnalysis.analyse(fixture("lock-group-bounds.rsaml"));
         ProcessorTiming p = timing.processors().get(0);
         TaskResult f1 = task(p, "l/m.f1");
-        assertEquals(Verdict.MISSES, f1.verdict());
-        assertEquals(12 * MS, f1.responseTime().getAsLong());
+        assertEquals(Verdict.MISSES, f1.verdict(), "f1 misses: it can wait for the lower-priority f2 holding the module's lock");
+        assertEquals(12 * MS, f1.responseTime().getAsLong(), "f1's response includes the blocking by f2: 12 ms");
         String why = "not applicable: task 'l/m.f1' shares its module's lock with the lower-priority 'l/m.f2' and can wait for it,"
                 + " and the bound assumes independent tasks";
         for (String bound : List.of("Liu & Layland", "hyperbolic")) {
@@ -199,7 +199,7 @@ class ArchitectureTimingTest {
         }
         String text = TimingText.render("m.rsaml", timing);
         assertTrue(text.contains("bound Liu & Layland (sufficient): U <= 0.7798 " + why), text);
-        assertTrue(!text.contains("U <= 0.7798 holds") && !text.contains("prod(U_i + 1) <= 2 holds"), text);
+        assertTrue(!text.contains("U <= 0.7798 holds") && !text.contains("prod(U_i + 1) <= 2 holds"), "no utilisation bound is shown as holding when the tasks share a lock: " + text);
     }
 
     /**
@@ -213,28 +213,28 @@ class ArchitectureTimingTest {
     @Test
     void fifoAndRoundRobinAreAnalysedAsTheRuntimeRanksAndRunsThem() throws Exception {
         ProcessorTiming ranked = TimingAnalysis.analyse(fixture("fifo-ranked.rsaml")).processors().get(0);
-        assertEquals(SchedulingPolicy.FIXED_PRIORITY, ranked.result().policy());
-        assertEquals(3, task(ranked, "l/a.fa").task().priority());
-        assertEquals(1 * MS, task(ranked, "l/a.fa").responseTime().getAsLong());
-        assertEquals(Verdict.MEETS, task(ranked, "l/a.fa").verdict());
-        assertEquals(13 * MS, task(ranked, "l/b.fb").responseTime().getAsLong());
+        assertEquals(SchedulingPolicy.FIXED_PRIORITY, ranked.result().policy(), "rate-monotonic functions on a FIFO-declared processor are analysed as fixed priorities");
+        assertEquals(3, task(ranked, "l/a.fa").task().priority(), "fa (shortest period) gets the top rank 3");
+        assertEquals(1 * MS, task(ranked, "l/a.fa").responseTime().getAsLong(), "fa at the top rank responds in its own 1 ms");
+        assertEquals(Verdict.MEETS, task(ranked, "l/a.fa").verdict(), "fa meets its 2 ms deadline at the top rank");
+        assertEquals(13 * MS, task(ranked, "l/b.fb").responseTime().getAsLong(), "fb responds in 13 ms: its 10 ms plus three fa jobs");
 
         ArchitectureTiming fifo = TimingAnalysis.analyse(fixture("fifo-one-rank.rsaml"));
         ProcessorTiming oneRank = fifo.processors().get(0);
         TaskResult fa = task(oneRank, "l/a.fa");
-        assertEquals(1, fa.task().priority());
-        assertEquals(11 * MS, fa.responseTime().getAsLong());
-        assertEquals(Verdict.MISSES, fa.verdict());
+        assertEquals(1, fa.task().priority(), "FIFO functions share one rank");
+        assertEquals(11 * MS, fa.responseTime().getAsLong(), "fa released with fb can wait for all of fb: 10 + 1 = 11 ms");
+        assertEquals(Verdict.MISSES, fa.verdict(), "fa misses its 2 ms deadline under first in, first out");
         assertEquals(List.of("l/b.fb 0 - 10000000", "l/a.fa 10000000 - 11000000"),
-                fa.witness().schedule().stream().map(s -> s.task() + " " + s.start() + " - " + s.end()).toList());
+                fa.witness().schedule().stream().map(s -> s.task() + " " + s.start() + " - " + s.end()).toList(), "the witness shows fb running first, then fa");
         TaskResult fb = task(oneRank, "l/b.fb");
-        assertEquals(11 * MS, fb.responseTime().getAsLong());
+        assertEquals(11 * MS, fb.responseTime().getAsLong(), "fb waits only for the fa job released with it: 1 + 10 = 11 ms");
         assertTrue(fb.explanation().contains("first in, first out among the tasks of its priority"), fb.explanation());
         String text = TimingText.render("m.rsaml", fifo);
         assertTrue(text.contains("job 1 of l/a.fa released at 0 ns, completes at 11 ms; delayed by l/b.fb x1"), text);
 
         ProcessorTiming roundRobin = TimingAnalysis.analyse(fixture("rr-one-rank.rsaml")).processors().get(0);
-        assertEquals(11 * MS, task(roundRobin, "l/a.fa").responseTime().getAsLong());
-        assertEquals(13 * MS, task(roundRobin, "l/b.fb").responseTime().getAsLong());
+        assertEquals(11 * MS, task(roundRobin, "l/a.fa").responseTime().getAsLong(), "under round robin fa still waits for fb's slice: 11 ms");
+        assertEquals(13 * MS, task(roundRobin, "l/b.fb").responseTime().getAsLong(), "under round robin the fa jobs at 5 and 10 ms get in: fb responds in 13 ms");
     }
 }
