@@ -53,7 +53,7 @@ class ExamplesTest {
         assertTrue(r.getErrors().isEmpty(), () -> name + ": " + r.getErrors());
         EcoreUtil.resolveAll(r);
         assertTrue(EcoreUtil.UnresolvedProxyCrossReferencer.find(r).isEmpty(), name + " has unresolved references");
-        return assertInstanceOf(Architecture.class, r.getContents().get(0));
+        return assertInstanceOf(Architecture.class, r.getContents().get(0), name + "'s root is an architecture");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -67,7 +67,7 @@ class ExamplesTest {
     void theExamplesAreThere() throws Exception {
         assertEquals(List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "exp3-task-interpreter.rsaml",
                 "hierarchical-nasrem.rsaml", "mobile-base-latency-missed.rsaml", "mobile-base-latency.rsaml",
-                "subsumption-brooks.rsaml"), exampleFiles().collect(Collectors.toList()));
+                "subsumption-brooks.rsaml"), exampleFiles().collect(Collectors.toList()), "examples/ holds the models the README describes");
     }
 
     private static Module module(Architecture a, String name) {
@@ -79,41 +79,41 @@ class ExamplesTest {
     void experimentTwoCarriesThePapersFiveDefects() {
         Architecture a = load("exp2-defects.rsaml");
         // 1. four layers declared, three created
-        assertEquals(4, a.getDeclaredLayers());
-        assertEquals(List.of("decision", "control", "functional"), a.getLayers().stream().map(Layer::getName).toList());
+        assertEquals(4, a.getDeclaredLayers(), "defect 1: exp2 declares four layers");
+        assertEquals(List.of("decision", "control", "functional"), a.getLayers().stream().map(Layer::getName).toList(), "defect 1: exp2 creates three layers");
         // 2. alphanumeric entry e0_prodExec fed by numeric output s0_ressourceCheck
         Connection c = a.getConnections().stream().filter(x -> "e0_prodExec".equals(x.getTarget().getName())).findFirst().orElseThrow();
-        assertEquals("s0_ressourceCheck", c.getSource().getName());
-        assertEquals(DataType.NUMERIC, c.getSource().getDataType());
-        assertEquals(DataType.ALPHANUMERIC, c.getTarget().getDataType());
+        assertEquals("s0_ressourceCheck", c.getSource().getName(), "defect 2: the offending connection comes from resourceChecker's output s0_ressourceCheck");
+        assertEquals(DataType.NUMERIC, c.getSource().getDataType(), "defect 2: the connection's source is numeric");
+        assertEquals(DataType.ALPHANUMERIC, c.getTarget().getDataType(), "defect 2: the connection's target is alphanumeric");
         // 3. proceduralExec suppresses entry e0_m01 of m01, two layers below
         Module exec = module(a, "proceduralExec");
         Suppressor s = exec.getSuppressors().get(0);
-        assertEquals("e0_m01", s.getTarget().getName());
-        assertEquals("m01", s.getTarget().getModule().getName());
-        assertEquals(2, exec.getLayer().getLevel() - s.getTarget().getModule().getLayer().getLevel());
+        assertEquals("e0_m01", s.getTarget().getName(), "defect 3: proceduralExec suppresses entry e0_m01");
+        assertEquals("m01", s.getTarget().getModule().getName(), "defect 3: the suppressed entry belongs to m01");
+        assertEquals(2, exec.getLayer().getLevel() - s.getTarget().getModule().getLayer().getLevel(), "defect 3: the suppressed module is two layers below");
         // 4. resourceChecker takes 2.5 in a layer allowing 2.0
         Module checker = module(a, "resourceChecker");
-        assertEquals(2.5, checker.getExecDuration());
-        assertEquals(2.0, checker.getLayer().getMaxExecTime());
+        assertEquals(2.5, checker.getExecDuration(), "defect 4: resourceChecker takes 2.5 ms");
+        assertEquals(2.0, checker.getLayer().getMaxExecTime(), "defect 4: its layer allows at most 2.0 ms");
         // 5. real-time f0_m01 holds the simple action a0_f0_m01
         Function f = module(a, "m01").getFunctions().stream().filter(x -> "f0_m01".equals(x.getName())).findFirst().orElseThrow();
-        assertEquals(ElementType.REAL_TIME, f.getType());
-        assertEquals(ElementType.SIMPLE, f.getActions().stream().filter(x -> "a0_f0_m01".equals(x.getName())).findFirst().orElseThrow().getType());
+        assertEquals(ElementType.REAL_TIME, f.getType(), "defect 5: f0_m01 is real-time");
+        assertEquals(ElementType.SIMPLE, f.getActions().stream().filter(x -> "a0_f0_m01".equals(x.getName())).findFirst().orElseThrow().getType(), "defect 5: its action a0_f0_m01 is a simple (non-real-time) action");
     }
 
     @Test
     void experimentThreeHasSixPeriodicInstructions() {
         Architecture a = load("exp3-task-interpreter.rsaml");
-        assertEquals(ArchitectureCategory.OTHER, a.getCategory());
+        assertEquals(ArchitectureCategory.OTHER, a.getCategory(), "exp3's category is 'other'");
         Module controller = a.getLayers().stream().flatMap(l -> l.getModules().stream())
                 .filter(m -> m.getName().toLowerCase().contains("motion")).findFirst().orElseThrow();
         var actions = controller.getFunctions().stream().flatMap(fn -> fn.getActions().stream()).toList();
-        assertEquals(6, actions.size());
+        assertEquals(6, actions.size(), "the motion controller has six instructions");
         for (var action : actions) {
-            assertEquals(ExecutionType.PERIODIC, action.getExecType());
-            assertEquals(20.0, action.toMilliseconds(action.getPeriod()));
-            assertEquals(1.0, action.toMilliseconds(action.getExecDuration()));
+            assertEquals(ExecutionType.PERIODIC, action.getExecType(), action.getName() + " runs periodically");
+            assertEquals(20.0, action.toMilliseconds(action.getPeriod()), action.getName() + " runs every 20 ms");
+            assertEquals(1.0, action.toMilliseconds(action.getExecDuration()), action.getName() + " takes 1 ms");
         }
     }
 }

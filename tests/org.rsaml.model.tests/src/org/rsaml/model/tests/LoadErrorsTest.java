@@ -50,8 +50,8 @@ class LoadErrorsTest {
         Resource r = open(file);
         Resource.Diagnostic d = r.getErrors().get(0);
         assertEquals("<ports name=\"p\"> does not say which kind of Port it is, so it cannot be read: add xsi:type=\"rsaml:EntryPort\""
-                + " or xsi:type=\"rsaml:OutputPort\" to it", d.getMessage());
-        assertEquals("5:7", d.getLine() + ":" + d.getColumn());
+                + " or xsi:type=\"rsaml:OutputPort\" to it", d.getMessage(), "an untyped port's error names the port and the types to choose from");
+        assertEquals("5:7", d.getLine() + ":" + d.getColumn(), "the error points at the port's start tag");
     }
 
     /** References to an element without a type are told in its error, not each as dangling; others still are. */
@@ -66,7 +66,7 @@ class LoadErrorsTest {
         assertEquals(List.of("6:7: <ports name=\"p\"> does not say which kind of Port it is, so it cannot be read: add"
                 + " xsi:type=\"rsaml:EntryPort\" or xsi:type=\"rsaml:OutputPort\" to it; the reference to it (line 9) will resolve once it has one",
                 "10:3: reference target points to '" + m + "[name='gone']', which does not exist"),
-                r.getErrors().stream().map(d -> d.getLine() + ":" + d.getColumn() + ": " + d.getMessage()).toList());
+                r.getErrors().stream().map(d -> d.getLine() + ":" + d.getColumn() + ": " + d.getMessage()).toList(), "the untyped port is one error that counts the reference to it; a dangling reference is another, each located");
     }
 
     @Test
@@ -80,15 +80,15 @@ class LoadErrorsTest {
         for (String literal : literals.split(", ")) {
             assertTrue(d.getMessage().contains(literal), d.getMessage());
         }
-        assertEquals("4:5", d.getLine() + ":" + d.getColumn());
+        assertEquals("4:5", d.getLine() + ":" + d.getColumn(), "the error points at the module's start tag");
     }
 
     @Test
     void aTimeWrittenWithItsUnitPointsToTimeUnit() throws Exception {
         Path file = write(dir, "ms.rsaml", model("  <layers name=\"a\">\n    <modules name=\"m\" period=\"50ms\"/>\n  </layers>\n"));
         Resource.Diagnostic d = open(file).getErrors().get(0);
-        assertEquals("'50ms' is not a number: write the number alone and the unit apart, period=\"50\" timeUnit=\"ms\"", d.getMessage());
-        assertEquals("4:5", d.getLine() + ":" + d.getColumn());
+        assertEquals("'50ms' is not a number: write the number alone and the unit apart, period=\"50\" timeUnit=\"ms\"", d.getMessage(), "a time written with its unit says how to write it");
+        assertEquals("4:5", d.getLine() + ":" + d.getColumn(), "the error points at the module's start tag");
     }
 
     @Test
@@ -101,8 +101,8 @@ class LoadErrorsTest {
                 """));
         Resource r = open(file);
         Resource.Diagnostic d = r.getErrors().get(0);
-        assertEquals("reference source must name an OutputPort, but 'e' is an EntryPort", d.getMessage());
-        assertEquals("6:3", d.getLine() + ":" + d.getColumn());
+        assertEquals("reference source must name an OutputPort, but 'e' is an EntryPort", d.getMessage(), "a connection from an entry port is refused, saying which kind it must name");
+        assertEquals("6:3", d.getLine() + ":" + d.getColumn(), "the error points at the connection");
     }
 
     @Test
@@ -116,14 +116,14 @@ class LoadErrorsTest {
         Resource.Diagnostic d = open(file).getErrors().get(0);
         assertEquals("reference via names 'detector' twice: name each element once", d.getMessage(),
                 "the duplicate is the problem, not the kind of element");
-        assertEquals("6:3", d.getLine() + ":" + d.getColumn());
+        assertEquals("6:3", d.getLine() + ":" + d.getColumn(), "the error points at the requirement");
     }
 
     @Test
     void aRootInNoNamespaceIsNamed() throws Exception {
         Resource r = open(write(dir, "plain.rsaml", "<?xml version=\"1.0\"?>\n<Architecture name=\"r\"/>\n"));
         assertEquals("2:1: element 'Architecture' is in no namespace, so this is not an RsaML model; an RsaML model's root is"
-                + " rsaml:Architecture with xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\"", errors(r).lines().findFirst().orElse(""));
+                + " rsaml:Architecture with xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\"", errors(r).lines().findFirst().orElse(""), "a root in no namespace is said not to be an RsaML model, with the root RsaML expects");
     }
 
     @Test
@@ -132,8 +132,8 @@ class LoadErrorsTest {
                 + "    </modules>\n  </layers>\n"));
         Resource.Diagnostic d = open(file).getErrors().get(0);
         assertEquals("xsi:type=\"EntryPort\" names a type without RsaML's namespace prefix; write xsi:type=\"rsaml:EntryPort\""
-                + " or xsi:type=\"rsaml:OutputPort\"", d.getMessage());
-        assertEquals("5:7", d.getLine() + ":" + d.getColumn());
+                + " or xsi:type=\"rsaml:OutputPort\"", d.getMessage(), "a type without the rsaml: prefix is named, with the types to write");
+        assertEquals("5:7", d.getLine() + ":" + d.getColumn(), "the error points at the port's start tag");
     }
 
     @Test

@@ -42,11 +42,11 @@ class LocationsTest {
     void elementsAreLocatedAtTheirStartTags() throws Exception {
         Path file = write(dir, "m.rsaml", model("  <layers name=\"a\">\n    <!-- c --><modules name=\"m\"/>\n  </layers>\n"));
         RsamlResource r = (RsamlResource) open(file);
-        assertEquals("", errors(r));
+        assertEquals("", errors(r), "the model loads without errors");
         Architecture a = (Architecture) r.getContents().get(0);
-        assertEquals(new SourceLocation(file.toString(), 2, 1), r.locate(a));
-        assertEquals(new SourceLocation(file.toString(), 3, 3), r.locate(a.getLayers().get(0)));
-        assertEquals(new SourceLocation(file.toString(), 4, 15), r.locate(a.getLayers().get(0).getModules().get(0)));
+        assertEquals(new SourceLocation(file.toString(), 2, 1), r.locate(a), "the architecture is located at its start tag (line 2, column 1)");
+        assertEquals(new SourceLocation(file.toString(), 3, 3), r.locate(a.getLayers().get(0)), "the layer is located at its start tag (line 3, column 3)");
+        assertEquals(new SourceLocation(file.toString(), 4, 15), r.locate(a.getLayers().get(0).getModules().get(0)), "the module is located at its start tag, after the comment on its line (line 4, column 15)");
     }
 
     @Test
@@ -57,7 +57,7 @@ class LocationsTest {
             EObject o = it.next();
             assertTrue(r.locate(o).line() > 0, o.toString());
         }
-        assertNotNull(r.locate(r.getContents().get(0)));
+        assertNotNull(r.locate(r.getContents().get(0)), "the root element has a position");
     }
 
     /** The positions of the layers of {@code text}, computed by counting '\n' before each '<layers'. */
@@ -94,7 +94,7 @@ class LocationsTest {
         assertEquals(expectedLayerPositions(template), layerPositions(r), name);
         assertEquals(2, r.locate(r.getContents().get(0)).line(), name);
         // A line break inside an attribute value counts as one line, as the parser counts it.
-        assertEquals("two lines", ((Architecture) r.getContents().get(0)).getLayers().get(1).getDescription().replace('\n', ' '));
+        assertEquals("two lines", ((Architecture) r.getContents().get(0)).getLayers().get(1).getDescription().replace('\n', ' '), name + ": the attribute's line break is read as part of the value");
     }
 
     @Test
@@ -141,9 +141,9 @@ class LocationsTest {
         Path file = dir.resolve("bom.rsaml");
         Files.write(file, ("\uFEFF" + text).getBytes(StandardCharsets.UTF_8));
         RsamlResource r = (RsamlResource) open(file);
-        assertEquals("", errors(r));
-        assertEquals(1, r.locate(r.getContents().get(0)).column());
-        assertEquals(List.of("1:" + (text.indexOf("<layers") + 1)), layerPositions(r));
+        assertEquals("", errors(r), "a file starting with a UTF-8 byte order mark loads without errors");
+        assertEquals(1, r.locate(r.getContents().get(0)).column(), "the byte order mark takes no column: the root starts in column 1");
+        assertEquals(List.of("1:" + (text.indexOf("<layers") + 1)), layerPositions(r), "the layer's column does not count the byte order mark");
     }
 
     @Test
@@ -158,10 +158,10 @@ class LocationsTest {
         }
         Path file = write(dir, "big.rsaml", model(layers.toString()));
         Resource r = open(file);
-        assertEquals("", errors(r));
+        assertEquals("", errors(r), "a file with multi-byte characters across the read buffer's boundaries loads without errors");
         List<Layer> loaded = ((Architecture) r.getContents().get(0)).getLayers();
-        assertEquals(12, loaded.size());
-        assertTrue(loaded.stream().allMatch(l -> l.getDescription().endsWith("\u20AC\u00E9")));
+        assertEquals(12, loaded.size(), "all twelve layers are read");
+        assertTrue(loaded.stream().allMatch(l -> l.getDescription().endsWith("\u20AC\u00E9")), "every description keeps its multi-byte characters");
     }
 
     @Test
@@ -175,8 +175,8 @@ class LocationsTest {
         Resource.Diagnostic d = r.getErrors().get(0);
         assertTrue(d.getMessage().contains("not valid UTF-8"), d.getMessage());
         assertFalse(d.getMessage().contains(dir.toString()), d.getMessage());
-        assertEquals(4, d.getLine());
-        assertTrue(d.getColumn() > 0);
+        assertEquals(4, d.getLine(), "the invalid byte's line is named");
+        assertTrue(d.getColumn() > 0, "the invalid byte's column is named");
     }
 
     @Test
@@ -184,6 +184,6 @@ class LocationsTest {
         Path file = write(dir, "enc.rsaml", model("").replace("UTF-8", "klingon-1"));
         Resource r = open(file);
         assertEquals("1:1: the XML declaration names the encoding 'klingon-1', which is not known here; save the file as UTF-8"
-                + " and declare encoding=\"UTF-8\"", errors(r));
+                + " and declare encoding=\"UTF-8\"", errors(r), "the unknown encoding is named, at 1:1, with the fix");
     }
 }

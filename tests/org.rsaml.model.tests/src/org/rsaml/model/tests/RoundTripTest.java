@@ -80,20 +80,20 @@ class RoundTripTest {
         Resource saved = saveSet.createResource(uri);
         saved.getContents().add(root);
         saved.save(null);
-        assertTrue(Files.size(dir.resolve("all-concepts.rsaml")) > 0);
+        assertTrue(Files.size(dir.resolve("all-concepts.rsaml")) > 0, "the saved model file is not empty");
 
         Resource reloaded = new ResourceSetImpl().getResource(uri, true);
         assertTrue(reloaded.getErrors().isEmpty(), () -> "reload errors: " + reloaded.getErrors());
         EObject copy = reloaded.getContents().get(0);
         EcoreUtil.resolveAll(reloaded);
-        assertTrue(EcoreUtil.UnresolvedProxyCrossReferencer.find(reloaded).isEmpty());
+        assertTrue(EcoreUtil.UnresolvedProxyCrossReferencer.find(reloaded).isEmpty(), "every reference of the reloaded model resolves");
         assertTrue(new EcoreUtil.EqualityHelper().equals(root, copy),
                 "the reloaded model must equal the saved one, attribute for attribute and reference for reference");
 
         // Container opposites are transient but restored on load, so rules can navigate upwards.
         Module module = ((Architecture) copy).getLayers().get(0).getModules().get(0);
-        assertEquals(((Architecture) copy).getLayers().get(0), module.getLayer());
-        assertEquals(module, module.getPorts().get(0).getModule());
+        assertEquals(((Architecture) copy).getLayers().get(0), module.getLayer(), "a reloaded module knows its layer");
+        assertEquals(module, module.getPorts().get(0).getModule(), "a reloaded port knows its module");
     }
 
     @Test
@@ -130,11 +130,11 @@ class RoundTripTest {
     void timeValuesOfDifferentUnitsAreComparableInMilliseconds() {
         Layer layer = RsamlFactory.eINSTANCE.createLayer();
         layer.setTimeUnit(TimeUnit.US);
-        assertEquals(2.0, layer.toMilliseconds(2000.0), 1e-12);
+        assertEquals(2.0, layer.toMilliseconds(2000.0), 1e-12, "2000 us are 2 ms");
         layer.setTimeUnit(TimeUnit.S);
-        assertEquals(1500.0, layer.toMilliseconds(1.5), 1e-9);
+        assertEquals(1500.0, layer.toMilliseconds(1.5), 1e-9, "1.5 s are 1500 ms");
         layer.setTimeUnit(TimeUnit.NS);
-        assertEquals(0.5, layer.toMilliseconds(500_000.0), 1e-12);
+        assertEquals(0.5, layer.toMilliseconds(500_000.0), 1e-12, "500000 ns are 0.5 ms");
         assertEquals(TimeUnit.MS, RsamlFactory.eINSTANCE.createModule().getTimeUnit(), "milliseconds by default");
     }
 }

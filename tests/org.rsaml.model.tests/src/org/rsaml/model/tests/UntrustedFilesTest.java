@@ -98,13 +98,13 @@ class UntrustedFilesTest {
                     + base + "x.ecore\" name=\"r\"/>\n"));
             assertTrue(namespace.getErrors().get(0).getMessage().startsWith("namespace '" + base + "x.ecore' is not RsaML's"),
                     () -> errors(namespace));
-            assertEquals(2, namespace.getErrors().get(0).getLine());
+            assertEquals(2, namespace.getErrors().get(0).getLine(), "the foreign namespace is refused on the root's line");
             Resource schema = openAndResolve(write(dir, "schema.rsaml", "<?xml version=\"1.0\"?>\n<x:Architecture"
                     + " xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xmlns:x=\"urn:other\""
                     + " xsi:schemaLocation=\"urn:other " + base + "x.ecore\" name=\"r\"/>\n"));
-            assertFalse(schema.getErrors().isEmpty());
+            assertFalse(schema.getErrors().isEmpty(), "a schema location pointing elsewhere is an error, not followed");
             ResourceSet safe = RsamlStandaloneSetup.newResourceSet();
-            assertThrows(RuntimeException.class, () -> safe.getResource(URI.createURI(base + "other.xml"), true));
+            assertThrows(RuntimeException.class, () -> safe.getResource(URI.createURI(base + "other.xml"), true), "RsaML's resource set refuses to fetch a remote resource");
 
             TimeUnit.MILLISECONDS.sleep(500);
             assertEquals(0, connections.get(), "a model made RsaML connect to " + base);
@@ -114,7 +114,7 @@ class UntrustedFilesTest {
                     TimeUnit.MILLISECONDS.sleep(100);
                 }
             }
-            assertEquals(1, connections.get());
+            assertEquals(1, connections.get(), "the listener counts a real connection, so its zero above means something");
         }
     }
 
@@ -124,7 +124,7 @@ class UntrustedFilesTest {
                 + "<rsaml:Architecture xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"&s;\"><sensors name=\"&s;\"/></rsaml:Architecture>\n");
         ResourceSet set = new ResourceSetImpl();
         Resource main = XmiFiles.open(set, write(dir, "main.rsaml", referring("other.rsaml#//@sensors.0")));
-        assertEquals("", errors(main));
+        assertEquals("", errors(main), "the referring model loads without errors");
         EcoreUtil.resolveAll(set);
         Module m = ((Architecture) main.getContents().get(0)).getLayers().get(0).getModules().get(0);
         assertTrue(m.getSensors().get(0).eIsProxy(), "the DOCTYPE file was read");
@@ -138,9 +138,9 @@ class UntrustedFilesTest {
         ResourceSet set = new ResourceSetImpl();
         Resource main = XmiFiles.open(set, write(dir, "main.rsaml", referring("sub/devices.rsaml#//@sensors.0")));
         EcoreUtil.resolveAll(set);
-        assertEquals("", errors(main));
+        assertEquals("", errors(main), "the referring model loads without errors");
         Module m = ((Architecture) main.getContents().get(0)).getLayers().get(0).getModules().get(0);
-        assertEquals("lidar", m.getSensors().get(0).getName());
+        assertEquals("lidar", m.getSensors().get(0).getName(), "the referenced sensor in a subfolder resolves");
     }
 
     @Test
@@ -171,7 +171,7 @@ class UntrustedFilesTest {
         Files.createDirectories(dir.resolve("folder.rsaml"));
         Resource directory = openAndResolve(write(dir, "dir-ref.rsaml", referring("folder.rsaml#//@sensors.0")));
         Resource folder = directory.getResourceSet().getResource(URI.createFileURI(dir.resolve("folder.rsaml").toString()), false);
-        assertEquals("0:0: is a directory, not an .rsaml file", errors(folder));
+        assertEquals("0:0: is a directory, not an .rsaml file", errors(folder), "a directory named like a model is an error of that path, about the whole file");
         assertRefusedOnModule(openAndResolve(write(dir, "zero-ref.rsaml", referring("/dev/zero#//@sensors.0"))), "refused");
         if (Files.exists(Path.of("/dev/zero"))) {
             // Named by the user (through a link in the folder), still not read.
@@ -192,7 +192,8 @@ class UntrustedFilesTest {
         Resource pipeRef = openAndResolve(write(dir, "pipe-ref.rsaml", referring("pipe.rsaml#//@sensors.0")));
         Resource pipe = pipeRef.getResourceSet().getResource(URI.createFileURI(fifo.toString()), false);
         assertTrue(errors(pipe).contains("is not a regular file"), () -> errors(pipe));
-        assertTrue(errors(XmiFiles.open(fifo)).contains("is not a regular file"));
+        String direct = errors(XmiFiles.open(fifo));
+        assertTrue(direct.contains("is not a regular file"), () -> "a FIFO opened directly is refused as not a regular file: " + direct);
     }
 
     @Test

@@ -28,7 +28,7 @@ class LoadErrorsTest {
         if (content != null) {
             Files.write(file, content);
         }
-        return assertThrows(ModelLoadException.class, () -> ModelLoader.load(file, name));
+        return assertThrows(ModelLoadException.class, () -> ModelLoader.load(file, name), name + " is refused with a located load error, not loaded nor a stack trace");
     }
 
     private ModelLoadException fails(String name, String content) throws Exception {
@@ -38,17 +38,17 @@ class LoadErrorsTest {
     @Test
     void missingFile() throws Exception {
         ModelLoadException e = fails("missing.rsaml", (byte[]) null);
-        assertEquals("missing.rsaml: error: no such file", e.toString());
+        assertEquals("missing.rsaml: error: no such file", e.toString(), "a missing file is one compiler-style line naming it");
     }
 
     @Test
     void emptyFile() throws Exception {
-        assertTrue(fails("empty.rsaml", "").getMessage().startsWith("the file is empty"));
+        assertTrue(fails("empty.rsaml", "").getMessage().startsWith("the file is empty"), "an empty file is said to be empty");
     }
 
     @Test
     void binaryFile() throws Exception {
-        assertTrue(fails("image.rsaml", new byte[] { (byte) 0x89, 'P', 'N', 'G', 0, 0, 0, 13 }).getMessage().contains("binary"));
+        assertTrue(fails("image.rsaml", new byte[] { (byte) 0x89, 'P', 'N', 'G', 0, 0, 0, 13 }).getMessage().contains("binary"), "a binary file is said to be binary");
     }
 
     @Test
@@ -60,7 +60,7 @@ class LoadErrorsTest {
                 </rsaml:Architecture>
                 """);
         assertTrue(e.getMessage().startsWith("malformed XML"), e.getMessage());
-        assertEquals(4, e.line());
+        assertEquals(4, e.line(), "the error is at the line where the XML breaks");
         assertTrue(e.toString().startsWith("broken.rsaml:4:"), e.toString());
     }
 
@@ -100,11 +100,11 @@ class LoadErrorsTest {
                 </rsaml:Architecture>
                 """);
         assertTrue(e.getMessage().contains("nope") && e.getMessage().contains("does not exist"), e.getMessage());
-        assertEquals(6, e.line());
+        assertEquals(6, e.line(), "the error is at the connection's line");
         // Both ends are missing: both are reported, not the first alone.
         assertEquals(List.of("dangling.rsaml:6:3: error: reference source points to '//@layers[name='a']/@modules[name='m']/@ports[name='nope']', which does not exist",
                 "dangling.rsaml:6:3: error: reference target points to '//@layers[name='a']/@modules[name='m']/@ports[name='none']', which does not exist"),
-                e.problems().stream().map(ModelLoadException.Problem::toString).toList());
+                e.problems().stream().map(ModelLoadException.Problem::toString).toList(), "both missing ends of the connection are reported, each located");
     }
 
     @Test
@@ -121,7 +121,7 @@ class LoadErrorsTest {
                 """);
         List<ModelLoadException.Problem> problems = e.problems();
         assertEquals(List.of(4, 5, 6), problems.stream().map(p -> p.location().line()).toList(), e::toString);
-        assertEquals(new ModelLoadException.Problem(e.location(), e.getMessage()), problems.get(0));
+        assertEquals(new ModelLoadException.Problem(e.location(), e.getMessage()), problems.get(0), "the first problem is the exception's own message and location");
         assertTrue(problems.get(1).message().startsWith("'50ms' is not a number"), e::toString);
         assertTrue(problems.get(2).message().startsWith("'colour' is not a feature of Module"), e::toString);
         assertEquals(3, e.toString().lines().count(), e::toString);
@@ -181,7 +181,7 @@ class LoadErrorsTest {
         Files.writeString(file, text);
         byte[] bytes = Files.readAllBytes(file);
         assertEquals((byte) 0xE2, bytes[8191], "the euro sign must start at byte 8191 and end after byte 8192");
-        assertTrue(ModelLoader.load(file, "straddle.rsaml").architecture().getLayers().get(0).getDescription().endsWith("\u20AC"));
+        assertTrue(ModelLoader.load(file, "straddle.rsaml").architecture().getLayers().get(0).getDescription().endsWith("\u20AC"), "the euro sign across the 8 KiB buffer boundary is read whole");
     }
 
     @Test
@@ -190,8 +190,8 @@ class LoadErrorsTest {
         Path file = dir.resolve("utf16.rsaml");
         Files.write(file, text.getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
         var model = ModelLoader.load(file, "utf16.rsaml");
-        assertEquals("a", model.architecture().getLayers().get(0).getName());
-        assertEquals(3, model.locate(model.architecture().getLayers().get(0))[0]);
+        assertEquals("a", model.architecture().getLayers().get(0).getName(), "a UTF-16 model with a byte order mark loads");
+        assertEquals(3, model.locate(model.architecture().getLayers().get(0))[0], "its layer is located on line 3");
     }
 
     @Test
@@ -214,7 +214,7 @@ class LoadErrorsTest {
                 + "  </layers>\n</rsaml:Architecture>\n");
         assertEquals("uses.rsaml:4:5: error: reference sensors points to 'devices.rsaml#//@sensors.0', which cannot be loaded:"
                 + " devices.rsaml:2:10: DOCTYPE declarations are not allowed in .rsaml files (DTDs and external entities are never loaded)",
-                e.toString());
+                e.toString(), "the reference names the referenced file and why it cannot be loaded, with that file's location");
     }
 
     @Test

@@ -52,7 +52,7 @@ class RuleMessagesTest {
                 "robot/behaviour/pong: Module 'pong'" + never + "its entry ports receive data only from modules that are never"
                         + " activated either ('ping'), so its outputs 'out' never carry more than their initial values and its"
                         + " functions 'answer' never run" + add),
-                messages("rule-RSA-19-violated.rsaml", "RSA-19"));
+                messages("rule-RSA-19-violated.rsaml", "RSA-19"), "RSA-19 names each module nothing activates, says what of it never happens and how to make it run");
     }
 
     @Test
@@ -67,7 +67,7 @@ class RuleMessagesTest {
                         + " 'planner' sends on it every 2.0 s (the period of function 'plan'), no longer than that: while the"
                         + " trigger keeps asserting it, the suppressor never lapses and entry 'drive.goal' receives nothing from"
                         + " its own connections")),
-                sorted(messages("rule-RSA-26-violated.rsaml", "RSA-26")));
+                sorted(messages("rule-RSA-26-violated.rsaml", "RSA-26")), "RSA-26 names each link that never lapses, with its trigger's period and its duration");
     }
 
     @Test
@@ -78,7 +78,7 @@ class RuleMessagesTest {
                 "robot/mapping/mapper/update: Function 'update' takes 50.0 s, longer than the 50.0 ms of its module 'mapper'",
                 "robot/mapping/mapper/update/fuse: Action 'fuse' takes 60.0 s, longer than the 50.0 s of its function 'update'"
                         + " and the 50.0 ms of its module 'mapper'")),
-                sorted(messages("rule-RSA-27-violated.rsaml", "RSA-27")));
+                sorted(messages("rule-RSA-27-violated.rsaml", "RSA-27")), "RSA-27 reports each function or action over its budget on itself, naming the budget it exceeds");
     }
 
     @Test
@@ -94,7 +94,7 @@ class RuleMessagesTest {
                         + " output port 'status' of module 'monitor' does, which it is not connected to: ROS 2 would connect them",
                 "robot/base/monitor/status: Output port 'status' of module 'monitor' names the topic 'diagnostics', as output"
                         + " port 'diagnostics' of module 'logger' does, which it is not connected to: ROS 2 would connect them")),
-                sorted(messages("rule-RSA-28-violated.rsaml", "RSA-28")));
+                sorted(messages("rule-RSA-28-violated.rsaml", "RSA-28")), "RSA-28 says why each topic name cannot be used and names the port it clashes with");
     }
 
     @Test
@@ -108,7 +108,7 @@ class RuleMessagesTest {
                         + " message types (packages perLayer); rename the layer",
                 "robot/\u5bfc\u822a: Layer '\u5bfc\u822a' has no ASCII letter or digit in its name to make the name of its nodes' ROS 2 package"
                         + " from (packages perLayer); a ROS package name is lower-case letters, digits and underscores: rename the layer")),
-                sorted(messages("rule-RSA-29-violated.rsaml", "RSA-29")));
+                sorted(messages("rule-RSA-29-violated.rsaml", "RSA-29")), "RSA-29 says why each layer's package name cannot be used and names the layer it clashes with");
     }
 
     @Test
@@ -122,7 +122,7 @@ class RuleMessagesTest {
                 "robot/functional/odometry/integrate: Function 'integrate' has a time value the generated code cannot represent: "
                         + "period 0.0005 us" + limit,
                 "robot/lidar: Sensor 'lidar' has a time value the generated code cannot represent: period 9467280000.0 s" + limit)),
-                sorted(messages));
+                sorted(messages), "RSA-20 names each time value the generated code cannot hold, and the limit");
     }
 
     @Test
@@ -132,6 +132,6 @@ class RuleMessagesTest {
         String longName = "obstacleAvoidanceBehaviour".repeat(5).substring(0, 130);
         assertEquals(sorted(List.of("robot/functional/" + longName + ": Module '" + longName + "' has a name of 130 characters" + limit,
                 "robot/functional/laser/scan: Output port 'scan' has a message type of 125 characters" + limit)),
-                sorted(messages("rule-RSA-21-violated.rsaml", "RSA-21")));
+                sorted(messages("rule-RSA-21-violated.rsaml", "RSA-21")), "RSA-21 names each name too long for a file name, its length and the limit");
     }
 }

@@ -55,7 +55,7 @@ class EditSupportTest {
         module.setName("resourceChecker");
         module.setType(ElementType.REAL_TIME);
         module.setExecDuration(2.5);
-        assertEquals("Module resourceChecker \u2014 real-time, 2.5 ms", label(module));
+        assertEquals("Module resourceChecker \u2014 real-time, 2.5 ms", label(module), "a module's label says its kind, name, type and duration");
 
         Action action = f.createRTAction();
         action.setName("instruction1");
@@ -63,22 +63,22 @@ class EditSupportTest {
         action.setExecType(ExecutionType.PERIODIC);
         action.setPeriod(20);
         action.setExecDuration(1);
-        assertEquals("RT Action instruction1 \u2014 real-time, 1.0 ms every 20.0 ms", label(action));
+        assertEquals("RT Action instruction1 \u2014 real-time, 1.0 ms every 20.0 ms", label(action), "an action's label says its duration and period");
 
         Layer layer = f.createLayer();
         layer.setName("control");
         layer.setLevel(1);
         layer.setMaxExecTime(2.0);
-        assertEquals("Layer control \u2014 level 1, at most 2.0 ms a module", label(layer));
+        assertEquals("Layer control \u2014 level 1, at most 2.0 ms a module", label(layer), "a layer's label says its level and per-module budget");
 
         EntryPort port = f.createEntryPort();
         port.setName("e0_prodExec");
         port.setDataType(DataType.ALPHANUMERIC);
-        assertEquals("Entry Port e0_prodExec \u2014 alphanumeric", label(port));
+        assertEquals("Entry Port e0_prodExec \u2014 alphanumeric", label(port), "a port's label says its kind and data type");
 
         var mission = f.createMission();
         mission.setName("patrol");
-        assertEquals("Mission patrol", label(mission));
+        assertEquals("Mission patrol", label(mission), "a mission's label says its kind and name");
     }
 
     @Test
@@ -111,12 +111,12 @@ class EditSupportTest {
         module.setName("resourceChecker");
         layer.getModules().add(module);
         ITreeItemContentProvider tree = assertInstanceOf(ITreeItemContentProvider.class,
-                factory.adapt(layer, ITreeItemContentProvider.class));
-        assertEquals(List.of(module), List.copyOf(tree.getChildren(layer)));
-        assertEquals("Module resourceChecker \u2014 simple", label((EObject) tree.getChildren(layer).iterator().next()));
-        IItemPropertySource properties = assertInstanceOf(IItemPropertySource.class, factory.adapt(module, IItemPropertySource.class));
+                factory.adapt(layer, ITreeItemContentProvider.class), "the tree editor gets a layer's children from the item provider");
+        assertEquals(List.of(module), List.copyOf(tree.getChildren(layer)), "a layer's children in the tree are its modules");
+        assertEquals("Module resourceChecker \u2014 simple", label((EObject) tree.getChildren(layer).iterator().next()), "a module without a type is labelled simple in the tree");
+        IItemPropertySource properties = assertInstanceOf(IItemPropertySource.class, factory.adapt(module, IItemPropertySource.class), "the Properties view gets a module's properties from the item provider");
         assertTrue(properties.getPropertyDescriptors(module).stream().anyMatch(d -> "name".equals(d.getId(module))),
                 "the module's name is editable in the Properties view");
-        assertInstanceOf(IEditingDomainItemProvider.class, factory.adapt(module, IEditingDomainItemProvider.class));
+        assertInstanceOf(IEditingDomainItemProvider.class, factory.adapt(module, IEditingDomainItemProvider.class), "the editing domain gets commands for a module from the item provider");
     }
 }
