@@ -47,8 +47,8 @@ class GenerationSafetyTest {
         Path model = Files.writeString(tmp.resolve("arm.rsaml"), edited);
         Path out = tmp.resolve("out");
         for (Target target : List.of(Target.CPP, Target.ROS2)) {
-            GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(model, target, out, true));
-            assertEquals(model.toString(), e.file());
+            GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(model, target, out, true), target + ": an unrepresentable time is refused with a located error, not a crash");
+            assertEquals(model.toString(), e.file(), target + ": the error names the model file");
             assertEquals(27, e.line(), "the message points at the function's start tag");
             if (timing.contains("Infinity") && !e.getMessage().startsWith("no code generated: ")) {
                 assertTrue(e.getMessage().contains("Infinity"), e.getMessage()); // refused when loading: also fine
@@ -93,7 +93,7 @@ class GenerationSafetyTest {
                 Files.readString(Tools.example("exp3-task-interpreter.rsaml")).replace("taskInterpreter", name));
         Path out = tmp.resolve("out");
         for (Target target : List.of(Target.CPP, Target.ROS2)) {
-            GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(model, target, out, true));
+            GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(model, target, out, true), target + ": a file name too long for the file system is refused before anything is written");
             assertTrue(e.file().startsWith(out.toString()) && e.file().contains(name.substring(1)), e.file());
             assertTrue(e.getMessage().matches("a file name made from a model name is 30\\d bytes long, more than the 255 file systems allow; "
                     + "shorten that name \\(nothing was written\\)"), e.getMessage());
@@ -119,10 +119,10 @@ class GenerationSafetyTest {
                 + "hooks ../sibling.hpp x\nkeep project ../../evil\n");
 
         GenerationResult again = generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.CPP, out, false);
-        assertEquals(List.of(), again.deleted());
-        assertEquals(generatedLooking, Files.readString(victim));
-        assertEquals(generatedLooking, Files.readString(sibling));
-        assertTrue(Files.isSymbolicLink(out.resolve("gen/linked")) && Files.isSymbolicLink(out.resolve("gen/link.hpp")));
+        assertEquals(List.of(), again.deleted(), "stale-file removal deletes nothing through links or outside the output");
+        assertEquals(generatedLooking, Files.readString(victim), "the file outside the output, reached through a link, is untouched");
+        assertEquals(generatedLooking, Files.readString(sibling), "the file beside the output, named by the crafted manifest, is untouched");
+        assertTrue(Files.isSymbolicLink(out.resolve("gen/linked")) && Files.isSymbolicLink(out.resolve("gen/link.hpp")), "the links in the output are left as they are, not followed");
         String rewritten = Files.readString(manifest);
         assertFalse(rewritten.contains("victim") || rewritten.contains("sibling") || rewritten.contains("evil"), rewritten);
     }
@@ -142,7 +142,7 @@ class GenerationSafetyTest {
         GenerationResult again = generator.generate(model, Target.CPP, out, false);
         assertEquals(List.of("architecture 'pickAndPlaceCell' would be named pick_and_place_cell in code, but this output was generated as "
                 + "pick_and_place_arm: the C++ namespace, the CMake project and the program keep the name pick_and_place_arm so that your "
-                + "files keep building; to use pick_and_place_cell, generate into a new directory and move your code there"), again.warnings());
+                + "files keep building; to use pick_and_place_cell, generate into a new directory and move your code there"), again.warnings(), "regenerating a renamed architecture says the code keeps its old name, and how to take the new one");
         assertTrue(Files.readString(out.resolve("gen/Architecture.cpp")).contains("pickAndPlaceCell"), "the trace speaks the new name");
         RunTrace trace = new RunTrace(Tools.ok(out, 60, Tools.cmakeBuild(out, "pick_and_place_arm").toString(), "--run-for-ms", "100"));
         assertTrue(trace.lines.contains("run pickAndPlaceCell for 100 ms"), trace.output);
@@ -150,8 +150,8 @@ class GenerationSafetyTest {
 
         // A fresh output takes the new name.
         GenerationResult fresh = generator.generate(model, Target.CPP, tmp.resolve("fresh"), false);
-        assertEquals(List.of(), fresh.warnings());
-        assertTrue(Files.readString(tmp.resolve("fresh/CMakeLists.txt")).contains("project(pick_and_place_cell "));
+        assertEquals(List.of(), fresh.warnings(), "a fresh output takes the new name without a warning");
+        assertTrue(Files.readString(tmp.resolve("fresh/CMakeLists.txt")).contains("project(pick_and_place_cell "), "a fresh output's CMake project has the new name");
     }
 
     /** The ROS 2 package keeps its directory, so the architect's node files stay the ones built. */
@@ -164,7 +164,7 @@ class GenerationSafetyTest {
         GenerationResult again = new RsamlGenerator().generate(model, Target.ROS2, out, false);
         assertTrue(again.warnings().stream().anyMatch(w -> w.contains("the ROS package, the interfaces package and the C++ namespace "
                 + "keep the name pick_and_place_arm")), again.warnings()::toString);
-        assertTrue(again.preserved().contains(Path.of("pick_and_place_arm/src/interpretation/TaskInterpreter.cpp")));
-        assertFalse(Files.exists(out.resolve("pick_and_place_cell")));
+        assertTrue(again.preserved().contains(Path.of("pick_and_place_arm/src/interpretation/TaskInterpreter.cpp")), "the architect's node file in the kept package is preserved");
+        assertFalse(Files.exists(out.resolve("pick_and_place_cell")), "no second package is created under the new name");
     }
 }
