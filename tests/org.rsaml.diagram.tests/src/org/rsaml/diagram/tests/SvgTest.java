@@ -43,8 +43,8 @@ class SvgTest {
             String text = Examples.draw(name, view).svg();
             SvgDocument svg = new SvgDocument(text);
             Element root = svg.document.getDocumentElement();
-            assertEquals(SvgDocument.SVG_NS, root.getNamespaceURI());
-            assertEquals("svg", root.getLocalName());
+            assertEquals(SvgDocument.SVG_NS, root.getNamespaceURI(), name + " " + view + ": the root is in the SVG namespace");
+            assertEquals("svg", root.getLocalName(), name + " " + view + ": the root element is svg");
             NodeList all = root.getElementsByTagName("*");
             Set<String> ids = new java.util.HashSet<>();
             for (int i = 0; i < all.getLength(); i++) {
@@ -59,7 +59,7 @@ class SvgTest {
             while (m.find()) {
                 assertTrue(ids.contains(m.group(1)), "url(#" + m.group(1) + ") names a defined element");
             }
-            assertTrue(root.getAttribute("viewBox").matches("0 0 \\d+ \\d+"));
+            assertTrue(root.getAttribute("viewBox").matches("0 0 \\d+ \\d+"), name + " " + view + ": the viewBox starts at the origin and has whole-number size");
         }
     }
 
@@ -70,11 +70,11 @@ class SvgTest {
                     format, dir.resolve("a"));
             Path second = new RsamlDiagrams(DiagramView.ARCHITECTURE).write(TestRepository.example("exp2-defects.rsaml"), "examples/exp2-defects.rsaml",
                     format, dir.resolve("b"));
-            assertEquals(Files.readString(first), Files.readString(second));
+            assertEquals(Files.readString(first), Files.readString(second), "the same model gives the same " + format.id() + " bytes twice");
             String text = Files.readString(first);
             assertFalse(text.contains(TestRepository.root().toString()), "no absolute path in the " + format.id());
             assertFalse(text.matches("(?s).*20\\d\\d-\\d\\d-\\d\\d.*"), "no date in the " + format.id());
-            assertEquals("exp2-defects-architecture." + format.id(), first.getFileName().toString());
+            assertEquals("exp2-defects-architecture." + format.id(), first.getFileName().toString(), "the " + format.id() + " file is named after the model and the view");
         }
     }
 
@@ -85,7 +85,7 @@ class SvgTest {
         assertTrue(Files.exists(image), image + " exists");
         assertEquals(current, Files.readString(image),
                 "docs/images/exp1-hybrid-architecture.svg is out of date: run ./rsaml diagram -o docs/images examples/exp1-hybrid.rsaml");
-        assertTrue(Files.readString(TestRepository.root().resolve("README.md")).contains("docs/images/exp1-hybrid-architecture.svg"));
+        assertTrue(Files.readString(TestRepository.root().resolve("README.md")).contains("docs/images/exp1-hybrid-architecture.svg"), "README.md shows the exported architecture diagram of experiment 1");
     }
 
     @Test
@@ -97,8 +97,8 @@ class SvgTest {
                 RsamlModelValidator.validate(model));
         SvgDocument svg = new SvgDocument(svgText);
         SvgDocument.Shape shape = svg.byQname(module);
-        assertTrue(shape.classes().contains("emphasis"));
-        assertTrue(shape.texts().stream().anyMatch(t -> t.text().equals("utilisation 42 %")));
-        assertTrue(shape.box().contains(shape.texts().stream().filter(t -> t.text().equals("utilisation 42 %")).findFirst().orElseThrow().box(), 0.5));
+        assertTrue(shape.classes().contains("emphasis"), "the emphasised module is drawn emphasised");
+        assertTrue(shape.texts().stream().anyMatch(t -> t.text().equals("utilisation 42 %")), "the overlay's note is drawn on its module");
+        assertTrue(shape.box().contains(shape.texts().stream().filter(t -> t.text().equals("utilisation 42 %")).findFirst().orElseThrow().box(), 0.5), "the overlay's note lies inside its module's box");
     }
 }

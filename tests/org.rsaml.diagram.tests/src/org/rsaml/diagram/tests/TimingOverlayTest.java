@@ -63,7 +63,7 @@ class TimingOverlayTest {
     void theMissedRequirementsWorstPathIsDrawnOverExactlyItsElements() throws Exception {
         Analysed a = analyse(MISSED, TimingMode.AUTO);
         LatencyResult scan = a.timing().latencies().get(0);
-        assertEquals("scanToWheels", scan.name());
+        assertEquals("scanToWheels", scan.name(), "the missed example's latency requirement is the one drawn");
         assertEquals(Verdict.MISSES, scan.verdict(), "the example is the missed one");
         assertEquals(57_000_000L, scan.reactionNs(), "40 + 4 + 10 + 3 ms, as the example explains");
         String root = a.model().architecture().getName();
@@ -125,7 +125,7 @@ class TimingOverlayTest {
         LoadedModel model = ModelLoader.load(TestRepository.resource("org.rsaml.diagram.tests", "same-named-modules.rsaml"),
                 "same-named-modules.rsaml");
         LatencyResult scan = TimingAnalysis.analyse(model.architecture()).latencies().get(0);
-        assertEquals(List.of("navigation/detector", "control/velocityController"), scan.worstPath().stream().map(Hop::label).toList());
+        assertEquals(List.of("navigation/detector", "control/velocityController"), scan.worstPath().stream().map(Hop::label).toList(), "the worst path names the modules the analysis went through by their qualified names");
         assertEquals(model.architecture().getLayers().get(0).getModules().get(1), scan.worstPath().get(0).module(),
                 "the hop is the second navigation detector, the one that reads the laser");
         SvgDocument svg = new SvgDocument(new RsamlDiagrams(DiagramView.ARCHITECTURE).timing(TimingMode.AUTO)
@@ -160,7 +160,7 @@ class TimingOverlayTest {
     void aMetRequirementsPathIsDrawnWithoutTheMissStyle() throws Exception {
         Analysed a = analyse("mobile-base-latency.rsaml", TimingMode.AUTO);
         LatencyResult scan = a.timing().latencies().get(0);
-        assertEquals(Verdict.MEETS, scan.verdict());
+        assertEquals(Verdict.MEETS, scan.verdict(), "mobile-base-latency's requirement is met");
         Set<String> expected = new TreeSet<>();
         for (Hop hop : scan.worstPath()) {
             expected.add(a.model().architecture().getName() + "/" + hop.label());
@@ -172,7 +172,7 @@ class TimingOverlayTest {
             }
             assertFalse(s.classes().contains("latency-misses"), s.qname());
         }
-        assertEquals(expected, drawn);
+        assertEquals(expected, drawn, "exactly the worst path's modules are drawn as the latency path");
     }
 
     @Test
@@ -217,8 +217,8 @@ class TimingOverlayTest {
         assertFalse(off.text().contains("utilisation"), "--no-timing draws no utilisation");
         assertTrue(off.svg().shapes.values().stream().noneMatch(s -> s.classes().contains("latency-path"))
                 && off.svg().links.stream().noneMatch(l -> l.classes().contains("latency-path")), "--no-timing draws no path");
-        assertEquals(Examples.draw("exp1-hybrid.rsaml", DiagramView.ARCHITECTURE).svg(), plain.text());
-        assertNotEquals(off.text(), analyse(MISSED, TimingMode.ON).text());
+        assertEquals(Examples.draw("exp1-hybrid.rsaml", DiagramView.ARCHITECTURE).svg(), plain.text(), "with no timing question, the automatic mode draws exactly the plain diagram");
+        assertNotEquals(off.text(), analyse(MISSED, TimingMode.ON).text(), "--timing on the missed example draws something --no-timing does not");
     }
 
     @Test

@@ -49,7 +49,7 @@ class GenerationGapTest {
         Path cpp = out.resolve("src/interpretation/TaskInterpreter.cpp");
         Path hpp = out.resolve("src/interpretation/TaskInterpreter.hpp");
         String source = Files.readString(cpp);
-        assertTrue(source.contains("void TaskInterpreter::parseTask() {}"));
+        assertTrue(source.contains("void TaskInterpreter::parseTask() {}"), "the architect's implementation file starts with an empty body for each action");
         Files.writeString(cpp, source.replace("void TaskInterpreter::parseTask() {}", USER_ACTION)
                 .replace("}  // namespace", USER_FUNCTION + "\n}  // namespace"));
         String header = Files.readString(hpp);
@@ -71,22 +71,22 @@ class GenerationGapTest {
         GenerationResult again = generator.generate(model, Target.CPP, out, false);
         assertTrue(Tools.sameFiles(userFiles, userFiles(out)), "the architect's files changed");
         assertTrue(again.preserved().containsAll(List.of(Path.of("src/interpretation/TaskInterpreter.cpp"),
-                Path.of("src/interpretation/TaskInterpreter.hpp"))));
-        assertTrue(again.written().contains(Path.of("gen/interpretation/TaskInterpreterBase.hpp")));
+                Path.of("src/interpretation/TaskInterpreter.hpp"))), "the architect's implementation and header are preserved on regeneration: " + again.preserved());
+        assertTrue(again.written().contains(Path.of("gen/interpretation/TaskInterpreterBase.hpp")), "the generated base class is rewritten with the model's changes");
         String base = Files.readString(out.resolve("gen/interpretation/TaskInterpreterBase.hpp"));
-        assertTrue(base.contains("virtual void interpretProgram();") && !base.contains("interpretTask"));
-        assertTrue(base.contains("::rsaml::Output<bool> out_s1_taskInterpreter;"));
+        assertTrue(base.contains("virtual void interpretProgram();") && !base.contains("interpretTask"), "the base class calls the renamed function and no longer the old one");
+        assertTrue(base.contains("::rsaml::Output<bool> out_s1_taskInterpreter;"), "the base class has the new output port");
         assertEquals(List.of(
                 "src/motion_control/MotionController.hpp: new in the model: on_e1_motionController (the generated base class runs a default; "
                         + "declare and define it here to give it behaviour)",
                 "src/interpretation/TaskInterpreter.hpp: interpretTask is no longer in the model, so the generated code does not call it any more; "
-                        + "move the code to the renamed method or delete it"), again.warnings());
+                        + "move the code to the renamed method or delete it"), again.warnings(), "regeneration warns about the new entry port's hook and the renamed function's orphaned code");
 
         // The project still builds with the architect's code, which still runs where the model still calls it.
         RunTrace trace = new RunTrace(Tools.ok(out, 60, Tools.cmakeBuild(out, "pick_and_place_arm").toString(), "--run-for-ms", "200"));
         assertTrue(trace.lines.stream().anyMatch(l -> l.startsWith("user: parsed task after instruction")), trace.output);
         assertTrue(trace.count("action interpretation/taskInterpreter.interpretProgram.parseTask") >= 2, trace.output);
-        assertEquals(0, trace.count("user: interpretTask"));
+        assertEquals(0, trace.count("user: interpretTask"), "the architect's orphaned method is no longer called");
         assertFalse(trace.received("motionControl/motionController.e1_motionController", "interpretation/taskInterpreter.s1_taskInterpreter", false).isEmpty(),
                 "no data on the new connection:\n" + trace.output);
     }
@@ -100,12 +100,12 @@ class GenerationGapTest {
 
         GenerationResult again = new RsamlGenerator().generate(model, Target.CPP, out, false);
         assertEquals(List.of(Path.of("gen/motion_control/MotionControllerBase.cpp"), Path.of("gen/motion_control/MotionControllerBase.hpp")),
-                again.deleted());
-        assertTrue(Files.exists(out.resolve("src/motion_control/MotionController.cpp")));
-        assertTrue(again.written().contains(Path.of("src/motion_control/MotionCtl.cpp")));
+                again.deleted(), "the removed module's generated files are deleted, and only those");
+        assertTrue(Files.exists(out.resolve("src/motion_control/MotionController.cpp")), "the architect's file of the removed module is kept");
+        assertTrue(again.written().contains(Path.of("src/motion_control/MotionCtl.cpp")), "the renamed module gets a new implementation file");
         assertTrue(again.warnings().contains("src/motion_control/MotionController.hpp: its module is no longer in the model; "
                 + "your files for it are kept but no longer built"), again.warnings()::toString);
-        assertFalse(Files.readString(out.resolve("CMakeLists.txt")).contains("MotionController.cpp"));
+        assertFalse(Files.readString(out.resolve("CMakeLists.txt")).contains("MotionController.cpp"), "the kept file of the removed module is no longer built");
     }
 
     private static Map<String, byte[]> userFiles(Path out) throws Exception {
