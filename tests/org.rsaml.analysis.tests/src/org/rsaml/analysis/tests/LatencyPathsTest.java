@@ -47,8 +47,8 @@ class LatencyPathsTest {
         assertEquals(3, all.paths(), "the planner's, the reactive and the safety chain: " + all.pathBounds());
         assertEquals(List.of(1227 * MS, 132 * MS, 33 * MS), all.pathBounds().stream().map(PathBound::reactionNs).toList(),
                 "each path's reaction time, the longest first");
-        assertEquals(List.of("deliberative/planner", "reactive/avoid", "control/drive"), stages(all.pathBounds().get(0)));
-        assertEquals(List.of("reactive/detector", "reactive/avoid", "control/drive"), stages(all.pathBounds().get(1)));
+        assertEquals(List.of("deliberative/planner", "reactive/avoid", "control/drive"), stages(all.pathBounds().get(0)), "the planner's path runs planner, avoid, drive");
+        assertEquals(List.of("reactive/detector", "reactive/avoid", "control/drive"), stages(all.pathBounds().get(1)), "the reactive path runs detector, avoid, drive");
         assertEquals(List.of("deliberative/monitor", "deliberative/monitor.halt", "control/drive"), stages(all.pathBounds().get(2)),
                 "the safety chain passes the inhibitor, which blocks avoid's command at once");
         assertEquals(1227 * MS, all.reactionNs(), "the requirement's bound is its worst path's");
@@ -64,18 +64,18 @@ class LatencyPathsTest {
         assertEquals(Verdict.MEETS, reactive.verdict(), reactive.explanation());
         assertEquals(1, reactive.paths(), reactive.explanation());
         assertEquals(132 * MS, reactive.reactionNs(), "not the planner's 1227 ms");
-        assertEquals(List.of("reactive/detector"), reactive.via());
+        assertEquals(List.of("reactive/detector"), reactive.via(), "the reactive requirement names the path it is checked on");
         assertTrue(reactive.explanation().contains("over 1 path through reactive/detector"), reactive.explanation());
 
         LatencyResult safety = requirement(timing, "safetyChain");
         assertEquals(Verdict.MEETS, safety.verdict(), safety.explanation());
         assertEquals(33 * MS, safety.reactionNs(), safety.explanation());
-        assertEquals(List.of("deliberative/monitor", "inhibitor deliberative/monitor.halt"), safety.via());
+        assertEquals(List.of("deliberative/monitor", "inhibitor deliberative/monitor.halt"), safety.via(), "the safety requirement names the monitor and its inhibitor");
 
         LatencyResult none = requirement(timing, "noSuchPath");
         assertEquals(Verdict.MISSES, none.verdict(), none.explanation());
         assertEquals("no path through deliberative/planner, then reactive/detector leads from sensor 'laser' to actuator 'wheels':"
-                + " the data never arrives that way", none.explanation());
+                + " the data never arrives that way", none.explanation(), "a requirement naming a path that does not exist says which path, from which sensor to which actuator");
     }
 
     /**
@@ -89,7 +89,7 @@ class LatencyPathsTest {
         String text = Files.readString(root.resolve("tests/org.rsaml.analysis.tests/resources/latency-named-paths.rsaml"));
         String drive = "<processors name=\"core0\" core=\"0\"";
         String reactive = "<processors name=\"core1\" core=\"1\"";
-        assertTrue(text.contains(drive) && text.contains(reactive));
+        assertTrue(text.contains(drive) && text.contains(reactive), "the fixture has the two processors this test moves to other hosts");
         Path model = tmp.resolve("latency-on-two-hosts.rsaml");
         Files.writeString(model, text.replace(drive, "<processors name=\"board\" core=\"0\" host=\"base-board\" linkLatency=\"2000.0\" timeUnit=\"us\"")
                 .replace(reactive, "<processors name=\"core1\" core=\"0\""));

@@ -104,9 +104,9 @@ class RandomTaskSetsTest {
                             + ", simulation " + simulated[i] + "; tasks " + tasks);
                 }
                 simMiss |= simulated[i] > tasks.get(i).deadline();
-                assertEquals(simulated[i] > tasks.get(i).deadline() ? Verdict.MISSES : Verdict.MEETS, r.verdict());
+                assertEquals(simulated[i] > tasks.get(i).deadline() ? Verdict.MISSES : Verdict.MEETS, r.verdict(), "set " + s + " task " + tasks.get(i).name() + ": the verdict agrees with the simulated worst response " + simulated[i]);
             }
-            assertEquals(simMiss ? Verdict.MISSES : Verdict.MEETS, result.verdict());
+            assertEquals(simMiss ? Verdict.MISSES : Verdict.MEETS, result.verdict(), "set " + s + ": the processor's verdict agrees with the simulation");
             misses += simMiss ? 1 : 0;
         }
         // both outcomes must occur, or the comparison shows little
@@ -187,7 +187,7 @@ class RandomTaskSetsTest {
                     assertTrue(r.verdict() != Verdict.MEETS, r.explanation());
                 }
                 if (r.verdict() == Verdict.MEETS) {
-                    assertTrue(simulated[i] <= tasks.get(i).deadline());
+                    assertTrue(simulated[i] <= tasks.get(i).deadline(), "set " + s + " task " + tasks.get(i).name() + ": a task the analysis says meets never misses in the simulation (" + simulated[i] + ")");
                 }
             }
         }
@@ -339,10 +339,10 @@ class RandomTaskSetsTest {
                 assertTrue(simulated[i] <= r.responseTime().getAsLong(), "set " + set + " task " + tasks.get(i) + ": simulated "
                     + simulated[i] + " > bound " + r.responseTime() + "; tasks " + tasks);
             } else {
-                assertEquals(Verdict.MISSES, r.verdict());
+                assertEquals(Verdict.MISSES, r.verdict(), "set " + set + " task " + tasks.get(i).name() + ": a task without a bounded response time is a miss");
             }
             if (r.verdict() == Verdict.MEETS) {
-                assertTrue(simulated[i] <= tasks.get(i).deadline());
+                assertTrue(simulated[i] <= tasks.get(i).deadline(), "set " + set + " task " + tasks.get(i).name() + ": a task the analysis says meets never misses in the simulation (" + simulated[i] + ")");
             }
         }
     }

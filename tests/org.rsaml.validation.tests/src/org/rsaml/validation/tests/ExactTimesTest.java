@@ -57,7 +57,7 @@ class ExactTimesTest {
             "1.1, ms, 1100000, ns", "1e-6, s, 1, us", "1, us, 1e-6, s", "2.5, ms, 0.0025, s", "123456.789, us, 0.123456789, s",
             "0.0000005, us, 0.0005, ns", "282879384806159000, ns, 282879384.806159, s" })
     void equalDurationsInDifferentUnitsAreWithinBudget(String exec, String execUnit, String budget, String budgetUnit) {
-        assertEquals(List.of(), budgetFindings(exec, execUnit, budget, budgetUnit));
+        assertEquals(List.of(), budgetFindings(exec, execUnit, budget, budgetUnit), exec + " " + execUnit + " is within a budget of " + budget + " " + budgetUnit + ": no finding");
     }
 
     @ParameterizedTest(name = "{0} {1} exceeds {2} {3}")
@@ -68,7 +68,7 @@ class ExactTimesTest {
             "1.0000000000001, s, 1000, ms", "0.0000015, us, 0.0005, ns", "1100001, ns, 1.1, ms",
             "2000.0000001, us, 2, ms", "123456.7891, us, 0.123456789, s" })
     void anExcessOfOneUnitInTheLastWrittenDigitIsAFinding(String exec, String execUnit, String budget, String budgetUnit) {
-        assertEquals(List.of("RSA-08"), budgetFindings(exec, execUnit, budget, budgetUnit));
+        assertEquals(List.of("RSA-08"), budgetFindings(exec, execUnit, budget, budgetUnit), exec + " " + execUnit + " exceeds a budget of " + budget + " " + budgetUnit + ": RSA-08");
     }
 
     @Test
@@ -92,9 +92,9 @@ class ExactTimesTest {
     /** Java 17 prints some doubles with more digits than were written (2.82879384806159E17 as ...159008E17). */
     @Test
     void valuesAreReadAsWrittenWhereJavaPrintsMoreDigits() {
-        assertEquals("2.82879384806159E+17", RsamlTimes.decimal(2.82879384806159E17).toString());
-        assertEquals("2E+23", RsamlTimes.decimal(2e23).toString());
-        assertEquals("0.1", RsamlTimes.decimal(0.1).toString());
+        assertEquals("2.82879384806159E+17", RsamlTimes.decimal(2.82879384806159E17).toString(), "a large time is kept exactly, not rounded");
+        assertEquals("2E+23", RsamlTimes.decimal(2e23).toString(), "a huge time is kept exactly");
+        assertEquals("0.1", RsamlTimes.decimal(0.1).toString(), "0.1 is read as written, not as its binary approximation");
     }
 
     /** The shortest decimal as its definition finds it (fewest significant digits that parse back), against the fast path. */

@@ -22,13 +22,13 @@ class NewArchitectureTest {
     void newArchitectureHasThreeBudgetedLayersAndNoFinding() {
         Architecture architecture = ArchitectureSkeleton.create("rover");
 
-        assertEquals("rover", architecture.getName());
+        assertEquals("rover", architecture.getName(), "the new architecture has the name the user typed");
         assertEquals(List.of("deliberative level 2 100.0 ms", "executive level 1 10.0 ms", "functional level 0 1.0 ms"),
                 architecture.getLayers().stream()
                         .map(l -> l.getName() + " level " + l.getLevel() + " " + l.getMaxExecTime() + " " + l.getTimeUnit())
-                        .collect(Collectors.toList()));
-        assertEquals(3, architecture.getDeclaredLayers());
+                        .collect(Collectors.toList()), "the new architecture has three layers, each with its level and budget");
+        assertEquals(3, architecture.getDeclaredLayers(), "the new architecture declares the three layers it has");
         assertEquals(List.of(), RsamlModelValidator.validate(architecture).stream().map(Finding::toString)
-                .collect(Collectors.toList()));
+                .collect(Collectors.toList()), "a new architecture has no finding");
     }
 }
