@@ -45,7 +45,7 @@ class AtomicFilesTest {
         IOException e = assertThrows(IOException.class, () -> AtomicFiles.write(file, out -> {
             out.write("half");
             throw new IOException("disk full");
-        }));
+        }), "a failing writer's exception is passed on");
         assertEquals("disk full", e.getMessage(), "the writer's failure is passed on");
         assertEquals("old", Files.readString(file), "the old file is kept");
         try (Stream<Path> files = Files.list(dir)) {
@@ -56,7 +56,7 @@ class AtomicFilesTest {
     @Test
     void aDirectoryWhereTheFileGoesIsRefusedWithTheReason(@TempDir Path dir) throws Exception {
         Path taken = Files.createDirectories(dir.resolve("timeline.svg"));
-        FileSystemException e = assertThrows(FileSystemException.class, () -> AtomicFiles.writeString(taken, "<svg/>"));
+        FileSystemException e = assertThrows(FileSystemException.class, () -> AtomicFiles.writeString(taken, "<svg/>"), "writing over a directory is refused with a file-system error");
         assertEquals("it is a directory", AtomicFiles.reason(e, taken), "the reason, without repeating the file");
         assertEquals("permission denied (/x/y)", AtomicFiles.reason(new java.nio.file.AccessDeniedException("/x/y"), taken),
                 "another file is named");

@@ -33,7 +33,7 @@ class ContentTypeTest {
     void rsamlExtensionHasTheRsamlContentType() {
         IContentType type = Platform.getContentTypeManager().findContentTypeFor("robot.rsaml");
         assertNotNull(type, ".rsaml has no content type");
-        assertEquals("org.rsaml.model.rsaml", type.getId());
+        assertEquals("org.rsaml.model.rsaml", type.getId(), ".rsaml files have RsaML's content type");
     }
 
     @Test
@@ -49,7 +49,7 @@ class ContentTypeTest {
         Resource resource = new ResourceSetImpl().getResource(URI.createFileURI(file.toString()), true);
         assertInstanceOf(RsamlResourceImpl.class, resource, "the RsaML resource factory must handle .rsaml");
         EObject root = resource.getContents().get(0);
-        assertSame(RsamlPackage.eINSTANCE, root.eClass().getEPackage());
-        assertEquals("Architecture", root.eClass().getName());
+        assertSame(RsamlPackage.eINSTANCE, root.eClass().getEPackage(), "the root is an element of RsaML's package");
+        assertEquals("Architecture", root.eClass().getName(), "the root is an Architecture");
     }
 }

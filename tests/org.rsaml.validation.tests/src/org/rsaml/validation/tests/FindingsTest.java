@@ -67,13 +67,13 @@ class FindingsTest {
         module.setPeriod(10000);
         module.setExecDuration(1500);
         layer.getModules().add(module);
-        assertEquals(List.of(), RsamlModelValidator.validate(a));
+        assertEquals(List.of(), RsamlModelValidator.validate(a), "1500 us within a 2 ms budget is no finding");
 
         module.setExecDuration(2500);
         List<Finding> findings = RsamlModelValidator.validate(a);
         assertEquals(1, findings.size(), findings.toString());
-        assertEquals("Module 'checker' takes 2500.0 us but layer 'control' allows at most 2.0 ms", findings.get(0).message());
-        assertEquals("robot/control/checker", findings.get(0).qualifiedName());
+        assertEquals("Module 'checker' takes 2500.0 us but layer 'control' allows at most 2.0 ms", findings.get(0).message(), "the finding states the module's duration in its own unit and the layer's budget in its unit");
+        assertEquals("robot/control/checker", findings.get(0).qualifiedName(), "the finding names the module by its qualified name");
     }
 
     @Test
@@ -92,8 +92,8 @@ class FindingsTest {
         module.setPeriod(10);
         layer.getModules().add(module);
         List<Finding> findings = RsamlModelValidator.validate(a);
-        assertEquals(List.of("RSA-05"), findings.stream().map(Finding::ruleId).toList());
+        assertEquals(List.of("RSA-05"), findings.stream().map(Finding::ruleId).toList(), "a real-time module without a delay gets RSA-05 only");
         assertEquals("Real-time module 'motion' has no delay; a real-time module needs a non-zero period and delay",
-                findings.get(0).message());
+                findings.get(0).message(), "RSA-05 says what is missing and what a real-time module needs");
     }
 }

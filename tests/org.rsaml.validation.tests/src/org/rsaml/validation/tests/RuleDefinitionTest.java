@@ -98,7 +98,7 @@ class RuleDefinitionTest {
         EClass connection = (EClass) copy.getEClassifier("Connection");
         connection.getEAnnotation(OclRules.OCL_URI).getDetails().removeKey("RSA03_adjacentLayerCommunication");
         List<String> problems = new OclRules(copy).problems();
-        assertEquals(List.of("RSA-03 (RSA03_adjacentLayerCommunication on Connection) has no OCL body"), problems);
+        assertEquals(List.of("RSA-03 (RSA03_adjacentLayerCommunication on Connection) has no OCL body"), problems, "a constraint without an OCL body is named with its rule and class");
     }
 
     @Test
@@ -110,7 +110,7 @@ class RuleDefinitionTest {
         module.getEAnnotation(OclRules.OCL_URI).getDetails().put("RSA77_somethingNew", "true");
         List<String> problems = new OclRules(copy).problems();
         assertEquals(List.of("unknown rule (RSA77_somethingNew on Module) has no entry with a message in the rule catalogue "
-                + RuleCatalog.SOURCE_FILE), problems);
+                + RuleCatalog.SOURCE_FILE), problems, "a constraint the catalogue does not know is named, saying what to add");
     }
 
     @Test
@@ -145,7 +145,7 @@ class RuleDefinitionTest {
                 """), problems);
         assertEquals(List.of("rule catalogue: unknown key RSA-43.colour",
                 "RSA-42 has no remediation, no message in the rule catalogue",
-                "RSA-43 has an unknown severity 'fatal' (error, warning or info)"), problems);
+                "RSA-43 has an unknown severity 'fatal' (error, warning or info)"), problems, "unknown catalogue keys are each named");
 
         problems.clear();
         RuleCatalog.parse(new StringReader("""

@@ -52,7 +52,7 @@ class StockDiagnosticianTest {
     @Test
     void theBundleRegistersRsamlsValidatorWithEmf() {
         assertTrue(ValidatorRegistration.activated(), "the component OSGI-INF/validator.xml did not run");
-        assertEquals(RuleEValidator.class, EValidator.Registry.INSTANCE.getEValidator(RsamlPackage.eINSTANCE).getClass());
+        assertEquals(RuleEValidator.class, EValidator.Registry.INSTANCE.getEValidator(RsamlPackage.eINSTANCE).getClass(), "RsaML's one validator is the package's registered EValidator");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -100,7 +100,7 @@ class StockDiagnosticianTest {
         Diagnostic d = Diagnostician.INSTANCE.validate(model.architecture());
         assertEquals(Diagnostic.WARNING, d.getSeverity(), d.toString());
         List<Finding> findings = RsamlModelValidator.validate(model);
-        assertEquals(1, findings.size());
-        assertEquals("RSA-11", findings.get(0).ruleId());
+        assertEquals(1, findings.size(), "the RSA-11 model has exactly one finding");
+        assertEquals("RSA-11", findings.get(0).ruleId(), "the finding is RSA-11");
     }
 }
