@@ -178,10 +178,10 @@ class GeometryTest {
             // Connections are named after their ports, which may repeat: find each by its URI fragment.
             String uri = connection.eResource().getURIFragment(connection);
             Link link = svg.links.stream().filter(l -> uri.equals(l.uri())).findFirst().orElseThrow();
-            assertEquals(RsamlLabels.qualifiedName(connection.getSource()), link.source());
-            assertEquals(RsamlLabels.qualifiedName(connection.getTarget()), link.target());
+            assertEquals(RsamlLabels.qualifiedName(connection.getSource()), link.source(), "the drawn connection starts at its source port");
+            assertEquals(RsamlLabels.qualifiedName(connection.getTarget()), link.target(), "the drawn connection ends at its target port");
         }
-        assertEquals(svg.links.size(), checked);
+        assertEquals(svg.links.size(), checked, "every drawn link's ends were checked");
     }
 
     private static boolean onBorder(Box box, double[] p) {

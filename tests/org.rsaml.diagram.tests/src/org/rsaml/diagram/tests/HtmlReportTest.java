@@ -40,9 +40,9 @@ class HtmlReportTest {
                 assertEquals("http://www.w3.org/2000/svg", urls.group(), "the only address is the SVG namespace");
             }
             Matcher data = Pattern.compile("<script type=\"application/json\" id=\"rsaml-data\">(.*?)</script>", Pattern.DOTALL).matcher(html);
-            assertTrue(data.find());
+            assertTrue(data.find(), "the page carries the model's data inline");
             JsonObject json = JsonParser.parseString(data.group(1)).getAsJsonObject();
-            assertEquals(view.id(), json.get("view").getAsString());
+            assertEquals(view.id(), json.get("view").getAsString(), "the page's data names the view drawn");
             if (view == DiagramView.ARCHITECTURE || !model.architecture().getMissions().isEmpty()) {
                 assertTrue(json.getAsJsonObject("elements").size() > 3, "the page describes the drawn elements");
             }

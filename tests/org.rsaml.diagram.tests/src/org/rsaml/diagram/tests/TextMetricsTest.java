@@ -28,7 +28,7 @@ class TextMetricsTest {
         FontRenderContext context = new FontRenderContext(null, false, true);
         Font regular = Font.createFont(Font.TRUETYPE_FONT, FONTS.resolve("DejaVuSans.ttf").toFile()).deriveFont(1000f);
         Font bold = Font.createFont(Font.TRUETYPE_FONT, FONTS.resolve("DejaVuSans-Bold.ttf").toFile()).deriveFont(1000f);
-        assertTrue(TextMetrics.codePoints().size() > 300);
+        assertTrue(TextMetrics.codePoints().size() > 300, "the shipped widths cover more than Latin-1: labels in other scripts are measured");
         for (int cp : TextMetrics.codePoints()) {
             if (Character.getType(cp) == Character.FORMAT) {
                 // The soft hyphen (U+00AD): Java 17 measures its glyph, Java 24 and later treat it as invisible.
@@ -40,6 +40,6 @@ class TextMetricsTest {
             assertEquals(Math.round(bold.getStringBounds(s, context).getWidth()), shipped[1], 0, "bold U+" + Integer.toHexString(cp));
         }
         assertEquals(regular.getStringBounds("resourceChecker", context).getWidth() * 12 / 1000,
-                TextMetrics.width("resourceChecker", 12, false), 0.1);
+                TextMetrics.width("resourceChecker", 12, false), 0.1, "a label's width at 12 pt is the font's, so labels fit their boxes");
     }
 }
