@@ -3,10 +3,11 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 // The component container of a processor: as rclcpp_components' component_container (a
-// single-threaded executor for ROS 2's services and the nodes' data arrivals), and each timed
-// release of a node of this package on an executor thread of its own at its real-time priority
-// (rsaml/scheduling.hpp). Components of other packages run on the main executor. On SIGINT it
-// serves its managed nodes until the lifecycle manager has deactivated and cleaned them up.
+// single-threaded executor for ROS 2's services), and each timed release of a node of this package
+// on an executor thread of its own at its real-time priority, and the node's data arrivals on one at
+// priority 0 of the analysis (rsaml/scheduling.hpp). Components of other packages run on the main
+// executor. On SIGINT it serves its managed nodes until the lifecycle manager has deactivated and
+// cleaned them up.
 #include <map>
 #include <memory>
 

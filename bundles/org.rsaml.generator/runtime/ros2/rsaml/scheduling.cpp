@@ -171,6 +171,9 @@ Schedule::~Schedule() {
     summary(r);
   }
   if (reactions_) {
+    if (data_) {  // the scheduling of the thread that ran them (its executor is stopped by now)
+      reactions_->sched = data_->sched.empty() ? "default (never scheduled)" : data_->sched;
+    }
     summary(*reactions_);
   }
   for (const Arrivals& a : arrivals_) {
@@ -239,6 +242,16 @@ std::size_t Schedule::rsaml_add_arrivals(const std::string& port) {
   a.port = port;
   arrivals_.push_back(std::move(a));
   return arrivals_.size() - 1;
+}
+
+rclcpp::CallbackGroup::SharedPtr Schedule::rsaml_data_group() {
+  if (!data_) {
+    data_ = std::make_unique<Release>();
+    data_->label = module_ + " worker";
+    data_->rank = 0;  // priority 0 of the analysis: SCHED_FIFO's lowest priority, below every release (rank 1 and up)
+    data_->group = base_->create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);
+  }
+  return data_->group;
 }
 
 void Schedule::busy(std::int64_t cpu_ns) const {
@@ -321,7 +334,7 @@ void Schedule::rsaml_measure_reactions(const std::string& label, std::int64_t de
   reactions_->deadline_ns = deadline_ns;
   reactions_->cost_ns = cost_ns;
   reactions_->bound_ns = bound_ns;
-  reactions_->sched = "default (the main executor)";
+  reactions_->sched = "default (no data arrives)";
 }
 
 void Schedule::rsaml_run_reaction(const std::function<void()>& body) {
@@ -338,18 +351,25 @@ Scheduler::~Scheduler() { stop(); }
 
 void Scheduler::add(Schedule& node) {
   for (Release& r : node.rsaml_releases()) {
-    auto worker = std::make_unique<Worker>();
-    auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
-    executor->add_callback_group(r.group, node.rsaml_base());
-    worker->executor = executor;
-    Release* release = &r;
-    const int core = node.rsaml_core();
-    worker->thread = std::thread([executor, release, core] {
-      place(*release, core);
-      executor->spin();
-    });
-    workers_.push_back(std::move(worker));
+    serve(r, node);
   }
+  if (node.rsaml_data() != nullptr) {
+    serve(*node.rsaml_data(), node);
+  }
+}
+
+void Scheduler::serve(Release& jobs, Schedule& node) {
+  auto worker = std::make_unique<Worker>();
+  auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
+  executor->add_callback_group(jobs.group, node.rsaml_base());
+  worker->executor = executor;
+  Release* release = &jobs;
+  const int core = node.rsaml_core();
+  worker->thread = std::thread([executor, release, core] {
+    place(*release, core);
+    executor->spin();
+  });
+  workers_.push_back(std::move(worker));
 }
 
 void Scheduler::stop() {

@@ -5,9 +5,11 @@
 // Scheduling of the nodes of an RsaML architecture as its timing analysis assumes (docs/timing.md):
 // each timed release in a callback group of its own, served by an executor thread of its own at the
 // release's real-time priority (SCHED_FIFO or SCHED_RR, the analysis's rank) on the processor's core;
-// data arrivals (reactions, input handlers) and ROS 2's own services on the process's main executor
-// at the default priority. Every job is measured (release, or the arrival that starts a reaction, to
-// completion) and reported.
+// a node's data arrivals (reactions, input handlers, link triggers) in a callback group of their own,
+// served the same way at priority 0 of the analysis (the lowest real-time priority, as the C++
+// runtime's module worker); ROS 2's own services on the process's main executor at the default
+// priority. Every job is measured (release, or the arrival that starts a reaction, to completion) and
+// reported.
 #pragma once
 
 #include <chrono>
@@ -109,6 +111,8 @@ class Schedule {
   /** The CPU core of the node's processor, or -1. */
   int rsaml_core() const { return core_; }
   std::deque<Release>& rsaml_releases() { return releases_; }
+  /** The node's data arrivals as the executor thread that serves them sees them (rank 0), or null when it has none. */
+  Release* rsaml_data() { return data_.get(); }
   const rclcpp::node_interfaces::NodeBaseInterface::SharedPtr& rsaml_base() const { return base_; }
 
  protected:
@@ -156,6 +160,14 @@ class Schedule {
    */
   void rsaml_count_dropped(std::size_t release, std::int64_t period_ns, const rclcpp::Time& expected, const rclcpp::Time& called);
   std::size_t rsaml_add_arrivals(const std::string& port);
+  /**
+   * The callback group of every subscription of the node (entry ports, link triggers): served by an
+   * executor thread of its own at priority 0 of the analysis, SCHED_FIFO's lowest priority, below
+   * every release, pinned to the node's core (`sched <module> worker ...`, as the C++ runtime's
+   * module worker). Created on the first call, which a node with subscriptions makes in its
+   * constructor, so that the thread exists whenever the subscriptions are created.
+   */
+  rclcpp::CallbackGroup::SharedPtr rsaml_data_group();
 
   /**
    * Runs one job of a release under the node's lock and measures it: `released` is its release
@@ -206,6 +218,7 @@ class Schedule {
   std::deque<Release> releases_;
   std::deque<Arrivals> arrivals_;
   std::unique_ptr<Jobs> reactions_;  // null when the node does not react to data
+  std::unique_ptr<Release> data_;    // the data arrivals' group and thread (rank 0); null without subscriptions
   rclcpp::Time arrived_;             // when the executor handed over the message being handled
   rclcpp::Time handled_;             // when its handling started (it held the node's lock)
 };
@@ -218,10 +231,10 @@ class ScheduledNode : public rclcpp::Node, public Schedule {
 };
 
 /**
- * The executor threads of the releases of some nodes: each release's group on a single-threaded
- * executor of its own, on a thread pinned to the node's core and at the release's real-time
- * priority where the system permits it (else it says so, once per thread, and runs at the default
- * priority).
+ * The executor threads of the releases and data arrivals of some nodes: each release's group, and
+ * each node's data group, on a single-threaded executor of its own, on a thread pinned to the node's
+ * core and at the release's real-time priority (rank 0 for the data) where the system permits it
+ * (else it says so, once per thread, and runs at the default priority).
  */
 class Scheduler {
  public:
@@ -239,10 +252,11 @@ class Scheduler {
     std::shared_ptr<rclcpp::Executor> executor;
     std::thread thread;
   };
+  void serve(Release& jobs, Schedule& node);
   std::vector<std::unique_ptr<Worker>> workers_;
 };
 
-/** main() of a node's own process: the node, its release threads and a main executor for the rest. */
+/** main() of a node's own process: the node, its release and data threads, and a main executor for ROS 2's services. */
 template <typename NodeT>
 int run_standalone(int argc, char** argv) {
   init(argc, argv);

@@ -52,7 +52,8 @@ import org.rsaml.validation.ModelLoader;
  * grants real-time priorities, the run does not contradict the analysis ({@link #contradictions}): no
  * release of a task the analysis says meets its deadline is dropped by ROS 2's timer, and each release's
  * worst observed response (release to completion,
- * measured by the node on its clock) is within that bound plus the platform's allowance for what the
+ * measured by the node on its clock), and each reaction's (from the arrival its node's data thread takes
+ * to completion), is within that bound plus the platform's allowance for what the
  * analysis does not count on ROS 2, measured at test time ({@link PlatformCheck}: the worst start
  * latency of the run's releases that nothing in the model delays, or a calibration run, plus a stated
  * constant for the bookkeeping; the check says which), unless other programs' real-time threads ran
@@ -66,7 +67,8 @@ import org.rsaml.validation.ModelLoader;
  * high-priority one on the same core, an inhibitor, two EDF processors (one pinned to a core, one not: each
  * release under SCHED_DEADLINE with the kernel's runtime, deadline and period, or the kernel's refusal and the
  * fallback, and the test says which it saw), and one seeded random task set (two processors of rate-monotonic
- * tasks, as {@link JobTimingTest} runs on the C++ runtime), and, always, a processor the analysis says misses, whose
+ * tasks, as {@link JobTimingTest} runs on the C++ runtime), a chain of two reactions sharing a core with a timed
+ * release (ros2-reaction.rsaml), and, always, a processor the analysis says misses, whose
  * predicted misses must show ({@link #anOverloadedProcessorMissesAsPredicted}); {@code -Drsaml.ros2.examples=all} runs every example
  * without errors as well,
  * {@code -Drsaml.ros2.examples=mobile-base-latency.rsaml,resources/inhibitor-window.rsaml} only
@@ -92,7 +94,7 @@ class Ros2LaunchTest {
             return java.util.Arrays.stream(chosen.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toList();
         }
         List<String> models = new ArrayList<>(List.of("mobile-base-latency.rsaml", "resources/ros2-preemption.rsaml", "resources/inhibitor-window.rsaml",
-                "resources/ros2-edf.rsaml"));
+                "resources/ros2-edf.rsaml", "resources/ros2-reaction.rsaml"));
         if ("all".equals(chosen)) {
             for (String e : Tools.cleanExamples()) {
                 if (!models.contains(e)) {
@@ -379,20 +381,47 @@ class Ros2LaunchTest {
             }
             checked.add(r);
         }
-        if (!checked.isEmpty()) {
+        // The reactions are held to their bounds as the releases are, under the same rules: where their
+        // node's data thread got the scheduling the analysis assumes (priority 0, SCHED_FIFO's lowest).
+        List<Reaction> reacting = new ArrayList<>();
+        for (Reaction x : plan.reactions()) {
+            JobSummary o = observed.get(x.label());
+            if (o == null || bounds.getOrDefault(x.label(), -1L) < 0) {
+                continue;
+            }
+            PlatformCheck.requireRealtime("Ros2LaunchTest " + name, x.label(), o.sched());
+            if (!o.asAnalysed()) {
+                unchecked.add(x.label() + " (" + o.sched() + ")");
+                continue;
+            }
+            reacting.add(x);
+        }
+        if (!checked.isEmpty() || !reacting.isEmpty()) {
             PlatformCheck.BoundCheck check = PlatformCheck.boundCheck("Ros2LaunchTest " + name, others,
                     () -> PlatformCheck.probes(arch, plan, observed, r -> apartOnRos2(plan, r)), observed);
             PlatformCheck.Allowance allowance = check.allowance();
             if (allowance == null) {
                 checked.forEach(r -> unchecked.add(r.label() + " (" + check.notChecked() + ")"));
                 checked.clear();
+                reacting.forEach(x -> unchecked.add(x.label() + " (" + check.notChecked() + ")"));
+                reacting.clear();
             } else {
                 report.append("  allowance for the platform: ").append(allowance).append('\n');
             }
             List<String> contradictions = contradictions(checked, verdicts, bounds, observed, missed, allowance, report);
+            for (Reaction x : reacting) {
+                JobSummary o = observed.get(x.label());
+                long bound = bounds.get(x.label());
+                if (o.worstNs() > bound + allowance.ns()) {
+                    contradictions.add(x.label() + ": worst observed response of a reaction " + JobTimingTest.ms(o.worstNs()) + " (" + o.jobs()
+                            + " jobs, " + o.sched() + ") exceeds the analysed bound " + JobTimingTest.ms(bound) + " ("
+                            + verdicts.get(x.label()) + ") plus the platform's allowance " + allowance);
+                }
+            }
             assertTrue(contradictions.isEmpty(), name + " on ROS 2 contradicts the timing analysis:\n  " + String.join("\n  ", contradictions)
                     + "\n" + report);
             report.append("  checked against the analysis: ").append(checked.stream().map(Release::label).toList()).append('\n');
+            report.append("  reactions checked against the bound: ").append(reacting.stream().map(Reaction::label).toList()).append('\n');
         }
         // Each node measures its reactions to data as the C++ program does: from the arrival that
         // starts one to its completion, against the modeled deadline and cost and the analysis's bound.

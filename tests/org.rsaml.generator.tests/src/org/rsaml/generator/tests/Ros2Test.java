@@ -287,6 +287,45 @@ class Ros2Test {
     }
 
     /**
+     * Every subscription of a node (entry ports, link triggers) is in the node's data group, which the
+     * node creates in its constructor, so that the executor thread serving it at priority 0 of the
+     * analysis exists before a managed node creates its subscriptions on configure; a node without
+     * subscriptions has no data group (no idle real-time thread). Subsumption-brooks has entry ports
+     * and link triggers, ros2-lifecycle managed nodes.
+     */
+    @org.junit.jupiter.api.Test
+    void everySubscriptionIsInItsNodesDataGroup(@TempDir Path tmp) throws Exception {
+        int nodes = 0;
+        for (Path model : List.of(Tools.example("subsumption-brooks.rsaml"), Tools.resource("ros2-lifecycle.rsaml"))) {
+            Path out = tmp.resolve(model.getFileName().toString());
+            new RsamlGenerator().generate(model, Target.ROS2, out, false);
+            List<Path> headers;
+            try (Stream<Path> s = Files.walk(out)) {
+                headers = s.filter(f -> f.toString().endsWith(".hpp") && f.getParent().getFileName().toString().equals("gen")).sorted().toList();
+            }
+            assertFalse(headers.isEmpty(), "no node header generated in " + out);
+            for (Path h : headers) {
+                String text = Files.readString(h);
+                int subscriptions = (int) Pattern.compile("create_subscription<").matcher(text).results().count();
+                int inGroup = text.indexOf("subscription_options.callback_group = this->rsaml_data_group();");
+                int created = text.indexOf("\n    this->rsaml_data_group();\n");
+                if (subscriptions == 0) {
+                    assertFalse(text.contains("rsaml_data_group"), h + ": a node without subscriptions has no data thread");
+                    continue;
+                }
+                nodes++;
+                assertEquals(subscriptions, Pattern.compile("\\s+subscription_options\\);").matcher(text).results().count(),
+                        h + ": every subscription takes the subscription options");
+                assertTrue(inGroup >= 0 && inGroup < text.indexOf("create_subscription<"),
+                        h + ": the subscription options put the subscriptions in the node's data group:\n" + text);
+                assertTrue(created >= 0 && created < text.indexOf(" protected:"),
+                        h + ": the constructor creates the data group before the node is scheduled:\n" + text);
+            }
+        }
+        assertTrue(nodes >= 3, "nodes with subscriptions checked: " + nodes);
+    }
+
+    /**
      * The model's deployment in the launch files: the nodes of the modules one processor runs share
      * a container of their own, the modules no processor names share the package's container, and
      * the processes of a processor with a core (its container, or its nodes' processes) start under

@@ -41,7 +41,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		«IF composed»
 			# Starts every module of the architecture as an rclcpp component in a component container
 			# («rosNames.containerExecutable»: each timed release on an executor thread of its own at the timing
-			# analysis's real-time priority, data arrivals on the main executor; see the README):
+			# analysis's real-time priority, each node's data arrivals on one at priority 0 of the analysis; see the README):
 			«IF rosNames.containers.exists[processor !== null]»
 				# one container (one process) per processor of the model's deployment, pinned with taskset to
 				# the processor's core where the model names one«IF rosNames.containers.exists[processor === null]», and one for the modules no processor names«ENDIF».

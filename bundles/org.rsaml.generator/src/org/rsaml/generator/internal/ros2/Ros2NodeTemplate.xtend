@@ -91,6 +91,11 @@ class Ros2NodeTemplate extends Ros2Template {
 		  explicit «m.baseName»(const rclcpp::NodeOptions& options)
 		      : ::«names.project»::rsaml_ros2::«IF m.managed»ScheduledLifecycleNode«ELSE»ScheduledNode«ENDIF»(«str(m.rosNode)», options, «str(m.qualifiedName)», «m.core») {
 		    «parameters(m)»
+		    «IF !m.inputs.empty || !context.linksOf(m).empty»
+		    	// data arrivals (entry ports, link triggers) on an executor thread of their own at priority 0 of
+		    	// the analysis, the lowest real-time priority, below every release
+		    	this->rsaml_data_group();
+		    «ENDIF»
 		    «IF m.managed»
 		    	«managed.construction(m)»
 		    «ELSE»
@@ -286,6 +291,9 @@ class Ros2NodeTemplate extends Ros2Template {
 		publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
 		rclcpp::SubscriptionOptions subscription_options;
 		subscription_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();
+		«IF !m.inputs.empty || !context.linksOf(m).empty»
+			subscription_options.callback_group = this->rsaml_data_group();
+		«ENDIF»
 		(void)publisher_options;
 		(void)subscription_options;
 		«FOR p : m.outputs»

@@ -126,11 +126,13 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		The nodes are scheduled as `rsaml analyze` assumes: in the container `«rosNames.containerExecutable»`
 		(and in each node's own executable) every timed release has a callback group of its own, served
 		by a single-threaded executor on a thread of its own under `SCHED_FIFO` (`SCHED_RR` for round
-		robin) at the analysis's rank, pinned to its processor's core; data arrivals and ROS 2's services
-		run on the process's main executor at the default priority, and a node's activations hold its
-		lock, so they never run at once. Where real-time priorities are not permitted (neither root nor
-		`CAP_SYS_NICE` nor an `rtprio` limit), each release thread says so on standard output and runs at
-		the default priority: then the analysis's verdicts do not hold. Every node measures its jobs
+		robin) at the analysis's rank, pinned to its processor's core; each node's data arrivals (its
+		reactions, input handlers and link triggers) have a callback group of their own, served the same
+		way at priority 0 of the analysis (`SCHED_FIFO`'s lowest priority, below every release); ROS 2's
+		services run on the process's main executor at the default priority, and a node's activations
+		hold its lock, so they never run at once. Where real-time priorities are not permitted (neither
+		root nor `CAP_SYS_NICE` nor an `rtprio` limit), each of these threads says so on standard output
+		and runs at the default priority: then the analysis's verdicts do not hold. Every node measures its jobs
 		(release to completion, on the node's clock), prints `miss` and `overrun` lines as they happen
 		and a `summary` line per release, for its reactions to data (arrival to completion) and per entry
 		port at exit. The parameter
