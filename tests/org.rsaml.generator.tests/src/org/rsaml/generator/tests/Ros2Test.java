@@ -301,7 +301,8 @@ class Ros2Test {
             new RsamlGenerator().generate(model, Target.ROS2, out, false);
             List<Path> headers;
             try (Stream<Path> s = Files.walk(out)) {
-                headers = s.filter(f -> f.toString().endsWith(".hpp") && f.getParent().getFileName().toString().equals("gen")).sorted().toList();
+                headers = s.filter(f -> f.toString().endsWith(".hpp") && f.toString().contains("/gen/") && !f.toString().contains("/gen/rsaml/"))
+                        .sorted().toList();
             }
             assertFalse(headers.isEmpty(), "no node header generated in " + out);
             for (Path h : headers) {

@@ -108,8 +108,11 @@ struct PublisherOptions {
   QosOverridingOptions qos_overriding_options;
 };
 
+class CallbackGroup;
+
 struct SubscriptionOptions {
   QosOverridingOptions qos_overriding_options;
+  std::shared_ptr<CallbackGroup> callback_group;
 };
 
 // rclcpp/publisher.hpp
