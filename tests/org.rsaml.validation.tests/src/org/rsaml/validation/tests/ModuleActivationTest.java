@@ -141,9 +141,9 @@ class ModuleActivationTest {
                 }
             }
         }
-        assertEquals(8, agree(a, "unfed clique"));
+        assertEquals(8, agree(a, "unfed clique"), "the interpreted and the compiled check were compared on every module of the unfed clique");
         connect(a, module(layer, "timer", true), clique.get(3), DataType.NUMERIC);
-        assertEquals(9, agree(a, "fed clique"));
+        assertEquals(9, agree(a, "fed clique"), "the interpreted and the compiled check were compared on every module once the clique is fed");
     }
 
     /** Compares the two on every module below the root; returns how many were compared. */

@@ -50,7 +50,7 @@ class MutatedFilesTest {
                 examples.add(Files.readAllBytes(f));
             }
         }
-        assertFalse(examples.isEmpty());
+        assertFalse(examples.isEmpty(), "there are example models to mutate");
         Random random = new Random(SEED);
         List<String> broken = new ArrayList<>();
         for (int i = 0; i < MUTATIONS; i++) {

@@ -47,7 +47,7 @@ class PublicApiTest {
                 }
             }
         }
-        assertEquals(List.of(), leaks);
+        assertEquals(List.of(), leaks, "the public API exposes no internal type");
     }
 
     private static void check(Class<?> type, List<String> leaks) {

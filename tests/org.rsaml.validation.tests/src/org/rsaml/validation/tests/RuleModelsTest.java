@@ -58,7 +58,7 @@ class RuleModelsTest {
                 .collect(Collectors.joining("\n")));
         for (Finding f : findings) {
             assertTrue(f.line() > 0, "finding without a line: " + f);
-            assertEquals(f.rule().severity(), f.severity());
+            assertEquals(f.rule().severity(), f.severity(), "a finding has its rule's severity in the catalogue: " + f);
         }
     }
 

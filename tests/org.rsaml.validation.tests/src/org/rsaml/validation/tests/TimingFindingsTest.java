@@ -39,7 +39,8 @@ class TimingFindingsTest {
         expected.sort(null);
         LoadedModel model = ModelLoader.load(file, name);
         assertEquals(expected, RsamlModelValidator.validate(model).stream()
-                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName()).sorted().collect(Collectors.toList()));
+                .map(f -> f.ruleId() + " " + f.severity().label() + " " + f.qualifiedName()).sorted().collect(Collectors.toList()),
+                name + " gives the findings its expect comments state");
 
         List<String> stock = new ArrayList<>();
         collect(Diagnostician.INSTANCE.validate(model.architecture()), stock);
