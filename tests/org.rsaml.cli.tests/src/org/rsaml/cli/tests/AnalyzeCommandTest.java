@@ -25,6 +25,8 @@ import org.apache.maven.plugins.surefire.report.ReportTestSuite;
 import org.apache.maven.plugins.surefire.report.TestSuiteXmlParser;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.validation.Rule;
+import org.rsaml.validation.Rules;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
@@ -53,16 +55,18 @@ class AnalyzeCommandTest {
         assertEquals(1, r.code(), "a requirement of the model names a path that does not exist: " + r);
         JsonArray latencies = JsonParser.parseString(r.out()).getAsJsonArray().get(0).getAsJsonObject().getAsJsonArray("latencies");
         JsonObject all = latencies.get(0).getAsJsonObject();
-        assertEquals("scanToWheels", all.get("requirement").getAsString());
+        assertEquals("scanToWheels", all.get("requirement").getAsString(), "the first latency is the model's first requirement");
         JsonArray every = all.getAsJsonArray("everyPath");
         assertEquals(3, every.size(), all.toString());
         assertEquals(1_227_000_000L, every.get(0).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
         assertEquals(33_000_000L, every.get(2).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
         assertEquals("deliberative/monitor.halt",
-                every.get(2).getAsJsonObject().getAsJsonArray("stages").get(1).getAsJsonObject().get("stage").getAsString());
+                every.get(2).getAsJsonObject().getAsJsonArray("stages").get(1).getAsJsonObject().get("stage").getAsString(),
+                "the shortest path passes the monitor's halt stage: " + all);
         JsonObject safety = latencies.get(2).getAsJsonObject();
-        assertEquals("safetyChain", safety.get("requirement").getAsString());
-        assertEquals("[\"deliberative/monitor\",\"inhibitor deliberative/monitor.halt\"]", safety.getAsJsonArray("via").toString());
+        assertEquals("safetyChain", safety.get("requirement").getAsString(), "the third latency is the safety chain's requirement");
+        assertEquals("[\"deliberative/monitor\",\"inhibitor deliberative/monitor.halt\"]", safety.getAsJsonArray("via").toString(),
+                "the JSON lists the elements the requirement's path is named by");
         assertEquals(33_000_000L, safety.get("reactionTimeNs").getAsLong(), safety.toString());
     }
 
@@ -201,11 +205,12 @@ class AnalyzeCommandTest {
         assertEquals(1, json.code(), json.toString());
         JsonArray files = JsonParser.parseString(json.out()).getAsJsonArray();
         JsonObject core1 = files.get(0).getAsJsonObject().getAsJsonArray("processors").get(1).getAsJsonObject();
-        assertEquals("misses", core1.get("verdict").getAsString());
+        assertEquals("misses", core1.get("verdict").getAsString(), "the overloaded core's verdict: " + core1);
         JsonObject plan = core1.getAsJsonArray("tasks").get(1).getAsJsonObject();
-        assertEquals("navigation/pathPlanner.plan", plan.get("task").getAsString());
-        assertEquals("misses", plan.get("verdict").getAsString());
-        assertTrue(plan.getAsJsonObject("witness").getAsJsonObject("preemptions").get("navigation/obstacleDetector.detect").getAsLong() > 0);
+        assertEquals("navigation/pathPlanner.plan", plan.get("task").getAsString(), "the second task of core1: " + core1);
+        assertEquals("misses", plan.get("verdict").getAsString(), "the path planner misses its deadline: " + plan);
+        assertTrue(plan.getAsJsonObject("witness").getAsJsonObject("preemptions").get("navigation/obstacleDetector.detect").getAsLong() > 0,
+                "the witness shows the obstacle detector preempting the planner: " + plan);
     }
 
     @Test
@@ -217,17 +222,18 @@ class AnalyzeCommandTest {
         List<String> rules = new ArrayList<>();
         run.getAsJsonObject("tool").getAsJsonObject("driver").getAsJsonArray("rules")
                 .forEach(rule -> rules.add(rule.getAsJsonObject().get("id").getAsString()));
-        assertEquals(List.of("RSA-22", "RSA-23", "RSA-24", "RSA-25"), rules);
+        assertEquals(Rules.timing().stream().map(Rule::id).toList(), rules, "the SARIF driver lists the catalogue's timing rules");
         JsonArray results = run.getAsJsonArray("results");
         assertEquals(1, results.size(), r.out());
         JsonObject result = results.get(0).getAsJsonObject();
-        assertEquals("RSA-23", result.get("ruleId").getAsString());
-        assertEquals("error", result.get("level").getAsString());
+        assertEquals("RSA-23", result.get("ruleId").getAsString(), "the missed latency requirement's rule: " + result);
+        assertEquals("error", result.get("level").getAsString(), "a missed requirement is an error: " + result);
         assertTrue(result.getAsJsonObject("message").get("text").getAsString()
                 .startsWith("Latency requirement 'scanToWheels' can be exceeded: the worst-case reaction time can reach 57 ms"), r.out());
         JsonObject location = result.getAsJsonArray("locations").get(0).getAsJsonObject().getAsJsonObject("physicalLocation");
-        assertEquals("examples/mobile-base-latency-missed.rsaml", location.getAsJsonObject("artifactLocation").get("uri").getAsString());
-        assertEquals(40, location.getAsJsonObject("region").get("startLine").getAsInt());
+        assertEquals("examples/mobile-base-latency-missed.rsaml", location.getAsJsonObject("artifactLocation").get("uri").getAsString(),
+                "the finding names the file of the missed requirement");
+        assertEquals(40, location.getAsJsonObject("region").get("startLine").getAsInt(), "the finding is at the requirement's line");
     }
 
     @Test
@@ -238,12 +244,12 @@ class AnalyzeCommandTest {
                 .parse(new InputStreamReader(new ByteArrayInputStream(r.out().getBytes(StandardCharsets.UTF_8)), StandardCharsets.UTF_8));
         assertEquals(2, suites.size(), r.out());
         for (ReportTestSuite suite : suites) {
-            assertEquals(4, suite.getNumberOfTests(), suite.getFullClassName());
+            assertEquals(Rules.timing().size(), suite.getNumberOfTests(), "one test per timing rule: " + suite.getFullClassName());
         }
         ReportTestSuite missed = suites.stream().filter(s -> s.getNumberOfFailures() > 0).findFirst().orElseThrow(() -> new AssertionError(r.out()));
-        assertEquals(1, missed.getNumberOfFailures());
+        assertEquals(1, missed.getNumberOfFailures(), "one failed test for the one missed requirement: " + r.out());
         ReportTestCase failed = missed.getTestCases().stream().filter(ReportTestCase::hasFailure).findFirst().orElseThrow();
-        assertEquals("RSA-23", failed.getFailureType());
+        assertEquals("RSA-23", failed.getFailureType(), "the failure is typed by the latency rule: " + r.out());
         assertTrue(failed.getName().startsWith("RSA-23 latency-within-requirement (mobileBaseSlowDetector/scanToWheels)"), failed.getName());
     }
 
@@ -291,8 +297,8 @@ class AnalyzeCommandTest {
             assertTrue(!r.out().contains("MISSES"), format + ": " + r.out());
             outs.put(format, r.out().strip());
         }
-        assertEquals("", outs.get("text"));
-        assertEquals("[]", outs.get("json"));
+        assertEquals("", outs.get("text"), "text gives no verdict for a model it cannot analyse");
+        assertEquals("[]", outs.get("json"), "JSON gives no verdict for a model it cannot analyse");
         assertTrue(outs.get("junit").contains("failures=\"0\" errors=\"1\""), outs.get("junit"));
         assertTrue(outs.get("sarif").contains("the timing cannot be analysed: RSA-10"), outs.get("sarif"));
         Cli.Result text = Cli.runIn(tmp, "analyze", "negative.rsaml");

@@ -114,7 +114,7 @@ class RsamlBuilderTest {
             String fragment = (String) marker.getAttribute(RsamlMarkers.URI_FRAGMENT);
             assertTrue(fragment != null && !fragment.isEmpty(), "no uriFragment on " + marker.getAttributes());
             assertEquals("platform:/resource/" + project.getName() + "/models/exp2-defects.rsaml#" + fragment,
-                    marker.getAttribute(RsamlMarkers.URI));
+                    marker.getAttribute(RsamlMarkers.URI), "the marker opens the model file in the workspace at its element");
             EObject element = model.resource().getEObject(fragment);
             assertEquals(marker.getAttribute(RsamlMarkers.QUALIFIED_NAME), RsamlLabels.qualifiedName(element), fragment);
         }
@@ -125,7 +125,7 @@ class RsamlBuilderTest {
         String fixed = Arrays.stream(text.split("\n", -1))
                 .map(l -> l.contains("name=\"resourceChecker\"") ? l.replace("execDuration=\"2.5\"", "execDuration=\"1.8\"") : l)
                 .collect(Collectors.joining("\n"));
-        assertNotEquals(text, fixed);
+        assertNotEquals(text, fixed, "the test found resourceChecker's execDuration to fix");
         file.setContents(new ByteArrayInputStream(fixed.getBytes(StandardCharsets.UTF_8)), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
 
@@ -142,13 +142,13 @@ class RsamlBuilderTest {
         IFile file = copy(TestRepository.resource("org.rsaml.ide.tests", "models/malformed-unclosed-layer.rsaml"), "broken.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
-        assertEquals(List.of("RSA-00 line 7 error"), summaries(file));
+        assertEquals(List.of("RSA-00 line 7 error"), summaries(file), "one error marker at the line of the unclosed layer");
         String message = (String) markers(file).get(0).getAttribute(IMarker.MESSAGE);
         assertTrue(message.startsWith("RSA-00: malformed XML: ") && message.contains("layers"), message);
 
         file.setContents(Files.newInputStream(TestRepository.example("exp1-hybrid.rsaml")), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
-        assertEquals(List.of(), summaries(file));
+        assertEquals(List.of(), summaries(file), "the repaired file's marker is gone");
     }
 
     @Test
@@ -166,8 +166,9 @@ class RsamlBuilderTest {
                 expected.add("RSA-00 line " + (i + 1) + " error");
             }
         }
-        assertEquals(12, expected.size());
-        assertEquals(expected, summaries(file).stream().sorted(Comparator.comparingInt(s -> Integer.parseInt(s.split(" ")[2]))).toList());
+        assertEquals(12, expected.size(), "many-errors.rsaml declares twelve faulty modules");
+        assertEquals(expected, summaries(file).stream().sorted(Comparator.comparingInt(s -> Integer.parseInt(s.split(" ")[2]))).toList(),
+                "one error marker on each line that declares a faulty module");
     }
 
     /**
@@ -181,7 +182,7 @@ class RsamlBuilderTest {
         IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
         List<String> built = described(file);
-        assertEquals(5, built.size(), built::toString);
+        assertEquals(EXPERIMENT_TWO.size(), built.size(), () -> "one marker per finding the model states: " + built);
 
         // What EMF's marker helper does for the editor's Validate, with the editor's marker type.
         LoadedModel model = ModelLoader.load(file.getLocation().toPath(), "exp2");
@@ -192,8 +193,8 @@ class RsamlBuilderTest {
         assertEquals(built, described(file), "Validate must mark what the builder marks, on the same lines");
 
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(built, described(file));
-        assertEquals(5, markers(project).size());
+        assertEquals(built, described(file), "a build after Validate marks what Validate marked");
+        assertEquals(EXPERIMENT_TWO.size(), markers(project).size(), "each finding is listed once in the Problems view");
     }
 
     /**
@@ -235,25 +236,25 @@ class RsamlBuilderTest {
     void creatingOrOpeningAModelTurnsValidationOnUnlessTurnedOff() throws Exception {
         IFile text = copy(TestRepository.example("exp2-defects.rsaml"), "notes.txt");
         assertFalse(RsamlProjects.enableFor(text, null), "a file that is not a model changes nothing");
-        assertFalse(RsamlProjects.hasNature(project));
+        assertFalse(RsamlProjects.hasNature(project), "a text file does not turn validation on");
 
         IFile model = copy(TestRepository.example("exp2-defects.rsaml"), "exp2.rsaml");
         assertTrue(RsamlProjects.enableFor(model, null), "the first model turns validation on");
-        assertTrue(RsamlProjects.hasNature(project));
-        assertEquals(List.of(RsamlProjects.BUILDER_ID), builders());
+        assertTrue(RsamlProjects.hasNature(project), "the project has RsaML validation on");
+        assertEquals(List.of(RsamlProjects.BUILDER_ID), builders(), "the project builds with RsaML's builder alone");
         assertFalse(RsamlProjects.enableFor(model, null), "a second time changes nothing");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(EXPERIMENT_TWO, summaries(model));
+        assertEquals(EXPERIMENT_TWO, summaries(model), "the build marks the findings the model states");
 
         RsamlProjects.removeNature(project, null);
-        assertTrue(RsamlProjects.isOptedOut(project));
+        assertTrue(RsamlProjects.isOptedOut(project), "turning validation off is remembered");
         assertFalse(RsamlProjects.enableFor(model, null), "opening a model must not undo the user's choice");
-        assertFalse(RsamlProjects.hasNature(project));
-        assertEquals(List.of(), summaries(project));
+        assertFalse(RsamlProjects.hasNature(project), "validation stays off");
+        assertEquals(List.of(), summaries(project), "turning validation off removes its markers");
 
         RsamlProjects.addNature(project, null);
         assertFalse(RsamlProjects.isOptedOut(project), "turning it on again forgets the choice");
-        assertTrue(RsamlProjects.hasNature(project));
+        assertTrue(RsamlProjects.hasNature(project), "validation is on again");
     }
 
     /** Rule, severity, line, element, fragment and message of each marker of the resource, sorted. */
@@ -272,19 +273,19 @@ class RsamlBuilderTest {
         IFile renamed = copy(TestRepository.example("exp2-defects.rsaml"), "b.rsaml");
         IFile kept = copy(TestRepository.example("exp2-defects.rsaml"), "c.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(15, markers(project).size());
+        assertEquals(3 * EXPERIMENT_TWO.size(), markers(project).size(), "each of the three copies has its findings marked");
 
         deleted.delete(true, null);
         renamed.move(IPath.fromOSString("b.txt"), true, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
 
-        assertEquals(List.of(), summaries(project.getFile("b.txt")));
-        assertEquals(EXPERIMENT_TWO, summaries(kept));
-        assertEquals(5, markers(project).size());
+        assertEquals(List.of(), summaries(project.getFile("b.txt")), "a model renamed to .txt loses its markers");
+        assertEquals(EXPERIMENT_TWO, summaries(kept), "the untouched model keeps its markers");
+        assertEquals(EXPERIMENT_TWO.size(), markers(project).size(), "the deleted model's markers are gone");
 
         project.getFile("b.txt").move(IPath.fromOSString("d.rsaml"), true, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
-        assertEquals(EXPERIMENT_TWO, summaries(project.getFile("d.rsaml")));
+        assertEquals(EXPERIMENT_TWO, summaries(project.getFile("d.rsaml")), "a file renamed to .rsaml is validated again");
     }
 
     @Test
@@ -294,7 +295,7 @@ class RsamlBuilderTest {
         IFile defective = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
-        assertEquals(List.of(), summaries(clean));
+        assertEquals(List.of(), summaries(clean), "a model without defects gets no marker");
         assertEquals(EXPERIMENT_TWO, summaries(defective), "the builder ran");
     }
 
@@ -311,13 +312,13 @@ class RsamlBuilderTest {
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
         assertEquals(EXPERIMENT_TWO, summaries(model), "the builder ran");
-        assertEquals(List.of(), summaries(xml));
-        assertEquals(List.of(), summaries(text));
-        assertEquals(List.of(), summaries(derived));
+        assertEquals(List.of(), summaries(xml), "a .xml file is not validated as a model");
+        assertEquals(List.of(), summaries(text), "a .txt file is not validated as a model");
+        assertEquals(List.of(), summaries(derived), "a derived copy (build output) is not validated");
 
         derived.setContents(Files.newInputStream(TestRepository.resource("org.rsaml.ide.tests", "models/malformed-unclosed-layer.rsaml")), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
-        assertEquals(List.of(), summaries(derived));
+        assertEquals(List.of(), summaries(derived), "a changed derived copy is still not validated");
     }
 
     @Test
@@ -355,21 +356,21 @@ class RsamlBuilderTest {
     void onlyProjectsWithTheNatureAreValidated() throws Exception {
         IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertFalse(RsamlProjects.hasNature(project));
-        assertEquals(List.of(), summaries(project));
+        assertFalse(RsamlProjects.hasNature(project), "a new project has no RsaML validation");
+        assertEquals(List.of(), summaries(project), "a project without the nature gets no marker");
 
         RsamlProjects.addNature(project, null);
-        assertTrue(RsamlProjects.hasNature(project));
-        assertEquals(List.of(RsamlProjects.BUILDER_ID), builders());
+        assertTrue(RsamlProjects.hasNature(project), "adding the nature turns validation on");
+        assertEquals(List.of(RsamlProjects.BUILDER_ID), builders(), "the nature adds RsaML's builder");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(EXPERIMENT_TWO, summaries(file));
+        assertEquals(EXPERIMENT_TWO, summaries(file), "the build marks the findings the model states");
 
         RsamlProjects.removeNature(project, null);
-        assertFalse(RsamlProjects.hasNature(project));
-        assertEquals(List.of(), builders());
-        assertEquals(List.of(), summaries(project));
+        assertFalse(RsamlProjects.hasNature(project), "removing the nature turns validation off");
+        assertEquals(List.of(), builders(), "removing the nature removes RsaML's builder");
+        assertEquals(List.of(), summaries(project), "removing the nature removes its markers");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(List.of(), summaries(project));
+        assertEquals(List.of(), summaries(project), "a build without the nature marks nothing");
     }
 
     @Test
@@ -377,12 +378,12 @@ class RsamlBuilderTest {
         RsamlProjects.addNature(project, null);
         IFile file = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(EXPERIMENT_TWO, summaries(file));
+        assertEquals(EXPERIMENT_TWO, summaries(file), "the build marks the findings the model states");
 
         project.build(IncrementalProjectBuilder.CLEAN_BUILD, null);
-        assertEquals(List.of(), summaries(file));
+        assertEquals(List.of(), summaries(file), "Clean removes the markers");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
-        assertEquals(EXPERIMENT_TWO, summaries(file));
+        assertEquals(EXPERIMENT_TWO, summaries(file), "a full build after Clean restores the markers");
     }
 
     private IFile copy(Path source, String workspacePath) throws Exception {
