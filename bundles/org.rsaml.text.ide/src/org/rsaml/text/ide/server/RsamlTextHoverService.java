@@ -17,18 +17,18 @@ import org.rsaml.analysis.TaskResult;
 import org.rsaml.analysis.TaskSource;
 import org.rsaml.model.NamedElement;
 import org.rsaml.model.RealTimeElement;
-import org.rsaml.model.RsamlPackage.Literals;
 import org.rsaml.model.resource.LocatingResource;
+import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.text.naming.RsamlTextQualifiedNameProvider;
-import org.rsaml.text.serializer.RsamlTextWriter;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoadException;
 import org.rsaml.validation.RsamlModelValidator;
 
 /**
  * What hovering over an element shows: its kind and full name, its description, and for an element
- * that executes its timing: period, deadline and wcet as written, and, where the timing analysis
+ * that executes its timing facts as the diagrams label them ({@link RsamlLabels#timingFacts}: period T, deadline D,
+ * wcet C, each with its unit), and, where the timing analysis
  * (as {@code rsaml analyze} runs it) covers it, its worst-case response time and slack.
  */
 public class RsamlTextHoverService extends HoverService {
@@ -45,13 +45,7 @@ public class RsamlTextHoverService extends HoverService {
             parts.add(named.getDescription());
         }
         if (element instanceof RealTimeElement e) {
-            String unit = " " + RsamlTimes.unit(e).getLiteral();
-            List<String> times = new ArrayList<>();
-            times.add(e.getExecType().getLiteral() + (e.eIsSet(Literals.REAL_TIME_ELEMENT__TYPE) ? ", " + e.getType().getLiteral() : ""));
-            times.add("period " + RsamlTextWriter.number(e.getPeriod()) + unit);
-            times.add("deadline " + RsamlTextWriter.number(e.getDelay()) + unit);
-            times.add("wcet " + RsamlTextWriter.number(e.getExecDuration()) + unit);
-            parts.add(String.join(" · ", times));
+            parts.add(RsamlLabels.timingFacts(e));
             parts.add(analysed(element));
         }
         return String.join("\n\n", parts);

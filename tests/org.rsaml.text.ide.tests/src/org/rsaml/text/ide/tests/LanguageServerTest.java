@@ -258,7 +258,8 @@ class LanguageServerTest {
                 .get(60, TimeUnit.SECONDS);
         assertNotNull(hover, "a hover over the module");
         String contents = hover.getContents().getRight().getValue();
-        assertTrue(contents.contains("period 50 ms · deadline 50 ms · wcet 5 ms"), "the times as written: " + contents);
+        assertTrue(contents.contains("real-time · periodic · T 50.0 ms · D 50.0 ms · C 5.0 ms"),
+                "the times with their units, as the diagrams label them: " + contents);
         assertTrue(contents.contains("worst-case response time 5 ms, slack 45 ms"), "the analysed timing: " + contents);
     }
 
