@@ -21,14 +21,15 @@ class LocatedProblemsTest {
         List<Located> problems = List.of(new ModelLoadException("models/rover.rsaml", 3, 7, "it is wrong", null),
                 new GenerationException("models/rover.rsaml", 3, 7, "it is wrong", null));
         for (Located p : problems) {
-            assertEquals("models/rover.rsaml", p.file());
-            assertEquals(3, p.line());
-            assertEquals(7, p.column());
+            assertEquals("models/rover.rsaml", p.file(), p.getClass().getSimpleName() + " names the file");
+            assertEquals(3, p.line(), p.getClass().getSimpleName() + " names the line");
+            assertEquals(7, p.column(), p.getClass().getSimpleName() + " names the column");
             assertEquals("models/rover.rsaml:3:7: error: it is wrong", p.toString(), p.getClass().getSimpleName());
         }
         Located unplaced = new GenerationException("out/", "not a directory");
-        assertEquals(0, unplaced.line());
-        assertEquals("out/: error: not a directory", unplaced.toString());
-        assertEquals("models/rover.rsaml: error: empty", new ModelLoadException("models/rover.rsaml", "empty").toString());
+        assertEquals(0, unplaced.line(), "a problem of a whole file has no line");
+        assertEquals("out/: error: not a directory", unplaced.toString(), "a problem of a whole file names the file alone");
+        assertEquals("models/rover.rsaml: error: empty", new ModelLoadException("models/rover.rsaml", "empty").toString(),
+                "a load error of a whole file names the file alone");
     }
 }

@@ -160,7 +160,7 @@ class ReportFormatsTest {
         JsonObject notification = invocation.getAsJsonArray("toolExecutionNotifications").get(0).getAsJsonObject();
         assertTrue(notification.getAsJsonObject("message").get("text").getAsString().startsWith("malformed XML"), "the notification says why the input could not be read");
         assertEquals(6, notification.getAsJsonArray("locations").get(0).getAsJsonObject().getAsJsonObject("physicalLocation")
-                .getAsJsonObject("region").get("startLine").getAsInt());
+                .getAsJsonObject("region").get("startLine").getAsInt(), "the notification points at the malformed line");
     }
 
     /**
@@ -235,7 +235,8 @@ class ReportFormatsTest {
         Cli.Result r = Cli.run("validate", "--format", "sarif", "examples/exp2-defects.rsaml");
         String broken = r.out().replace("\"level\": \"error\"", "\"level\": \"fatal\"");
         assertFalse(sarifProblems(broken).isEmpty(), "an unknown level must violate the schema");
-        assertFalse(sarifProblems(r.out().replace("\"version\": \"2.1.0\"", "\"version\": \"2.0\"")).isEmpty());
+        assertFalse(sarifProblems(r.out().replace("\"version\": \"2.1.0\"", "\"version\": \"2.0\"")).isEmpty(),
+                "another SARIF version must violate the schema");
     }
 
     @Test
@@ -246,7 +247,7 @@ class ReportFormatsTest {
         JsonObject result = JsonParser.parseString(r.out()).getAsJsonObject().getAsJsonArray("runs").get(0).getAsJsonObject()
                 .getAsJsonArray("results").get(0).getAsJsonObject();
         assertEquals("warning", result.get("level").getAsString(), "the result has its finding's severity");
-        assertEquals("RSA-11", result.get("ruleId").getAsString());
+        assertEquals("RSA-11", result.get("ruleId").getAsString(), "the result names the warning's rule");
         assertTrue(r.out().contains(Cli.INPUTS.toUri().toString()), "the base URI is the working directory");
     }
 
@@ -292,8 +293,9 @@ class ReportFormatsTest {
         Path lenient = dir.resolve("lenient.xml");
         Path strict = dir.resolve("strict.xml");
         String model = Cli.INPUTS.resolve("warnings-only.rsaml").toString();
-        assertEquals(0, Cli.run("validate", "--output", "junit=" + lenient, model).code());
-        assertEquals(1, Cli.run("validate", "--fail-on", "warning", "--output", "junit=" + strict, model).code());
+        assertEquals(0, Cli.run("validate", "--output", "junit=" + lenient, model).code(), "warnings alone pass by default");
+        assertEquals(1, Cli.run("validate", "--fail-on", "warning", "--output", "junit=" + strict, model).code(),
+                "warnings fail with --fail-on warning");
         String lenientXml = Files.readString(lenient);
         assertTrue(lenientXml.contains("failures=\"0\""), lenientXml);
         assertTrue(lenientXml.contains("<system-out>") && lenientXml.contains("warning RSA-11"), lenientXml);
@@ -347,7 +349,7 @@ class ReportFormatsTest {
                 expected.add(i + 1);
             }
         }
-        assertEquals(12, expected.size());
+        assertEquals(12, expected.size(), "many-errors.rsaml declares twelve faulty modules");
 
         Cli.Result text = Cli.runIn(Cli.INPUTS, "validate", "--output", "sarif=" + dir.resolve("r.sarif"),
                 "--output", "json=" + dir.resolve("r.json"), "--output", "junit=" + dir.resolve("r.xml"), name);

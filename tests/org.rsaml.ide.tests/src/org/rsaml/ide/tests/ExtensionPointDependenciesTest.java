@@ -35,7 +35,7 @@ class ExtensionPointDependenciesTest {
         for (Path bundle : bundles) {
             problems.addAll(ExtensionPointDependencies.check(bundle, root));
         }
-        assertEquals(List.of(), problems);
+        assertEquals(List.of(), problems, "every bundle requires the bundles whose extension points its plugin.xml uses");
     }
 
     @Test
@@ -48,25 +48,31 @@ class ExtensionPointDependenciesTest {
                 "missing-require/plugin.xml: extension point 'org.eclipse.ui.editors' belongs to bundle"
                         + " 'org.eclipse.ui', which missing-require/META-INF/MANIFEST.MF does not require;"
                         + " add 'org.eclipse.ui' to its Require-Bundle"),
-                ExtensionPointDependencies.check(base.resolve("missing-require"), base));
+                ExtensionPointDependencies.check(base.resolve("missing-require"), base),
+                "each point of a bundle not required is named with the file, the bundle and the fix");
     }
 
     @Test
     void pointsOfRequiredAbsentAndOwnBundlesPass() throws Exception {
         Path base = TestRepository.resource("org.rsaml.ide.tests", "extension-points");
-        assertEquals(List.of(), ExtensionPointDependencies.check(base.resolve("complete"), base));
+        assertEquals(List.of(), ExtensionPointDependencies.check(base.resolve("complete"), base),
+                "points of required, absent and own bundles are no problem");
     }
 
     @Test
     void theRegistryNamesTheDeclaringBundleWhereTheIdPrefixWouldMislead() {
         // Declared by org.eclipse.equinox.registry under the org.eclipse.core.runtime namespace.
         assertEquals("org.eclipse.equinox.registry",
-                ExtensionPointDependencies.declaringBundle("org.eclipse.core.runtime.adapters", "x", Set.of()));
+                ExtensionPointDependencies.declaringBundle("org.eclipse.core.runtime.adapters", "x", Set.of()),
+                "the registry, not the id's prefix, names the bundle that declares the adapters point");
         assertEquals("org.eclipse.core.resources",
-                ExtensionPointDependencies.declaringBundle("org.eclipse.core.resources.markers", "x", Set.of()));
+                ExtensionPointDependencies.declaringBundle("org.eclipse.core.resources.markers", "x", Set.of()),
+                "the registry names the bundle that declares the markers point");
         // Not in the test runtime: the id's prefix.
         assertEquals("org.eclipse.sirius",
-                ExtensionPointDependencies.declaringBundle("org.eclipse.sirius.componentization", "x", Set.of()));
-        assertEquals("x", ExtensionPointDependencies.declaringBundle("templates", "x", Set.of()));
+                ExtensionPointDependencies.declaringBundle("org.eclipse.sirius.componentization", "x", Set.of()),
+                "a point not in the runtime belongs to the bundle its id's prefix names");
+        assertEquals("x", ExtensionPointDependencies.declaringBundle("templates", "x", Set.of()),
+                "a point without a prefix is the bundle's own");
     }
 }
