@@ -43,7 +43,7 @@ class ConvertCommandTest {
 
     @Test
     void aFolderOfTextualModelsIsValidatedAndConvertedBack() throws Exception {
-        assertEquals(0, Cli.run("convert", "examples/exp1-hybrid.rsaml", temp.resolve("models/exp1.rsa").toString()).code());
+        assertEquals(0, Cli.run("convert", "examples/exp1-hybrid.rsaml", temp.resolve("models/exp1.rsa").toString()).code(), "convert writes the textual model");
         Cli.Result folder = Cli.runIn(temp, "validate", "models");
         assertEquals(0, folder.code(), folder.toString());
         assertTrue(folder.out().contains("models/exp1.rsa: no findings"), "the .rsa file is found in the folder:\n" + folder);

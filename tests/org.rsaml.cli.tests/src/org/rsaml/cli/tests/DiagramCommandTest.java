@@ -17,6 +17,7 @@ import javax.xml.parsers.DocumentBuilderFactory;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.tests.support.ExpectedFinding;
 
 /** {@code rsaml diagram}: every example in both views and formats, the README's image, bad input. */
 class DiagramCommandTest {
@@ -72,7 +73,8 @@ class DiagramCommandTest {
 
         Cli.Result on = Cli.runIn(dir, "diagram", "--timing", "-o", "on", plain);
         assertEquals(0, on.code(), on::toString);
-        assertTrue(Files.readString(dir.resolve("on/exp1-hybrid-architecture.svg")).contains("processor default (preemptive fixed priority): utilisation "));
+        assertTrue(Files.readString(dir.resolve("on/exp1-hybrid-architecture.svg")).contains("processor default (preemptive fixed priority): utilisation "),
+                "the timing overlay shows the processor's utilisation");
 
         Cli.Result off = Cli.runIn(dir, "diagram", "--no-timing", "-o", "off", missed);
         assertEquals(0, off.code(), off::toString);
@@ -85,8 +87,12 @@ class DiagramCommandTest {
         Cli.Result r = Cli.process(dir, Cli.java(List.of(), "diagram", "--format", "html", "-o", "out",
                 Cli.ROOT.resolve("examples/exp2-defects.rsaml").toString()));
         assertEquals(0, r.code(), r::toString);
-        assertEquals(List.of("wrote out/exp2-defects-architecture.html"), r.outLines());
-        assertTrue(Files.readString(dir.resolve("out/exp2-defects-architecture.html")).contains("data-qname=\"hybridMobileRobotWithDefects/control/resourceChecker\""));
+        assertEquals(List.of("wrote out/exp2-defects-architecture.html"), r.outLines(), "the command says which diagram it wrote");
+        String overBudget = ExpectedFinding.of(Cli.ROOT.resolve("examples/exp2-defects.rsaml")).stream()
+                .filter(e -> e.ruleId().equals("RSA-08")).findFirst()
+                .orElseThrow(() -> new AssertionError("exp2 states an RSA-08 finding")).qualifiedName();
+        assertTrue(Files.readString(dir.resolve("out/exp2-defects-architecture.html")).contains("data-qname=\"" + overBudget + "\""),
+                "the diagram shows exp2's module over its layer's budget, by its qualified name");
     }
 
     @Test
@@ -99,7 +105,7 @@ class DiagramCommandTest {
         assertTrue(r.err().startsWith("broken.rsaml:"), r::toString);
         assertTrue(r.err().contains("missing.rsaml: error: no such file or directory"), r::toString);
         assertFalse(r.err().contains("\tat "), "no stack trace");
-        assertEquals(List.of("wrote out/exp1-hybrid-architecture.svg"), r.outLines());
+        assertEquals(List.of("wrote out/exp1-hybrid-architecture.svg"), r.outLines(), "the command says which diagram it wrote");
         try (Stream<Path> files = Files.list(dir.resolve("out"))) {
             assertEquals(List.of("exp1-hybrid-architecture.svg"), files.map(p -> p.getFileName().toString()).toList(),
                     "nothing written for the broken model, no temporary file left");
@@ -121,7 +127,7 @@ class DiagramCommandTest {
         Cli.Result file = Cli.runIn(dir, "diagram", "-o", "afile", model);
         assertEquals(2, file.code(), file::toString);
         assertTrue(file.err().contains("afile is a file; name the directory the diagrams are written to"), file::toString);
-        assertEquals("mine", Files.readString(dir.resolve("afile")));
+        assertEquals("mine", Files.readString(dir.resolve("afile")), "the file in the way of the output directory is left as it was");
 
         Files.createDirectories(dir.resolve("a"));
         Files.createDirectories(dir.resolve("b"));

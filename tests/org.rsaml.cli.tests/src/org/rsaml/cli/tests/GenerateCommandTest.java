@@ -34,7 +34,7 @@ class GenerateCommandTest {
         Cli.Result again = Cli.runIn(dir, "generate", "-t", "cpp", "-o", "out/exp3", model);
         assertEquals(0, again.code(), again::toString);
         assertTrue(again.out().matches("(?s).*generated cpp into out/exp3: 0 written, \\d+ unchanged, [1-9]\\d* of yours kept\n"), again::toString);
-        assertTrue(Files.readString(userFile).endsWith("// the architect's own code\n"));
+        assertTrue(Files.readString(userFile).endsWith("// the architect's own code\n"), "the architect's own code is kept through a second generation");
     }
 
     @Test
@@ -75,7 +75,7 @@ class GenerateCommandTest {
 
         Cli.Result forced = Cli.runIn(Cli.ROOT, "generate", "--force", "-t", "cpp", "-o", dir.resolve("exp2").toString(), "examples/exp2-defects.rsaml");
         assertEquals(0, forced.code(), forced::toString);
-        assertTrue(Files.isRegularFile(dir.resolve("exp2/CMakeLists.txt")));
+        assertTrue(Files.isRegularFile(dir.resolve("exp2/CMakeLists.txt")), "forcing generation over a model with findings writes the project");
     }
 
     @Test
@@ -92,7 +92,7 @@ class GenerateCommandTest {
         Cli.Result blocked = Cli.runIn(dir, "generate", "-t", "cpp", "-o", "taken", Cli.ROOT.resolve("examples/exp1-hybrid.rsaml").toString());
         assertEquals(2, blocked.code(), blocked::toString);
         assertTrue(blocked.err().contains("taken"), blocked::toString);
-        assertEquals("a file where the project should go", Files.readString(dir.resolve("taken")));
+        assertEquals("a file where the project should go", Files.readString(dir.resolve("taken")), "the file in the way of the project is left as it was");
 
         Cli.Result target = Cli.runIn(dir, "generate", "-t", "java", "-o", "x", Cli.ROOT.resolve("examples/exp1-hybrid.rsaml").toString());
         assertEquals(2, target.code(), target::toString);

@@ -27,17 +27,17 @@ class ProcessTest {
         List<String> lines = r.outLines();
         assertEquals(ValidateCommandTest.EXAMPLES_FINDINGS, ValidateCommandTest.findingLines(lines), r::toString);
         assertEquals(ValidateCommandTest.EXAMPLES_CLEAN, ValidateCommandTest.cleanLines(lines), r::toString);
-        assertEquals("", r.err());
+        assertEquals("", r.err(), "a clean run writes nothing to standard error");
     }
 
     @Test
     void runnableJarExitCodes() throws Exception {
-        assertEquals(0, Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/exp1-hybrid.rsaml")).code());
+        assertEquals(0, Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/exp1-hybrid.rsaml")).code(), "the runnable jar exits 0 on a clean model");
         Cli.Result usage = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "--format"));
         assertEquals(2, usage.code(), usage::toString);
         Cli.Result missing = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "nowhere.rsaml"));
         assertEquals(2, missing.code(), missing::toString);
-        assertEquals("nowhere.rsaml: error: no such file or directory", missing.outLines().get(0));
+        assertEquals("nowhere.rsaml: error: no such file or directory", missing.outLines().get(0), "the jar's error names the missing file");
         BadInputTest.assertNoStackTrace(missing);
     }
 

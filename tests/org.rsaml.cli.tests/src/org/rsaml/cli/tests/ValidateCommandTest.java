@@ -117,7 +117,7 @@ class ValidateCommandTest {
         assertEquals(EXAMPLES_FINDINGS, findingLines(lines), r::toString);
         assertEquals(EXAMPLES_CLEAN, cleanLines(lines), r::toString);
         assertEquals(examplesSummary(), lines.get(lines.size() - 1), "the summary counts the examples and the findings they state");
-        assertEquals("", r.err());
+        assertEquals("", r.err(), "a clean run writes nothing to standard error");
     }
 
     /** A file checked without findings is named, so that it cannot be taken for one that was never checked. */
@@ -149,7 +149,7 @@ class ValidateCommandTest {
         Cli.Result r = Cli.run("validate", "examples/exp1-hybrid.rsaml", "examples/exp3-task-interpreter.rsaml");
         assertEquals(0, r.code(), r::toString);
         assertEquals(List.of("examples/exp1-hybrid.rsaml: no findings", "examples/exp3-task-interpreter.rsaml: no findings",
-                "2 files checked: 0 errors, 0 warnings"), r.outLines());
+                "2 files checked: 0 errors, 0 warnings"), r.outLines(), "each clean model says it has no findings, then the summary");
     }
 
     @Test
@@ -178,7 +178,7 @@ class ValidateCommandTest {
         assertEquals(1, errors.code(), errors::toString);
         List<String> expected = new java.util.ArrayList<>(EXP2_FINDINGS);
         expected.add(exp2Summary());
-        assertEquals(expected, errors.outLines());
+        assertEquals(expected, errors.outLines(), "one line per stated finding of exp2, then the summary");
     }
 
     @Test
@@ -211,7 +211,8 @@ class ValidateCommandTest {
 
         Cli.Result spaced = Cli.runIn(Cli.INPUTS, "validate", "dir with space");
         assertEquals(0, spaced.code(), spaced::toString);
-        assertEquals(List.of("dir with space/clean model.rsaml: no findings", "1 file checked: 0 errors, 0 warnings"), spaced.outLines());
+        assertEquals(List.of("dir with space/clean model.rsaml: no findings", "1 file checked: 0 errors, 0 warnings"), spaced.outLines(),
+                "a folder and a file with spaces are named as given");
     }
 
     @Test
