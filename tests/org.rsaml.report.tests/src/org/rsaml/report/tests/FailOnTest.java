@@ -40,7 +40,8 @@ class FailOnTest {
 
     @Test
     void anUnknownFindingLevelIsRefusedNamingTheValueAndTheLevels() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> FindingFailOn.parse("warnings"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> FindingFailOn.parse("warnings"),
+                "an unknown finding level is refused");
         assertEquals("'warnings' is not a level; it is one of error, warning, never", e.getMessage(),
                 "the message says what was written and what can be");
         assertThrows(IllegalArgumentException.class, () -> FindingFailOn.parse(null), "no level is not a level");
@@ -75,7 +76,8 @@ class FailOnTest {
             assertFalse(never.fails(verdict), "never fails no verdict, not " + verdict);
         }
         assertNull(never.findingThreshold(), "never: no finding fails the reports");
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TimingFailOn.parse("misses"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TimingFailOn.parse("misses"),
+                "an unknown timing level is refused");
         assertEquals("'misses' is not a level; it is one of miss, not-analysed, never", e.getMessage(),
                 "a level that does not exist is refused, naming the levels there are");
         assertEquals("not-analysed", TimingFailOn.NOT_ANALYSED.toString(), "a level prints as the user writes it");
@@ -125,10 +127,12 @@ class FailOnTest {
     @Test
     void everyChoiceAUserWritesIsReadAndRefusedAlike() {
         assertEquals(ReportFormat.SARIF, ReportFormat.parse(" SARIF "), "a report format, any case and blanks");
-        IllegalArgumentException format = assertThrows(IllegalArgumentException.class, () -> ReportFormat.parse(null));
+        IllegalArgumentException format = assertThrows(IllegalArgumentException.class, () -> ReportFormat.parse(null),
+                "no format is refused");
         assertEquals("'null' is not a report format; it is one of text, json, sarif, junit", format.getMessage(),
                 "no format is refused as levels are, naming the formats there are");
-        IllegalArgumentException view = assertThrows(IllegalArgumentException.class, () -> DiagramView.parse("deployment"));
+        IllegalArgumentException view = assertThrows(IllegalArgumentException.class, () -> DiagramView.parse("deployment"),
+                "an unknown view is refused");
         assertEquals("'deployment' is not a view; it is one of architecture, mission", view.getMessage(),
                 "a diagram's view is refused in the same words");
         assertEquals(TimingMode.OFF, TimingMode.parse("Off"), "a timing mode, any case");

@@ -60,7 +60,8 @@ class ReportFilesTest {
     @Test
     void aDirectoryWhereTheReportGoesIsRefusedWithTheReason(@TempDir Path dir) throws Exception {
         Path taken = Files.createDirectories(dir.resolve("rsaml.json"));
-        IOException e = assertThrows(IOException.class, () -> ReportFiles.write(taken, ReportFormat.JSON, REPORT, OPTIONS));
+        IOException e = assertThrows(IOException.class, () -> ReportFiles.write(taken, ReportFormat.JSON, REPORT, OPTIONS),
+                "a report is not written over a directory");
         assertEquals("it is a directory", ReportFiles.reason(e, taken), "the reason a user reads");
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(List.of(taken), files.toList(), "nothing is written beside it");

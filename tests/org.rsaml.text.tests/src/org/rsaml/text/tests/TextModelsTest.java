@@ -145,7 +145,8 @@ class TextModelsTest {
     @Test
     void aSyntaxErrorIsLocated() {
         ModelLoadException e = assertThrows(ModelLoadException.class,
-                () -> Models.read(temp, "bad.rsa", "architecture a {\n  layer l {\n    level high\n  }\n}\n"));
+                () -> Models.read(temp, "bad.rsa", "architecture a {\n  layer l {\n    level high\n  }\n}\n"),
+                "a syntax error is a load error");
         assertEquals("bad.rsa", e.file(), "the file is named");
         assertEquals(3, e.line(), "the line of 'level high': " + e.getMessage());
         assertTrue(e.column() > 0, "a column: " + e.getMessage());
@@ -154,7 +155,8 @@ class TextModelsTest {
     @Test
     void anUnresolvedReferenceIsLocatedAndNamed() {
         ModelLoadException e = assertThrows(ModelLoadException.class,
-                () -> Models.read(temp, "ref.rsa", ROBOT.replace("connect lidarDriver.scan", "connect lidarDriver.scna")));
+                () -> Models.read(temp, "ref.rsa", ROBOT.replace("connect lidarDriver.scan", "connect lidarDriver.scna")),
+                "an unresolved reference is a load error");
         assertEquals(23, e.line(), "the line of the connection: " + e.getMessage());
         assertTrue(e.getMessage().contains("lidarDriver.scna"), "the name that does not resolve is quoted: " + e.getMessage());
     }
@@ -163,7 +165,8 @@ class TextModelsTest {
     void deepNestingIsRefusedBeforeParsing() {
         StringBuilder text = new StringBuilder("architecture a { mission m {\n");
         text.append("goal g {\n".repeat(1200)).append("}\n".repeat(1200)).append("} }\n");
-        ModelLoadException e = assertThrows(ModelLoadException.class, () -> Models.read(temp, "deep.rsa", text.toString()));
+        ModelLoadException e = assertThrows(ModelLoadException.class, () -> Models.read(temp, "deep.rsa", text.toString()),
+                "too deep a nesting is a load error");
         assertTrue(e.getMessage().contains("nested more than 1000 levels"), "says why: " + e.getMessage());
         assertEquals(1000, e.line(), "points at the brace one level too deep: " + e.getMessage());
     }
@@ -171,8 +174,9 @@ class TextModelsTest {
     @Test
     void aNonNumberIsAnErrorNamingIt() {
         ModelLoadException e = assertThrows(ModelLoadException.class,
-                () -> Models.read(temp, "num.rsa", "architecture a {\n  declaredLayers 2.5\n}\n"));
-        assertEquals(2, e.line(), e.getMessage());
-        assertTrue(e.getMessage().contains("'2.5' is not a whole number"), e.getMessage());
+                () -> Models.read(temp, "num.rsa", "architecture a {\n  declaredLayers 2.5\n}\n"),
+                "a non-number is a load error");
+        assertEquals(2, e.line(), "the line of the non-number: " + e.getMessage());
+        assertTrue(e.getMessage().contains("'2.5' is not a whole number"), "names the value and what it should be: " + e.getMessage());
     }
 }
