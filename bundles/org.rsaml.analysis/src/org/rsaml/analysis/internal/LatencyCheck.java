@@ -105,12 +105,13 @@ final class LatencyCheck {
         boolean exact = true;
         String mayBeUnbounded = null;
         if (cut) {
-            // too many paths to follow each: the worst bound by dynamic programming, exact where no cycle of stages with a bound
+            // too many paths to follow each: the worst bound by dynamic programming, exact only where the modules form no
+            // cycle (else its walks include some through a module twice, which are no path): otherwise what the search proved
             roots.forEach(Runnable::run);
             exact = !dp.cyclic();
             if (exact) {
-                worstReaction = dp.worstReaction();
-                worstAge = dp.worstAge();
+                worstReaction = dp.worst(false);
+                worstAge = dp.worst(true);
                 PathBound worst = dp.worst();
                 worstPath = worst == null ? List.of() : worst.hops();
                 if (worst != null && !listed.contains(worst)) {
@@ -126,7 +127,7 @@ final class LatencyCheck {
         String explanation;
         long bound = age ? worstAge : worstReaction;
         String what = age ? "maximum data age" : "worst-case reaction time";
-        String stopped = "following each " + pathWord + " from " + from + " to " + to + " stopped after " + PathSearch.MAX_STEPS
+        String stopped = "following each " + pathWord + " from " + from + " to " + to + " stopped after " + search.maxSteps()
                 + " steps (" + search.paths() + " reached the target)";
         if (bound > maxNs) {
             verdict = Verdict.MISSES;
@@ -136,8 +137,8 @@ final class LatencyCheck {
             explanation = "not analysed: " + search.unbounded();
         } else if (!exact) {
             verdict = Verdict.NOT_ANALYSED;
-            explanation = "not analysed: " + stopped + ", and the paths pass a cycle of modules, where the longest is only found"
-                    + " by following each: break the cycle, or name the path with via";
+            explanation = "not analysed: " + stopped + ", and the paths pass a cycle of modules (connections or inhibitors leading back"
+                    + " to a module passed), where the longest is only found by following each: break the cycle, or name the path with via";
         } else if (mayBeUnbounded != null) {
             verdict = Verdict.NOT_ANALYSED;
             explanation = "not analysed: " + mayBeUnbounded + ", and paths from " + from + " to " + to + " may pass it; " + stopped;

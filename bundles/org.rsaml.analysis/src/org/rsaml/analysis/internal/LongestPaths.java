@@ -7,8 +7,10 @@ package org.rsaml.analysis.internal;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.Hop;
@@ -21,9 +23,12 @@ import org.rsaml.analysis.plan.PlannedPort;
  * The worst bound of a latency requirement's paths without following each path: a longest path by
  * dynamic programming over the states "data is in module m, having passed the first k {@code via}
  * elements" (each state once, each step out of it once: linear in the plan times the length of
- * {@code via}). Where these states form no cycle, every walk is a path of {@link PathSearch}, so the
- * worst bound, the number of paths with a bound and whether a path passes a stage without one are
- * exact; where they form a cycle the longest simple path is not found this way ({@link #cyclic()}).
+ * {@code via}). One module can be several states (entered through its stage, or past an inhibitor onto
+ * one of its ports; a sensor's reader at the start and again later), so a walk over the states can pass
+ * a module twice, which a path of {@link PathSearch} never does. Only where the modules themselves, over
+ * every state reached, form no cycle is every walk a path, and the worst bound, the number of paths with
+ * a bound and whether a path passes a stage without one exact; elsewhere ({@link #cyclic()}) the walks
+ * include some that are no path, and the results below are no verdict.
  */
 final class LongestPaths {
 
@@ -74,50 +79,57 @@ final class LongestPaths {
         roots.add(solve(new Key(m, only, advance(0, m.module()), null, stages.get(m).periodNs())));
     }
 
-    /** Whether some state can come back to itself: then the results below are not those of simple paths. */
+    /**
+     * Whether a walk from a root can come back to a module it passed, through the same state or another
+     * of that module: then the results below are not those of the paths.
+     */
     boolean cyclic() {
+        if (cyclic) {
+            return true;
+        }
+        Reach reach = reach();
+        Map<PlannedModule, Set<PlannedModule>> after = new HashMap<>();
+        Map<PlannedModule, Integer> before = new HashMap<>();
+        for (Key k : reach.order()) {
+            before.putIfAbsent(k.m(), 0);
+        }
+        reach.callers().forEach((c, callers) -> {
+            for (Key from : callers) {
+                if (after.computeIfAbsent(from.m(), x -> new HashSet<>()).add(c.m())) {
+                    before.merge(c.m(), 1, Integer::sum);
+                }
+            }
+        });
+        // modules with no module before them taken away one by one: what remains holds a cycle
+        ArrayDeque<PlannedModule> free = new ArrayDeque<>();
+        before.forEach((m, n) -> {
+            if (n == 0) {
+                free.add(m);
+            }
+        });
+        int taken = 0;
+        while (!free.isEmpty()) {
+            PlannedModule m = free.pop();
+            taken++;
+            for (PlannedModule c : after.getOrDefault(m, Set.of())) {
+                if (before.merge(c, -1, Integer::sum) == 0) {
+                    free.add(c);
+                }
+            }
+        }
+        cyclic = taken < before.size();
         return cyclic;
     }
 
-    long worstReaction() {
-        long w = -1;
-        for (Node r : roots) {
-            if (r.reaction >= 0) {
-                w = Math.max(w, Math.addExact(own(r.key), r.reaction));
-            }
-        }
-        return w;
+    /** The states reached from the roots in breadth-first order, the states each is stepped to from, and those a path can end at. */
+    private record Reach(List<Key> order, Map<Key, List<Key>> callers, List<Key> finishing) {
     }
 
-    long worstAge() {
-        long w = -1;
-        for (Node r : roots) {
-            if (r.dataAge >= 0) {
-                w = Math.max(w, Math.addExact(own(r.key), r.dataAge));
-            }
-        }
-        return w;
-    }
-
-    /** The paths with a bound (saturating). */
-    long bounded() {
-        long c = 0;
-        for (Node r : roots) {
-            c = sum(c, r.count);
-        }
-        return c;
-    }
-
-    /**
-     * A stage without a bound on a walk from a root to the target (the first such stage in breadth-first order), or
-     * null when none: each state and step once. A walk may pass a module twice, so a path through that stage is
-     * possible, not certain.
-     */
-    String mayPassUnbounded() {
+    private Reach reach() {
         Map<Key, List<Key>> callers = new HashMap<>();
         List<Key> order = new ArrayList<>();
-        java.util.Set<Key> seen = new java.util.HashSet<>();
-        ArrayDeque<Key> finishing = new ArrayDeque<>();
+        List<Key> finishing = new ArrayList<>();
+        Set<Key> seen = new HashSet<>();
         for (Node r : roots) {
             if (seen.add(r.key)) {
                 order.add(r.key);
@@ -140,7 +152,41 @@ final class LongestPaths {
                 finishing.add(k);
             }
         }
-        java.util.Set<Key> finishes = new java.util.HashSet<>(finishing);
+        return new Reach(order, callers, finishing);
+    }
+
+    /** The worst reaction time (or, {@code dataAge}, data age) over the paths with a bound, -1 when none. */
+    long worst(boolean dataAge) {
+        long w = -1;
+        for (Node r : roots) {
+            long v = dataAge ? r.dataAge : r.reaction;
+            if (v >= 0) {
+                w = Math.max(w, Math.addExact(own(r.key), v));
+            }
+        }
+        return w;
+    }
+
+    /** The paths with a bound (saturating). */
+    long bounded() {
+        long c = 0;
+        for (Node r : roots) {
+            c = sum(c, r.count);
+        }
+        return c;
+    }
+
+    /**
+     * A stage without a bound on a walk from a root to the target (the first such stage in breadth-first order), or
+     * null when none: each state and step once. Where the modules form no cycle ({@link #cyclic()}) every walk is a
+     * path, so a path passes that stage.
+     */
+    String mayPassUnbounded() {
+        Reach reach = reach();
+        Map<Key, List<Key>> callers = reach.callers();
+        List<Key> order = reach.order();
+        ArrayDeque<Key> finishing = new ArrayDeque<>(reach.finishing());
+        Set<Key> finishes = new HashSet<>(finishing);
         while (!finishing.isEmpty()) {
             for (Key c : callers.getOrDefault(finishing.pop(), List.of())) {
                 if (finishes.add(c)) {
@@ -158,13 +204,12 @@ final class LongestPaths {
 
     /** The worst path with a bound for the requirement's kind, or null when none. */
     PathBound worst() {
+        long bestValue = worst(age);
         Node best = null;
-        long bestValue = -1;
         for (Node r : roots) {
             long v = age ? r.dataAge : r.reaction;
-            if (v >= 0 && Math.addExact(own(r.key), v) > bestValue) {
+            if (best == null && v >= 0 && Math.addExact(own(r.key), v) == bestValue) {
                 best = r;
-                bestValue = Math.addExact(own(r.key), v);
             }
         }
         if (best == null) {

@@ -34,14 +34,12 @@ import org.rsaml.model.support.RsamlLabels;
  * no recursion), only through the modules from which its target can be reached: each path's bound is
  * the sum of its stages (and of the links it crosses between hosts), recorded when the path reaches the
  * target through the requirement's {@code via} elements; the worst, and the longest paths for the list.
- * The walk is bounded by the steps it takes ({@link #MAX_STEPS}), dead ends included: past them it stops
+ * The walk is bounded by the steps it takes ({@link PathSteps}), dead ends included: past them it stops
  * ({@link #cut()}) and the worst bound is taken from {@link LongestPaths} where that is exact.
  */
 final class PathSearch {
 
-    /** Steps of the walk per requirement before it stops (said so, never a silent pass). */
-    static final int MAX_STEPS = 1_000_000;
-
+    private final int maxSteps = PathSteps.limit();
     private final ExecutionPlan plan;
     private final Map<PlannedModule, Stage> stages;
     private final boolean age;
@@ -99,9 +97,14 @@ final class PathSearch {
         return paths;
     }
 
-    /** Whether the walk stopped after {@link #MAX_STEPS} steps, before following every path. */
+    /** Whether the walk stopped after {@link #maxSteps()} steps, before following every path. */
     boolean cut() {
-        return work > MAX_STEPS;
+        return work > maxSteps;
+    }
+
+    /** The steps the walk takes before it stops. */
+    int maxSteps() {
+        return maxSteps;
     }
 
     /** Whether module m drives the requirement's actuator. */
@@ -221,7 +224,7 @@ final class PathSearch {
     private void search() {
         while (!stack.isEmpty()) {
             Frame f = stack.peek();
-            if (f.next == f.steps.size() || ++work > MAX_STEPS) {
+            if (f.next == f.steps.size() || ++work > maxSteps) {
                 stack.pop();
                 hops.subList(hops.size() - f.hop, hops.size()).clear();
                 pathUnbounded = f.unboundedBefore;
