@@ -61,7 +61,7 @@ class DiagramsTest {
                 Map.entry("Connection", "model.Connection in connections"), Map.entry("Inhibitor", "model.Inhibitor in inhibitors"),
                 Map.entry("Suppressor", "model.Suppressor in suppressors"), Map.entry("Processor", "model.Processor in processors"),
                 Map.entry("Allocation", "sets modules")),
-                creations(diagram("Architecture")));
+                creations(diagram("Architecture")), "the architecture diagram's palette creates each kind of element where it belongs");
         assertEquals("deleteAllocation", get(ref(mapping(diagram("Architecture"), "AllocationEdge"), "deletionDescription"), "name"),
                 "deleting an allocation takes the module off the processor and deletes neither");
         assertEquals("deleteLayer", get(ref(mapping(diagram("Architecture"), "LayerRegion"), "deletionDescription"), "name"),
@@ -73,31 +73,35 @@ class DiagramsTest {
         Map<String, String> tools = creations(diagram("Missions"));
         assertEquals(Map.of("Mission", "model.Mission in missions", "Goal", "model.Goal in goals", "Plan", "model.Plan in plans",
                 "Activity", "model.Activity in activities", "Supervisor", "model.Supervisor in supervisors",
-                "Sub-goal", "sets subGoals", "Achieves", "sets achieves", "Controls", "sets plans"), tools);
+                "Sub-goal", "sets subGoals", "Achieves", "sets achieves", "Controls", "sets plans"), tools,
+                "the missions diagram's palette creates each kind of element where it belongs");
     }
 
     @Test
     void layersAreStackedByLevelAndHoldTheirModules() throws Exception {
         EObject stack = mapping(diagram("Architecture"), "ArchitectureStack");
-        assertEquals("VerticalStack", get(stack, "childrenPresentation").toString());
+        assertEquals("VerticalStack", get(stack, "childrenPresentation").toString(), "layers are stacked one above the other");
         EObject layer = mapping(diagram("Architecture"), "LayerRegion");
-        assertEquals(stack, layer.eContainer());
+        assertEquals(stack, layer.eContainer(), "each layer is a region of the stack");
         // Highest level on top, whatever order the file lists the layers in.
         Architecture architecture = model("exp1-hybrid.rsaml");
         architecture.getLayers().move(0, 2);
-        assertEquals(List.of("functional", "decision", "control"), names(architecture.getLayers()));
-        assertEquals(List.of("decision", "control", "functional"), names(shown(layer, architecture)));
+        assertEquals(List.of("functional", "decision", "control"), names(architecture.getLayers()), "the test reordered the file's layers");
+        assertEquals(List.of("decision", "control", "functional"), names(shown(layer, architecture)),
+                "the diagram shows the highest level on top, whatever the file's order");
 
         EObject module = mapping(diagram("Architecture"), "ModuleContainer");
-        assertEquals(layer, module.eContainer());
+        assertEquals(layer, module.eContainer(), "modules are drawn inside their layer");
         Layer control = architecture.getLayers().stream().filter(l -> l.getName().equals("control")).findFirst().orElseThrow();
-        assertEquals(List.of("requestChecker", "resourceChecker", "robustnessManager"), names(shown(module, control)));
+        assertEquals(List.of("requestChecker", "resourceChecker", "robustnessManager"), names(shown(module, control)),
+                "the control layer shows its own modules");
 
         List<EObject> borders = list(module, "borderedNodeMappings");
         assertEquals(2, borders.size(), "ports sit on the module's border");
         Module checker = control.getModules().get(0);
-        assertEquals(List.of("e0_requestCheck"), names(shown(borders.get(0), checker)));
-        assertEquals(List.of("s0_requestCheck", "s1_requestCheck"), names(shown(borders.get(1), checker)));
+        assertEquals(List.of("e0_requestCheck"), names(shown(borders.get(0), checker)), "the module's entry port on its border");
+        assertEquals(List.of("s0_requestCheck", "s1_requestCheck"), names(shown(borders.get(1), checker)),
+                "the module's output ports on its border");
         assertTrue(checker.getPorts().stream().allMatch(p -> names(shown(borders.get(p instanceof EntryPort ? 0 : 1), checker))
                 .contains(p.getName())), "entry ports on one border mapping, output ports on the other");
     }
@@ -109,7 +113,8 @@ class DiagramsTest {
             EObject style = ref(mapping(diagram("Architecture"), edge), "style");
             looks.add(get(ref(style, "strokeColor"), "name") + " " + get(style, "lineStyle"));
         }
-        assertEquals(List.of("black solid", "red dash", "purple dash_dot"), looks);
+        assertEquals(List.of("black solid", "red dash", "purple dash_dot"), looks,
+                "connections, inhibitors and suppressors are drawn in different colours and line styles");
 
         // Each edge runs from the module that acts to the port it acts on, and says what it does.
         Architecture brooks = model("subsumption-brooks.rsaml");
@@ -123,7 +128,8 @@ class DiagramsTest {
                         + Expressions.evaluate(get(ref(ref(mapping, "style"), "centerLabelStyleDescription"), "labelExpression"), l));
             }
         }
-        assertEquals(expectedSubsumption(brooks), edges);
+        assertEquals(expectedSubsumption(brooks), edges,
+                "each inhibitor and suppressor runs from its module to the port it acts on, labelled with what it does");
     }
 
     @Test
@@ -132,7 +138,7 @@ class DiagramsTest {
         EObject module = mapping(diagram("Architecture"), "ModuleContainer");
         EObject realTime = list(module, "conditionnalStyles").get(0);
         assertNotEquals(get(ref(ref(module, "style"), "backgroundColor"), "name"),
-                get(ref(ref(realTime, "style"), "backgroundColor"), "name"));
+                get(ref(ref(realTime, "style"), "backgroundColor"), "name"), "a real-time module has a background of its own");
         Map<String, String> modules = new TreeMap<>();
         for (Layer layer : architecture.getLayers()) {
             for (Module m : layer.getModules()) {
@@ -153,7 +159,8 @@ class DiagramsTest {
 
         EObject function = mapping(diagram("Architecture"), "FunctionItem");
         EObject periodic = list(function, "conditionnalStyles").get(0);
-        assertNotEquals(get(ref(ref(function, "style"), "labelColor"), "name"), get(ref(ref(periodic, "style"), "labelColor"), "name"));
+        assertNotEquals(get(ref(ref(function, "style"), "labelColor"), "name"), get(ref(ref(periodic, "style"), "labelColor"), "name"),
+                "a periodic function's label has a colour of its own");
         Map<String, String> functions = new TreeMap<>();
         Module m01 = architecture.getLayers().get(2).getModules().get(0);
         for (Object f : (List<?>) shown(function, m01)) {
@@ -212,7 +219,8 @@ class DiagramsTest {
     @Test
     void designBundleRegistersTheSpecificationAndItsServices() throws Exception {
         assertEquals(List.of(RsamlServices.class.getName()),
-                list(viewpoint(), "ownedJavaExtensions").stream().map(e -> get(e, "qualifiedClassName")).toList());
+                list(viewpoint(), "ownedJavaExtensions").stream().map(e -> get(e, "qualifiedClassName")).toList(),
+                "the viewpoint's expressions call RsaML's services class");
         // That Sirius loads the specification through the bundle's registration: SiriusLoadsSpecificationTest.
         String build = Files.readString(Repository.file(Repository.DESIGN + "build.properties"));
         assertTrue(build.contains("description/"), "rsaml.odesign is packaged: " + build);
