@@ -69,7 +69,8 @@ class ServicesTest {
         // An action is listed in its module, after the functions: its function comes first.
         expected.put("hybridMobileRobot/functional/m01/f0_m01/a1_f0_m01", "f0_m01 › a1_f0_m01 — real-time, 0.4 ms every 10.0 ms");
         expected.put("hybridMobileRobot/inspectionMission/inspectionPlan/scanArea", "scanArea — simple");
-        assertEquals(expected, labels(TestRepository.example("exp1-hybrid.rsaml"), expected.keySet().toArray(String[]::new)));
+        assertEquals(expected, labels(TestRepository.example("exp1-hybrid.rsaml"), expected.keySet().toArray(String[]::new)),
+                "each element's diagram label names it and gives its timing");
     }
 
     @Test
@@ -77,7 +78,8 @@ class ServicesTest {
         Map<String, String> expected = new LinkedHashMap<>();
         expected.put("mobileBase/core0", "core0 — fixed priorities, core 0");
         expected.put("mobileBase/core1", "core1 — fixed priorities, core 1");
-        assertEquals(expected, labels(TestRepository.example("mobile-base-latency.rsaml"), expected.keySet().toArray(String[]::new)));
+        assertEquals(expected, labels(TestRepository.example("mobile-base-latency.rsaml"), expected.keySet().toArray(String[]::new)),
+                "a processor's label gives its policy and core");
         Processor edf = RsamlFactory.eINSTANCE.createProcessor();
         edf.setName("cpu");
         edf.setSchedPolicy(SchedulingPolicy.EDF);
@@ -93,7 +95,8 @@ class ServicesTest {
         expected.put("hybridMobileRobot/s0_tempExec -> e0_requestCheck", "alphanumeric");
         expected.put("hybridMobileRobot/s0_m01 -> e0_ressourceCheck", "numeric");
         expected.put("hybridMobileRobot/s1_m01 -> e1_m02", "LaserScan");
-        assertEquals(expected, labels(TestRepository.example("exp1-hybrid.rsaml"), expected.keySet().toArray(String[]::new)));
+        assertEquals(expected, labels(TestRepository.example("exp1-hybrid.rsaml"), expected.keySet().toArray(String[]::new)),
+                "a function's label gives its duration, a connection's its data type");
     }
 
     static Stream<Path> models() throws Exception {
@@ -135,7 +138,7 @@ class ServicesTest {
                 }
             }
         }
-        assertEquals(expected, shown);
+        assertEquals(expected, shown, "each element with stated findings shows them, and no other element shows any");
         assertEquals(stated.stream().filter(f -> !f.severity().equals("info")).count(),
                 expected.values().stream().mapToLong(v -> v.lines().count()).sum(), "every stated finding is on an element of the model");
     }
@@ -152,7 +155,8 @@ class ServicesTest {
         Layer control = (Layer) checker.eContainer();
         control.setMaxExecTime(3.0);
         assertEquals("", services.rsamlErrors(checker), "the finding goes with the change that fixes it");
-        assertEquals("control — level 1, at most 3.0 ms a module", services.rsamlLabel(control));
+        assertEquals("control — level 1, at most 3.0 ms a module", services.rsamlLabel(control),
+                "the layer's label shows its new budget");
         assertFalse(services.rsamlErrors(architecture).isEmpty(), "the other defects are still shown");
     }
 }

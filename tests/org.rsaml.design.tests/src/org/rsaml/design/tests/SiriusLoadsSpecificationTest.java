@@ -92,7 +92,8 @@ class SiriusLoadsSpecificationTest {
         assertEquals(1, rsaml.size(), "one RsaML viewpoint in Sirius's registry");
         assertEquals(SPECIFICATION.toString(), rsaml.get(0).eResource().getURI().toString(), "registered from the design bundle");
         assertEquals(List.of("Architecture", "Missions"),
-                rsaml.get(0).getOwnedRepresentations().stream().map(RepresentationDescription::getName).toList());
-        assertEquals("rsaml", rsaml.get(0).getModelFileExtension());
+                rsaml.get(0).getOwnedRepresentations().stream().map(RepresentationDescription::getName).toList(),
+                "Sirius offers an Architecture and a Missions diagram");
+        assertEquals("rsaml", rsaml.get(0).getModelFileExtension(), "Sirius applies the viewpoint to .rsaml files");
     }
 }

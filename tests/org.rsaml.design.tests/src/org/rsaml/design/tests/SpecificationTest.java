@@ -20,12 +20,13 @@ class SpecificationTest {
     void rsamlOdesignIsAValidSiriusSpecification() throws Exception {
         SiriusSpecifications.Loaded loaded = SiriusSpecifications.load(Repository.siriusMetamodels(),
                 Repository.file(Repository.ECORE), Repository.file(Repository.ODESIGN));
-        assertEquals(List.of(), loaded.problems());
+        assertEquals(List.of(), loaded.problems(), "Sirius reads rsaml.odesign without an unknown, dangling or missing value");
 
         EObject viewpoint = list(loaded.group(), "ownedViewpoints").get(0);
-        assertEquals("rsaml", get(viewpoint, "modelFileExtension"));
+        assertEquals("rsaml", get(viewpoint, "modelFileExtension"), "the viewpoint applies to .rsaml files");
         assertEquals(List.of("Architecture", "Missions"),
-                list(viewpoint, "ownedRepresentations").stream().map(r -> get(r, "name")).toList());
+                list(viewpoint, "ownedRepresentations").stream().map(r -> get(r, "name")).toList(),
+                "the user can create an Architecture and a Missions diagram");
         for (EObject representation : list(viewpoint, "ownedRepresentations")) {
             assertEquals(List.of(loaded.rsaml()), list(representation, "metamodel"),
                     get(representation, "name") + " declares rsaml.ecore as its metamodel");
@@ -48,6 +49,6 @@ class SpecificationTest {
                 "invalid: The required feature 'labelColor' of 'broken/Broken/Diagram/Default/Node/SquareDescription' must be set",
                 "invalid: The feature 'sourceMapping' of '" + edge + "' with 0 values must have at least 1 values",
                 "invalid: The feature 'strokeColor' of '" + edge + "/EdgeStyleDescription' contains an unresolved proxy 'SystemColor'"),
-                loaded.problems());
+                loaded.problems(), "each mistake of the broken specification is reported with its place");
     }
 }
