@@ -18,7 +18,8 @@ class DomainReferencesTest {
     void everyReferenceToRsamlExists() throws Exception {
         SiriusSpecifications.Loaded loaded = SiriusSpecifications.load(Repository.siriusMetamodels(),
                 Repository.file(Repository.ECORE), Repository.file(Repository.ODESIGN));
-        assertEquals(List.of(), DomainReferences.check(loaded, RsamlServices.class));
+        assertEquals(List.of(), DomainReferences.check(loaded, RsamlServices.class),
+                "every class, feature and service rsaml.odesign names exists in RsaML");
     }
 
     @Test
@@ -57,6 +58,6 @@ class DomainReferencesTest {
                 tools + "/createModule/SetValue featureName: Module has no feature 'lvl'",
                 "broken/Broken/Diagram/Default/errors domainClass: 'rsaml.NamedElement' names package 'rsaml',"
                         + " but rsaml.ecore's package is called 'model'"),
-                DomainReferences.check(loaded, RsamlServices.class));
+                DomainReferences.check(loaded, RsamlServices.class), "each wrong name of the specification is reported with its place");
     }
 }
