@@ -204,12 +204,18 @@ class ProcessTest {
         Path work = Files.createDirectories(dir.resolve("work"));
         Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), work.resolve("model.rsaml"));
 
+        // As after 'ln -s ../tools/rsaml r2' in the model's folder, then 'bash r2 ...': a relative link named without a slash.
+        Files.createSymbolicLink(work.resolve("r2"), Path.of("../tools/rsaml"));
+
         Cli.Result r = Cli.process(work, List.of(bin.resolve("rsaml").toString(), "validate", "model.rsaml"));
+        Cli.Result here = Cli.process(work, List.of("bash", "r2", "validate", "model.rsaml"));
         // The link out of the temporary folder goes now, so JUnit need not warn about it.
         Files.delete(tools.resolve("rsaml"));
-        assertEquals(1, r.code(), r::toString);
-        assertTrue(r.out().startsWith("model.rsaml:"), r::toString);
-        assertTrue(r.out().endsWith(ValidateCommandTest.exp2Summary() + "\n"), r::toString);
-        assertEquals("", r.err(), "no first-use build: the launcher found its jar");
+        for (Cli.Result run : List.of(r, here)) {
+            assertEquals(1, run.code(), () -> "exp2's findings give exit code 1: " + run);
+            assertTrue(run.out().startsWith("model.rsaml:"), () -> "the report names the model as given: " + run);
+            assertTrue(run.out().endsWith(ValidateCommandTest.exp2Summary() + "\n"), () -> "the report ends with exp2's summary: " + run);
+            assertEquals("", run.err(), "no first-use build and no error: the launcher found its jar through the links");
+        }
     }
 }
