@@ -6,8 +6,11 @@ package org.rsaml.report;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.file.FileVisitResult;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -94,11 +97,7 @@ public final class ModelFiles {
     /** The model files ({@code .rsaml}, {@code .rsa}) under a directory, sorted by path; hidden folders are skipped. */
     public static List<Path> modelsUnder(Path directory) throws IOException {
         try (Stream<Path> walk = Files.walk(directory)) {
-            return walk.filter(p -> !hiddenBelow(directory, p))
-                    .filter(p -> p.getFileName() != null
-                            && ModelFormats.isModelFile(p.getFileName().toString()))
-                    .filter(Files::isRegularFile)
-                    .sorted()
+            return walk.filter(p -> !hiddenBelow(directory, p)).filter(ModelFiles::isModel).sorted()
                     .toList();
         }
     }
@@ -112,13 +111,39 @@ public final class ModelFiles {
         }
     }
 
-    /** Whether a directory holds model files (its own links to directories not followed). */
+    /** A model file (or a link to one) by its name. */
+    private static boolean isModel(Path p) {
+        return p.getFileName() != null && ModelFormats.isModelFile(p.getFileName().toString()) && Files.isRegularFile(p);
+    }
+
+    /**
+     * Whether a directory holds a model file as {@link #modelsUnder} finds them (hidden folders skipped, its own links
+     * to directories not followed), stopping at the first: the directory may be a large tree outside the folder.
+     */
     private static boolean hasModels(Path directory) {
+        boolean[] found = { false };
         try {
-            return !modelsUnder(directory).isEmpty();
-        } catch (IOException | UncheckedIOException e) {
+            Files.walkFileTree(directory, new SimpleFileVisitor<>() {
+                @Override
+                public FileVisitResult preVisitDirectory(Path dir, BasicFileAttributes attrs) {
+                    return hiddenBelow(directory, dir) ? FileVisitResult.SKIP_SUBTREE : FileVisitResult.CONTINUE;
+                }
+
+                @Override
+                public FileVisitResult visitFile(Path file, BasicFileAttributes attrs) {
+                    found[0] = !hiddenBelow(directory, file) && isModel(file);
+                    return found[0] ? FileVisitResult.TERMINATE : FileVisitResult.CONTINUE;
+                }
+
+                @Override
+                public FileVisitResult visitFileFailed(Path file, IOException e) {
+                    return FileVisitResult.CONTINUE; // an unreadable part hides no model elsewhere
+                }
+            });
+        } catch (IOException e) {
             return false;
         }
+        return found[0];
     }
 
     private static Path realPath(Path path) {
