@@ -106,6 +106,11 @@ class Ros2ParamsFileTest {
         assertTrue(warnings.size() == 1 && warnings.get(0).startsWith(expected) && warnings.get(0).contains("add 'plan.period_ms: 100.0'")
                 && warnings.get(0).contains(CURRENT), "expected one warning starting '" + expected + "' naming the line to add and " + CURRENT + ": " + warnings);
         assertTrue(Files.readString(out.resolve(CURRENT)).contains("\n    plan.period_ms: 100.0\n"), "the current form has the line");
+        assertTrue(warnings.get(0).contains("generating warns about it every time until the line is back"),
+                "the warning says it comes back until the line does, as the file's header says: " + warnings);
+        assertTrue(Files.readString(params).contains("Keep every node and parameter in it: a node takes the model's value for one left out,"
+                + "\n# and generating again warns about each one left out, every time, until it is back"),
+                "the kept file's header says to keep every line, and why:\n" + Files.readString(params));
     }
 
     @Test

@@ -115,11 +115,12 @@ final class Ros2ParamsCheck {
                 List<String> values = missing.entrySet().stream().map(e -> e.getKey() + ": " + e.getValue()).toList();
                 warnings.add(path + ":" + end + ": this file has no section for node '" + node.getKey() + "' (a module added since the file was"
                         + " written, or its section deleted); the node runs with the model's values (" + String.join(", ", values)
-                        + "), which you cannot tune here: copy its section into this file from " + from);
+                        + "), which you cannot tune here, and generating warns about it every time until it is"
+                        + " there: copy its section into this file from " + from);
             } else if (line != null) {
                 missing.forEach((name, value) -> warnings.add(path + ":" + line + ": node '" + node.getKey() + "' has no line for parameter " + name
-                        + "; the node runs with the model's value " + value + ": to have every parameter here, add '" + name + ": " + value
-                        + "' to its ros__parameters, as in " + from));
+                        + "; the node runs with the model's value " + value + ", and generating warns about it every time until the line is back:"
+                        + " add '" + name + ": " + value + "' to its ros__parameters, as in " + from));
             }
         }
     }

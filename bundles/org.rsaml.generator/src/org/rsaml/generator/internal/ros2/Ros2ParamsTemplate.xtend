@@ -10,7 +10,7 @@ import org.rsaml.generator.internal.Templates
  * config/&lt;pkg&gt;.params.yaml, the architect's (created once, never overwritten): every parameter
  * of every node with the model's value, times in the model's units and each topic's QoS, in the
  * format of ROS 2's parameter files. Both launch files load it; a node takes the model's value for
- * what the file does not set. The same text, regenerated, is gen/&lt;pkg&gt;.params.yaml: the
+ * what the file does not set, which generating warns about each time (the file says to keep every line). The same text, regenerated, is gen/&lt;pkg&gt;.params.yaml: the
  * complete current file, from which the architect copies what the kept one lacks.
  */
 class Ros2ParamsTemplate extends Ros2Template {
@@ -51,10 +51,11 @@ class Ros2ParamsTemplate extends Ros2Template {
 		«ELSE»
 			# Parameters of the nodes of the RsaML architecture '«doc(plan.name)»'. «Templates.USER_OWNED»
 		«ENDIF»
-		# Both launch files load «path.substring(pkg.length + 1)» (params_file:=PATH loads another file); a node takes the
-		# model's value for a parameter that file does not set, so a value there overrides the model's (generating
-		# again warns, naming the line, about a value that differs from the model's, a name no node has, and a
-		# node or parameter the file lacks: «currentPath.substring(pkg.length + 1)» has every one, regenerated each time).
+		# Both launch files load «path.substring(pkg.length + 1)» (params_file:=PATH loads another file); a value there
+		# overrides the model's. Keep every node and parameter in it: a node takes the model's value for one left out,
+		# and generating again warns about each one left out, every time, until it is back
+		# («currentPath.substring(pkg.length + 1)» has every one, regenerated each time). Generating again also warns,
+		# naming the line, about a value that differs from the model's and a name no node has.
 		# Times are in the model's units, as each name ends: _ns, _us, _ms or _s.
 		# QoS of a topic: qos_overrides.TOPIC.publisher.POLICY or qos_overrides.TOPIC.subscription.POLICY
 		# (reliability: reliable or best_effort; history: keep_last, or keep_all with «pkg»_processes.launch.py

@@ -93,8 +93,9 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		namespaced, the name ROS 2 looks the override up by. A file they cannot take (not YAML, a time
 		that is not a positive number, a time a node no longer has) is refused with its line. The file is
 		yours and kept: `«pkg»/gen/«pkg».params.yaml`, regenerated every time and loaded by no launch file,
-		is its complete current form, to copy from what yours lacks (generating again names each node and
-		parameter it lacks).
+		is its complete current form, to copy from what yours lacks. Keep every node and parameter in yours:
+		a node takes the model's value for one left out, and generating again names each one left out, every
+		time, until it is back.
 		«IF !rosNames.managedModules.empty»
 
 		Managed nodes (`rclcpp_lifecycle`): «FOR m : rosNames.managedModules SEPARATOR ", "»`«m.rosNode»`«ENDFOR». Each starts unconfigured;
