@@ -41,7 +41,7 @@ class SvgRenderingTest {
             }
         }
         JsonObject seen = Browser.run("svg-rendering", List.of("--svg"), new ArrayList<>(written.keySet()));
-        assertEquals(written.size(), seen.getAsJsonArray("images").size());
+        assertEquals(written.size(), seen.getAsJsonArray("images").size(), "the browser rendered every written SVG");
         for (JsonElement e : seen.getAsJsonArray("images")) {
             JsonObject image = e.getAsJsonObject();
             String file = image.get("file").getAsString();

@@ -36,7 +36,7 @@ class DeterminismTest {
         new RsamlGenerator().generate(model, target, tmp.resolve("a"), false);
         new RsamlGenerator().generate(Tools.example("subsumption-brooks.rsaml"), target, tmp.resolve("elsewhere/b"), false);
         Map<String, byte[]> a = Tools.snapshot(tmp.resolve("a"));
-        assertTrue(a.size() > 20);
+        assertTrue(a.size() > 20, "the generated project has its files");
         assertTrue(Tools.sameFiles(a, Tools.snapshot(tmp.resolve("elsewhere/b"))), "the two projects differ");
         for (Map.Entry<String, byte[]> f : a.entrySet()) {
             String text = new String(f.getValue(), StandardCharsets.UTF_8);
@@ -61,8 +61,8 @@ class DeterminismTest {
         }
         Map<String, byte[]> before = Tools.snapshot(out);
         var again = new RsamlGenerator().generate(Tools.example("hierarchical-nasrem.rsaml"), target, out, false);
-        assertEquals(0, again.written().size());
-        assertTrue(Tools.sameFiles(before, Tools.snapshot(out)));
+        assertEquals(0, again.written().size(), "a second generation writes no file");
+        assertTrue(Tools.sameFiles(before, Tools.snapshot(out)), "a second generation leaves every file as it was");
         for (Map.Entry<Path, FileTime> t : times.entrySet()) {
             assertEquals(t.getValue(), Files.getLastModifiedTime(t.getKey()), t.getKey() + " was rewritten");
         }

@@ -158,7 +158,8 @@ class Ros2PackagesTest {
     void aProcessorWhosePackageWouldBeTheDefaultOneIsRefusedWithItsFinding(@TempDir Path tmp) throws Exception {
         Path model = model(tmp, "perProcessor", "<processors name=\"core0\"", "<processors name=\"Default\"");
         GenerationRefusedException e = assertThrows(GenerationRefusedException.class,
-                () -> new RsamlGenerator().generate(model, Target.ROS2, tmp.resolve("ws"), false));
+                () -> new RsamlGenerator().generate(model, Target.ROS2, tmp.resolve("ws"), false),
+                "a processor whose package would be the default one is refused");
         assertEquals(List.of("RSA-29 mobileBase/Default"), e.errors().stream().map(f -> f.ruleId() + " " + f.qualifiedName()).toList(),
                 "the processor named Default is found: " + e.errors());
         assertTrue(e.errors().get(0).message().contains("the package of the modules no processor names"), e.errors().get(0).message());
@@ -205,7 +206,7 @@ class Ros2PackagesTest {
         append(out.resolve("README.md"), "\nOur notes.\n");
         Map<String, byte[]> before = Tools.snapshot(out);
         Path layered = model(tmp, "perLayer");
-        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(layered, Target.ROS2, out, false));
+        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(layered, Target.ROS2, out, false), "moving from one package per layer needs the architect's files moved");
         String message = e.toString();
         for (String c : List.of("navigation/ObstacleDetector", "navigation/PathPlanner", "control/VelocityController", "control/Odometry")) {
             String layer = c.substring(0, c.indexOf('/'));
@@ -259,7 +260,7 @@ class Ros2PackagesTest {
         Files.writeString(runtimeManifest, Files.readString(runtimeManifest).replace("<license>TODO</license>", "<license>Apache-2.0</license>"));
         Map<String, byte[]> before = Tools.snapshot(out);
         Path single = model(tmp, "single");
-        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(single, Target.ROS2, out, false));
+        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(single, Target.ROS2, out, false), "moving to one package needs the architect's files moved");
         String message = e.toString();
         assertTrue(message.contains(PKG + "_navigation/src/navigation/PathPlanner.hpp -> " + PKG + "/src/navigation/PathPlanner.hpp"), message);
         assertTrue(message.contains(PKG + "_navigation/user.cmake into " + PKG + "/user.cmake")
@@ -302,7 +303,7 @@ class Ros2PackagesTest {
         append(readme, "\nOur robot's notes.\n");
         String notes = Files.readString(readme);
         Path layered = model(tmp, "perLayer");
-        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(layered, Target.ROS2, out, false));
+        GenerationException e = assertThrows(GenerationException.class, () -> new RsamlGenerator().generate(layered, Target.ROS2, out, false), "moving from one package per layer needs the architect's files moved");
         moveAsSaid(out, e.toString());
         new RsamlGenerator().generate(layered, Target.ROS2, out, false);
         assertEquals(notes, Files.readString(readme), "the README is kept as the architect left it");

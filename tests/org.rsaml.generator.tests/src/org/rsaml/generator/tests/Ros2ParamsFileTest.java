@@ -74,7 +74,7 @@ class Ros2ParamsFileTest {
     void aPeriodChangedInTheModelThatTheKeptFileStillOverridesIsAWarning() throws Exception {
         String text = Files.readString(model);
         String changed = text.replace("period=\"100.0\" delay=\"100.0\"", "period=\"200.0\" delay=\"100.0\"");
-        assertNotEquals(text, changed);
+        assertNotEquals(text, changed, "the test changed the model's period");
         Files.writeString(model, changed);
         int line = lineOf("    plan.period_ms: 100.0\n");
         List<String> warnings = generateAgain();
@@ -122,7 +122,7 @@ class Ros2ParamsFileTest {
                       <functions name="fuse" timeUnit="ms" type="realTime" period="200.0" delay="200.0" execDuration="10.0" execType="periodic" schedPolicy="RM"/>
                     </modules>
                 """ + anchor);
-        assertNotEquals(text, added);
+        assertNotEquals(text, added, "the test added to the model");
         Files.writeString(model, added);
         int end = (int) Files.readString(params).chars().filter(c -> c == '\n').count();
         List<String> warnings = generateAgain();

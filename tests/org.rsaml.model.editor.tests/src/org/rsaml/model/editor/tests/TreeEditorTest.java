@@ -112,7 +112,7 @@ class TreeEditorTest {
         Path example = TestRepository.example("exp2-defects.rsaml");
         project = Workbench.newProject("inspection-robot");
         IFile file = Workbench.copy(project, example, "exp2-defects.rsaml");
-        assertFalse(RsamlProjects.hasNature(project));
+        assertFalse(RsamlProjects.hasNature(project), "a new project has no RsaML validation");
         RsamlEditorSpec editor = open(file);
         assertTrue(RsamlProjects.hasNature(project), "opening a model turns RsaML validation on for its project");
         Workbench.join(ResourcesPlugin.FAMILY_AUTO_BUILD);
@@ -195,9 +195,9 @@ class TreeEditorTest {
         Module module = control.getModules().get(0);
         // What the Properties view does when the architect types 2.5 into Exec Duration.
         Command edit = SetCommand.create(editor.getEditingDomain(), module, RsamlPackage.Literals.REAL_TIME_ELEMENT__EXEC_DURATION, 2.5);
-        assertTrue(edit.canExecute());
+        assertTrue(edit.canExecute(), "the editor can change the module's execution duration");
         editor.getEditingDomain().getCommandStack().execute(edit);
-        assertTrue(editor.isDirty());
+        assertTrue(editor.isDirty(), "the edited model is dirty");
         editor.doSave(new NullProgressMonitor());
         assertFalse(editor.isDirty(), "the save went through");
         Workbench.join(ResourcesPlugin.FAMILY_AUTO_BUILD);

@@ -65,7 +65,7 @@ class LegalFilesTest {
     @Test
     void theLicenceIsTheEclipsePublicLicence2() throws IOException {
         List<String> lines = Files.readAllLines(ROOT.resolve("LICENSE"));
-        assertEquals("Eclipse Public License - v 2.0", lines.get(0).strip());
+        assertEquals("Eclipse Public License - v 2.0", lines.get(0).strip(), "LICENSE starts with the EPL-2.0 title");
         assertTrue(lines.stream().anyMatch(l -> l.contains("Exhibit A - Form of Secondary Licenses Notice")),
                 "LICENSE must hold the whole EPL-2.0 text");
         assertTrue(Files.readString(ROOT.resolve("NOTICE")).contains(SPDX), "NOTICE must declare the project licence");
@@ -79,7 +79,7 @@ class LegalFilesTest {
                 children.filter(d -> Files.exists(d.resolve("build.properties"))).forEach(modules::add);
             }
         }
-        assertFalse(modules.isEmpty());
+        assertFalse(modules.isEmpty(), "the check sees the modules");
         for (Path module : modules) {
             assertTrue(Files.exists(module.resolve("about.html")), () -> module + " has no about.html");
             Properties build = new Properties();
