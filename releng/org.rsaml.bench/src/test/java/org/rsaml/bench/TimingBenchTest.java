@@ -39,7 +39,7 @@ class TimingBenchTest {
     void everySmallSizeHasRequirementsWithinTheArchitecture() throws Exception {
         for (int modules = 1; modules <= 12; modules++) {
             Architecture a = TimingBench.architecture(modules, 100);
-            assertEquals(modules, a.getLayers().stream().mapToInt(l -> l.getModules().size()).sum());
+            assertEquals(modules, a.getLayers().stream().mapToInt(l -> l.getModules().size()).sum(), "the benchmark's architecture has the modules asked for");
             ArchitectureTiming timing = TimingAnalysis.analyse(a);
             assertEquals(modules == 1 ? 0 : 100, timing.latencies().size(), modules + " modules");
             assertEquals(Verdict.MEETS, timing.verdict(), modules + " modules");
