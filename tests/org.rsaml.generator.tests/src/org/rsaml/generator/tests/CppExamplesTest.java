@@ -79,7 +79,7 @@ class CppExamplesTest {
                 }
             }
         }
-        assertTrue(periodicActions > 0 || trace.matching("release ").size() > 0 || arch.getConnections().size() > 0);
+        assertTrue(periodicActions > 0 || trace.matching("release ").size() > 0 || arch.getConnections().size() > 0, "the example's program releases something to trace");
         assertPinnedAsDeployed(arch, trace);
         assertPlacedBeforeFirstJob(trace);
 
@@ -139,7 +139,7 @@ class CppExamplesTest {
         Path model = tmp.resolve("one-unallocated.rsaml");
         String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
         String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']";
-        assertTrue(text.contains(planner));
+        assertTrue(text.contains(planner), "the example deploys the path planner on a processor");
         Files.writeString(model, text.replace(planner, ""));
         Path out = tmp.resolve("project");
         new RsamlGenerator().generate(model, Target.CPP, out, false);
@@ -175,7 +175,7 @@ class CppExamplesTest {
     void aCoreTheMachineLacksLeavesTheModuleToTheOs(@TempDir Path tmp) throws Exception {
         Path model = tmp.resolve("far-core.rsaml");
         String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
-        assertTrue(text.contains("core=\"1\""));
+        assertTrue(text.contains("core=\"1\""), "the example pins a processor to core 1");
         Files.writeString(model, text.replace("core=\"1\"", "core=\"4096\""));
         Path out = tmp.resolve("project");
         new RsamlGenerator().generate(model, Target.CPP, out, false);
@@ -184,7 +184,7 @@ class CppExamplesTest {
         List<String> far = trace.matching("cpu navigation/obstacleDetector");
         assertTrue(far.size() >= 2, "the worker and the release:\n" + trace.output);
         assertTrue(far.stream().allMatch(l -> l.endsWith(" core 4096 not available: default")), far::toString);
-        assertEquals(List.of("cpu control/velocityController core 0"), trace.matching("cpu control/velocityController core"));
+        assertEquals(List.of("cpu control/velocityController core 0"), trace.matching("cpu control/velocityController core"), "the controller on an available core stays pinned there");
         assertFalse(trace.matching("release control/velocityController").isEmpty(), "the run went on:\n" + trace.output);
     }
 

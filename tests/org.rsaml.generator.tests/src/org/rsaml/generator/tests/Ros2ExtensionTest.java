@@ -111,7 +111,7 @@ class Ros2ExtensionTest {
 
         Path pkg = out.resolve("pick_and_place_arm");
         Path ipkg = out.resolve("pick_and_place_arm_interfaces");
-        assertTrue(Files.readString(pkg.resolve("package.xml")).contains("<license>TODO</license>"));
+        assertTrue(Files.readString(pkg.resolve("package.xml")).contains("<license>TODO</license>"), "a first generation's package.xml leaves the license for the architect");
         Files.writeString(pkg.resolve("package.user.xml"), USER_MANIFEST);
         Files.writeString(ipkg.resolve("package.user.xml"), USER_INTERFACES_MANIFEST);
         Files.writeString(pkg.resolve("user.cmake"), Files.readString(pkg.resolve("user.cmake"))
@@ -130,12 +130,12 @@ class Ros2ExtensionTest {
         String text = Files.readString(model).replace("<ports xsi:type=\"rsaml:OutputPort\" name=\"s0_motionController\"",
                 "<ports xsi:type=\"rsaml:OutputPort\" name=\"s1_motionController\" dataType=\"boolean\"/>\n      "
                         + "<ports xsi:type=\"rsaml:OutputPort\" name=\"s0_motionController\"");
-        assertNotEquals(Files.readString(model), text);
+        assertNotEquals(Files.readString(model), text, "the test changed the model's output port");
         Files.writeString(model, text);
         generator.generate(model, Target.ROS2, out, false);
 
         assertTrue(Tools.sameFiles(before, userFiles(out)), "the architect's files changed");
-        assertTrue(Files.readString(pkg.resolve("gen/motion_control/MotionControllerBase.hpp")).contains("out_s1_motionController"));
+        assertTrue(Files.readString(pkg.resolve("gen/motion_control/MotionControllerBase.hpp")).contains("out_s1_motionController"), "the regenerated base class has the new output port");
         String manifest = Files.readString(pkg.resolve("package.xml"));
         for (String expected : List.of("<version>1.2.3</version>", "<maintainer email=\"ada@robots.example.org\">Ada Lovelace</maintainer>",
                 "<license>Apache-2.0</license>", "<url type=\"repository\">https://robots.example.org/arm.git</url>",
@@ -168,7 +168,8 @@ class Ros2ExtensionTest {
         Map<String, byte[]> before = Tools.snapshot(out);
 
         GenerationException e = assertThrows(GenerationException.class,
-                () -> generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.ROS2, out, false));
+                () -> generator.generate(Tools.example("exp3-task-interpreter.rsaml"), Target.ROS2, out, false),
+                "a package.user.xml with an unknown element stops the generation");
         assertEquals("pick_and_place_arm/package.user.xml", e.file().replace('\\', '/'), e.toString());
         assertEquals(3, e.line(), e.toString());
         assertTrue(e.getMessage().contains("<licence>"), e.getMessage());
@@ -205,7 +206,7 @@ class Ros2ExtensionTest {
 
         // The model changes (the planner's period); the file stays as the architect wrote it.
         String changed = Files.readString(model).replace("period=\"100.0\" delay=\"100.0\"", "period=\"200.0\" delay=\"100.0\"");
-        assertNotEquals(Files.readString(model), changed);
+        assertNotEquals(Files.readString(model), changed, "the test changed the model's period");
         Files.writeString(model, changed);
         GenerationResult again = generator.generate(model, Target.ROS2, out, false);
         assertTrue(again.preserved().stream().anyMatch(f -> f.endsWith(Path.of("config", pkg + ".params.yaml"))), "not kept: " + again.preserved());

@@ -99,7 +99,7 @@ class Ros2LaunchFilesTest {
         Assumptions.assumeTrue(missing == null, missing);
         String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
         String nav = "<processors name=\"core1\"";
-        assertTrue(text.contains(nav));
+        assertTrue(text.contains(nav), "the example has the navigation processor");
         Path model = tmp.resolve("two-hosts.rsaml");
         Files.writeString(model, text.replace(nav, nav + " host=\"nav-board\" linkLatency=\"2.0\""));
         Path src = tmp.resolve("src");
@@ -171,7 +171,7 @@ class Ros2LaunchFilesTest {
         Assumptions.assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "one CPU: no second CPU to pin to");
         String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
         String nav = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
-        assertTrue(text.contains(nav));
+        assertTrue(text.contains(nav), "the example has the navigation processor on core 1");
         Path model = tmp.resolve("two-hosts.rsaml");
         Files.writeString(model, text.replace(nav, "<processors name=\"core1\" description=\"Core 0 of the board.\" core=\"0\" host=\"nav-board\""));
         Path src = tmp.resolve("src");

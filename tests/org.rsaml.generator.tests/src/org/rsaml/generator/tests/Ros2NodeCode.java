@@ -105,7 +105,7 @@ final class Ros2NodeCode {
                 "the timers of a plain or managed node are on the node's clock:\n" + scheduling);
         assertFalse(all.contains("create_wall_timer"), "a wall timer ignores use_sim_time");
         assertFalse(all.contains("steady_clock"), "steady_clock ignores use_sim_time");
-        assertTrue(all.contains("publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();"));
+        assertTrue(all.contains("publisher_options.qos_overriding_options = rclcpp::QosOverridingOptions::with_default_policies();"), "publishers let the user override QoS from parameters");
         for (Layer layer : arch.getLayers()) {
             for (Module m : layer.getModules()) {
                 for (Function f : m.getFunctions()) {

@@ -174,7 +174,7 @@ class Ros2Test {
         Map<String, String> nodeParameters = new TreeMap<>();
         for (String c : components) {
             String[] f = c.split(" ");
-            assertEquals(pkg, f[1]);
+            assertEquals(pkg, f[1], "the component is in the model's package: " + c);
             assertTrue(plugins.containsKey(f[2]), "component " + f[2] + " is not registered in CMakeLists.txt");
             assertEquals("$(namespace)", f[3], c);
             String parameters = c.substring(c.indexOf(" [{") + 1);
@@ -362,7 +362,8 @@ class Ros2Test {
                 Object other = processorOfContainer.putIfAbsent(c, domain);
                 assertEquals(other == null ? domain : other, domain, "modules of different processors in container " + c);
                 if (processor == null) {
-                    assertEquals(arch.getProcessors().isEmpty() ? pkg + "_container" : c, c);
+                    assertEquals(arch.getProcessors().isEmpty() ? pkg + "_container" : c, c,
+                            "a node without a processor runs in the package's one container");
                 }
                 if (processor != null && processor.getCore() >= 0) {
                     for (String process : List.of(c, node)) {
@@ -458,7 +459,7 @@ class Ros2Test {
         for (Path p : bases(root)) {
             String text = Files.readString(p);
             Matcher c = NODE.matcher(text);
-            assertTrue(c.find());
+            assertTrue(c.find(), "the node class is declared in the header");
             Matcher m = member.matcher(text);
             while (m.find()) {
                 found.put(c.group(2) + "/" + m.group(1), m.group(group));

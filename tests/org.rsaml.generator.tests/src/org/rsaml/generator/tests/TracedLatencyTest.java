@@ -56,10 +56,10 @@ class TracedLatencyTest {
         Path model = Tools.example("mobile-base-latency.rsaml");
         ArchitectureTiming timing = TimingAnalysis.analyse(ModelLoader.load(model, "mobile-base-latency.rsaml").architecture());
         LatencyResult requirement = timing.latencies().get(0);
-        assertEquals("scanToWheels", requirement.name());
-        assertEquals(Verdict.MEETS, requirement.verdict());
+        assertEquals("scanToWheels", requirement.name(), "the example's latency requirement");
+        assertEquals(Verdict.MEETS, requirement.verdict(), "the analysis says the requirement is met");
         List<Hop> path = requirement.worstPath();
-        assertEquals(List.of("navigation/obstacleDetector", "control/velocityController"), path.stream().map(Hop::label).toList());
+        assertEquals(List.of("navigation/obstacleDetector", "control/velocityController"), path.stream().map(Hop::label).toList(), "the worst path runs from the detector to the controller");
         assertEquals(Math.round(CONTROL_PERIOD_MS * 1e6), path.get(1).waitNs(), "the controller samples every 10 ms");
         long visibleBound = requirement.reactionNs() - path.get(0).waitNs();
 
