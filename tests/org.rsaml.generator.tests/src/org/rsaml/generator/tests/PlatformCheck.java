@@ -126,6 +126,19 @@ final class PlatformCheck {
     }
 
     /**
+     * Whether a bounded release or reaction ran as the analysis assumes, so that its bound is checked; where
+     * it did not, it is noted in {@code unchecked} with its scheduling (and fails where {@link #required()}).
+     */
+    static boolean scheduledAsAnalysed(String what, String label, JobSummary observed, List<String> unchecked) {
+        requireRealtime(what, label, observed.sched());
+        if (!observed.asAnalysed()) {
+            unchecked.add(label + " (" + observed.sched() + ")");
+            return false;
+        }
+        return true;
+    }
+
+    /**
      * The releases of a run that measure the platform: alone at the highest rank of a processor that
      * schedules by fixed priorities, scheduled as analysed, with the CPU of their processor to
      * themselves ({@code apart}: null when so). Their start latency is the timer's wake-up and the

@@ -374,12 +374,9 @@ class Ros2LaunchTest {
             if (bound < 0) {
                 continue;
             }
-            PlatformCheck.requireRealtime("Ros2LaunchTest " + name, r.label(), o.sched());
-            if (!o.asAnalysed()) {
-                unchecked.add(r.label() + " (" + o.sched() + ")");
-                continue;
+            if (PlatformCheck.scheduledAsAnalysed("Ros2LaunchTest " + name, r.label(), o, unchecked)) {
+                checked.add(r);
             }
-            checked.add(r);
         }
         // The reactions are held to their bounds as the releases are, under the same rules: where their
         // node's data thread got the scheduling the analysis assumes (priority 0, SCHED_FIFO's lowest).
@@ -389,12 +386,9 @@ class Ros2LaunchTest {
             if (o == null || bounds.getOrDefault(x.label(), -1L) < 0) {
                 continue;
             }
-            PlatformCheck.requireRealtime("Ros2LaunchTest " + name, x.label(), o.sched());
-            if (!o.asAnalysed()) {
-                unchecked.add(x.label() + " (" + o.sched() + ")");
-                continue;
+            if (PlatformCheck.scheduledAsAnalysed("Ros2LaunchTest " + name, x.label(), o, unchecked)) {
+                reacting.add(x);
             }
-            reacting.add(x);
         }
         if (!checked.isEmpty() || !reacting.isEmpty()) {
             PlatformCheck.BoundCheck check = PlatformCheck.boundCheck("Ros2LaunchTest " + name, others,
