@@ -28,25 +28,56 @@ import org.rsaml.model.LatencyRequirement;
  * @param via          the elements the paths must pass through, in order, as labels (empty: every path)
  * @param pathBounds   every path examined with its own bounds, the longest first (at most
  *                     {@link #MAX_LISTED_PATHS}; {@code paths} counts them all)
+ * @param unlisted     empty when {@code pathBounds} holds every path counted in {@code paths}; else which
+ *                     paths it holds and why not all
  */
 public record LatencyResult(LatencyRequirement requirement, String name, String from, String to, long maxNs, boolean dataAge,
         Verdict verdict, long reactionNs, long dataAgeNs, List<Hop> worstPath, int paths, String explanation, List<String> via,
-        List<PathBound> pathBounds) {
+        List<PathBound> pathBounds, String unlisted) {
 
-    /** Paths listed with their bounds per requirement; the others are counted. */
-    public static final int MAX_LISTED_PATHS = 100;
+    /**
+     * Paths listed with their bounds per requirement (in {@link #pathBounds()}, JSON's {@code everyPath}); past
+     * it the longest are kept and the others counted, and {@link #unlisted()} says so.
+     */
+    public static final int MAX_LISTED_PATHS = 10_000;
+
+    /** Stages of the paths listed per requirement, in all: long paths are listed fewer (the longest at least). */
+    public static final int MAX_LISTED_STAGES = 1_000_000;
+
+    /** Paths the text report and the diagram overlay show one by one, the longest first; JSON lists them all. */
+    public static final int SHOWN_PATHS = 10;
 
     public LatencyResult {
         worstPath = List.copyOf(worstPath);
         via = List.copyOf(via);
         pathBounds = List.copyOf(pathBounds);
+        unlisted = unlisted == null ? "" : unlisted;
     }
 
     /** A result without the paths listed one by one. */
     public LatencyResult(LatencyRequirement requirement, String name, String from, String to, long maxNs, boolean dataAge,
             Verdict verdict, long reactionNs, long dataAgeNs, List<Hop> worstPath, int paths, String explanation) {
         this(requirement, name, from, to, maxNs, dataAge, verdict, reactionNs, dataAgeNs, worstPath, paths, explanation, List.of(),
-                List.of());
+                List.of(), "");
+    }
+
+    /**
+     * The heading of the list of the first {@code shown} paths of {@link #pathBounds()}, as the text report
+     * and the diagram overlay word it: {@code every path, the longest first:} when they are all, else how
+     * many paths there are and where the others are listed ({@code rsaml analyze --format json}), or why
+     * they are not.
+     */
+    public String pathsHeading(int shown) {
+        int listed = pathBounds.size();
+        int n = Math.min(shown, listed);
+        if (unlisted.isEmpty() && n == listed) {
+            return "every path, the longest first:";
+        }
+        if (unlisted.isEmpty()) {
+            return "the " + n + " longest of " + paths + " paths (rsaml analyze --format json lists all " + paths + "):";
+        }
+        return "the " + n + " longest paths listed (" + (n < listed ? "rsaml analyze --format json lists " + listed + "; " : "")
+                + unlisted + "):";
     }
 
     /** The worst path in one line, {@code perception/filter +15 ms -> control/drive +22 ms}; empty without one. */

@@ -131,9 +131,8 @@ public final class TimingText {
             }
         }
         if (!l.pathBounds().isEmpty()) {
-            out.append("  every path, the longest first").append(l.paths() > l.pathBounds().size()
-                    ? " (the " + l.pathBounds().size() + " longest of " + l.paths() + ")" : "").append(":\n");
-            for (PathBound b : l.pathBounds()) {
+            out.append("  ").append(l.pathsHeading(LatencyResult.SHOWN_PATHS)).append('\n');
+            for (PathBound b : l.pathBounds().subList(0, Math.min(LatencyResult.SHOWN_PATHS, l.pathBounds().size()))) {
                 out.append("    ").append(b.text().isEmpty() ? "(no stage)" : b.text()).append(": ");
                 if (b.bounded()) {
                     out.append("reaction time ").append(RsamlTimes.text(b.reactionNs())).append(", data age ")

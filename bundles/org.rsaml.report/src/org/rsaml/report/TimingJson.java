@@ -191,6 +191,11 @@ public final class TimingJson {
                 every.add(path);
             }
             k.add("everyPath", every);
+            // everyPath holds every path counted in paths, or says which it holds and why not all
+            k.addProperty("pathsListed", l.pathBounds().size());
+            if (!l.unlisted().isEmpty()) {
+                k.addProperty("pathsNotListed", l.unlisted());
+            }
             latencies.add(k);
         }
         o.add("latencies", latencies);

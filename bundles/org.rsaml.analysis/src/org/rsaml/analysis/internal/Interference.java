@@ -15,7 +15,7 @@ package org.rsaml.analysis.internal;
  * denser than the buckets were cut for, the calendar is cut again, finer (at most once per halving);
  * should w ever fall, the counts are recomputed from scratch.
  */
-final class Interference {
+public final class Interference {
     private final long[] period;
     private final long[] cost;
     private final long[] jitter;
@@ -41,7 +41,7 @@ final class Interference {
     }
 
     /** The calendar, whose counts {@link AnalysisCounts} adds up. */
-    Calendar calendar() {
+    public Calendar calendar() {
         return calendar;
     }
 
@@ -90,7 +90,7 @@ final class Interference {
     }
 
     /** The interference in a window of length {@code window}. */
-    long at(long window) {
+    public long at(long window) {
         try {
             return advance(window);
         } catch (ArithmeticException e) {
@@ -127,7 +127,7 @@ final class Interference {
      * most a period past the window, and an entry a round or more ahead is looked at and filed back once
      * per round, which the round's releases (about as many as the buckets) pay for.
      */
-    static final class Calendar {
+    public static final class Calendar {
         /** Per entry: its job count, and the largest window it holds for: ceil((w + J) / T) = jobs while w &lt;= limit. */
         final long[] jobs;
         final long[] limit;
@@ -142,7 +142,8 @@ final class Interference {
         long passed;
         long looked;
 
-        Calendar(int size) {
+        /** For {@code size} entries, with at least twice as many buckets, all empty. */
+        public Calendar(int size) {
             jobs = new long[size];
             limit = new long[size];
             next = new int[size];
@@ -151,29 +152,67 @@ final class Interference {
             java.util.Arrays.fill(head, -1);
         }
 
+        /** Entry k's job count, as last counted. */
+        public long jobs(int k) {
+            return jobs[k];
+        }
+
+        /** The largest window entry k's job count holds for. */
+        public long limit(int k) {
+            return limit[k];
+        }
+
+        /** The number of buckets, a power of two. */
+        public int buckets() {
+            return head.length;
+        }
+
+        /** The width of a bucket is 2^shift ns. */
+        public int shift() {
+            return shift;
+        }
+
+        /** Entries recounted so far. */
+        public long steps() {
+            return steps;
+        }
+
+        /** Buckets passed so far. */
+        public long passed() {
+            return passed;
+        }
+
+        /** Entries looked at so far in the buckets passed (recounted or filed back). */
+        public long looked() {
+            return looked;
+        }
+
         /** The shift whose buckets are no wider than the mean gap between releases, 1 / rate. */
-        static int shiftFor(double rate) {
+        public static int shiftFor(double rate) {
             double gap = 1 / rate;
             return gap >= 0x1p62 ? 62 : Math.max(0, 63 - Long.numberOfLeadingZeros(Math.max(1, (long) gap)));
         }
 
         /** Empty, with buckets of width 2^shift. */
-        void cut(int shift) {
+        public void cut(int shift) {
             java.util.Arrays.fill(head, -1);
             this.shift = shift;
         }
 
-        int bucket(long limit) {
+        /** The bucket a limit is filed in. */
+        public int bucket(long limit) {
             return (int) (limit >> shift) & mask;
         }
 
-        void count(int k, long window, long[] period, long[] jitter) {
+        /** Entry k's job count at {@code window}, ceil((window + J_k) / T_k), and the largest window it holds for. */
+        public void count(int k, long window, long[] period, long[] jitter) {
             long x = Math.addExact(window, jitter[k]);
             jobs[k] = x / period[k] + (x % period[k] == 0 ? 0 : 1);
             limit[k] = Math.subtractExact(Math.multiplyExact(jobs[k], period[k]), jitter[k]);
         }
 
-        void file(int k) {
+        /** Entry k filed in the bucket of its limit. */
+        public void file(int k) {
             int b = bucket(limit[k]);
             next[k] = head[b];
             head[b] = k;
@@ -184,7 +223,7 @@ final class Interference {
          * below the window, which lie in the buckets from w's to (window - 1)'s (a round at most), recounted; the
          * interference {@code sum} changed by their new jobs.
          */
-        long advance(long w, long window, long[] period, long[] jitter, long[] cost, long sum) {
+        public long advance(long w, long window, long[] period, long[] jitter, long[] cost, long sum) {
             if (window == w) {
                 return sum;
             }
@@ -219,7 +258,7 @@ final class Interference {
      * from them (marked taken) into a calendar of its own, cut as the first's, with its new count. No
      * copy of every entry: a step costs O(1) per entry whose count changes and per bucket passed.
      */
-    static final class Later {
+    public static final class Later {
         private final Interference first;
         private final Calendar own;
         /** The mark of the entries taken from the first since {@link #start}, and the entries taken, in order. */
@@ -236,7 +275,7 @@ final class Interference {
         /** Counted for {@link AnalysisCounts}, as the first's. */
         long evaluations;
 
-        Later(Interference first) {
+        public Later(Interference first) {
             this.first = first;
             int size = first.period.length;
             this.own = new Calendar(size);
@@ -245,7 +284,7 @@ final class Interference {
         }
 
         /** The calendar of the entries taken, whose counts {@link AnalysisCounts} adds up. */
-        Calendar calendar() {
+        public Calendar calendar() {
             return own;
         }
 
@@ -258,7 +297,7 @@ final class Interference {
         }
 
         /** From the first's present window and counts. */
-        void start() {
+        public void start() {
             empty();
             if (++mark == 0) {
                 java.util.Arrays.fill(taken, 0);
@@ -272,7 +311,7 @@ final class Interference {
         }
 
         /** The interference in a window of length {@code window}. */
-        long at(long window) {
+        public long at(long window) {
             try {
                 return advance(window);
             } catch (ArithmeticException e) {

@@ -117,7 +117,11 @@ final class LatencyCheck {
                 if (worst != null && !listed.contains(worst)) {
                     List<PathBound> more = new ArrayList<>(listed);
                     more.add(0, worst);
-                    listed = more.subList(0, Math.min(more.size(), LatencyResult.MAX_LISTED_PATHS));
+                    long stages = more.stream().mapToLong(b -> b.hops().size()).sum();
+                    while (more.size() > 1 && (more.size() > LatencyResult.MAX_LISTED_PATHS || stages > LatencyResult.MAX_LISTED_STAGES)) {
+                        stages -= more.remove(more.size() - 1).hops().size();
+                    }
+                    listed = more;
                 }
                 paths = (int) Math.min(Integer.MAX_VALUE, Math.max(paths, dp.bounded()));
                 mayBeUnbounded = dp.mayPassUnbounded();
@@ -154,8 +158,18 @@ final class LatencyCheck {
                             : (paths == 1 ? "path" : "paths") + " through " + String.join(", then ", through))
                     + ", within " + RsamlTimes.text(maxNs);
         }
+        String unlisted = "";
+        if (cut) {
+            unlisted = "the paths were followed one by one for " + search.maxSteps() + " steps, " + search.paths() + " of them to the target;"
+                    + (exact ? " the others were counted (" + paths + " in all) and the worst found by a longest-path computation, which"
+                            + " does not list them: listed are the longest of those followed, and the worst"
+                            : " the others were not followed: listed are the longest of those followed");
+        } else if (paths > listed.size()) {
+            unlisted = "the " + listed.size() + " longest of " + paths + " are listed (at most " + LatencyResult.MAX_LISTED_PATHS
+                    + " paths of " + LatencyResult.MAX_LISTED_STAGES + " stages in all)";
+        }
         return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, worstReaction, worstAge,
-                worstPath, paths, explanation, through, listed);
+                worstPath, paths, explanation, through, listed, unlisted);
     }
 
     private LatencyResult fail(String name, String from, String to, long maxNs, boolean age, String why) {

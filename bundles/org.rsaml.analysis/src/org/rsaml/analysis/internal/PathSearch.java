@@ -60,6 +60,9 @@ final class PathSearch {
      */
     private final Map<PlannedModule, Integer> reaching;
     private int paths;
+    /** The stages of the paths listed, and whether a path was left off the list. */
+    private long listedStages;
+    private boolean listFull;
     private int work;
     private long worstReaction = -1;
     private long worstAge = -1;
@@ -82,7 +85,7 @@ final class PathSearch {
         this.via = via;
         this.actuator = actuator;
         this.entry = entry;
-        this.longest = Comparator.comparingLong((PathBound b) -> b.bounded() ? (age ? b.dataAgeNs() : b.reactionNs()) : Long.MAX_VALUE);
+        this.longest = Comparator.comparingLong(this::key);
         this.listed = new PriorityQueue<>(longest);
         this.reaching = reaching();
     }
@@ -136,11 +139,36 @@ final class PathSearch {
         return out;
     }
 
-    private void list(PathBound b) {
-        listed.add(b);
-        if (listed.size() > LatencyResult.MAX_LISTED_PATHS) {
-            listed.poll();
+    /**
+     * A path reaching the target, listed when it is among the longest so far: at most {@link LatencyResult#MAX_LISTED_PATHS},
+     * and at most {@link LatencyResult#MAX_LISTED_STAGES} stages in all (long paths: fewer of them). A path that would be
+     * dropped at once is not copied: a path costs its copy only when listed.
+     */
+    private void list(long key, long reaction, long dataAge, String why) {
+        if (listed.size() >= LatencyResult.MAX_LISTED_PATHS || listedStages + hops.size() > LatencyResult.MAX_LISTED_STAGES) {
+            PathBound shortest = listed.peek();
+            if (shortest == null || key <= key(shortest)) {
+                listFull = true;
+                return;
+            }
         }
+        PathBound b = new PathBound(hops, reaction, dataAge, why);
+        listed.add(b);
+        listedStages += b.hops().size();
+        while (listed.size() > 1 && (listed.size() > LatencyResult.MAX_LISTED_PATHS || listedStages > LatencyResult.MAX_LISTED_STAGES)) {
+            listedStages -= listed.poll().hops().size();
+            listFull = true;
+        }
+    }
+
+    /** A path's place in the list: its bound for the requirement's kind; a path without a bound is the longest. */
+    private long key(PathBound b) {
+        return b.bounded() ? (age ? b.dataAgeNs() : b.reactionNs()) : Long.MAX_VALUE;
+    }
+
+    /** Whether some path reaching the target was left off the list (or dropped from it). */
+    boolean listFull() {
+        return listFull;
     }
 
     /**
@@ -379,7 +407,7 @@ final class PathSearch {
             if (unbounded == null) {
                 unbounded = pathUnbounded;
             }
-            list(new PathBound(hops, -1, -1, pathUnbounded));
+            list(Long.MAX_VALUE, -1, -1, pathUnbounded);
             return;
         }
         long reaction = 0;
@@ -387,7 +415,7 @@ final class PathSearch {
             reaction = Math.addExact(reaction, h.totalNs());
         }
         long dataAge = Math.addExact(reaction, lastPeriod);
-        list(new PathBound(hops, reaction, dataAge, null));
+        list(age ? dataAge : reaction, reaction, dataAge, null);
         if (reaction > worstReaction || dataAge > worstAge) {
             if (age ? dataAge > worstAge : reaction > worstReaction) {
                 worstPath = List.copyOf(hops);

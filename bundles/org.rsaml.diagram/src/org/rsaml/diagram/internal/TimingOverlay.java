@@ -11,12 +11,14 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.function.BinaryOperator;
 
 import org.eclipse.emf.ecore.EObject;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.Exclusion;
 import org.rsaml.analysis.Hop;
 import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.PathBound;
 import org.rsaml.analysis.ProcessorResult;
 import org.rsaml.analysis.ProcessorTiming;
 import org.rsaml.analysis.TaskResult;
@@ -194,16 +196,70 @@ public final class TimingOverlay implements DiagramOverlay {
         if (!l.via().isEmpty()) {
             details.add("the paths through " + String.join(", then ", l.via()));
         }
-        if (l.pathBounds().size() > 1 || l.paths() > l.pathBounds().size()) {
-            details.add("every path, the longest first" + (l.paths() > l.pathBounds().size()
-                    ? " (the " + l.pathBounds().size() + " longest of " + l.paths() + ")" : "") + ":");
-            for (org.rsaml.analysis.PathBound b : l.pathBounds()) {
+        if (l.pathBounds().size() > 1 || !l.unlisted().isEmpty()) {
+            details.add(l.pathsHeading(LatencyResult.SHOWN_PATHS));
+            for (PathBound b : l.pathBounds().subList(0, Math.min(LatencyResult.SHOWN_PATHS, l.pathBounds().size()))) {
                 details.add("- " + b.text() + ": " + (b.bounded() ? "reaction time " + RsamlTimes.text(b.reactionNs()) + ", data age "
                         + RsamlTimes.text(b.dataAgeNs()) : "no bound (" + b.unbounded() + ")"));
             }
+            edgeWorst(architecture, l);
         }
         items.add(new Item(SECTION, line, details, path));
     }
+
+    /**
+     * Per module and connection on any listed path of the requirement, the worst bound of the listed paths
+     * through it (data attribute {@code latency-worst}, {@code name: 1.2 s}); a module off the worst path
+     * also gets it as a line, so that the diagram shows what each branch takes, not only the worst one.
+     */
+    private void edgeWorst(Architecture architecture, LatencyResult l) {
+        Map<String, Long> worst = new LinkedHashMap<>();
+        Map<List<Module>, Long> pairs = new LinkedHashMap<>();
+        Set<Module> onWorst = new LinkedHashSet<>();
+        l.worstPath().forEach(h -> onWorst.add(h.module()));
+        Set<String> offWorst = new LinkedHashSet<>();
+        for (PathBound b : l.pathBounds()) {
+            long bound = b.bounded() ? (l.dataAge() ? b.dataAgeNs() : b.reactionNs()) : -1;
+            Module before = null;
+            for (Hop h : b.hops()) {
+                Module m = h.module();
+                if (m == null) {
+                    before = null;
+                    continue;
+                }
+                worst.merge(RsamlLabels.qualifiedName(m), bound, WORSE);
+                if (!onWorst.contains(m)) {
+                    offWorst.add(RsamlLabels.qualifiedName(m));
+                }
+                if (before != null && before != m) {
+                    pairs.merge(List.of(before, m), bound, WORSE);
+                }
+                before = m;
+            }
+        }
+        // each connection's worst over the pairs of modules it joins (one pass over the connections)
+        for (Connection c : architecture.getConnections()) {
+            Port s = c.getSource();
+            Port t = c.getTarget();
+            if (s != null && t != null && s.eContainer() instanceof Module from && t.eContainer() instanceof Module to) {
+                Long bound = pairs.get(List.of(from, to));
+                if (bound != null) {
+                    worst.merge(RsamlLabels.qualifiedName(c), bound, WORSE);
+                }
+            }
+        }
+        String paths = l.unlisted().isEmpty() ? "the paths" : "the listed paths";
+        worst.forEach((element, ns) -> {
+            String text = ns < 0 ? "no bound" : RsamlTimes.text(ns);
+            data.computeIfAbsent(element, k -> new TreeMap<>()).merge("latency-worst", l.name() + ": " + text, (a, b) -> a + ", " + b);
+            if (offWorst.contains(element)) {
+                add(element, Line.plain(l.name() + ": " + paths + " through here take at most " + text));
+            }
+        });
+    }
+
+    /** The larger of two bounds, no bound (-1) the largest. */
+    private static final BinaryOperator<Long> WORSE = (a, b) -> a < 0 || b < 0 ? -1L : Math.max(a, b);
 
     /** The connections from {@code port} (or any output port of {@code from}) to an entry port of {@code to}. */
     private static void connections(Architecture architecture, Port port, Module from, Module to, Set<String> on) {

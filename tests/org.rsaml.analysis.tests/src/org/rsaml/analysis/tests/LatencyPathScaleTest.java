@@ -18,6 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.analysis.ArchitectureTiming;
 import org.rsaml.analysis.Hop;
 import org.rsaml.analysis.LatencyResult;
+import org.rsaml.analysis.PathBound;
 import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.analysis.TimingText;
 import org.rsaml.analysis.Verdict;
@@ -26,7 +27,8 @@ import org.rsaml.validation.ModelLoader;
 /**
  * Latency requirements over more paths than can be followed one by one: a ladder of 30 rungs (2^30 paths)
  * is bounded exactly, and dense clusters of reacting modules, whose paths mostly end before the target,
- * get a verdict instead of a search that never ends.
+ * get a verdict instead of a search that never ends; up to 10,000 paths are listed each with its bound, the
+ * longest first, and past that the result says which are listed.
  */
 class LatencyPathScaleTest {
 
@@ -66,9 +68,8 @@ class LatencyPathScaleTest {
         return TimingAnalysis.analyse(ModelLoader.load(file, name).architecture());
     }
 
-    @Test
-    void aLadderOfThirtyRungsIsBoundedExactlyOverItsTwoToTheThirtyPaths(@TempDir Path tmp) throws Exception {
-        int rungs = 30;
+    /** A ladder: e feeds a0 and b0, each of a_i and b_i feeds a_(i+1) and b_(i+1), the last two feed the actuator's module. */
+    private static String ladder(int rungs) {
         List<String> modules = new ArrayList<>(List.of(timed()));
         List<String[]> connections = new ArrayList<>();
         List<String> before = List.of("e");
@@ -84,7 +85,13 @@ class LatencyPathScaleTest {
         }
         modules.add(reacting("act", "100.0", true));
         before.forEach(from -> connections.add(new String[] { from, "act" }));
-        ArchitectureTiming timing = analyse(tmp, "ladder.rsaml", model(modules, connections));
+        return model(modules, connections);
+    }
+
+    @Test
+    void aLadderOfThirtyRungsIsBoundedExactlyOverItsTwoToTheThirtyPaths(@TempDir Path tmp) throws Exception {
+        int rungs = 30;
+        ArchitectureTiming timing = analyse(tmp, "ladder.rsaml", ladder(rungs));
         LatencyResult l = timing.latencies().get(0);
         assertEquals(Verdict.MEETS, l.verdict(), l.explanation());
         assertEquals(1 << rungs, l.paths(), "every path is counted: " + l.explanation());
@@ -98,6 +105,78 @@ class LatencyPathScaleTest {
         assertTrue(l.reactionNs() > rungs * 1_000_000_000L, "each a waits up to 1 s: " + l.reactionNs());
         assertEquals(l.reactionNs(), l.pathBounds().get(0).reactionNs(), "the worst path is listed first: " + l.pathBounds().get(0));
         assertTrue(l.explanation().contains("over " + (1 << rungs) + " paths"), l.explanation());
+    }
+
+    /** How many of a path's stages are a modules (the slower ones to wait for: a longer path has more). */
+    private static long slowStages(PathBound b) {
+        return b.hops().stream().filter(h -> h.label().matches("l/a\\d+")).count();
+    }
+
+    /**
+     * 4,096 paths, fewer than the listing's limit: each is listed once with its bound, the longest first, while the text
+     * shows the 10 longest and says how many there are and where all are listed.
+     */
+    @Test
+    void everyPathOfATwelveRungLadderIsListedAndTheTextSaysWhereToFindThem(@TempDir Path tmp) throws Exception {
+        ArchitectureTiming timing = analyse(tmp, "ladder12.rsaml", ladder(12));
+        LatencyResult l = timing.latencies().get(0);
+        assertEquals(4096, l.paths(), "every path is counted: " + l.explanation());
+        assertEquals(4096, l.pathBounds().size(), "every path is listed, none left out");
+        assertEquals("", l.unlisted(), "nothing is said to be left out when all are listed");
+        assertEquals(4096, l.pathBounds().stream().map(PathBound::text).distinct().count(), "each path is listed once");
+        for (int i = 1; i < l.pathBounds().size(); i++) {
+            assertTrue(l.pathBounds().get(i - 1).reactionNs() >= l.pathBounds().get(i).reactionNs(),
+                    "the longest first, at " + i + ": " + l.pathBounds().get(i - 1) + " before " + l.pathBounds().get(i));
+        }
+        String text = TimingText.render("ladder12.rsaml", timing);
+        assertTrue(text.contains("  the 10 longest of 4096 paths (rsaml analyze --format json lists all 4096):\n"), text);
+        String list = text.substring(text.indexOf("longest of 4096 paths"));
+        assertEquals(10, list.lines().filter(line -> line.startsWith("    l/e +")).count(), "the text shows 10 paths:\n" + list);
+    }
+
+    /**
+     * 16,384 paths, more than the 10,000 listed: the listed ones are the longest (every path with 7 or more of the 14
+     * slower stages, and 92 of the 3,003 with 6), and the result says the others are counted, not listed.
+     */
+    @Test
+    void pastTheListingLimitTheLongestPathsAreListedAndTheRestCounted(@TempDir Path tmp) throws Exception {
+        ArchitectureTiming timing = analyse(tmp, "ladder14.rsaml", ladder(14));
+        LatencyResult l = timing.latencies().get(0);
+        assertEquals(16384, l.paths(), "every path is counted: " + l.explanation());
+        assertEquals(LatencyResult.MAX_LISTED_PATHS, l.pathBounds().size(), "the listing stops at its limit");
+        assertEquals("the 10000 longest of 16384 are listed (at most 10000 paths of 1000000 stages in all)", l.unlisted(), "the result says what is left out");
+        // paths with k slower stages: C(14, k); the 10,000 longest are those with k >= 7 (9,908) and 92 with k = 6
+        long[] binomial = { 1, 14, 91, 364, 1001, 2002, 3003, 3432, 3003, 2002, 1001, 364, 91, 14, 1 };
+        long[] listed = new long[15];
+        l.pathBounds().forEach(b -> listed[(int) slowStages(b)]++);
+        for (int k = 7; k <= 14; k++) {
+            assertEquals(binomial[k], listed[k], "every path with " + k + " slower stages is among the longest listed");
+        }
+        assertEquals(92, listed[6], "the rest of the 10,000 have 6 slower stages");
+        for (int k = 0; k < 6; k++) {
+            assertEquals(0, listed[k], "no shorter path with " + k + " slower stages is listed");
+        }
+        String text = TimingText.render("ladder14.rsaml", timing);
+        assertTrue(text.contains("  the 10 longest paths listed (rsaml analyze --format json lists 10000; the 10000 longest of 16384"
+                + " are listed (at most 10000 paths of 1000000 stages in all)):\n"), text);
+    }
+
+    /**
+     * A ladder of 200 rungs: its search stops after 1,000,000 steps, and the paths it followed, 202 stages each, are listed
+     * within the 1,000,000 stages the list holds, the worst first; the result says so.
+     */
+    @Test
+    void longPathsAreListedWithinTheStagesTheListHoldsAndACutSearchSaysWhichAreListed(@TempDir Path tmp) throws Exception {
+        ArchitectureTiming timing = analyse(tmp, "ladder200.rsaml", ladder(200));
+        LatencyResult l = timing.latencies().get(0);
+        assertEquals(Verdict.MISSES, l.verdict(), "200 stages of up to 1 s exceed the 100 s allowed: " + l.explanation());
+        assertTrue(l.reactionNs() > 200 * 1_000_000_000L, "the worst path waits for every a: " + l.reactionNs());
+        long stages = l.pathBounds().stream().mapToLong(b -> b.hops().size()).sum();
+        assertTrue(stages <= LatencyResult.MAX_LISTED_STAGES && l.pathBounds().size() >= 1_000,
+                "within the list's stages, as many paths as fit: " + l.pathBounds().size() + " paths, " + stages + " stages");
+        assertEquals(l.reactionNs(), l.pathBounds().get(0).reactionNs(), "the worst path, found past the search, is listed first");
+        assertTrue(l.unlisted().startsWith("the paths were followed one by one for 1000000 steps, ")
+                && l.unlisted().contains("listed are the longest of those followed, and the worst"), l.unlisted());
     }
 
     /** The timed module e feeds c0 of a clique of reacting modules (each feeds every other); only c1 feeds the actuator's. */

@@ -58,6 +58,9 @@ class AnalyzeCommandTest {
         assertEquals("scanToWheels", all.get("requirement").getAsString(), "the first latency is the model's first requirement");
         JsonArray every = all.getAsJsonArray("everyPath");
         assertEquals(3, every.size(), all.toString());
+        assertEquals(3, all.get("pathsListed").getAsInt(), "the JSON says how many paths it lists: " + all);
+        assertEquals(all.get("paths").getAsInt(), every.size(), "every path counted is listed: " + all);
+        assertTrue(!all.has("pathsNotListed"), "nothing is said to be left out when every path is listed: " + all);
         assertEquals(1_227_000_000L, every.get(0).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
         assertEquals(33_000_000L, every.get(2).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
         assertEquals("deliberative/monitor.halt",

@@ -156,6 +156,34 @@ class TimingOverlayTest {
                 "the safety requirement's named path");
     }
 
+    /**
+     * Beside the worst path, each branch shows what it takes: every module and connection on a path of the requirement carries
+     * the worst bound of the paths through it, and a module off the worst path says it in a line.
+     */
+    @Test
+    void eachModuleAndConnectionOnAPathCarriesTheWorstBoundThroughIt() throws Exception {
+        String name = "latency-named-paths.rsaml";
+        LoadedModel model = ModelLoader.load(TestRepository.resource("org.rsaml.analysis.tests", name), name);
+        String root = model.architecture().getName();
+        SvgDocument svg = new SvgDocument(new RsamlDiagrams(DiagramView.ARCHITECTURE).timing(TimingMode.AUTO)
+                .svg(model.architecture(), RsamlModelValidator.validate(model)));
+        // scanToWheels: planner, avoid, drive 1.227 s (the worst); detector, avoid, drive 132 ms; monitor, halt, drive 33 ms
+        assertEquals("scanToWheels: 132 ms", svg.byQname(root + "/reactive/detector").data().get("latency-worst"),
+                "the detector's branch takes 132 ms");
+        assertEquals("scanToWheels: 33 ms", svg.byQname(root + "/deliberative/monitor").data().get("latency-worst"),
+                "the monitor's branch, through the inhibitor, takes 33 ms");
+        assertEquals("scanToWheels: 1.227 s", svg.byQname(root + "/reactive/avoid").data().get("latency-worst"),
+                "avoid is on the worst path too: its worst is the requirement's");
+        List<String> detector = svg.byQname(root + "/reactive/detector").texts().stream().map(SvgDocument.Text::text).toList();
+        assertTrue(detector.contains("scanToWheels: the paths through here take at most 132 ms"), "the detector's line: " + detector);
+        List<String> planner = svg.byQname(root + "/deliberative/planner").texts().stream().map(SvgDocument.Text::text).toList();
+        assertFalse(planner.stream().anyMatch(t -> t.contains("paths through here")), "the worst path's modules show their hops: " + planner);
+        SvgDocument.Link fromDetector = svg.links.stream().filter(l -> module(l.source()).equals(root + "/reactive/detector")
+                && module(l.target()).equals(root + "/reactive/avoid")).findFirst()
+                .orElseThrow(() -> new AssertionError("the detector's connection to avoid is drawn"));
+        assertEquals("scanToWheels: 132 ms", fromDetector.data().get("latency-worst"), "the connection's worst is its branch's: " + fromDetector);
+    }
+
     @Test
     void aMetRequirementsPathIsDrawnWithoutTheMissStyle() throws Exception {
         Analysed a = analyse("mobile-base-latency.rsaml", TimingMode.AUTO);
