@@ -27,8 +27,10 @@ import java.util.concurrent.ThreadLocalRandom;
  * The one way RsaML writes a file it produces (a report, a diagram, a timeline, a converted model): into a hidden
  * temporary file beside it, then moved over it, so a reader never sees half a file and a failure leaves the old one. A
  * new file gets the permissions any program's output gets (those the umask allows; {@code Files.createTempFile} would
- * make it owner-only), since CI often reads it as another user; a file replaced keeps its own, and one reached through
- * a symbolic link is replaced where the link points, the link kept.
+ * make it owner-only), since CI often reads it as another user; a file replaced keeps its own. A file reached through a
+ * symbolic link is written where the link points, the link kept, whether the file there exists yet or not (as a shell's
+ * {@code >} writes through a link); a link whose target's folder does not exist, or a loop of links, is refused with a
+ * reason naming where it leads.
  */
 public final class AtomicFiles {
 
@@ -54,6 +56,7 @@ public final class AtomicFiles {
     public static void write(Path file, Content content) throws IOException {
         Path target = file.toAbsolutePath();
         Files.createDirectories(target.getParent());
+        target = throughLinks(target);
         if (Files.isDirectory(target)) {
             throw new FileSystemException(target.toString(), null, "it is a directory");
         }
@@ -67,7 +70,16 @@ public final class AtomicFiles {
             }
         }
         Path dir = target.getParent();
-        Path temp = newTemp(dir, target.getFileName().toString());
+        Path temp;
+        try {
+            temp = newTemp(dir, target.getFileName().toString());
+        } catch (FileSystemException e) {
+            // The hidden temporary file is no name the user knows: the failure is said of the file they asked for.
+            FileSystemException named = new FileSystemException(file.toString(), null,
+                    reason(e, e.getFile() == null ? null : Path.of(e.getFile())) + ": no file can be created in " + dir);
+            named.initCause(e);
+            throw named;
+        }
         try {
             try (Writer out = Files.newBufferedWriter(temp, StandardCharsets.UTF_8)) {
                 content.writeTo(out);
@@ -83,6 +95,31 @@ public final class AtomicFiles {
         } finally {
             Files.deleteIfExists(temp);
         }
+    }
+
+    /**
+     * Where a write to {@code path} lands: {@code path} itself, or, when it is a symbolic link (to a file that exists or
+     * not yet), the path the links lead to.
+     */
+    private static Path throughLinks(Path path) throws IOException {
+        Path at = path;
+        for (int hops = 0; Files.isSymbolicLink(at); hops++) {
+            if (hops == 40) {
+                throw new FileSystemException(path.toString(), null, "too many levels of symbolic links (a loop of links?)");
+            }
+            Path link = Files.readSymbolicLink(at);
+            Path folder = at.getParent();
+            Path leadsTo = folder.resolve(link);
+            if (leadsTo.getParent() == null) {
+                return leadsTo; // the root folder, refused as a directory
+            }
+            if (!Files.isDirectory(leadsTo.getParent())) {
+                throw new FileSystemException(path.toString(), null, "it is a symbolic link to " + leadsTo.normalize()
+                        + ", whose folder does not exist; create the folder or remove the link");
+            }
+            at = leadsTo.getParent().toRealPath().resolve(leadsTo.getFileName());
+        }
+        return at;
     }
 
     /** A new, empty, hidden file beside the target, created as an ordinary file is. */

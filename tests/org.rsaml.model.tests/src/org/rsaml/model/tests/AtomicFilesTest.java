@@ -81,4 +81,48 @@ class AtomicFilesTest {
             assertEquals(List.of(real), files.toList(), "no temporary file is left beside it");
         }
     }
+
+    @Test
+    void aLinkToAFileNotYetThereIsWrittenThroughLikeALiveOne(@TempDir Path dir) throws Exception {
+        // As after 'ln -s ../shared/report.json out/report.json' before the first run: the report goes where the link
+        // points, as it does once the file is there, and the link stays a link.
+        Path shared = Files.createDirectories(dir.resolve("shared"));
+        Path link = Files.createSymbolicLink(Files.createDirectories(dir.resolve("out")).resolve("report.json"), Path.of("../shared/report.json"));
+        AtomicFiles.writeString(link, "first");
+        assertTrue(Files.isSymbolicLink(link), "the dangling link is still a link, not replaced by a regular file");
+        assertEquals("first", Files.readString(shared.resolve("report.json")), "the file is made where the link points");
+        AtomicFiles.writeString(link, "second");
+        assertEquals("second", Files.readString(shared.resolve("report.json")), "and replaced there the next time");
+        try (Stream<Path> files = Files.list(dir.resolve("out"))) {
+            assertEquals(List.of(link), files.toList(), "nothing beside the link");
+        }
+    }
+
+    @Test
+    void aLinkIntoAMissingFolderOrALoopOfLinksIsRefusedNamingWhereItLeads(@TempDir Path dir) throws Exception {
+        Path link = Files.createSymbolicLink(dir.resolve("timeline.svg"), Path.of("gone/timeline.svg"));
+        FileSystemException e = assertThrows(FileSystemException.class, () -> AtomicFiles.writeString(link, "<svg/>"),
+                "a link into a folder that does not exist is refused");
+        assertEquals("it is a symbolic link to " + dir.toAbsolutePath().resolve("gone/timeline.svg")
+                + ", whose folder does not exist; create the folder or remove the link", AtomicFiles.reason(e, link),
+                "the reason names where the link leads and what to do");
+        assertTrue(Files.isSymbolicLink(link) && !Files.exists(dir.resolve("gone")), "the link is kept and no folder is made elsewhere");
+
+        Path a = Files.createSymbolicLink(dir.resolve("a.json"), Path.of("b.json"));
+        Files.createSymbolicLink(dir.resolve("b.json"), Path.of("a.json"));
+        FileSystemException loop = assertThrows(FileSystemException.class, () -> AtomicFiles.writeString(a, "{}"), "a loop of links is refused");
+        assertEquals("too many levels of symbolic links (a loop of links?)", AtomicFiles.reason(loop, a), "the reason says it is a loop");
+        assertTrue(Files.isSymbolicLink(a), "the links are kept");
+    }
+
+    @Test
+    void aFolderWhereNoFileCanBeMadeIsNamedNotTheHiddenTemporaryFile() throws Exception {
+        // /proc takes no new files, whoever asks (permissions would not stop root): the failure is said of the
+        // report and its folder, not of the hidden temporary file the user never asked for.
+        Path file = Path.of("/proc/report.sarif");
+        FileSystemException e = assertThrows(FileSystemException.class, () -> AtomicFiles.writeString(file, "{}"),
+                "a folder where no file can be made fails the write");
+        assertEquals("no such file or directory: no file can be created in /proc", AtomicFiles.reason(e, file),
+                "the reason names the folder and no temporary file");
+    }
 }
