@@ -6,12 +6,15 @@ package org.rsaml.report;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.file.FileVisitResult;
+import java.nio.file.DirectoryIteratorException;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.SimpleFileVisitor;
-import java.nio.file.attribute.BasicFileAttributes;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Deque;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -117,33 +120,33 @@ public final class ModelFiles {
     }
 
     /**
-     * Whether a directory holds a model file as {@link #modelsUnder} finds them (hidden folders skipped, its own links
-     * to directories not followed), stopping at the first: the directory may be a large tree outside the folder.
+     * Whether a directory holds a model file as {@link #modelsUnder} finds them (hidden files and folders skipped, its
+     * own links to directories not followed), stopping at the first. The directory may be a large tree outside the
+     * folder (a link to a home folder or a data set), so it is looked into level by level: a folder's own files before
+     * any folder below it, and no folder below the level of the first model is read.
      */
     private static boolean hasModels(Path directory) {
-        boolean[] found = { false };
-        try {
-            Files.walkFileTree(directory, new SimpleFileVisitor<>() {
-                @Override
-                public FileVisitResult preVisitDirectory(Path dir, BasicFileAttributes attrs) {
-                    return hiddenBelow(directory, dir) ? FileVisitResult.SKIP_SUBTREE : FileVisitResult.CONTINUE;
+        Deque<Path> folders = new ArrayDeque<>(List.of(directory));
+        while (!folders.isEmpty()) {
+            List<Path> below = new ArrayList<>();
+            try (DirectoryStream<Path> entries = Files.newDirectoryStream(folders.removeFirst())) {
+                for (Path entry : entries) {
+                    if (entry.getFileName().toString().startsWith(".")) {
+                        continue;
+                    }
+                    if (Files.isDirectory(entry, LinkOption.NOFOLLOW_LINKS)) {
+                        below.add(entry);
+                    } else if (isModel(entry)) {
+                        return true;
+                    }
                 }
-
-                @Override
-                public FileVisitResult visitFile(Path file, BasicFileAttributes attrs) {
-                    found[0] = !hiddenBelow(directory, file) && isModel(file);
-                    return found[0] ? FileVisitResult.TERMINATE : FileVisitResult.CONTINUE;
-                }
-
-                @Override
-                public FileVisitResult visitFileFailed(Path file, IOException e) {
-                    return FileVisitResult.CONTINUE; // an unreadable part hides no model elsewhere
-                }
-            });
-        } catch (IOException e) {
-            return false;
+            } catch (IOException | DirectoryIteratorException e) {
+                // an unreadable part hides no model elsewhere
+            }
+            Collections.sort(below);
+            folders.addAll(below);
         }
-        return found[0];
+        return false;
     }
 
     private static Path realPath(Path path) {

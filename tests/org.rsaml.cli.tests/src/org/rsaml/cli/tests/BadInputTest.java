@@ -157,6 +157,48 @@ class BadInputTest {
         assertNoStackTrace(r);
     }
 
+    @Test
+    void aDirectoryLinkOutOfTheFolderIsLookedIntoOnlyUpToItsFirstModel(@TempDir Path dir) throws Exception {
+        // As after 'ln -s ~ models/home': the tree the link leads to may be huge (data sets, caches); one model in it
+        // is enough to refuse the link, so no folder below the level of that model is read.
+        Path outside = Files.createDirectories(dir.resolve("elsewhere"));
+        Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), outside.resolve("robot.rsaml"));
+        List<Path> below = new java.util.ArrayList<>();
+        for (int i = 0; i < 8; i++) {
+            Path data = Files.createDirectories(outside.resolve("data" + i + "/sets"));
+            Files.copy(Cli.INPUTS.resolve("clean.rsaml"), data.resolve("deep.rsaml"));
+            below.add(data.getParent());
+            below.add(data);
+        }
+        Path folder = Files.createDirectories(dir.resolve("models"));
+        Files.copy(Cli.INPUTS.resolve("clean.rsaml"), folder.resolve("clean.rsaml"));
+        Files.createSymbolicLink(folder.resolve("home"), outside);
+        // A folder's access time moves when it is read (relatime: at least when it is older than a day).
+        java.nio.file.attribute.FileTime past = java.nio.file.attribute.FileTime.from(java.time.Instant.parse("2001-01-01T00:00:00Z"));
+        Path control = Files.createDirectories(dir.resolve("control"));
+        for (Path p : java.util.stream.Stream.concat(below.stream(), java.util.stream.Stream.of(control)).toList()) {
+            Files.getFileAttributeView(p, java.nio.file.attribute.BasicFileAttributeView.class).setTimes(null, past, null);
+        }
+        try (var listed = Files.list(control)) {
+            listed.count();
+        }
+        boolean recorded = !past.equals(Files.readAttributes(control, java.nio.file.attribute.BasicFileAttributes.class).lastAccessTime());
+
+        Cli.Result r = Cli.runIn(dir, "validate", "models");
+        assertEquals(2, r.code(), r::toString);
+        assertTrue(r.out().contains("models/home: error: refused: a symbolic link to a directory leads out of the folder 'models'"), r::toString);
+        assertEquals("1 file checked: 0 errors, 0 warnings; 1 input could not be read", r.outLines().get(r.outLines().size() - 1), r::toString);
+        if (!recorded) {
+            System.err.println("BadInputTest: this file system does not record when a folder is read (mounted noatime):"
+                    + " that the linked tree below its first model is left unread is not checked here");
+            return;
+        }
+        for (Path p : below) {
+            assertEquals(past, Files.readAttributes(p, java.nio.file.attribute.BasicFileAttributes.class).lastAccessTime(),
+                    () -> dir.relativize(p) + " was not read: the model beside it was enough to refuse the link");
+        }
+    }
+
     /**
      * A model that fits the heap is read under every collector: the check that gives up before the
      * collector thrashes looks at what the old generation keeps after a collection, not at the young
