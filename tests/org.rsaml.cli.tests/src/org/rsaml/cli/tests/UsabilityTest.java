@@ -51,6 +51,27 @@ class UsabilityTest {
     }
 
     @Test
+    void aReportPathThatIsALinkIsWrittenWhereItPointsOrRefusedNamingWhere(@TempDir Path dir) throws Exception {
+        // As after 'ln -s ../shared/rsaml.sarif ci/rsaml.sarif' before the first run: the report is made where the link
+        // points and the link stays; a link into a folder that is not there is refused, saying where it leads.
+        Path shared = Files.createDirectories(dir.resolve("shared"));
+        Path ci = Files.createDirectories(dir.resolve("ci"));
+        Files.createSymbolicLink(ci.resolve("rsaml.sarif"), Path.of("../shared/rsaml.sarif"));
+        Files.createSymbolicLink(ci.resolve("rsaml.json"), Path.of("../gone/rsaml.json"));
+        String model = Cli.ROOT.resolve("examples/exp1-hybrid.rsaml").toString();
+        Cli.Result r = Cli.runIn(dir, "validate", "--output", "ci/rsaml.sarif", model);
+        assertEquals(0, r.code(), r::toString);
+        assertTrue(Files.isSymbolicLink(ci.resolve("rsaml.sarif")), "the link is still a link, not replaced by the report");
+        assertTrue(Files.readString(shared.resolve("rsaml.sarif")).contains("\"version\": \"2.1.0\""), "the SARIF report is where the link points");
+
+        Cli.Result refused = Cli.runIn(dir, "validate", "--output", "ci/rsaml.json", model);
+        assertEquals(2, refused.code(), refused::toString);
+        assertTrue(refused.err().contains("ci/rsaml.json: error: cannot write the json report: it is a symbolic link to "
+                + dir.toAbsolutePath().resolve("gone/rsaml.json") + ", whose folder does not exist; create the folder or remove the link"), refused::toString);
+        assertTrue(Files.isSymbolicLink(ci.resolve("rsaml.json")) && !Files.exists(dir.resolve("gone")), "the link is kept and no folder is made");
+    }
+
+    @Test
     void reportFilesGetTheUsualPermissions(@TempDir Path dir) throws Exception {
         // What the umask gives any new file, as a compiler's output gets; not owner-only.
         Path probe = dir.resolve("probe");
