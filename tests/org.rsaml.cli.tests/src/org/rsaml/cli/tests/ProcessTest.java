@@ -86,21 +86,56 @@ class ProcessTest {
         assertTrue(loaded.contains("org.rsaml.cli.ValidateCommand source: shared objects file"),
                 () -> "RsaML's classes come from the class data made for this tree (AOT cache or CDS archive):\n"
                         + loaded.lines().filter(l -> l.contains("org.rsaml.cli.")).toList());
+        // picocli's published jar is Java 5 bytecode, which no class data takes; the jar carries it built for Java 17.
+        assertTrue(loaded.contains("picocli.CommandLine$Model$CommandSpec source: shared objects file"),
+                () -> "picocli's classes come from the class data too, not from the jar:\n"
+                        + loaded.lines().filter(l -> l.contains(" picocli.") && !l.contains("shared objects file")).limit(5).toList());
 
-        // The jar changes under class data whose stamp still claims to fit it: the JVM refuses the class data, and
-        // says so on standard error; the run itself is unchanged.
+        // The jar is replaced where it was, its old modification time put back (a copy that keeps times, a restored
+        // cache): its status-change time differs, so the stamp no longer fits and the class data is made again.
         Path jar = target.resolve("rsaml.jar");
+        // The class data of the JDK the launcher runs is the one whose stamp names this tree's jar (the AOT cache on
+        // JDK 25 or later, else the CDS archive; the other, if any, was copied with the tree).
+        Path aotStamp = target.resolve("rsaml.aot.stamp");
+        String jarPath = " " + jar.toRealPath() + " ";
+        boolean aot = Files.exists(aotStamp) && Files.readString(aotStamp).contains(jarPath);
+        Path data = target.resolve(aot ? "rsaml.aot" : "rsaml.jsa");
+        assertTrue(Files.readString(target.resolve(data.getFileName() + ".stamp")).contains(jarPath),
+                () -> "the launcher made class data for this tree: " + data);
+        FileTime jarTime = Files.getLastModifiedTime(jar);
+        FileTime made = Files.getLastModifiedTime(data);
+        Files.copy(jar, dir.resolve("rsaml.jar"), StandardCopyOption.COPY_ATTRIBUTES);
+        Thread.sleep(1100);
+        Files.copy(dir.resolve("rsaml.jar"), jar, StandardCopyOption.REPLACE_EXISTING);
+        Files.setLastModifiedTime(jar, jarTime);
+        Cli.Result replaced = Cli.process(tree, validate);
+        assertEquals(r.out(), replaced.out(), "the same report after the jar was replaced");
+        assertEquals("", replaced.err(), "no JVM warning: the class data was made again for the replaced jar and accepted");
+        FileTime remade = Files.getLastModifiedTime(data);
+        assertTrue(remade.compareTo(made) > 0,
+                () -> "the class data " + data.getFileName() + " was made again for the replaced jar (made " + made + ", now "
+                        + remade + ")");
+        String reloaded = Files.readString(log);
+        assertTrue(reloaded.contains("org.rsaml.cli.ValidateCommand source: shared objects file"),
+                () -> "RsaML's classes come from the class data made again:\n"
+                        + reloaded.lines().filter(l -> l.contains("org.rsaml.cli.")).toList());
+
+        // The jar changes under class data whose stamp still claims to fit it (as if the stamp were written for the new
+        // jar). A CDS archive (JDK 17 to 24) is then refused by the JVM itself, which says so on standard error; the
+        // run itself is unchanged. An AOT cache (JDK 25 or later) is checked by the stamp alone (the JVM does not
+        // compare the jar when the cache holds all the classes a run loads from it): it is refused, and says so, when
+        // the run's options no longer fit it (compressed object pointers off, as -Xmx above 32 GB does).
         long changed = Files.getLastModifiedTime(jar).toMillis() / 1000 + 3600;
         Files.setLastModifiedTime(jar, FileTime.fromMillis(changed * 1000));
-        for (String name : List.of("rsaml.jsa.stamp", "rsaml.aot.stamp")) {
-            Path stamp = target.resolve(name);
-            if (Files.exists(stamp)) {
-                // The stamp starts with the jar's size and modification time in seconds (the launcher's stat -c '%s %Y').
-                String[] fields = Files.readString(stamp).split(" ", 3);
-                Files.writeString(stamp, fields[0] + " " + changed + " " + fields[2]);
-            }
-        }
-        Cli.Result refused = Cli.process(tree, validate);
+        long statusChanged = ((FileTime) Files.getAttribute(jar, "unix:ctime")).toMillis() / 1000;
+        Path stamp = target.resolve(data.getFileName() + ".stamp");
+        // The stamp starts with the jar's size, modification and status-change times in seconds (stat -c '%s %Y %Z').
+        String[] fields = Files.readString(stamp).split(" ", 4);
+        Files.writeString(stamp, fields[0] + " " + changed + " " + statusChanged + " " + fields[3]);
+        List<String> refusedRun = aot
+                ? List.of("env", "RSAML_JAVA_OPTS=-XX:-UseCompressedOops", "./rsaml", "validate", "examples/exp2-defects.rsaml")
+                : validate;
+        Cli.Result refused = Cli.process(tree, refusedRun);
         assertEquals(1, refused.code(), refused::toString);
         assertEquals(r.out(), refused.out(), "the same report without the class data");
         assertTrue(refused.err().contains("archive") || refused.err().contains("AOT cache"),
