@@ -47,7 +47,7 @@ final class PathSearch {
     private final Actuator actuator;
     private final EntryPort entry;
     private final Set<PlannedModule> visited = new HashSet<>();
-    private final List<Hop> hops = new ArrayList<>();
+    private final HopStack hops = new HopStack();
     /** The modules, ports and links the current path has passed, for {@code via}. */
     private final List<EObject> trail = new ArrayList<>();
     /** Paths by their bound for the requirement's kind; a path without a bound is the longest. */
@@ -410,10 +410,7 @@ final class PathSearch {
             list(Long.MAX_VALUE, -1, -1, pathUnbounded);
             return;
         }
-        long reaction = 0;
-        for (Hop h : hops) {
-            reaction = Math.addExact(reaction, h.totalNs());
-        }
+        long reaction = hops.totalNs();
         long dataAge = Math.addExact(reaction, lastPeriod);
         list(age ? dataAge : reaction, reaction, dataAge, null);
         if (reaction > worstReaction || dataAge > worstAge) {
@@ -422,6 +419,45 @@ final class PathSearch {
             }
             worstReaction = Math.max(worstReaction, reaction);
             worstAge = Math.max(worstAge, dataAge);
+        }
+    }
+
+    /**
+     * The hops of the current path, a stack (added at the end, taken off the end), with the total of each prefix kept as
+     * hops are added: a path's reaction time costs O(1) when it reaches the target, not its length (a long path found
+     * again and again, changing near its end, would cost its length each time).
+     */
+    private static final class HopStack extends ArrayList<Hop> {
+        private static final long serialVersionUID = 1L;
+        /** A prefix whose total does not fit a long. */
+        private static final long OVERFLOW = Long.MIN_VALUE;
+        /** totals[i]: the total of the first i hops (valid up to the size: taking hops off leaves the shorter prefixes). */
+        private long[] totals = new long[16];
+
+        @Override
+        public boolean add(Hop h) {
+            int n = size();
+            if (n + 1 >= totals.length) {
+                totals = java.util.Arrays.copyOf(totals, totals.length * 2);
+            }
+            long before = totals[n];
+            long total;
+            try {
+                total = before == OVERFLOW ? OVERFLOW : Math.addExact(before, h.totalNs());
+            } catch (ArithmeticException e) {
+                total = OVERFLOW;
+            }
+            totals[n + 1] = total;
+            return super.add(h);
+        }
+
+        /** The total of the hops, as summing them with Math.addExact gives it (an ArithmeticException when it does not fit). */
+        long totalNs() {
+            long total = totals[size()];
+            if (total == OVERFLOW) {
+                throw new ArithmeticException("long overflow");
+            }
+            return total;
         }
     }
 
