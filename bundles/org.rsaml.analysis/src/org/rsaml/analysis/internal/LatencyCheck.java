@@ -153,7 +153,7 @@ final class LatencyCheck {
                     : "no " + pathWord + " leads from " + from + " to " + to + ": the data never arrives that way";
         } else {
             verdict = Verdict.MEETS;
-            explanation = "the " + what + " is at most " + RsamlTimes.text(bound) + " over " + paths + " "
+            explanation = "the " + what + " is at most " + RsamlTimes.text(bound) + " over " + count(paths) + " "
                     + (through.isEmpty() ? "path" + (paths == 1 ? "" : "s")
                             : (paths == 1 ? "path" : "paths") + " through " + String.join(", then ", through))
                     + ", within " + RsamlTimes.text(maxNs);
@@ -161,7 +161,7 @@ final class LatencyCheck {
         String unlisted = "";
         if (cut) {
             unlisted = "the paths were followed one by one for " + search.maxSteps() + " steps, " + search.paths() + " of them to the target;"
-                    + (exact ? " the others were counted (" + paths + " in all) and the worst found by a longest-path computation, which"
+                    + (exact ? " the others were counted (" + count(paths) + " in all) and the worst found by a longest-path computation, which"
                             + " does not list them: listed are the longest of those followed, and the worst"
                             : " the others were not followed: listed are the longest of those followed");
         } else if (paths > listed.size()) {
@@ -170,6 +170,11 @@ final class LatencyCheck {
         }
         return new LatencyResult(requirement, name, from, to, maxNs, age, verdict, worstReaction, worstAge,
                 worstPath, paths, explanation, through, listed, unlisted);
+    }
+
+    /** A number of paths as counted: at most Integer.MAX_VALUE, which then stands for at least that many. */
+    private static String count(int paths) {
+        return paths == Integer.MAX_VALUE ? "at least " + paths : String.valueOf(paths);
     }
 
     private LatencyResult fail(String name, String from, String to, long maxNs, boolean age, String why) {

@@ -177,6 +177,8 @@ class LatencyPathScaleTest {
         assertEquals(l.reactionNs(), l.pathBounds().get(0).reactionNs(), "the worst path, found past the search, is listed first");
         assertTrue(l.unlisted().startsWith("the paths were followed one by one for 1000000 steps, ")
                 && l.unlisted().contains("listed are the longest of those followed, and the worst"), l.unlisted());
+        assertEquals(Integer.MAX_VALUE, l.paths(), "2^200 paths: the count stops at its largest");
+        assertTrue(l.unlisted().contains("counted (at least 2147483647 in all)"), "a count that stopped says at least: " + l.unlisted());
     }
 
     /** The timed module e feeds c0 of a clique of reacting modules (each feeds every other); only c1 feeds the actuator's. */
