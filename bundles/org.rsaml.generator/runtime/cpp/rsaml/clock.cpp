@@ -23,6 +23,12 @@ Nanos internal::thread_cpu_time() {
   return std::chrono::duration_cast<Nanos>(Clock::now().time_since_epoch());
 }
 
+Nanos internal::stall_since(Clock::time_point locked, Nanos cpu, Nanos waited) {
+  const Nanos used = thread_cpu_time() - cpu;
+  const Nanos wall = std::chrono::duration_cast<Nanos>(Clock::now() - locked);
+  return std::max(Nanos(0), wall - used - waited);
+}
+
 /** Consumes CPU time on the calling thread: busy work standing in for user code. */
 void internal::consume(Nanos amount) {
   const Nanos until = thread_cpu_time() + amount;

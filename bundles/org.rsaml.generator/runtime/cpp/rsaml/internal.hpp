@@ -17,6 +17,13 @@ namespace internal {
 /** The calling thread's CPU time. */
 Nanos thread_cpu_time();
 
+/**
+ * The stall of a job that took the module's lock at `locked` with the thread's CPU time at `cpu`:
+ * its wall time since then, minus the CPU time it used and `waited` (lock given up for actions'
+ * start dates): the time it was ready and not running. Never negative.
+ */
+Nanos stall_since(Clock::time_point locked, Nanos cpu, Nanos waited);
+
 /** Consumes CPU time on the calling thread: busy work standing in for user code. */
 void consume(Nanos amount);
 

@@ -4,10 +4,10 @@
  */
 // Each job measured against its bounds, misses and overruns said as they happen, and the summary of the run.
 #include <algorithm>
-#include <cstdio>
 #include <string>
 
 #include "rsaml/internal.hpp"
+#include "rsaml/job_summary.hpp"
 #include "rsaml/system.hpp"
 #include "rsaml/trace.hpp"
 
@@ -18,9 +18,9 @@ using internal::millis;
 namespace {
 
 // Counts one job (of a timed release or a reaction) that started its response at `from`: its
-// response and execution time, and a miss or an overrun as it happens.
+// response, execution time and stall, and a miss or an overrun as it happens.
 void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, Clock::time_point from,
-                Clock::time_point done, Nanos cpu) {
+                Clock::time_point done, Nanos cpu, Nanos stall) {
   if (s.jobs++ == 0) {
     s.first_release = from;
   }
@@ -28,6 +28,7 @@ void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, 
   const Nanos response = std::chrono::duration_cast<Nanos>(done - from);
   s.worst_response = std::max(s.worst_response, response);
   s.worst_execution = std::max(s.worst_execution, cpu);
+  s.worst_stall = std::max(s.worst_stall, stall);
   if (bounds.deadline.count() > 0 && response > bounds.deadline) {
     ++s.misses;
     Trace::report("miss " + label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
@@ -43,33 +44,37 @@ void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, 
 }  // namespace
 
 void System::reaction_done(Reactions& r, Clock::time_point arrived, Clock::time_point started, Clock::time_point done,
-                           Nanos cpu) {
+                           Nanos cpu, Nanos stall) {
   r.stats.worst_start_latency = std::max(r.stats.worst_start_latency, std::chrono::duration_cast<Nanos>(started - arrived));
-  record_job(r.stats, r.label, r.bounds, arrived, done, cpu);
+  record_job(r.stats, r.label, r.bounds, arrived, done, cpu, stall);
 }
 
-void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu) {
-  record_job(r.stats, r.label, r.bounds, released, done, cpu);
+void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall) {
+  record_job(r.stats, r.label, r.bounds, released, done, cpu, stall);
 }
 
 namespace {
-std::string since(Clock::time_point start, Clock::time_point t) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3f", std::chrono::duration<double, std::milli>(t - start).count());
-  return text;
+
+// The summary line of one release's (or module's reactions') jobs, through the writer the ROS 2 nodes share.
+void summary(Clock::time_point start, const std::string& label, const JobStats& s, const JobBounds& b, const std::string& sched) {
+  rsaml_summary::Observed o;
+  o.label = label;
+  o.jobs = s.jobs;
+  o.first_release_ns = std::chrono::duration_cast<Nanos>(s.first_release - start).count();
+  o.last_release_ns = std::chrono::duration_cast<Nanos>(s.last_release - start).count();
+  o.misses = s.misses;
+  o.overruns = s.overruns;
+  o.worst_response_ns = s.worst_response.count();
+  o.bound_ns = b.response.count();
+  o.deadline_ns = b.deadline.count();
+  o.worst_execution_ns = s.worst_execution.count();
+  o.modeled_ns = b.cost.count();
+  o.worst_start_latency_ns = s.worst_start_latency.count();
+  o.worst_stall_ns = s.worst_stall.count();
+  o.sched = sched;
+  Trace::report(rsaml_summary::line(o));
 }
 
-// One format for the C++ runtime and the ROS 2 nodes (docs/timing.md): the same keys in the same order.
-void summary(Clock::time_point start, const std::string& label, const JobStats& s, const JobBounds& b, const std::string& sched) {
-  Trace::report("summary " + label + " jobs " + std::to_string(s.jobs) + " released " +
-                (s.jobs > 0 ? since(start, s.first_release) + ".." + since(start, s.last_release) + " ms" : std::string("none")) +
-                " misses " + std::to_string(s.misses) + " overruns " +
-                std::to_string(s.overruns) + " worst-response " + millis(s.worst_response) + " bound " +
-                (b.response.count() >= 0 ? millis(b.response) : std::string("none")) + " deadline " +
-                (b.deadline.count() > 0 ? millis(b.deadline) : std::string("none")) + " worst-execution " +
-                millis(s.worst_execution) + " modeled " + millis(b.cost) + " worst-start-latency " +
-                millis(s.worst_start_latency) + " sched " + sched);
-}
 }  // namespace
 
 void System::print_summary() {

@@ -29,6 +29,7 @@ struct JobStats {
   Nanos worst_response{0};
   Nanos worst_execution{0};
   Nanos worst_start_latency{0};
+  Nanos worst_stall{0};  // ready but not running during a job: its wall time (module's lock held) minus its CPU time
   Clock::time_point first_release{};  // of the first job; the summary gives it and the last since the run's start
   Clock::time_point last_release{};
 };

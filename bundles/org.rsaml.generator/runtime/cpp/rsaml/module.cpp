@@ -15,6 +15,7 @@
 namespace rsaml {
 
 using internal::consume;
+using internal::stall_since;
 using internal::thread_cpu_time;
 
 namespace {
@@ -111,24 +112,29 @@ void Module::start_step(std::uint64_t wave) {
   publish_outputs();
 }
 
-void Module::timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
-                           Nanos busy) {
+Nanos Module::timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
+                            Nanos busy) {
   Activation activation(*this, system_.new_wave(), true, release);
+  const Clock::time_point locked = Clock::now();
+  const Nanos cpu = thread_cpu_time();
   waves_.insert(activation.wave);
   trace("release " + label);
   if (busy.count() > 0) {
     consume(busy);
   }
   body();
+  return stall_since(locked, cpu, activation.waited);
 }
 
 void Module::run_action(const char* label, Nanos offset, const std::function<void()>& body) {
   Activation* activation = Activation::current();
   if (activation && activation->timed && offset.count() > 0) {
     // Other activations of this module may run while this one waits for the action's start date.
+    const Clock::time_point unlocked = Clock::now();
     activation->lock.unlock();
     const bool go_on = system_.sleep_until(activation->release + offset);
     activation->lock.lock();
+    activation->waited += std::chrono::duration_cast<Nanos>(Clock::now() - unlocked);
     if (!go_on) {
       return;
     }
@@ -179,7 +185,8 @@ void Module::react(Nanos min_interval, const std::function<void()>& body) {
   }
   body();
   if (reactions_) {
-    system_.reaction_done(*reactions_, arrived, started, Clock::now(), thread_cpu_time() - cpu);
+    const Nanos stall = stall_since(started, cpu, activation ? activation->waited : Nanos(0));
+    system_.reaction_done(*reactions_, arrived, started, Clock::now(), thread_cpu_time() - cpu, stall);
   }
 }
 

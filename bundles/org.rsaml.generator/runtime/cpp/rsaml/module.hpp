@@ -51,6 +51,8 @@ class Activation {
   const bool timed;
   const Clock::time_point release;
   std::unique_lock<std::recursive_mutex> lock;
+  /** How long the lock was given up to wait for actions' start dates (not the job's stall). */
+  Nanos waited{0};
 
  private:
   Activation* previous_;
@@ -92,9 +94,14 @@ class Module {
    * outputs) when begin_reaction() lets it, after the busy work, and measures it.
    */
   void react(Nanos min_interval, const std::function<void()>& body);
-  /** Runs one job of a timed release; busy: CPU time it consumes first (the --busy-work stand-in for user code). */
-  void timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
-                     Nanos busy = Nanos(0));
+  /**
+   * Runs one job of a timed release; busy: CPU time it consumes first (the --busy-work stand-in for
+   * user code). Returns the job's stall: the time it held the module's lock, ready, without running
+   * (its wall time from taking the lock to its end, minus its CPU time and its waits for actions'
+   * start dates).
+   */
+  Nanos timed_release(const std::string& label, Clock::time_point release, const std::function<void()>& body,
+                      Nanos busy = Nanos(0));
   /** Registers an entry port's latch: each activation starts with the latest value of every port. */
   void add_input(std::function<void()> latch) { latches_.push_back(std::move(latch)); }
 

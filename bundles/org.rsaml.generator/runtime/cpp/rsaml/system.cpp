@@ -64,9 +64,9 @@ void System::run_release(Release& release) {
     const Nanos cpu = thread_cpu_time();
     release.stats.worst_start_latency =
         std::max(release.stats.worst_start_latency, std::chrono::duration_cast<Nanos>(started - next));
-    release.module->timed_release(release.label, next, release.body, busy);
+    const Nanos stall = release.module->timed_release(release.label, next, release.body, busy);
     const Nanos used = thread_cpu_time() - cpu;
-    job_done(release, next, Clock::now(), used);
+    job_done(release, next, Clock::now(), used, stall);
     next += release.period;
   }
 }

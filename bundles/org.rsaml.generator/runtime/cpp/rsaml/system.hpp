@@ -67,7 +67,7 @@ class System {
   Reactions& reactions(Module& module, std::string label, JobBounds bounds);
   /** Measures one reaction, as job_done does a release's job. */
   void reaction_done(Reactions& reactions, Clock::time_point arrived, Clock::time_point started, Clock::time_point done,
-                     Nanos cpu);
+                     Nanos cpu, Nanos stall);
   /** CPU time the --busy-work option has a job of modeled cost consume. */
   Nanos busy_work(Nanos cost) const;
   /** Sleeps until t; false when the run is stopping. */
@@ -93,7 +93,7 @@ class System {
   /** Gives the calling release thread its core and its scheduling; says which in the trace. */
   void schedule_self(Release& release);
   /** Measures one job: its response (release to completion) and execution (thread CPU) time. */
-  void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu);
+  void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall);
   void print_summary();
 
   /**

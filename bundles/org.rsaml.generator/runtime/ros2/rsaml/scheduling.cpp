@@ -3,6 +3,7 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 #include "rsaml/scheduling.hpp"
+#include "rsaml/job_summary.hpp"
 #include "rsaml/realtime.hpp"
 
 #include <algorithm>
@@ -157,15 +158,24 @@ Schedule::~Schedule() {
     registry.erase(base_.get());
   }
   std::lock_guard<std::mutex> lock(stats_);
-  // The C++ runtime's summary line (docs/timing.md), the same keys in the same order.
+  // The summary line, written by the C++ runtime's writer (rsaml/job_summary.hpp).
   auto summary = [](const Jobs& r) {
-    trace("summary " + r.label + " jobs " + std::to_string(r.jobs) + " released " +
-          (r.jobs > 0 ? ms(r.first_release_ns) + ".." + ms(r.last_release_ns) + " ms" : std::string("none")) + " misses " +
-          std::to_string(r.misses) + " overruns " + std::to_string(r.overruns) + " worst-response " + ms(r.worst_response_ns) +
-          " ms bound " + (r.bound_ns >= 0 ? ms(r.bound_ns) + " ms" : std::string("none")) + " deadline " +
-          (r.deadline_ns > 0 ? ms(r.deadline_ns) + " ms" : std::string("none")) + " worst-execution " + ms(r.worst_execution_ns) +
-          " ms modeled " + ms(r.cost_ns) + " ms worst-start-latency " + ms(r.worst_latency_ns) + " ms sched " +
-          (r.sched.empty() ? std::string("default") : r.sched));
+    rsaml_summary::Observed o;
+    o.label = r.label;
+    o.jobs = r.jobs;
+    o.first_release_ns = r.first_release_ns;
+    o.last_release_ns = r.last_release_ns;
+    o.misses = r.misses;
+    o.overruns = r.overruns;
+    o.worst_response_ns = r.worst_response_ns;
+    o.bound_ns = r.bound_ns;
+    o.deadline_ns = r.deadline_ns;
+    o.worst_execution_ns = r.worst_execution_ns;
+    o.modeled_ns = r.cost_ns;
+    o.worst_start_latency_ns = r.worst_latency_ns;
+    o.worst_stall_ns = r.worst_stall_ns;
+    o.sched = r.sched;
+    trace(rsaml_summary::line(o));
   };
   for (const Release& r : releases_) {
     summary(r);
@@ -260,17 +270,21 @@ void Schedule::busy(std::int64_t cpu_ns) const {
   }
 }
 
-std::int64_t Schedule::run_measured(std::int64_t cost_ns, const std::function<void()>& body) const {
+Schedule::Measured Schedule::run_measured(std::int64_t cost_ns, const std::function<void()>& body) const {
+  const auto wall = std::chrono::steady_clock::now();
   const std::int64_t cpu = thread_cpu_ns();
   if (simulated_load_ > 0.0 && cost_ns > 0) {
     busy(static_cast<std::int64_t>(static_cast<double>(cost_ns) * simulated_load_));
   }
   body();
-  return thread_cpu_ns() - cpu;
+  const std::int64_t execution = thread_cpu_ns() - cpu;
+  const std::int64_t elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - wall).count();
+  return Measured{execution, std::max<std::int64_t>(0, elapsed - execution)};
 }
 
 void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::Time& done, std::int64_t latency_ns,
-                          std::int64_t execution_ns) {
+                          const Measured& measured) {
+  const std::int64_t execution_ns = measured.execution_ns;
   const std::int64_t response = (done - released).nanoseconds();
   const std::int64_t at = (released - started_).nanoseconds();
   bool missed = false;
@@ -285,6 +299,7 @@ void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::T
     r.worst_response_ns = std::max(r.worst_response_ns, response);
     r.worst_execution_ns = std::max(r.worst_execution_ns, execution_ns);
     r.worst_latency_ns = std::max(r.worst_latency_ns, latency_ns);
+    r.worst_stall_ns = std::max(r.worst_stall_ns, measured.stall_ns);
     missed = r.deadline_ns > 0 && response > r.deadline_ns;
     overran = r.cost_ns > 0 && execution_ns > r.cost_ns;
     r.misses += missed ? 1 : 0;
@@ -301,12 +316,12 @@ void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::T
 void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
                              const std::function<void()>& body) {
   Release& r = releases_[release];
-  std::int64_t execution = 0;
+  Measured measured{};
   {
     std::lock_guard<std::mutex> lock(activation_);
-    execution = run_measured(r.cost_ns, body);
+    measured = run_measured(r.cost_ns, body);
   }
-  record_job(r, released, clock_->now(), (called - released).nanoseconds(), execution);
+  record_job(r, released, clock_->now(), (called - released).nanoseconds(), measured);
 }
 
 void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
@@ -343,8 +358,8 @@ void Schedule::rsaml_run_reaction(const std::function<void()>& body) {
     return;
   }
   // Under the node's lock (in rsaml_run_arrival): arrived_ and handled_ are the current arrival's.
-  const std::int64_t execution = run_measured(reactions_->cost_ns, body);
-  record_job(*reactions_, arrived_, clock_->now(), (handled_ - arrived_).nanoseconds(), execution);
+  const Measured measured = run_measured(reactions_->cost_ns, body);
+  record_job(*reactions_, arrived_, clock_->now(), (handled_ - arrived_).nanoseconds(), measured);
 }
 
 Scheduler::~Scheduler() { stop(); }

@@ -62,6 +62,7 @@ struct Jobs {
   std::int64_t worst_response_ns = 0;
   std::int64_t worst_execution_ns = 0;
   std::int64_t worst_latency_ns = 0;
+  std::int64_t worst_stall_ns = 0;  // ready but not running during a job (node's lock held): wall time minus CPU time
   std::int64_t first_release_ns = -1;
   std::int64_t last_release_ns = -1;
 };
@@ -196,15 +197,20 @@ class Schedule {
   Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base, rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers,
            rclcpp::Clock::SharedPtr clock, double simulated_load, std::string module, int core);
   void busy(std::int64_t cpu_ns) const;
-  /** Busy work of one job of modeled cost `cost_ns` (the simulated load), then `body`; the CPU time both took. */
-  std::int64_t run_measured(std::int64_t cost_ns, const std::function<void()>& body) const;
+  /** What run_measured() measured of one job: the CPU time it used, and its stall. */
+  struct Measured {
+    std::int64_t execution_ns;
+    std::int64_t stall_ns;  // its wall time (steady clock) minus its CPU time: ready, holding the node's lock, not running
+  };
+  /** Busy work of one job of modeled cost `cost_ns` (the simulated load), then `body`, under the node's lock: the CPU time both took, and the stall. */
+  Measured run_measured(std::int64_t cost_ns, const std::function<void()>& body) const;
   /**
    * Counts one job of `jobs` released at `released` and done at `done` (on the node's clock), which
-   * its executor called `latency_ns` after its release and which used `execution_ns` of CPU time:
-   * its response and execution, and a miss or an overrun as it happens.
+   * its executor called `latency_ns` after its release: its response, execution and stall, and a miss
+   * or an overrun as it happens.
    */
   void record_job(Jobs& jobs, const rclcpp::Time& released, const rclcpp::Time& done, std::int64_t latency_ns,
-                  std::int64_t execution_ns);
+                  const Measured& measured);
 
   rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base_;
   rclcpp::node_interfaces::NodeTimersInterface::SharedPtr timers_;

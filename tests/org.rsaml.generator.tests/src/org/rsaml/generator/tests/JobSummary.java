@@ -15,14 +15,15 @@ import java.util.regex.Pattern;
  * A {@code summary} line of a generated program, the C++ runtime's and the ROS 2 nodes' alike
  * (docs/timing.md, "What the C++ program measures"): one per timed release, and one per reacting
  * module ({@code layer/module (reaction)}). Times in nanoseconds; {@code deadlineNs} 0 when none,
- * {@code firstNs}/{@code lastNs} -1 when no job was released.
+ * {@code firstNs}/{@code lastNs} -1 when no job was released; {@code stallNs} the worst time a job was
+ * ready, holding its module's lock, and not running (its wall time minus its CPU time).
  */
 record JobSummary(String label, long jobs, long firstNs, long lastNs, long misses, long overruns, long worstNs, String bound,
-        long deadlineNs, long executionNs, long modeledNs, long latencyNs, String sched) {
+        long deadlineNs, long executionNs, long modeledNs, long latencyNs, long stallNs, String sched) {
 
     private static final Pattern LINE = Pattern.compile("summary (\\S+(?: \\(reaction\\))?) jobs (\\d+) released (none|([0-9.]+)\\.\\.([0-9.]+) ms)"
             + " misses (\\d+) overruns (\\d+) worst-response ([0-9.]+) ms bound (none|[0-9.]+ ms) deadline (none|[0-9.]+ ms)"
-            + " worst-execution ([0-9.]+) ms modeled ([0-9.]+) ms worst-start-latency ([0-9.]+) ms sched (.*)");
+            + " worst-execution ([0-9.]+) ms modeled ([0-9.]+) ms worst-start-latency ([0-9.]+) ms worst-stall ([0-9.]+) ms sched (.*)");
 
     /** Scheduled as the analysis assumes: real-time at its rank (0 for reactions), or SCHED_DEADLINE for EDF. */
     boolean asAnalysed() {
@@ -53,7 +54,7 @@ record JobSummary(String label, long jobs, long firstNs, long lastNs, long misse
                 all.put(m.group(1), new JobSummary(m.group(1), Long.parseLong(m.group(2)), released ? ns(m.group(4)) : -1,
                         released ? ns(m.group(5)) : -1, Long.parseLong(m.group(6)), Long.parseLong(m.group(7)), ns(m.group(8)), m.group(9),
                         m.group(10).equals("none") ? 0 : ns(m.group(10).replace(" ms", "")), ns(m.group(11)), ns(m.group(12)),
-                        ns(m.group(13)), m.group(14)));
+                        ns(m.group(13)), ns(m.group(14)), m.group(15)));
             }
         }
         return all;

@@ -364,10 +364,10 @@ class Ros2LaunchTest {
             assertEquals(r.costNs(), o.modeledNs(), 500, r.label() + ": the modeled execution time: " + o);
             Missed x = missed.getOrDefault(r.label(), Missed.NONE);
             report.append(String.format(java.util.Locale.ROOT,
-                    "  %s: %d jobs (%d missed: %d past the deadline, %d releases dropped), worst response %s (execution %s, start latency %s),"
-                            + " bound %s, deadline %s, analysis: %s, %s%n",
+                    "  %s: %d jobs (%d missed: %d past the deadline, %d releases dropped), worst response %s (execution %s, start latency %s,"
+                            + " stall %s), bound %s, deadline %s, analysis: %s, %s%n",
                     r.label(), o.jobs(), o.misses(), x.late(), x.dropped(), JobTimingTest.ms(o.worstNs()), JobTimingTest.ms(o.executionNs()),
-                    JobTimingTest.ms(o.latencyNs()), o.bound(), JobTimingTest.ms(o.deadlineNs()), verdicts.get(r.label()), o.sched()));
+                    JobTimingTest.ms(o.latencyNs()), JobTimingTest.ms(o.stallNs()), o.bound(), JobTimingTest.ms(o.deadlineNs()), verdicts.get(r.label()), o.sched()));
             if (r.edf()) {
                 report.append("  ").append(edfCase(r, o)).append('\n');
             }
@@ -406,7 +406,7 @@ class Ros2LaunchTest {
             for (Reaction x : reacting) {
                 JobSummary o = observed.get(x.label());
                 long bound = bounds.get(x.label());
-                if (o.worstNs() > bound + allowance.ns()) {
+                if (!allowance.admits(o.worstNs(), bound)) {
                     contradictions.add(x.label() + ": worst observed response of a reaction " + JobTimingTest.ms(o.worstNs()) + " (" + o.jobs()
                             + " jobs, " + o.sched() + ") exceeds the analysed bound " + JobTimingTest.ms(bound) + " ("
                             + verdicts.get(x.label()) + ") plus the platform's allowance " + allowance);
@@ -432,9 +432,9 @@ class Ros2LaunchTest {
             assertEquals(x.costNs(), o.modeledNs(), 500, x.label() + ": the modeled execution time: " + o);
             boolean fed = pm.inputs().stream().anyMatch(p -> ports.containsKey(pm.qualifiedName() + ":" + p.name()));
             assertTrue(!fed || o.jobs() > 0, x.label() + ": messages arrived but no reaction was measured: " + o);
-            report.append(String.format(java.util.Locale.ROOT, "  %s: %d jobs, worst response %s (execution %s, start latency %s), bound %s, %s%n",
+            report.append(String.format(java.util.Locale.ROOT, "  %s: %d jobs, worst response %s (execution %s, start latency %s, stall %s), bound %s, %s%n",
                     x.label(), o.jobs(), JobTimingTest.ms(o.worstNs()), JobTimingTest.ms(o.executionNs()), JobTimingTest.ms(o.latencyNs()),
-                    o.bound(), o.sched()));
+                    JobTimingTest.ms(o.stallNs()), o.bound(), o.sched()));
         }
         if (!unchecked.isEmpty()) {
             report.append("  not checked against the bound (the response times are reported only): ").append(unchecked).append('\n');
@@ -504,7 +504,7 @@ class Ros2LaunchTest {
                         + " deadline), though the analysis says it meets its deadline " + JobTimingTest.ms(o.deadlineNs()) + " (bound "
                         + JobTimingTest.ms(bound) + ")");
             }
-            if (o.worstNs() > bound + allowance.ns()) {
+            if (!allowance.admits(o.worstNs(), bound)) {
                 found.add(r.label() + ": worst observed response " + JobTimingTest.ms(o.worstNs()) + " exceeds the analysed bound "
                         + JobTimingTest.ms(bound) + " (" + verdict + ") plus the platform's allowance " + allowance);
             } else if (x.late() > 0) {

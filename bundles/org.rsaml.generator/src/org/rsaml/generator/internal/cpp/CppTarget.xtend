@@ -23,7 +23,7 @@ import org.rsaml.generator.spi.TargetGenerator
  * (gen/LAYER/ModuleBase.*) declares its typed ports, runs its functions and is regenerated; the
  * architect's part (src/LAYER/Module.*) implements the actions and is created once. The runtime
  * (gen/rsaml/) is the same for every model: the files runtime/cpp/rsaml/* of this bundle (RUNTIME_HEADERS,
- * RUNTIME_SOURCES), and runtime/cxx/rsaml/realtime.hpp, which the ROS 2 nodes share.
+ * RUNTIME_SOURCES), and the headers of runtime/cxx/rsaml/ (SHARED_RUNTIME_HEADERS), which the ROS 2 nodes share.
  * Each output file has its template: CppModuleTemplate, CppArchitectureTemplate, CppCmakeTemplate,
  * CppMessagesTemplate, CppReadmeTemplate, and the user code every C++ target shares (cxx.UserCode).
  */
@@ -35,6 +35,12 @@ class CppTarget implements TargetGenerator {
 	 */
 	public static val List<String> RUNTIME_HEADERS = #["runtime.hpp", "clock.hpp", "options.hpp", "trace.hpp", "measure.hpp", "module.hpp",
 		"ports.hpp", "system.hpp", "internal.hpp"]
+
+	/**
+	 * The headers in runtime/cxx/rsaml/ of this bundle that the C++ runtime and the ROS 2 nodes share (EDF's
+	 * SCHED_DEADLINE, the job summary line's writer): every C++ project and ROS 2 runtime package carries them in gen/rsaml/.
+	 */
+	public static val List<String> SHARED_RUNTIME_HEADERS = #["realtime.hpp", "job_summary.hpp"]
 
 	/** The C++ runtime's sources in runtime/cpp/rsaml/ of this bundle, one per concern; each project's CMake build compiles them. */
 	public static val List<String> RUNTIME_SOURCES = #["options.cpp", "clock.cpp", "trace.cpp", "measure.cpp", "module.cpp", "system.cpp",
@@ -111,7 +117,9 @@ class CppFiles {
 		for (f : CppTarget.RUNTIME_HEADERS + CppTarget.RUNTIME_SOURCES) {
 			files += GeneratedFile.generated("gen/rsaml/" + f, "// " + banner + "\n" + CppTarget.runtimeFile("rsaml/" + f))
 		}
-		files += GeneratedFile.generated("gen/rsaml/realtime.hpp", "// " + banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
+		for (f : CppTarget.SHARED_RUNTIME_HEADERS) {
+			files += GeneratedFile.generated("gen/rsaml/" + f, "// " + banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/" + f))
+		}
 		files += GeneratedFile.generated("gen/messages.hpp", messages.messages)
 		files += GeneratedFile.generated("gen/Architecture.hpp", architecture.architectureHeader)
 		files += GeneratedFile.generated("gen/Architecture.cpp", architecture.architectureSource)

@@ -161,7 +161,9 @@ class Ros2Files {
 		for (f : Ros2Target.runtimeFiles(!rosNames.managedModules.empty)) {
 			files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, runtimeFile(f))
 		}
-		files += GeneratedFile.generated(rpkg + "/gen/rsaml/realtime.hpp", "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/realtime.hpp"))
+		for (f : CppTarget.SHARED_RUNTIME_HEADERS) {
+			files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, "// " + context.banner + "\n" + CppTarget.runtimeFile("cxx", "rsaml/" + f))
+		}
 		for (m : context.plan.modules) {
 			val npkg = context.nodePackage(m)
 			files += GeneratedFile.generated(npkg + "/gen/" + m.layerId + "/" + m.baseName + ".hpp", node.base(m))

@@ -1,0 +1,54 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+// The summary line of a timed release's or a reaction's jobs (docs/timing.md, "What the C++ program
+// measures"), written here once for the C++ runtime and the ROS 2 nodes. Internal linkage, so that
+// two generated libraries in one process (ROS 2 components) never mix their copies.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace rsaml_summary {
+namespace {
+
+/** What the model and the analysis say of a release's (or a module's reactions') jobs, and what was observed; times in ns. */
+struct Observed {
+  std::string label;
+  std::uint64_t jobs = 0;
+  std::int64_t first_release_ns = 0;  // since the run's start; unused without a job
+  std::int64_t last_release_ns = 0;
+  std::uint64_t misses = 0;
+  std::uint64_t overruns = 0;
+  std::int64_t worst_response_ns = 0;
+  std::int64_t bound_ns = -1;    // the analysis's worst-case response; negative: none
+  std::int64_t deadline_ns = 0;  // 0: none
+  std::int64_t worst_execution_ns = 0;
+  std::int64_t modeled_ns = 0;
+  std::int64_t worst_start_latency_ns = 0;
+  std::int64_t worst_stall_ns = 0;
+  std::string sched;
+};
+
+/** Milliseconds with three decimals: 1.250. */
+inline std::string ms(std::int64_t ns) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", static_cast<double>(ns) / 1e6);
+  return text;
+}
+
+/** The line, without the trace's time stamp: `summary <label> jobs ... sched <sched>` (sched last: it is free text). */
+inline std::string line(const Observed& o) {
+  return "summary " + o.label + " jobs " + std::to_string(o.jobs) + " released " +
+         (o.jobs > 0 ? ms(o.first_release_ns) + ".." + ms(o.last_release_ns) + " ms" : std::string("none")) + " misses " +
+         std::to_string(o.misses) + " overruns " + std::to_string(o.overruns) + " worst-response " + ms(o.worst_response_ns) +
+         " ms bound " + (o.bound_ns >= 0 ? ms(o.bound_ns) + " ms" : std::string("none")) + " deadline " +
+         (o.deadline_ns > 0 ? ms(o.deadline_ns) + " ms" : std::string("none")) + " worst-execution " + ms(o.worst_execution_ns) +
+         " ms modeled " + ms(o.modeled_ns) + " ms worst-start-latency " + ms(o.worst_start_latency_ns) + " ms worst-stall " +
+         ms(o.worst_stall_ns) + " ms sched " + (o.sched.empty() ? std::string("default") : o.sched);
+}
+
+}  // namespace
+}  // namespace rsaml_summary
