@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "rsaml/internal.hpp"
+#include "rsaml/jobs.hpp"
 #include "rsaml/system.hpp"
 
 namespace rsaml {
@@ -63,12 +64,8 @@ bool System::sleep_until(Clock::time_point t) {
 }
 
 Nanos System::busy_work(Nanos cost) const {
-  // The busy work stops short of the modeled time by 5 % (at most 100 us), which the job's own
-  // bookkeeping (trace, sends, the lock) takes instead.
-  if (options_.busy_work_percent <= 0) {
-    return Nanos(0);
-  }
-  return cost * options_.busy_work_percent / 100 - std::min(cost / 20, Nanos(100000));
+  // The rule the ROS 2 nodes share: short of the modeled time by 5 % (at most 100 us).
+  return Nanos(rsaml_jobs::busy_work_ns(cost.count(), options_.busy_work_percent / 100.0));
 }
 
 }  // namespace rsaml

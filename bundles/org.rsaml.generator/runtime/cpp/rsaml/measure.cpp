@@ -7,7 +7,7 @@
 #include <string>
 
 #include "rsaml/internal.hpp"
-#include "rsaml/job_summary.hpp"
+#include "rsaml/jobs.hpp"
 #include "rsaml/system.hpp"
 #include "rsaml/trace.hpp"
 
@@ -57,7 +57,7 @@ namespace {
 
 // The summary line of one release's (or module's reactions') jobs, through the writer the ROS 2 nodes share.
 void summary(Clock::time_point start, const std::string& label, const JobStats& s, const JobBounds& b, const std::string& sched) {
-  rsaml_summary::Observed o;
+  rsaml_jobs::Observed o;
   o.label = label;
   o.jobs = s.jobs;
   o.first_release_ns = std::chrono::duration_cast<Nanos>(s.first_release - start).count();
@@ -72,7 +72,7 @@ void summary(Clock::time_point start, const std::string& label, const JobStats& 
   o.worst_start_latency_ns = s.worst_start_latency.count();
   o.worst_stall_ns = s.worst_stall.count();
   o.sched = sched;
-  Trace::report(rsaml_summary::line(o));
+  Trace::report(rsaml_jobs::line(o));
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 #include "rsaml/scheduling.hpp"
-#include "rsaml/job_summary.hpp"
+#include "rsaml/jobs.hpp"
 #include "rsaml/realtime.hpp"
 
 #include <algorithm>
@@ -158,9 +158,9 @@ Schedule::~Schedule() {
     registry.erase(base_.get());
   }
   std::lock_guard<std::mutex> lock(stats_);
-  // The summary line, written by the C++ runtime's writer (rsaml/job_summary.hpp).
+  // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp).
   auto summary = [](const Jobs& r) {
-    rsaml_summary::Observed o;
+    rsaml_jobs::Observed o;
     o.label = r.label;
     o.jobs = r.jobs;
     o.first_release_ns = r.first_release_ns;
@@ -175,7 +175,7 @@ Schedule::~Schedule() {
     o.worst_start_latency_ns = r.worst_latency_ns;
     o.worst_stall_ns = r.worst_stall_ns;
     o.sched = r.sched;
-    trace(rsaml_summary::line(o));
+    trace(rsaml_jobs::line(o));
   };
   for (const Release& r : releases_) {
     summary(r);
@@ -273,8 +273,9 @@ void Schedule::busy(std::int64_t cpu_ns) const {
 Schedule::Measured Schedule::run_measured(std::int64_t cost_ns, const std::function<void()>& body) const {
   const auto wall = std::chrono::steady_clock::now();
   const std::int64_t cpu = thread_cpu_ns();
-  if (simulated_load_ > 0.0 && cost_ns > 0) {
-    busy(static_cast<std::int64_t>(static_cast<double>(cost_ns) * simulated_load_));
+  const std::int64_t busy_ns = rsaml_jobs::busy_work_ns(cost_ns, simulated_load_);
+  if (busy_ns > 0) {
+    busy(busy_ns);
   }
   body();
   const std::int64_t execution = thread_cpu_ns() - cpu;

@@ -266,6 +266,15 @@ public final class TimingAnalysis {
                 notes.add("scheduled by deadline: the generated C++ runtime runs each timed release under SCHED_DEADLINE"
                         + " (runtime = its execution duration, its deadline and period) where the kernel permits it, and its"
                         + " trace says when not; there the verdict is for a platform scheduling by deadline");
+                if (element != null && element.getCore() >= 0) {
+                    notes.add("core " + element.getCore() + " does not hold EDF: Linux admits a SCHED_DEADLINE thread only on every CPU of its"
+                            + " root domain, so the C++ runtime runs this processor's releases on every core of the machine (not core "
+                            + element.getCore() + " alone, and ahead of every other processor's threads there), and on ROS 2, whose launch"
+                            + " pins the processor's container to core " + element.getCore() + " (taskset), the kernel refuses SCHED_DEADLINE"
+                            + " and they run under SCHED_FIFO at their ranks (the trace says 'instead of EDF'): on neither runtime does this"
+                            + " processor run as analysed, unless the machine gives core " + element.getCore() + " a root domain of its own"
+                            + " (an exclusive cpuset partition)");
+                }
             } else {
                 notes.add("the processor is declared " + element.getSchedPolicy().getLiteral() + ": the verdict is for a platform"
                         + " scheduling it so, while the generated C++ runtime schedules by fixed priorities");

@@ -126,6 +126,10 @@ class ArchitectureTimingTest {
         assertEquals(Verdict.MEETS, core1.result().verdict(), "core1's tasks meet their deadlines under EDF");
         assertTrue(core1.notes().get(0).contains("the generated C++ runtime runs each timed release under SCHED_DEADLINE"),
                 core1.notes().get(0));
+        assertTrue(core1.notes().get(1).startsWith("core 1 does not hold EDF:") && core1.notes().get(1).contains("on ROS 2, whose launch pins"
+                + " the processor's container to core 1 (taskset), the kernel refuses SCHED_DEADLINE") && core1.notes().get(1).contains("on"
+                + " neither runtime does this processor run as analysed"), "a processor with a core says plainly that neither runtime runs EDF on it: "
+                + core1.notes());
         // without response times under EDF the latency through core 1 is not bounded, and says so
         assertEquals(Verdict.NOT_ANALYSED, timing.latencies().get(0).verdict(), "without EDF response times the latency through core1 is reported as not analysed");
     }

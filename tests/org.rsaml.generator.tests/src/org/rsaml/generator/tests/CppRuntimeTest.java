@@ -70,7 +70,7 @@ class CppRuntimeTest {
             carried = generated.map(f -> f.getFileName().toString()).collect(Collectors.toCollection(TreeSet::new));
         }
         Set<String> expected = new TreeSet<>(files());
-        expected.addAll(List.of("realtime.hpp", "job_summary.hpp"));
+        expected.addAll(List.of("realtime.hpp", "jobs.hpp"));
         assertEquals(expected, carried, "gen/rsaml/ holds every file of the bundle's runtime and nothing else");
         for (String file : files()) {
             String generated = Files.readString(tmp.resolve("gen/rsaml/" + file));
@@ -79,7 +79,7 @@ class CppRuntimeTest {
             assertEquals(Files.readString(runtime().resolve("rsaml/" + file)), generated.substring(banner.length()),
                     file + " is the bundle's file");
         }
-        for (String file : List.of("realtime.hpp", "job_summary.hpp")) {
+        for (String file : List.of("realtime.hpp", "jobs.hpp")) {
             String generated = Files.readString(tmp.resolve("gen/rsaml/" + file));
             assertEquals(Files.readString(shared().resolve("rsaml/" + file)), generated.substring(generated.indexOf('\n') + 1),
                     file + ": the runtime shared with the ROS 2 nodes");

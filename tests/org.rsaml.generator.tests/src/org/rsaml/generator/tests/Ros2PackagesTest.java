@@ -119,7 +119,7 @@ class Ros2PackagesTest {
             assertTrue(system.contains("\nexec " + p + "\n") || system.endsWith("\nexec " + p), "the launch files need " + p + " at run time:\n" + system);
         }
         assertTrue(packages.get(PKG + "_runtime").containsAll(List.of("gen/rsaml/scheduling.cpp", "gen/rsaml/scheduling.hpp", "gen/rsaml/container.cpp",
-                "gen/rsaml/realtime.hpp", "gen/rsaml/job_summary.hpp")), "the runtime package holds the scheduling runtime and the container: " + packages.get(PKG + "_runtime"));
+                "gen/rsaml/realtime.hpp", "gen/rsaml/jobs.hpp")), "the runtime package holds the scheduling runtime and the container: " + packages.get(PKG + "_runtime"));
         String runtime = Files.readString(out.resolve(PKG + "_runtime/CMakeLists.txt"));
         assertTrue(runtime.contains("ament_export_targets(export_${PROJECT_NAME} HAS_LIBRARY_TARGET)")
                 && runtime.contains("add_executable(" + PKG + "_component_container gen/rsaml/container.cpp)"),

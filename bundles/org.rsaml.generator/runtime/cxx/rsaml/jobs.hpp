@@ -2,16 +2,17 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-// The summary line of a timed release's or a reaction's jobs (docs/timing.md, "What the C++ program
-// measures"), written here once for the C++ runtime and the ROS 2 nodes. Internal linkage, so that
-// two generated libraries in one process (ROS 2 components) never mix their copies.
+// What the C++ runtime and the ROS 2 nodes share about jobs, written here once: the busy work that
+// stands in for user code, and the summary line of a timed release's or a reaction's jobs
+// (docs/timing.md, "What the C++ program measures"). Internal linkage, so that two generated
+// libraries in one process (ROS 2 components) never mix their copies.
 #pragma once
 
 #include <cstdint>
 #include <cstdio>
 #include <string>
 
-namespace rsaml_summary {
+namespace rsaml_jobs {
 namespace {
 
 /** What the model and the analysis say of a release's (or a module's reactions') jobs, and what was observed; times in ns. */
@@ -32,6 +33,22 @@ struct Observed {
   std::string sched;
 };
 
+/**
+ * The busy work of a job of modeled cost `cost_ns` at `fraction` of it (--busy-work PERCENT / 100 on
+ * the C++ runtime, rsaml.simulated_load on ROS 2): that share of the cost, short of it by 5 % of the
+ * cost (at most 0.1 ms), which the job's own bookkeeping (the lock, the trace, the sends or the
+ * publishing) takes instead, so that a job running as modeled is not reported as an overrun. 0 for
+ * no busy work.
+ */
+inline std::int64_t busy_work_ns(std::int64_t cost_ns, double fraction) {
+  if (!(fraction > 0.0) || cost_ns <= 0) {
+    return 0;
+  }
+  const std::int64_t share = static_cast<std::int64_t>(static_cast<double>(cost_ns) * fraction);
+  const std::int64_t bookkeeping = cost_ns / 20 < 100000 ? cost_ns / 20 : 100000;
+  return share > bookkeeping ? share - bookkeeping : 0;
+}
+
 /** Milliseconds with three decimals: 1.250. */
 inline std::string ms(std::int64_t ns) {
   char text[32];
@@ -51,4 +68,4 @@ inline std::string line(const Observed& o) {
 }
 
 }  // namespace
-}  // namespace rsaml_summary
+}  // namespace rsaml_jobs
