@@ -28,7 +28,7 @@ import org.rsaml.validation.RsamlValidationSetup;
  * A latency requirement's paths (followed one by one, then by the longest-path computation past 1,000,000 steps) on the
  * graphs that make them many or long, each fed by one periodic module reading a sensor, the modules after it reacting
  * (sporadic), the last driving the actuator the requirement ends at: a <b>chain</b> of n modules (one path of n stages);
- * a <b>ladder</b> of n modules in layers of two, each feeding both of the next layer (2^(n/2) paths); a <b>dense</b>
+ * a <b>ladder</b> of n modules in layers of two, each feeding both of the next layer (2^((n - 2) / 2) paths for n even); a <b>dense</b>
  * graph of n modules, each feeding every later one (2^(n-2) paths, n (n - 1) / 2 connections). For each, in one JVM:
  * EMF's structural checks of the model (the anchor), and the timing analysis of the architecture with the requirement
  * and without it (the requirement's cost is the difference; the analysis without it, the response times, is the
