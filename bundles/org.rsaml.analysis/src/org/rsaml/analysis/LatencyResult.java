@@ -23,7 +23,8 @@ import org.rsaml.model.LatencyRequirement;
  * @param reactionNs   the worst-case reaction time over all paths (-1 when not bounded)
  * @param dataAgeNs    the maximum data age over all paths (-1 when not bounded)
  * @param worstPath    the hops of the path with the largest bounded latency (empty when there is none)
- * @param paths        how many paths were examined
+ * @param paths        how many paths were examined; {@link Integer#MAX_VALUE} stands for at least that many
+ *                     ({@link #pathsAtLeast()})
  * @param explanation  what decided the verdict
  * @param via          the elements the paths must pass through, in order, as labels (empty: every path)
  * @param pathBounds   every path examined with its own bounds, the longest first (at most
@@ -74,7 +75,7 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
             return "every path, the longest first:";
         }
         if (unlisted.isEmpty()) {
-            return "the " + n + " longest of " + paths + " paths (rsaml analyze --format json lists all " + paths + "):";
+            return "the " + n + " longest of " + pathsText() + " (rsaml analyze --format json lists all " + paths + "):";
         }
         return "the " + n + " longest paths listed (" + (n < listed ? "rsaml analyze --format json lists " + listed + "; " : "")
                 + unlisted + "):";
@@ -88,6 +89,16 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
     /** Each hop of the worst path as {@link #worstPathText()} writes it, {@code perception/filter +15 ms}. */
     public List<String> worstPathHops() {
         return worstPath.stream().map(h -> h.label() + " +" + RsamlTimes.text(h.totalNs())).toList();
+    }
+
+    /** Whether {@link #paths()} stopped at its largest, {@link Integer#MAX_VALUE}, and stands for at least that many. */
+    public boolean pathsAtLeast() {
+        return paths == Integer.MAX_VALUE;
+    }
+
+    /** {@link #paths()} as the reports word it: {@code 12 paths}, {@code 1 path}, {@code at least 2147483647 paths}. */
+    public String pathsText() {
+        return (pathsAtLeast() ? "at least " : "") + paths + (paths == 1 ? " path" : " paths");
     }
 
     /** The latency the requirement bounds (-1 when not bounded). */

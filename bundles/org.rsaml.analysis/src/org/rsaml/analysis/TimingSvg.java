@@ -211,7 +211,7 @@ public final class TimingSvg {
         b.append("<text x=\"10\" y=\"20\" font-weight=\"bold\">").append(esc("latency requirement '" + l.name()
                 + "' can be exceeded: " + kind + " up to " + RsamlTimes.text(l.boundNs()) + ", at most " + RsamlTimes.text(l.maxNs())))
                 .append("</text>\n");
-        b.append("<text x=\"10\" y=\"38\">").append(esc("worst of " + l.paths() + (l.paths() == 1 ? " path" : " paths") + " from "
+        b.append("<text x=\"10\" y=\"38\">").append(esc("worst of " + l.pathsText() + " from "
                 + l.from() + " to " + l.to() + "; the source changes at 0; light: waiting for the stage, red: the stage responding")).append("</text>\n");
         long t = 0;
         for (int i = 0; i < hops.size(); i++) {

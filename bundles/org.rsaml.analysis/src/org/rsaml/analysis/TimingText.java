@@ -123,7 +123,7 @@ public final class TimingText {
         String said = word(l.verdict()) + ": ";
         out.append("  verdict: ").append(l.explanation().startsWith(said) ? "" : said).append(l.explanation()).append('\n');
         if (!l.worstPath().isEmpty()) {
-            out.append("  worst path (").append(l.paths()).append(l.paths() == 1 ? " path" : " paths").append(" examined; reaction time ")
+            out.append("  worst path (").append(l.pathsText()).append(" examined; reaction time ")
                     .append(l.reactionNs() < 0 ? "-" : RsamlTimes.text(l.reactionNs())).append(", data age ")
                     .append(l.dataAgeNs() < 0 ? "-" : RsamlTimes.text(l.dataAgeNs())).append("):\n");
             for (Hop h : l.worstPath()) {

@@ -170,6 +170,8 @@ public final class TimingJson {
                 k.addProperty("dataAgeNs", l.dataAgeNs());
             }
             k.addProperty("paths", l.paths());
+            // paths stops at 2,147,483,647: then it stands for at least that many
+            k.addProperty("pathsAtLeast", l.pathsAtLeast());
             JsonArray hops = new JsonArray();
             l.worstPath().forEach(h -> hops.add(hop(h)));
             k.add("worstPath", hops);

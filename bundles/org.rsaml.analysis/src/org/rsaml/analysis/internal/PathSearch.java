@@ -6,6 +6,7 @@ package org.rsaml.analysis.internal;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -152,7 +153,7 @@ final class PathSearch {
                 return;
             }
         }
-        PathBound b = new PathBound(hops, reaction, dataAge, why);
+        PathBound b = new PathBound(hops.list(), reaction, dataAge, why);
         listed.add(b);
         listedStages += b.hops().size();
         while (listed.size() > 1 && (listed.size() > LatencyResult.MAX_LISTED_PATHS || listedStages > LatencyResult.MAX_LISTED_STAGES)) {
@@ -230,7 +231,7 @@ final class PathSearch {
     private void push(PlannedModule m, Stage st, int trailBefore, int link) {
         if (cut() || !visited.add(m)) {
             trail.subList(trailBefore, trail.size()).clear();
-            hops.subList(hops.size() - link, hops.size()).clear();
+            hops.pop(link);
             return;
         }
         String before = pathUnbounded;
@@ -241,7 +242,7 @@ final class PathSearch {
                 pathUnbounded = st.unbounded();
             }
         } else {
-            hops.add(st.hop());
+            hops.push(st.hop());
         }
         if (drives(m)) {
             record(st.periodNs());
@@ -254,7 +255,7 @@ final class PathSearch {
             Frame f = stack.peek();
             if (f.next == f.steps.size() || ++work > maxSteps) {
                 stack.pop();
-                hops.subList(hops.size() - f.hop, hops.size()).clear();
+                hops.pop(f.hop);
                 pathUnbounded = f.unboundedBefore;
                 visited.remove(f.module);
                 trail.subList(f.trailBefore, trail.size()).clear();
@@ -267,24 +268,24 @@ final class PathSearch {
             Hop crossing = next == null ? null : crossing(f.module, next);
             int link = crossing == null ? 0 : 1;
             if (crossing != null) {
-                hops.add(crossing);
+                hops.push(crossing);
             }
             if (step.arrives()) {
                 record(f.period);
             }
             if (next == null || visited.contains(next) || !reaching.containsKey(next)) {
                 trail.subList(before, trail.size()).clear();
-                hops.subList(hops.size() - link, hops.size()).clear();
+                hops.pop(link);
             } else if (step.inhibitor() == null) {
                 push(next, stages.get(next), before, link);
             } else if (!cut()) {
                 LinkPlan inhibitor = step.inhibitor();
                 visited.add(next);
-                hops.add(inhibits(inhibitor, next));
+                hops.push(inhibits(inhibitor, next));
                 stack.push(new Frame(next, 0, steps(next, inhibitor.target()), before, pathUnbounded, link + 1, false));
             } else {
                 trail.subList(before, trail.size()).clear();
-                hops.subList(hops.size() - link, hops.size()).clear();
+                hops.pop(link);
             }
         }
     }
@@ -410,12 +411,12 @@ final class PathSearch {
             list(Long.MAX_VALUE, -1, -1, pathUnbounded);
             return;
         }
-        long reaction = hops.totalNs();
+        long reaction = hops.total();
         long dataAge = Math.addExact(reaction, lastPeriod);
         list(age ? dataAge : reaction, reaction, dataAge, null);
         if (reaction > worstReaction || dataAge > worstAge) {
             if (age ? dataAge > worstAge : reaction > worstReaction) {
-                worstPath = List.copyOf(hops);
+                worstPath = hops.list();
             }
             worstReaction = Math.max(worstReaction, reaction);
             worstAge = Math.max(worstAge, dataAge);
@@ -423,41 +424,65 @@ final class PathSearch {
     }
 
     /**
-     * The hops of the current path, a stack (added at the end, taken off the end), with the total of each prefix kept as
-     * hops are added: a path's reaction time costs O(1) when it reaches the target, not its length (a long path found
-     * again and again, changing near its end, would cost its length each time).
+     * The hops of the current path, a stack (pushed at the end, popped back to a shorter size), with the total of each
+     * prefix kept as hops are pushed: a path's reaction time costs O(1) when it reaches the target, not its length (a
+     * long path found again and again, changing near its end, would cost its length each time). Only push and popTo
+     * change it, so the totals always match the hops.
      */
-    private static final class HopStack extends ArrayList<Hop> {
-        private static final long serialVersionUID = 1L;
+    private static final class HopStack {
         /** A prefix whose total does not fit a long. */
         private static final long OVERFLOW = Long.MIN_VALUE;
-        /** totals[i]: the total of the first i hops (valid up to the size: taking hops off leaves the shorter prefixes). */
-        private long[] totals = new long[16];
+        private Hop[] hops = new Hop[16];
+        /** totals[i]: the total of the first i hops. */
+        private long[] totals = new long[17];
+        private int size;
 
-        @Override
-        public boolean add(Hop h) {
-            int n = size();
-            if (n + 1 >= totals.length) {
-                totals = java.util.Arrays.copyOf(totals, totals.length * 2);
+        int size() {
+            return size;
+        }
+
+        void push(Hop h) {
+            if (size == hops.length) {
+                hops = Arrays.copyOf(hops, size * 2);
+                totals = Arrays.copyOf(totals, size * 2 + 1);
             }
-            long before = totals[n];
+            long before = totals[size];
             long total;
             try {
                 total = before == OVERFLOW ? OVERFLOW : Math.addExact(before, h.totalNs());
             } catch (ArithmeticException e) {
                 total = OVERFLOW;
             }
-            totals[n + 1] = total;
-            return super.add(h);
+            hops[size++] = h;
+            totals[size] = total;
+        }
+
+        /** Takes the hops above the first {@code n} off. */
+        void popTo(int n) {
+            if (n < 0 || n > size) {
+                throw new IllegalArgumentException("popTo " + n + " on a stack of " + size + " hops");
+            }
+            Arrays.fill(hops, n, size, null);
+            size = n;
+        }
+
+        /** Takes the last {@code n} hops off. */
+        void pop(int n) {
+            popTo(size - n);
         }
 
         /** The total of the hops, as summing them with Math.addExact gives it (an ArithmeticException when it does not fit). */
-        long totalNs() {
-            long total = totals[size()];
+        long total() {
+            long total = totals[size];
             if (total == OVERFLOW) {
                 throw new ArithmeticException("long overflow");
             }
             return total;
+        }
+
+        /** The hops, a copy. */
+        List<Hop> list() {
+            return List.of(Arrays.copyOf(hops, size));
         }
     }
 

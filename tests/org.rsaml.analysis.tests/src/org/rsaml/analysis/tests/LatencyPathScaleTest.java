@@ -95,6 +95,7 @@ class LatencyPathScaleTest {
         LatencyResult l = timing.latencies().get(0);
         assertEquals(Verdict.MEETS, l.verdict(), l.explanation());
         assertEquals(1 << rungs, l.paths(), "every path is counted: " + l.explanation());
+        assertFalse(l.pathsAtLeast(), "2^30 paths is an exact count, not flagged as at least");
         List<String> expected = new ArrayList<>(List.of("l/e"));
         for (int i = 0; i < rungs; i++) {
             expected.add("l/a" + i);
@@ -178,6 +179,9 @@ class LatencyPathScaleTest {
         assertTrue(l.unlisted().startsWith("the paths were followed one by one for 1000000 steps, ")
                 && l.unlisted().contains("listed are the longest of those followed, and the worst"), l.unlisted());
         assertEquals(Integer.MAX_VALUE, l.paths(), "2^200 paths: the count stops at its largest");
+        assertTrue(l.pathsAtLeast(), "a count that stopped is flagged as at least that many");
+        String text = TimingText.render("ladder200.rsaml", timing);
+        assertTrue(text.contains("worst path (at least 2147483647 paths examined;"), "the text report says at least: " + text);
         assertTrue(l.unlisted().contains("counted (at least 2147483647 in all)"), "a count that stopped says at least: " + l.unlisted());
     }
 

@@ -5,6 +5,7 @@
 package org.rsaml.cli.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
@@ -60,6 +61,7 @@ class AnalyzeCommandTest {
         assertEquals(3, every.size(), all.toString());
         assertEquals(3, all.get("pathsListed").getAsInt(), "the JSON says how many paths it lists: " + all);
         assertEquals(all.get("paths").getAsInt(), every.size(), "every path counted is listed: " + all);
+        assertFalse(all.get("pathsAtLeast").getAsBoolean(), "three paths are an exact count: " + all);
         assertTrue(!all.has("pathsNotListed"), "nothing is said to be left out when every path is listed: " + all);
         assertEquals(1_227_000_000L, every.get(0).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
         assertEquals(33_000_000L, every.get(2).getAsJsonObject().get("reactionTimeNs").getAsLong(), all.toString());
