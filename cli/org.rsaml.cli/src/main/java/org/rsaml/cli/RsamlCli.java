@@ -57,6 +57,9 @@ public final class RsamlCli implements Runnable {
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;
 
+    /** Guice's switch for the classes it generates (method interception and fast construction), read once, when it loads. */
+    private static final String GUICE_CLASS_GENERATION = "guice_bytecode_gen_option";
+
     RsamlCli(Path workingDirectory) {
         this.workingDirectory = workingDirectory;
     }
@@ -67,6 +70,12 @@ public final class RsamlCli implements Runnable {
     }
 
     public static void main(String[] args) {
+        // A process of its own (the launcher, the runnable jar, the language server): Guice, which builds the text
+        // syntax's objects, does so by reflection rather than by generating classes, which needs sun.misc.Unsafe and
+        // on JDK 24 and later prints warnings about it that a user can do nothing about. A value given with -D stays.
+        if (System.getProperty(GUICE_CLASS_GENERATION) == null) {
+            System.setProperty(GUICE_CLASS_GENERATION, "DISABLED");
+        }
         PrintWriter out = new PrintWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), true);
         PrintWriter err = new PrintWriter(new OutputStreamWriter(System.err, StandardCharsets.UTF_8), true);
         int code = run(Path.of("").toAbsolutePath(), args, out, err);
