@@ -42,8 +42,11 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
      */
     public static final int MAX_LISTED_PATHS = 10_000;
 
-    /** Stages of the paths listed per requirement, in all: long paths are listed fewer (the longest at least). */
-    public static final int MAX_LISTED_STAGES = 1_000_000;
+    /**
+     * Stages of the paths listed per requirement, in all: long paths are listed fewer (the longest at least). Each
+     * stage is some 300 bytes of JSON, so that a requirement's {@code everyPath} stays within some 30 MB.
+     */
+    public static final int MAX_LISTED_STAGES = 100_000;
 
     /** Paths the text report and the diagram overlay show one by one, the longest first; JSON lists them all. */
     public static final int SHOWN_PATHS = 10;

@@ -53,6 +53,21 @@ public final class TimingAnalysis {
      * @throws TimingModelException the deployment is contradictory (a module on two processors)
      */
     public static ArchitectureTiming analyse(Architecture architecture) throws UnplannableException, TimingModelException {
+        return analyse(architecture, true);
+    }
+
+    /**
+     * The analysis for its verdicts only: each latency requirement's worst path, without the list of its paths
+     * ({@link LatencyResult#pathBounds()} empty), which only the reports show (validation's rules need the verdict).
+     *
+     * @throws UnplannableException a time of the model cannot be represented (see {@link ExecutionPlan#of})
+     * @throws TimingModelException the deployment is contradictory (a module on two processors)
+     */
+    public static ArchitectureTiming verdicts(Architecture architecture) throws UnplannableException, TimingModelException {
+        return analyse(architecture, false);
+    }
+
+    private static ArchitectureTiming analyse(Architecture architecture, boolean listPaths) throws UnplannableException, TimingModelException {
         ExecutionPlan plan = ExecutionPlan.of(architecture);
         Map<Module, Processor> allocation = allocation(architecture);
         Map<String, Group> groups = new LinkedHashMap<>();
@@ -92,7 +107,7 @@ public final class TimingAnalysis {
             String why = shared.get(g);
             processors.add(why == null ? p : new ProcessorTiming(p.name(), p.element(), sharing(p.result(), why), p.sources(), p.notes()));
         }
-        List<LatencyResult> latencies = Latencies.analyse(plan, architecture.getLatencyRequirements(), processors);
+        List<LatencyResult> latencies = Latencies.analyse(plan, architecture.getLatencyRequirements(), processors, listPaths);
         return new ArchitectureTiming(RsamlLabels.name(architecture), processors, excluded, latencies);
     }
 

@@ -38,7 +38,9 @@ public final class Latencies {
     record Stage(Hop hop, long periodNs, String unbounded) {
     }
 
-    public static List<LatencyResult> analyse(ExecutionPlan plan, List<LatencyRequirement> requirements, List<ProcessorTiming> processors) {
+    /** @param listPaths whether to list each requirement's paths with their bounds (the reports), or only the worst (verdicts) */
+    public static List<LatencyResult> analyse(ExecutionPlan plan, List<LatencyRequirement> requirements, List<ProcessorTiming> processors,
+            boolean listPaths) {
         if (requirements.isEmpty()) {
             return List.of();
         }
@@ -58,7 +60,7 @@ public final class Latencies {
         }
         List<LatencyResult> results = new ArrayList<>();
         for (LatencyRequirement r : requirements) {
-            results.add(new LatencyCheck(plan, stages, r).run());
+            results.add(new LatencyCheck(plan, stages, r, listPaths).run());
         }
         return results;
     }

@@ -40,11 +40,14 @@ final class LatencyCheck {
     private final ExecutionPlan plan;
     private final Map<PlannedModule, Stage> stages;
     private final LatencyRequirement requirement;
+    /** Whether the paths are listed with their bounds (the reports), or only the worst kept (verdicts). */
+    private final boolean listPaths;
 
-    LatencyCheck(ExecutionPlan plan, Map<PlannedModule, Stage> stages, LatencyRequirement requirement) {
+    LatencyCheck(ExecutionPlan plan, Map<PlannedModule, Stage> stages, LatencyRequirement requirement, boolean listPaths) {
         this.plan = plan;
         this.stages = stages;
         this.requirement = requirement;
+        this.listPaths = listPaths;
     }
 
     LatencyResult run() {
@@ -74,7 +77,7 @@ final class LatencyCheck {
             return fail(name, from, to, maxNs, age, "the target " + to + " is neither an actuator nor an entry port: choose one");
         }
         PathSearch search = new PathSearch(plan, stages, age, via, requirement.getTarget() instanceof Actuator a ? a : null,
-                requirement.getTarget() instanceof EntryPort e ? e : null);
+                requirement.getTarget() instanceof EntryPort e ? e : null, listPaths);
         LongestPaths dp = new LongestPaths(search, stages, age, via);
         List<Runnable> roots = new ArrayList<>();
         if (requirement.getSource() instanceof Sensor s) {
@@ -114,7 +117,7 @@ final class LatencyCheck {
                 worstAge = dp.worst(true);
                 PathBound worst = dp.worst();
                 worstPath = worst == null ? List.of() : worst.hops();
-                if (worst != null && !listed.contains(worst)) {
+                if (listPaths && worst != null && !listed.contains(worst)) {
                     List<PathBound> more = new ArrayList<>(listed);
                     more.add(0, worst);
                     long stages = more.stream().mapToLong(b -> b.hops().size()).sum();
@@ -159,7 +162,9 @@ final class LatencyCheck {
                     + ", within " + RsamlTimes.text(maxNs);
         }
         String unlisted = "";
-        if (cut) {
+        if (!listPaths) {
+            unlisted = "the paths are not listed: the analysis was run for its verdicts (rsaml analyze lists them)";
+        } else if (cut) {
             unlisted = "the paths were followed one by one for " + search.maxSteps() + " steps, " + search.paths() + " of them to the target;"
                     + (exact ? " the others were counted (" + count(paths) + " in all) and the worst found by a longest-path computation, which"
                             + " does not list them: listed are the longest of those followed, and the worst"

@@ -157,14 +157,22 @@ final class LongestPaths {
 
     /** The worst reaction time (or, {@code dataAge}, data age) over the paths with a bound, -1 when none. */
     long worst(boolean dataAge) {
+        Node r = worstRoot(dataAge);
+        return r == null ? -1 : Math.addExact(own(r.key), dataAge ? r.dataAge : r.reaction);
+    }
+
+    /** The root whose paths with a bound hold the worst reaction time (or data age), the first of equals; null when none. */
+    private Node worstRoot(boolean dataAge) {
+        Node worst = null;
         long w = -1;
         for (Node r : roots) {
             long v = dataAge ? r.dataAge : r.reaction;
-            if (v >= 0) {
-                w = Math.max(w, Math.addExact(own(r.key), v));
+            if (v >= 0 && Math.addExact(own(r.key), v) > w) {
+                w = Math.addExact(own(r.key), v);
+                worst = r;
             }
         }
-        return w;
+        return worst;
     }
 
     /** The paths with a bound (saturating). */
@@ -204,14 +212,7 @@ final class LongestPaths {
 
     /** The worst path with a bound for the requirement's kind, or null when none. */
     PathBound worst() {
-        long bestValue = worst(age);
-        Node best = null;
-        for (Node r : roots) {
-            long v = age ? r.dataAge : r.reaction;
-            if (best == null && v >= 0 && Math.addExact(own(r.key), v) == bestValue) {
-                best = r;
-            }
-        }
+        Node best = worstRoot(age);
         if (best == null) {
             return null;
         }

@@ -47,6 +47,8 @@ final class PathSearch {
     private final List<EObject> via;
     private final Actuator actuator;
     private final EntryPort entry;
+    /** Whether paths are listed (the reports) or only the worst kept (verdicts). */
+    private final boolean listPaths;
     private final Set<PlannedModule> visited = new HashSet<>();
     private final HopStack hops = new HopStack();
     /** The modules, ports and links the current path has passed, for {@code via}. */
@@ -77,9 +79,11 @@ final class PathSearch {
      * @param via      the elements its paths must pass, in order
      * @param actuator its target when an actuator, else null
      * @param entry    its target when an entry port, else null
+     * @param listPaths whether to list the longest paths ({@link #longestFirst()}), or only keep the worst
      */
     PathSearch(ExecutionPlan plan, Map<PlannedModule, Stage> stages, boolean age, List<EObject> via, Actuator actuator,
-            EntryPort entry) {
+            EntryPort entry, boolean listPaths) {
+        this.listPaths = listPaths;
         this.plan = plan;
         this.stages = stages;
         this.age = age;
@@ -146,6 +150,9 @@ final class PathSearch {
      * dropped at once is not copied: a path costs its copy only when listed.
      */
     private void list(long key, long reaction, long dataAge, String why) {
+        if (!listPaths) {
+            return;
+        }
         if (listed.size() >= LatencyResult.MAX_LISTED_PATHS || listedStages + hops.size() > LatencyResult.MAX_LISTED_STAGES) {
             PathBound shortest = listed.peek();
             if (shortest == null || key <= key(shortest)) {

@@ -240,7 +240,7 @@ public final class TimingChecks {
         Map<EObject, List<Found>> out = new IdentityHashMap<>();
         ArchitectureTiming timing;
         try {
-            timing = TimingAnalysis.analyse(architecture);
+            timing = TimingAnalysis.verdicts(architecture);
         } catch (UnplannableException e) {
             return out; // RSA-13 or RSA-20 reports the time; prerequisitesHold normally catches it first
         } catch (TimingModelException e) {

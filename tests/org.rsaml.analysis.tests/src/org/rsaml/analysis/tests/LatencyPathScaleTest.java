@@ -108,6 +108,32 @@ class LatencyPathScaleTest {
         assertTrue(l.explanation().contains("over " + (1 << rungs) + " paths"), l.explanation());
     }
 
+    /**
+     * A ladder of 30 rungs, the requirement bounding the data age of the paths through b15 (2^29 of them, too many to
+     * follow): the worst is found exactly by the longest-path computation, through b15 and every a elsewhere, its data
+     * age its reaction time plus the last stage's period.
+     */
+    @Test
+    void theDataAgeOfThePathsThroughANamedModuleIsBoundedExactlyPastTheSearch(@TempDir Path tmp) throws Exception {
+        int rungs = 30;
+        String text = ladder(rungs).replace("<latencyRequirements name=\"req\"", "<latencyRequirements name=\"req\" kind=\"dataAge\""
+                + " via=\"//@layers[name='l']/@modules[name='b15']\"");
+        LatencyResult l = analyse(tmp, "ladder-via.rsaml", text).latencies().get(0);
+        assertEquals(Verdict.MEETS, l.verdict(), l.explanation());
+        assertEquals(1L << (rungs - 1), (long) l.paths(), "every path through b15 is counted: " + l.explanation());
+        List<String> expected = new ArrayList<>(List.of("l/e"));
+        for (int i = 0; i < rungs; i++) {
+            expected.add(i == 15 ? "l/b15" : "l/a" + i);
+        }
+        expected.add("l/act");
+        assertEquals(expected, l.worstPath().stream().map(Hop::label).toList(), "the worst path through b15 waits for every other a");
+        long reaction = l.worstPath().stream().mapToLong(Hop::totalNs).sum();
+        assertEquals(reaction, l.reactionNs(), "the reaction time is the worst path's");
+        assertEquals(reaction + 100_000_000L, l.dataAgeNs(), "the data age adds the period of the last stage, act's 100 ms");
+        assertTrue(l.explanation().contains("maximum data age is at most") && l.explanation().contains("through l/b15"), l.explanation());
+        assertEquals(l.dataAgeNs(), l.pathBounds().get(0).dataAgeNs(), "the worst path, found past the search, is listed first");
+    }
+
     /** How many of a path's stages are a modules (the slower ones to wait for: a longer path has more). */
     private static long slowStages(PathBound b) {
         return b.hops().stream().filter(h -> h.label().matches("l/a\\d+")).count();
@@ -136,35 +162,37 @@ class LatencyPathScaleTest {
     }
 
     /**
-     * 16,384 paths, more than the 10,000 listed: the listed ones are the longest (every path with 7 or more of the 14
-     * slower stages, and 92 of the 3,003 with 6), and the result says the others are counted, not listed.
+     * 16,384 paths of 16 stages, more than the 100,000 stages listed hold: the 6,250 listed are the longest (every path
+     * with 9 or more of the 14 slower stages, and 2,777 of the 3,003 with 8), and the result says the others are counted,
+     * not listed.
      */
     @Test
     void pastTheListingLimitTheLongestPathsAreListedAndTheRestCounted(@TempDir Path tmp) throws Exception {
         ArchitectureTiming timing = analyse(tmp, "ladder14.rsaml", ladder(14));
         LatencyResult l = timing.latencies().get(0);
         assertEquals(16384, l.paths(), "every path is counted: " + l.explanation());
-        assertEquals(LatencyResult.MAX_LISTED_PATHS, l.pathBounds().size(), "the listing stops at its limit");
-        assertEquals("the 10000 longest of 16384 are listed (at most 10000 paths of 1000000 stages in all)", l.unlisted(), "the result says what is left out");
-        // paths with k slower stages: C(14, k); the 10,000 longest are those with k >= 7 (9,908) and 92 with k = 6
+        assertEquals(LatencyResult.MAX_LISTED_STAGES / 16, l.pathBounds().size(), "the listing stops at its stages");
+        assertEquals("the 6250 longest of 16384 are listed (at most 10000 paths of 100000 stages in all)", l.unlisted(), "the result says what is left out");
+        // paths with k slower stages: C(14, k); the 6,250 longest are those with k >= 9 (3,473) and 2,777 with k = 8
         long[] binomial = { 1, 14, 91, 364, 1001, 2002, 3003, 3432, 3003, 2002, 1001, 364, 91, 14, 1 };
         long[] listed = new long[15];
         l.pathBounds().forEach(b -> listed[(int) slowStages(b)]++);
-        for (int k = 7; k <= 14; k++) {
+        for (int k = 9; k <= 14; k++) {
             assertEquals(binomial[k], listed[k], "every path with " + k + " slower stages is among the longest listed");
         }
-        assertEquals(92, listed[6], "the rest of the 10,000 have 6 slower stages");
-        for (int k = 0; k < 6; k++) {
+        assertEquals(2777, listed[8], "the rest of the 6,250 have 8 slower stages");
+        for (int k = 0; k < 8; k++) {
             assertEquals(0, listed[k], "no shorter path with " + k + " slower stages is listed");
         }
         String text = TimingText.render("ladder14.rsaml", timing);
-        assertTrue(text.contains("  the 10 longest paths listed (rsaml analyze --format json lists 10000; the 10000 longest of 16384"
-                + " are listed (at most 10000 paths of 1000000 stages in all)):\n"), text);
+        assertTrue(text.contains("  the 10 longest paths listed (rsaml analyze --format json lists 6250; the 6250 longest of 16384"
+                + " are listed (at most 10000 paths of 100000 stages in all)):\n"), text);
     }
 
     /**
      * A ladder of 200 rungs: its search stops after 1,000,000 steps, and the paths it followed, 202 stages each, are listed
-     * within the 1,000,000 stages the list holds, the worst first; the result says so.
+     * within the 100,000 stages the list holds, the worst first; the result says so. The analysis for verdicts only (as
+     * validation runs it) gives the same verdict and worst path, and lists none.
      */
     @Test
     void longPathsAreListedWithinTheStagesTheListHoldsAndACutSearchSaysWhichAreListed(@TempDir Path tmp) throws Exception {
@@ -173,8 +201,7 @@ class LatencyPathScaleTest {
         assertEquals(Verdict.MISSES, l.verdict(), "200 stages of up to 1 s exceed the 100 s allowed: " + l.explanation());
         assertTrue(l.reactionNs() > 200 * 1_000_000_000L, "the worst path waits for every a: " + l.reactionNs());
         long stages = l.pathBounds().stream().mapToLong(b -> b.hops().size()).sum();
-        assertTrue(stages <= LatencyResult.MAX_LISTED_STAGES && l.pathBounds().size() >= 1_000,
-                "within the list's stages, as many paths as fit: " + l.pathBounds().size() + " paths, " + stages + " stages");
+        assertEquals(LatencyResult.MAX_LISTED_STAGES / 202, l.pathBounds().size(), "as many paths as fit the list's stages: " + stages);
         assertEquals(l.reactionNs(), l.pathBounds().get(0).reactionNs(), "the worst path, found past the search, is listed first");
         assertTrue(l.unlisted().startsWith("the paths were followed one by one for 1000000 steps, ")
                 && l.unlisted().contains("listed are the longest of those followed, and the worst"), l.unlisted());
@@ -182,6 +209,13 @@ class LatencyPathScaleTest {
         assertTrue(l.pathsAtLeast(), "a count that stopped is flagged as at least that many");
         String text = TimingText.render("ladder200.rsaml", timing);
         assertTrue(text.contains("worst path (at least 2147483647 paths examined;"), "the text report says at least: " + text);
+        LatencyResult verdict = TimingAnalysis.verdicts(ModelLoader.load(tmp.resolve("ladder200.rsaml"), "ladder200.rsaml").architecture())
+                .latencies().get(0);
+        assertEquals(l.verdict(), verdict.verdict(), "the verdict without the list is the same: " + verdict.explanation());
+        assertEquals(l.explanation(), verdict.explanation(), "and said the same");
+        assertEquals(l.worstPathText(), verdict.worstPathText(), "the worst path is kept without the list");
+        assertTrue(verdict.pathBounds().isEmpty(), "for verdicts only, no path is listed: " + verdict.pathBounds().size());
+        assertTrue(verdict.unlisted().contains("not listed"), "and the result says so: " + verdict.unlisted());
         assertTrue(l.unlisted().contains("counted (at least 2147483647 in all)"), "a count that stopped says at least: " + l.unlisted());
     }
 

@@ -58,7 +58,7 @@ public final class ReleaseBounds {
     /** The analysis of the plan's architecture; a model the analysis refuses gives no bounds, and says why. */
     public static ReleaseBounds of(ExecutionPlan plan) {
         try {
-            return new ReleaseBounds(TimingAnalysis.analyse(plan.architecture()), null);
+            return new ReleaseBounds(TimingAnalysis.verdicts(plan.architecture()), null);
         } catch (UnplannableException | TimingModelException e) {
             return new ReleaseBounds(null, "the timing analysis refuses the model: " + e.getMessage());
         }
