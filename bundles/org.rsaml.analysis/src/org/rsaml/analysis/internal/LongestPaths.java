@@ -217,6 +217,7 @@ final class LongestPaths {
             return null;
         }
         List<Hop> hops = new ArrayList<>();
+        List<EObject> passes = new ArrayList<>(List.of(best.key.m().module()));
         if (best.key.stage() != null) {
             hops.add(best.key.stage().hop());
         }
@@ -224,6 +225,7 @@ final class LongestPaths {
         long period = n.key.period();
         while (n.choice >= 0) {
             PathSearch.Step step = n.steps.get(n.choice / 2);
+            passes.addAll(step.adds());
             Hop crossing = step.next() == null ? null : PathSearch.crossing(n.key.m(), step.next());
             if (crossing != null) {
                 hops.add(crossing);
@@ -234,6 +236,7 @@ final class LongestPaths {
             }
             Node child = nodes.get(child(n.key, step));
             hops.add(childHop(step, child.key));
+            passes.add(child.key.m().module());
             n = child;
             period = n.key.period();
         }
@@ -241,7 +244,7 @@ final class LongestPaths {
         for (Hop h : hops) {
             reaction = Math.addExact(reaction, h.totalNs());
         }
-        return new PathBound(hops, reaction, Math.addExact(reaction, period), null);
+        return new PathBound(hops, reaction, Math.addExact(reaction, period), null, passes);
     }
 
     private static long own(Key k) {

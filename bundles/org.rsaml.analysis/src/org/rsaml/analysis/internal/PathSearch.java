@@ -160,7 +160,7 @@ final class PathSearch {
                 return;
             }
         }
-        PathBound b = new PathBound(hops.list(), reaction, dataAge, why);
+        PathBound b = new PathBound(hops.list(), reaction, dataAge, why, trail);
         listed.add(b);
         listedStages += b.hops().size();
         while (listed.size() > 1 && (listed.size() > LatencyResult.MAX_LISTED_PATHS || listedStages > LatencyResult.MAX_LISTED_STAGES)) {

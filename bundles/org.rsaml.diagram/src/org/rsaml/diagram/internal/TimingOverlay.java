@@ -5,6 +5,7 @@
 package org.rsaml.diagram.internal;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -37,6 +38,7 @@ import org.rsaml.model.Module;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
 import org.rsaml.model.Sensor;
+import org.rsaml.model.SubsumptionLink;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.model.support.RsamlTimes;
 
@@ -208,44 +210,45 @@ public final class TimingOverlay implements DiagramOverlay {
     }
 
     /**
-     * Per module and connection on any listed path of the requirement, the worst bound of the listed paths
-     * through it (data attribute {@code latency-worst}, {@code name: 1.2 s}); a module off the worst path
-     * also gets it as a line, so that the diagram shows what each branch takes, not only the worst one.
+     * Per module, connection, inhibitor and suppressor on any listed path of the requirement, the worst bound of the
+     * listed paths through it (data attribute {@code latency-worst}, {@code name: 1.2 s}): a connection by the ports
+     * the path passes, so that of two between the same modules only the one taken carries it; a module off the worst
+     * path also gets it as a line, so that the diagram shows what each branch takes, not only the worst one.
      */
     private void edgeWorst(Architecture architecture, LatencyResult l) {
         Map<String, Long> worst = new LinkedHashMap<>();
-        Map<List<Module>, Long> pairs = new LinkedHashMap<>();
+        Map<List<Port>, Connection> byPorts = new HashMap<>();
+        for (Connection c : architecture.getConnections()) {
+            if (c.getSource() != null && c.getTarget() != null) {
+                byPorts.putIfAbsent(List.of(c.getSource(), c.getTarget()), c);
+            }
+        }
         Set<Module> onWorst = new LinkedHashSet<>();
         l.worstPath().forEach(h -> onWorst.add(h.module()));
         Set<String> offWorst = new LinkedHashSet<>();
         for (PathBound b : l.pathBounds()) {
             long bound = b.bounded() ? (l.dataAge() ? b.dataAgeNs() : b.reactionNs()) : -1;
-            Module before = null;
             for (Hop h : b.hops()) {
                 Module m = h.module();
                 if (m == null) {
-                    before = null;
                     continue;
                 }
                 worst.merge(RsamlLabels.qualifiedName(m), bound, WORSE);
                 if (!onWorst.contains(m)) {
                     offWorst.add(RsamlLabels.qualifiedName(m));
                 }
-                if (before != null && before != m) {
-                    pairs.merge(List.of(before, m), bound, WORSE);
-                }
-                before = m;
             }
-        }
-        // each connection's worst over the pairs of modules it joins (one pass over the connections)
-        for (Connection c : architecture.getConnections()) {
-            Port s = c.getSource();
-            Port t = c.getTarget();
-            if (s != null && t != null && s.eContainer() instanceof Module from && t.eContainer() instanceof Module to) {
-                Long bound = pairs.get(List.of(from, to));
-                if (bound != null) {
-                    worst.merge(RsamlLabels.qualifiedName(c), bound, WORSE);
+            EObject before = null;
+            for (EObject e : b.passes()) {
+                if (e instanceof SubsumptionLink link) {
+                    worst.merge(RsamlLabels.qualifiedName(link), bound, WORSE);
+                } else if (before instanceof Port s && e instanceof Port t) {
+                    Connection c = byPorts.get(List.of(s, t));
+                    if (c != null) {
+                        worst.merge(RsamlLabels.qualifiedName(c), bound, WORSE);
+                    }
                 }
+                before = e;
             }
         }
         String paths = l.unlisted().isEmpty() ? "the paths" : "the listed paths";

@@ -182,6 +182,52 @@ class TimingOverlayTest {
                 && module(l.target()).equals(root + "/reactive/avoid")).findFirst()
                 .orElseThrow(() -> new AssertionError("the detector's connection to avoid is drawn"));
         assertEquals("scanToWheels: 132 ms", fromDetector.data().get("latency-worst"), "the connection's worst is its branch's: " + fromDetector);
+        SvgDocument.Link halt = svg.links.stream().filter(l -> l.kind().equals("inhibitor")).findFirst()
+                .orElseThrow(() -> new AssertionError("the monitor's inhibitor is drawn"));
+        assertTrue(String.valueOf(halt.data().get("latency-worst")).startsWith("scanToWheels: 33 ms"),
+                "the inhibitor the monitor's path passes carries its bound: " + halt);
+    }
+
+    /**
+     * Of two connections between the same two modules, only the one a path takes carries its bound: the requirement
+     * starts at e.o1, so e.o2's connection to r is on no path of it.
+     */
+    @Test
+    void onlyTheConnectionAPathTakesCarriesItsBound(@TempDir Path tmp) throws Exception {
+        String port = "//@layers[name='l']/@modules[name='%s']/@ports[name='%s']";
+        String text = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rsaml:Architecture xmi:version=\"2.0\" xmlns:xmi=\"http://www.omg.org/XMI\""
+                + " xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"two\""
+                + " declaredLayers=\"1\">\n<layers name=\"l\" level=\"0\" timeUnit=\"ms\">\n"
+                + "<modules name=\"e\" type=\"realTime\" period=\"100.0\" execDuration=\"1.0\" execType=\"periodic\">"
+                + "<ports xsi:type=\"rsaml:OutputPort\" name=\"o1\" dataType=\"numeric\"/><ports xsi:type=\"rsaml:OutputPort\" name=\"o2\""
+                + " dataType=\"numeric\"/></modules>\n"
+                + "<modules name=\"q\" execDuration=\"0.1\" execType=\"sporadic\" period=\"20.0\"><ports xsi:type=\"rsaml:EntryPort\" name=\"i\""
+                + " dataType=\"numeric\"/><ports xsi:type=\"rsaml:OutputPort\" name=\"o\" dataType=\"numeric\"/></modules>\n"
+                + "<modules name=\"r\" execDuration=\"0.1\" execType=\"sporadic\" period=\"10.0\" actuators=\"//@actuators[name='t']\">"
+                + "<ports xsi:type=\"rsaml:EntryPort\" name=\"i1\" dataType=\"numeric\"/><ports xsi:type=\"rsaml:EntryPort\" name=\"i2\""
+                + " dataType=\"numeric\"/><ports xsi:type=\"rsaml:EntryPort\" name=\"i3\" dataType=\"numeric\"/></modules>\n</layers>\n"
+                + connection(port, "e", "o1", "r", "i1") + connection(port, "e", "o2", "r", "i2") + connection(port, "e", "o1", "q", "i")
+                + connection(port, "q", "o", "r", "i3")
+                + "<actuators name=\"t\" timeUnit=\"ms\" period=\"10.0\"/>\n<latencyRequirements name=\"fromO1\" timeUnit=\"ms\" source=\""
+                + port.formatted("e", "o1") + "\" target=\"//@actuators[name='t']\" maxLatency=\"1000.0\"/>\n</rsaml:Architecture>\n";
+        Path file = tmp.resolve("two-connections.rsaml");
+        Files.writeString(file, text);
+        LoadedModel model = ModelLoader.load(file, "two-connections.rsaml");
+        SvgDocument svg = new SvgDocument(new RsamlDiagrams(DiagramView.ARCHITECTURE).timing(TimingMode.AUTO)
+                .svg(model.architecture(), RsamlModelValidator.validate(model)));
+        List<SvgDocument.Link> eToR = svg.links.stream().filter(l -> module(l.source()).equals("two/l/e") && module(l.target()).equals("two/l/r"))
+                .toList();
+        assertEquals(2, eToR.size(), "both connections from e to r are drawn: " + svg.links);
+        for (SvgDocument.Link l : eToR) {
+            boolean taken = l.source().endsWith("/o1");
+            assertEquals(taken, l.data().containsKey("latency-worst"),
+                    (taken ? "the connection from o1, which the paths take, carries their bound: " : "the one from o2, on no path, carries none: ")
+                            + l);
+        }
+    }
+
+    private static String connection(String port, String from, String out, String to, String in) {
+        return "<connections source=\"" + port.formatted(from, out) + "\" target=\"" + port.formatted(to, in) + "\"/>\n";
     }
 
     @Test
