@@ -134,6 +134,33 @@ class LatencyPathScaleTest {
         assertEquals(l.dataAgeNs(), l.pathBounds().get(0).dataAgeNs(), "the worst path, found past the search, is listed first");
     }
 
+    /**
+     * A ladder of 30 rungs whose a29 also feeds a slow monitor that inhibits b29's output, and whose actuator's module is
+     * on another host (5 ms of link): 2^30 paths straight on and 2^29 through the inhibitor, too many to follow. The
+     * worst, found exactly past the search, passes the monitor, its inhibitor (at once, +0) and the link.
+     */
+    @Test
+    void aPathThroughAnInhibitorAndAcrossHostsIsBoundedExactlyPastTheSearch(@TempDir Path tmp) throws Exception {
+        String module = "//@layers[name='l']/@modules[name='%s']";
+        String monitor = "<modules name=\"mon\" execDuration=\"0.01\" execType=\"sporadic\" period=\"5000.0\"><ports xsi:type=\"rsaml:EntryPort\""
+                + " name=\"i\" dataType=\"numeric\"/><ports xsi:type=\"rsaml:OutputPort\" name=\"o\" dataType=\"numeric\"/><inhibitors name=\"halt\""
+                + " trigger=\"" + PORT.formatted("mon", "o") + "\" duration=\"15.0\" target=\"" + PORT.formatted("b29", "o") + "\"/></modules>\n";
+        String text = ladder(30).replace("  </layers>\n", "    " + monitor + "  </layers>\n  <connections source=\"" + PORT.formatted("a29", "o")
+                + "\" target=\"" + PORT.formatted("mon", "i") + "\"/>\n  <processors name=\"board\" core=\"0\" host=\"wheels\" linkLatency=\"5.0\""
+                + " timeUnit=\"ms\" modules=\"" + module.formatted("act") + "\"/>\n");
+        LatencyResult l = analyse(tmp, "ladder-inhibitor.rsaml", text).latencies().get(0);
+        assertEquals(Verdict.MEETS, l.verdict(), l.explanation());
+        assertEquals(3 << 29, l.paths(), "2^30 paths straight on and 2^29 through the inhibitor: " + l.explanation());
+        List<String> expected = new ArrayList<>(List.of("l/e"));
+        for (int i = 0; i < 30; i++) {
+            expected.add("l/a" + i);
+        }
+        expected.addAll(List.of("l/mon", "l/mon.halt", "link main -> 'wheels'", "l/act"));
+        assertEquals(expected, l.worstPath().stream().map(Hop::label).toList(), "the worst path waits for the monitor and crosses the link");
+        assertEquals(5_000_000L, l.worstPath().get(expected.size() - 2).totalNs(), "the link adds its 5 ms");
+        assertEquals(l.worstPath().stream().mapToLong(Hop::totalNs).sum(), l.reactionNs(), "the bound is the worst path's");
+    }
+
     /** How many of a path's stages are a modules (the slower ones to wait for: a longer path has more). */
     private static long slowStages(PathBound b) {
         return b.hops().stream().filter(h -> h.label().matches("l/a\\d+")).count();
