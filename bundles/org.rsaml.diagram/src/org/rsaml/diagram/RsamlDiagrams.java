@@ -14,7 +14,10 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 
+import org.eclipse.emf.common.util.TreeIterator;
+import org.eclipse.emf.ecore.EObject;
 import org.rsaml.diagram.internal.ArchitectureLayout;
+import org.rsaml.diagram.internal.DeepStack;
 import org.rsaml.diagram.internal.Drawing;
 import org.rsaml.diagram.internal.HtmlWriter;
 import org.rsaml.diagram.internal.MissionLayout;
@@ -63,14 +66,40 @@ public final class RsamlDiagrams {
         return this;
     }
 
-    /** The SVG document of an architecture, its elements decorated with the findings. */
+    /**
+     * The SVG document of an architecture, its elements decorated with the findings.
+     *
+     * @throws StackOverflowError when even the stack {@link DeepStack} sized for the model is too small
+     */
     public String svg(Architecture architecture, List<Finding> findings) {
-        return SvgWriter.write(draw(architecture, findings), true);
+        return text(architecture, null, findings, DiagramFormat.SVG);
     }
 
-    /** The HTML page of a model read from {@code file} (the name shown on the page), with its findings. */
+    /**
+     * The HTML page of a model read from {@code file} (the name shown on the page), with its findings.
+     *
+     * @throws StackOverflowError when even the stack {@link DeepStack} sized for the model is too small
+     */
     public String html(Architecture architecture, String file, List<Finding> findings) {
-        return HtmlWriter.write(draw(architecture, findings), file, findings);
+        return text(architecture, file, findings, DiagramFormat.HTML);
+    }
+
+    /**
+     * The diagram's text, laid out and written on a thread whose stack grows with the model (ELK's layout recurses
+     * along chains of modules), so that a long chain does not overflow the caller's stack.
+     */
+    private String text(Architecture architecture, String file, List<Finding> findings, DiagramFormat format) {
+        return DeepStack.call("rsaml-diagram", DeepStack.bytesFor(elements(architecture)),
+                () -> format == DiagramFormat.HTML ? HtmlWriter.write(draw(architecture, findings), file, findings)
+                        : SvgWriter.write(draw(architecture, findings), true));
+    }
+
+    private static long elements(Architecture architecture) {
+        long count = 0;
+        for (TreeIterator<EObject> all = architecture.eAllContents(); all.hasNext(); all.next()) {
+            count++;
+        }
+        return count;
     }
 
     private Drawing draw(Architecture architecture, List<Finding> findings) {
@@ -116,13 +145,23 @@ public final class RsamlDiagrams {
      * @param displayName the model as the user named it, shown in the page and in messages
      * @return the file written
      * @throws ModelLoadException when the model cannot be read
-     * @throws DiagramException   when the diagram cannot be written
+     * @throws DiagramException   when the diagram cannot be laid out (a model too deep even for the stack
+     *                            {@link DeepStack} sized for it) or written
      */
     public Path write(Path model, String displayName, DiagramFormat format, Path directory) throws ModelLoadException, DiagramException {
         LoadedModel loaded = ModelLoader.load(model, displayName);
         List<Finding> findings = RsamlModelValidator.validate(loaded);
-        String text = format == DiagramFormat.HTML ? html(loaded.architecture(), displayName, findings)
-                : svg(loaded.architecture(), findings);
+        String text;
+        try {
+            text = text(loaded.architecture(), displayName, findings, format);
+        } catch (StackOverflowError e) {
+            long elements = elements(loaded.architecture());
+            long mib = DeepStack.bytesFor(elements) >> 20;
+            throw new DiagramException("too deep to lay out: the layout of its " + elements + " elements recursed past the "
+                    + mib + " MiB stack it was given (long chains of connected modules recurse deepest); draw it with a larger"
+                    + " stack, e.g. RSAML_JAVA_OPTS=-D" + DeepStack.PROPERTY + "=" + Math.max(4 * mib, 64)
+                    + " (for the Maven goal, in MAVEN_OPTS), or split the chain", e);
+        }
         Path target = directory.resolve(fileName(model, format));
         write(target, text);
         return target;

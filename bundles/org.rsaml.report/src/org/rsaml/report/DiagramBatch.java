@@ -128,6 +128,16 @@ public final class DiagramBatch {
             } catch (DiagramException e) {
                 listener.failed(List.of(input.displayName() + ": error: " + e.getMessage()), e.getCause());
                 failed++;
+            } catch (OutOfMemoryError e) {
+                // The model and its layout are dropped with this file: the next one has the heap again.
+                listener.failed(List.of(input.displayName() + ": error: the model is too large for the available heap ("
+                        + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB) to be drawn; give the JVM more memory with -Xmx"), e);
+                failed++;
+            } catch (RuntimeException | StackOverflowError | LinkageError | AssertionError e) {
+                // A defect of RsaML's own (or of the layout library): it costs this file only, not the batch.
+                listener.failed(List.of(input.displayName() + ": error: internal error while drawing this file (a defect in RsaML,"
+                        + " please report it): " + e), e);
+                failed++;
             }
         }
         return new Outcome(failed);

@@ -22,6 +22,7 @@ import org.rsaml.diagram.TimingMode;
 import org.rsaml.report.DiagramBatch;
 import org.rsaml.report.ExitCodes;
 import org.rsaml.report.ModelFiles;
+import org.rsaml.tests.support.ChainModels;
 import org.rsaml.tests.support.TestRepository;
 
 /** What {@code rsaml diagram} and the diagram goal run: the clash check first, then every model, view and format. */
@@ -100,5 +101,33 @@ class DiagramBatchTest {
             assertEquals(dir.resolve("out"), file.getParent(), "every diagram goes into the directory asked for");
             assertTrue(Files.size(file) > 0, file + " is written");
         }
+    }
+
+    @Test
+    void aModelTooDeepToLayOutIsNamedWithWhatToDoAndTheNextModelIsStillDrawn(@TempDir Path dir) throws Exception {
+        // A chain of 2,500 modules recurses past the 1 MiB stack asked for here (it is drawn with the stack sized for it).
+        ChainModels.write(dir.resolve("chain.rsaml"), 2_500, false);
+        Files.copy(TestRepository.example("exp1-hybrid.rsaml"), dir.resolve("hybrid.rsaml"));
+        List<ModelFiles.Input> inputs = ModelFiles.select(dir, List.of(Path.of("chain.rsaml"), Path.of("hybrid.rsaml")));
+        DiagramBatch architecture = new DiagramBatch(List.of(DiagramView.ARCHITECTURE), List.of(DiagramFormat.SVG), TimingMode.AUTO);
+        Heard heard = new Heard();
+
+        DiagramBatch.Outcome outcome;
+        System.setProperty("rsaml.diagram.stackMiB", "1");
+        try {
+            outcome = architecture.draw(inputs, dir.resolve("out"), heard);
+        } finally {
+            System.clearProperty("rsaml.diagram.stackMiB");
+        }
+
+        assertEquals(1, outcome.failed(), "only the chain fails: " + heard.failures);
+        assertEquals(ExitCodes.INPUT_ERROR, outcome.exitCode(), "rsaml diagram exits with 2, not with the code of findings");
+        assertEquals(1, heard.failures.size(), "one line says what went wrong: " + heard.failures);
+        String failure = heard.failures.get(0);
+        assertTrue(failure.startsWith("chain.rsaml: error: too deep to lay out: "), "the model is named and the failure said: " + failure);
+        assertTrue(failure.contains("-Drsaml.diagram.stackMiB=64"), "the line says how to draw it anyway: " + failure);
+        assertFalse(failure.contains("\tat "), "no stack trace: " + failure);
+        assertEquals(List.of(dir.resolve("out/hybrid-architecture.svg")), heard.written, "the model after the deep one is still drawn");
+        assertFalse(Files.exists(dir.resolve("out/chain-architecture.svg")), "nothing half-drawn is left of the deep model");
     }
 }

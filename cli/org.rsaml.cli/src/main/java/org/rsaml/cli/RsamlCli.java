@@ -152,6 +152,14 @@ public final class RsamlCli implements Runnable {
         } catch (OutOfMemoryError e) {
             err.println("rsaml: out of memory; give the JVM more heap (RSAML_JAVA_OPTS=-Xmx4g)");
             return ExitCodes.INPUT_ERROR;
+        } catch (StackOverflowError e) {
+            // The commands keep a deep model to its own file; this is the last resort for whatever escapes them.
+            err.println(Text.line("rsaml: internal error: the model is too deep for the stack (" + e + ", a defect in RsaML,"
+                    + " please report it); a larger stack may get past it: RSAML_JAVA_OPTS=-Xss512m"));
+            if (cli.debug) {
+                e.printStackTrace(err);
+            }
+            return ExitCodes.INPUT_ERROR;
         }
     }
 
