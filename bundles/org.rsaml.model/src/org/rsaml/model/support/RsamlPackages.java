@@ -37,6 +37,21 @@ public final class RsamlPackages {
 
     private static final Set<String> TAKEN = Set.of(INTERFACES, RUNTIME);
 
+    /**
+     * ROS 2's own packages that a generated package may not be named like: those the ROS 2 target's package.xml
+     * files and CMakeLists.txt name (build tools, client libraries, launch, linters, rosidl; the generator's tests
+     * hold every package it names to this list, besides the generated ones and those the model's ports name), and
+     * the message and interface packages of a ROS 2 installation a port may name. A package of the same name would
+     * depend on itself (colcon refuses it) or hide ROS 2's from every package built on it.
+     */
+    public static final Set<String> ROS2_OWN = Set.of("ament_cmake", "ament_lint_auto", "ament_lint_common",
+            "launch", "launch_ros", "launch_testing", "launch_testing_ament_cmake", "launch_testing_ros", "ros2launch",
+            "rcl", "rclcpp", "rclcpp_components", "rclcpp_lifecycle", "rclcpp_action", "rcutils", "rmw", "rosidl_default_generators",
+            "rosidl_default_runtime", "builtin_interfaces", "rcl_interfaces", "lifecycle_msgs", "action_msgs", "service_msgs",
+            "type_description_interfaces", "unique_identifier_msgs", "rosgraph_msgs", "statistics_msgs", "std_msgs", "std_srvs",
+            "sensor_msgs", "geometry_msgs", "nav_msgs", "diagnostic_msgs", "shape_msgs", "stereo_msgs", "trajectory_msgs",
+            "visualization_msgs", "actionlib_msgs", "tf2_msgs");
+
     private RsamlPackages() {
     }
 
@@ -88,6 +103,16 @@ public final class RsamlPackages {
             part.setLength(0);
         }
         return words;
+    }
+
+    /**
+     * The name of the package named after the architecture, from the architecture's name made a ROS name
+     * ({@code snake}): that name, or, when it or the interfaces or runtime package named after it
+     * ({@code <name>_interfaces}, {@code <name>_runtime}) would be one of ROS 2's own packages ({@link #ROS2_OWN}),
+     * the first of {@code <name>_2}, {@code <name>_3}, ... for which none is.
+     */
+    public static String systemPackage(String snake) {
+        return new RsamlNames.Scope(false, ROS2_OWN.toArray(String[]::new)).allocate(snake, "", "", "", "_" + INTERFACES, "", "_" + RUNTIME);
     }
 
     /** The layout the architecture asks for; single when the element is in none. */

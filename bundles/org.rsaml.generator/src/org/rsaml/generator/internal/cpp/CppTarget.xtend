@@ -56,7 +56,7 @@ class CppTarget implements TargetGenerator {
 
 	override generate(ExecutionPlan plan, OutputContext output) {
 		val warnings = <String>newArrayList
-		val project = CxxNames.stableProject(plan, output.kept, warnings, "the C++ namespace, the CMake project and the program")
+		val project = CxxNames.stableProject(plan, output.kept, warnings, "the C++ namespace, the CMake project and the program", false)
 		new GeneratedProject(new CppFiles(plan, project).files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 

@@ -12,6 +12,7 @@ import java.util.Map;
 
 import org.rsaml.generator.internal.NameScope;
 import org.rsaml.model.support.RsamlNames;
+import org.rsaml.model.support.RsamlPackages;
 import org.rsaml.generator.internal.Names;
 import org.rsaml.analysis.plan.ExecutionPlan;
 import org.rsaml.analysis.plan.LinkPlan;
@@ -96,11 +97,23 @@ public final class CxxNames {
      * architect's files are written in; with a warning saying so when the name differs.
      *
      * @param what the things named after the project, for the warning
+     * @param ros2 whether the project names ROS 2 packages: then it is none of ROS 2's own packages, and neither
+     *             are the interfaces and runtime packages named after it ({@link RsamlPackages#systemPackage})
      */
-    public static String stableProject(ExecutionPlan plan, Map<String, String> kept, List<String> warnings, String what) {
-        String fresh = Names.snake(plan.architecture().getName());
+    public static String stableProject(ExecutionPlan plan, Map<String, String> kept, List<String> warnings, String what, boolean ros2) {
+        String named = Names.snake(plan.architecture().getName());
+        String fresh = ros2 ? RsamlPackages.systemPackage(named) : named;
         String old = kept.get(KEPT_PROJECT);
-        if (old == null || old.equals(fresh) || !old.matches("[a-z][a-z0-9_]*") || old.contains("__") || Names.reserved(old)) {
+        if (old == null || old.equals(fresh) || !old.matches("[a-z][a-z0-9_]*") || old.contains("__") || Names.reserved(old)
+                || (ros2 && !RsamlPackages.systemPackage(old).equals(old))) {
+            if (!fresh.equals(named)) {
+                List<String> own = java.util.stream.Stream.of(named, named + "_" + RsamlPackages.INTERFACES, named + "_" + RsamlPackages.RUNTIME)
+                        .filter(RsamlPackages.ROS2_OWN::contains).toList();
+                warnings.add("architecture '" + plan.name() + "' is named " + fresh + " in ROS 2, not " + named + ": "
+                        + String.join(" and ", own) + (own.size() == 1 ? " is a package" : " are packages")
+                        + " of ROS 2 itself (a generated package of that name would depend on itself or hide ROS 2's); "
+                        + what + " are named " + fresh + " (rename the architecture to choose another name)");
+            }
             return fresh;
         }
         warnings.add("architecture '" + plan.name() + "' would be named " + fresh + " in code, but this output was generated as "

@@ -67,6 +67,7 @@ public final class Ros2Packages {
         this.system = names.project();
         String prefix = system.replaceFirst("_+$", "") + "_";
         NameScope scope = new NameScope(false, system, prefix + RsamlPackages.INTERFACES, prefix + RsamlPackages.RUNTIME);
+        RsamlPackages.ROS2_OWN.forEach(scope::allocate); // a package per layer or processor never hides one of ROS 2's
         Map<Object, NodePackage> packages = new LinkedHashMap<>();
         switch (layout) {
             case PER_LAYER -> {

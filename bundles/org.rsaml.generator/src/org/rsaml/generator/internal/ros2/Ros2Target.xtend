@@ -72,7 +72,7 @@ class Ros2Target implements TargetGenerator {
 
 	override generate(ExecutionPlan plan, OutputContext output) {
 		val warnings = <String>newArrayList
-		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace")
+		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace", true)
 		val context = new Ros2Context(plan, project, output)
 		warnings += context.packages.checkUserCodeIsHere(plan, context.names, output)
 		val files = new Ros2Files(context)
