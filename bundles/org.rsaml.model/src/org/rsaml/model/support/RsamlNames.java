@@ -26,6 +26,9 @@ import org.rsaml.model.Port;
  */
 public final class RsamlNames {
 
+    /** The last segment of a managed node's topic of transitions ({@link Ids#transitionEventTopic}). */
+    public static final String TRANSITION_EVENT = "transition_event";
+
     private RsamlNames() {
     }
 
@@ -146,6 +149,7 @@ public final class RsamlNames {
         private final Map<Module, String> nodes = new IdentityHashMap<>();
         private final Map<Port, String> ports = new IdentityHashMap<>();
         private final List<Port> ordered = new ArrayList<>();
+        private final List<Module> modules = new ArrayList<>();
 
         public Ids(Architecture architecture) {
             Scope layerScope = new Scope(true, FOLDERS);
@@ -158,6 +162,7 @@ public final class RsamlNames {
             for (Layer l : byLevel) {
                 for (Module m : l.getModules()) {
                     nodes.put(m, nodeScopes.computeIfAbsent(l, k -> new Scope(false)).allocate(snake(m.getName())));
+                    modules.add(m);
                     Scope segments = new Scope(false);
                     for (Port p : m.getPorts()) {
                         ports.put(p, segments.allocate(snake(p.getName())));
@@ -175,6 +180,29 @@ public final class RsamlNames {
         /** The module's node name, unique in its layer. */
         public String node(Module m) {
             return nodes.get(m);
+        }
+
+        /**
+         * The module's ROS 2 node name, unique in the architecture since every node runs in the launch's
+         * one namespace: {@code <layer>_<node>} (the ROS 2 generator adds a suffix only where two such
+         * names, or one and a container's, would clash).
+         */
+        public String rosNode(Module m) {
+            return layers.get(m.getLayer()) + "_" + nodes.get(m);
+        }
+
+        /**
+         * The topic on which ROS 2 publishes the transitions of a managed (lifecycle) module's node,
+         * {@code <rosNode>/transition_event} (rclcpp_lifecycle's {@code ~/transition_event}, as
+         * lifecycle_msgs/msg/TransitionEvent), relative to the launch's namespace as the ports' topics are.
+         */
+        public String transitionEventTopic(Module m) {
+            return rosNode(m) + "/" + TRANSITION_EVENT;
+        }
+
+        /** Every module, layers by level, modules in model order. */
+        public List<Module> modules() {
+            return modules;
         }
 
         /** The topic a port's node uses when the port names none and no port connected to it does: {@code <layer>/<node>/<port>}. */

@@ -21,6 +21,7 @@ import org.rsaml.model.Connection;
 import org.rsaml.model.EntryPort;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
+import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.OutputPort;
 import org.rsaml.model.Port;
 
@@ -100,15 +101,31 @@ public final class RsamlTopics {
     /**
      * What makes the topic this port names unusable (completing "output port 'x' of module 'm' "),
      * or null: it is not a valid ROS 2 name, its full name is longer than ROS 2 takes, ROS 2 itself uses
-     * it, a port connected to it names another topic, or a port it is not connected to names the same topic. One port's answer reads the whole architecture:
+     * it (rosout, parameter_events, a managed node's transition_event), a port connected to it names another topic, or a port it is not connected to names the same topic; or, for a port that names none and
+     * whose default topic its group uses, that default topic is longer than ROS 2 takes. One port's answer reads the whole architecture:
      * to check every port, take {@link #table} once and ask it.
      */
     public static String problem(Port port) {
-        if (named(port) == null) {
+        if (named(port) == null && !mayHaveLongDefault(port)) {
             return null;
         }
         Architecture architecture = architecture(port);
         return architecture == null ? new Table(List.of(connected(port)), null).problem(port) : table(architecture).problem(port);
+    }
+
+    /**
+     * Whether the default topic of a port that names none could be longer than ROS 2 takes: its
+     * names in snake case are near the limit (a name scope's suffix adds a few characters at most).
+     * Spares reading the whole architecture for the ports whose default topic is short.
+     */
+    private static boolean mayHaveLongDefault(Port port) {
+        Module m = port.getModule();
+        if (m == null || m.getLayer() == null) {
+            return false;
+        }
+        int length = 3 + RsamlNames.snake(String.valueOf(m.getLayer().getName())).length() + RsamlNames.snake(String.valueOf(m.getName())).length()
+                + RsamlNames.snake(String.valueOf(port.getName())).length();
+        return length + 3 * 12 > MAX_FULL_NAME;
     }
 
     /** The topics of an architecture's ports, read once (linear in its ports and connections). */
@@ -184,10 +201,19 @@ public final class RsamlTopics {
         private final Map<String, int[]> namerGroups = new HashMap<>();
         /** Per default topic (as compared) of a group that names none: that group's index. */
         private final Map<String, Integer> defaults = new HashMap<>();
+        /** Per topic of transitions of a managed module's node (as compared): that module. */
+        private final Map<String, Module> transitionEvents = new HashMap<>();
         private final RsamlNames.Ids ids;
 
         Table(List<List<Port>> groups, RsamlNames.Ids ids) {
             this.ids = ids;
+            if (ids != null) {
+                for (Module m : ids.modules()) {
+                    if (m.effectiveLifecycle() == NodeLifecycle.MANAGED) {
+                        transitionEvents.put(ids.transitionEventTopic(m), m);
+                    }
+                }
+            }
             for (int g = 0; g < groups.size(); g++) {
                 Port[] two = new Port[2];
                 Port firstOutput = null;
@@ -237,19 +263,23 @@ public final class RsamlTopics {
         public String problem(Port port) {
             String topic = named(port);
             if (topic == null) {
-                return null;
+                return defaultProblem(port);
             }
             if (!isValid(topic)) {
                 return "names the topic '" + topic + "', which is not a ROS 2 topic name";
             }
-            String full = "/" + strip(topic);
-            if (full.length() > MAX_FULL_NAME) {
-                return "names the topic '" + topic + "', whose full name " + full.substring(0, 20) + "... has " + full.length()
-                        + " characters, more than the " + MAX_FULL_NAME + " ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH): shorten it";
+            String tooLong = tooLong(topic);
+            if (tooLong != null) {
+                return "names the topic '" + topic + "', " + tooLong + ": shorten it";
             }
             String own = ROS2_TOPICS.get(strip(topic));
             if (own != null) {
                 return "names the topic '" + topic + "', which ROS 2 itself uses (" + own + "): choose another name";
+            }
+            Module managed = transitionEvents.get(strip(topic));
+            if (managed != null) {
+                return "names the topic '" + topic + "', on which ROS 2 publishes the transitions of the managed node of module '"
+                        + RsamlLabels.name(managed) + "' (lifecycle_msgs/msg/TransitionEvent): choose another name";
             }
             Integer g = groupOf.get(port);
             if (g == null) {
@@ -278,6 +308,28 @@ public final class RsamlTopics {
             }
             return null;
         }
+
+        /**
+         * The problem of the default topic of a port that names none ({@code <layer>/<node>/<port>}): when
+         * it is its group's topic (no connected port names one) and longer than ROS 2 takes, said on the
+         * port whose default it is only. Null otherwise.
+         */
+        private String defaultProblem(Port port) {
+            Integer g = groupOf.get(port);
+            if (g == null || defaulted.get(g) != port) {
+                return null;
+            }
+            String tooLong = tooLong(topics.get(g));
+            return tooLong == null ? null : "names no topic, and its default topic '" + topics.get(g) + "' (<layer>/<node>/<port>), "
+                    + tooLong + ": name a shorter topic (topic) or shorten the layer's, module's or port's name";
+        }
+    }
+
+    /** Why the topic's full name (with its leading slash) is longer than ROS 2 takes; null when it is not. */
+    private static String tooLong(String topic) {
+        String full = "/" + strip(topic);
+        return full.length() <= MAX_FULL_NAME ? null : "whose full name " + full.substring(0, 20) + "... has " + full.length()
+                + " characters, more than the " + MAX_FULL_NAME + " ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH)";
     }
 
     /** Whether two names are one topic where the nodes run in the root namespace (the default). */

@@ -86,4 +86,41 @@ class TopicNamesTest {
                         + " has 248 characters, more than the 247 ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH): shorten it"),
                 found, "a full name of 247 characters is taken");
     }
+
+    @Test
+    void aTopicOnWhichAManagedNodePublishesItsTransitionsIsAFinding(@TempDir Path tmp) throws Exception {
+        List<String> found = findings(tmp, "lifecycle.rsaml", model(0,
+                "<modules name=\"lidarDriver\" lifecycle=\"managed\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\""
+                        + " name=\"scan\" dataType=\"numeric\" topic=\"scan\"/></modules>",
+                "<modules name=\"plain\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"base_plain/transition_event\"/></modules>",
+                "<modules name=\"spy\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"/base_lidar_driver/transition_event\"/></modules>"));
+        assertEquals(List.of("robot/base/spy/o: Output port 'o' of module 'spy' names the topic '/base_lidar_driver/transition_event', on which"
+                + " ROS 2 publishes the transitions of the managed node of module 'lidarDriver' (lifecycle_msgs/msg/TransitionEvent):"
+                + " choose another name"), found,
+                "the managed node base_lidar_driver publishes lifecycle_msgs/msg/TransitionEvent there; the plain node base_plain has no such topic");
+    }
+
+    @Test
+    void aDefaultTopicTooLongForRos2IsAFindingOnThePortWhoseDefaultItIs(@TempDir Path tmp) throws Exception {
+        // <layer>/<node>/<port>: "base/" (5) + node + "/o" (2), with the leading slash: 8 + node
+        String longNode = "n".repeat(240);
+        String fits = "f".repeat(239);
+        List<String> found = findings(tmp, "default.rsaml", model(0,
+                "<modules name=\"" + longNode + "\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\"/></modules>",
+                "<modules name=\"reader\"><ports xsi:type=\"rsaml:EntryPort\" name=\"i\" dataType=\"numeric\"/></modules>",
+                "<modules name=\"" + fits + "\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\"/></modules>",
+                "<modules name=\"" + longNode + "x\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"short\"/></modules>",
+                "</layers>\n  <connections source=\"//@layers[name='base']/@modules[name='" + longNode + "']/@ports[name='o']\""
+                        + " target=\"//@layers[name='base']/@modules[name='reader']/@ports[name='i']\"/>\n  <layers name=\"unused\" level=\"1\">"));
+        assertEquals(List.of("robot/base/" + longNode + "/o: Output port 'o' of module '" + longNode + "' names no topic, and its default topic 'base/"
+                + longNode + "/o' (<layer>/<node>/<port>), whose full name /base/nnnnnnnnnnnnnn... has 248 characters, more than the 247"
+                + " ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH): name a shorter topic (topic) or shorten the layer's, module's or port's name"), found,
+                "a default topic of 248 characters is a finding once, on its publisher (not on the entry port connected to it); one of 247"
+                + " is taken, and a port that names a short topic has no default");
+    }
 }

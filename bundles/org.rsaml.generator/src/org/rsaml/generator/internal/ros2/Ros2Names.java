@@ -109,7 +109,7 @@ public final class Ros2Names {
         // The shared library of the nodes is named after the package.
         NameScope executableScope = new NameScope(true, names.project());
         for (PlannedModule m : plan.modules()) {
-            executables.put(m, executableScope.allocate(Names.stem(names.layerId(m) + "_" + names.nodeName(m))));
+            executables.put(m, executableScope.allocate(Names.stem(names.ids().rosNode(m.module()))));
         }
         // Containers are nodes too, in the same namespace: one per processor that runs a module,
         // in the model's order, then one for the modules no processor names.
