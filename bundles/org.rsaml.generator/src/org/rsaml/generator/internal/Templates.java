@@ -4,9 +4,12 @@
  */
 package org.rsaml.generator.internal;
 
-import org.rsaml.analysis.plan.ExecutionPlan;
+import java.util.List;
 
-/** Text every target's templates share, written once: the banner, doc comments, the user-file note. */
+import org.rsaml.analysis.plan.ExecutionPlan;
+import org.rsaml.generator.spi.OutputContext;
+
+/** Text every target's templates share, written once: the banner, doc comments, the user-file note, the README's link. */
 public final class Templates {
 
     private Templates() {
@@ -30,4 +33,26 @@ public final class Templates {
 
     /** What a file of the architect's says about itself. */
     public static final String USER_OWNED = "Yours: created once by RsaML, never overwritten.";
+
+    /** The output's README.md: the architect's, created once and never overwritten. */
+    public static final String README = "README.md";
+
+    /**
+     * The file beside README.md that generating rewrites every time with what it made of the model,
+     * which the README links, so that a README written long ago states no stale facts.
+     */
+    public static final String GENERATED_README = "GENERATED.md";
+
+    /**
+     * A warning when the architect's README.md (in {@code output}) does not link GENERATED.md: what it
+     * says of {@code facts} (what GENERATED.md tells) is as of when it was written. None when it links it
+     * or there is none yet.
+     */
+    public static List<String> readmeLink(OutputContext output, String facts) {
+        return output.userFile(README).filter(text -> !text.contains(GENERATED_README))
+                .map(text -> List.of(README + " (yours, kept as it is) does not link " + GENERATED_README + ", which generating rewrites every"
+                        + " time with what it made of the model (" + facts + "): what your README says of them is as of when it was written; link "
+                        + GENERATED_README + " from it (or delete " + README + " to have it created again)"))
+                .orElse(List.of());
+    }
 }

@@ -57,6 +57,7 @@ class CppTarget implements TargetGenerator {
 	override generate(ExecutionPlan plan, OutputContext output) {
 		val warnings = <String>newArrayList
 		val project = CxxNames.stableProject(plan, output.kept, warnings, "the C++ namespace, the CMake project and the program", false)
+		warnings += Templates.readmeLink(output, "the program, the modules and their files, the files that are yours")
 		new GeneratedProject(new CppFiles(plan, project).files, warnings, #{CxxNames.KEPT_PROJECT -> project})
 	}
 
@@ -134,7 +135,9 @@ class CppFiles {
 			files += GeneratedFile.user("src/" + t.cppHeader, messages.userMessage(t))
 		}
 		files += GeneratedFile.user("src/user.cmake", cmake.userCmake)
-		files += GeneratedFile.user("README.md", new CppReadmeTemplate(plan, names).readme)
+		val readme = new CppReadmeTemplate(plan, names)
+		files += GeneratedFile.user(Templates.README, readme.readme)
+		files += GeneratedFile.generated(Templates.GENERATED_README, readme.generated)
 		files
 	}
 }
