@@ -57,42 +57,4 @@ class Ros2UserCodeCheckTest {
                 "the file, the line and how to write it: " + warnings);
         assertEquals(mine, Files.readString(source), "generating again changed the architect's file");
     }
-
-    /**
-     * A node class kept from before output ports held the activation's message by std::unique_ptr
-     * writes {@code out_<port>.field}, which no longer compiles: generating again names the line and
-     * says how to write it, a write through the pointer is not named, and the file stays as it is.
-     */
-    @Test
-    void aWriteOfAnOutputPortAsAValueIsAWarningNamingItsLine(@TempDir Path tmp) throws Exception {
-        Path model = Files.copy(Tools.example("mobile-base-latency.rsaml"), tmp.resolve("base.rsaml"));
-        Path out = tmp.resolve("ws");
-        RsamlGenerator generator = new RsamlGenerator();
-        generator.generate(model, Target.ROS2, out, false);
-        String base = Files.readString(out.resolve("mobile_base/gen/navigation/ObstacleDetectorBase.hpp"));
-        assertTrue(base.contains("std::unique_ptr<std_msgs::msg::Float64> out_speedLimit = std::make_unique<std_msgs::msg::Float64>();")
-                && base.matches("(?s).*_->publish\\(std::move\\(out_speedLimit\\)\\);.*"),
-                "the output port is the activation's message, moved to the middleware:\n" + base);
-        Path source = out.resolve("mobile_base/src/navigation/ObstacleDetector.cpp");
-        String text = Files.readString(source);
-        String end = "}  // namespace mobile_base::navigation";
-        assertTrue(text.contains(end), "the node's namespace to write a function of the architect's in:\n" + text);
-        String mine = text.replace(end, String.join("\n",
-                "void ObstacleDetector::detect() {",
-                "  out_speedLimit.data = 0.5;",
-                "  out_speedLimit->data = 0.5;",
-                "  (void)out_speedLimit.get();",
-                "}",
-                "",
-                end));
-        Files.writeString(source, mine);
-        int line = (int) mine.substring(0, mine.indexOf("  out_speedLimit.data = 0.5;")).chars().filter(c -> c == '\n').count() + 1;
-        GenerationResult again = generator.generate(model, Target.ROS2, out, false);
-        List<String> warnings = again.warnings().stream().filter(w -> w.contains("src/navigation/ObstacleDetector")).toList();
-        assertEquals(1, warnings.size(), "one line writes out_speedLimit as a value: " + again.warnings());
-        assertTrue(warnings.get(0).startsWith("mobile_base/src/navigation/ObstacleDetector.cpp:" + line + ": out_speedLimit.data: ")
-                && warnings.get(0).contains("write out_speedLimit->data, and set it in every activation"),
-                "the file, the line and how to write it: " + warnings);
-        assertEquals(mine, Files.readString(source), "generating again changed the architect's file");
-    }
 }

@@ -118,12 +118,9 @@ class Ros2NodeTemplate extends Ros2Template {
 		  «ENDIF»
 		  «IF !m.outputs.empty»
 
-		  	// Output ports: the message each activation publishes, owned by the node (never null). Fill it;
-		  	// publishing hands it to the middleware as it is, not copied (the subscriptions of the same
-		  	// container receive this very message), and the port then holds a new, default message: a
-		  	// value is not kept from one activation to the next, so set every field each time.
+		  	// Output ports: set them; they are published after each activation (or call publish_outputs()).
 		  	«FOR p : m.outputs»
-		  		std::unique_ptr<«p.rosType»> «p.outName» = std::make_unique<«p.rosType»>();
+		  		«p.rosType» «p.outName»;
 		  	«ENDFOR»
 		  «ENDIF»
 
@@ -145,10 +142,9 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	virtual void «p.onName»(const «p.rosType»& message) { (void)message; }
 		  «ENDFOR»
 		  /**
-		   * Publishes every output port's message (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF»):
-		   * moved to the middleware, not copied, so that the subscriptions of the same container share
-		   * this very message (intra-process communication); then each port holds a new, default message
-		   * (one an inhibitor held back is dropped).
+		   * Publishes every output port (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF»): a copy
+		   * of the port's value, which it keeps, handed to the middleware as a unique message that the
+		   * subscriptions of the same container then share without copying it again (intra-process communication).
 		   */
 		  virtual void publish_outputs() {
 		    «IF m.managed»
@@ -156,13 +152,12 @@ class Ros2NodeTemplate extends Ros2Template {
 		    «ENDIF»
 		    «FOR p : m.outputs»
 		    	«IF p.inhibitors.empty»
-		    		«p.pubName»_->publish(std::move(«p.outName»));
+		    		«p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
 		    	«ELSE»
 		    		if («FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR») {
-		    		  «p.pubName»_->publish(std::move(«p.outName»));
+		    		  «p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
 		    		}
 		    	«ENDIF»
-		    	«p.outName» = std::make_unique<«p.rosType»>();
 		    «ENDFOR»
 		  }
 		  «IF m.managed»

@@ -4,7 +4,6 @@
  */
 package org.rsaml.generator.internal.ros2
 
-import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cxx.CxxNames
 
 /**
@@ -16,7 +15,7 @@ import org.rsaml.generator.internal.cxx.CxxNames
 class Ros2ReadmeTemplate extends Ros2Template {
 
 	/** The regenerated file the README links. */
-	static val GENERATED = Templates.GENERATED_README
+	public static val GENERATED = "GENERATED.md"
 
 	val extension CxxNames names
 	val extension Ros2Names rosNames
@@ -112,15 +111,11 @@ class Ros2ReadmeTemplate extends Ros2Template {
 
 		Messages are not copied on their way in: each subscription takes a `ConstSharedPtr`, which the
 		node keeps as `in_<port>` (the latest message, null until the first arrives) and whose message
-		`on_<port>` gets as a const reference. Nor on their way out: `out_<port>` is a `std::unique_ptr`
-		to the message the activation publishes (never null); your code sets its fields
-		(`out_<port>->data = ...`), each activation (timed release or reaction) publishes every output
-		port by moving that message to the middleware, and the port then holds a new, default message:
-		a value is not kept from one activation to the next, so set every field each time (or keep the
-		value in a member of your class). In `«pkg».launch.py` the nodes of a container use
-		intra-process communication, so the subscriptions in that process receive the very message the
-		publisher filled instead of a copy or a serialized one. Intra-process communication needs a
-		`keep_last` history: keep it when overriding a topic's QoS, or use the processes launch file.
+		`on_<port>` gets as a const reference. Each publication hands the middleware a `std::unique_ptr`
+		(a copy of `out_<port>`, which keeps its value); in `«pkg».launch.py` the nodes of a container use
+		intra-process communication, so the subscriptions in that process share the published message
+		instead of copying or serializing it. Intra-process communication needs a `keep_last` history:
+		keep it when overriding a topic's QoS, or use the processes launch file.
 		«IF rosNames.containers.exists[processor !== null]»
 
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,

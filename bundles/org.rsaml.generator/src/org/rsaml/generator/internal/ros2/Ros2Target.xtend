@@ -8,7 +8,6 @@ import java.util.List
 import java.util.TreeSet
 import org.rsaml.analysis.plan.ExecutionPlan
 import org.rsaml.analysis.plan.PlannedModule
-import org.rsaml.generator.internal.Templates
 import org.rsaml.generator.internal.cpp.CppTarget
 import org.rsaml.generator.internal.cxx.CxxCode
 import org.rsaml.generator.internal.cxx.CxxNames
@@ -86,15 +85,19 @@ class Ros2Target implements TargetGenerator {
 		val paramsTemplate = new Ros2ParamsTemplate(context)
 		val params = paramsTemplate.path
 		output.userFile(params).ifPresent[warnings += Ros2ParamsCheck.check(params, it, context.modelParameters, paramsTemplate.currentPath)]
-		for (m : plan.modules.filter[!inputs.empty || !outputs.empty]) {
+		for (m : plan.modules.filter[!inputs.empty]) {
 			val inputs = new java.util.LinkedHashMap<String, String>
 			m.inputs.forEach[inputs.put(context.names.inName(it), context.names.onName(it))]
-			val outputs = m.outputs.map[context.names.outName(it)].toList
 			for (path : Ros2Packages.userFiles(context.nodePackage(m), context.names, m)) {
-				output.userFile(path).ifPresent[warnings += Ros2UserCodeCheck.valueReads(path, it, inputs, outputs)]
+				output.userFile(path).ifPresent[warnings += Ros2UserCodeCheck.valueReads(path, it, inputs)]
 			}
 		}
-		warnings += Templates.readmeLink(output, "the package layout, the nodes, topics, parameters and managed nodes, the files that are yours")
+		output.userFile("README.md").filter[!contains(Ros2ReadmeTemplate.GENERATED)].ifPresent[
+			warnings += "README.md (yours, kept as it is) does not link " + Ros2ReadmeTemplate.GENERATED + ", which generating rewrites every"
+				+ " time with what it made of the model (the package layout, the nodes, topics, parameters and managed nodes, the files"
+				+ " that are yours): what your README says of them is as of when it was written; link " + Ros2ReadmeTemplate.GENERATED
+				+ " from it (or delete README.md to have it created again)"
+		]
 		new GeneratedProject(files.files, warnings, #{CxxNames.KEPT_PROJECT -> project, Ros2Packages.KEPT_LAYOUT -> plan.architecture.packages.literal})
 	}
 }
@@ -189,8 +192,8 @@ class Ros2Files {
 			}
 		}
 		val readme = new Ros2ReadmeTemplate(context)
-		files += GeneratedFile.user(Templates.README, readme.readme)
-		files += GeneratedFile.generated(Templates.GENERATED_README, readme.generated)
+		files += GeneratedFile.user("README.md", readme.readme)
+		files += GeneratedFile.generated(Ros2ReadmeTemplate.GENERATED, readme.generated)
 		files
 	}
 

@@ -25,7 +25,7 @@ class Ros2UserTemplate extends Ros2Template {
 		this.rosNames = context.rosNames
 		this.code = new UserCode(context.names, "Node for module",
 			"creates the publishers, subscriptions and timers; implement the actions and\n// message handlers here.",
-			"Inputs: in_<port> is the latest message, shared and not copied (a ConstSharedPtr: keep it to keep\nthe message; null until the first arrives); on_<port> gets each one as a const reference.\nOutputs: out_<port> is the message each activation publishes (a std::unique_ptr, never null): set\nits fields (out_<port>->data = ...); it is handed over, not copied, and the next activation gets a new one.",
+			"Inputs: in_<port> is the latest message, shared and not copied (a ConstSharedPtr: keep it to keep\nthe message; null until the first arrives); on_<port> gets each one as a const reference.\nOutputs: set out_<port>; it is published after each activation of the node.",
 			"message", [rosType])
 	}
 
