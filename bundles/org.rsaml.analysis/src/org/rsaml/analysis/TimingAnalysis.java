@@ -280,7 +280,10 @@ public final class TimingAnalysis {
             } else if (policy == SchedulingPolicy.EDF) {
                 notes.add("scheduled by deadline: the generated C++ runtime runs each timed release under SCHED_DEADLINE"
                         + " (runtime = its execution duration, its deadline and period) where the kernel permits it, and its"
-                        + " trace says when not; there the verdict is for a platform scheduling by deadline");
+                        + " trace says when not; there the verdict is for a platform scheduling by deadline. On ROS 2 the"
+                        + " nodes' releases ask for the same, but the verdict is not claimed there: the executor's own work on a"
+                        + " release's thread is charged to the runtime the kernel grants it, and jobs were seen to end past their"
+                        + " deadlines on an idle machine (docs/timing.md, EDF)");
                 if (element != null && element.getCore() >= 0) {
                     notes.add("core " + element.getCore() + " does not hold EDF: Linux admits a SCHED_DEADLINE thread only on every CPU of its"
                             + " root domain, so the C++ runtime runs this processor's releases on every core of the machine (not core "

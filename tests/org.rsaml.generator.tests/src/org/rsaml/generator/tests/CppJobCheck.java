@@ -163,7 +163,7 @@ final class CppJobCheck {
         if (!checks.isEmpty()) {
             PlatformCheck.BoundCheck check = PlatformCheck.boundCheck("JobTimingTest " + what, others,
                     () -> PlatformCheck.probes(arch, plan, summaries, r -> notApart(arch, r.module().module())), summaries);
-            PlatformCheck.Allowance allowance = check.allowance();
+            PlatformCheck.Allowance allowance = check.allowance() == null ? null : check.allowance().reanalysed(TimingAnalysis.analyse(arch));
             if (allowance == null) {
                 checks.forEach(c -> unchecked.add(c.label() + " (" + check.notChecked() + ")"));
                 checks.clear();
@@ -175,8 +175,9 @@ final class CppJobCheck {
                 System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s, bound %s, worst start latency %s, worst stall %s, %s%n",
                         what, c.label(), s.jobs(), JobTimingTest.ms(s.worstNs()), JobTimingTest.ms(c.bound()), JobTimingTest.ms(s.latencyNs()),
                         JobTimingTest.ms(s.stallNs()), s.sched());
-                assertTrue(allowance.admits(s.worstNs(), c.bound()), what + ": " + c.label() + " responded in " + JobTimingTest.ms(s.worstNs())
-                        + ", more than the analysis's bound " + JobTimingTest.ms(c.bound()) + " plus the platform's allowance " + allowance + "\n"
+                assertTrue(allowance.admits(c.label(), s.worstNs(), c.bound()), what + ": " + c.label() + " responded in " + JobTimingTest.ms(s.worstNs())
+                        + ", more than the analysis's bound " + JobTimingTest.ms(c.bound()) + " plus the platform's allowance " + allowance
+                        + allowance.reanalysedText(c.label()) + "\n"
                         + Tools.last(output, 3000));
             }
         }
