@@ -48,6 +48,11 @@ public record LatencyResult(LatencyRequirement requirement, String name, String 
      */
     public static final int MAX_LISTED_STAGES = 100_000;
 
+    /** Whether a list of {@code paths} paths of {@code stages} stages in all is more than a requirement lists. */
+    public static boolean overListed(int paths, long stages) {
+        return paths > MAX_LISTED_PATHS || stages > MAX_LISTED_STAGES;
+    }
+
     /** Paths the text report and the diagram overlay show one by one, the longest first; JSON lists them all. */
     public static final int SHOWN_PATHS = 10;
 

@@ -72,7 +72,7 @@ public final class RsamlDiagrams {
      * @throws StackOverflowError when even the stack {@link DeepStack} sized for the model is too small
      */
     public String svg(Architecture architecture, List<Finding> findings) {
-        return text(architecture, null, findings, DiagramFormat.SVG);
+        return text(architecture, elements(architecture), null, findings, DiagramFormat.SVG);
     }
 
     /**
@@ -81,15 +81,15 @@ public final class RsamlDiagrams {
      * @throws StackOverflowError when even the stack {@link DeepStack} sized for the model is too small
      */
     public String html(Architecture architecture, String file, List<Finding> findings) {
-        return text(architecture, file, findings, DiagramFormat.HTML);
+        return text(architecture, elements(architecture), file, findings, DiagramFormat.HTML);
     }
 
     /**
      * The diagram's text, laid out and written on a thread whose stack grows with the model (ELK's layout recurses
      * along chains of modules), so that a long chain does not overflow the caller's stack.
      */
-    private String text(Architecture architecture, String file, List<Finding> findings, DiagramFormat format) {
-        return DeepStack.call("rsaml-diagram", DeepStack.bytesFor(elements(architecture)),
+    private String text(Architecture architecture, long elements, String file, List<Finding> findings, DiagramFormat format) {
+        return DeepStack.call("rsaml-diagram", DeepStack.bytesFor(elements),
                 () -> format == DiagramFormat.HTML ? HtmlWriter.write(draw(architecture, findings), file, findings)
                         : SvgWriter.write(draw(architecture, findings), true));
     }
@@ -152,10 +152,10 @@ public final class RsamlDiagrams {
         LoadedModel loaded = ModelLoader.load(model, displayName);
         List<Finding> findings = RsamlModelValidator.validate(loaded);
         String text;
+        long elements = elements(loaded.architecture());
         try {
-            text = text(loaded.architecture(), displayName, findings, format);
+            text = text(loaded.architecture(), elements, displayName, findings, format);
         } catch (StackOverflowError e) {
-            long elements = elements(loaded.architecture());
             long mib = DeepStack.bytesFor(elements) >> 20;
             throw new DiagramException("too deep to lay out: the layout of its " + elements + " elements recursed past the "
                     + mib + " MiB stack it was given (long chains of connected modules recurse deepest); draw it with a larger"

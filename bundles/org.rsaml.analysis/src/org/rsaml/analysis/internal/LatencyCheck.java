@@ -121,7 +121,7 @@ final class LatencyCheck {
                     List<PathBound> more = new ArrayList<>(listed);
                     more.add(0, worst);
                     long stages = more.stream().mapToLong(b -> b.hops().size()).sum();
-                    while (more.size() > 1 && (more.size() > LatencyResult.MAX_LISTED_PATHS || stages > LatencyResult.MAX_LISTED_STAGES)) {
+                    while (more.size() > 1 && LatencyResult.overListed(more.size(), stages)) {
                         stages -= more.remove(more.size() - 1).hops().size();
                     }
                     listed = more;

@@ -153,7 +153,7 @@ final class PathSearch {
         if (!listPaths) {
             return;
         }
-        if (listed.size() >= LatencyResult.MAX_LISTED_PATHS || listedStages + hops.size() > LatencyResult.MAX_LISTED_STAGES) {
+        if (LatencyResult.overListed(listed.size() + 1, listedStages + hops.size())) {
             PathBound shortest = listed.peek();
             if (shortest == null || key <= key(shortest)) {
                 listFull = true;
@@ -163,7 +163,7 @@ final class PathSearch {
         PathBound b = new PathBound(hops.list(), reaction, dataAge, why, trail);
         listed.add(b);
         listedStages += b.hops().size();
-        while (listed.size() > 1 && (listed.size() > LatencyResult.MAX_LISTED_PATHS || listedStages > LatencyResult.MAX_LISTED_STAGES)) {
+        while (listed.size() > 1 && LatencyResult.overListed(listed.size(), listedStages)) {
             listedStages -= listed.poll().hops().size();
             listFull = true;
         }

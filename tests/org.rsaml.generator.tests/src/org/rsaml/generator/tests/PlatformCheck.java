@@ -103,12 +103,11 @@ final class PlatformCheck {
                         runToCompletion.add(x.name());
                     }
                 }
-                ProcessorResult again = SchedulabilityAnalysis.analyse(r.processor(), r.policy(), tasks, runToCompletion);
-                for (int i = 0; i < r.tasks().size(); i++) {
-                    TaskResult before = r.tasks().get(i);
-                    TaskResult after = again.tasks().stream().filter(t -> t.task().name().equals(before.task().name())).findFirst().orElse(null);
-                    if (before.responseTime().isPresent() && after != null && after.responseTime().isPresent()) {
-                        bounds.put(before.task().name(), after.responseTime().getAsLong());
+                Set<String> bounded = new HashSet<>();
+                r.tasks().stream().filter(t -> t.responseTime().isPresent()).forEach(t -> bounded.add(t.task().name()));
+                for (TaskResult after : SchedulabilityAnalysis.analyse(r.processor(), r.policy(), tasks, runToCompletion).tasks()) {
+                    if (bounded.contains(after.task().name()) && after.responseTime().isPresent()) {
+                        bounds.put(after.task().name(), after.responseTime().getAsLong());
                     }
                 }
             }
