@@ -15,48 +15,52 @@ import org.rsaml.report.ReportFormat;
 import org.rsaml.report.TimingBatch;
 import org.rsaml.report.TimingFailOn;
 
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Model.PositionalParamSpec;
 
 /** {@code rsaml analyze MODEL...}: schedulability per processor and end-to-end latency, with witnesses. */
-@Command(name = "analyze", mixinStandardHelpOptions = true, sortOptions = false,
-        description = { "Analyses the timing of models as the generated runtime runs them (see docs/timing.md): per processor",
-                "the worst-case response time of every task, utilisation and bounds; per latency requirement the worst path.",
-                "Every verdict is 'meets' (proven), 'MISSES' (with a witness) or 'not analysed' (with the reason)." },
-        exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = { "0:no deadline or requirement can be missed (with --fail-on not-analysed: every verdict is proven)",
-                "1:a deadline or a latency requirement can be missed (with --fail-on not-analysed: or something is not analysed)",
-                "2:usage error, a model that cannot be read or analysed, or output that cannot be written" })
 final class AnalyzeCommand extends RsamlCommand {
+
+    static final String NAME = "analyze";
 
     enum Format { text, json, sarif, junit }
 
-    @Parameters(arity = "1..*", paramLabel = "MODEL", description = "Model files and directories.")
-    List<Path> paths;
+    private final PositionalParamSpec paths = CommandSpecs.paths(Path.class, "MODEL", "Model files and directories.").build();
 
-    @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
-            description = { "Format written to standard output: text or json (the verdicts and witnesses), sarif or junit",
-                    "(the timing rules' findings, as validate reports them; 'rsaml rules' lists the rules) (default: ${DEFAULT-VALUE})." })
-    Format format;
+    private final OptionSpec format = CommandSpecs.option(Format.class, "FORMAT", "-f", "--format").defaultValue("text")
+            .description("Format written to standard output: text or json (the verdicts and witnesses), sarif or junit",
+                    "(the timing rules' findings, as validate reports them; 'rsaml rules' lists the rules) (default: ${DEFAULT-VALUE}).")
+            .build();
 
-    @Option(names = "--timeline", paramLabel = "DIR",
-            description = "Also write into DIR an SVG timeline of each witness: a missed deadline's critical-instant schedule, "
-                    + "an overloaded processor's demand interval (EDF), a latency requirement's worst path.")
-    Path timeline;
+    private final OptionSpec timeline = CommandSpecs.option(Path.class, "DIR", "--timeline")
+            .description("Also write into DIR an SVG timeline of each witness: a missed deadline's critical-instant schedule, "
+                    + "an overloaded processor's demand interval (EDF), a latency requirement's worst path.").build();
 
-    @Option(names = "--fail-on", defaultValue = "miss", paramLabel = "LEVEL",
-            description = { "Which verdicts make the exit code 1: miss (a deadline or requirement can be missed), not-analysed",
-                    "(also a task, processor or requirement not analysed: only a proven model exits 0) or never (default: ${DEFAULT-VALUE})." })
-    TimingFailOn failOn;
+    private final OptionSpec failOn = CommandSpecs.option(TimingFailOn.class, "LEVEL", "--fail-on").defaultValue("miss")
+            .description("Which verdicts make the exit code 1: miss (a deadline or requirement can be missed), not-analysed",
+                    "(also a task, processor or requirement not analysed: only a proven model exits 0) or never (default: ${DEFAULT-VALUE}).")
+            .build();
+
+    AnalyzeCommand(RsamlCli parent) {
+        super(parent, NAME, "Analyses the timing of models as the generated runtime runs them (see docs/timing.md): per processor",
+                "the worst-case response time of every task, utilisation and bounds; per latency requirement the worst path.",
+                "Every verdict is 'meets' (proven), 'MISSES' (with a witness) or 'not analysed' (with the reason).");
+        spec.usageMessage().sortOptions(false);
+        CommandSpecs.exitCodes(spec, "0:no deadline or requirement can be missed (with --fail-on not-analysed: every verdict is proven)",
+                "1:a deadline or a latency requirement can be missed (with --fail-on not-analysed: or something is not analysed)",
+                "2:usage error, a model that cannot be read or analysed, or output that cannot be written");
+        spec.addPositional(paths).addOption(format).addOption(timeline).addOption(failOn);
+        CommandSpecs.standardHelpOptions(spec);
+    }
 
     @Override
     public Integer call() {
+        Format format = this.format.getValue();
         ReportFormat findings = format == Format.sarif ? ReportFormat.SARIF : format == Format.junit ? ReportFormat.JUNIT : null;
         PrintWriter out = out();
         PrintWriter err = err();
-        TimingBatch.Request request = new TimingBatch.Request(timeline, failOn, format == Format.json, findings != null);
-        TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths, request, new TimingBatch.Listener() {
+        TimingBatch.Request request = new TimingBatch.Request(timeline.getValue(), failOn.getValue(), format == Format.json, findings != null);
+        TimingBatch.Outcome outcome = TimingBatch.run(parent.workingDirectory, paths.getValue(), request, new TimingBatch.Listener() {
             @Override
             public void analysed(String displayName, ArchitectureTiming timing) {
                 if (format == Format.text) {

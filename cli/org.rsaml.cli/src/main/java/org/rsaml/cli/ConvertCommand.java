@@ -14,23 +14,30 @@ import org.rsaml.report.Text;
 import org.rsaml.text.convert.ModelConverter;
 import org.rsaml.validation.ModelLoadException;
 
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Model.PositionalParamSpec;
 
 /** {@code rsaml convert IN OUT}: the same model in the other syntax (.rsaml XMI, .rsa text). */
-@Command(name = "convert", mixinStandardHelpOptions = true,
-        description = "Converts a model between XMI (.rsaml) and text (.rsa), losslessly; OUT's extension chooses the syntax.",
-        footer = { "", "Example: rsaml convert robot.rsaml robot.rsa" })
 final class ConvertCommand extends RsamlCommand {
 
-    @Parameters(index = "0", paramLabel = "IN", description = "The model to convert (.rsaml or .rsa).")
-    Path input;
+    static final String NAME = "convert";
 
-    @Parameters(index = "1", paramLabel = "OUT", description = "The file to write: .rsa for text, .rsaml for XMI.")
-    Path output;
+    private final PositionalParamSpec input = CommandSpecs.parameter("0", Path.class, "IN",
+            "The model to convert (.rsaml or .rsa).").build();
+
+    private final PositionalParamSpec output = CommandSpecs.parameter("1", Path.class, "OUT",
+            "The file to write: .rsa for text, .rsaml for XMI.").build();
+
+    ConvertCommand(RsamlCli parent) {
+        super(parent, NAME, "Converts a model between XMI (.rsaml) and text (.rsa), losslessly; OUT's extension chooses the syntax.");
+        spec.usageMessage().footer("", "Example: rsaml convert robot.rsaml robot.rsa");
+        spec.addPositional(input).addPositional(output);
+        CommandSpecs.standardHelpOptions(spec);
+    }
 
     @Override
     public Integer call() {
+        Path input = this.input.getValue();
+        Path output = this.output.getValue();
         PrintWriter out = out();
         PrintWriter err = err();
         Path in = parent.workingDirectory.resolve(input);

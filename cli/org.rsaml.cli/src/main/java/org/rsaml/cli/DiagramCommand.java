@@ -16,51 +16,54 @@ import org.rsaml.diagram.TimingMode;
 import org.rsaml.validation.RsamlValidationSetup;
 
 import picocli.CommandLine;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Model.PositionalParamSpec;
 
 /** {@code rsaml diagram [--view V] [--format F] -o DIR MODEL...}: each model drawn into DIR. */
-@Command(name = "diagram", mixinStandardHelpOptions = true, sortOptions = false,
-        description = { "Draws models laid out by the Eclipse Layout Kernel, as SVG images or as self-contained HTML pages",
-                "(diagram, findings, timing, validation summary, pan and zoom; no network needed to open them).",
-                "Each model is written to DIR/<model>-<view>.<svg|html>; findings decorate the elements they are on." },
-        exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = { "0:every diagram written (findings do not change the exit code; see 'rsaml validate')",
-                "2:usage error, a model that cannot be read, or a diagram that cannot be written" },
-        footer = { "", "Example: rsaml diagram --format html -o target/diagrams models/" })
 final class DiagramCommand extends RsamlCommand {
 
-    @Option(names = "--view", defaultValue = "architecture", paramLabel = "VIEW",
-            description = "architecture (layers, modules, ports, links, devices) or mission (missions, goals, plans, supervisors, orders); default ${DEFAULT-VALUE}.")
-    DiagramView view;
+    static final String NAME = "diagram";
 
-    @Option(names = { "-f", "--format" }, defaultValue = "svg", paramLabel = "FORMAT",
-            description = "svg or html; default ${DEFAULT-VALUE}.")
-    DiagramFormat format;
+    private final OptionSpec view = CommandSpecs.option(DiagramView.class, "VIEW", "--view").defaultValue("architecture")
+            .description("architecture (layers, modules, ports, links, devices) or mission (missions, goals, plans, supervisors, orders); default ${DEFAULT-VALUE}.")
+            .build();
 
-    @Option(names = "--timing", negatable = true,
-            description = { "Draw the timing analysis over the architecture view: processors' utilisation, tasks' worst-case response",
+    private final OptionSpec format = CommandSpecs.option(DiagramFormat.class, "FORMAT", "-f", "--format").defaultValue("svg")
+            .description("svg or html; default ${DEFAULT-VALUE}.").build();
+
+    private final OptionSpec timing = OptionSpec.builder("--timing").type(Boolean.class).negatable(true)
+            .description("Draw the timing analysis over the architecture view: processors' utilisation, tasks' worst-case response",
                     "times and each latency requirement's worst path; --no-timing never draws it. Default: when the model deploys",
-                    "modules on processors or states latency requirements." })
-    Boolean timing;
+                    "modules on processors or states latency requirements.").build();
 
-    @Option(names = { "-o", "--output" }, required = true, paramLabel = "DIR",
-            description = "The directory the diagrams are written to (created if needed).")
-    Path output;
+    private final OptionSpec output = CommandSpecs.option(Path.class, "DIR", "-o", "--output").required(true)
+            .description("The directory the diagrams are written to (created if needed).").build();
 
-    @Parameters(arity = "1..*", paramLabel = "MODEL", description = "Model files, or directories searched for *.rsaml files.")
-    List<Path> models;
+    private final PositionalParamSpec models = CommandSpecs.paths(Path.class, "MODEL",
+            "Model files, or directories searched for *.rsaml files.").build();
+
+    DiagramCommand(RsamlCli parent) {
+        super(parent, NAME, "Draws models laid out by the Eclipse Layout Kernel, as SVG images or as self-contained HTML pages",
+                "(diagram, findings, timing, validation summary, pan and zoom; no network needed to open them).",
+                "Each model is written to DIR/<model>-<view>.<svg|html>; findings decorate the elements they are on.");
+        spec.usageMessage().sortOptions(false).footer("", "Example: rsaml diagram --format html -o target/diagrams models/");
+        CommandSpecs.exitCodes(spec, "0:every diagram written (findings do not change the exit code; see 'rsaml validate')",
+                "2:usage error, a model that cannot be read, or a diagram that cannot be written");
+        spec.addOption(view).addOption(format).addOption(timing).addOption(output).addPositional(models);
+        CommandSpecs.standardHelpOptions(spec);
+    }
 
     @Override
     public Integer call() {
         RsamlValidationSetup.initInBackground();
+        Path output = this.output.getValue();
+        Boolean timing = this.timing.getValue();
         PrintWriter out = out();
         PrintWriter err = err();
         Path directory = parent.workingDirectory.resolve(output);
-        DiagramBatch batch = new DiagramBatch(List.of(view), List.of(format),
+        DiagramBatch batch = new DiagramBatch(List.of((DiagramView) view.getValue()), List.of((DiagramFormat) format.getValue()),
                 timing == null ? TimingMode.AUTO : timing ? TimingMode.ON : TimingMode.OFF);
-        List<ModelFiles.Input> inputs = ModelFiles.select(parent.workingDirectory, models);
+        List<ModelFiles.Input> inputs = ModelFiles.select(parent.workingDirectory, models.getValue());
         batch.refusal(inputs, directory, output).ifPresent(refusal -> {
             throw new CommandLine.ParameterException(spec.commandLine(), refusal);
         });
@@ -73,7 +76,7 @@ final class DiagramCommand extends RsamlCommand {
             @Override
             public void failed(List<String> lines, Throwable cause) {
                 lines.forEach(err::println);
-                if (parent.debug && cause != null) {
+                if (parent.debug() && cause != null) {
                     cause.printStackTrace(err);
                 }
             }

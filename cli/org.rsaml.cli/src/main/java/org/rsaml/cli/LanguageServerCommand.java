@@ -8,17 +8,19 @@ import java.io.FileDescriptor;
 import java.io.FileInputStream;
 import java.io.FileOutputStream;
 import java.io.PrintStream;
-import java.util.concurrent.Callable;
 
 import org.rsaml.report.ExitCodes;
 import org.rsaml.text.ide.server.RsamlLanguageServer;
 
-import picocli.CommandLine.Command;
-
 /** {@code rsaml language-server}: the language server of textual models, on standard input and output. */
-@Command(name = "language-server", mixinStandardHelpOptions = true,
-        description = "Runs the language server of textual models (.rsa) on standard input and output (LSP), for editors such as VS Code.")
-final class LanguageServerCommand implements Callable<Integer> {
+final class LanguageServerCommand extends RsamlCommand {
+
+    static final String NAME = "language-server";
+
+    LanguageServerCommand(RsamlCli parent) {
+        super(parent, NAME, "Runs the language server of textual models (.rsa) on standard input and output (LSP), for editors such as VS Code.");
+        CommandSpecs.standardHelpOptions(spec);
+    }
 
     @Override
     public Integer call() throws InterruptedException {

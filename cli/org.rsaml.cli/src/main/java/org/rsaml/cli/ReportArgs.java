@@ -7,7 +7,6 @@ package org.rsaml.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -23,8 +22,7 @@ import org.rsaml.validation.Severity;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
+import picocli.CommandLine.Model.OptionSpec;
 
 /**
  * The report options of every command that checks models ({@code validate}, and any further
@@ -32,35 +30,46 @@ import picocli.CommandLine.Spec;
  */
 final class ReportArgs {
 
-    @Option(names = { "-f", "--format" }, defaultValue = "text", paramLabel = "FORMAT",
-            description = "Format written to standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).")
-    ReportFormat format;
+    private final OptionSpec format = CommandSpecs.option(ReportFormat.class, "FORMAT", "-f", "--format").defaultValue("text")
+            .description("Format written to standard output: text, json, sarif or junit (default: ${DEFAULT-VALUE}).").build();
 
-    @Option(names = { "-o", "--output" }, paramLabel = "FORMAT=FILE",
-            description = { "Also write a report in FORMAT to FILE (repeatable), e.g. sarif=target/rsaml.sarif.",
-                    "A FILE alone takes its format from the extension (.sarif, .json, .xml, .txt)." })
-    List<String> outputs = new ArrayList<>();
+    private final OptionSpec outputs = CommandSpecs.option(List.class, "FORMAT=FILE", "-o", "--output").auxiliaryTypes(String.class)
+            .description("Also write a report in FORMAT to FILE (repeatable), e.g. sarif=target/rsaml.sarif.",
+                    "A FILE alone takes its format from the extension (.sarif, .json, .xml, .txt).").build();
 
-    @Option(names = "--fail-on", defaultValue = "error", paramLabel = "LEVEL",
-            description = "Lowest severity that makes the exit code 1: error, warning or never (default: ${DEFAULT-VALUE}).")
-    FindingFailOn failOn;
+    private final OptionSpec failOn = CommandSpecs.option(FindingFailOn.class, "LEVEL", "--fail-on").defaultValue("error")
+            .description("Lowest severity that makes the exit code 1: error, warning or never (default: ${DEFAULT-VALUE}).").build();
 
-    @Option(names = { "-q", "--quiet" },
-            description = "Text format: print only what fails the run (findings at or above --fail-on, unreadable inputs) "
-                    + "and, when it fails, the summary line. Report files are complete.")
-    boolean quiet;
+    private final OptionSpec quiet = CommandSpecs.flag("-q", "--quiet")
+            .description("Text format: print only what fails the run (findings at or above --fail-on, unreadable inputs) "
+                    + "and, when it fails, the summary line. Report files are complete.").build();
 
-    @Spec(Spec.Target.MIXEE)
-    CommandSpec spec;
+    private final CommandSpec spec;
+
+    /** Adds the report options to {@code spec}, the command that checks models. */
+    ReportArgs(CommandSpec spec) {
+        this.spec = spec;
+        spec.addOption(format).addOption(outputs).addOption(failOn).addOption(quiet);
+    }
+
+    ReportFormat format() {
+        return format.getValue();
+    }
+
+    boolean quiet() {
+        return CommandSpecs.given(quiet);
+    }
 
     Severity threshold() {
-        return failOn.threshold();
+        FindingFailOn level = failOn.getValue();
+        return level.threshold();
     }
 
     /** The {@code --output} files, checked before any model is read. */
     Map<Path, ReportFormat> files() {
         Map<Path, ReportFormat> files = new LinkedHashMap<>();
-        for (String output : outputs) {
+        List<String> given = outputs.getValue();
+        for (String output : given == null ? List.<String>of() : given) {
             int eq = output.indexOf('=');
             ReportFormat fmt;
             String file;

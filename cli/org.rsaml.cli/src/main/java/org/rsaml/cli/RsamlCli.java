@@ -11,7 +11,9 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Properties;
 import java.util.function.Function;
 
@@ -25,43 +27,57 @@ import org.rsaml.report.ReportFormat;
 import org.rsaml.report.Text;
 
 import picocli.CommandLine;
-import picocli.CommandLine.Command;
 import picocli.CommandLine.IVersionProvider;
-import picocli.CommandLine.Option;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.ScopeType;
 
 /**
  * {@code rsaml}: validates RsaML models headless, for terminals and CI pipelines.
  * Exit codes: 0 clean, 1 findings at or above {@code --fail-on}, 2 usage or input error.
  */
-@Command(name = "rsaml", mixinStandardHelpOptions = true, versionProvider = RsamlCli.Version.class,
-        description = "Checks robot software architectures written in RsaML (.rsaml files) and generates their code skeletons.",
-        exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = { "0:clean: no finding at or above --fail-on",
-                "1:findings at or above --fail-on",
-                "2:usage error, or an input that could not be read" },
-        footer = { "", "Example: rsaml validate --format sarif --output junit=target/rsaml.xml models/" })
 public final class RsamlCli implements Runnable {
 
-    /** The commands, in the order help lists them. */
-    private static final List<Class<?>> COMMANDS = List.of(ValidateCommand.class, GenerateCommand.class, DiagramCommand.class,
-            AnalyzeCommand.class, ConvertCommand.class, LanguageServerCommand.class, RulesCommand.class, CommandLine.HelpCommand.class);
+    /** The commands, in the order help lists them, each made on demand for a tool. */
+    private static final Map<String, Function<RsamlCli, RsamlCommand>> COMMANDS = new LinkedHashMap<>();
 
-    @Option(names = "--debug", scope = ScopeType.INHERIT,
-            description = "On an unexpected failure, print the stack trace.")
-    boolean debug;
+    static {
+        COMMANDS.put(ValidateCommand.NAME, ValidateCommand::new);
+        COMMANDS.put(GenerateCommand.NAME, GenerateCommand::new);
+        COMMANDS.put(DiagramCommand.NAME, DiagramCommand::new);
+        COMMANDS.put(AnalyzeCommand.NAME, AnalyzeCommand::new);
+        COMMANDS.put(ConvertCommand.NAME, ConvertCommand::new);
+        COMMANDS.put(LanguageServerCommand.NAME, LanguageServerCommand::new);
+        COMMANDS.put(RulesCommand.NAME, RulesCommand::new);
+    }
+
+    private final OptionSpec debug = CommandSpecs.flag("--debug").scopeType(ScopeType.INHERIT)
+            .description("On an unexpected failure, print the stack trace.").build();
 
     /** Where relative paths are resolved; the process's working directory unless embedded. */
     final Path workingDirectory;
 
-    @CommandLine.Spec
-    CommandLine.Model.CommandSpec spec;
+    final CommandSpec spec;
 
     /** Guice's switch for the classes it generates (method interception and fast construction), read once, when it loads. */
     private static final String GUICE_CLASS_GENERATION = "guice_bytecode_gen_option";
 
     RsamlCli(Path workingDirectory) {
         this.workingDirectory = workingDirectory;
+        spec = CommandSpecs.command("rsaml", this,
+                "Checks robot software architectures written in RsaML (.rsaml files) and generates their code skeletons.");
+        spec.versionProvider(new Version());
+        spec.usageMessage().footer("", "Example: rsaml validate --format sarif --output junit=target/rsaml.xml models/");
+        CommandSpecs.exitCodes(spec, "0:clean: no finding at or above --fail-on",
+                "1:findings at or above --fail-on",
+                "2:usage error, or an input that could not be read");
+        spec.addOption(debug);
+        CommandSpecs.standardHelpOptions(spec);
+    }
+
+    /** Whether {@code --debug} was given. */
+    boolean debug() {
+        return CommandSpecs.given(debug);
     }
 
     @Override
@@ -87,19 +103,16 @@ public final class RsamlCli implements Runnable {
     /** Runs {@code rsaml} in this JVM, relative paths resolved against {@code workingDirectory}. */
     public static int run(Path workingDirectory, String[] args, PrintWriter out, PrintWriter err) {
         RsamlCli cli = new RsamlCli(workingDirectory);
-        CommandLine commandLine = new CommandLine(cli);
-        // picocli builds a command's model from its annotations, a third of a small run's main thread for all of them:
-        // a run of one command ("rsaml validate ...") gets that command's alone; help, errors and the rest get every one.
-        Class<?> named = null;
-        for (Class<?> command : COMMANDS) {
-            if (args.length > 0 && command != CommandLine.HelpCommand.class && command.getAnnotation(Command.class).name().equals(args[0])) {
-                named = command;
-            }
-        }
-        for (Class<?> command : COMMANDS) {
-            if (named == null || command == named) {
-                commandLine.addSubcommand(command);
-            }
+        CommandLine commandLine = new CommandLine(cli.spec);
+        // A run of one command ("rsaml validate ...") gets that command's model alone; help, errors and the rest get
+        // every one, and the help command.
+        Function<RsamlCli, RsamlCommand> named = args.length > 0 ? COMMANDS.get(args[0]) : null;
+        if (named != null) {
+            commandLine.addSubcommand(named.apply(cli).spec);
+        } else {
+            COMMANDS.values().forEach(command -> commandLine.addSubcommand(command.apply(cli).spec));
+            // picocli's own, read from its annotations: not on the path of a command's run.
+            commandLine.addSubcommand(new CommandLine.HelpCommand());
         }
         commandLine.setOut(out);
         commandLine.setErr(err);
@@ -140,9 +153,9 @@ public final class RsamlCli implements Runnable {
             if (e instanceof UserException user) {
                 cmd.getErr().println(Text.line("rsaml: " + user.getMessage()));
             } else {
-                cmd.getErr().println(Text.line("rsaml: internal error: " + e + (cli.debug ? "" : " (run with --debug for details)")));
+                cmd.getErr().println(Text.line("rsaml: internal error: " + e + (cli.debug() ? "" : " (run with --debug for details)")));
             }
-            if (cli.debug) {
+            if (cli.debug()) {
                 e.printStackTrace(cmd.getErr());
             }
             return ExitCodes.INPUT_ERROR;
@@ -156,7 +169,7 @@ public final class RsamlCli implements Runnable {
             // The commands keep a deep model to its own file; this is the last resort for whatever escapes them.
             err.println(Text.line("rsaml: internal error: the model is too deep for the stack (" + e + ", a defect in RsaML,"
                     + " please report it); a larger stack may get past it: RSAML_JAVA_OPTS=-Xss512m"));
-            if (cli.debug) {
+            if (cli.debug()) {
                 e.printStackTrace(err);
             }
             return ExitCodes.INPUT_ERROR;
@@ -175,7 +188,7 @@ public final class RsamlCli implements Runnable {
     }
 
     /** The commands or options closest to a misspelled one ({@code valdate}, {@code --fromat}), by edit distance. */
-    static List<String> suggestions(CommandLine.Model.CommandSpec spec, String typed) {
+    static List<String> suggestions(CommandSpec spec, String typed) {
         String word = typed;
         List<String> candidates = new ArrayList<>();
         if (word.startsWith("-")) {
@@ -219,7 +232,7 @@ public final class RsamlCli implements Runnable {
 
     /** With {@code --debug}: the stack trace of what made {@code file} fail. */
     void printCause(PrintWriter err, String file, Throwable cause) {
-        if (debug && cause != null) {
+        if (debug() && cause != null) {
             err.println(Text.line(file + ": cause of the error above:"));
             cause.printStackTrace(err);
         }

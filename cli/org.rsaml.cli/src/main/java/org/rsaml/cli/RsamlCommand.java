@@ -8,17 +8,23 @@ import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.ParentCommand;
-import picocli.CommandLine.Spec;
 
-/** What every subcommand of {@code rsaml} is given: the tool (working directory, --debug) and its own streams. */
+/**
+ * What every subcommand of {@code rsaml} is given: the tool (working directory, --debug), its model (the options it
+ * declares in its constructor, {@link CommandSpecs}) and its own streams.
+ */
 abstract class RsamlCommand implements Callable<Integer> {
 
-    @ParentCommand
-    RsamlCli parent;
+    final RsamlCli parent;
 
-    @Spec
-    CommandSpec spec;
+    final CommandSpec spec;
+
+    RsamlCommand(RsamlCli parent, String name, String... description) {
+        this.parent = parent;
+        this.spec = CommandSpecs.command(name, this, description);
+        // -V prints the tool's version from every command.
+        spec.versionProvider(parent.spec.versionProvider());
+    }
 
     /** Standard output, as the embedding caller set it. */
     PrintWriter out() {

@@ -12,37 +12,38 @@ import org.rsaml.report.ExitCodes;
 import org.rsaml.report.RuleList;
 import org.rsaml.validation.Rules;
 
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
-import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 
 /** {@code rsaml rules}: the rules RsaML checks, from the rule catalogue: id, severity, description, scope, fix. */
-@Command(name = "rules", mixinStandardHelpOptions = true, description = "Lists the rules RsaML checks.")
-final class RulesCommand implements java.util.concurrent.Callable<Integer> {
+final class RulesCommand extends RsamlCommand {
+
+    static final String NAME = "rules";
 
     enum Format { text, json }
 
-    @Option(names = { "-f", "--format" }, defaultValue = "text", description = "text or json (default: ${DEFAULT-VALUE}).")
-    Format format;
+    private final OptionSpec format = CommandSpecs.option(Format.class, "FORMAT", "-f", "--format").defaultValue("text")
+            .description("text or json (default: ${DEFAULT-VALUE}).").build();
 
-    @Option(names = "--verbose", description = "Also print each rule's exact scope and what to change to satisfy it.")
-    boolean verbose;
+    private final OptionSpec verbose = CommandSpecs.flag("--verbose")
+            .description("Also print each rule's exact scope and what to change to satisfy it.").build();
 
-    @Spec
-    CommandSpec spec;
+    RulesCommand(RsamlCli parent) {
+        super(parent, NAME, "Lists the rules RsaML checks.");
+        spec.addOption(format).addOption(verbose);
+        CommandSpecs.standardHelpOptions(spec);
+    }
 
     @Override
     public Integer call() {
-        PrintWriter out = spec.commandLine().getOut();
-        if (format == Format.json) {
+        PrintWriter out = out();
+        if (format.getValue() == Format.json) {
             try {
                 RuleList.json(Rules.all(), out);
             } catch (IOException e) {
                 throw new UncheckedIOException(e);
             }
         } else {
-            RuleList.text(Rules.all(), verbose, out);
+            RuleList.text(Rules.all(), CommandSpecs.given(verbose), out);
         }
         out.flush();
         return ExitCodes.OK;
