@@ -6,9 +6,10 @@
 // and then activates each node its parameter node_names names (relative names resolve in its
 // namespace), waiting for each to come up, whether it runs in a container or in a process of its
 // own, and logs each node's state. It then stays until SIGINT or SIGTERM (ros2 launch stopping, or
-// Ctrl-C), when it deactivates and cleans up every node it reached, the last one first, while
-// their processes wait for it (rsaml/scheduling.hpp: spin). It exits with status 1 when a node
-// refuses a transition or does not answer.
+// Ctrl-C), when it deactivates and cleans up every node it reached, the last one first, each within
+// a deadline of its own (parameter node_deadline_ms), while their processes wait for it
+// (rsaml/scheduling.hpp: spin, for as long as the launch files give them for all of this manager's
+// nodes). It exits with status 1 when a node refuses a transition or does not answer.
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -32,8 +33,12 @@ using lifecycle_msgs::srv::ChangeState;
 using lifecycle_msgs::srv::GetState;
 using Clock = std::chrono::steady_clock;
 
-/** How long the nodes are given to be deactivated and cleaned up (their processes wait 3 s for it). */
-constexpr std::chrono::milliseconds BRING_DOWN{2500};
+/**
+ * How long each node is given to be deactivated and cleaned up, without the parameter node_deadline_ms
+ * (which the launch files set): what a process waits for one managed node without its grace argument
+ * (rsaml/scheduling.hpp: GRACE_WITHOUT_ARGUMENT_MS, 3 s) less a second for the answer's way back.
+ */
+constexpr std::int64_t NODE_DEADLINE_WITHOUT_PARAMETER_MS = 2000;
 
 std::atomic<int> stop_signals{0};
 
@@ -154,6 +159,14 @@ int main(int argc, char* argv[]) {
   int status = 0;
   {
     auto node = std::make_shared<rclcpp::Node>("lifecycle_manager");
+    const std::int64_t deadline_ms = node->declare_parameter<std::int64_t>("node_deadline_ms", NODE_DEADLINE_WITHOUT_PARAMETER_MS);
+    if (deadline_ms <= 0) {
+      RCLCPP_ERROR(node->get_logger(), "parameter node_deadline_ms must be a positive number of milliseconds, not %lld",
+                   static_cast<long long>(deadline_ms));
+      node.reset();
+      rclcpp::shutdown();
+      return 1;
+    }
     std::vector<Managed> managed;
     for (const std::string& name : node->declare_parameter<std::vector<std::string>>("node_names", std::vector<std::string>{})) {
       Managed m;
@@ -177,9 +190,14 @@ int main(int argc, char* argv[]) {
       rclcpp::spin_some(node);
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
-    const auto deadline = Clock::now() + BRING_DOWN;
+    // Each node its own deadline: one slow to clean up does not take the time of those after it.
+    const auto per_node = std::chrono::milliseconds(deadline_ms);
     for (auto m = managed.rbegin(); m != managed.rend(); ++m) {
-      if (m->reached && bring_down(node, *m, deadline) != 0) {
+      if (!m->reached) {
+        continue;
+      }
+      RCLCPP_INFO(node->get_logger(), "bringing %s down within %lld ms", m->name.c_str(), static_cast<long long>(per_node.count()));
+      if (bring_down(node, *m, Clock::now() + per_node) != 0) {
         status = 1;
       }
     }

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <stdexcept>
@@ -31,6 +32,7 @@ std::mutex trace_mutex;
 std::mutex registry_mutex;
 std::unordered_map<const rclcpp::node_interfaces::NodeBaseInterface*, Schedule*> registry;
 std::atomic<int> stop_signals{0};
+std::chrono::milliseconds shutdown_grace{GRACE_WITHOUT_ARGUMENT_MS};
 
 void on_stop_signal(int) { stop_signals.fetch_add(1); }
 
@@ -113,16 +115,32 @@ void trace(const std::string& text) {
 }
 
 void init(int argc, char** argv) {
+  const std::string option = GRACE_OPTION;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--ros-args") {
+      break;
+    }
+    if (arg.rfind(option + "=", 0) == 0) {
+      const std::string value = arg.substr(option.size() + 1);
+      char* end = nullptr;
+      const long long grace = std::strtoll(value.c_str(), &end, 10);
+      if (value.empty() || *end != '\0' || grace < 0) {
+        throw std::invalid_argument(option + " takes a whole number of milliseconds, not '" + value + "'");
+      }
+      shutdown_grace = std::chrono::milliseconds(grace);
+    }
+  }
   rclcpp::init(argc, argv, rclcpp::InitOptions(), rclcpp::SignalHandlerOptions::None);
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
 }
 
-void spin(rclcpp::Executor& executor, std::chrono::milliseconds grace) {
+void spin(rclcpp::Executor& executor) {
   while (stop_signals.load() == 0 && rclcpp::ok()) {
     executor.spin_once(std::chrono::milliseconds(100));
   }
-  const auto until = std::chrono::steady_clock::now() + grace;
+  const auto until = std::chrono::steady_clock::now() + shutdown_grace;
   std::vector<std::string> configured = Schedule::rsaml_configured();
   const bool managed = !configured.empty();
   while (!configured.empty() && stop_signals.load() < 2 && rclcpp::ok() && std::chrono::steady_clock::now() < until) {

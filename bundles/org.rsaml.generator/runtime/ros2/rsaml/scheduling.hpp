@@ -32,19 +32,30 @@ namespace rsaml_ros2 {
 void trace(const std::string& text);
 
 /**
+ * The option of a process's command line (before --ros-args) that sets how long spin() serves its
+ * managed nodes after SIGINT or SIGTERM, in milliseconds: `--rsaml-shutdown-grace-ms=5000`. The
+ * generated launch files give it to every process with managed nodes, from the number of nodes its
+ * lifecycle manager brings down (each within its own deadline; see the README, "Nodes are plain
+ * rclcpp nodes unless"); without it, GRACE_WITHOUT_ARGUMENT_MS, as for one managed node.
+ */
+constexpr const char* GRACE_OPTION = "--rsaml-shutdown-grace-ms";
+constexpr long long GRACE_WITHOUT_ARGUMENT_MS = 3000;
+
+/**
  * rclcpp::init without rclcpp's signal handlers: SIGINT and SIGTERM ask spin() below to stop, so that
  * the process can still serve its managed nodes' transitions while the lifecycle manager (which gets
- * the same signal from ros2 launch, or from the terminal) deactivates and cleans them up.
+ * the same signal from ros2 launch, or from the terminal) deactivates and cleans them up. Takes
+ * GRACE_OPTION from the command line; throws std::invalid_argument when its value is not a number.
  */
 void init(int argc, char** argv);
 
 /**
  * Spins the process's main executor until SIGINT or SIGTERM (see init()); then, while a managed node
- * of the process is still configured (inactive or active), goes on serving it for at most `grace`, a
- * second signal ending the wait; a node still configured then is said in the trace. A process of
- * plain nodes stops at once.
+ * of the process is still configured (inactive or active), goes on serving it for at most the grace
+ * init() took, a second signal ending the wait; a node still configured then is said in the trace. A
+ * process of plain nodes stops at once.
  */
-void spin(rclcpp::Executor& executor, std::chrono::milliseconds grace = std::chrono::milliseconds(3000));
+void spin(rclcpp::Executor& executor);
 
 /**
  * What the model and the timing analysis say of the jobs of a timed release or of a node's

@@ -45,11 +45,7 @@ public final class Names {
      * added underscore would make a reserved {@code __} in composed names.
      */
     public static String stem(String raw) {
-        String s = collapse(raw);
-        if (s.isEmpty()) {
-            return "unnamed";
-        }
-        return Character.isDigit(s.charAt(0)) ? "n" + s : s;
+        return RsamlNames.stem(raw);
     }
 
     /** {@code taskInterpreter} to {@code TaskInterpreter}: for class and message type names. */
@@ -95,24 +91,7 @@ public final class Names {
     }
 
     private static String collapse(String raw) {
-        if (raw == null) {
-            return "";
-        }
-        StringBuilder out = new StringBuilder(raw.length());
-        for (int i = 0; i < raw.length(); i++) {
-            char c = raw.charAt(i);
-            boolean ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
-            if (ok) {
-                out.append(c);
-            } else if (out.length() > 0 && out.charAt(out.length() - 1) != '_') {
-                out.append('_');
-            }
-        }
-        int end = out.length();
-        while (end > 0 && out.charAt(end - 1) == '_') {
-            end--;
-        }
-        return out.substring(0, end);
+        return RsamlNames.collapse(raw);
     }
 
     /** A string literal for C++: printable ASCII as is, everything else as 3-digit octal escapes. */

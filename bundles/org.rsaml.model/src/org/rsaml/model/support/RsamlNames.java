@@ -26,7 +26,7 @@ import org.rsaml.model.Port;
  */
 public final class RsamlNames {
 
-    /** The last segment of a managed node's topic of transitions ({@link Ids#transitionEventTopic}). */
+    /** The last segment of a managed node's topic of transitions ({@link RosNodes#transitionEventTopic}). */
     public static final String TRANSITION_EVENT = "transition_event";
 
     private RsamlNames() {
@@ -67,6 +67,44 @@ public final class RsamlNames {
             s = "n" + s;
         }
         return reserved(s) ? s + "_" : s;
+    }
+
+    /**
+     * A name as a file name stem and the like: every character but an ASCII letter or digit becomes an
+     * underscore, runs of underscores collapse, leading and trailing underscores go, and a leading
+     * digit gets an {@code n} before it; {@code unnamed} when nothing is left. Reserved words are kept.
+     */
+    public static String stem(String raw) {
+        String s = collapse(raw);
+        if (s.isEmpty()) {
+            return "unnamed";
+        }
+        return Character.isDigit(s.charAt(0)) ? "n" + s : s;
+    }
+
+    /**
+     * Every character but an ASCII letter or digit an underscore, runs of underscores collapsed,
+     * leading and trailing underscores gone (C++ reserves {@code __} and {@code _X}); possibly empty.
+     */
+    public static String collapse(String raw) {
+        if (raw == null) {
+            return "";
+        }
+        StringBuilder out = new StringBuilder(raw.length());
+        for (int i = 0; i < raw.length(); i++) {
+            char c = raw.charAt(i);
+            boolean ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+            if (ok) {
+                out.append(c);
+            } else if (out.length() > 0 && out.charAt(out.length() - 1) != '_') {
+                out.append('_');
+            }
+        }
+        int end = out.length();
+        while (end > 0 && out.charAt(end - 1) == '_') {
+            end--;
+        }
+        return out.substring(0, end);
     }
 
     /** Whether a name may not be used as it is in generated code or as a file name. */
@@ -150,8 +188,10 @@ public final class RsamlNames {
         private final Map<Port, String> ports = new IdentityHashMap<>();
         private final List<Port> ordered = new ArrayList<>();
         private final List<Module> modules = new ArrayList<>();
+        private final String architectureName;
 
         public Ids(Architecture architecture) {
+            architectureName = architecture.getName();
             Scope layerScope = new Scope(true, FOLDERS);
             for (Layer l : architecture.getLayers()) {
                 layers.put(l, layerScope.allocate(snake(l.getName())));
@@ -191,18 +231,14 @@ public final class RsamlNames {
             return layers.get(m.getLayer()) + "_" + nodes.get(m);
         }
 
-        /**
-         * The topic on which ROS 2 publishes the transitions of a managed (lifecycle) module's node,
-         * {@code <rosNode>/transition_event} (rclcpp_lifecycle's {@code ~/transition_event}, as
-         * lifecycle_msgs/msg/TransitionEvent), relative to the launch's namespace as the ports' topics are.
-         */
-        public String transitionEventTopic(Module m) {
-            return rosNode(m) + "/" + TRANSITION_EVENT;
-        }
-
         /** Every module, layers by level, modules in model order. */
         public List<Module> modules() {
             return modules;
+        }
+
+        /** The architecture's name as the model gives it. */
+        public String architectureName() {
+            return architectureName;
         }
 
         /** The topic a port's node uses when the port names none and no port connected to it does: {@code <layer>/<node>/<port>}. */
@@ -213,6 +249,47 @@ public final class RsamlNames {
         /** Every port, layers by level, modules and ports in model order. */
         public List<Port> ports() {
             return ordered;
+        }
+    }
+
+    /**
+     * The names of the ROS 2 nodes the generated code gives the modules, which are also the names of
+     * their executables: each module's {@link Ids#rosNode} as a file name stem, in one scope (without
+     * case, as file names) that holds the ROS package's name first; a node whose name would clash, with
+     * another or with the package's, gets the first free suffix {@code _2}, {@code _3}, ... (in
+     * {@link Ids#modules} order). The ROS 2 generator takes its node names, executables and containers
+     * from this scope; RSA-28 checks the managed nodes' {@code transition_event} topics with it.
+     */
+    public static final class RosNodes {
+
+        private final Scope scope;
+        private final Map<Module, String> names = new IdentityHashMap<>();
+
+        /** The nodes of an architecture whose nodes are in ROS package {@code rosPackage}. */
+        public RosNodes(Ids ids, String rosPackage) {
+            scope = new Scope(true, rosPackage);
+            for (Module m : ids.modules()) {
+                names.put(m, scope.allocate(stem(ids.rosNode(m))));
+            }
+        }
+
+        /** The module's node name in the generated code (and its executable's name). */
+        public String of(Module m) {
+            return names.get(m);
+        }
+
+        /**
+         * The topic on which ROS 2 publishes the transitions of a managed (lifecycle) module's node,
+         * {@code <node>/transition_event} (rclcpp_lifecycle's {@code ~/transition_event}, as
+         * lifecycle_msgs/msg/TransitionEvent), relative to the launch's namespace as the ports' topics are.
+         */
+        public String transitionEventTopic(Module m) {
+            return of(m) + "/" + TRANSITION_EVENT;
+        }
+
+        /** The scope of the names, for the generated code's other executables and nodes (containers, the lifecycle manager). */
+        public Scope scope() {
+            return scope;
         }
     }
 }

@@ -115,6 +115,21 @@ public final class RsamlPackages {
         return new RsamlNames.Scope(false, ROS2_OWN.toArray(String[]::new)).allocate(snake, "", "", "", "_" + INTERFACES, "", "_" + RUNTIME);
     }
 
+    /**
+     * The generator's warning for an element whose package got another name than {@code named} because
+     * {@code own} (the names among it and those named after it that are) would be ROS 2's own packages:
+     * which element, its new and old name, why, what takes the new name and how to choose another.
+     *
+     * @param element the element as a user knows it ({@code architecture 'mobileBase'}, {@code layer 'msgs'})
+     * @param whatIs what is named {@code fresh}, with its verb ({@code the package of its nodes is})
+     */
+    public static String renamedFromOwn(String element, String fresh, String named, List<String> own, String whatIs) {
+        return element + " is named " + fresh + " in ROS 2, not " + named + ": " + String.join(" and ", own)
+                + (own.size() == 1 ? " is a package" : " are packages") + " of ROS 2 itself (a generated package of that name would"
+                + " depend on itself or hide ROS 2's); " + whatIs + " named " + fresh
+                + " (rename the " + element.replaceFirst(" .*", "") + " to choose another name)";
+    }
+
     /** The layout the architecture asks for; single when the element is in none. */
     public static PackageLayout layout(Architecture architecture) {
         return architecture == null ? PackageLayout.SINGLE : architecture.getPackages();

@@ -208,9 +208,11 @@ public final class RsamlTopics {
         Table(List<List<Port>> groups, RsamlNames.Ids ids) {
             this.ids = ids;
             if (ids != null) {
+                // The nodes' names as the generator gives them (a clash renamed), in the package named after the architecture.
+                RsamlNames.RosNodes nodes = new RsamlNames.RosNodes(ids, RsamlPackages.systemPackage(RsamlNames.snake(ids.architectureName())));
                 for (Module m : ids.modules()) {
                     if (m.effectiveLifecycle() == NodeLifecycle.MANAGED) {
-                        transitionEvents.put(ids.transitionEventTopic(m), m);
+                        transitionEvents.put(nodes.transitionEventTopic(m), m);
                     }
                 }
             }

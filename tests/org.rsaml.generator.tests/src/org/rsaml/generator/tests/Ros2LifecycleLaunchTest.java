@@ -24,6 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
 import org.rsaml.generator.internal.Names;
+import org.rsaml.generator.internal.ros2.Ros2Shutdown;
 import org.rsaml.model.Architecture;
 import org.rsaml.validation.ModelLoader;
 
@@ -44,7 +45,10 @@ class Ros2LifecycleLaunchTest {
      * for it, and everything exits cleanly. Then, without the launch files, when one side of a
      * managed node is gone: a node process whose lifecycle manager was killed says on SIGINT that its
      * node was left active and exits, and a lifecycle manager whose node process was killed says on
-     * SIGINT that the node was not cleaned up and exits with status 1 (neither waits for long).
+     * SIGINT that the node was not cleaned up and exits with status 1 (neither waits for long); with two managed nodes, the
+     * first of which to be brought down is gone, it waits that node's deadline out and still brings the other down within a
+     * deadline of its own. Each launch file gives the processes of the managed nodes the grace of two nodes and ros2
+     * launch's wait before SIGTERM beyond it, and the lifecycle manager says each node's deadline.
      * {@code -Dtest=Ros2LifecycleLaunchTest} runs it alone.
      */
     @Test
@@ -111,6 +115,18 @@ class Ros2LifecycleLaunchTest {
                 assertTrue(out.contains(": " + nodes.get(m) + " is unconfigured"), file + ": the lifecycle manager did not see "
                         + m + " unconfigured:\n" + Tools.last(out, 6000));
             }
+            // Each node its own deadline, the last one first; the processes' grace and launch's wait before SIGTERM cover them all.
+            List<String> lastFirst = List.of(managed.get(1), managed.get(0));
+            List<Integer> downs = lastFirst.stream().map(m -> out.indexOf(": bringing " + nodes.get(m) + " down within "
+                    + Ros2Shutdown.NODE_DEADLINE_MS + " ms")).toList();
+            assertTrue(downs.get(0) >= 0 && downs.get(1) > downs.get(0), () -> file + ": the lifecycle manager does not say it brings "
+                    + lastFirst + " down in turn, each within " + Ros2Shutdown.NODE_DEADLINE_MS + " ms:\n" + Tools.last(out, 6000));
+            String launchFile = Files.readString(install.resolve("share/" + pkg + "/launch/" + file), StandardCharsets.UTF_8);
+            assertTrue(launchFile.contains("'" + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(managed.size()) + "'")
+                    && launchFile.contains("sigterm_timeout='" + Ros2Shutdown.sigtermTimeoutS(managed.size()) + "'"),
+                    () -> file + ": the processes of the managed nodes are given the grace and the wait before SIGTERM of "
+                            + managed.size() + " managed nodes:\n" + launchFile);
+            assertFalse(out.contains("escalating to 'SIGTERM'"), () -> file + ": ros2 launch had to send SIGTERM:\n" + Tools.last(out, 6000));
             assertFalse(out.contains("no lifecycle manager deactivated it"), () -> file + ": a managed node was left configured:\n"
                     + Tools.last(out, 6000));
             assertFalse(out.contains("process has died"), () -> file + ": a process died:\n" + Tools.last(out, 6000));
@@ -136,16 +152,28 @@ class Ros2LifecycleLaunchTest {
                     "a node left active says so at exit:\n" + Tools.last(out, 4000));
             assertEquals(0, node.process.exitValue(), () -> "the node's process exits cleanly:\n" + Tools.last(out, 4000));
         }
-        // The node's process killed: the lifecycle manager, on SIGINT, says the node was not cleaned up and exits with 1.
-        try (Started node = start(tmp, install, domain, pkg, lidar, "lost-node");
-                Started manager = start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
-                        "lost-node-manager")) {
-            manager.await(lidar + " is active");
-            node.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        // Of two managed nodes, the process of the one brought down first killed: the lifecycle manager, on SIGINT, waits
+        // that node's deadline out, says it was not cleaned up, still brings the other down within a deadline of its own
+        // (whose process, given the grace of two nodes as the launch files give it, serves it meanwhile) and exits with 1.
+        String mapper = nodes.get("mapping/mapper");
+        try (Started node = start(tmp, install, domain, pkg, lidar + " " + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(2),
+                "lost-node");
+                Started lost = start(tmp, install, domain, pkg, mapper, "lost-node-mapper");
+                Started manager = start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
+                        + mapper + "] -p node_deadline_ms:=" + Ros2Shutdown.NODE_DEADLINE_MS, "lost-node-manager")) {
+            manager.await(mapper + " is active");
+            lost.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            node.signal();
             String out = manager.stop();
-            assertTrue(out.contains(lidar + " did not say its state in time: it was not deactivated and cleaned up"),
-                    "the lifecycle manager says which node it could not bring down:\n" + Tools.last(out, 4000));
+            int gone = out.indexOf(mapper + " did not say its state in time: it was not deactivated and cleaned up");
+            assertTrue(gone >= 0, "the lifecycle manager says which node it could not bring down:\n" + Tools.last(out, 4000));
+            assertTrue(out.indexOf(lidar + " is unconfigured", gone) > gone, "after waiting out the lost node's deadline, the"
+                    + " lifecycle manager still brings the other node down:\n" + Tools.last(out, 4000));
             assertEquals(1, manager.process.exitValue(), () -> "the lifecycle manager fails:\n" + Tools.last(out, 4000));
+            String served = node.exited();
+            assertTrue(served.contains("state perception/lidar unconfigured") && !served.contains("no lifecycle manager deactivated it"),
+                    "the other node's process served it until it was cleaned up:\n" + Tools.last(served, 4000));
+            assertEquals(0, node.process.exitValue(), () -> "the other node's process exits cleanly:\n" + Tools.last(served, 4000));
         }
     }
 
@@ -174,7 +202,17 @@ class Ros2LifecycleLaunchTest {
 
         /** SIGINT, then its output once it exited (it must within 30 s). */
         String stop() throws Exception {
+            signal();
+            return exited();
+        }
+
+        /** Sends it SIGINT. */
+        void signal() throws Exception {
             Tools.ok(log.getParent(), 10, "kill", "-INT", Long.toString(process.pid()));
+        }
+
+        /** Its output once it exited (it must within 30 s). */
+        String exited() throws Exception {
             boolean exited = process.waitFor(30, TimeUnit.SECONDS);
             String out = Files.readString(log, StandardCharsets.UTF_8);
             assertTrue(exited, () -> log.getFileName() + ": still running 30 s after SIGINT:\n" + Tools.last(out, 4000));

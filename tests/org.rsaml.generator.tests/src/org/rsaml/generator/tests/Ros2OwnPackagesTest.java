@@ -79,6 +79,29 @@ class Ros2OwnPackagesTest {
     }
 
     @Test
+    void aLayerOrProcessorPackageNamedLikeARos2PackageGetsTheNextFreeNameAndIsToldWhy(@TempDir Path tmp) throws Exception {
+        // Architecture 'nav' with a layer (or processor) 'msgs': its package would be nav_msgs, ROS 2's own.
+        for (String[] c : new String[][] { { "perLayer", "navigation", "layer 'msgs'" }, { "perProcessor", "core1", "processor 'msgs'" } }) {
+            Path model = Ros2PackagesTest.model(tmp, c[0], "name=\"mobileBase\"", "name=\"nav\"", c[1], "msgs");
+            Path out = tmp.resolve("out-" + c[0]);
+
+            GenerationResult result = new RsamlGenerator().generate(model, Target.ROS2, out, false);
+
+            assertTrue(Files.exists(out.resolve("nav_msgs_2/package.xml")) && !Files.exists(out.resolve("nav_msgs")),
+                    c[0] + ": the nodes of " + c[2] + " are in package nav_msgs_2, not in one named like ROS 2's nav_msgs");
+            assertTrue(Files.readString(out.resolve("nav_msgs_2/package.xml")).contains("<name>nav_msgs_2</name>"),
+                    "the manifest says the package's name");
+            String expected = c[2] + " is named nav_msgs_2 in ROS 2, not nav_msgs: nav_msgs is a package of ROS 2 itself (a generated"
+                    + " package of that name would depend on itself or hide ROS 2's); the package of its nodes is named nav_msgs_2 (rename the "
+                    + c[2].replaceFirst(" .*", "") + " to choose another name)";
+            assertEquals(1, result.warnings().stream().filter(expected::equals).count(),
+                    c[0] + ": the generation says once which element's package changed name, why and what to do: " + result.warnings());
+            assertTrue(Files.readString(out.resolve("nav/package.xml")).contains("<exec_depend>nav_msgs_2</exec_depend>"),
+                    "the launch files' package runs the nodes from the renamed package");
+        }
+    }
+
+    @Test
     void anArchitectureNamedLikeARos2PackageGetsTheNextFreeNameAndIsToldWhy(@TempDir Path tmp) throws Exception {
         for (String[] c : new String[][] { { "std_msgs", "std_msgs_2", "std_msgs is a package of ROS 2 itself" },
                 { "rcl", "rcl_2", "rcl and rcl_interfaces are packages of ROS 2 itself" },

@@ -103,6 +103,24 @@ class TopicNamesTest {
     }
 
     @Test
+    void theTransitionTopicOfAManagedNodeRenamedForAClashIsCheckedUnderItsNewName(@TempDir Path tmp) throws Exception {
+        // base + aB and base_a + b both make the node name base_a_b: the later layer's node is base_a_b_2 in the generated code.
+        List<String> found = findings(tmp, "renamed.rsaml", model(0,
+                "<modules name=\"aB\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"base_a_b/transition_event\"/></modules>",
+                "<modules name=\"spy\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\" name=\"o\""
+                        + " dataType=\"numeric\" topic=\"base_a_b_2/transition_event\"/></modules>",
+                "</layers>\n  <layers name=\"base_a\" level=\"1\">",
+                "<modules name=\"b\" lifecycle=\"managed\" execType=\"periodic\" period=\"100.0\"><ports xsi:type=\"rsaml:OutputPort\""
+                        + " name=\"o\" dataType=\"numeric\" topic=\"b_out\"/></modules>"));
+        assertEquals(List.of("robot/base/spy/o: Output port 'o' of module 'spy' names the topic 'base_a_b_2/transition_event', on which"
+                + " ROS 2 publishes the transitions of the managed node of module 'b' (lifecycle_msgs/msg/TransitionEvent):"
+                + " choose another name"), found,
+                "the managed node of module 'b' is base_a_b_2 in the generated code (RsamlNames.RosNodes), so its transitions are on"
+                + " base_a_b_2/transition_event; base_a_b is the plain node of module 'aB', which has no such topic");
+    }
+
+    @Test
     void aDefaultTopicTooLongForRos2IsAFindingOnThePortWhoseDefaultItIs(@TempDir Path tmp) throws Exception {
         // <layer>/<node>/<port>: "base/" (5) + node + "/o" (2), with the leading slash: 8 + node
         String longNode = "n".repeat(240);

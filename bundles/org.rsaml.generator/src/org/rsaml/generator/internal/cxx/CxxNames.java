@@ -109,10 +109,7 @@ public final class CxxNames {
             if (!fresh.equals(named)) {
                 List<String> own = java.util.stream.Stream.of(named, named + "_" + RsamlPackages.INTERFACES, named + "_" + RsamlPackages.RUNTIME)
                         .filter(RsamlPackages.ROS2_OWN::contains).toList();
-                warnings.add("architecture '" + plan.name() + "' is named " + fresh + " in ROS 2, not " + named + ": "
-                        + String.join(" and ", own) + (own.size() == 1 ? " is a package" : " are packages")
-                        + " of ROS 2 itself (a generated package of that name would depend on itself or hide ROS 2's); "
-                        + what + " are named " + fresh + " (rename the architecture to choose another name)");
+                warnings.add(RsamlPackages.renamedFromOwn("architecture '" + plan.name() + "'", fresh, named, own, what + " are"));
             }
             return fresh;
         }

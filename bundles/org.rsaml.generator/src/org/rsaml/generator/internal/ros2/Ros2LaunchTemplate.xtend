@@ -186,7 +186,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		«ENDIF»
 		        		ComposableNodeContainer(
 		        		    name=«py(c.name)», namespace=namespace, package=«py(context.packages.runtime)»,
-		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«IF c.core >= 0»
+		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«shutdown(c)»«IF c.core >= 0»
 		        		    prefix=«prefix(c.processor, c.core)»,«ENDIF»«IF hosted»
 		        		    condition=«onHost(c.processor)»,«ENDIF»
 		        		    composable_node_descriptions=[
@@ -200,7 +200,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        «ELSE»
 		        	«FOR m : plan.modules»
 		        		Node(package=«py(context.nodePackage(m))», executable=«py(m.executable)», name=«py(m.rosNode)»,
-		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.core >= 0»,
+		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.managed»,«shutdown(container(m)).replaceFirst(",$", "")»«ENDIF»«IF m.core >= 0»,
 		        		     prefix=«prefix(m.processor, m.core)»«ENDIF»«IF hosted»,
 		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
@@ -208,8 +208,9 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        «FOR c : rosNames.containers.filter[modules.exists[managed]]»
 		        	# The managed nodes«IF c.processor !== null» of processor '«Names.comment(c.processor.name)»'«ENDIF»: configured, then activated, once they are up; deactivated and cleaned up when the launch stops.
 		        	Node(package=«py(context.packages.runtime)», executable=«py(rosNames.lifecycleManagerExecutable)», name=«py(c.name.replaceFirst("_container$", "") + "_lifecycle_manager")»,
-		        	     namespace=namespace, output='screen',
-		        	     parameters=[{'node_names': [«FOR m : c.modules.filter[managed] SEPARATOR ", "»«py(m.rosNode)»«ENDFOR»]}]«IF hosted»,
+		        	     namespace=namespace, output='screen', sigterm_timeout=«py(Ros2Shutdown.sigtermTimeoutS(managedCount(c)))»,
+		        	     parameters=[{'node_names': [«FOR m : c.modules.filter[managed] SEPARATOR ", "»«py(m.rosNode)»«ENDFOR»],
+		        	                  'node_deadline_ms': «Ros2Shutdown.NODE_DEADLINE_MS»}]«IF hosted»,
 		        	     condition=«onHost(c.processor)»«ENDIF»),
 		        «ENDFOR»
 		    ]
@@ -237,6 +238,26 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        OpaqueFunction(function=launch_setup),
 		    ])
 	'''
+
+	/** How many managed nodes the lifecycle manager of container c brings down. */
+	def private managedCount(Ros2Names.Container c) {
+		c.modules.filter[rosNames.managed(it)].size
+	}
+
+	/** The container (the processor, and so the lifecycle manager) of module m. */
+	def private container(org.rsaml.analysis.plan.PlannedModule m) {
+		rosNames.containers.findFirst[modules.contains(m)]
+	}
+
+	/**
+	 * What a process with managed nodes of container c is given to serve them while their lifecycle
+	 * manager brings them down (Ros2Shutdown): its grace, and ros2 launch's wait before SIGTERM.
+	 */
+	def private shutdown(Ros2Names.Container c) {
+		val n = managedCount(c)
+		if (n == 0) return ""
+		" arguments=[" + py(Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(n)) + "], sigterm_timeout=" + py(Ros2Shutdown.sigtermTimeoutS(n)) + ","
+	}
 
 	/** Every node takes the remappings of the topics the model names, if it names any. */
 	def private remap() {

@@ -28,6 +28,7 @@ import org.rsaml.analysis.plan.Release;
 import org.rsaml.model.NodeLifecycle;
 import org.rsaml.model.support.RsamlTimes;
 import org.rsaml.model.Processor;
+import org.rsaml.model.support.RsamlNames;
 import org.rsaml.model.support.RsamlTopics;
 
 /**
@@ -107,9 +108,10 @@ public final class Ros2Names {
     public Ros2Names(ExecutionPlan plan, CxxNames names) {
         this.interfacesPackage = names.project() + "_interfaces";
         // The shared library of the nodes is named after the package.
-        NameScope executableScope = new NameScope(true, names.project());
+        RsamlNames.RosNodes nodes = new RsamlNames.RosNodes(names.ids(), names.project());
+        RsamlNames.Scope executableScope = nodes.scope();
         for (PlannedModule m : plan.modules()) {
-            executables.put(m, executableScope.allocate(Names.stem(names.ids().rosNode(m.module()))));
+            executables.put(m, nodes.of(m.module()));
         }
         // Containers are nodes too, in the same namespace: one per processor that runs a module,
         // in the model's order, then one for the modules no processor names.

@@ -57,6 +57,7 @@ public final class Ros2Packages {
     private final String runtime;
     private final List<NodePackage> nodePackages = new ArrayList<>();
     private final Map<PlannedModule, NodePackage> byModule = new IdentityHashMap<>();
+    private final List<String> renamed = new ArrayList<>();
 
     public Ros2Packages(ExecutionPlan plan, CxxNames names) {
         this(plan, names, plan.architecture().getPackages());
@@ -73,8 +74,8 @@ public final class Ros2Packages {
             case PER_LAYER -> {
                 for (PlannedLayer l : plan.layers()) {
                     if (!l.modules().isEmpty()) {
-                        packages.put(l, new NodePackage(scope.allocate(prefix + part(l.layer().getName(), names.layerId(l))),
-                                "layer '" + RsamlLabels.name(l.layer()) + "'"));
+                        String holds = "layer '" + RsamlLabels.name(l.layer()) + "'";
+                        packages.put(l, new NodePackage(allocate(scope, prefix + part(l.layer().getName(), names.layerId(l)), holds), holds));
                     }
                 }
                 plan.modules().forEach(m -> add(packages.get(m.layer()), m));
@@ -82,14 +83,14 @@ public final class Ros2Packages {
             case PER_PROCESSOR -> {
                 for (Processor p : plan.architecture().getProcessors()) {
                     if (plan.modules().stream().anyMatch(m -> m.processor() == p)) {
-                        packages.put(p, new NodePackage(scope.allocate(prefix + part(p.getName(), "processor")),
-                                "processor '" + RsamlLabels.name(p) + "'"));
+                        String holds = "processor '" + RsamlLabels.name(p) + "'";
+                        packages.put(p, new NodePackage(allocate(scope, prefix + part(p.getName(), "processor"), holds), holds));
                     }
                 }
                 for (PlannedModule m : plan.modules()) {
                     Object key = m.processor() == null ? RsamlPackages.DEFAULT : m.processor();
-                    add(packages.computeIfAbsent(key, k -> new NodePackage(scope.allocate(prefix + RsamlPackages.DEFAULT),
-                            "the modules no processor names")), m);
+                    add(packages.computeIfAbsent(key, k -> new NodePackage(allocate(scope, prefix + RsamlPackages.DEFAULT,
+                            "the package of the modules no processor names"), "the modules no processor names")), m);
                 }
             }
             default -> {
@@ -100,6 +101,27 @@ public final class Ros2Packages {
         }
         nodePackages.addAll(packages.values());
         this.runtime = layout == PackageLayout.SINGLE ? system : prefix + RsamlPackages.RUNTIME;
+    }
+
+    /**
+     * The package name {@code wanted} in {@code scope}, or the next free one; when that is because
+     * {@code wanted} is one of ROS 2's own packages, a warning naming the element the package {@code holds}.
+     */
+    private String allocate(NameScope scope, String wanted, String holds) {
+        String name = scope.allocate(wanted);
+        if (!name.equals(wanted) && RsamlPackages.ROS2_OWN.contains(wanted)) {
+            renamed.add(RsamlPackages.renamedFromOwn(holds, name, wanted, List.of(wanted), "the package of its nodes is"));
+        }
+        return name;
+    }
+
+    /**
+     * The warnings of this layout: a package of a layer's or processor's nodes named otherwise than
+     * {@code <architecture>_<part>} because that is one of ROS 2's own packages, as the architecture's
+     * own package is said ({@link CxxNames#stableProject}).
+     */
+    public List<String> warnings() {
+        return renamed;
     }
 
     /** The part a layer or processor gives a package name; with --force and an RSA-29 error, a sanitised stand-in. */

@@ -104,9 +104,11 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		not active it publishes nothing and drops what arrives (an override of yours of `on_configure`
 		and the like calls the generated one). Both launch files start `«rosNames.lifecycleManagerExecutable»`,
 		which configures and activates them once they are up and, when the launch stops (SIGINT or
-		SIGTERM, Ctrl-C), deactivates and cleans them up before it exits (their processes serve them
-		for at most 3 s meanwhile); `ros2 lifecycle get` shows their states, `ros2 lifecycle set`
-		changes them.
+		SIGTERM, Ctrl-C), deactivates and cleans them up, the last first, each within «Ros2Shutdown.NODE_DEADLINE_MS / 1000.0» s of
+		its own, before it exits; their processes serve them meanwhile, for at most «Ros2Shutdown.NODE_DEADLINE_MS / 1000.0» s per managed
+		node of their lifecycle manager and «Ros2Shutdown.ANSWER_MS / 1000.0» s more, and the launch files let `ros2 launch` wait
+		«Ros2Shutdown.EXIT_MS / 1000.0» s beyond that before it sends SIGTERM (`sigterm_timeout`). `ros2 lifecycle get` shows
+		their states, `ros2 lifecycle set` changes them.
 		«ENDIF»
 
 		Messages are not copied on their way in: each subscription takes a `ConstSharedPtr`, which the

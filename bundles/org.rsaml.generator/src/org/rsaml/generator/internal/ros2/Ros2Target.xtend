@@ -74,6 +74,7 @@ class Ros2Target implements TargetGenerator {
 		val warnings = <String>newArrayList
 		val project = CxxNames.stableProject(plan, output.kept, warnings, "the ROS package, the interfaces package and the C++ namespace", true)
 		val context = new Ros2Context(plan, project, output)
+		warnings += context.packages.warnings
 		warnings += context.packages.checkUserCodeIsHere(plan, context.names, output)
 		val files = new Ros2Files(context)
 		for (cycle : plan.reactiveCycles) {
