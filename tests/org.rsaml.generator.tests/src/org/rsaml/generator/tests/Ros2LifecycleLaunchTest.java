@@ -121,7 +121,7 @@ class Ros2LifecycleLaunchTest {
                     + Ros2Shutdown.NODE_DEADLINE_MS + " ms")).toList();
             assertTrue(downs.get(0) >= 0 && downs.get(1) > downs.get(0), () -> file + ": the lifecycle manager does not say it brings "
                     + lastFirst + " down in turn, each within " + Ros2Shutdown.NODE_DEADLINE_MS + " ms:\n" + Tools.last(out, 6000));
-            String launchFile = Files.readString(install.resolve("share/" + pkg + "/launch/" + file), StandardCharsets.UTF_8);
+            String launchFile = Files.readString(src.resolve(pkg + "/launch/" + file), StandardCharsets.UTF_8);
             assertTrue(launchFile.contains("'" + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(managed.size()) + "'")
                     && launchFile.contains("sigterm_timeout='" + Ros2Shutdown.sigtermTimeoutS(managed.size()) + "'"),
                     () -> file + ": the processes of the managed nodes are given the grace and the wait before SIGTERM of "
