@@ -7,6 +7,9 @@
 # Usage: releng/org.rsaml.bench/startup.sh [runs]
 # RSAML_BENCH_JDKS: more JDKs (their homes, separated by spaces) to run ./rsaml with beside the java on the PATH,
 # e.g. RSAML_BENCH_JDKS=/usr/lib/jvm/temurin-25-jdk-amd64 (./rsaml then uses that JDK's AOT cache).
+# RSAML_BENCH_BASELINE: another tree with its jar built (e.g. a copy of main before a change, made by
+# git worktree add and ./rsaml --version there): its ./rsaml validate runs beside this tree's, on each JDK, in the
+# same hyperfine run, so that before and after are measured side by side.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs="${1:-20}"
@@ -15,15 +18,27 @@ command -v hyperfine >/dev/null || { echo "startup.sh: needs hyperfine (apt-get 
 model=examples/exp2-defects.rsaml
 # Each JDK's class data is made once (or again, if it no longer fits) before anything is timed.
 ./rsaml validate "$model" >/dev/null || true
+baseline="${RSAML_BENCH_BASELINE:-}"
+if [ -n "$baseline" ]; then
+  [ -x "$baseline/rsaml" ] && [ -f "$baseline/cli/org.rsaml.cli/target/rsaml.jar" ] ||
+    { echo "startup.sh: RSAML_BENCH_BASELINE=$baseline has no rsaml launcher and built jar" >&2; exit 2; }
+  baseline="$(cd "$baseline" && pwd)"
+  "$baseline/rsaml" validate "$model" >/dev/null || true
+fi
 commands=(-n 'java -version (the floor)' 'java -version'
   -n './rsaml validate' "./rsaml validate $model"
   -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model"
   -n './rsaml --version' './rsaml --version')
+[ -z "$baseline" ] || commands+=(-n 'baseline: ./rsaml validate' "$baseline/rsaml validate $model")
 for jdk in ${RSAML_BENCH_JDKS:-}; do
   JAVA_HOME="$jdk" ./rsaml validate "$model" >/dev/null || true
   v="$(sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$jdk/release" 2>/dev/null)"
   commands+=(-n "java -version (the floor), Java ${v:-?}" "$jdk/bin/java -version"
     -n "./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk ./rsaml validate $model")
+  if [ -n "$baseline" ]; then
+    JAVA_HOME="$jdk" "$baseline/rsaml" validate "$model" >/dev/null || true
+    commands+=(-n "baseline: ./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk $baseline/rsaml validate $model")
+  fi
 done
 out="$(mktemp)"
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
