@@ -46,7 +46,7 @@ public final class RsamlPackages {
      */
     public static final Set<String> ROS2_OWN = Set.of("ament_cmake", "ament_lint_auto", "ament_lint_common",
             "launch", "launch_ros", "launch_testing", "launch_testing_ament_cmake", "launch_testing_ros", "ros2launch",
-            "rcl", "rclcpp", "rclcpp_components", "rclcpp_lifecycle", "rclcpp_action", "rcutils", "rmw", "rosidl_default_generators",
+            "rcl", "rclcpp", "rclpy", "rclcpp_components", "rclcpp_lifecycle", "rclcpp_action", "rcutils", "rmw", "rosidl_default_generators",
             "rosidl_default_runtime", "builtin_interfaces", "rcl_interfaces", "lifecycle_msgs", "action_msgs", "service_msgs",
             "type_description_interfaces", "unique_identifier_msgs", "rosgraph_msgs", "statistics_msgs", "std_msgs", "std_srvs",
             "sensor_msgs", "geometry_msgs", "nav_msgs", "diagnostic_msgs", "shape_msgs", "stereo_msgs", "trajectory_msgs",

@@ -91,9 +91,11 @@ final class Ros2Jazzy {
     static synchronized String launchTestingMissing() throws Exception {
         if (launchTesting == null) {
             Tools.Result r = Tools.run(Tools.root(), 60, bash("ros2 pkg prefix launch_testing_ament_cmake").toArray(String[]::new));
-            launchTesting = r.exit() == 0 ? "" : "launch_testing is absent from the ROS 2 of " + setup()
-                    + " (no launch_testing_ament_cmake): the packages' launch tests (test/test_<pkg>_launch.py) were not run; they run"
-                    + " with colcon test on a ROS 2 that has it (-Drsaml.ros2.setup=/opt/ros/jazzy/setup.bash)";
+            launchTesting = r.exit() == 0 ? "" : "launch_testing is absent: 'ros2 pkg prefix launch_testing_ament_cmake' finds none in the"
+                    + " ROS 2 of " + setup() + ", and no registry here has it (PyPI: no launch-testing or launch_testing; Debian 12: no"
+                    + " python3-launch-testing or ros-jazzy-launch-testing; checked 2026-11-27): the packages' launch tests"
+                    + " (test/test_<package>_launch.py) were not run; they run with colcon test on a ROS 2 that has it"
+                    + " (-Drsaml.ros2.setup=/opt/ros/jazzy/setup.bash)";
         }
         return launchTesting.isEmpty() ? null : launchTesting;
     }

@@ -154,6 +154,59 @@ class Ros2PackagesTest {
                 "the odometry is loaded from the default package:\n" + launch);
     }
 
+    /**
+     * With a package per layer or per processor, each package of nodes has a launch test of its own
+     * (test/test_<package>_launch.py, valid Python, run by colcon test under BUILD_TESTING): it starts
+     * that package's executables alone and waits for a message of a timed node of the package on its
+     * topic, with its type; a package none of whose timed nodes publishes says so in the test's docstring.
+     */
+    @Test
+    void eachPackageOfNodesHasALaunchTestOfItsOwnNodesAndOneOfTheirMessages(@TempDir Path tmp) throws Exception {
+        String pose = "<ports xsi:type=\"rsaml:OutputPort\" name=\"pose\" description=\"The base's pose.\" dataType=\"structured\""
+                + " messageType=\"Pose2D\"/>";
+        for (String layout : List.of("perLayer", "perProcessor")) {
+            // perLayer: odometry without its pose, so that no timed node of control publishes.
+            Path model = layout.equals("perLayer") ? model(tmp, layout, pose, "") : model(tmp, layout);
+            Path out = tmp.resolve("ws-" + layout);
+            new RsamlGenerator().generate(model, Target.ROS2, out, false);
+            String navigation = PKG + (layout.equals("perLayer") ? "_navigation" : "_core1");
+            String control = PKG + (layout.equals("perLayer") ? "_control" : "_core0");
+            Map<String, String> tests = new TreeMap<>();
+            for (String np : List.of(navigation, control)) {
+                String path = "test/test_" + np + "_launch.py";
+                Path test = out.resolve(np).resolve(path);
+                assertTrue(Files.isRegularFile(test), layout + ": package " + np + " has its launch test " + path);
+                Tools.Result compiled = Tools.run(tmp, 60, "/usr/bin/python3", "-m", "py_compile", test.toString());
+                assertEquals(0, compiled.exit(), () -> layout + ": " + path + " is not valid Python:\n" + compiled.output());
+                String cmake = Files.readString(out.resolve(np + "/CMakeLists.txt"));
+                assertTrue(cmake.contains("add_launch_test(" + path + " TIMEOUT 120)"), layout + ": colcon test runs it:\n" + cmake);
+                Ros2Build.validateManifest(out.resolve(np + "/package.xml"));
+                String manifest = Files.readString(out.resolve(np + "/package.xml"));
+                assertTrue(List.of("launch_testing", "launch_testing_ament_cmake", "launch_ros", "rclpy").stream()
+                        .allMatch(d -> manifest.contains("<test_depend>" + d + "</test_depend>")),
+                        layout + ": the package's manifest names what the test needs:\n" + manifest);
+                tests.put(np, Files.readString(test));
+            }
+            String nav = tests.get(navigation);
+            assertTrue(nav.contains("Node(package='" + navigation + "', executable='navigation_obstacle_detector', name='navigation_obstacle_detector'")
+                    && nav.contains("Node(package='" + navigation + "', executable='navigation_path_planner', name='navigation_path_planner'")
+                    && !nav.contains("executable='control_"), layout + ": the navigation package's test starts its two nodes, and only those:\n" + nav);
+            assertTrue(nav.contains("from std_msgs.msg import Float64") && nav.contains("TOPIC = 'speed_limit'")
+                    && nav.contains("create_subscription(Float64, TOPIC,"), layout + ": and waits for the obstacle detector's speed limit (the"
+                    + " first output of a timed node), a std_msgs/msg/Float64 on the topic the model names:\n" + nav);
+            String ctl = tests.get(control);
+            assertTrue(ctl.contains("executable='control_velocity_controller'") && ctl.contains("executable='control_odometry'")
+                    && !ctl.contains("executable='navigation_"), layout + ": the control package's test starts its two nodes, and only those:\n" + ctl);
+            if (layout.equals("perLayer")) {
+                assertTrue(ctl.contains("No node of this package publishes on its own") && !ctl.contains("TOPIC"),
+                        "a package whose timed nodes publish nothing says so, and waits for no message:\n" + ctl);
+            } else {
+                assertTrue(ctl.contains("from " + PKG + "_interfaces.msg import Pose2D") && ctl.contains("TOPIC = 'control/odometry/pose'"),
+                        "the odometry's pose, a message of the interfaces package, on its default topic:\n" + ctl);
+            }
+        }
+    }
+
     @Test
     void aProcessorWhosePackageWouldBeTheDefaultOneIsRefusedWithItsFinding(@TempDir Path tmp) throws Exception {
         Path model = model(tmp, "perProcessor", "<processors name=\"core0\"", "<processors name=\"Default\"");

@@ -108,7 +108,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 
 		include(user.cmake)
 
-		«testing(true)»
+		«testing(launchTest.path)»
 
 		install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
 		install(TARGETS «rosNames.containerExecutable»«IF managed» «rosNames.lifecycleManagerExecutable»«ENDIF»«FOR m : plan.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
@@ -119,25 +119,26 @@ class Ros2CmakeTemplate extends Ros2Template {
 
 	/**
 	 * The BUILD_TESTING block of a package: the linters its package.user.xml names, where installed,
-	 * and (launch) the launch test of the package that holds the launch files.
+	 * and its launch test at {@code launchTestPath} (that of the package that holds the launch files, or
+	 * of a package of nodes), null for none.
 	 */
-	def private testing(boolean launch) '''
+	def private testing(String launchTestPath) '''
 		if(BUILD_TESTING)
 		  # The linters package.user.xml names as <test_depend> (ament_lint_common, ament_cmake_cpplint,
 		  # ...), where installed; what is regenerated (gen/, the launch files and the launch test) is
 		  # not theirs to judge (ROS 2 Iron and later).
 		  find_package(ament_lint_auto QUIET)
 		  if(ament_lint_auto_FOUND)
-		    file(GLOB_RECURSE AMENT_LINT_AUTO_FILE_EXCLUDE gen/* launch/*.launch.py «launchTest.path»)
+		    file(GLOB_RECURSE AMENT_LINT_AUTO_FILE_EXCLUDE gen/*«IF launchTestPath == launchTest.path» launch/*.launch.py«ENDIF»«IF launchTestPath !== null» «launchTestPath»«ENDIF»)
 		    ament_lint_auto_find_test_dependencies()
 		  endif()
-		  «IF launch»
+		  «IF launchTestPath !== null»
 		  	# The launch test: starts the nodes, checks that messages flow and that they exit cleanly.
 		  	find_package(launch_testing_ament_cmake QUIET)
 		  	if(launch_testing_ament_cmake_FOUND)
-		  	  add_launch_test(«launchTest.path» TIMEOUT 120)
+		  	  add_launch_test(«launchTestPath» TIMEOUT 120)
 		  	else()
-		  	  message(STATUS "launch_testing_ament_cmake not found: «launchTest.path» is not run")
+		  	  message(STATUS "launch_testing_ament_cmake not found: «launchTestPath» is not run")
 		  	endif()
 		  «ENDIF»
 		endif()
@@ -221,7 +222,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 
 			include(user.cmake)
 
-			«testing(false)»
+			«testing(launchTest.path(np))»
 
 			install(TARGETS ${PROJECT_NAME} ARCHIVE DESTINATION lib LIBRARY DESTINATION lib RUNTIME DESTINATION bin)
 			install(TARGETS«FOR m : np.modules» «m.executable»«ENDFOR» DESTINATION lib/${PROJECT_NAME})
@@ -290,7 +291,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 
 		include(user.cmake)
 
-		«testing(true)»
+		«testing(launchTest.path)»
 
 		install(DIRECTORY launch config DESTINATION share/${PROJECT_NAME})
 

@@ -120,7 +120,7 @@ class Ros2PackageTemplate extends Ros2Template {
 			depends += "rclcpp_lifecycle"
 		}
 		manifestXml(np.name, "The nodes of " + np.holds + " of the RsaML architecture " + doc(plan.name), manifest, depends, #[],
-			#["ament_lint_auto"])
+			TEST_DEPENDS + #["launch_ros", "rclpy"])
 	}
 
 	/** A package.xml of ament_cmake with these dependencies and what the architect's package.user.xml adds. */

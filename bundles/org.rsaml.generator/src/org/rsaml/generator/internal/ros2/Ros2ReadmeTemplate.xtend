@@ -145,8 +145,10 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		`colcon test` runs the linters `«Ros2Manifest.FILE»` names as `<test_depend>` (through
 		`ament_lint_auto`; `gen/` excluded) and the launch test `test/test_«pkg»_launch.py`
 		(`launch_testing`: starts the nodes, stops them after a few seconds, and checks that messages
-		reached every entry port a timed module feeds and that every process exited cleanly), each where
-		installed. (RsaML's own tests run the launch test only on a ROS 2 that has `launch_testing`; on
+		reached every entry port a timed module feeds and that every process exited cleanly)«IF !context.packages.single»,
+		and in each package of nodes its own launch test `test/test_<package>_launch.py` (its nodes
+		alone, and one message of a timed node of the package on its topic, or, where none publishes, a
+		clean exit only)«ENDIF», each where installed. (RsaML's own tests run the launch test only on a ROS 2 that has `launch_testing`; on
 		the one its CI uses, without it, they compile it and say it was skipped.)
 
 		`gen/`, `test/`, `package.xml`, `CMakeLists.txt`, the launch files and this file are regenerated every time. Yours,

@@ -158,6 +158,11 @@ class Ros2Files {
 		files += GeneratedFile.generated(pkg + "/launch/" + pkg + "_processes.launch.py", launch.processes)
 		val launchTest = new Ros2LaunchTestTemplate(context)
 		files += GeneratedFile.generated(pkg + "/" + launchTest.path, launchTest.launchTest)
+		if (!packages.single) {
+			for (np : packages.nodePackages) {
+				files += GeneratedFile.generated(np.name + "/" + launchTest.path(np), launchTest.packageTest(np))
+			}
+		}
 		val rpkg = packages.runtime
 		for (f : Ros2Target.runtimeFiles(!rosNames.managedModules.empty)) {
 			files += GeneratedFile.generated(rpkg + "/gen/rsaml/" + f, runtimeFile(f))
