@@ -89,8 +89,8 @@ public final class Ros2Packages {
                 }
                 for (PlannedModule m : plan.modules()) {
                     Object key = m.processor() == null ? RsamlPackages.DEFAULT : m.processor();
-                    add(packages.computeIfAbsent(key, k -> new NodePackage(allocate(scope, prefix + RsamlPackages.DEFAULT,
-                            "the package of the modules no processor names"), "the modules no processor names")), m);
+                    add(packages.computeIfAbsent(key, k -> new NodePackage(scope.allocate(prefix + RsamlPackages.DEFAULT),
+                            "the modules no processor names")), m);
                 }
             }
             default -> {
