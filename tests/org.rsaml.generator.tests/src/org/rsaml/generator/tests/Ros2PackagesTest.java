@@ -23,6 +23,7 @@ import org.rsaml.generator.GenerationRefusedException;
 import org.rsaml.generator.GenerationResult;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
+import org.rsaml.generator.internal.ros2.Ros2Shutdown;
 
 /**
  * The package layouts of the ROS 2 target (Architecture.packages), on the mobile base of
@@ -158,15 +159,17 @@ class Ros2PackagesTest {
      * With a package per layer or per processor, each package of nodes has a launch test of its own
      * (test/test_<package>_launch.py, valid Python, run by colcon test under BUILD_TESTING): it starts
      * that package's executables alone and waits for a message of a timed node of the package on its
-     * topic, with its type; a package none of whose timed nodes publishes says so in the test's docstring.
+     * topic, with its type (managed nodes brought to active by the runtime package's lifecycle manager); a package none
+     * of whose timed nodes publishes says so in the test's docstring.
      */
     @Test
     void eachPackageOfNodesHasALaunchTestOfItsOwnNodesAndOneOfTheirMessages(@TempDir Path tmp) throws Exception {
         String pose = "<ports xsi:type=\"rsaml:OutputPort\" name=\"pose\" description=\"The base's pose.\" dataType=\"structured\""
                 + " messageType=\"Pose2D\"/>";
         for (String layout : List.of("perLayer", "perProcessor")) {
-            // perLayer: odometry without its pose, so that no timed node of control publishes.
-            Path model = layout.equals("perLayer") ? model(tmp, layout, pose, "") : model(tmp, layout);
+            // perLayer: odometry without its pose, so that no timed node of control publishes; perProcessor: managed nodes.
+            Path model = layout.equals("perLayer") ? model(tmp, layout, pose, "")
+                    : model(tmp, layout, "declaredLayers=\"2\"", "declaredLayers=\"2\" lifecycle=\"managed\"");
             Path out = tmp.resolve("ws-" + layout);
             new RsamlGenerator().generate(model, Target.ROS2, out, false);
             String navigation = PKG + (layout.equals("perLayer") ? "_navigation" : "_core1");
@@ -203,6 +206,13 @@ class Ros2PackagesTest {
             } else {
                 assertTrue(ctl.contains("from " + PKG + "_interfaces.msg import Pose2D") && ctl.contains("TOPIC = 'control/odometry/pose'"),
                         "the odometry's pose, a message of the interfaces package, on its default topic:\n" + ctl);
+                String grace = "arguments=['" + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(2) + "'], sigterm_timeout='"
+                        + Ros2Shutdown.sigtermTimeoutS(2) + "'";
+                assertTrue(ctl.contains("Node(package='" + PKG + "_runtime', executable='" + PKG + "_lifecycle_manager'")
+                        && ctl.contains("'node_names': ['control_velocity_controller', 'control_odometry']")
+                        && ctl.split(java.util.regex.Pattern.quote(grace), -1).length == 3,
+                        "managed nodes: the runtime package's lifecycle manager brings the package's two to active, and each process"
+                        + " is given the grace of two nodes:\n" + ctl);
             }
         }
     }
