@@ -50,12 +50,16 @@ import org.rsaml.validation.ModelLoader;
  * busy work consumed, and misses and overruns reported as they happen.
  * <p>
  * Each run is checked by {@link CppJobCheck}. The platform's part of a response, which the model does
- * not count, is measured: the start latency of the run's releases that nothing in the model delays, or
- * a calibration run, plus a stated constant for the bookkeeping and the CPU time other programs'
- * real-time threads used during the run ({@link PlatformCheck#boundCheck}); every check says the
- * allowance it used and where it came from. While other programs' real-time threads use more than
- * {@link OtherRealtime#TOLERATED_NS} during a run, its bounds are not checked, and the test says so,
- * naming them and their CPU time; with {@code RSAML_TIMING_BOUNDS=required} (CI) that fails instead.
+ * not count, is measured during the run: the platform monitor ({@link PlatformCheck.Monitor}), started
+ * before the program and stopped after it, records on every CPU, above every thread of the program, the
+ * time the CPU did not run it; each bound is computed again with the most such time in a window as long
+ * as the response (by the analysis itself on a fixed-priority processor), plus a stated constant for
+ * the bookkeeping and the CPU time other programs' real-time threads used during the run
+ * ({@link PlatformCheck#boundCheck}); every check prints the monitor's measurements, and a failure the
+ * loss it took (CPU, window, the longest single delay and when) and the bound with it. While other
+ * programs' real-time threads use more than {@link OtherRealtime#TOLERATED_NS} during a run, its bounds
+ * are not checked, and the test says so, naming them and their CPU time; with
+ * {@code RSAML_TIMING_BOUNDS=required} (CI) that fails instead, as does a monitor without real-time priority.
  * <p>
  * Slow on a shared machine (6.5 to 7 minutes on two cores under a load average of 20 to 30, mostly building the
  * programs): run it alone with {@code -Dtest=JobTimingTest -Dsurefire.failIfNoSpecifiedTests=false}

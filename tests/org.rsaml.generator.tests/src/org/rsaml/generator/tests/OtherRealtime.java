@@ -23,7 +23,8 @@ import java.util.stream.Stream;
  * service that owns a real-time thread and sleeps (multipathd, rtkit-daemon) uses none, or a few
  * microseconds when it wakes. Up to {@link #TOLERATED_NS} in all, the run's bounds are still checked
  * and that time is added to the allowance (a job cannot be delayed by more CPU time than the threads
- * used); beyond it they are not checked ({@link PlatformCheck#boundCheck}).
+ * used); beyond it they are not checked ({@link PlatformCheck#boundCheck}). The test's own programs are
+ * never counted, the platform monitor ({@link PlatformCheck.Monitor}) among them: the test starts it.
  */
 final class OtherRealtime {
     private OtherRealtime() {
