@@ -357,7 +357,9 @@ final class PlatformCheck {
                         bounds.put(t.task().name(), new Bound(bound, -1, Loss.NONE, "", "", collision));
                         continue;
                     }
-                    int cpu = cpuOf.applyAsInt(t.task().name());
+                    JobSummary s = summaries.get(t.task().name());
+                    // a SCHED_DEADLINE thread runs on every CPU (the kernel admits it only so): the worst CPU
+                    int cpu = s != null && s.sched().startsWith("SCHED_DEADLINE") ? -1 : cpuOf.applyAsInt(t.task().name());
                     bounds.put(t.task().name(), reanalysable && t.responseTime().isPresent()
                             ? reanalysed(platform, others, p, r, t.task(), bound, cpu)
                             : summed(platform, others, t.task(), bound, cpu));
