@@ -311,7 +311,7 @@ final class PlatformCheck {
      * from its analysed bound, the loss it took ({@code loss}) and how ({@code how}); or not checked at
      * all ({@code unchecked} says why).
      */
-    record Bound(long analysedNs, long boundNs, Loss loss, String how, String why, String unchecked) {
+    record Bound(long analysedNs, long boundNs, Loss loss, String how, String why, String unchecked, boolean overloaded) {
     }
 
     /**
@@ -354,15 +354,22 @@ final class PlatformCheck {
                         continue;
                     }
                     if (collision != null) {
-                        bounds.put(t.task().name(), new Bound(bound, -1, Loss.NONE, "", "", collision));
+                        bounds.put(t.task().name(), new Bound(bound, -1, Loss.NONE, "", "", collision, false));
                         continue;
                     }
                     JobSummary s = summaries.get(t.task().name());
                     // a SCHED_DEADLINE thread runs on every CPU (the kernel admits it only so): the worst CPU
                     int cpu = s != null && s.sched().startsWith("SCHED_DEADLINE") ? -1 : cpuOf.applyAsInt(t.task().name());
-                    bounds.put(t.task().name(), reanalysable && t.responseTime().isPresent()
-                            ? reanalysed(platform, others, p, r, t.task(), bound, cpu)
-                            : summed(platform, others, t.task(), bound, cpu));
+                    Bound b = reanalysable && t.responseTime().isPresent() ? reanalysed(platform, others, p, r, t.task(), bound, cpu) : null;
+                    if (b == null || b.boundNs() < 0 && b.overloaded()) {
+                        // where the bookkeeping on every job overloads the processor (a set the analysis bounds only at its
+                        // modeled costs), the plain sum, said
+                        Bound sum = summed(platform, others, t.task(), bound, cpu);
+                        b = b == null ? sum : new Bound(sum.analysedNs(), sum.boundNs(), sum.loss(), sum.how() + " (the analysis run again with "
+                                + JobTimingTest.ms(BOOKKEEPING_NS) + " of bookkeeping on every job finds no bound: the processor is overloaded with it)",
+                                sum.why(), null, false);
+                    }
+                    bounds.put(t.task().name(), b);
                 }
             }
             return new Allowance(platform, others, Map.copyOf(bounds));
@@ -399,14 +406,23 @@ final class PlatformCheck {
                                 : ", and " + JobTimingTest.ms(others.totalNs()) + " of other programs' real-time threads (" + others + ") taken too");
                 if (next.isEmpty() || next.getAsLong() > limit) {
                     return new Bound(bound, -1, loss, how, "the analysis finds no response within " + UNBOUNDED_DEADLINES
-                            + " times the deadline: the platform left too little of the CPU", null);
+                            + " times the deadline: the platform left too little of the CPU", null, step == 0 && bookkeepingOverloads(r));
                 }
                 if (next.getAsLong() <= response && step > 0) {
-                    return new Bound(bound, response, loss, how, null, null);
+                    return new Bound(bound, response, loss, how, null, null, false);
                 }
                 response = Math.max(response, next.getAsLong());
             }
-            return new Bound(bound, -1, loss, "", "the re-analysis did not settle", null);
+            return new Bound(bound, -1, loss, "", "the re-analysis did not settle", null, false);
+        }
+
+        /** Whether the processor's tasks, each with the bookkeeping added to its cost, need more than the whole processor. */
+        private static boolean bookkeepingOverloads(ProcessorResult r) {
+            double u = 0;
+            for (TaskResult t : r.tasks()) {
+                u += (double) (t.task().cost() + BOOKKEEPING_NS) / t.task().period();
+            }
+            return u >= 1;
         }
 
         /** The name of the task that stands for what the platform took, in the analysis run again. */
@@ -427,14 +443,14 @@ final class PlatformCheck {
                         + (others.ranNs().isEmpty() ? "" : " and " + JobTimingTest.ms(others.totalNs()) + " of other programs' real-time threads (" + others + ")");
                 if (next > limit) {
                     return new Bound(bound, -1, loss, how, "the platform left too little of the CPU: no bound within " + UNBOUNDED_DEADLINES
-                            + " times the deadline", null);
+                            + " times the deadline", null, false);
                 }
                 if (next <= response && step > 0) {
-                    return new Bound(bound, response, loss, how, null, null);
+                    return new Bound(bound, response, loss, how, null, null, false);
                 }
                 response = Math.max(response, next);
             }
-            return new Bound(bound, -1, loss, "", "the sum did not settle", null);
+            return new Bound(bound, -1, loss, "", "the sum did not settle", null, false);
         }
 
         /** Why {@code label}'s bound is not checked in this run, null when it is. */

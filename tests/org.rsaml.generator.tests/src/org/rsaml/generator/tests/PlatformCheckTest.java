@@ -253,6 +253,25 @@ class PlatformCheckTest {
     }
 
     @Test
+    void whereTheBookkeepingOnEveryJobOverloadsTheProcessorThePlainSumIsTakenAndSaid(@TempDir Path tmp) throws Exception {
+        // Ros2LaunchTest's overloaded processor: A (T 10, C 5), B (T 13, D 4, C 2.5), C (T 3, C 0.625): 0.9 of the CPU, 1.05 with
+        // 0.3 ms more a job, where the analysis bounds nothing; C's bound is then its analysed bound plus the bookkeeping and the loss.
+        String modules = JobTimingTest.module("a", 10, 5, "RM") + JobTimingTest.module("b", 13, 2.5, "RM").replace("delay=\"13.0\"", "delay=\"4.0\"")
+                + JobTimingTest.module("c", 3, 0.625, "FIFO");
+        Path model = tmp.resolve("overloaded.rsaml");
+        Files.writeString(model, JobTimingTest.modelText("overloaded", modules, "  <processors name=\"cpu1\" core=\"1\" modules=\""
+                + "//@layers[name='tasks']/@modules[name='a'] //@layers[name='tasks']/@modules[name='b'] //@layers[name='tasks']/@modules[name='c']\"/>\n"));
+        org.rsaml.analysis.ArchitectureTiming timing = org.rsaml.analysis.TimingAnalysis.analyse(
+                org.rsaml.validation.ModelLoader.load(model, "overloaded.rsaml").architecture());
+        PlatformCheck.Allowance a = PlatformCheck.Allowance.of(platform(100, 20_000), OtherRealtime.Use.NONE, timing, Map.of(), label -> 1);
+        PlatformCheck.Bound c = a.bounds().get("tasks/c.f");
+        assertEquals(c.analysedNs() + PlatformCheck.BOOKKEEPING_NS + c.loss().ns(), c.boundNs(), "the plain sum: " + a.explain("tasks/c.f"));
+        assertTrue(a.explain("tasks/c.f").contains("the processor is overloaded with it"), "said: " + a.explain("tasks/c.f"));
+        assertTrue(a.bounds().get("tasks/a.f").how().startsWith("the analysis run again"), "A, at the top, is still re-analysed: "
+                + a.explain("tasks/a.f"));
+    }
+
+    @Test
     void theModelsDeadlineThreadsAboveTheMonitorAreNotThePlatforms() {
         // an EDF release under SCHED_DEADLINE runs above the monitor: its 2 ms every 5 ms is taken out of what the monitor lost
         PlatformCheck.Platform p = platform(100, 20_000, new long[] {1, 50_000_000, 3_000_000});
