@@ -68,6 +68,9 @@ final class PlatformCheck {
      */
     static final long BOOKKEEPING_NS = 300_000;
 
+    /** The CPU of a SCHED_DEADLINE thread, which the kernel runs on any: its loss is the time every CPU was taken at once. */
+    static final int EVERY_CPU = -2;
+
     /** A re-analysed bound beyond this many times the deadline is no bound: the check fails, saying so. */
     static final long UNBOUNDED_DEADLINES = 100;
 
@@ -119,7 +122,8 @@ final class PlatformCheck {
 
         @Override
         public String toString() {
-            return JobTimingTest.ms(ns) + " lost on " + (cpu < 0 ? "the worst CPU (the thread is not pinned)" : "CPU " + cpu)
+            return JobTimingTest.ms(ns) + " lost on " + (cpu == EVERY_CPU ? "every CPU at once (a SCHED_DEADLINE thread, which may run on any)"
+                    : cpu < 0 ? "the worst CPU (the thread is not pinned)" : "CPU " + cpu)
                     + " in a window of " + JobTimingTest.ms(windowNs) + " (its longest single delay " + JobTimingTest.ms(longestNs) + " at "
                     + JobTimingTest.ms(longestAtNs) + " into the run)";
         }
@@ -199,6 +203,9 @@ final class PlatformCheck {
 
         /** The most time lost in any window of {@code windowNs} on {@code cpu} (-1: the worst CPU), less what the model's threads above the monitor may have run there. */
         Loss loss(int cpu, long windowNs) {
+            if (cpu == EVERY_CPU && !aboveMonitor.isEmpty() && aboveMonitor.size() <= cpus.size()) {
+                return everyCpuAtOnce(windowNs);
+            }
             Loss worst = null;
             for (CpuRecords c : cpus) {
                 if (cpu >= 0 && c.cpu() != cpu) {
@@ -213,6 +220,37 @@ final class PlatformCheck {
                 }
             }
             return worst != null ? worst : new Loss(cpu, windowNs, 0, 0, 0);
+        }
+
+        /**
+         * For a SCHED_DEADLINE release: the most time in a window during which every CPU's monitor was delayed at once.
+         * Such a job, which the kernel may run on any CPU, waits only while every CPU runs something else, and as the
+         * model's deadline threads are no more than the CPUs, one of those is then the platform's (or the job's own
+         * work, beside another deadline job: the check is that much looser). Its longest single delay: on any CPU.
+         */
+        private Loss everyCpuAtOnce(long windowNs) {
+            long[] starts = cpus.get(0).starts();
+            long[] ends = cpus.get(0).ends();
+            for (CpuRecords c : cpus.subList(1, cpus.size())) {
+                List<long[]> both = new ArrayList<>();
+                for (int i = 0, j = 0; i < starts.length && j < c.starts().length;) {
+                    long from = Math.max(starts[i], c.starts()[j]);
+                    long to = Math.min(ends[i], c.ends()[j]);
+                    if (from < to) {
+                        both.add(new long[] {from, to});
+                    }
+                    if (ends[i] < c.ends()[j]) {
+                        i++;
+                    } else {
+                        j++;
+                    }
+                }
+                starts = both.stream().mapToLong(x -> x[0]).toArray();
+                ends = both.stream().mapToLong(x -> x[1]).toArray();
+            }
+            Loss any = loss(-1, windowNs);
+            return new Loss(EVERY_CPU, windowNs, new CpuRecords(EVERY_CPU, "", false, starts, ends).maxCovered(windowNs), any.longestNs(),
+                    any.longestAtNs());
         }
 
         /** The most CPU time the model's SCHED_DEADLINE threads may take in a window: each its runtime in every period the window touches. */
@@ -358,8 +396,8 @@ final class PlatformCheck {
                         continue;
                     }
                     JobSummary s = summaries.get(t.task().name());
-                    // a SCHED_DEADLINE thread runs on every CPU (the kernel admits it only so): the worst CPU
-                    int cpu = s != null && s.sched().startsWith("SCHED_DEADLINE") ? -1 : cpuOf.applyAsInt(t.task().name());
+                    // a SCHED_DEADLINE thread runs on any CPU (the kernel admits it only so)
+                    int cpu = s != null && s.sched().startsWith("SCHED_DEADLINE") ? EVERY_CPU : cpuOf.applyAsInt(t.task().name());
                     Bound b = reanalysable && t.responseTime().isPresent() ? reanalysed(platform, others, p, r, t.task(), bound, cpu) : null;
                     if (b == null || b.boundNs() < 0 && b.overloaded()) {
                         // where the bookkeeping on every job overloads the processor (a set the analysis bounds only at its

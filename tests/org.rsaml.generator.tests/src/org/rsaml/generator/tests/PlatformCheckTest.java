@@ -279,6 +279,13 @@ class PlatformCheckTest {
         long raw = p.loss(1, 5_000_000).ns();
         assertEquals(Math.max(0, raw - 2 * 2_000_000), p.withDeadlineThreads(edf).loss(1, 5_000_000).ns(),
                 "the deadline thread's runtime in every period a 5 ms window touches (two) is the model's, not the platform's");
+        // the deadline release itself, which may run on any CPU, waits only while both are taken: the time both monitors were late at once
+        PlatformCheck.Platform both = platform(100, 20_000, new long[] {0, 50_000_000, 3_000_000}, new long[] {1, 51_000_000, 3_000_000},
+                new long[] {0, 80_000_000, 3_000_000}).withDeadlineThreads(edf);
+        PlatformCheck.Loss once = both.loss(PlatformCheck.EVERY_CPU, 5_000_000);
+        assertEquals(2_000_000 + 3 * 20_000, once.ns(), "51 to 53 ms on both CPUs, and the three wake-ups before it in a window of 5 ms (48 to"
+                + " 53 ms); CPU 0's lone delay at 80 ms is not counted (the job could run on CPU 1): " + once);
+        assertTrue(once.toString().contains("every CPU at once"), "said: " + once);
     }
 
     /**
