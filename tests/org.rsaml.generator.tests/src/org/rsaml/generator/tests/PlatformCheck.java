@@ -361,12 +361,14 @@ final class PlatformCheck {
         /**
          * Each bounded task's bound with the platform's loss, by task name (the release's or reaction's label).
          * On a fixed-priority processor, for each task i, R is iterated from its analysed bound: R becomes task i's
-         * response by {@link SchedulabilityAnalysis#analyse} with its cost raised by the loss on its CPU in a window
-         * of R, the bookkeeping and the others' real-time CPU time, and every other task's cost by the bookkeeping,
-         * until it stops growing (response-time analysis over the supply the platform left). Elsewhere (EDF, a
-         * processor the analysis does not bound by response times) the plain sum, iterated the same way: R becomes
-         * the bound plus the bookkeeping, the others' time and the loss in a window of R. {@code cpuOf}: the CPU a
-         * task's thread ran on, -1 when not pinned (the worst CPU).
+         * response by {@link SchedulabilityAnalysis#analyse} with every task's cost raised by the bookkeeping and, above
+         * every rank, a task released once with i's job that stands for the loss on i's CPU in a window of R and the
+         * others' real-time CPU time, until R stops growing (response-time analysis over the supply the platform left:
+         * R = C + I(R) + loss(R)). Elsewhere (EDF, a processor the analysis does not bound by response times, a set the
+         * bookkeeping on every job overloads) the plain sum, iterated the same way: R becomes the bound plus the
+         * bookkeeping, the others' time and the loss in a window of R. {@code cpuOf}: the CPU a task's thread ran on,
+         * -1 when not pinned (the worst CPU); a SCHED_DEADLINE thread's loss is the time every CPU was taken at once.
+         * A processor with a thread at the monitor's priority is not checked.
          */
         static Allowance of(Platform platform, OtherRealtime.Use others, ArchitectureTiming timing, Map<String, JobSummary> summaries,
                 java.util.function.ToIntFunction<String> cpuOf) {
