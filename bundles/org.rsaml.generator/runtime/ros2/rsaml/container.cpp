@@ -7,7 +7,8 @@
 // on an executor thread of its own at its real-time priority, and the node's data arrivals on one at
 // priority 0 of the analysis (rsaml/scheduling.hpp). Components of other packages run on the main
 // executor. On SIGINT it serves its managed nodes until the lifecycle manager has deactivated and
-// cleaned them up.
+// cleaned them up. A wrong argument of its own ends it with one line and status 2 (rsaml/usage.hpp); a
+// component whose parameters are wrong is not loaded, and the container says why (rclcpp_components).
 #include <map>
 #include <memory>
 
@@ -57,13 +58,15 @@ class Container : public rclcpp_components::ComponentManager {
 }  // namespace rsaml_ros2
 
 int main(int argc, char* argv[]) {
-  rsaml_ros2::init(argc, argv);
-  {
-    auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
-    auto container = std::make_shared<rsaml_ros2::Container>(executor);
-    executor->add_node(container);
-    rsaml_ros2::spin(*executor);
-  }
-  rclcpp::shutdown();
-  return 0;
+  return rsaml_ros2::run_main(argc, argv, [argc, argv] {
+    rsaml_ros2::init(argc, argv);
+    {
+      auto executor = std::make_shared<rclcpp::executors::SingleThreadedExecutor>();
+      auto container = std::make_shared<rsaml_ros2::Container>(executor);
+      executor->add_node(container);
+      rsaml_ros2::spin(*executor);
+    }
+    rclcpp::shutdown();
+    return 0;
+  });
 }

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -124,9 +125,12 @@ void init(int argc, char** argv) {
     if (arg.rfind(option + "=", 0) == 0) {
       const std::string value = arg.substr(option.size() + 1);
       char* end = nullptr;
+      errno = 0;
       const long long grace = std::strtoll(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || grace < 0) {
-        throw std::invalid_argument(option + " takes a whole number of milliseconds, not '" + value + "'");
+      if (value.empty() || *end != '\0' || grace < 0 || errno == ERANGE) {
+        throw UsageError("argument " + arg + ": not a whole number of milliseconds (0 or more); give how long the process"
+                         " serves its managed nodes after SIGINT, e.g. " + option +
+                         "=3000 (the launch files set it from the number of managed nodes)");
       }
       shutdown_grace = std::chrono::milliseconds(grace);
     }
@@ -163,7 +167,9 @@ Schedule::Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base,
     : base_(std::move(base)), timers_(std::move(timers)), clock_(std::move(clock)), module_(std::move(module)), core_(core),
       simulated_load_(simulated_load) {
   if (!(simulated_load_ >= 0.0 && simulated_load_ <= 1.0)) {
-    throw std::invalid_argument("parameter rsaml.simulated_load must be a fraction from 0 to 1 of the modeled execution time");
+    throw UsageError("node " + std::string(base_->get_fully_qualified_name()) + ": parameter rsaml.simulated_load is " +
+                     std::to_string(simulated_load_) + ": it must be a fraction from 0 to 1 of the modeled execution time; set it so"
+                     " (launch argument simulated_load:=, or -p rsaml.simulated_load:=0.5)");
   }
   started_ = clock_->now();
   std::lock_guard<std::mutex> lock(registry_mutex);

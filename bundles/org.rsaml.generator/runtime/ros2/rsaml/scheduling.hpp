@@ -26,6 +26,8 @@
 #include <rclcpp/rclcpp.hpp>
 #include <rclcpp/version.h>
 
+#include "rsaml/usage.hpp"
+
 namespace rsaml_ros2 {
 
 /** Prints one trace line, "[   12.345 ms] text", ms since the process started; flushed at once. */
@@ -45,7 +47,7 @@ constexpr long long GRACE_WITHOUT_ARGUMENT_MS = 3000;
  * rclcpp::init without rclcpp's signal handlers: SIGINT and SIGTERM ask spin() below to stop, so that
  * the process can still serve its managed nodes' transitions while the lifecycle manager (which gets
  * the same signal from ros2 launch, or from the terminal) deactivates and cleans them up. Takes
- * GRACE_OPTION from the command line; throws std::invalid_argument when its value is not a number.
+ * GRACE_OPTION from the command line; throws UsageError when its value is not a number (rsaml/usage.hpp).
  */
 void init(int argc, char** argv);
 
@@ -273,22 +275,26 @@ class Scheduler {
   std::vector<std::unique_ptr<Worker>> workers_;
 };
 
-/** main() of a node's own process: the node, its release and data threads, and a main executor for ROS 2's services. */
+/**
+ * main() of a node's own process: the node, its release and data threads, and a main executor for ROS 2's services;
+ * a wrong argument or parameter ends it with one line and status 2 (run_main).
+ */
 template <typename NodeT>
 int run_standalone(int argc, char** argv) {
-  init(argc, argv);
-  int status = 0;
-  {
-    rclcpp::executors::SingleThreadedExecutor executor;
-    auto node = std::make_shared<NodeT>(rclcpp::NodeOptions());
-    Scheduler scheduler;
-    scheduler.add(*node);
-    executor.add_node(node->get_node_base_interface());
-    spin(executor);
-    scheduler.stop();
-  }
-  rclcpp::shutdown();
-  return status;
+  return run_main(argc, argv, [argc, argv] {
+    init(argc, argv);
+    {
+      rclcpp::executors::SingleThreadedExecutor executor;
+      auto node = std::make_shared<NodeT>(rclcpp::NodeOptions());
+      Scheduler scheduler;
+      scheduler.add(*node);
+      executor.add_node(node->get_node_base_interface());
+      spin(executor);
+      scheduler.stop();
+    }
+    rclcpp::shutdown();
+    return 0;
+  });
 }
 
 }  // namespace rsaml_ros2

@@ -17,6 +17,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
@@ -31,7 +32,9 @@ import org.rsaml.validation.ModelLoader;
 /**
  * Managed (rclcpp_lifecycle) nodes of a generated package on a real ROS 2 ({@link Ros2Jazzy}), with
  * each launch file: brought to active by the package's lifecycle manager, and deactivated and
- * cleaned up by it when the launch stops.
+ * cleaned up by it when the launch stops; what the lifecycle manager and a node's process do when the
+ * other side is gone; and the package's programs given a wrong argument or parameter. The package is
+ * built once for the three tests; each says in the build's log how long it took (and the machine's load).
  */
 class Ros2LifecycleLaunchTest {
 
@@ -42,34 +45,26 @@ class Ros2LifecycleLaunchTest {
      * active; each traced configure, then activate; their messages flow (the mapper receives the
      * lidar's scans, the plain monitor the mapper's maps); on SIGINT the lifecycle manager deactivates
      * each, then cleans it up (traced by the node, seen by the manager) while the node's process waits
-     * for it, and everything exits cleanly. Then, without the launch files, when one side of a
-     * managed node is gone: a node process whose lifecycle manager was killed says on SIGINT that its
-     * node was left active and exits, and a lifecycle manager whose node process was killed says on
-     * SIGINT that the node was not cleaned up and exits with status 1 (neither waits for long); with two managed nodes, the
-     * first of which to be brought down is gone, it waits that node's deadline out and still brings the other down within a
-     * deadline of its own. Each launch file gives the processes of the managed nodes the grace of two nodes and ros2
-     * launch's wait before SIGTERM beyond it, and the lifecycle manager says each node's deadline.
-     * {@code -Dtest=Ros2LifecycleLaunchTest} runs it alone.
+     * for it, and everything exits cleanly. ros2 lifecycle get is asked up to 5 times, a second apart, until it sees both
+     * (discovery on a loaded machine). Each launch file gives the processes of the managed nodes the grace of two nodes and
+     * ros2 launch's wait before SIGTERM beyond it, and the lifecycle manager says each node's deadline and how long each
+     * bring-down took (printed, the margin against the deadline). {@code -Dtest=Ros2LifecycleLaunchTest} runs the class alone.
      */
     @Test
-    void bothLaunchFilesBringTheManagedNodesToActive(@TempDir Path tmp) throws Exception {
-        String missing = Ros2Jazzy.missing();
-        Assumptions.assumeTrue(missing == null, missing);
-        Path model = Ros2Test.model("resources/ros2-lifecycle.rsaml");
-        Architecture arch = ModelLoader.load(model, "ros2-lifecycle.rsaml").architecture();
-        String pkg = Names.snake(arch.getName());
-        Path src = tmp.resolve("src");
-        new RsamlGenerator().generate(model, Target.ROS2, src, false);
-        Path install = Ros2Jazzy.colconBuild(src, tmp);
-        Map<String, String> nodes = Ros2Test.nodes(src.resolve(pkg));
+    void bothLaunchFilesBringTheManagedNodesToActive() throws Exception {
+        Built b = built();
+        Path src = b.src();
+        Path install = b.install();
+        String pkg = b.pkg();
+        Map<String, String> nodes = b.nodes();
         List<String> managed = List.of("perception/lidar", "mapping/mapper");
-        int domain = 1 + (int) ((ProcessHandle.current().pid() + 50) % 100);
         for (String file : List.of(pkg + ".launch.py", pkg + "_processes.launch.py")) {
+            long started = System.nanoTime();
             Path log = tmp.resolve(file + ".log");
             // SIGINT at its default even where this test was started with it ignored (a background job): launch then ignores it.
             ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec env --default-signal=INT ros2 launch " + pkg + " " + file, install))
                     .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
-            Ros2Jazzy.isolate(pb.environment(), domain);
+            Ros2Jazzy.isolate(pb.environment(), DOMAIN);
             Process launch = pb.start();
             String states;
             try {
@@ -85,8 +80,7 @@ class Ros2LifecycleLaunchTest {
                     Thread.sleep(200);
                 }
                 Thread.sleep(1500); // messages flow
-                states = Tools.ok(tmp, 60, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + domain
-                        + "; ros2 lifecycle get --no-daemon --spin-time 3", install).toArray(String[]::new));
+                states = lifecycleStates(install, expectedStates(managed, nodes));
                 Tools.ok(tmp, 10, "kill", "-INT", Long.toString(launch.pid()));
                 boolean stopped = launch.waitFor(60, TimeUnit.SECONDS);
                 String processes = stopped ? "" : Tools.run(tmp, 10, "bash", "-c", "ps -eo pid,ppid,stat,cls,rtprio,pcpu,args --forest | cut -c1-160"
@@ -99,9 +93,8 @@ class Ros2LifecycleLaunchTest {
             }
             String out = Files.readString(log, StandardCharsets.UTF_8);
             assertEquals(0, launch.exitValue(), () -> file + ": ros2 launch exited with " + launch.exitValue() + ":\n" + Tools.last(out, 6000));
-            List<String> expected = managed.stream().map(m -> "/" + nodes.get(m) + ": active [3]").sorted().toList();
-            List<String> reported = states.lines().filter(l -> l.startsWith("/")).map(String::strip).sorted().toList();
-            assertEquals(expected, reported, file + ": the lifecycle nodes and their states, as ros2 lifecycle get reports them:\n" + states);
+            assertEquals(expectedStates(managed, nodes), reported(states), file
+                    + ": the lifecycle nodes and their states, as ros2 lifecycle get reports them:\n" + states);
             for (String m : managed) {
                 int configured = out.indexOf("state " + m + " inactive");
                 int active = out.indexOf("state " + m + " active");
@@ -112,8 +105,12 @@ class Ros2LifecycleLaunchTest {
                 int cleaned = out.indexOf("state " + m + " unconfigured", Math.max(deactivated, 0));
                 assertTrue(deactivated > active && cleaned > deactivated, file + ": on SIGINT, " + m
                         + " was not deactivated and then cleaned up:\n" + Tools.last(out, 6000));
-                assertTrue(out.contains(": " + nodes.get(m) + " is unconfigured"), file + ": the lifecycle manager did not see "
-                        + m + " unconfigured:\n" + Tools.last(out, 6000));
+                Matcher down = Pattern.compile(": " + Pattern.quote(nodes.get(m)) + " is unconfigured; down in (\\d+\\.\\d) ms").matcher(out);
+                assertTrue(down.find(), file + ": the lifecycle manager did not see " + m
+                        + " unconfigured, or did not say how long it took:\n" + Tools.last(out, 6000));
+                // the margin against the deadline, for the build's log
+                System.out.println("Ros2LifecycleLaunchTest: " + file + ": " + m + " down in " + down.group(1) + " ms of its "
+                        + Ros2Shutdown.NODE_DEADLINE_MS + " ms");
             }
             // Each node its own deadline, the last one first; the processes' grace and launch's wait before SIGTERM cover them all.
             List<String> lastFirst = List.of(managed.get(1), managed.get(0));
@@ -139,32 +136,47 @@ class Ros2LifecycleLaunchTest {
                 assertTrue(ports.containsKey(port) && ports.get(port)[0] >= 5, file + ": hardly any message reached " + port + " ("
                         + (ports.containsKey(port) ? (long) ports.get(port)[0] : 0) + "):\n" + Tools.last(out, 6000));
             }
+            took(file, started);
         }
-        String lidar = nodes.get("perception/lidar");
-        // The lifecycle manager killed: the node's process, on SIGINT, serves it a while, says it is left active and exits.
-        try (Started node = start(tmp, install, domain, pkg, lidar, "orphaned-node");
-                Started manager = start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
-                        "orphaned-node-manager")) {
-            node.await("state perception/lidar active");
-            manager.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
-            String out = node.stop();
-            assertTrue(out.contains("state perception/lidar active at exit: no lifecycle manager deactivated it"),
-                    "a node left active says so at exit:\n" + Tools.last(out, 4000));
-            assertEquals(0, node.process.exitValue(), () -> "the node's process exits cleanly:\n" + Tools.last(out, 4000));
-        }
-        // Of two managed nodes, the process of the one brought down first killed: the lifecycle manager, on SIGINT, waits
-        // that node's deadline out, says it was not cleaned up, still brings the other down within a deadline of its own
-        // (whose process, given the grace of two nodes as the launch files give it, serves it meanwhile) and exits with 1.
-        String mapper = nodes.get("mapping/mapper");
-        try (Started node = start(tmp, install, domain, pkg, lidar + " " + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(2),
-                "lost-node");
-                Started lost = start(tmp, install, domain, pkg, mapper, "lost-node-mapper");
-                Started manager = start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
+    }
+
+    /**
+     * When one side of a managed node is gone, without the launch files (both cases at once, the first in a namespace of
+     * its own): a node process whose lifecycle manager was killed says on SIGINT that its node was left active and exits;
+     * and of two managed nodes, the process of the one brought down first killed, the lifecycle manager on SIGINT waits
+     * that node's deadline out, says it was not cleaned up, still brings the other down within a deadline of its own
+     * (whose process, given the grace of two nodes as the launch files give it, serves it meanwhile) and exits with 1.
+     */
+    @Test
+    void aManagedNodeOrItsManagerGoneIsSaidAndNothingWaitsLong() throws Exception {
+        Built b = built();
+        long started = System.nanoTime();
+        String pkg = b.pkg();
+        String lidar = b.nodes().get("perception/lidar");
+        String mapper = b.nodes().get("mapping/mapper");
+        String orphans = " --ros-args -r __ns:=/orphaned";
+        try (Started orphan = start(b.install(), pkg, lidar + orphans, "orphaned-node");
+                Started orphanManager = start(b.install(), pkg, pkg + "_lifecycle_manager" + orphans + " -p node_names:=[" + lidar + "]",
+                        "orphaned-node-manager");
+                Started node = start(b.install(), pkg, lidar + " " + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(2),
+                        "lost-node");
+                Started lost = start(b.install(), pkg, mapper, "lost-node-mapper");
+                Started manager = start(b.install(), pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
                         + mapper + "] -p node_deadline_ms:=" + Ros2Shutdown.NODE_DEADLINE_MS, "lost-node-manager")) {
+            // The lifecycle manager killed: the node's process, on SIGINT, serves it a while, says it is left active and exits.
+            orphan.await("state perception/lidar active");
+            orphanManager.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            orphan.signal();
+            // The process of the node brought down first killed.
             manager.await(mapper + " is active");
             lost.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
             node.signal();
-            String out = manager.stop();
+            manager.signal();
+            String left = orphan.exited();
+            assertTrue(left.contains("state perception/lidar active at exit: no lifecycle manager deactivated it"),
+                    "a node left active says so at exit:\n" + Tools.last(left, 4000));
+            assertEquals(0, orphan.process.exitValue(), () -> "the node's process exits cleanly:\n" + Tools.last(left, 4000));
+            String out = manager.exited();
             int gone = out.indexOf(mapper + " did not say its state in time: it was not deactivated and cleaned up");
             assertTrue(gone >= 0, "the lifecycle manager says which node it could not bring down:\n" + Tools.last(out, 4000));
             assertTrue(out.indexOf(lidar + " is unconfigured", gone) > gone, "after waiting out the lost node's deadline, the"
@@ -175,6 +187,145 @@ class Ros2LifecycleLaunchTest {
                     "the other node's process served it until it was cleaned up:\n" + Tools.last(served, 4000));
             assertEquals(0, node.process.exitValue(), () -> "the other node's process exits cleanly:\n" + Tools.last(served, 4000));
         }
+        took("a side gone", started);
+    }
+
+    /**
+     * A wrong argument or parameter of a node's executable, the container or the lifecycle manager ends the program at
+     * once with one line that names the program, the argument or parameter, what is wrong and how to fix it, and status 2:
+     * an argument that is not a number, a parameter out of its range (-p), a parameter of the wrong type (a parameters
+     * file, -p); never std::terminate.
+     */
+    @Test
+    void aWrongArgumentOrParameterEndsTheProgramWithOneLine() throws Exception {
+        Built b = built();
+        long started = System.nanoTime();
+        String pkg = b.pkg();
+        String lidar = b.nodes().get("perception/lidar");
+        String manager = pkg + "_lifecycle_manager";
+        String container = pkg + "_component_container";
+        Matcher declared = Pattern.compile("declare_parameter<double>\\(\"([\\w.]+\\.period_ms)\"").matcher(lidarBase(b));
+        assertTrue(declared.find(), "the lidar node declares a period parameter");
+        String period = declared.group(1);
+        Path params = tmp.resolve("wrong-type.params.yaml");
+        Files.writeString(params, "/**:\n  ros__parameters:\n    " + period + ": fast\n");
+        String grace = Ros2Shutdown.GRACE_OPTION;
+        assertWrong(b, lidar, lidar + " " + grace + "=soon", "argument " + grace + "=soon: not a whole number of milliseconds", grace + "=");
+        assertWrong(b, container, container + " " + grace + "=-1", "argument " + grace + "=-1: not a whole number of milliseconds", grace + "=");
+        assertWrong(b, lidar, lidar + " --ros-args --params-file " + params, "parameter '" + period + "' has invalid type",
+                "params_file:=");
+        assertWrong(b, lidar, lidar + " --ros-args -p " + period + ":=-5.0", "node " + lidar + ": parameter " + period + " is -5: it must be"
+                + " a positive time", "set it so in the parameters file");
+        assertWrong(b, lidar, lidar + " --ros-args -p rsaml.simulated_load:=1.5", "parameter rsaml.simulated_load is 1.5",
+                "simulated_load:=");
+        assertWrong(b, manager, manager + " --ros-args -p node_deadline_ms:=0", "parameter node_deadline_ms is 0: it must be a positive",
+                "node_deadline_ms:=");
+        assertWrong(b, manager, manager + " --ros-args -p node_deadline_ms:=soon", "parameter 'node_deadline_ms' has invalid type", "-p");
+        took("wrong arguments and parameters", started);
+    }
+
+    /**
+     * Runs an executable of the package with a wrong argument or parameter: it must exit with 2 within 30 s, saying
+     * "PROGRAM: ..." with {@code wrong} and {@code fix} in one line, and nothing else.
+     */
+    private static void assertWrong(Built b, String program, String command, String wrong, String fix) throws Exception {
+        Tools.Result r = Tools.run(tmp, 30, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + DOMAIN
+                + "; \"$(ros2 pkg prefix " + b.pkg() + ")/lib/" + b.pkg() + "/\"" + command,
+                b.install()).toArray(String[]::new));
+        String said = command + " said:\n" + Tools.last(r.output(), 4000);
+        assertFalse(r.output().contains("terminate called"), () -> "std::terminate: " + said);
+        assertEquals(2, r.exit(), () -> command + " exited with " + r.exit() + ", not 2 (usage); " + said);
+        List<String> lines = r.output().lines().filter(l -> !l.isBlank()).toList();
+        assertEquals(1, lines.size(), () -> "one line, not " + lines.size() + "; " + said);
+        String line = lines.get(0);
+        assertTrue(line.startsWith(program + ": ") && line.contains(wrong) && line.contains(fix), () -> "the line names the program ("
+                + program + "), what is wrong (" + wrong + ") and how to fix it (" + fix + "); " + said);
+    }
+
+    /** The generated base class of the lidar node. */
+    private static String lidarBase(Built b) throws Exception {
+        try (java.util.stream.Stream<Path> s = Files.walk(b.src().resolve(b.pkg() + "/gen"))) {
+            for (Path p : s.filter(f -> f.toString().endsWith("Base.hpp")).toList()) {
+                String text = Files.readString(p, StandardCharsets.UTF_8);
+                if (text.contains("* Node " + b.nodes().get("perception/lidar") + ":")) {
+                    return text;
+                }
+            }
+        }
+        return fail("no generated base class of the lidar node under " + b.src());
+    }
+
+    @TempDir
+    static Path tmp;
+
+    /** ROS 2's domain of this test's processes, apart from other tests' on the machine. */
+    private static final int DOMAIN = 1 + (int) ((ProcessHandle.current().pid() + 50) % 100);
+
+    /** The package of resources/ros2-lifecycle.rsaml, generated and built with colcon once for every test of the class. */
+    private record Built(Path src, Path install, String pkg, Map<String, String> nodes) {
+    }
+
+    private static Built built;
+
+    /** The built package; the test is skipped, saying why, when there is no ROS 2 ({@link Ros2Jazzy#missing()}). */
+    private static synchronized Built built() throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        if (built == null) {
+            long started = System.nanoTime();
+            Path model = Ros2Test.model("resources/ros2-lifecycle.rsaml");
+            Architecture arch = ModelLoader.load(model, "ros2-lifecycle.rsaml").architecture();
+            String pkg = Names.snake(arch.getName());
+            Path src = tmp.resolve("src");
+            new RsamlGenerator().generate(model, Target.ROS2, src, false);
+            Path install = Ros2Jazzy.colconBuild(src, tmp);
+            built = new Built(src, install, pkg, Ros2Test.nodes(src.resolve(pkg)));
+            took("generated and built", started);
+        }
+        return built;
+    }
+
+    /** Says in the build's log how long a step took (on CI's 2 cores, where the time goes). */
+    private static void took(String what, long startedNanos) {
+        System.out.printf("Ros2LifecycleLaunchTest: %s in %.1f s (%s)%n", what, (System.nanoTime() - startedNanos) / 1e9, load());
+    }
+
+    private static String load() {
+        try {
+            return "load " + Files.readString(Path.of("/proc/loadavg")).strip();
+        } catch (java.io.IOException e) {
+            return "load unknown";
+        }
+    }
+
+    /** What ros2 lifecycle get must report: each managed node active. */
+    private static List<String> expectedStates(List<String> managed, Map<String, String> nodes) {
+        return managed.stream().map(m -> "/" + nodes.get(m) + ": active [3]").sorted().toList();
+    }
+
+    /** The nodes and states in the output of ros2 lifecycle get. */
+    private static List<String> reported(String states) {
+        return states.lines().filter(l -> l.startsWith("/")).map(String::strip).sorted().toList();
+    }
+
+    /**
+     * The output of {@code ros2 lifecycle get}, asked up to 5 times a second apart until it reports {@code expected}: on a
+     * loaded machine discovery may not have seen every node within one call's spin time.
+     */
+    private static String lifecycleStates(Path install, List<String> expected) throws Exception {
+        String states = "";
+        for (int attempt = 1; attempt <= 5; attempt++) {
+            states = Tools.ok(tmp, 60, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + DOMAIN
+                    + "; ros2 lifecycle get --no-daemon --spin-time 3", install).toArray(String[]::new));
+            if (reported(states).equals(expected)) {
+                if (attempt > 1) {
+                    System.out.println("Ros2LifecycleLaunchTest: ros2 lifecycle get saw every managed node at attempt " + attempt);
+                }
+                break;
+            }
+            Thread.sleep(1000);
+        }
+        return states;
     }
 
     /** The end of a log, for a failure's message. */
@@ -226,12 +377,12 @@ class Ros2LifecycleLaunchTest {
         }
     }
 
-    private static Started start(Path tmp, Path install, int domain, String pkg, String executable, String name) throws Exception {
+    private static Started start(Path install, String pkg, String executable, String name) throws Exception {
         Path log = tmp.resolve(name + ".log");
         ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec env --default-signal=INT \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable,
                 install))
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
-        Ros2Jazzy.isolate(pb.environment(), domain);
+        Ros2Jazzy.isolate(pb.environment(), DOMAIN);
         return new Started(pb.start(), log);
     }
 }

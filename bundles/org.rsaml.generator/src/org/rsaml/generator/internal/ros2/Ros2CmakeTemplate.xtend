@@ -157,6 +157,7 @@ class Ros2CmakeTemplate extends Ros2Template {
 			# The lifecycle manager of the launch files: configures and activates the managed nodes, and deactivates and cleans them up on SIGINT.
 			add_executable(«rosNames.lifecycleManagerExecutable» gen/rsaml/«Ros2Target.LIFECYCLE_MANAGER_SOURCE»)
 			target_link_libraries(«rosNames.lifecycleManagerExecutable» PRIVATE rclcpp::rclcpp ${lifecycle_msgs_TARGETS})
+			target_include_directories(«rosNames.lifecycleManagerExecutable» PRIVATE gen)
 
 		«ENDIF»
 	'''

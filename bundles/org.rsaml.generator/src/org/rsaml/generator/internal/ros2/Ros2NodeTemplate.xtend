@@ -55,6 +55,7 @@ class Ros2NodeTemplate extends Ros2Template {
 
 		#include <cmath>
 		#include <cstdint>
+		#include <cstdio>
 		#include <memory>
 		#include <optional>
 		#include <stdexcept>
@@ -170,8 +171,11 @@ class Ros2NodeTemplate extends Ros2Template {
 		  static std::int64_t nanoseconds(const char* parameter, double value, double unit_ns) {
 		    const double ns = value * unit_ns;
 		    if (!std::isfinite(ns) || !(ns >= 0.5) || ns > 1152921504606846976.0) {
-		      throw std::invalid_argument(std::string("parameter ") + parameter
-		                                  + " must be a positive time of at least 1 ns and at most 2^60 ns, in the unit its name ends with");
+		      char given[32];
+		      std::snprintf(given, sizeof given, "%g", value);
+		      throw std::invalid_argument(std::string("node «m.rosNode»: parameter ") + parameter + " is " + given
+		                                  + ": it must be a positive time of at least 1 ns and at most 2^60 ns, in the unit its name"
+		                                  + " ends with; set it so in the parameters file (config/«pkg».params.yaml, or params_file:=)");
 		    }
 		    return std::llround(ns);
 		  }

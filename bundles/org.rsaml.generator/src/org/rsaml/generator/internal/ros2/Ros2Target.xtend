@@ -39,7 +39,7 @@ class Ros2Target implements TargetGenerator {
 	 * The scheduling runtime's library in runtime/ros2/rsaml/ of this bundle: its headers, which the nodes include,
 	 * and its sources, compiled into the shared library the nodes of a process share.
 	 */
-	public static val List<String> RUNTIME_HEADERS = #["scheduling.hpp"]
+	public static val List<String> RUNTIME_HEADERS = #["scheduling.hpp", "usage.hpp"]
 	public static val List<String> RUNTIME_SOURCES = #["scheduling.cpp"]
 
 	/** The component container's source in runtime/ros2/rsaml/; the launch files start it. */

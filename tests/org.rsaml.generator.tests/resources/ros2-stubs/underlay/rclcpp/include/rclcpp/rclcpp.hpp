@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -170,6 +171,7 @@ class NodeBaseInterface {
                                                 bool automatically_add_to_executor_with_node = true) {
     return std::make_shared<CallbackGroup>(group_type, automatically_add_to_executor_with_node);
   }
+  const char* get_fully_qualified_name() const { return "/"; }
 };
 class NodeTimersInterface {
  public:
@@ -290,6 +292,30 @@ TimerBase::SharedPtr create_timer(std::shared_ptr<node_interfaces::NodeBaseInter
   (void)autostart;
   return nullptr;
 }
+
+// rclcpp/exceptions/exceptions.hpp: what a wrong parameter or ROS argument raises.
+namespace exceptions {
+class InvalidParameterValueException : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+class InvalidParameterTypeException : public std::runtime_error {
+ public:
+  InvalidParameterTypeException(const std::string& name, const std::string message)
+      : std::runtime_error("parameter '" + name + "' has invalid type: " + message) {}
+};
+class InvalidQosOverridesException : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+class RCLInvalidROSArgsError : public std::runtime_error {
+ public:
+  explicit RCLInvalidROSArgsError(const std::string& prefix) : std::runtime_error(prefix) {}
+};
+class UnknownROSArgsError : public std::runtime_error {
+ public:
+  explicit UnknownROSArgsError(std::vector<std::string>&& unknown) : std::runtime_error("found unknown ROS arguments"), unknown_ros_args(unknown) {}
+  const std::vector<std::string> unknown_ros_args;
+};
+}  // namespace exceptions
 
 // rclcpp/utilities.hpp, rclcpp/executors.hpp
 class InitOptions {};
