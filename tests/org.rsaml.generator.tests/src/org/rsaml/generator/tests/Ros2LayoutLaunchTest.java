@@ -62,7 +62,9 @@ class Ros2LayoutLaunchTest {
         Path model = tmp.resolve(Path.of(example).getFileName().toString());
         Files.writeString(model, text.substring(0, m.end()) + "packages=\"" + layout + "\" " + text.substring(m.end()));
         System.out.println("Ros2LayoutLaunchTest: " + example + " with packages " + layout);
+        long started = System.nanoTime();
         Ros2LaunchTest.run(model, example, tmp, src -> {
         });
+        Tools.took("Ros2LayoutLaunchTest", example + " with packages " + layout + " generated, built, run and checked", started);
     }
 }

@@ -285,17 +285,8 @@ class Ros2LifecycleLaunchTest {
         return built;
     }
 
-    /** Says in the build's log how long a step took (on CI's 2 cores, where the time goes). */
     private static void took(String what, long startedNanos) {
-        System.out.printf("Ros2LifecycleLaunchTest: %s in %.1f s (%s)%n", what, (System.nanoTime() - startedNanos) / 1e9, load());
-    }
-
-    private static String load() {
-        try {
-            return "load " + Files.readString(Path.of("/proc/loadavg")).strip();
-        } catch (java.io.IOException e) {
-            return "load unknown";
-        }
+        Tools.took("Ros2LifecycleLaunchTest", what, startedNanos);
     }
 
     /** What ros2 lifecycle get must report: each managed node active. */
