@@ -76,8 +76,9 @@ final class PlatformCheck {
 
     /**
      * One CPU's records of the {@link Monitor}: the intervals from each activation's nominal wake-up
-     * to the end of its record, within the run, sorted and disjoint (the monitor's next wake-up is
-     * always past its last record's end); {@code sched} what its thread got.
+     * (a late one's: from the previous record's end, {@link Platform#LATE_NS}) to the end of its record,
+     * within the run, sorted and disjoint (the monitor's next wake-up is always past its last record's
+     * end); {@code sched} what its thread got.
      */
     record CpuRecords(int cpu, String sched, boolean overflow, long[] starts, long[] ends) {
         /** The most time these intervals cover in any window of {@code windowNs}: a window starting where one starts (two pointers). */
@@ -141,7 +142,17 @@ final class PlatformCheck {
         private static final Pattern HEADER = Pattern.compile("rsaml-platform-monitor period (\\d+) ns priority (\\d+) min (\\d+) memory (.*)");
         private static final Pattern CPU = Pattern.compile("cpu (\\d+) records (\\d+)( overflow)? sched (.*)");
 
-        /** Reads the monitor's file, keeping what falls between {@code fromNs} and {@code toNs}. */
+        /**
+         * A record longer than this was a late wake-up: something held the CPU at the moment the monitor was due, and it
+         * may have taken the CPU at any time after the monitor's previous record ended (the monitor sleeps in between and
+         * sees nothing), so the record counts from there. The usual record takes 10 to 50 us.
+         */
+        static final long LATE_NS = 100_000;
+
+        /**
+         * Reads the monitor's file, keeping what falls between {@code fromNs} and {@code toNs}; a late record
+         * ({@link #LATE_NS}) counts from the end of the CPU's previous record.
+         */
         static Platform parse(String text, long fromNs, long toNs) {
             String[] lines = text.split("\n");
             Matcher h = HEADER.matcher(lines.length > 0 ? lines[0] : "");
@@ -159,15 +170,23 @@ final class PlatformCheck {
                     continue;
                 }
                 String[] f = lines[i].split(" ");
-                long start = Math.max(fromNs, Long.parseLong(f[1]));
-                long end = Math.min(toNs, Long.parseLong(f[2]));
-                if (end > start) {
-                    intervals.get(Integer.parseInt(f[0])).add(new long[] {start, end});
-                }
+                intervals.get(Integer.parseInt(f[0])).add(new long[] {Long.parseLong(f[1]), Long.parseLong(f[2])});
             }
             List<CpuRecords> cpus = new ArrayList<>();
-            intervals.forEach((cpu, list) -> {
-                list.sort(java.util.Comparator.comparingLong(x -> x[0]));
+            intervals.forEach((cpu, records) -> {
+                records.sort(java.util.Comparator.comparingLong(x -> x[0]));
+                List<long[]> list = new ArrayList<>();
+                long previousEnd = Long.MIN_VALUE;
+                for (long[] r : records) {
+                    // a late wake-up: the delay may have begun any time after the monitor's previous record ended
+                    long start = r[1] - r[0] > LATE_NS && previousEnd != Long.MIN_VALUE ? Math.min(r[0], previousEnd) : r[0];
+                    previousEnd = r[1];
+                    start = Math.max(fromNs, start);
+                    long end = Math.min(toNs, r[1]);
+                    if (end > start) {
+                        list.add(new long[] {start, end});
+                    }
+                }
                 cpus.add(new CpuRecords(cpu, sched.get(cpu), overflow.get(cpu), list.stream().mapToLong(x -> x[0]).toArray(),
                         list.stream().mapToLong(x -> x[1]).toArray()));
             });
@@ -302,16 +321,32 @@ final class PlatformCheck {
             return program;
         }
 
-        /** Starts the monitor ({@code options}: more of its command line, e.g. a synthetic hiccup) and waits until every CPU's thread runs. */
+        /**
+         * Starts the monitor ({@code options}: more of its command line, e.g. a synthetic hiccup) and waits (at most 30 s)
+         * until every CPU's thread runs. It stops by itself when the thread that started it ends (its parent-death signal),
+         * and after {@code --max-ms} at the latest: a monitor at the top priority never outlives its test.
+         */
         static Monitor start(String... options) throws Exception {
             Path records = Files.createTempFile("rsaml-platform", ".txt");
             List<String> command = new ArrayList<>(List.of(program().toString(), "--out", records.toString()));
             command.addAll(List.of(options));
             Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
             java.io.BufferedReader out = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
-            String ready = out.readLine();
+            String ready;
+            try {
+                ready = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+                    try {
+                        return out.readLine();
+                    } catch (java.io.IOException e) {
+                        return "(its output unreadable: " + e.getMessage() + ")";
+                    }
+                }).get(30, TimeUnit.SECONDS);
+            } catch (java.util.concurrent.TimeoutException e) {
+                ready = "(nothing within 30 s)";
+            }
             if (ready == null || !ready.startsWith("ready ")) {
                 p.destroyForcibly();
+                Files.deleteIfExists(records);
                 fail("the platform monitor did not start: " + ready);
             }
             return new Monitor(p, out, records, System.nanoTime());

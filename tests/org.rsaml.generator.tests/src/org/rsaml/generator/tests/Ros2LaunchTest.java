@@ -236,7 +236,14 @@ class Ros2LaunchTest {
         Ros2Jazzy.isolate(pb.environment(), domain);
         OtherRealtime.Watch watch = new OtherRealtime.Watch();
         PlatformCheck.Monitor monitor = PlatformCheck.Monitor.start();
-        Process launch = pb.start();
+        Process launch;
+        try {
+            launch = pb.start();
+        } catch (java.io.IOException | RuntimeException e) {
+            monitor.close();
+            watch.stop();
+            throw e;
+        }
         OtherRealtime.Use others;
         PlatformCheck.Platform platform;
         String out = "";
