@@ -6,40 +6,106 @@ package org.rsaml.text.ide.server;
 
 import java.io.InputStream;
 import java.io.OutputStream;
+import java.io.PrintStream;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
+import java.util.function.Function;
 
 import org.eclipse.lsp4j.jsonrpc.Launcher;
+import org.eclipse.lsp4j.jsonrpc.MessageConsumer;
+import org.eclipse.lsp4j.jsonrpc.RemoteEndpoint;
+import org.eclipse.lsp4j.jsonrpc.messages.RequestMessage;
+import org.eclipse.lsp4j.jsonrpc.messages.ResponseError;
+import org.eclipse.lsp4j.jsonrpc.messages.ResponseErrorCode;
+import org.eclipse.lsp4j.jsonrpc.messages.ResponseMessage;
 import org.eclipse.lsp4j.services.LanguageClient;
+import org.eclipse.xtext.ide.server.ILanguageServerShutdownAndExitHandler;
+import org.eclipse.xtext.ide.server.IMultiRootWorkspaceConfigFactory;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.ServerModule;
+import org.eclipse.xtext.ide.server.WorkspaceManager;
 import org.rsaml.model.resource.RsamlStandaloneSetup;
 import org.rsaml.validation.RsamlValidationSetup;
 
 import com.google.inject.Guice;
+import com.google.inject.Injector;
+import com.google.inject.util.Modules;
 
 /**
  * The language server of textual RsaML models (Xtext's, over LSP): diagnostics equal to
  * {@code rsaml validate}'s findings, completion, hover with timing, definition, references, rename,
  * symbols and formatting. {@code rsaml language-server} runs it on standard input and output.
+ * <p>
+ * Whatever the editor sends, the server answers or says on standard error, in one line, what it could not
+ * do ({@link ServerLog}): an editor without a workspace folder, a document outside the folders
+ * ({@link FilesOutsideFolders}), a change to a document never opened ({@link RsamlWorkspaceManager}), a request
+ * after {@code shutdown} (refused as the LSP asks), {@code exit} without {@code shutdown}.
  */
 public final class RsamlLanguageServer {
 
     private RsamlLanguageServer() {
     }
 
-    /** Serves one client on the streams until it exits or the input ends. */
-    public static void serve(InputStream in, OutputStream out) throws InterruptedException {
+    /**
+     * Serves one client on the streams until the input ends, and returns the exit code: 0 when the client
+     * asked for {@code shutdown} first, 1 otherwise (said on {@code stderr}). An {@code exit} notification ends
+     * the process with that code.
+     */
+    public static int serve(InputStream in, OutputStream out, PrintStream stderr) throws InterruptedException {
+        ServerLog.install(stderr);
         RsamlStandaloneSetup.init();
         RsamlValidationSetup.initInBackground();
-        LanguageServerImpl server = Guice.createInjector(new ServerModule()).getInstance(LanguageServerImpl.class);
-        Launcher<LanguageClient> launcher = Launcher.createLauncher(server, LanguageClient.class, in, out);
+        RsamlShutdownAndExitHandler lifecycle = new RsamlShutdownAndExitHandler();
+        Injector injector = Guice.createInjector(Modules.override(new ServerModule()).with(binder -> {
+            binder.bind(WorkspaceManager.class).to(RsamlWorkspaceManager.class);
+            binder.bind(IMultiRootWorkspaceConfigFactory.class).to(FilesOutsideFolders.class);
+            binder.bind(ILanguageServerShutdownAndExitHandler.class).toInstance(lifecycle);
+        }));
+        LanguageServerImpl server = injector.getInstance(LanguageServerImpl.class);
+        Launcher<LanguageClient> launcher = new Launcher.Builder<LanguageClient>()
+                .setLocalService(server)
+                .setRemoteInterface(LanguageClient.class)
+                .setInput(in)
+                .setOutput(out)
+                .wrapMessages(new RefuseAfterShutdown(lifecycle))
+                .create();
         server.connect(launcher.getRemoteProxy());
         Future<Void> listening = launcher.startListening();
         try {
             listening.get();
         } catch (ExecutionException e) {
             // The connection ended (the client went away): nothing more to serve.
+        }
+        return lifecycle.exitCode("the editor closed the connection (end of standard input)");
+    }
+
+    /** After {@code shutdown}, a request gets the error the LSP specification names (InvalidRequest). */
+    private static final class RefuseAfterShutdown implements Function<MessageConsumer, MessageConsumer> {
+        private final RsamlShutdownAndExitHandler lifecycle;
+        private volatile MessageConsumer toClient;
+
+        RefuseAfterShutdown(RsamlShutdownAndExitHandler lifecycle) {
+            this.lifecycle = lifecycle;
+        }
+
+        @Override
+        public MessageConsumer apply(MessageConsumer consumer) {
+            if (!(consumer instanceof RemoteEndpoint)) {
+                toClient = consumer; // what the server sends
+                return consumer;
+            }
+            return message -> {
+                if (message instanceof RequestMessage request && lifecycle.isShutDown()) {
+                    String why = request.getMethod() + " after shutdown: the server is shutting down and accepts only the exit notification";
+                    ServerLog.problem(why);
+                    ResponseMessage refusal = new ResponseMessage();
+                    refusal.setRawId(request.getRawId());
+                    refusal.setError(new ResponseError(ResponseErrorCode.InvalidRequest, why, null));
+                    toClient.consume(refusal);
+                } else {
+                    consumer.consume(message);
+                }
+            };
         }
     }
 }

@@ -30,6 +30,11 @@ final class CommandSpecs {
     }
 
     /** The exit codes help lists, each {@code "code:meaning"}. */
+    /** The exit codes of a validation, as {@code rsaml --help} and {@code rsaml validate --help} list them. */
+    static final String[] VALIDATION_EXIT_CODES = {"0:clean: no finding at or above --fail-on",
+            "1:findings at or above --fail-on",
+            "2:usage error, or an input that could not be read"};
+
     static void exitCodes(CommandSpec spec, String... codes) {
         spec.usageMessage().exitCodeListHeading("%nExit codes:%n").exitCodeList(UsageMessageSpec.keyValuesMap(codes));
     }

@@ -9,7 +9,6 @@ import java.io.FileInputStream;
 import java.io.FileOutputStream;
 import java.io.PrintStream;
 
-import org.rsaml.report.ExitCodes;
 import org.rsaml.text.ide.server.RsamlLanguageServer;
 
 /** {@code rsaml language-server}: the language server of textual models, on standard input and output. */
@@ -26,8 +25,8 @@ final class LanguageServerCommand extends RsamlCommand {
     public Integer call() throws InterruptedException {
         // Standard output carries the protocol only: whatever else prints goes to standard error.
         PrintStream protocol = new PrintStream(new FileOutputStream(FileDescriptor.out), true);
-        System.setOut(System.err);
-        RsamlLanguageServer.serve(new FileInputStream(FileDescriptor.in), protocol);
-        return ExitCodes.OK;
+        PrintStream stderr = System.err;
+        System.setOut(stderr);
+        return RsamlLanguageServer.serve(new FileInputStream(FileDescriptor.in), protocol, stderr);
     }
 }

@@ -68,9 +68,7 @@ public final class RsamlCli implements Runnable {
                 "Checks robot software architectures written in RsaML (.rsaml files) and generates their code skeletons.");
         spec.versionProvider(new Version());
         spec.usageMessage().footer("", "Example: rsaml validate --format sarif --output junit=target/rsaml.xml models/");
-        CommandSpecs.exitCodes(spec, "0:clean: no finding at or above --fail-on",
-                "1:findings at or above --fail-on",
-                "2:usage error, or an input that could not be read");
+        CommandSpecs.exitCodes(spec, CommandSpecs.VALIDATION_EXIT_CODES);
         spec.addOption(debug);
         CommandSpecs.standardHelpOptions(spec);
     }

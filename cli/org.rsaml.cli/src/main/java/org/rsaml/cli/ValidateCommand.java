@@ -29,9 +29,7 @@ final class ValidateCommand extends RsamlCommand {
                 "Directories are searched recursively for .rsaml files; every input is reported, "
                         + "also when another one cannot be read.");
         spec.usageMessage().sortOptions(false);
-        CommandSpecs.exitCodes(spec, "0:clean: no finding at or above --fail-on",
-                "1:findings at or above --fail-on",
-                "2:usage error, or an input that could not be read");
+        CommandSpecs.exitCodes(spec, CommandSpecs.VALIDATION_EXIT_CODES);
         spec.addPositional(paths);
         report = new ReportArgs(spec);
         CommandSpecs.standardHelpOptions(spec);

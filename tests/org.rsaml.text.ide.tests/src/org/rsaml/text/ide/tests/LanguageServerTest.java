@@ -155,7 +155,7 @@ class LanguageServerTest {
         PipedOutputStream serverOut = new PipedOutputStream(clientIn);
         serving = new Thread(() -> {
             try {
-                RsamlLanguageServer.serve(serverIn, serverOut);
+                RsamlLanguageServer.serve(serverIn, serverOut, System.err);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -194,7 +194,8 @@ class LanguageServerTest {
         return uri;
     }
 
-    private static Position at(String text, String marker, int offsetInMarker) {
+    /** The position of {@code offsetInMarker} characters into the first {@code marker} of the text. */
+    static Position at(String text, String marker, int offsetInMarker) {
         int offset = text.indexOf(marker) + offsetInMarker;
         assertTrue(offset >= offsetInMarker, "the text holds " + marker);
         String before = text.substring(0, offset);
