@@ -167,8 +167,10 @@ Schedule::Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base,
     : base_(std::move(base)), timers_(std::move(timers)), clock_(std::move(clock)), module_(std::move(module)), core_(core),
       simulated_load_(simulated_load) {
   if (!(simulated_load_ >= 0.0 && simulated_load_ <= 1.0)) {
-    throw UsageError("node " + std::string(base_->get_fully_qualified_name()) + ": parameter rsaml.simulated_load is " +
-                     std::to_string(simulated_load_) + ": it must be a fraction from 0 to 1 of the modeled execution time; set it so"
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", simulated_load_);
+    throw UsageError("node " + std::string(base_->get_fully_qualified_name()) + ": parameter rsaml.simulated_load is " + given +
+                     ": it must be a fraction from 0 to 1 of the modeled execution time; set it so"
                      " (launch argument simulated_load:=, or -p rsaml.simulated_load:=0.5)");
   }
   started_ = clock_->now();

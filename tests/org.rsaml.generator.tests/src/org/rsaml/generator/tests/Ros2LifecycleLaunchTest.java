@@ -194,7 +194,8 @@ class Ros2LifecycleLaunchTest {
      * A wrong argument or parameter of a node's executable, the container or the lifecycle manager ends the program at
      * once with one line that names the program, the argument or parameter, what is wrong and how to fix it, and status 2:
      * an argument that is not a number, a parameter out of its range (-p), a parameter of the wrong type (a parameters
-     * file, -p); never std::terminate.
+     * file, -p); never std::terminate. A component with a wrong parameter is not loaded into the container, which says
+     * why (rclcpp_components) and stays.
      */
     @Test
     void aWrongArgumentOrParameterEndsTheProgramWithOneLine() throws Exception {
@@ -216,11 +217,30 @@ class Ros2LifecycleLaunchTest {
                 "params_file:=");
         assertWrong(b, lidar, lidar + " --ros-args -p " + period + ":=-5.0", "node " + lidar + ": parameter " + period + " is -5: it must be"
                 + " a positive time", "set it so in the parameters file");
-        assertWrong(b, lidar, lidar + " --ros-args -p rsaml.simulated_load:=1.5", "parameter rsaml.simulated_load is 1.5",
+        assertWrong(b, lidar, lidar + " --ros-args -p rsaml.simulated_load:=1.5", "parameter rsaml.simulated_load is 1.5: it must be a fraction from 0 to 1",
                 "simulated_load:=");
         assertWrong(b, manager, manager + " --ros-args -p node_deadline_ms:=0", "parameter node_deadline_ms is 0: it must be a positive",
                 "node_deadline_ms:=");
         assertWrong(b, manager, manager + " --ros-args -p node_deadline_ms:=soon", "parameter 'node_deadline_ms' has invalid type", "-p");
+        // A component with a wrong parameter: the container does not load it, says why, and stays.
+        try (Started running = start(b.install(), pkg, container + " --ros-args -r __node:=wrong_parameters_container",
+                "wrong-parameters-container")) {
+            String load = "ros2 component load --no-daemon /wrong_parameters_container " + pkg + " " + plugin(b)
+                    + " -p rsaml.simulated_load:=3.0";
+            Tools.Result loaded = null;
+            for (int attempt = 1; attempt <= 5 && (loaded == null || !loaded.output().contains("Component constructor")); attempt++) {
+                Thread.sleep(1000); // discovery of the container
+                loaded = Tools.run(tmp, 60, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + DOMAIN + "; "
+                        + load, b.install()).toArray(String[]::new));
+            }
+            String said = load + " said:\n" + Tools.last(loaded.output(), 4000);
+            assertTrue(loaded.exit() != 0 && loaded.output().contains("Component constructor threw an exception: node /" + lidar
+                    + ": parameter rsaml.simulated_load is 3: it must be a fraction from 0 to 1"), () -> "the container refuses the"
+                    + " component and says why: " + said);
+            assertTrue(running.process.isAlive(), () -> "the container stays: " + said);
+            String out = running.stop();
+            assertEquals(0, running.process.exitValue(), () -> "the container exits cleanly:\n" + Tools.last(out, 4000));
+        }
         took("wrong arguments and parameters", started);
     }
 
@@ -240,6 +260,14 @@ class Ros2LifecycleLaunchTest {
         String line = lines.get(0);
         assertTrue(line.startsWith(program + ": ") && line.contains(wrong) && line.contains(fix), () -> "the line names the program ("
                 + program + "), what is wrong (" + wrong + ") and how to fix it (" + fix + "); " + said);
+    }
+
+    /** The rclcpp component of the lidar node, as its registration names it. */
+    private static String plugin(Built b) throws Exception {
+        Path registration = b.src().resolve(b.pkg() + "/gen/perception/LidarComponent.cpp");
+        Matcher m = Pattern.compile("RCLCPP_COMPONENTS_REGISTER_NODE\\(([\\w:]+)\\)").matcher(Files.readString(registration));
+        assertTrue(m.find(), "the lidar node is registered as a component: " + registration);
+        return m.group(1);
     }
 
     /** The generated base class of the lidar node. */
