@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
+import java.util.function.Predicate;
 
 import org.eclipse.emf.ecore.resource.Resource;
 
@@ -49,9 +50,15 @@ public final class ModelFormats {
      * Refuses to read a file the loading policy does not let RsaML open (not a regular local file, larger
      * than {@link RsamlResource#OPTION_MAX_FILE_SIZE} allows): the same policy for every syntax, checked
      * before the resource reads anything. The refusal is recorded as the resource's one error, so that
-     * whoever follows a reference to it can say why it failed, and thrown.
+     * whoever follows a reference to it can say why it failed, and thrown. The text an editor holds
+     * ({@link RsamlResource#OPTION_EDITOR_TEXT}) is not opened, and not refused.
      */
+    @SuppressWarnings("unchecked")
     public static void refuseUnopenable(Resource resource, Map<?, ?> options) throws IOException {
+        if (options != null && options.get(RsamlResource.OPTION_EDITOR_TEXT) instanceof Predicate<?> editor
+                && ((Predicate<Object>) editor).test(resource.getURI())) {
+            return; // the editor's text: nothing is opened
+        }
         long limit = options != null && options.get(RsamlResource.OPTION_MAX_FILE_SIZE) instanceof Number n ? n.longValue()
                 : RsamlResource.DEFAULT_MAX_FILE_SIZE;
         String refusal = LoadPolicy.refuseToOpen(resource.getURI(), limit);

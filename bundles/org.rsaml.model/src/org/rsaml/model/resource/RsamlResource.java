@@ -40,6 +40,13 @@ public class RsamlResource extends RsamlResourceImpl implements LocatingResource
     /** Load option: the largest file, in bytes, that is read (a {@link Long}). */
     public static final String OPTION_MAX_FILE_SIZE = "org.rsaml.model.resource.maxFileSize";
 
+    /**
+     * Load option: the addresses whose text an editor holds (a {@code java.util.function.Predicate} of
+     * {@link org.eclipse.emf.common.util.URI}), read from the editor and not opened, so not subject to the loading
+     * policy (an unsaved document, {@code untitled:Untitled-1}, or a file the editor has not saved yet).
+     */
+    public static final String OPTION_EDITOR_TEXT = "org.rsaml.model.resource.editorText";
+
     /** Files larger than this (1 GiB) are refused unless {@link #OPTION_MAX_FILE_SIZE} says otherwise. */
     public static final long DEFAULT_MAX_FILE_SIZE = 1L << 30;
 

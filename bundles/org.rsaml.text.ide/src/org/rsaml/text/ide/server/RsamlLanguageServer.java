@@ -22,8 +22,10 @@ import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.xtext.ide.server.ILanguageServerShutdownAndExitHandler;
 import org.eclipse.xtext.ide.server.IMultiRootWorkspaceConfigFactory;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
+import org.eclipse.xtext.ide.server.ProjectManager;
 import org.eclipse.xtext.ide.server.ServerModule;
 import org.eclipse.xtext.ide.server.WorkspaceManager;
+import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.rsaml.model.resource.RsamlStandaloneSetup;
 import org.rsaml.validation.RsamlValidationSetup;
 
@@ -38,7 +40,7 @@ import com.google.inject.util.Modules;
  * <p>
  * Whatever the editor sends, the server answers or says on standard error, in one line, what it could not
  * do ({@link ServerLog}): an editor without a workspace folder, a document outside the folders
- * ({@link FilesOutsideFolders}), a change to a document never opened ({@link RsamlWorkspaceManager}), a request
+ * ({@link FilesOutsideFolders}), an unsaved one ({@link UntitledDocuments}), a change to a document never opened ({@link RsamlWorkspaceManager}), a request
  * after {@code shutdown} (refused as the LSP asks), {@code exit} without {@code shutdown}.
  */
 public final class RsamlLanguageServer {
@@ -58,10 +60,12 @@ public final class RsamlLanguageServer {
         RsamlShutdownAndExitHandler lifecycle = new RsamlShutdownAndExitHandler();
         Injector injector = Guice.createInjector(Modules.override(new ServerModule()).with(binder -> {
             binder.bind(WorkspaceManager.class).to(RsamlWorkspaceManager.class);
+            binder.bind(ProjectManager.class).to(RsamlProjectManager.class);
             binder.bind(IMultiRootWorkspaceConfigFactory.class).to(FilesOutsideFolders.class);
             binder.bind(ILanguageServerShutdownAndExitHandler.class).toInstance(lifecycle);
         }));
         LanguageServerImpl server = injector.getInstance(LanguageServerImpl.class);
+        UntitledDocuments.register(injector.getInstance(IResourceServiceProvider.Registry.class));
         Launcher<LanguageClient> launcher = new Launcher.Builder<LanguageClient>()
                 .setLocalService(server)
                 .setRemoteInterface(LanguageClient.class)

@@ -47,8 +47,8 @@ import org.rsaml.tests.support.TestRepository;
 /**
  * {@code rsaml language-server} as a separate process, spoken to over its standard input and output as an editor
  * does, through what editors really send at the edges of a session: no workspace folder (a single file opened in
- * VS Code; Helix, Kate, vim clients), only the deprecated {@code rootPath}, a folder that does not exist, a
- * change to a document never opened, a request after {@code shutdown}, {@code exit} without
+ * VS Code; Helix, Kate, vim clients), only the deprecated {@code rootPath}, a folder that does not exist, an
+ * untitled document, a file not saved yet, a change to a document never opened, a request after {@code shutdown}, {@code exit} without
  * {@code shutdown}, standard input closed. None may print a stack trace; each ends with the LSP's exit code.
  */
 class LanguageServerLifecycleTest {
@@ -184,6 +184,29 @@ class LanguageServerLifecycleTest {
         initialize(init);
         String uri = open(EXP2.toUri().toString(), Files.readString(EXP2));
         assertTrue(hasRsa08(diagnosticsOf(uri)), "a file opened still has its findings" + said());
+        shutdownAndExit();
+    }
+
+    @Test
+    void anUntitledDocument() throws Exception {
+        start();
+        initialize(new InitializeParams());
+        String text = Files.readString(EXP2);
+        String untitled = open("untitled:Untitled-1", text);
+        assertTrue(hasRsa08(diagnosticsOf(untitled)), "the unsaved text is checked as RsaML text" + said());
+        var hover = server.getTextDocumentService().hover(new HoverParams(new TextDocumentIdentifier(untitled),
+                LanguageServerTest.at(text, "module resourceChecker", 9))).get(60, TimeUnit.SECONDS);
+        assertTrue(hover != null && hover.getContents().getRight().getValue().contains("resourceChecker"), "a hover: " + hover + said());
+        shutdownAndExit();
+    }
+
+    @Test
+    void aFileNotSavedYet() throws Exception {
+        start();
+        initialize(new InitializeParams());
+        // A file the editor created and has not written: its text is the editor's, there is nothing on disk.
+        String uri = open(dir.resolve("new.rsa").toUri().toString(), Files.readString(EXP2));
+        assertTrue(hasRsa08(diagnosticsOf(uri)), "checked from the editor's text" + said());
         shutdownAndExit();
     }
 
