@@ -7,13 +7,17 @@ package org.rsaml.text.ide.server;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.io.PrintStream;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 import java.util.function.Function;
 
+import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.eclipse.lsp4j.jsonrpc.Launcher;
 import org.eclipse.lsp4j.jsonrpc.MessageConsumer;
 import org.eclipse.lsp4j.jsonrpc.RemoteEndpoint;
+import org.eclipse.lsp4j.jsonrpc.ResponseErrorException;
 import org.eclipse.lsp4j.jsonrpc.messages.RequestMessage;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseError;
 import org.eclipse.lsp4j.jsonrpc.messages.ResponseErrorCode;
@@ -71,7 +75,8 @@ public final class RsamlLanguageServer {
                 .setRemoteInterface(LanguageClient.class)
                 .setInput(in)
                 .setOutput(out)
-                .wrapMessages(new RefuseAfterShutdown(lifecycle))
+                .wrapMessages(new Session(lifecycle))
+                .setExceptionHandler(Session::failure)
                 .create();
         server.connect(launcher.getRemoteProxy());
         Future<Void> listening = launcher.startListening();
@@ -83,33 +88,83 @@ public final class RsamlLanguageServer {
         return lifecycle.exitCode("the editor closed the connection (end of standard input)");
     }
 
-    /** After {@code shutdown}, a request gets the error the LSP specification names (InvalidRequest). */
-    private static final class RefuseAfterShutdown implements Function<MessageConsumer, MessageConsumer> {
+    /**
+     * The session as the protocol sees it: after {@code shutdown} a request gets the error the LSP specification
+     * names (InvalidRequest); a request that fails is answered with one line saying why (no stack trace in the
+     * error's data, where LSP4J would put it), and said on standard error with the request it answers.
+     */
+    private static final class Session implements Function<MessageConsumer, MessageConsumer> {
         private final RsamlShutdownAndExitHandler lifecycle;
+        private final Map<Object, String> requests = new ConcurrentHashMap<>();
         private volatile MessageConsumer toClient;
 
-        RefuseAfterShutdown(RsamlShutdownAndExitHandler lifecycle) {
+        Session(RsamlShutdownAndExitHandler lifecycle) {
             this.lifecycle = lifecycle;
+        }
+
+        /** The error a failed request gets: what went wrong, in one line. */
+        static ResponseError failure(Throwable thrown) {
+            if (thrown instanceof ResponseErrorException refused) {
+                return refused.getResponseError();
+            }
+            Throwable cause = thrown;
+            while (cause.getCause() != null && cause.getCause() != cause) {
+                cause = cause.getCause();
+            }
+            String message = cause.getMessage() == null ? cause.getClass().getSimpleName() : cause.getMessage();
+            message = message.replaceAll("\\s+", " ").strip();
+            if (message.length() > 300) {
+                message = message.substring(0, 300) + "...";
+            }
+            return new ResponseError(ResponseErrorCode.InternalError, "RsaML could not answer: " + message, null);
         }
 
         @Override
         public MessageConsumer apply(MessageConsumer consumer) {
             if (!(consumer instanceof RemoteEndpoint)) {
-                toClient = consumer; // what the server sends
-                return consumer;
+                toClient = consumer;
+                return message -> {
+                    if (message instanceof ResponseMessage response && response.getRawId() != null) {
+                        String request = requests.remove(response.getRawId());
+                        if (response.getError() != null && request != null && !routine(response.getError())) {
+                            ServerLog.problem(request + ": " + response.getError().getMessage());
+                        }
+                    }
+                    consumer.consume(message);
+                };
             }
             return message -> {
                 if (message instanceof RequestMessage request && lifecycle.isShutDown()) {
-                    String why = request.getMethod() + " after shutdown: the server is shutting down and accepts only the exit notification";
-                    ServerLog.problem(why);
+                    String why = "the server is shutting down and accepts only the exit notification";
+                    ServerLog.problem(request.getMethod() + " after shutdown: " + why);
                     ResponseMessage refusal = new ResponseMessage();
                     refusal.setRawId(request.getRawId());
-                    refusal.setError(new ResponseError(ResponseErrorCode.InvalidRequest, why, null));
+                    refusal.setError(new ResponseError(ResponseErrorCode.InvalidRequest, request.getMethod() + " after shutdown: " + why, null));
                     toClient.consume(refusal);
-                } else {
-                    consumer.consume(message);
+                    return;
                 }
+                if (message instanceof RequestMessage request && request.getRawId() != null) {
+                    requests.put(request.getRawId(), request.getMethod() + document(request.getParams()));
+                }
+                consumer.consume(message);
             };
+        }
+
+        /** An editor cancels requests it no longer needs, and the server those its edits outdate: nothing to say. */
+        private static boolean routine(ResponseError error) {
+            return error.getCode() == ResponseErrorCode.RequestCancelled.getValue()
+                    || error.getCode() == ResponseErrorCode.ContentModified.getValue();
+        }
+
+        /** " for URI" when the request is about a document. */
+        private static String document(Object params) {
+            // Every document request's parameters have getTextDocument() (hover, completion, symbols, formatting, ...).
+            try {
+                Object id = params == null ? null : params.getClass().getMethod("getTextDocument").invoke(params);
+                return id instanceof TextDocumentIdentifier doc ? " for " + doc.getUri() : "";
+            } catch (ReflectiveOperationException | RuntimeException e) {
+                return "";
+            }
         }
     }
 }

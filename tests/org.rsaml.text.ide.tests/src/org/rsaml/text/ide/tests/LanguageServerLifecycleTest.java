@@ -48,7 +48,7 @@ import org.rsaml.tests.support.TestRepository;
  * {@code rsaml language-server} as a separate process, spoken to over its standard input and output as an editor
  * does, through what editors really send at the edges of a session: no workspace folder (a single file opened in
  * VS Code; Helix, Kate, vim clients), only the deprecated {@code rootPath}, a folder that does not exist, an
- * untitled document, a file not saved yet, a change to a document never opened, a request after {@code shutdown}, {@code exit} without
+ * untitled document, a file not saved yet, a request it cannot answer, a change to a document never opened, a request after {@code shutdown}, {@code exit} without
  * {@code shutdown}, standard input closed. None may print a stack trace; each ends with the LSP's exit code.
  */
 class LanguageServerLifecycleTest {
@@ -224,6 +224,25 @@ class LanguageServerLifecycleTest {
         shutdownAndExit();
         assertTrue(said().contains("rsaml language-server: textDocument/didChange for " + never + ", which the editor has not opened"),
                 "the ignored change is named" + said());
+    }
+
+    @Test
+    void aRequestItCannotAnswer() throws Exception {
+        start();
+        initialize(new InitializeParams());
+        // A hover in a document the editor never opened and that is not on disk.
+        String missing = dir.resolve("missing.rsa").toUri().toString();
+        CompletableFuture<?> hover = server.getTextDocumentService().hover(new HoverParams(new TextDocumentIdentifier(missing), new Position(0, 0)));
+        ExecutionException failed = assertThrows(ExecutionException.class, () -> hover.get(30, TimeUnit.SECONDS), "an error");
+        var error = ((ResponseErrorException) failed.getCause()).getResponseError();
+        assertEquals("RsaML could not answer: no such file", error.getMessage(), "the error says why, in one line");
+        assertEquals(null, error.getData(), "no stack trace in the error's data");
+        // The server goes on.
+        String uri = open(EXP2.toUri().toString(), Files.readString(EXP2));
+        assertTrue(hasRsa08(diagnosticsOf(uri)), "the server keeps working" + said());
+        shutdownAndExit();
+        assertTrue(said().contains("rsaml language-server: textDocument/hover for " + missing + ": RsaML could not answer: no such file"),
+                "the failed request is named with its document" + said());
     }
 
     @Test
