@@ -13,7 +13,8 @@ function activate(context) {
     args: config.get('server.args', ['language-server'])
   };
   const clientOptions = {
-    documentSelector: [{ scheme: 'file', language: 'rsaml' }],
+    // untitled: a new document set to the RsaML language, checked before it is saved.
+    documentSelector: [{ scheme: 'file', language: 'rsaml' }, { scheme: 'untitled', language: 'rsaml' }],
     synchronize: { fileEvents: vscode.workspace.createFileSystemWatcher('**/*.rsa') }
   };
   client = new LanguageClient('rsaml', 'RsaML', serverOptions, clientOptions);

@@ -4,6 +4,8 @@
  */
 package org.rsaml.text.ide.server;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -28,7 +30,15 @@ public class FilesOutsideFolders extends MultiRootWorkspaceConfigFactory {
 
     @Override
     public IWorkspaceConfig getWorkspaceConfig(List<WorkspaceFolder> folders) {
-        return new Workspace(super.getWorkspaceConfig(folders == null ? List.of() : folders));
+        List<WorkspaceFolder> given = folders == null ? List.of() : folders;
+        for (WorkspaceFolder folder : given) {
+            URI uri = getUriExtensions().toUri(folder.getUri());
+            if (uri.isFile() && !Files.isDirectory(Path.of(uri.toFileString()))) {
+                ServerLog.problem("the workspace folder " + folder.getUri() + " is not a directory on this machine:"
+                        + " only the documents the editor opens are checked");
+            }
+        }
+        return new Workspace(super.getWorkspaceConfig(given));
     }
 
     private static final class Workspace implements IWorkspaceConfig {

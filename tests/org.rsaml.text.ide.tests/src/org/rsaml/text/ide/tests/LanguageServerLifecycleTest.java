@@ -180,11 +180,14 @@ class LanguageServerLifecycleTest {
     void aRootUriThatDoesNotExist() throws Exception {
         start();
         InitializeParams init = new InitializeParams();
-        init.setRootUri(dir.resolve("no-such-folder").toUri().toString());
+        String folder = dir.resolve("no-such-folder").toUri().toString();
+        init.setRootUri(folder);
         initialize(init);
         String uri = open(EXP2.toUri().toString(), Files.readString(EXP2));
         assertTrue(hasRsa08(diagnosticsOf(uri)), "a file opened still has its findings" + said());
         shutdownAndExit();
+        assertTrue(said().contains("rsaml language-server: the workspace folder " + folder + " is not a directory on this machine"),
+                "the missing folder is named" + said());
     }
 
     @Test
