@@ -102,7 +102,10 @@ public final class RsamlLanguageServer {
             this.lifecycle = lifecycle;
         }
 
-        /** The error a failed request gets: what went wrong, in one line. */
+        /**
+         * The error a failed request gets, in one line: what could not be read (a file, a model), or for a fault of
+         * the server itself (a runtime exception) that it is one, to be reported; never the exception's trace.
+         */
         static ResponseError failure(Throwable thrown) {
             if (thrown instanceof ResponseErrorException refused) {
                 return refused.getResponseError();
@@ -111,10 +114,14 @@ public final class RsamlLanguageServer {
             while (cause.getCause() != null && cause.getCause() != cause) {
                 cause = cause.getCause();
             }
-            String message = cause.getMessage() == null ? cause.getClass().getSimpleName() : cause.getMessage();
-            message = message.replaceAll("\\s+", " ").strip();
-            if (message.length() > 300) {
-                message = message.substring(0, 300) + "...";
+            String message;
+            if (cause instanceof RuntimeException || cause instanceof Error || cause.getMessage() == null) {
+                message = "an internal error (" + cause.getClass().getSimpleName() + "); please report it with the request";
+            } else {
+                message = cause.getMessage().replaceAll("\\s+", " ").strip();
+                if (message.length() > 300) {
+                    message = message.substring(0, 300) + "...";
+                }
             }
             return new ResponseError(ResponseErrorCode.InternalError, "RsaML could not answer: " + message, null);
         }
@@ -126,8 +133,12 @@ public final class RsamlLanguageServer {
                 return message -> {
                     if (message instanceof ResponseMessage response && response.getRawId() != null) {
                         String request = requests.remove(response.getRawId());
-                        if (response.getError() != null && request != null && !routine(response.getError())) {
-                            ServerLog.problem(request + ": " + response.getError().getMessage());
+                        ResponseError error = response.getError();
+                        if (error != null && request != null && !routine(error)) {
+                            // The request and its document named, in the answer as on standard error.
+                            error = new ResponseError(error.getCode(), request + ": " + error.getMessage(), null);
+                            response.setError(error);
+                            ServerLog.problem(error.getMessage());
                         }
                     }
                     consumer.consume(message);

@@ -112,7 +112,8 @@ class LanguageServerLifecycleTest {
         assertTrue(process.waitFor(60, TimeUnit.SECONDS), "the server ends" + said());
         stderrReader.join(10_000);
         String err = stderr.toString(StandardCharsets.UTF_8);
-        assertFalse(err.contains("\tat ") || err.contains("Exception") || err.contains("SEVERE"), "no stack trace:" + said());
+        assertFalse(err.contains("\tat ") || err.contains("Caused by:") || err.contains("Exception in thread") || err.contains("SEVERE"),
+                "no stack trace:" + said());
         return process.exitValue();
     }
 
@@ -238,11 +239,19 @@ class LanguageServerLifecycleTest {
         CompletableFuture<?> hover = server.getTextDocumentService().hover(new HoverParams(new TextDocumentIdentifier(missing), new Position(0, 0)));
         ExecutionException failed = assertThrows(ExecutionException.class, () -> hover.get(30, TimeUnit.SECONDS), "an error");
         var error = ((ResponseErrorException) failed.getCause()).getResponseError();
-        assertEquals("RsaML could not answer: no such file", error.getMessage(), "the error says why, in one line");
+        assertEquals("textDocument/hover for " + missing + ": RsaML could not answer: no such file", error.getMessage(),
+                "the error names the request, its document and why, in one line");
         assertEquals(null, error.getData(), "no stack trace in the error's data");
         // The server goes on.
         String uri = open(EXP2.toUri().toString(), Files.readString(EXP2));
         assertTrue(hasRsa08(diagnosticsOf(uri)), "the server keeps working" + said());
+        // A position past the document's end: Xtext fails inside; the answer says it is the server's fault.
+        CompletableFuture<?> past = server.getTextDocumentService().hover(new HoverParams(new TextDocumentIdentifier(uri), new Position(100_000, 0)));
+        var internal = ((ResponseErrorException) assertThrows(ExecutionException.class, () -> past.get(30, TimeUnit.SECONDS), "an error")
+                .getCause()).getResponseError();
+        assertTrue(internal.getMessage().startsWith("textDocument/hover for " + uri + ": RsaML could not answer: an internal error (")
+                && internal.getMessage().endsWith("); please report it with the request"), "an internal error, to report: " + internal.getMessage());
+        assertEquals(null, internal.getData(), "no stack trace in the error's data");
         shutdownAndExit();
         assertTrue(said().contains("rsaml language-server: textDocument/hover for " + missing + ": RsaML could not answer: no such file"),
                 "the failed request is named with its document" + said());
