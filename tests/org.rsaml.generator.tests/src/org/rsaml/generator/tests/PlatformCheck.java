@@ -460,20 +460,23 @@ final class PlatformCheck {
             Loss loss = Loss.NONE;
             int top = r.tasks().stream().mapToInt(t -> t.task().priority()).max().orElse(0);
             long once = limit > Long.MAX_VALUE / 4 ? Long.MAX_VALUE / 4 : limit * 2;
+            // the processor's tasks with the bookkeeping on every job: the same in every step, only the platform's task changes
+            List<Task> withBookkeeping = new ArrayList<>();
+            Set<String> runToCompletion = new HashSet<>();
+            for (TaskResult t : r.tasks()) {
+                Task x = t.task();
+                withBookkeeping.add(new Task(x.name(), x.period(), x.deadline(), Math.addExact(x.cost(), BOOKKEEPING_NS), x.priority(), x.jitter(),
+                        x.group()));
+                if (!roundRobin) {
+                    runToCompletion.add(x.name());
+                }
+            }
+            runToCompletion.add(PLATFORM_TASK);
             for (int step = 0; step < 10_000; step++) {
                 loss = platform.loss(cpu, response);
-                List<Task> tasks = new ArrayList<>();
-                Set<String> runToCompletion = new HashSet<>();
-                for (TaskResult t : r.tasks()) {
-                    Task x = t.task();
-                    tasks.add(new Task(x.name(), x.period(), x.deadline(), Math.addExact(x.cost(), BOOKKEEPING_NS), x.priority(), x.jitter(), x.group()));
-                    if (!roundRobin) {
-                        runToCompletion.add(x.name());
-                    }
-                }
+                List<Task> tasks = new ArrayList<>(withBookkeeping);
                 // what the platform took in the window, once: a task above all, released with the job, whose period outlasts any response
                 tasks.add(new Task(PLATFORM_TASK, once, once, Math.max(1, loss.ns() + others.totalNs()), top + 1, 0, null));
-                runToCompletion.add(PLATFORM_TASK);
                 java.util.OptionalLong next = SchedulabilityAnalysis.analyse(r.processor(), r.policy(), tasks, runToCompletion).tasks().stream()
                         .filter(t -> t.task().name().equals(task.name())).findFirst().orElseThrow().responseTime();
                 String how = "the analysis run again with " + loss + " taken from the processor above every rank, "
