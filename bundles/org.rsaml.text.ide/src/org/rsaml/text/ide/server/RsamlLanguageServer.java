@@ -45,7 +45,8 @@ import com.google.inject.util.Modules;
  * Whatever the editor sends, the server answers or says on standard error, in one line, what it could not
  * do ({@link ServerLog}): an editor without a workspace folder, a document outside the folders
  * ({@link FilesOutsideFolders}), an unsaved one ({@link UntitledDocuments}), a change to a document never opened ({@link RsamlWorkspaceManager}), a request
- * after {@code shutdown} (refused as the LSP asks), {@code exit} without {@code shutdown}.
+ * after {@code shutdown} (refused as the LSP asks), {@code exit} without {@code shutdown}. A request at a position its
+ * document no longer has (an edit shortened it) is answered with nothing, as anywhere else with nothing ({@link RsamlLanguageServerImpl}).
  */
 public final class RsamlLanguageServer {
 
@@ -68,7 +69,7 @@ public final class RsamlLanguageServer {
             binder.bind(IMultiRootWorkspaceConfigFactory.class).to(FilesOutsideFolders.class);
             binder.bind(ILanguageServerShutdownAndExitHandler.class).toInstance(lifecycle);
         }));
-        LanguageServerImpl server = injector.getInstance(LanguageServerImpl.class);
+        LanguageServerImpl server = injector.getInstance(RsamlLanguageServerImpl.class);
         UntitledDocuments.register(injector.getInstance(IResourceServiceProvider.Registry.class));
         Launcher<LanguageClient> launcher = new Launcher.Builder<LanguageClient>()
                 .setLocalService(server)

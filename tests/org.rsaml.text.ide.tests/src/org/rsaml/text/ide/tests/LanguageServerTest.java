@@ -9,9 +9,13 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.OutputStream;
+import java.io.PrintStream;
 import java.io.PipedInputStream;
 import java.io.PipedOutputStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -24,9 +28,14 @@ import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 
 import org.eclipse.lsp4j.ClientCapabilities;
+import org.eclipse.lsp4j.CodeActionContext;
+import org.eclipse.lsp4j.CodeActionParams;
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.Diagnostic;
+import org.eclipse.lsp4j.DidChangeTextDocumentParams;
 import org.eclipse.lsp4j.DidOpenTextDocumentParams;
+import org.eclipse.lsp4j.DocumentHighlightParams;
+import org.eclipse.lsp4j.DocumentRangeFormattingParams;
 import org.eclipse.lsp4j.DocumentFormattingParams;
 import org.eclipse.lsp4j.DocumentSymbolCapabilities;
 import org.eclipse.lsp4j.DocumentSymbolParams;
@@ -39,16 +48,20 @@ import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.MessageActionItem;
 import org.eclipse.lsp4j.MessageParams;
 import org.eclipse.lsp4j.Position;
+import org.eclipse.lsp4j.PrepareRenameParams;
 import org.eclipse.lsp4j.PublishDiagnosticsParams;
 import org.eclipse.lsp4j.Range;
 import org.eclipse.lsp4j.ReferenceContext;
 import org.eclipse.lsp4j.ReferenceParams;
 import org.eclipse.lsp4j.RenameParams;
 import org.eclipse.lsp4j.ShowMessageRequestParams;
+import org.eclipse.lsp4j.SignatureHelpParams;
+import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
 import org.eclipse.lsp4j.TextDocumentClientCapabilities;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.eclipse.lsp4j.TextDocumentItem;
 import org.eclipse.lsp4j.TextEdit;
+import org.eclipse.lsp4j.VersionedTextDocumentIdentifier;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.jsonrpc.Launcher;
@@ -110,6 +123,8 @@ class LanguageServerTest {
     Path workspace;
 
     private final Client client = new Client();
+    /** What the server said on standard error (also shown on the tests' own). */
+    private final ByteArrayOutputStream said = new ByteArrayOutputStream();
     private LanguageServer server;
     private Thread serving;
 
@@ -155,7 +170,15 @@ class LanguageServerTest {
         PipedOutputStream serverOut = new PipedOutputStream(clientIn);
         serving = new Thread(() -> {
             try {
-                RsamlLanguageServer.serve(serverIn, serverOut, System.err);
+                RsamlLanguageServer.serve(serverIn, serverOut, new PrintStream(new OutputStream() {
+                    @Override
+                    public void write(int b) {
+                        synchronized (said) {
+                            said.write(b);
+                        }
+                        System.err.write(b);
+                    }
+                }, true, StandardCharsets.UTF_8));
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
@@ -262,6 +285,59 @@ class LanguageServerTest {
         assertTrue(contents.contains("real-time · periodic · T 50.0 ms · D 50.0 ms · C 5.0 ms"),
                 "the times with their units, as the diagrams label them: " + contents);
         assertTrue(contents.contains("worst-case response time 5 ms, slack 45 ms"), "the analysed timing: " + contents);
+    }
+
+    /**
+     * A request at a position that an edit sent before it made stale (a line the text no longer has, a character past the
+     * end of its line) is answered with nothing, as where there is nothing, by every request that takes a position or a
+     * range: never as an error, and nothing is said of it on standard error. At the text's positions the server answers.
+     */
+    @Test
+    void aPositionAnEditMadeStaleIsAnsweredWithNothing() throws Exception {
+        String uri = open("stale.rsa", ROBOT);
+        client.diagnosticsOf(uri).get(120, TimeUnit.SECONDS);
+        // The editor deletes the second layer and the connection; its requests still name positions of the longer text.
+        String shorter = ROBOT.substring(0, ROBOT.indexOf("  layer control")) + "}\n";
+        server.getTextDocumentService().didChange(new DidChangeTextDocumentParams(new VersionedTextDocumentIdentifier(uri, 2),
+                List.of(new TextDocumentContentChangeEvent(shorter))));
+        TextDocumentIdentifier doc = new TextDocumentIdentifier(uri);
+        Position pastTheEnd = at(ROBOT, "connect lidarDriver", 8);
+        Position pastTheLine = new Position(at(shorter, "period 50 ms", 0).getLine(), 40);
+        assertTrue(pastTheEnd.getLine() > shorter.lines().count(), "the position is past the shorter text's lines");
+        var text = server.getTextDocumentService();
+        for (Position p : List.of(pastTheEnd, pastTheLine)) {
+            String where = " at " + p + ", which the edited text does not have";
+            Range range = new Range(new Position(0, 0), p);
+            var hover = text.hover(new HoverParams(doc, p)).get(60, TimeUnit.SECONDS);
+            assertTrue(hover == null || hover.getContents().isLeft() && hover.getContents().getLeft().isEmpty()
+                    || hover.getContents().isRight() && hover.getContents().getRight().getValue().isEmpty(), "no hover" + where + ": " + hover);
+            assertEquals(List.of(), labels(text.completion(new CompletionParams(doc, p)).get(60, TimeUnit.SECONDS)), "no completion" + where);
+            var definition = text.definition(new DefinitionParams(doc, p)).get(60, TimeUnit.SECONDS);
+            assertTrue(definition == null || (definition.isLeft() ? definition.getLeft() : definition.getRight()).isEmpty(),
+                    "no definition" + where + ": " + definition);
+            assertEmpty(text.references(new ReferenceParams(doc, p, new ReferenceContext(true))).get(60, TimeUnit.SECONDS), "no references" + where);
+            assertEmpty(text.documentHighlight(new DocumentHighlightParams(doc, p)).get(60, TimeUnit.SECONDS), "no highlights" + where);
+            var signature = text.signatureHelp(new SignatureHelpParams(doc, p)).get(60, TimeUnit.SECONDS);
+            assertTrue(signature == null || signature.getSignatures() == null || signature.getSignatures().isEmpty(),
+                    "no signature help" + where + ": " + signature);
+            assertEquals(null, text.prepareRename(new PrepareRenameParams(doc, p)).get(60, TimeUnit.SECONDS), "nothing to rename" + where);
+            WorkspaceEdit rename = text.rename(new RenameParams(doc, p, "laserDriver")).get(60, TimeUnit.SECONDS);
+            assertTrue(rename == null || (rename.getChanges() == null || rename.getChanges().isEmpty())
+                    && (rename.getDocumentChanges() == null || rename.getDocumentChanges().isEmpty()), "no rename" + where + ": " + rename);
+            assertEmpty(text.codeAction(new CodeActionParams(doc, range, new CodeActionContext(List.of()))).get(60, TimeUnit.SECONDS),
+                    "no code actions up to" + where);
+            assertEmpty(text.rangeFormatting(new DocumentRangeFormattingParams(doc, new FormattingOptions(2, true), range))
+                    .get(60, TimeUnit.SECONDS), "no formatting up to" + where);
+        }
+        var hover = text.hover(new HoverParams(doc, at(shorter, "lidarDriver {", 3))).get(60, TimeUnit.SECONDS);
+        assertTrue(hover != null && hover.getContents().getRight().getValue().contains("lidarDriver"),
+                "a hover at a position the text has: " + hover);
+        String err = said.toString(StandardCharsets.UTF_8);
+        assertFalse(err.contains("internal error") || err.contains("could not answer"), "nothing said on standard error:\n" + err);
+    }
+
+    private static void assertEmpty(List<?> answer, String what) {
+        assertTrue(answer == null || answer.isEmpty(), what + ": " + answer);
     }
 
     @Test
