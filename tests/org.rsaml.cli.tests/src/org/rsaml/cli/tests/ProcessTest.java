@@ -110,6 +110,11 @@ class ProcessTest {
         assertFalse(loaded.contains(" picocli.CommandLine$Option "),
                 () -> "no picocli annotation is read when a command runs:\n"
                         + loaded.lines().filter(l -> l.contains("picocli.CommandLine$Option") || l.contains("$Proxy")).toList());
+        // Nor are picocli's converters that it finds by reflection (java.sql's and java.time's types): none of RsaML's
+        // options has such a type, and the look-up would load the java.sql module and java.time's formatters.
+        assertFalse(loaded.contains(" java.sql.") || loaded.contains(" java.time.format."),
+                () -> "no java.sql or java.time.format class is loaded when a command runs:\n"
+                        + loaded.lines().filter(l -> l.contains(" java.sql.") || l.contains(" java.time.format.")).limit(5).toList());
 
         // The jar is replaced where it was, its old modification time put back (a copy that keeps times, a restored
         // cache): its status-change time differs, so the stamp no longer fits and the class data is made again.

@@ -9,6 +9,7 @@ import java.io.InputStream;
 import java.io.OutputStreamWriter;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -62,6 +63,14 @@ public final class RsamlCli implements Runnable {
     /** Guice's switch for the classes it generates (method interception and fast construction), read once, when it loads. */
     private static final String GUICE_CLASS_GENERATION = "guice_bytecode_gen_option";
 
+    /**
+     * picocli's switch for its built-in converters that it finds by reflection (java.sql's and java.time's types,
+     * {@code Path}): regular expressions of the class names it leaves out. RsaML's options take none of those types but
+     * {@code Path}, whose converter {@link #run} registers; looking them up would load the java.sql module, java.time's
+     * formatters and their reflection on every run.
+     */
+    private static final String PICOCLI_CONVERTER_EXCLUDES = "picocli.converters.excludes";
+
     RsamlCli(Path workingDirectory) {
         this.workingDirectory = workingDirectory;
         spec = CommandSpecs.command("rsaml", this,
@@ -89,6 +98,9 @@ public final class RsamlCli implements Runnable {
         // on JDK 24 and later prints warnings about it that a user can do nothing about. A value given with -D stays.
         if (System.getProperty(GUICE_CLASS_GENERATION) == null) {
             System.setProperty(GUICE_CLASS_GENERATION, "DISABLED");
+        }
+        if (System.getProperty(PICOCLI_CONVERTER_EXCLUDES) == null) {
+            System.setProperty(PICOCLI_CONVERTER_EXCLUDES, ".*");
         }
         PrintWriter out = new PrintWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), true);
         PrintWriter err = new PrintWriter(new OutputStreamWriter(System.err, StandardCharsets.UTF_8), true);
@@ -122,6 +134,7 @@ public final class RsamlCli implements Runnable {
         commandLine.registerConverter(DiagramView.class, parsedBy(DiagramView::parse));
         commandLine.registerConverter(DiagramFormat.class, parsedBy(DiagramFormat::parse));
         commandLine.registerConverter(Target.class, parsedBy(Target::parse));
+        commandLine.registerConverter(Path.class, RsamlCli::path);
         commandLine.setExitCodeExceptionMapper(e -> ExitCodes.INPUT_ERROR);
         commandLine.setParameterExceptionHandler((e, arguments) -> {
             CommandLine cmd = e.getCommandLine();
@@ -183,6 +196,15 @@ public final class RsamlCli implements Runnable {
                 throw new CommandLine.TypeConversionException(e.getMessage());
             }
         };
+    }
+
+    /** A path as picocli's built-in converter reads it ({@code Paths.get}), with its words for one that is not. */
+    private static Path path(String value) {
+        try {
+            return Path.of(value);
+        } catch (InvalidPathException e) {
+            throw new CommandLine.TypeConversionException(String.format("cannot convert '%s' to %s (%s)", value, Path.class, e));
+        }
     }
 
     /** The commands or options closest to a misspelled one ({@code valdate}, {@code --fromat}), by edit distance. */
