@@ -104,7 +104,7 @@ final class OclExpressionTranslator {
             Code init = expression((OCLExpression<EClassifier>) v.getInitExpression());
             @SuppressWarnings("unchecked")
             Code in = expression((OCLExpression<EClassifier>) let.getIn());
-            return new Code("let(" + init.code + ", (" + javaType(v.getType()) + " v_" + v.getName() + ") -> " + in.code + ")", in.type);
+            return new Code("let(" + init.code + ", " + body(javaType(v.getType()), in.type, "v_" + v.getName(), in.code) + ")", in.type);
         }
         if (e instanceof IfExp<?> ifExp) {
             @SuppressWarnings("unchecked")
@@ -195,7 +195,7 @@ final class OclExpressionTranslator {
         Code a = args.isEmpty() ? null : args.get(0) instanceof TypeExp<?> ? null : expression(args.get(0));
         switch (name) {
         case "and", "or", "implies":
-            return new Code(name + "(() -> " + s.code + ", () -> " + a.code + ")", "Boolean");
+            return new Code(name + "(" + operand(s.code) + ", " + operand(a.code) + ")", "Boolean");
         case "not":
             return new Code("not(" + s.code + ")", "Boolean");
         case "=":
@@ -246,8 +246,25 @@ final class OclExpressionTranslator {
         Variable<EClassifier, ?> v = (Variable<EClassifier, ?>) iterator.getIterator().get(0);
         Code source = expression((OCLExpression<EClassifier>) iterator.getSource());
         Code body = expression((OCLExpression<EClassifier>) iterator.getBody());
-        return new Code(name + "(" + source.code + ", (" + javaType(v.getType()) + " v_" + v.getName() + ") -> " + body.code + ")",
-                "Boolean");
+        return new Code(name + "(" + source.code + ", " + body(javaType(v.getType()), name.equals("isUnique") ? "Object" : "Boolean",
+                "v_" + v.getName(), body.code) + ")", "Boolean");
+    }
+
+    /*
+     * Deferred operands and bodies are anonymous classes, not lambdas: the class data of the command line (a CDS archive
+     * on Java 17) holds both kinds of class, but each lambda is also linked at its first run through the JVM's bootstrap
+     * of method handles, some 0.1 ms apiece in a fresh process, 180 of them in a validation.
+     */
+
+    /** A deferred Boolean operand ({@code CompiledOcl.Operand}) evaluating {@code code}. */
+    private static String operand(String code) {
+        return "new Operand() { public Boolean get() { return " + code + "; } }";
+    }
+
+    /** A body ({@code CompiledOcl.Body}) from {@code type variable} to {@code code} of type {@code result}. */
+    private static String body(String type, String result, String variable, String code) {
+        return "new Body<" + type + ", " + result + ">() { public " + result + " apply(" + type + " " + variable + ") { return " + code
+                + "; } }";
     }
 
     private String javaType(EClassifier type) throws NotTranslated {
