@@ -8,12 +8,12 @@ import static org.rsaml.model.support.RsamlLabels.duration;
 import static org.rsaml.model.support.RsamlLabels.name;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.function.Function;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
@@ -50,89 +50,106 @@ import org.rsaml.model.support.RsamlTimes;
 public final class MessageParameters {
 
     private static final Pattern PARAMETER = Pattern.compile("\\{(\\w+)}");
-    private static final Map<String, Function<EObject, Object>> PARAMETERS = new LinkedHashMap<>();
+    /** The parameters computed from the element, in this class's order. */
+    private static final List<String> COMPUTED = List.of("element", "Element", "name",
+            // timing
+            "period", "delay", "execDuration", "missingTiming", "negativeTimes", "nonRepresentableTimes",
+            // layers
+            "layerName", "layerBudget", "declaredLayers", "layerCount", "layerNames", "layerLevels", "maxLevel",
+            // contents
+            "nonRealTimeFunctions", "nonRealTimeActions", "inputs", "neverHappens", "duplicates", "longTexts",
+            // connections
+            "source", "target", "sourceType", "targetType", "sourceLayer", "targetLayer", "skippedLayers",
+            // topics and packages
+            "portModule", "topicProblem", "packageProblem",
+            // subsumption
+            "owner", "ownerLayer", "levelBelow", "subsumes", "subsumable", "trigger", "linkDuration", "linkKind", "asserting",
+            "triggerSends", "lapseEffect",
+            // budgets of functions and actions
+            "exceededBudgets");
+
+    /** Every parameter a template may use: the computed ones, then the results the timing checks supply with a finding. */
+    private static final Set<String> NAMES;
 
     static {
-        put("element", MessageParameters::element);
-        put("Element", o -> capitalized(element(o)));
-        put("name", o -> "'" + name(o) + "'");
-        // timing
-        put("period", o -> duration(((RealTimeElement) o).getPeriod(), (TimeScaled) o));
-        put("delay", o -> duration(((RealTimeElement) o).getDelay(), (TimeScaled) o));
-        put("execDuration", o -> duration(((RealTimeElement) o).getExecDuration(), (TimeScaled) o));
-        put("missingTiming", MessageParameters::missingTiming);
-        put("negativeTimes", o -> times(o, false));
-        put("nonRepresentableTimes", o -> times(o, true));
-        // layers
-        put("layerName", o -> "'" + name(((Module) o).getLayer()) + "'");
-        put("layerBudget", o -> duration(((Module) o).getLayer().getMaxExecTime(), ((Module) o).getLayer()));
-        put("declaredLayers", o -> ((Architecture) o).getDeclaredLayers());
-        put("layerCount", o -> ((Architecture) o).getLayers().size());
-        put("layerNames", o -> names(((Architecture) o).getLayers()));
-        put("layerLevels", o -> ((Architecture) o).getLayers().stream().map(l -> String.valueOf(l.getLevel())).sorted()
-                .collect(Collectors.joining(", ")));
-        put("maxLevel", o -> ((Architecture) o).getLayers().size() - 1);
-        // contents
-        put("nonRealTimeFunctions", o -> quoted(((Module) o).getFunctions().stream()
-                .filter(f -> f.getType() != ElementType.REAL_TIME).collect(Collectors.toList())));
-        put("nonRealTimeActions", o -> quoted(((org.rsaml.model.Function) o).getActions().stream()
-                .filter(a -> a.getType() != ElementType.REAL_TIME).collect(Collectors.toList())));
-        put("inputs", o -> inputs((Module) o));
-        put("neverHappens", o -> neverHappens((Module) o));
-        put("duplicates", MessageParameters::duplicates);
-        put("longTexts", MessageParameters::longTexts);
-        // connections
-        put("source", o -> port(((Connection) o).getSource()));
-        put("target", o -> o instanceof Connection c ? port(c.getTarget()) : port(target((SubsumptionLink) o)));
-        put("sourceType", o -> RsamlLabels.dataType(((Connection) o).getSource()));
-        put("targetType", o -> RsamlLabels.dataType(((Connection) o).getTarget()));
-        put("sourceLayer", o -> layer(((Connection) o).getSource().getModule().getLayer()));
-        put("targetLayer", o -> layer(o instanceof Connection c ? c.getTarget().getModule().getLayer()
-                : target((SubsumptionLink) o).getModule().getLayer()));
-        put("skippedLayers", o -> {
-            Connection c = (Connection) o;
-            return Math.abs(c.getSource().getModule().getLayer().getLevel() - c.getTarget().getModule().getLayer().getLevel()) - 1;
-        });
-        // topics
-        put("portModule", o -> "'" + name(((Port) o).getModule()) + "'");
-        put("topicProblem", o -> ((Port) o).topicProblem());
-        // packages
-        put("packageProblem", o -> o instanceof Layer l ? l.packageProblem() : ((Processor) o).packageProblem());
-        // subsumption
-        put("owner", o -> "'" + name(owner((SubsumptionLink) o)) + "'");
-        put("ownerLayer", o -> layer(owner((SubsumptionLink) o).getLayer()));
-        put("levelBelow", o -> owner((SubsumptionLink) o).getLayer().getLevel() - 1);
-        put("subsumes", o -> o instanceof Inhibitor ? "inhibits output" : "suppresses entry");
-        put("subsumable", o -> o instanceof Inhibitor ? "inhibit outputs" : "suppress inputs");
-        put("trigger", o -> port(((SubsumptionLink) o).getTrigger()));
-        put("linkDuration", o -> duration(((SubsumptionLink) o).getDuration(), (TimeScaled) o));
-        put("linkKind", o -> o instanceof Inhibitor ? "inhibitor" : "suppressor");
-        put("asserting", o -> ((SubsumptionLink) o).getTrigger().getDataType() == DataType.BOOLEAN
-                ? "a boolean trigger: every true" : "a " + RsamlLabels.dataType(((SubsumptionLink) o).getTrigger()) + " trigger: every message");
-        put("triggerSends", o -> triggerSends((SubsumptionLink) o));
-        put("lapseEffect", o -> o instanceof Inhibitor
-                ? "output " + port(target((SubsumptionLink) o)) + " sends nothing"
-                : "entry " + port(target((SubsumptionLink) o)) + " receives nothing from its own connections");
-        // budgets of functions and actions
-        put("exceededBudgets", o -> exceededBudgets((RealTimeElement) o));
-        // results of the timing analysis, which the timing checks supply with the finding
-        for (String supplied : TimingChecks.PARAMETERS) {
-            put(supplied, o -> {
-                throw new IllegalArgumentException("{" + supplied + "} is supplied by the timing analysis, not by " + element(o));
-            });
-        }
+        Set<String> names = new LinkedHashSet<>(COMPUTED);
+        names.addAll(TimingChecks.PARAMETERS);
+        NAMES = Collections.unmodifiableSet(names);
     }
 
     private MessageParameters() {
     }
 
-    private static void put(String name, Function<EObject, Object> value) {
-        PARAMETERS.put(name, value);
-    }
-
     /** The names a template may use. */
     public static Set<String> names() {
-        return PARAMETERS.keySet();
+        return NAMES;
+    }
+
+    /*
+     * The value of one of the names, by a switch rather than a table of lambdas: each lambda would be linked through the
+     * JVM's method-handle bootstrap in every process that reports a finding.
+     */
+    private static Object value(String parameter, EObject o) {
+        return switch (parameter) {
+        case "element" -> element(o);
+        case "Element" -> capitalized(element(o));
+        case "name" -> "'" + name(o) + "'";
+        case "period" -> duration(((RealTimeElement) o).getPeriod(), (TimeScaled) o);
+        case "delay" -> duration(((RealTimeElement) o).getDelay(), (TimeScaled) o);
+        case "execDuration" -> duration(((RealTimeElement) o).getExecDuration(), (TimeScaled) o);
+        case "missingTiming" -> missingTiming(o);
+        case "negativeTimes" -> times(o, false);
+        case "nonRepresentableTimes" -> times(o, true);
+        case "layerName" -> "'" + name(((Module) o).getLayer()) + "'";
+        case "layerBudget" -> duration(((Module) o).getLayer().getMaxExecTime(), ((Module) o).getLayer());
+        case "declaredLayers" -> ((Architecture) o).getDeclaredLayers();
+        case "layerCount" -> ((Architecture) o).getLayers().size();
+        case "layerNames" -> names(((Architecture) o).getLayers());
+        case "layerLevels" -> ((Architecture) o).getLayers().stream().map(l -> String.valueOf(l.getLevel())).sorted()
+                .collect(Collectors.joining(", "));
+        case "maxLevel" -> ((Architecture) o).getLayers().size() - 1;
+        case "nonRealTimeFunctions" -> quoted(((Module) o).getFunctions().stream()
+                .filter(f -> f.getType() != ElementType.REAL_TIME).collect(Collectors.toList()));
+        case "nonRealTimeActions" -> quoted(((org.rsaml.model.Function) o).getActions().stream()
+                .filter(a -> a.getType() != ElementType.REAL_TIME).collect(Collectors.toList()));
+        case "inputs" -> inputs((Module) o);
+        case "neverHappens" -> neverHappens((Module) o);
+        case "duplicates" -> duplicates(o);
+        case "longTexts" -> longTexts(o);
+        case "source" -> port(((Connection) o).getSource());
+        case "target" -> o instanceof Connection c ? port(c.getTarget()) : port(target((SubsumptionLink) o));
+        case "sourceType" -> RsamlLabels.dataType(((Connection) o).getSource());
+        case "targetType" -> RsamlLabels.dataType(((Connection) o).getTarget());
+        case "sourceLayer" -> layer(((Connection) o).getSource().getModule().getLayer());
+        case "targetLayer" -> layer(o instanceof Connection c ? c.getTarget().getModule().getLayer()
+                : target((SubsumptionLink) o).getModule().getLayer());
+        case "skippedLayers" -> {
+            Connection c = (Connection) o;
+            yield Math.abs(c.getSource().getModule().getLayer().getLevel() - c.getTarget().getModule().getLayer().getLevel()) - 1;
+        }
+        case "portModule" -> "'" + name(((Port) o).getModule()) + "'";
+        case "topicProblem" -> ((Port) o).topicProblem();
+        case "packageProblem" -> o instanceof Layer l ? l.packageProblem() : ((Processor) o).packageProblem();
+        case "owner" -> "'" + name(owner((SubsumptionLink) o)) + "'";
+        case "ownerLayer" -> layer(owner((SubsumptionLink) o).getLayer());
+        case "levelBelow" -> owner((SubsumptionLink) o).getLayer().getLevel() - 1;
+        case "subsumes" -> o instanceof Inhibitor ? "inhibits output" : "suppresses entry";
+        case "subsumable" -> o instanceof Inhibitor ? "inhibit outputs" : "suppress inputs";
+        case "trigger" -> port(((SubsumptionLink) o).getTrigger());
+        case "linkDuration" -> duration(((SubsumptionLink) o).getDuration(), (TimeScaled) o);
+        case "linkKind" -> o instanceof Inhibitor ? "inhibitor" : "suppressor";
+        case "asserting" -> ((SubsumptionLink) o).getTrigger().getDataType() == DataType.BOOLEAN
+                ? "a boolean trigger: every true" : "a " + RsamlLabels.dataType(((SubsumptionLink) o).getTrigger()) + " trigger: every message";
+        case "triggerSends" -> triggerSends((SubsumptionLink) o);
+        case "lapseEffect" -> o instanceof Inhibitor
+                ? "output " + port(target((SubsumptionLink) o)) + " sends nothing"
+                : "entry " + port(target((SubsumptionLink) o)) + " receives nothing from its own connections";
+        case "exceededBudgets" -> exceededBudgets((RealTimeElement) o);
+        // results of the timing analysis, which the timing checks supply with the finding
+        default -> throw new IllegalArgumentException(TimingChecks.PARAMETERS.contains(parameter)
+                ? "{" + parameter + "} is supplied by the timing analysis, not by " + element(o)
+                : "unknown message parameter {" + parameter + "}");
+        };
     }
 
     /**
@@ -148,11 +165,11 @@ public final class MessageParameters {
         Matcher m = PARAMETER.matcher(template);
         StringBuilder out = new StringBuilder();
         while (m.find()) {
-            Function<EObject, Object> parameter = PARAMETERS.get(m.group(1));
-            if (parameter == null) {
-                throw new IllegalArgumentException("unknown message parameter {" + m.group(1) + "}");
+            String parameter = m.group(1);
+            if (!NAMES.contains(parameter)) {
+                throw new IllegalArgumentException("unknown message parameter {" + parameter + "}");
             }
-            Object value = supplied.containsKey(m.group(1)) ? supplied.get(m.group(1)) : parameter.apply(element);
+            Object value = supplied.containsKey(parameter) ? supplied.get(parameter) : value(parameter, element);
             m.appendReplacement(out, Matcher.quoteReplacement(String.valueOf(value)));
         }
         m.appendTail(out);
