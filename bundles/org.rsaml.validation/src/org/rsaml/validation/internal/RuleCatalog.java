@@ -4,6 +4,7 @@
  */
 package org.rsaml.validation.internal;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -21,6 +22,7 @@ import java.util.Set;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.zip.CRC32;
 
 import org.rsaml.validation.RsamlValidationSetup.RuleDefinitionException;
 import org.rsaml.validation.Rule;
@@ -40,6 +42,9 @@ public final class RuleCatalog {
     /** The file in the source tree, for messages and tools that read it from a clone. */
     public static final String SOURCE_FILE = "bundles/org.rsaml.validation" + RESOURCE;
 
+    /** The catalogue as Java ({@link CompiledRules}), written by the regeneration command. */
+    private static final String COMPILED = "org.rsaml.validation.internal.CompiledCatalog";
+
     /** What {@code source} says of the rule that reports EMF's structural checks. */
     public static final String EMF = "EMF";
 
@@ -53,14 +58,28 @@ public final class RuleCatalog {
     private RuleCatalog() {
     }
 
-    /** The rules of the catalogue in id order; throws {@link RuleDefinitionException} when it is incomplete. */
+    /**
+     * The rules of the catalogue in id order; throws {@link RuleDefinitionException} when it is incomplete. While the
+     * catalogue is the file {@code CompiledCatalog} was generated from (same length and CRC-32), its rules are taken
+     * from that class ({@link CompiledRules}), which the regeneration command wrote with {@link #parse} (refusing an incomplete catalogue),
+     * without parsing the file in every process; their messages' parameters are checked against this build's
+     * {@link MessageParameters} either way.
+     */
     public static List<Rule> load() {
         try (InputStream in = RuleCatalog.class.getResourceAsStream(RESOURCE)) {
             if (in == null) {
                 throw new RuleDefinitionException(List.of("the rule catalogue " + RESOURCE + " is missing from org.rsaml.validation"));
             }
+            byte[] catalogue = in.readAllBytes();
             List<String> problems = new ArrayList<>();
-            List<Rule> rules = parse(new InputStreamReader(in, StandardCharsets.UTF_8), problems);
+            List<Rule> rules = compiled(catalogue);
+            if (rules != null) {
+                for (Rule rule : rules) {
+                    unknownParameters(rule.id(), rule.message(), problems);
+                }
+            } else {
+                rules = parse(new InputStreamReader(new ByteArrayInputStream(catalogue), StandardCharsets.UTF_8), problems);
+            }
             if (!problems.isEmpty()) {
                 throw new RuleDefinitionException(problems);
             }
@@ -112,15 +131,7 @@ public final class RuleCatalog {
                         + "' (error, warning or info)");
                 continue;
             }
-            if (message != null) {
-                Matcher p = PARAMETER.matcher(message);
-                while (p.find()) {
-                    if (!MessageParameters.names().contains(p.group(1))) {
-                        problems.add(id + "'s message names an unknown parameter {" + p.group(1) + "}; known: "
-                                + String.join(", ", new TreeSet<>(MessageParameters.names())));
-                    }
-                }
-            }
+            unknownParameters(id, message, problems);
             List<String> constraints = names(properties, id, "constraints", ruleOfConstraint, "an invariant implements one rule",
                     problems);
             List<String> verdicts = names(properties, id, "verdicts", ruleOfVerdict, "a verdict is reported as one rule",
@@ -139,6 +150,41 @@ public final class RuleCatalog {
                     prerequisite.equals("true")));
         }
         return rules;
+    }
+
+    /**
+     * The rules of {@code CompiledCatalog} when {@code catalogue} is the file it was generated from, else {@code null}: the
+     * catalogue was edited since, or the class is absent (the generated code being made again).
+     */
+    private static List<Rule> compiled(byte[] catalogue) {
+        CompiledRules compiled;
+        try {
+            compiled = (CompiledRules) Class.forName(COMPILED, true, RuleCatalog.class.getClassLoader()).getDeclaredConstructor()
+                    .newInstance();
+        } catch (ClassNotFoundException e) {
+            return null;
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalStateException(COMPILED + " cannot be made: " + e, e);
+        }
+        if (catalogue.length != compiled.length()) {
+            return null;
+        }
+        CRC32 crc = new CRC32();
+        crc.update(catalogue);
+        return crc.getValue() == compiled.crc() ? compiled.rules() : null;
+    }
+
+    /** Adds a line to {@code problems} for each parameter {@code message} names that {@link MessageParameters} does not know. */
+    private static void unknownParameters(String id, String message, List<String> problems) {
+        if (message != null) {
+            Matcher p = PARAMETER.matcher(message);
+            while (p.find()) {
+                if (!MessageParameters.names().contains(p.group(1))) {
+                    problems.add(id + "'s message names an unknown parameter {" + p.group(1) + "}; known: "
+                            + String.join(", ", new TreeSet<>(MessageParameters.names())));
+                }
+            }
+        }
     }
 
     /** The one rule of source {@code EMF}, which reports EMF's structural checks and unreadable models. */

@@ -14,7 +14,7 @@ import org.rsaml.codegen.OclToJava.Translation;
  * {@code .ecore} still says what was compiled), the table of those left to the interpreter with the reason, and
  * one method per compiled invariant.
  */
-final class CompiledInvariantsWriter {
+public final class CompiledInvariantsWriter {
 
     private CompiledInvariantsWriter() {
     }
@@ -87,7 +87,7 @@ final class CompiledInvariantsWriter {
     }
 
     /** {@code text} as a Java string literal, in ASCII. */
-    static String literal(String text) {
+    public static String literal(String text) {
         StringBuilder b = new StringBuilder("\"");
         for (char c : text.toCharArray()) {
             switch (c) {

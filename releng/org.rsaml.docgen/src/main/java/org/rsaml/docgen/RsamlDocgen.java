@@ -24,7 +24,7 @@ import org.rsaml.text.grammar.Constructs;
 
 /**
  * Writes the documentation tables made from RsaML's sources: the rule table of {@code docs/rules.md} from the
- * rule catalogue ({@link RulesDocument}) and the language reference of {@code docs/textual-syntax.md} from the
+ * rule catalogue ({@link RulesDocument}), the catalogue as the Java class org.rsaml.validation runs ({@link CatalogueClass}) and the language reference of {@code docs/textual-syntax.md} from the
  * textual grammar and {@code examples-text/} ({@link LanguageReference}). Run by {@link RsamlCodegen#REGENERATE}
  * after the EMF and Xtext code is generated and the bundles it reads are compiled; {@code write} rewrites the
  * pages (a page already up to date is left alone), {@code check} only compares.
@@ -47,6 +47,13 @@ public final class RsamlDocgen {
         System.out.println("Regenerated the rule table of " + root.resolve(RulesDocument.PATH) + " from " + root.resolve(RulesDocument.CATALOGUE));
         rewrite(root, LanguageReference.PATH, languageReference(root, read(root, LanguageReference.PATH)));
         System.out.println("Regenerated the language reference of " + root.resolve(LanguageReference.PATH) + " from " + root.resolve(GRAMMAR));
+        Path catalogueClass = root.resolve(CatalogueClass.PATH);
+        String source = catalogueClass(root);
+        if (!Files.exists(catalogueClass) || !source.equals(read(root, CatalogueClass.PATH))) {
+            Files.createDirectories(catalogueClass.getParent());
+            Files.writeString(catalogueClass, source, StandardCharsets.UTF_8);
+        }
+        System.out.println("Regenerated the rule catalogue's class " + catalogueClass + " from " + root.resolve(RulesDocument.CATALOGUE));
     }
 
     /** The pages whose table differs from what {@link #write} would make of the sources. */
@@ -60,7 +67,15 @@ public final class RsamlDocgen {
         if (!languageReference(root, reference).equals(reference)) {
             stale.add(LanguageReference.PATH + " (the language reference)");
         }
+        if (!Files.exists(root.resolve(CatalogueClass.PATH)) || !catalogueClass(root).equals(read(root, CatalogueClass.PATH))) {
+            stale.add(CatalogueClass.PATH + " (the rule catalogue as Java)");
+        }
         return stale;
+    }
+
+    /** The rule catalogue of the clone at {@code root} as the Java class org.rsaml.validation runs. */
+    static String catalogueClass(Path root) throws IOException {
+        return CatalogueClass.source(Files.readAllBytes(root.resolve(RulesDocument.CATALOGUE)));
     }
 
     /** The page with its rule table produced from the catalogue of the clone at {@code root}. */

@@ -7,6 +7,8 @@ package org.rsaml.docgen;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -15,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.codegen.RsamlCodegen;
 import org.rsaml.tests.support.TestRepository;
+import org.rsaml.validation.internal.RuleCatalog;
 
 /** The committed tables are what the regeneration command makes of the sources; a stale one is found and rewritten. */
 class GeneratedDocsUpToDateTest {
@@ -28,8 +31,18 @@ class GeneratedDocsUpToDateTest {
     }
 
     @Test
+    void theRulesRsamlRunsAreTheCataloguesRules() throws Exception {
+        try (Reader catalogue = Files.newBufferedReader(ROOT.resolve(RulesDocument.CATALOGUE), StandardCharsets.UTF_8)) {
+            assertEquals(RulesDocument.read(catalogue), RuleCatalog.load(),
+                    "the rules org.rsaml.validation loads (from its CompiledCatalog while the catalogue is unchanged) are those parsed from "
+                            + RulesDocument.CATALOGUE);
+        }
+    }
+
+    @Test
     void aStaleRuleTableAndLanguageReferenceAreReportedAndRewritten(@TempDir Path copy) throws Exception {
-        for (String path : List.of(RulesDocument.CATALOGUE, RulesDocument.PATH, LanguageReference.PATH, RsamlDocgen.GRAMMAR)) {
+        for (String path : List.of(RulesDocument.CATALOGUE, RulesDocument.PATH, LanguageReference.PATH, RsamlDocgen.GRAMMAR,
+                CatalogueClass.PATH)) {
             Files.createDirectories(copy.resolve(path).getParent());
             Files.copy(ROOT.resolve(path), copy.resolve(path));
         }
@@ -47,12 +60,15 @@ class GeneratedDocsUpToDateTest {
         String edited = Files.readString(reference).replace(LanguageReference.END, "| a row written by hand |\n" + LanguageReference.END);
         Files.writeString(reference, edited);
 
-        assertEquals(List.of(RulesDocument.PATH + " (the rule table)", LanguageReference.PATH + " (the language reference)"),
-                RsamlDocgen.check(copy), "both stale tables are listed");
+        assertEquals(List.of(RulesDocument.PATH + " (the rule table)", LanguageReference.PATH + " (the language reference)",
+                CatalogueClass.PATH + " (the rule catalogue as Java)"), RsamlDocgen.check(copy),
+                "both stale tables and the catalogue's class are listed");
 
         RsamlDocgen.write(copy);
         assertTrue(Files.readString(copy.resolve(RulesDocument.PATH)).contains("add or remove layers. Or both. |"),
                 "regeneration writes the catalogue's new text into the table");
+        assertTrue(Files.readString(copy.resolve(CatalogueClass.PATH)).contains("add or remove layers. Or both.\","),
+                "regeneration writes the catalogue's new text into its class");
         assertEquals(Files.readString(ROOT.resolve(LanguageReference.PATH)), Files.readString(reference),
                 "regeneration replaces the hand-written row with the reference made from the grammar");
         assertEquals(List.of(), RsamlDocgen.check(copy), "nothing is stale after writing");
