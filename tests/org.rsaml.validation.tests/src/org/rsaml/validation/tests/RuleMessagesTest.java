@@ -5,13 +5,19 @@
 package org.rsaml.validation.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Collectors;
 
 import org.junit.jupiter.api.Test;
+import org.eclipse.emf.ecore.EObject;
+import org.rsaml.model.RsamlFactory;
 import org.rsaml.tests.support.TestRepository;
 import org.rsaml.validation.RsamlModelValidator;
+import org.rsaml.validation.internal.MessageParameters;
+import org.rsaml.validation.internal.TimingChecks;
 
 /** The messages of the rules a user meets on new kinds of models say what to change and name the limit. */
 class RuleMessagesTest {
@@ -24,6 +30,30 @@ class RuleMessagesTest {
 
     private static List<String> sorted(List<String> list) {
         return list.stream().sorted().collect(Collectors.toList());
+    }
+
+    /**
+     * Every name a template may use ({@code MessageParameters.names()}, which the catalogue's check reads) has a value
+     * computed for it, or is one the timing analysis supplies: the names are listed once for the check and once in the
+     * computation, and a name in the list alone would fail only when its rule fired.
+     */
+    @Test
+    void everyMessageParameterATemplateMayNameIsComputed() {
+        EObject element = RsamlFactory.eINSTANCE.createArchitecture();
+        List<String> unknown = new ArrayList<>();
+        for (String name : MessageParameters.names()) {
+            try {
+                MessageParameters.render("{" + name + "}", element);
+            } catch (IllegalArgumentException e) {
+                if (String.valueOf(e.getMessage()).contains("unknown message parameter")) {
+                    unknown.add(name);
+                }
+            } catch (RuntimeException e) {
+                // computed, but not for an architecture (a cast or a missing reference): the name is known
+            }
+        }
+        assertEquals(List.of(), unknown, "names a template may use that have no value computed for them");
+        assertTrue(MessageParameters.names().containsAll(TimingChecks.PARAMETERS), "the timing analysis' parameters are names too");
     }
 
     @Test
