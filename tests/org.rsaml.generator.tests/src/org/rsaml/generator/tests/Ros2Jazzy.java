@@ -102,7 +102,11 @@ final class Ros2Jazzy {
 
     /**
      * A bash command line run with ROS 2 sourced (and the workspaces {@code overlays}), Debian's
-     * Python first on PATH (ROS 2's scripts and colcon use /usr/bin/python3).
+     * Python first on PATH (ROS 2's scripts and colcon use /usr/bin/python3). It starts with SIGINT at
+     * its default disposition: a process started with SIGINT ignored keeps it ignored, and so does
+     * everything it starts, so under a build run as a background job (`./mvnw ... &`, `nohup`, a CI
+     * step in the background) {@code ros2 launch} and its nodes would never stop on the SIGINT the
+     * tests send them.
      */
     static List<String> bash(String script, Path... overlays) throws Exception {
         StringBuilder sb = new StringBuilder("set -e; export PATH=/usr/bin:/bin:$PATH; unset AMENT_PREFIX_PATH CMAKE_PREFIX_PATH COLCON_PREFIX_PATH; ");
@@ -111,7 +115,7 @@ final class Ros2Jazzy {
             sb.append("source '").append(o.resolve("setup.bash")).append("'; ");
         }
         sb.append(script);
-        return new ArrayList<>(List.of("bash", "-c", sb.toString()));
+        return new ArrayList<>(List.of("env", "--default-signal=INT", "bash", "-c", sb.toString()));
     }
 
     /** Builds every package under {@code source} with colcon into {@code work}/install; fails with colcon's output. */

@@ -193,4 +193,25 @@ class Ros2LaunchFilesTest {
         assertTrue(processes.contains("navigation_obstacle_detector 1") && processes.contains("control_velocity_controller 0"),
                 "without host:=, the board's nodes on CPU 1, the main host's on CPU 0:\n" + processes);
     }
+
+    /**
+     * A build run as a background job (`./mvnw verify &`, `nohup`, a CI step in the background) starts
+     * with SIGINT ignored, and an ignored signal stays ignored in everything it starts: `ros2 launch`
+     * and its nodes would then never stop on the SIGINT with which the tests (and a user) end a run.
+     * Every ROS 2 command of the tests starts with SIGINT at its default, whatever the build started with.
+     */
+    @Test
+    void rosCommandsStopOnSigintEvenWhenTheBuildIgnoresIt(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        List<String> command = new ArrayList<>(List.of("bash", "-c", "trap '' INT; grep SigIgn /proc/self/status; exec \"$@\"", "background"));
+        command.addAll(Ros2Jazzy.bash("grep SigIgn /proc/self/status"));
+        String[] lines = Tools.ok(tmp, 60, command.toArray(String[]::new)).lines().filter(l -> l.startsWith("SigIgn:")).toArray(String[]::new);
+        assertEquals(2, lines.length, () -> "expected the ignored signals of the background shell and of the ROS 2 command: " + String.join("\n", lines));
+        long sigint = 1L << (2 - 1);
+        assertTrue((Long.parseLong(lines[0].substring(7).trim(), 16) & sigint) != 0,
+                () -> "the background shell of this test should ignore SIGINT, as a background job does: " + lines[0]);
+        assertEquals(0, Long.parseLong(lines[1].substring(7).trim(), 16) & sigint,
+                () -> "a ROS 2 command started from a build that ignores SIGINT ignores it too, so ros2 launch would never stop on it: " + lines[1]);
+    }
 }

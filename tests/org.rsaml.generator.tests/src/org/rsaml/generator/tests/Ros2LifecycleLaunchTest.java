@@ -61,8 +61,7 @@ class Ros2LifecycleLaunchTest {
         for (String file : List.of(pkg + ".launch.py", pkg + "_processes.launch.py")) {
             long started = System.nanoTime();
             Path log = tmp.resolve(file + ".log");
-            // SIGINT at its default even where this test was started with it ignored (a background job): launch then ignores it.
-            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec env --default-signal=INT ros2 launch " + pkg + " " + file, install))
+            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + file, install))
                     .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
             Ros2Jazzy.isolate(pb.environment(), DOMAIN);
             Process launch = pb.start();
@@ -398,7 +397,7 @@ class Ros2LifecycleLaunchTest {
 
     private static Started start(Path install, String pkg, String executable, String name) throws Exception {
         Path log = tmp.resolve(name + ".log");
-        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec env --default-signal=INT \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable,
+        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable,
                 install))
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         Ros2Jazzy.isolate(pb.environment(), DOMAIN);
