@@ -23,12 +23,17 @@ void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, 
                 Clock::time_point done, Nanos cpu, Nanos stall) {
   if (s.jobs++ == 0) {
     s.first_release = from;
+    s.listed.reserve(rsaml_jobs::LISTED);
   }
   s.last_release = from;
   const Nanos response = std::chrono::duration_cast<Nanos>(done - from);
   s.worst_response = std::max(s.worst_response, response);
   s.worst_execution = std::max(s.worst_execution, cpu);
   s.worst_stall = std::max(s.worst_stall, stall);
+  // the steady clock is CLOCK_MONOTONIC (libstdc++ and libc++ on Linux), the platform monitor's clock
+  rsaml_jobs::record_instant(std::chrono::duration_cast<Nanos>(from.time_since_epoch()).count(),
+                             std::chrono::duration_cast<Nanos>(done.time_since_epoch()).count(), bounds.response.count(), s.worst_job,
+                             s.over_bound, s.listed);
   if (bounds.deadline.count() > 0 && response > bounds.deadline) {
     ++s.misses;
     Trace::report("miss " + label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
@@ -72,6 +77,12 @@ void summary(Clock::time_point start, const std::string& label, const JobStats& 
   o.worst_start_latency_ns = s.worst_start_latency.count();
   o.worst_stall_ns = s.worst_stall.count();
   o.sched = sched;
+  o.worst_job = s.worst_job;
+  o.over_bound = s.over_bound;
+  o.listed = s.listed;
+  for (const std::string& line : rsaml_jobs::over_bound_lines(o)) {
+    Trace::report(line);
+  }
   Trace::report(rsaml_jobs::line(o));
 }
 

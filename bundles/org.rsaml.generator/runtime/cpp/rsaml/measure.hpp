@@ -5,7 +5,9 @@
 // What each job of a timed release or a reaction is measured against, and what was measured.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "rsaml/clock.hpp"
 
@@ -32,6 +34,10 @@ struct JobStats {
   Nanos worst_stall{0};  // ready but not running during a job: its wall time (module's lock held) minus its CPU time
   Clock::time_point first_release{};  // of the first job; the summary gives it and the last since the run's start
   Clock::time_point last_release{};
+  // On CLOCK_MONOTONIC (the steady clock's own on Linux): the worst job, and the jobs over the plain bound (rsaml/jobs.hpp, record_instant).
+  std::array<std::int64_t, 2> worst_job{0, 0};
+  std::uint64_t over_bound = 0;
+  std::vector<std::array<std::int64_t, 2>> listed;
 };
 
 }  // namespace rsaml

@@ -8,12 +8,55 @@
 // libraries in one process (ROS 2 components) never mix their copies.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <ctime>
 #include <string>
+#include <vector>
 
 namespace rsaml_jobs {
 namespace {
+
+/** Now on CLOCK_MONOTONIC, in ns: the clock the tests' platform monitor records on, so that a job can be placed on its records. */
+inline std::int64_t monotonic_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return static_cast<std::int64_t>(t.tv_sec) * 1000000000LL + t.tv_nsec;
+}
+
+/** A job on CLOCK_MONOTONIC, in ns: its release and its completion. */
+using Instant = std::array<std::int64_t, 2>;
+
+/** How many of a release's jobs over its plain bound are listed: the first LISTED - 1, then the worst of the rest. */
+constexpr std::size_t LISTED = 32;
+
+/**
+ * Records where on CLOCK_MONOTONIC a job ran, for a check of the bound that places each job on the
+ * platform's timeline (docs/timing.md, "The platform's allowance"): the worst job so far (`worst`),
+ * and each job whose response exceeds the analysis's plain bound `bound_ns` (negative: none; a job
+ * within it needs no allowance), counted in `over_bound` and listed in `listed`, the first LISTED - 1
+ * of them and, in the last place, the worst of the rest, so that the worst is always listed. The
+ * caller holds its statistics' lock, and reserves `listed`'s room (LISTED) at its first job. Plain
+ * types only, so that each runtime keeps them in its own statistics.
+ */
+inline void record_instant(std::int64_t release_ns, std::int64_t done_ns, std::int64_t bound_ns, Instant& worst, std::uint64_t& over_bound,
+                           std::vector<Instant>& listed) {
+  const std::int64_t response = done_ns - release_ns;
+  if (worst[1] == 0 || response > worst[1] - worst[0]) {
+    worst = Instant{release_ns, done_ns};
+  }
+  if (bound_ns < 0 || response <= bound_ns) {
+    return;
+  }
+  ++over_bound;
+  if (listed.size() < LISTED) {
+    listed.push_back(Instant{release_ns, done_ns});
+  } else if (response > listed.back()[1] - listed.back()[0]) {
+    listed.back() = Instant{release_ns, done_ns};
+  }
+}
 
 /** What the model and the analysis say of a release's (or a module's reactions') jobs, and what was observed; times in ns. */
 struct Observed {
@@ -31,6 +74,9 @@ struct Observed {
   std::int64_t worst_start_latency_ns = 0;
   std::int64_t worst_stall_ns = 0;
   std::string sched;
+  Instant worst_job{0, 0};  // on CLOCK_MONOTONIC; {0, 0} without a job
+  std::uint64_t over_bound = 0;
+  std::vector<Instant> listed;
 };
 
 /**
@@ -64,7 +110,22 @@ inline std::string line(const Observed& o) {
          " ms bound " + (o.bound_ns >= 0 ? ms(o.bound_ns) + " ms" : std::string("none")) + " deadline " +
          (o.deadline_ns > 0 ? ms(o.deadline_ns) + " ms" : std::string("none")) + " worst-execution " + ms(o.worst_execution_ns) +
          " ms modeled " + ms(o.modeled_ns) + " ms worst-start-latency " + ms(o.worst_start_latency_ns) + " ms worst-stall " +
-         ms(o.worst_stall_ns) + " ms sched " + (o.sched.empty() ? std::string("default") : o.sched);
+         ms(o.worst_stall_ns) + " ms worst-job " +
+         (o.worst_job[1] != 0 ? std::to_string(o.worst_job[0]) + ".." + std::to_string(o.worst_job[1]) + " ns" : std::string("none")) +
+         " over-bound " + std::to_string(o.over_bound) + " listed " + std::to_string(o.listed.size()) + " sched " +
+         (o.sched.empty() ? std::string("default") : o.sched);
+}
+
+/**
+ * The lines that list the jobs over the plain bound, one each, printed with the summary line:
+ * `over-bound <label> job <release>..<done> ns` on CLOCK_MONOTONIC.
+ */
+inline std::vector<std::string> over_bound_lines(const Observed& o) {
+  std::vector<std::string> lines;
+  for (const Instant& j : o.listed) {
+    lines.push_back("over-bound " + o.label + " job " + std::to_string(j[0]) + ".." + std::to_string(j[1]) + " ns");
+  }
+  return lines;
 }
 
 }  // namespace

@@ -184,7 +184,8 @@ Schedule::~Schedule() {
     registry.erase(base_.get());
   }
   std::lock_guard<std::mutex> lock(stats_);
-  // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp).
+  summarized_ = true;
+  // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp), after the lines of the jobs over the plain bound.
   auto summary = [](const Jobs& r) {
     rsaml_jobs::Observed o;
     o.label = r.label;
@@ -201,10 +202,20 @@ Schedule::~Schedule() {
     o.worst_start_latency_ns = r.worst_latency_ns;
     o.worst_stall_ns = r.worst_stall_ns;
     o.sched = r.sched;
+    o.worst_job = r.worst_job;
+    o.over_bound = r.over_bound;
+    o.listed = r.listed;
+    for (const std::string& line : rsaml_jobs::over_bound_lines(o)) {
+      trace(line);
+    }
     trace(rsaml_jobs::line(o));
   };
   for (const Release& r : releases_) {
     summary(r);
+    if (r.executor_jobs > 0) {
+      trace("executor " + r.label + " jobs " + std::to_string(r.executor_jobs) + " worst " + ms(r.executor_worst_ns) + " ms mean " +
+            ms(r.executor_total_ns / static_cast<std::int64_t>(r.executor_jobs)) + " ms (its thread's CPU time between two jobs)");
+    }
   }
   if (reactions_) {
     if (data_) {  // the scheduling of the thread that ran them (its executor is stopped by now)
@@ -262,12 +273,14 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
   const std::int64_t dropped = (until - first + period_ns - 1) / period_ns;  // first + k * period < until
   const std::int64_t last = first + (dropped - 1) * period_ns;
   Release& r = releases_[release];
-  {
-    std::lock_guard<std::mutex> lock(stats_);
-    r.jobs += static_cast<std::uint64_t>(dropped);
-    r.misses += static_cast<std::uint64_t>(dropped);
-    r.last_release_ns = last;
+  // counted and said under one lock, before the summary or not at all
+  std::lock_guard<std::mutex> lock(stats_);
+  if (summarized_) {
+    return;
   }
+  r.jobs += static_cast<std::uint64_t>(dropped);
+  r.misses += static_cast<std::uint64_t>(dropped);
+  r.last_release_ns = last;
   trace("miss " + r.label + " released " + ms(first) + (dropped > 1 ? ".." + ms(last) : std::string()) + " ms not run (" +
         std::to_string(dropped) + (dropped > 1 ? " releases" : " release") + "): ROS 2's timer dropped " +
         (dropped > 1 ? "them" : "it") + ", as its previous release was called " + ms((called - expected).nanoseconds()) + " ms late");
@@ -311,37 +324,39 @@ Schedule::Measured Schedule::run_measured(std::int64_t cost_ns, const std::funct
 
 void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::Time& done, std::int64_t latency_ns,
                           const Measured& measured) {
+  const std::int64_t done_monotonic = rsaml_jobs::monotonic_ns();  // a moment after `done`, on the platform monitor's clock
   const std::int64_t execution_ns = measured.execution_ns;
   const std::int64_t response = (done - released).nanoseconds();
   const std::int64_t at = (released - started_).nanoseconds();
-  bool missed = false;
-  bool overran = false;
-  {
-    std::lock_guard<std::mutex> lock(stats_);
-    ++r.jobs;
-    if (r.first_release_ns < 0) {
-      r.first_release_ns = at;
-    }
-    r.last_release_ns = at;
-    r.worst_response_ns = std::max(r.worst_response_ns, response);
-    r.worst_execution_ns = std::max(r.worst_execution_ns, execution_ns);
-    r.worst_latency_ns = std::max(r.worst_latency_ns, latency_ns);
-    r.worst_stall_ns = std::max(r.worst_stall_ns, measured.stall_ns);
-    missed = r.deadline_ns > 0 && response > r.deadline_ns;
-    overran = r.cost_ns > 0 && execution_ns > r.cost_ns;
-    r.misses += missed ? 1 : 0;
-    r.overruns += overran ? 1 : 0;
+  // Counted and said under one lock: a job done after the summary is neither (the summary's misses are the miss lines).
+  std::lock_guard<std::mutex> lock(stats_);
+  if (summarized_) {
+    return;
   }
-  if (missed) {
+  if (r.jobs++ == 0) {
+    r.first_release_ns = at;
+    r.listed.reserve(rsaml_jobs::LISTED);
+  }
+  r.last_release_ns = at;
+  r.worst_response_ns = std::max(r.worst_response_ns, response);
+  r.worst_execution_ns = std::max(r.worst_execution_ns, execution_ns);
+  r.worst_latency_ns = std::max(r.worst_latency_ns, latency_ns);
+  r.worst_stall_ns = std::max(r.worst_stall_ns, measured.stall_ns);
+  // the node's clock may be the system's: the release placed on CLOCK_MONOTONIC by its response
+  rsaml_jobs::record_instant(done_monotonic - response, done_monotonic, r.bound_ns, r.worst_job, r.over_bound, r.listed);
+  if (r.deadline_ns > 0 && response > r.deadline_ns) {
+    ++r.misses;
     trace("miss " + r.label + " released " + ms(at) + " ms response " + ms(response) + " ms deadline " + ms(r.deadline_ns) + " ms");
   }
-  if (overran) {
+  if (r.cost_ns > 0 && execution_ns > r.cost_ns) {
+    ++r.overruns;
     trace("overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms");
   }
 }
 
 void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, const rclcpp::Time& called,
                              const std::function<void()>& body) {
+  const std::int64_t started_cpu = thread_cpu_ns();
   Release& r = releases_[release];
   Measured measured{};
   {
@@ -349,6 +364,16 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
     measured = run_measured(r.cost_ns, body);
   }
   record_job(r, released, clock_->now(), (called - released).nanoseconds(), measured);
+  // The executor's own CPU time since the previous job ended (waking, taking the timer, dispatching), measured, not modeled.
+  const std::int64_t ended_cpu = thread_cpu_ns();
+  std::lock_guard<std::mutex> lock(stats_);
+  if (r.job_end_cpu_ns >= 0) {
+    const std::int64_t executor = started_cpu - r.job_end_cpu_ns;
+    ++r.executor_jobs;
+    r.executor_worst_ns = std::max(r.executor_worst_ns, executor);
+    r.executor_total_ns += executor;
+  }
+  r.job_end_cpu_ns = ended_cpu;
 }
 
 void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {

@@ -12,6 +12,7 @@
 // reported.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -78,6 +79,10 @@ struct Jobs {
   std::int64_t worst_stall_ns = 0;  // ready but not running during a job (node's lock held): wall time minus CPU time
   std::int64_t first_release_ns = -1;
   std::int64_t last_release_ns = -1;
+  // On CLOCK_MONOTONIC: the worst job, and the jobs over the plain bound (rsaml/jobs.hpp, record_instant).
+  std::array<std::int64_t, 2> worst_job{0, 0};
+  std::uint64_t over_bound = 0;
+  std::vector<std::array<std::int64_t, 2>> listed;
 };
 
 /** A timed release of a node: its jobs and how its thread is scheduled. */
@@ -87,6 +92,11 @@ struct Release : Jobs {
   bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
   std::int64_t period_ns = 0;
   rclcpp::CallbackGroup::SharedPtr group;
+  // The executor's own work for a job: its thread's CPU time from the end of one job to the start of the next.
+  std::int64_t job_end_cpu_ns = -1;  // -1 before the first job
+  std::uint64_t executor_jobs = 0;
+  std::int64_t executor_worst_ns = 0;
+  std::int64_t executor_total_ns = 0;
 };
 
 /** Messages received at one entry port. */
@@ -234,6 +244,9 @@ class Schedule {
   rclcpp::Time started_;
   std::mutex activation_;
   std::mutex stats_;
+  // Set under stats_ when the summary is written: a job done after it is neither counted nor said, so
+  // that the summary's misses and the miss lines are the same jobs.
+  bool summarized_ = false;
   std::deque<Release> releases_;
   std::deque<Arrivals> arrivals_;
   std::unique_ptr<Jobs> reactions_;  // null when the node does not react to data

@@ -187,7 +187,7 @@ final class CppJobCheck {
                 }
             }
             PlatformCheck.BoundCheck check = PlatformCheck.boundCheck("JobTimingTest " + what, others, platform, TimingAnalysis.analyse(arch),
-                    summaries, label -> cpuOf.getOrDefault(label, -1));
+                    summaries, label -> cpuOf.getOrDefault(label, -1), PlatformCheck.BOOKKEEPING_NS);
             allowance = check.allowance();
             if (allowance == null) {
                 checks.forEach(c -> unchecked.add(c.label() + " (" + check.notChecked() + ")"));
@@ -204,7 +204,7 @@ final class CppJobCheck {
                 System.out.printf(Locale.ROOT, "JobTimingTest %s: %s %d jobs, worst response %s (start latency %s, stall %s), %s, %s%n",
                         what, c.label(), s.jobs(), JobTimingTest.ms(s.worstNs()), JobTimingTest.ms(s.latencyNs()), JobTimingTest.ms(s.stallNs()),
                         allowance.explain(c.label()), s.sched());
-                if (!allowance.admits(c.label(), s.worstNs())) {
+                if (!allowance.admits(c.label())) {
                     contradictions.add(c.label() + ": worst observed response " + JobTimingTest.ms(s.worstNs()) + " exceeds its bound: "
                             + allowance.explain(c.label()));
                 }

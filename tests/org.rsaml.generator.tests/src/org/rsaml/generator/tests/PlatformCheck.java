@@ -68,8 +68,40 @@ final class PlatformCheck {
      */
     static final long BOOKKEEPING_NS = 300_000;
 
+    /**
+     * Stated, and measured in every run: on ROS 2, the executor's own CPU work for a job beyond {@link #BOOKKEEPING_NS},
+     * which a node's release thread does at its rank between two of its jobs (waking, taking the timer, dispatching the
+     * callback) and the C++ runtime does not. Each node prints what it measured
+     * ({@code executor <release> jobs N worst X ms mean Y ms}); a run whose worst exceeds this is checked with its own
+     * worst instead ({@link #ros2BookkeepingNs}), so the check never counts less than was measured.
+     */
+    static final long ROS2_EXECUTOR_NS = 100_000;
+
+    private static final Pattern EXECUTOR = Pattern.compile("\\] executor (\\S+) jobs (\\d+) worst ([0-9.]+) ms mean ([0-9.]+) ms");
+
+    /**
+     * The bookkeeping of every job on ROS 2: {@link #BOOKKEEPING_NS} and the executor's work, {@link #ROS2_EXECUTOR_NS}
+     * or, where a node of the run measured more for a job, the most it measured.
+     */
+    static long ros2BookkeepingNs(String output) {
+        return BOOKKEEPING_NS + Math.max(ROS2_EXECUTOR_NS, ros2ExecutorWorstNs(output));
+    }
+
+    /** The most CPU time a ROS 2 release thread of the run spent between two of its jobs, as its node measured it; 0 when none said. */
+    static long ros2ExecutorWorstNs(String output) {
+        long worst = 0;
+        Matcher m = EXECUTOR.matcher(output);
+        while (m.find()) {
+            worst = Math.max(worst, Math.round(Double.parseDouble(m.group(3)) * 1e6));
+        }
+        return worst;
+    }
+
     /** The CPU of a SCHED_DEADLINE thread, which the kernel runs on any: its loss is the time every CPU was taken at once. */
     static final int EVERY_CPU = -2;
+
+    /** The name of the task that stands for what the platform took, in the analysis run again. */
+    private static final String PLATFORM_TASK = "the platform (as measured)";
 
     /** A re-analysed bound beyond this many times the deadline is no bound: the check fails, saying so. */
     static final long UNBOUNDED_DEADLINES = 100;
@@ -101,6 +133,43 @@ final class PlatformCheck {
             return best;
         }
 
+        /** The time these intervals cover between {@code fromNs} and {@code toNs}. */
+        long coveredIn(long fromNs, long toNs) {
+            long sum = 0;
+            for (int i = firstEndingAfter(fromNs); i < starts.length && starts[i] < toNs; i++) {
+                sum += Math.min(ends[i], toNs) - Math.max(starts[i], fromNs);
+            }
+            return sum;
+        }
+
+        /** The index of the longest interval between {@code fromNs} and {@code toNs} (as cut by them), -1 when none. */
+        int longestIn(long fromNs, long toNs) {
+            int at = -1;
+            long best = 0;
+            for (int i = firstEndingAfter(fromNs); i < starts.length && starts[i] < toNs; i++) {
+                long length = Math.min(ends[i], toNs) - Math.max(starts[i], fromNs);
+                if (at < 0 || length > best) {
+                    at = i;
+                    best = length;
+                }
+            }
+            return at;
+        }
+
+        private int firstEndingAfter(long ns) {
+            int lo = 0;
+            int hi = ends.length;
+            while (lo < hi) {
+                int mid = (lo + hi) >>> 1;
+                if (ends[mid] <= ns) {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            return lo;
+        }
+
         /** The index of the longest interval, -1 when none. */
         int longest() {
             int at = -1;
@@ -116,17 +185,20 @@ final class PlatformCheck {
     /**
      * The platform's loss used for one bound: at most {@code ns} of the window of {@code windowNs} on
      * {@code cpu} (-1: the worst of every CPU, for a thread that is not pinned) went to something other
-     * than the model; the longest single interval the monitor recorded there, and when (after the run's start).
+     * than the model; the window starts {@code windowAtNs} after the run's start (-1: anywhere in the
+     * run, the worst such window); the longest single interval the monitor recorded there, and when
+     * (after the run's start).
      */
-    record Loss(int cpu, long windowNs, long ns, long longestNs, long longestAtNs) {
-        static final Loss NONE = new Loss(-1, 0, 0, 0, 0);
+    record Loss(int cpu, long windowAtNs, long windowNs, long ns, long longestNs, long longestAtNs) {
+        static final Loss NONE = new Loss(-1, -1, 0, 0, 0, 0);
 
         @Override
         public String toString() {
             return JobTimingTest.ms(ns) + " lost on " + (cpu == EVERY_CPU ? "every CPU at once (a SCHED_DEADLINE thread, which may run on any)"
                     : cpu < 0 ? "the worst CPU (the thread is not pinned)" : "CPU " + cpu)
-                    + " in a window of " + JobTimingTest.ms(windowNs) + " (its longest single delay " + JobTimingTest.ms(longestNs) + " at "
-                    + JobTimingTest.ms(longestAtNs) + " into the run)";
+                    + (windowAtNs < 0 ? " in a window of " + JobTimingTest.ms(windowNs)
+                            : " from " + JobTimingTest.ms(windowAtNs).replace(" ms", "") + " to " + JobTimingTest.ms(windowAtNs + windowNs) + " into the run")
+                    + " (its longest single delay " + JobTimingTest.ms(longestNs) + " at " + JobTimingTest.ms(longestAtNs) + " into the run)";
         }
     }
 
@@ -232,13 +304,45 @@ final class PlatformCheck {
                 }
                 long ns = Math.max(0, c.maxCovered(windowNs) - aboveMonitorNs(windowNs));
                 int longest = c.longest();
-                Loss l = new Loss(cpu, windowNs, ns, longest < 0 ? 0 : c.ends()[longest] - c.starts()[longest],
+                Loss l = new Loss(cpu, -1, windowNs, ns, longest < 0 ? 0 : c.ends()[longest] - c.starts()[longest],
                         longest < 0 ? 0 : c.starts()[longest] - fromNs);
                 if (worst == null || l.ns() > worst.ns()) {
                     worst = l;
                 }
             }
-            return worst != null ? worst : new Loss(cpu, windowNs, 0, 0, 0);
+            return worst != null ? worst : new Loss(cpu, -1, windowNs, 0, 0, 0);
+        }
+
+        /**
+         * The time lost on {@code cpu} (-1: the worst CPU) between {@code fromNs} and {@code toNs} (CLOCK_MONOTONIC), less what
+         * the model's threads above the monitor may have run there: the loss in one job's own window.
+         */
+        Loss lossIn(int cpu, long fromNs, long toNs) {
+            long from = Math.max(fromNs, this.fromNs);
+            long to = Math.max(from, Math.min(toNs, this.toNs));
+            long window = to - from;
+            List<CpuRecords> which = new ArrayList<>();
+            if (cpu == EVERY_CPU && !aboveMonitor.isEmpty() && aboveMonitor.size() <= cpus.size()) {
+                which.add(everyCpu());
+            } else {
+                for (CpuRecords c : cpus) {
+                    if (cpu < 0 || c.cpu() == cpu) {
+                        which.add(c);
+                    }
+                }
+            }
+            Loss worst = null;
+            for (CpuRecords c : which) {
+                long ns = c.cpu() == EVERY_CPU ? c.coveredIn(from, to) : Math.max(0, c.coveredIn(from, to) - aboveMonitorNs(window));
+                int longest = c.longestIn(from, to);
+                Loss l = new Loss(cpu, from - this.fromNs, window, ns,
+                        longest < 0 ? 0 : Math.min(c.ends()[longest], to) - Math.max(c.starts()[longest], from),
+                        longest < 0 ? 0 : Math.max(c.starts()[longest], from) - this.fromNs);
+                if (worst == null || l.ns() > worst.ns()) {
+                    worst = l;
+                }
+            }
+            return worst != null ? worst : new Loss(cpu, from - this.fromNs, window, 0, 0, 0);
         }
 
         /**
@@ -248,6 +352,12 @@ final class PlatformCheck {
          * work, beside another deadline job: the check is that much looser). Its longest single delay: on any CPU.
          */
         private Loss everyCpuAtOnce(long windowNs) {
+            Loss any = loss(-1, windowNs);
+            return new Loss(EVERY_CPU, -1, windowNs, everyCpu().maxCovered(windowNs), any.longestNs(), any.longestAtNs());
+        }
+
+        /** The intervals during which every CPU's monitor was delayed at once. */
+        private CpuRecords everyCpu() {
             long[] starts = cpus.get(0).starts();
             long[] ends = cpus.get(0).ends();
             for (CpuRecords c : cpus.subList(1, cpus.size())) {
@@ -267,9 +377,7 @@ final class PlatformCheck {
                 starts = both.stream().mapToLong(x -> x[0]).toArray();
                 ends = both.stream().mapToLong(x -> x[1]).toArray();
             }
-            Loss any = loss(-1, windowNs);
-            return new Loss(EVERY_CPU, windowNs, new CpuRecords(EVERY_CPU, "", false, starts, ends).maxCovered(windowNs), any.longestNs(),
-                    any.longestAtNs());
+            return new CpuRecords(EVERY_CPU, "", false, starts, ends);
         }
 
         /** The most CPU time the model's SCHED_DEADLINE threads may take in a window: each its runtime in every period the window touches. */
@@ -380,33 +488,209 @@ final class PlatformCheck {
     }
 
     /**
-     * One task's bound with the platform as measured: {@code boundNs} (-1: none, {@code why} says why),
-     * from its analysed bound, the loss it took ({@code loss}) and how ({@code how}); or not checked at
-     * all ({@code unchecked} says why).
+     * One job's check: released at {@code releaseNs} (CLOCK_MONOTONIC; -1 for the check that stands for the jobs the
+     * program did not list, {@code unlisted}), its response {@code responseNs}, and its bound with the platform as
+     * measured ({@code boundNs}, -1: none, {@code why} says why), from the loss it took ({@code loss}: in the job's own
+     * window, or for the unlisted jobs the most in any window as long) and how ({@code how}).
      */
-    record Bound(long analysedNs, long boundNs, Loss loss, String how, String why, String unchecked, boolean overloaded) {
+    record JobCheck(long releaseNs, long responseNs, long boundNs, Loss loss, String how, String why, boolean unlisted) {
+        boolean passes() {
+            return boundNs >= 0 && responseNs <= boundNs;
+        }
+
+        /** For a message: the job, its response, its bound with the loss it took and how. */
+        String describe(long runStartNs) {
+            return (unlisted ? "the jobs over it that the program did not list, by the worst response "
+                    : "the job released " + JobTimingTest.ms(releaseNs - runStartNs) + " into the run, response ")
+                    + JobTimingTest.ms(responseNs) + (passes() ? " within" : " exceeds") + " its bound with the platform as measured: "
+                    + (boundNs < 0 ? "no bound (" + why + ")" : JobTimingTest.ms(boundNs)) + ", by " + how;
+        }
+    }
+
+    /**
+     * One task's bound check: its analysed bound, how far before a job's completion the job's window starts
+     * ({@code windowNs}: the longest its level's busy period can last with the platform's worst loss of the run, or the
+     * whole run before the job where that has no bound), and each job over the analysed bound checked ({@code jobs});
+     * or not checked at all ({@code unchecked} says why).
+     */
+    record Bound(long analysedNs, long windowNs, List<JobCheck> jobs, String unchecked, TaskCheck task) {
+        /** The job that decides: the first that fails, else the one closest to its bound; null when no job exceeded the analysed bound. */
+        JobCheck decisive() {
+            JobCheck closest = null;
+            for (JobCheck j : jobs) {
+                if (!j.passes()) {
+                    return j;
+                }
+                if (closest == null || j.boundNs() - j.responseNs() < closest.boundNs() - closest.responseNs()) {
+                    closest = j;
+                }
+            }
+            return closest;
+        }
+    }
+
+    /**
+     * The check of one task's jobs against its bound with the platform as measured. A job that responded in
+     * {@code r} and completed at {@code f} ran in its level's busy period, which began at some {@code t0 <= f - r}
+     * with no work of its rank or above pending; what delayed it is that work released from {@code t0} on, one job
+     * of a lower rank holding the CPU or the lock at {@code t0} (blocking), and what the platform took between
+     * {@code t0} and {@code f}: a delay before {@code t0} cannot reach it, one between {@code t0} and its release can
+     * (it pushes the work of higher ranks into the job). That busy period lasts at most {@code L}, the least
+     * {@code L >= } the bound with {@code blocking + sum over the ranks at or above of ceil((L + J) / T) (C +
+     * bookkeeping) + loss(L) + others <= L}, where {@code loss(L)} is the most the platform took in any window of
+     * {@code L} of the run, so {@code t0 >= f - L}: the job's loss is what the monitor recorded in
+     * {@code [f - L, f]} ({@link Platform#lossIn}), and the job's bound the analysis run again with that loss as a
+     * top-rank job released with it ({@link #at}). On a processor not analysed by response times (EDF) the busy
+     * period is the processor's (every task), and the bound the plain sum. Jobs the program did not list are held,
+     * by the worst response, to the bound with the most the platform lost in any window of {@code L}
+     * ({@link #anywhere}).
+     */
+    static final class TaskCheck {
+        private final Platform platform;
+        private final OtherRealtime.Use others;
+        private final ProcessorResult processor;
+        private final Task task;
+        private final long bound;
+        private final int cpu;
+        private final boolean reanalysable;
+        private final long bookkeepingNs;
+        private final List<Task> withBookkeeping = new ArrayList<>();
+        private final Set<String> runToCompletion = new HashSet<>();
+        private final long windowNs;
+        private final int top;
+
+        TaskCheck(Platform platform, OtherRealtime.Use others, ProcessorTiming p, Task task, long bound, int cpu, boolean reanalysable,
+                long bookkeepingNs) {
+            this.platform = platform;
+            this.others = others;
+            this.processor = p.result();
+            this.task = task;
+            this.bound = bound;
+            this.cpu = cpu;
+            this.reanalysable = reanalysable;
+            this.bookkeepingNs = bookkeepingNs;
+            boolean roundRobin = p.element() != null && p.element().isSetSchedPolicy() && p.element().getSchedPolicy() == SchedulingPolicy.RR;
+            for (TaskResult t : processor.tasks()) {
+                Task x = t.task();
+                withBookkeeping.add(new Task(x.name(), x.period(), x.deadline(), Math.addExact(x.cost(), bookkeepingNs), x.priority(), x.jitter(),
+                        x.group()));
+                if (!roundRobin) {
+                    runToCompletion.add(x.name());
+                }
+            }
+            runToCompletion.add(PLATFORM_TASK);
+            this.top = processor.tasks().stream().mapToInt(t -> t.task().priority()).max().orElse(0);
+            this.windowNs = busyPeriod();
+        }
+
+        /** The longest the level's busy period can last with the platform's worst loss (see above); the run's length where it has no bound within it. */
+        private long busyPeriod() {
+            long run = Math.max(1, platform.toNs() - platform.fromNs());
+            boolean byRank = reanalysable;
+            List<Task> level = new ArrayList<>();
+            Set<String> groups = new HashSet<>();
+            for (Task x : withBookkeeping) {
+                if (!byRank || x.priority() >= task.priority()) {
+                    level.add(x);
+                    if (x.group() != null) {
+                        groups.add(x.group());
+                    }
+                }
+            }
+            // a job of a lower rank holding a lock of the level's when the busy period began (one, as the analysis counts it)
+            long blocking = 0;
+            for (Task x : withBookkeeping) {
+                if (!level.contains(x) && x.group() != null && groups.contains(x.group())) {
+                    blocking = Math.max(blocking, x.cost());
+                }
+            }
+            long length = Math.max(1, bound);
+            for (int step = 0; step < 10_000; step++) {
+                long next = blocking + others.totalNs() + platform.loss(cpu, length).ns();
+                for (Task x : level) {
+                    next += ((length + x.jitter() + x.period() - 1) / x.period()) * x.cost();
+                    if (next > run) {
+                        return run;
+                    }
+                }
+                if (next <= length) {
+                    return length;
+                }
+                length = next;
+            }
+            return run;
+        }
+
+        /** The job released at {@code releaseNs} and done at {@code doneNs} (CLOCK_MONOTONIC), with the loss in its own window. */
+        JobCheck at(long releaseNs, long doneNs) {
+            return with(platform.lossIn(cpu, doneNs - windowNs, doneNs), releaseNs, doneNs - releaseNs, false);
+        }
+
+        /** A job of {@code responseNs} somewhere in the run, with the most the platform lost in any window as long as its window. */
+        JobCheck anywhere(long responseNs) {
+            return with(platform.loss(cpu, windowNs), -1, responseNs, true);
+        }
+
+        private JobCheck with(Loss loss, long releaseNs, long responseNs, boolean unlisted) {
+            long limit = task.deadline() > Long.MAX_VALUE / UNBOUNDED_DEADLINES ? Long.MAX_VALUE : task.deadline() * UNBOUNDED_DEADLINES;
+            String othersSaid = others.ranNs().isEmpty() ? ""
+                    : ", and " + JobTimingTest.ms(others.totalNs()) + " of other programs' real-time threads (" + others + ") taken too";
+            String window = " (the job's window: " + JobTimingTest.ms(windowNs) + " up to its completion, the longest its level's busy period"
+                    + " can last)";
+            if (reanalysable) {
+                long once = limit > Long.MAX_VALUE / 4 ? Long.MAX_VALUE / 4 : limit * 2;
+                List<Task> tasks = new ArrayList<>(withBookkeeping);
+                // what the platform took in the window, once: a task above all, released with the job, whose period outlasts any response
+                tasks.add(new Task(PLATFORM_TASK, once, once, Math.max(1, loss.ns() + others.totalNs()), top + 1, 0, null));
+                java.util.OptionalLong r = SchedulabilityAnalysis.analyse(processor.processor(), processor.policy(), tasks, runToCompletion).tasks()
+                        .stream().filter(t -> t.task().name().equals(task.name())).findFirst().orElseThrow().responseTime();
+                String how = "the analysis run again with " + loss + window + " taken from the processor above every rank, "
+                        + JobTimingTest.ms(bookkeepingNs) + " of bookkeeping added to every job" + othersSaid;
+                if (r.isPresent() && r.getAsLong() <= limit) {
+                    return new JobCheck(releaseNs, responseNs, r.getAsLong(), loss, how, null, unlisted);
+                }
+                if (!bookkeepingOverloads()) {
+                    return new JobCheck(releaseNs, responseNs, -1, loss, how, "the analysis finds no response within " + UNBOUNDED_DEADLINES
+                            + " times the deadline: the platform left too little of the CPU", unlisted);
+                }
+            }
+            long sum = bound + bookkeepingNs + others.totalNs() + loss.ns();
+            String how = "the bound plus " + loss + window + ", " + JobTimingTest.ms(bookkeepingNs) + " of bookkeeping"
+                    + (others.ranNs().isEmpty() ? "" : " and " + JobTimingTest.ms(others.totalNs()) + " of other programs' real-time threads ("
+                            + others + ")")
+                    + (reanalysable ? " (the analysis run again with " + JobTimingTest.ms(bookkeepingNs)
+                            + " of bookkeeping on every job finds no bound: the processor is overloaded with it)" : "");
+            return sum > limit ? new JobCheck(releaseNs, responseNs, -1, loss, how, "the platform left too little of the CPU: no bound within "
+                    + UNBOUNDED_DEADLINES + " times the deadline", unlisted) : new JobCheck(releaseNs, responseNs, sum, loss, how, null, unlisted);
+        }
+
+        /** Whether the processor's tasks, each with the bookkeeping added to its cost, need more than the whole processor. */
+        private boolean bookkeepingOverloads() {
+            double u = 0;
+            for (Task t : withBookkeeping) {
+                u += (double) t.cost() / t.period();
+            }
+            return u >= 1;
+        }
     }
 
     /**
      * The platform's part of one run's bounds: the monitor's records, the tolerated CPU time of others'
-     * real-time threads, and each task's bound computed again with them ({@link #of}).
+     * real-time threads, the bookkeeping stated for each job, and each task's jobs checked against the
+     * bound computed again with them ({@link #of}).
      */
-    record Allowance(Platform platform, OtherRealtime.Use others, Map<String, Bound> bounds) {
+    record Allowance(Platform platform, OtherRealtime.Use others, long bookkeepingNs, Map<String, Bound> bounds) {
 
         /**
-         * Each bounded task's bound with the platform's loss, by task name (the release's or reaction's label).
-         * On a fixed-priority processor, for each task i, R is iterated from its analysed bound: R becomes task i's
-         * response by {@link SchedulabilityAnalysis#analyse} with every task's cost raised by the bookkeeping and, above
-         * every rank, a task released once with i's job that stands for the loss on i's CPU in a window of R and the
-         * others' real-time CPU time, until R stops growing (response-time analysis over the supply the platform left:
-         * R = C + I(R) + loss(R)). Elsewhere (EDF, a processor the analysis does not bound by response times, a set the
-         * bookkeeping on every job overloads) the plain sum, iterated the same way: R becomes the bound plus the
-         * bookkeeping, the others' time and the loss in a window of R. {@code cpuOf}: the CPU a task's thread ran on,
-         * -1 when not pinned (the worst CPU); a SCHED_DEADLINE thread's loss is the time every CPU was taken at once.
-         * A processor with a thread at the monitor's priority is not checked.
+         * Each bounded task's check, by task name (the release's or reaction's label): each of its jobs that the
+         * program reports over the analysed bound ({@link JobSummary#overBoundJobs}) against the bound computed again
+         * with the platform's loss in that job's own window ({@link TaskCheck}); a job within the analysed bound needs
+         * none. {@code cpuOf}: the CPU a task's thread ran on, -1 when not pinned (the worst CPU); a SCHED_DEADLINE
+         * thread's loss is the time every CPU was taken at once. A processor with a thread at the monitor's priority is
+         * not checked. {@code bookkeepingNs}: added to every job's cost ({@link #BOOKKEEPING_NS}, on ROS 2 more).
          */
         static Allowance of(Platform platform, OtherRealtime.Use others, ArchitectureTiming timing, Map<String, JobSummary> summaries,
-                java.util.function.ToIntFunction<String> cpuOf) {
+                java.util.function.ToIntFunction<String> cpuOf, long bookkeepingNs) {
             Map<String, Bound> bounds = new HashMap<>();
             Map<String, Long> analysed = JobTimingTest.bounds(timing);
             for (ProcessorTiming p : timing.processors()) {
@@ -422,114 +706,37 @@ final class PlatformCheck {
                                 + "'s bounds are not checked";
                     }
                 }
-                boolean reanalysable = r.policy() == org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY;
                 for (TaskResult t : r.tasks()) {
                     Long bound = analysed.get(t.task().name());
                     if (bound == null) {
                         continue;
                     }
                     if (collision != null) {
-                        bounds.put(t.task().name(), new Bound(bound, -1, Loss.NONE, "", "", collision, false));
+                        bounds.put(t.task().name(), new Bound(bound, 0, List.of(), collision, null));
                         continue;
                     }
                     JobSummary s = summaries.get(t.task().name());
                     // a SCHED_DEADLINE thread runs on any CPU (the kernel admits it only so)
                     int cpu = s != null && s.sched().startsWith("SCHED_DEADLINE") ? EVERY_CPU : cpuOf.applyAsInt(t.task().name());
-                    Bound b = reanalysable && t.responseTime().isPresent() ? reanalysed(platform, others, p, r, t.task(), bound, cpu) : null;
-                    if (b == null || b.boundNs() < 0 && b.overloaded()) {
-                        // where the bookkeeping on every job overloads the processor (a set the analysis bounds only at its
-                        // modeled costs), the plain sum, said
-                        Bound sum = summed(platform, others, t.task(), bound, cpu);
-                        b = b == null ? sum : new Bound(sum.analysedNs(), sum.boundNs(), sum.loss(), sum.how() + " (the analysis run again with "
-                                + JobTimingTest.ms(BOOKKEEPING_NS) + " of bookkeeping on every job finds no bound: the processor is overloaded with it)",
-                                sum.why(), null, false);
+                    boolean reanalysable = r.policy() == org.rsaml.analysis.SchedulingPolicy.FIXED_PRIORITY && t.responseTime().isPresent();
+                    TaskCheck check = new TaskCheck(platform, others, p, t.task(), bound, cpu, reanalysable, bookkeepingNs);
+                    List<JobCheck> jobs = new ArrayList<>();
+                    if (s != null) {
+                        for (long[] job : s.overBoundJobs()) {
+                            jobs.add(check.at(job[0], job[1]));
+                        }
+                        // the jobs over the bound the program did not list: the worst response speaks for them
+                        if (s.unlisted() > 0 || s.overBound() == 0 && s.worstNs() > bound) {
+                            jobs.add(check.anywhere(s.worstNs()));
+                        }
                     }
-                    bounds.put(t.task().name(), b);
+                    bounds.put(t.task().name(), new Bound(bound, check.windowNs, List.copyOf(jobs), null, check));
                 }
             }
-            return new Allowance(platform, others, Map.copyOf(bounds));
+            return new Allowance(platform, others, bookkeepingNs, Map.copyOf(bounds));
         }
 
         private static final Pattern RANK = Pattern.compile("^SCHED_(?:FIFO|RR) rank (\\d+)");
-
-        private static Bound reanalysed(Platform platform, OtherRealtime.Use others, ProcessorTiming p, ProcessorResult r, Task task, long bound,
-                int cpu) {
-            boolean roundRobin = p.element() != null && p.element().isSetSchedPolicy() && p.element().getSchedPolicy() == SchedulingPolicy.RR;
-            long limit = limit(task);
-            long response = bound;
-            Loss loss = Loss.NONE;
-            int top = r.tasks().stream().mapToInt(t -> t.task().priority()).max().orElse(0);
-            long once = limit > Long.MAX_VALUE / 4 ? Long.MAX_VALUE / 4 : limit * 2;
-            // the processor's tasks with the bookkeeping on every job: the same in every step, only the platform's task changes
-            List<Task> withBookkeeping = new ArrayList<>();
-            Set<String> runToCompletion = new HashSet<>();
-            for (TaskResult t : r.tasks()) {
-                Task x = t.task();
-                withBookkeeping.add(new Task(x.name(), x.period(), x.deadline(), Math.addExact(x.cost(), BOOKKEEPING_NS), x.priority(), x.jitter(),
-                        x.group()));
-                if (!roundRobin) {
-                    runToCompletion.add(x.name());
-                }
-            }
-            runToCompletion.add(PLATFORM_TASK);
-            for (int step = 0; step < 10_000; step++) {
-                loss = platform.loss(cpu, response);
-                List<Task> tasks = new ArrayList<>(withBookkeeping);
-                // what the platform took in the window, once: a task above all, released with the job, whose period outlasts any response
-                tasks.add(new Task(PLATFORM_TASK, once, once, Math.max(1, loss.ns() + others.totalNs()), top + 1, 0, null));
-                java.util.OptionalLong next = SchedulabilityAnalysis.analyse(r.processor(), r.policy(), tasks, runToCompletion).tasks().stream()
-                        .filter(t -> t.task().name().equals(task.name())).findFirst().orElseThrow().responseTime();
-                String how = "the analysis run again with " + loss + " taken from the processor above every rank, "
-                        + JobTimingTest.ms(BOOKKEEPING_NS) + " of bookkeeping added to every job" + (others.ranNs().isEmpty() ? ""
-                                : ", and " + JobTimingTest.ms(others.totalNs()) + " of other programs' real-time threads (" + others + ") taken too");
-                if (next.isEmpty() || next.getAsLong() > limit) {
-                    return new Bound(bound, -1, loss, how, "the analysis finds no response within " + UNBOUNDED_DEADLINES
-                            + " times the deadline: the platform left too little of the CPU", null, step == 0 && bookkeepingOverloads(r));
-                }
-                if (next.getAsLong() <= response && step > 0) {
-                    return new Bound(bound, response, loss, how, null, null, false);
-                }
-                response = Math.max(response, next.getAsLong());
-            }
-            return new Bound(bound, -1, loss, "", "the re-analysis did not settle", null, false);
-        }
-
-        /** Whether the processor's tasks, each with the bookkeeping added to its cost, need more than the whole processor. */
-        private static boolean bookkeepingOverloads(ProcessorResult r) {
-            double u = 0;
-            for (TaskResult t : r.tasks()) {
-                u += (double) (t.task().cost() + BOOKKEEPING_NS) / t.task().period();
-            }
-            return u >= 1;
-        }
-
-        /** The name of the task that stands for what the platform took, in the analysis run again. */
-        private static final String PLATFORM_TASK = "the platform (as measured)";
-
-        private static long limit(Task task) {
-            return task.deadline() > Long.MAX_VALUE / UNBOUNDED_DEADLINES ? Long.MAX_VALUE : task.deadline() * UNBOUNDED_DEADLINES;
-        }
-
-        private static Bound summed(Platform platform, OtherRealtime.Use others, Task task, long bound, int cpu) {
-            long limit = limit(task);
-            long response = bound;
-            Loss loss = Loss.NONE;
-            for (int step = 0; step < 10_000; step++) {
-                loss = platform.loss(cpu, response);
-                long next = bound + BOOKKEEPING_NS + others.totalNs() + loss.ns();
-                String how = "the bound plus " + loss + ", " + JobTimingTest.ms(BOOKKEEPING_NS) + " of bookkeeping"
-                        + (others.ranNs().isEmpty() ? "" : " and " + JobTimingTest.ms(others.totalNs()) + " of other programs' real-time threads (" + others + ")");
-                if (next > limit) {
-                    return new Bound(bound, -1, loss, how, "the platform left too little of the CPU: no bound within " + UNBOUNDED_DEADLINES
-                            + " times the deadline", null, false);
-                }
-                if (next <= response && step > 0) {
-                    return new Bound(bound, response, loss, how, null, null, false);
-                }
-                response = Math.max(response, next);
-            }
-            return new Bound(bound, -1, loss, "", "the sum did not settle", null, false);
-        }
 
         /** Why {@code label}'s bound is not checked in this run, null when it is. */
         String unchecked(String label) {
@@ -537,13 +744,18 @@ final class PlatformCheck {
             return b == null ? "no bound by the analysis" : b.unchecked();
         }
 
-        /** Whether {@code label}'s worst observed response is within its bound with the platform as measured. */
-        boolean admits(String label, long worstNs) {
+        /** Whether every job of {@code label} the run reported over its analysed bound is within its bound with the platform as measured. */
+        boolean admits(String label) {
             Bound b = bounds.get(label);
-            return b != null && b.unchecked() == null && b.boundNs() >= 0 && worstNs <= b.boundNs();
+            return b != null && b.unchecked() == null && b.jobs().stream().allMatch(JobCheck::passes);
         }
 
-        /** The check of {@code label}, for a message: its analysed bound, the loss taken and the bound with it. */
+        /** The check of a job of {@code label} released at {@code releaseNs} and done at {@code doneNs} (CLOCK_MONOTONIC), whether the run had it or not. */
+        JobCheck at(String label, long releaseNs, long doneNs) {
+            return bounds.get(label).task().at(releaseNs, doneNs);
+        }
+
+        /** The check of {@code label}, for a message: its analysed bound, and the deciding job's response, loss, window and bound with it. */
         String explain(String label) {
             Bound b = bounds.get(label);
             if (b == null) {
@@ -552,14 +764,21 @@ final class PlatformCheck {
             if (b.unchecked() != null) {
                 return b.unchecked();
             }
-            return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + "; with the platform as measured: "
-                    + (b.boundNs() < 0 ? "no bound (" + b.why() + ")" : JobTimingTest.ms(b.boundNs())) + ", by " + b.how();
+            JobCheck d = b.decisive();
+            if (d == null) {
+                return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + ", which no job exceeded";
+            }
+            long failing = b.jobs().stream().filter(j -> !j.passes()).count();
+            return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + "; " + b.jobs().stream().filter(j -> !j.unlisted()).count()
+                    + " jobs over it listed" + (b.jobs().stream().anyMatch(JobCheck::unlisted) ? " and more not listed" : "")
+                    + ", each held to its bound with the platform's loss in its own window; " + (failing > 0 ? failing + " fail, the first: "
+                            : "the closest: ") + d.describe(platform.fromNs());
         }
 
         @Override
         public String toString() {
             return platform + (others.ranNs().isEmpty() ? "" : "; other programs' real-time threads ran (" + others + ")") + "; "
-                    + JobTimingTest.ms(BOOKKEEPING_NS) + " stated for bookkeeping";
+                    + JobTimingTest.ms(bookkeepingNs) + " stated for bookkeeping";
         }
     }
 
@@ -579,7 +798,7 @@ final class PlatformCheck {
      * each label's thread (-1: not pinned, the worst CPU).
      */
     static BoundCheck boundCheck(String what, OtherRealtime.Use others, Platform platform, ArchitectureTiming timing,
-            Map<String, JobSummary> summaries, java.util.function.ToIntFunction<String> cpuOf) {
+            Map<String, JobSummary> summaries, java.util.function.ToIntFunction<String> cpuOf, long bookkeepingNs) {
         if (!others.tolerated()) {
             otherRealtime(what, others);
             return new BoundCheck(null, "other programs' real-time threads ran " + JobTimingTest.ms(others.totalNs()));
@@ -591,7 +810,7 @@ final class PlatformCheck {
             }
             return new BoundCheck(null, notMeasured);
         }
-        return new BoundCheck(Allowance.of(platform.withDeadlineThreads(summaries), others, timing, summaries, cpuOf), null);
+        return new BoundCheck(Allowance.of(platform.withDeadlineThreads(summaries), others, timing, summaries, cpuOf, bookkeepingNs), null);
     }
 
     /** The CPU of each thread of a run by its label, as its trace says where it was pinned ({@link #cpus}); -1 where not pinned. */

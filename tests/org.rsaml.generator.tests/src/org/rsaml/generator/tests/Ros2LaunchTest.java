@@ -401,7 +401,7 @@ class Ros2LaunchTest {
         }
         if (!checked.isEmpty() || !reacting.isEmpty()) {
             PlatformCheck.BoundCheck check = PlatformCheck.boundCheck("Ros2LaunchTest " + name, others, platform, timing, observed,
-                    PlatformCheck.tracedCpus(out));
+                    PlatformCheck.tracedCpus(out), PlatformCheck.ros2BookkeepingNs(out));
             PlatformCheck.Allowance allowance = check.allowance();
             if (allowance == null) {
                 checked.forEach(r -> unchecked.add(r.label() + " (" + check.notChecked() + ")"));
@@ -416,7 +416,7 @@ class Ros2LaunchTest {
             List<String> contradictions = contradictions(checked, verdicts, bounds, observed, missed, allowance, report);
             for (Reaction x : reacting) {
                 JobSummary o = observed.get(x.label());
-                if (!allowance.admits(x.label(), o.worstNs())) {
+                if (!allowance.admits(x.label())) {
                     contradictions.add(x.label() + ": worst observed response of a reaction " + JobTimingTest.ms(o.worstNs()) + " (" + o.jobs()
                             + " jobs, " + o.sched() + ") exceeds its bound (" + verdicts.get(x.label()) + "): " + allowance.explain(x.label()));
                 } else {
@@ -517,7 +517,7 @@ class Ros2LaunchTest {
                         + " deadline), though the analysis says it meets its deadline " + JobTimingTest.ms(o.deadlineNs()) + " (bound "
                         + JobTimingTest.ms(bound) + ")");
             }
-            if (!allowance.admits(r.label(), o.worstNs())) {
+            if (!allowance.admits(r.label())) {
                 found.add(r.label() + ": worst observed response " + JobTimingTest.ms(o.worstNs()) + " exceeds its bound (" + verdict + "): "
                         + allowance.explain(r.label()));
             } else if (x.late() == 0) {
