@@ -55,8 +55,9 @@ import org.rsaml.validation.ModelLoader;
  * measured by the node on its clock), and each reaction's (from the arrival its node's data thread takes
  * to completion), is within its bound with the platform as measured during the launch ({@link PlatformCheck}: the
  * platform monitor, started before the launch and stopped after it, records on every CPU, above every thread of the
- * model, the time the CPU did not run the model; each bound is computed again with that loss in a window as long as
- * the response, and a stated constant for the bookkeeping; a failure says the loss it took, where and when), unless
+ * model, the time the CPU did not run the model; each job over the analysed bound, as its node lists it on
+ * CLOCK_MONOTONIC, is held to the bound computed again with the loss in that job's own window, and a stated constant
+ * for the bookkeeping with the executor's measured work; a failure says the job, the loss it took, where and when), unless
  * other programs' real-time threads ran
  * beyond a tolerance ({@link OtherRealtime}: said, naming them; a failure under {@code RSAML_TIMING_BOUNDS=required}, as in CI); the topics the model
  * names exist under those names with their publisher and subscribers (one of them renamed through
@@ -78,12 +79,12 @@ import org.rsaml.validation.ModelLoader;
 class Ros2LaunchTest {
 
     /**
-     * The share of its modeled execution time each job busy-works: 80 %, the rest a margin for ROS 2's own
-     * work in a job (the executor's dispatch, the middleware's sends), which no monitor can tell from the job's:
-     * docs/timing.md, with the runs at 100 % that contradicted the analysis on schedules without a wrong
-     * priority or an overrun.
+     * The share of its modeled execution time each job busy-works: all of it, as the analysis assumes. ROS 2's own
+     * work for a job (the executor's wake-up, taking the timer, the dispatch) is not hidden in a margin of the job's
+     * time: each node measures it, and the check adds it to every job as stated bookkeeping
+     * ({@link PlatformCheck#ros2BookkeepingNs}; docs/timing.md, "The platform's allowance").
      */
-    static final double LOAD = 0.8;
+    static final double LOAD = 1.0;
     /** How long the system runs once every node is up. */
     static final long RUN_MS = 5000;
 
@@ -409,7 +410,9 @@ class Ros2LaunchTest {
                 reacting.forEach(x -> unchecked.add(x.label() + " (" + check.notChecked() + ")"));
                 reacting.clear();
             } else {
-                report.append("  measured: ").append(allowance).append('\n');
+                report.append("  measured: ").append(allowance).append(" (on ROS 2: ").append(JobTimingTest.ms(PlatformCheck.BOOKKEEPING_NS))
+                        .append(" and the executor's own work for a job, stated ").append(JobTimingTest.ms(PlatformCheck.ROS2_EXECUTOR_NS))
+                        .append(", the most a node measured in this run ").append(JobTimingTest.ms(PlatformCheck.ros2ExecutorWorstNs(out))).append(")\n");
                 checked.removeIf(r -> PlatformCheck.uncheckedByMonitor("Ros2LaunchTest " + name, r.label(), allowance, unchecked));
                 reacting.removeIf(x -> PlatformCheck.uncheckedByMonitor("Ros2LaunchTest " + name, x.label(), allowance, unchecked));
             }
