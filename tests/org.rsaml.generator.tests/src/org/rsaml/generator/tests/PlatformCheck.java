@@ -41,11 +41,12 @@ import org.rsaml.model.SchedulingPolicy;
  * under {@code SCHED_FIFO} at the highest priority, above every thread of the model, waking every
  * millisecond and recording how late it ran. What it records is time its CPU did not run the model
  * (the kernel, the hypervisor, another program, the monitor itself), and nothing the model does can
- * make it late. Each bound is then computed again with that loss ({@link Allowance#of}): on a
- * fixed-priority processor by the analysis itself, the job's cost raised by the most time the monitor
- * lost on its CPU in any window as long as the response ({@link Platform#loss}), so that a delay that
- * pulls one more higher-rank job into the response is counted; elsewhere the plain sum. To it come
- * {@link #BOOKKEEPING_NS}, stated, and the CPU time other programs' real-time threads used during the
+ * make it late. Each job the program reports over its analysed bound (on CLOCK_MONOTONIC) is then held to
+ * its bound computed again with the loss in that job's own window ({@link TaskCheck}: from where its level's
+ * busy period may have begun to its completion, {@link Platform#lossIn}): on a fixed-priority processor by the
+ * analysis itself, that loss a job above every rank released with it, so that a delay that pulls one more
+ * higher-rank job into the response is counted; elsewhere the plain sum. To it come
+ * {@link #BOOKKEEPING_NS}, stated (on ROS 2 with the executor's measured work, {@link #ros2BookkeepingNs}), and the CPU time other programs' real-time threads used during the
  * run, when small enough to be tolerated ({@link OtherRealtime}). A job that runs longer than modeled is
  * not covered: its execution is CPU time, and a wrong schedule's delay is the model's, which the
  * monitor, above the model, never records.
