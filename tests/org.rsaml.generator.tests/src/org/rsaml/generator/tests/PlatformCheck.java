@@ -74,9 +74,10 @@ final class PlatformCheck {
      * which a node's release thread does at its rank between two of its jobs (waking, taking the timer, dispatching the
      * callback) and the C++ runtime does not. Each node prints what it measured
      * ({@code executor <release> jobs N worst X ms mean Y ms}); a run whose worst exceeds this is checked with its own
-     * worst instead ({@link #ros2BookkeepingNs}), so the check never counts less than was measured.
+     * worst instead ({@link #ros2BookkeepingNs}), so the check never counts less than was measured. Stated from the
+     * runs of 2026-11-27 (load average 5 to 8): the worst a node measured was 0.213 and 0.318 ms.
      */
-    static final long ROS2_EXECUTOR_NS = 100_000;
+    static final long ROS2_EXECUTOR_NS = 400_000;
 
     private static final Pattern EXECUTOR = Pattern.compile("\\] executor (\\S+) jobs (\\d+) worst ([0-9.]+) ms mean ([0-9.]+) ms");
 
