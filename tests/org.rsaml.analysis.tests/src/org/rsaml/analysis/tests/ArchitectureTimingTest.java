@@ -124,14 +124,39 @@ class ArchitectureTimingTest {
         ProcessorTiming core1 = timing.processors().get(1);
         assertEquals(SchedulingPolicy.EDF, core1.result().policy(), "a processor set to EDF is analysed by processor demand");
         assertEquals(Verdict.MEETS, core1.result().verdict(), "core1's tasks meet their deadlines under EDF");
-        assertTrue(core1.notes().get(0).contains("the generated C++ runtime runs each timed release under SCHED_DEADLINE"),
-                core1.notes().get(0));
+        assertTrue(core1.notes().get(0).contains("the generated C++ runtime runs each timed release under SCHED_DEADLINE")
+                && core1.notes().get(0).contains("jobs within their execution duration were seen throttled to their next period")
+                && core1.notes().get(0).contains("the verdict is not claimed there"), "how the runtimes schedule it, and what was seen: "
+                + core1.notes().get(0));
         assertTrue(core1.notes().get(1).startsWith("core 1 does not hold EDF:") && core1.notes().get(1).contains("on ROS 2, whose launch pins"
                 + " the processor's container to core 1 (taskset), the kernel refuses SCHED_DEADLINE") && core1.notes().get(1).contains("on"
                 + " neither runtime does this processor run as analysed"), "a processor with a core says plainly that neither runtime runs EDF on it: "
                 + core1.notes());
         // without response times under EDF the latency through core 1 is not bounded, and says so
         assertEquals(Verdict.NOT_ANALYSED, timing.latencies().get(0).verdict(), "without EDF response times the latency through core1 is reported as not analysed");
+    }
+
+    /**
+     * Deadlines shorter than periods on an EDF processor: the set meets them under EDF, and the notes say
+     * that under SCHED_DEADLINE Linux starts such jobs at its own periods for the thread, not at the
+     * releases, so no runtime runs them as analysed; implicit deadlines get no such note.
+     */
+    @Test
+    void anEdfProcessorSaysThatDeadlinesShorterThanPeriodsAreNotRunAsAnalysed() throws Exception {
+        ProcessorTiming edf = TimingAnalysis.analyse(fixture("edf-constrained-deadlines.rsaml")).processors().get(0);
+        assertEquals(Verdict.MEETS, edf.result().verdict(), "A (T 5, D 4, C 2) and B (T 8, D 6, C 3.5) meet their deadlines under EDF");
+        List<String> said = edf.notes().stream().filter(n -> n.contains("shorter than the period")).toList();
+        assertEquals(1, said.size(), "one note on the constrained deadlines: " + edf.notes());
+        assertTrue(said.get(0).startsWith("l/a.fa, l/b.fb have deadlines shorter than the period: under SCHED_DEADLINE Linux starts such a"
+                + " thread's jobs at the periods it keeps for the thread") && said.get(0).contains("so neither runtime runs them as analysed"),
+                "names the tasks and says the runtimes do not run them as analysed: " + said.get(0));
+        Architecture implicit = example("mobile-base-latency.rsaml");
+        implicit.getProcessors().get(1).setSchedPolicy(org.rsaml.model.SchedulingPolicy.EDF);
+        for (ProcessorTiming p : TimingAnalysis.analyse(implicit).processors()) {
+            boolean constrained = p.sources().stream().anyMatch(t -> !t.kind().equals("reaction") && t.task().deadline() < t.task().period());
+            assertEquals(constrained && p.result().policy() == SchedulingPolicy.EDF,
+                    p.notes().stream().anyMatch(n -> n.contains("shorter than the period")), "the note only where it applies: " + p.notes());
+        }
     }
 
     /** Processors without a core share the cores no processor claims: a processor analysed alone proves nothing. */
