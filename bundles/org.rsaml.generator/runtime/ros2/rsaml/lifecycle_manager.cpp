@@ -176,8 +176,13 @@ int manage(int argc, char** argv) {
     for (const std::string& name : node->declare_parameter<std::vector<std::string>>("node_names", std::vector<std::string>{})) {
       Managed m;
       m.name = name;
-      m.get = node->create_client<GetState>(name + "/get_state");
-      m.change = node->create_client<ChangeState>(name + "/change_state");
+      try {
+        m.get = node->create_client<GetState>(name + "/get_state");
+        m.change = node->create_client<ChangeState>(name + "/change_state");
+      } catch (const rclcpp::exceptions::NameValidationError& e) {
+        throw rsaml_ros2::UsageError("parameter node_names: '" + name + "' is not the name of a node (" + e.error_msg +
+                                     "); give the names of the managed nodes, e.g. -p node_names:=[lidar] (the launch files set it)");
+      }
       managed.push_back(m);
     }
     for (Managed& m : managed) {

@@ -33,8 +33,8 @@ import org.rsaml.validation.ModelLoader;
  * Managed (rclcpp_lifecycle) nodes of a generated package on a real ROS 2 ({@link Ros2Jazzy}), with
  * each launch file: brought to active by the package's lifecycle manager, and deactivated and
  * cleaned up by it when the launch stops; what the lifecycle manager and a node's process do when the
- * other side is gone; and the package's programs given a wrong argument or parameter. The package is
- * built once for the three tests; each says in the build's log how long it took (and the machine's load).
+ * other side is gone; the package's programs given a wrong argument or parameter, and one whose node's own code throws.
+ * The package is built once for the four tests; each says in the build's log how long it took (and the machine's load).
  */
 class Ros2LifecycleLaunchTest {
 
@@ -221,6 +221,8 @@ class Ros2LifecycleLaunchTest {
         assertWrong(b, manager, manager + " --ros-args -p node_deadline_ms:=0", "parameter node_deadline_ms is 0: it must be a positive",
                 "node_deadline_ms:=");
         assertWrong(b, manager, manager + " --ros-args -p node_deadline_ms:=soon", "parameter 'node_deadline_ms' has invalid type", "-p");
+        assertWrong(b, manager, manager + " --ros-args -p node_names:=[perception/1idar]", "parameter node_names: 'perception/1idar' is not"
+                + " the name of a node", "-p node_names:=");
         // A component with a wrong parameter: the container does not load it, says why, and stays.
         try (Started running = start(b.install(), pkg, container + " --ros-args -r __node:=wrong_parameters_container",
                 "wrong-parameters-container")) {
@@ -244,13 +246,35 @@ class Ros2LifecycleLaunchTest {
     }
 
     /**
+     * An exception the nodes' own code lets escape is that code's error, not a wrong argument or parameter, even a
+     * std::invalid_argument: the lidar's class (the architect's, made by {@link #built()} to read a calibration from its
+     * environment with std::stoi, as a driver might) given a word throws one from its constructor. The program says so in a
+     * line naming the exception's type and what(), as an error in the node's code, and aborts as an uncaught exception
+     * makes a C++ program do: not status 2, not the line of a wrong argument.
+     */
+    @Test
+    void anExceptionOfTheNodesOwnCodeIsNotTakenForAWrongArgument() throws Exception {
+        Built b = built();
+        long started = System.nanoTime();
+        String lidar = b.nodes().get("perception/lidar");
+        Tools.Result r = run(b, "export " + CALIBRATION + "=fine; ", lidar);
+        String said = lidar + " with " + CALIBRATION + "=fine said:\n" + Tools.last(r.output(), 4000);
+        assertTrue(r.exit() != 0 && r.exit() != 2, () -> "exited with " + r.exit() + ", not as a failed program (neither 0 nor 2,"
+                + " the status of a wrong argument); " + said);
+        List<String> lines = r.output().lines().filter(l -> l.startsWith(lidar + ": ")).toList();
+        assertEquals(1, lines.size(), () -> "one line of the program, not " + lines.size() + "; " + said);
+        assertTrue(lines.get(0).startsWith(lidar + ": uncaught std::invalid_argument: stoi; an error in the node's code")
+                && lines.get(0).contains("not a wrong argument or parameter"), () -> "the line names the exception (its type and"
+                        + " what()) as an error of the node's code, not a wrong argument; " + said);
+        took("an exception of the node's code", started);
+    }
+
+    /**
      * Runs an executable of the package with a wrong argument or parameter: it must exit with 2 within 30 s, saying
      * "PROGRAM: ..." with {@code wrong} and {@code fix} in one line, and nothing else.
      */
     private static void assertWrong(Built b, String program, String command, String wrong, String fix) throws Exception {
-        Tools.Result r = Tools.run(tmp, 30, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + DOMAIN
-                + "; \"$(ros2 pkg prefix " + b.pkg() + ")/lib/" + b.pkg() + "/\"" + command,
-                b.install()).toArray(String[]::new));
+        Tools.Result r = run(b, "", command);
         String said = command + " said:\n" + Tools.last(r.output(), 4000);
         assertFalse(r.output().contains("terminate called"), () -> "std::terminate: " + said);
         assertEquals(2, r.exit(), () -> command + " exited with " + r.exit() + ", not 2 (usage); " + said);
@@ -259,6 +283,12 @@ class Ros2LifecycleLaunchTest {
         String line = lines.get(0);
         assertTrue(line.startsWith(program + ": ") && line.contains(wrong) && line.contains(fix), () -> "the line names the program ("
                 + program + "), what is wrong (" + wrong + ") and how to fix it (" + fix + "); " + said);
+    }
+
+    /** Runs an installed executable of the package (with its arguments) after {@code setup} (shell commands), at most 30 s. */
+    private static Tools.Result run(Built b, String setup, String command) throws Exception {
+        return Tools.run(tmp, 30, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + DOMAIN + "; " + setup
+                + "\"$(ros2 pkg prefix " + b.pkg() + ")/lib/" + b.pkg() + "/\"" + command, b.install()).toArray(String[]::new));
     }
 
     /** The rclcpp component of the lidar node, as its registration names it. */
@@ -305,11 +335,38 @@ class Ros2LifecycleLaunchTest {
             String pkg = Names.snake(arch.getName());
             Path src = tmp.resolve("src");
             new RsamlGenerator().generate(model, Target.ROS2, src, false);
+            calibrated(src.resolve(pkg + "/src/perception/Lidar.hpp"));
             Path install = Ros2Jazzy.colconBuild(src, tmp);
             built = new Built(src, install, pkg, Ros2Test.nodes(src.resolve(pkg)));
             took("generated and built", started);
         }
         return built;
+    }
+
+    /** The environment variable from which the lidar's class reads its calibration ({@link #calibrated}). */
+    private static final String CALIBRATION = "LIDAR_CALIBRATION";
+
+    /**
+     * The architect's class of the lidar node, given a constructor that reads a calibration from the environment variable
+     * {@link #CALIBRATION}, if set, with std::stoi (which throws std::invalid_argument on a word).
+     */
+    private static void calibrated(Path lidar) throws Exception {
+        String text = Files.readString(lidar, StandardCharsets.UTF_8);
+        String inherited = "  using LidarBase::LidarBase;\n";
+        String include = "#include \"perception/LidarBase.hpp\"\n";
+        assertTrue(text.contains(inherited) && text.contains(include), () -> "the lidar's class as generated: " + lidar + ":\n" + text);
+        Files.writeString(lidar, text.replace(include, include + "\n#include <cstdlib>\n#include <string>\n").replace(inherited, """
+                  explicit Lidar(const rclcpp::NodeOptions& options) : LidarBase(options) {
+                    if (const char* calibration = std::getenv("%s")) {
+                      calibration_ = std::stoi(calibration);
+                    }
+                  }
+
+                 private:
+                  int calibration_ = 0;
+
+                 public:
+                """.formatted(CALIBRATION)), StandardCharsets.UTF_8);
     }
 
     private static void took(String what, long startedNanos) {

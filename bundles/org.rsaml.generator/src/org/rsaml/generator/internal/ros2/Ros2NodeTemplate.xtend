@@ -173,9 +173,10 @@ class Ros2NodeTemplate extends Ros2Template {
 		    if (!std::isfinite(ns) || !(ns >= 0.5) || ns > 1152921504606846976.0) {
 		      char given[32];
 		      std::snprintf(given, sizeof given, "%g", value);
-		      throw std::invalid_argument(std::string("node «m.rosNode»: parameter ") + parameter + " is " + given
-		                                  + ": it must be a positive time of at least 1 ns and at most 2^60 ns, in the unit its name"
-		                                  + " ends with; set it so in the parameters file (config/«pkg».params.yaml, or params_file:=)");
+		      throw ::«names.project»::rsaml_ros2::UsageError(
+		          std::string("node «m.rosNode»: parameter ") + parameter + " is " + given
+		          + ": it must be a positive time of at least 1 ns and at most 2^60 ns, in the unit its name"
+		          + " ends with; set it so in the parameters file (config/«pkg».params.yaml, or params_file:=)");
 		    }
 		    return std::llround(ns);
 		  }
