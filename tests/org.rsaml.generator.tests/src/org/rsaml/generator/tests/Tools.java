@@ -218,6 +218,15 @@ final class Tools {
         }
     }
 
+    /** Replaces {@code what} in a file (the architect's code a test writes into a generated package), which must hold it. */
+    static void replace(Path file, String what, String with) throws IOException {
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        if (!text.contains(what)) {
+            fail(file + " does not contain " + what + ":\n" + text);
+        }
+        Files.writeString(file, text.replace(what, with), StandardCharsets.UTF_8);
+    }
+
     static String last(String s, int n) {
         return s.length() <= n ? s : "..." + s.substring(s.length() - n);
     }

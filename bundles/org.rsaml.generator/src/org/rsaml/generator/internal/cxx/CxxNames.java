@@ -154,7 +154,7 @@ public final class CxxNames {
             for (PlannedPort p : m.ports()) {
                 String id = Names.stem(p.port().getName());
                 portStems.put(p, p.entry() ? scope.allocate(id, "in_", "", "on_", "", "receive_", "", "sub_", "")
-                        : scope.allocate(id, "out_", "", "pub_", ""));
+                        : scope.allocate(id, "out_", "", "pub_", "", "send_", "", "sent_", ""));
             }
         }
         for (PlannedModule m : plan.modules()) {
@@ -277,6 +277,16 @@ public final class CxxNames {
 
     public String pubName(PlannedPort p) {
         return "pub_" + portStems.get(p);
+    }
+
+    /** The method that publishes a message at an output port at once, handed over without a copy (ROS 2). */
+    public String sendName(PlannedPort p) {
+        return "send_" + portStems.get(p);
+    }
+
+    /** The member that says an output port's message was sent by its send method since the last publish of its outputs (ROS 2). */
+    public String sentName(PlannedPort p) {
+        return "sent_" + portStems.get(p);
     }
 
     /** Member stem of a link in its target module's class. */

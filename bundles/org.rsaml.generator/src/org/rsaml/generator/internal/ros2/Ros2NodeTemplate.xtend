@@ -7,6 +7,7 @@ package org.rsaml.generator.internal.ros2
 import java.util.TreeSet
 import org.rsaml.analysis.plan.PlannedFunction
 import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.PlannedPort
 import org.rsaml.analysis.plan.Reaction
 import org.rsaml.analysis.plan.Release
 import org.rsaml.generator.internal.cxx.CxxNames
@@ -53,6 +54,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		// «banner»
 		#pragma once
 
+		#include <atomic>
 		#include <cmath>
 		#include <cstdint>
 		#include <cstdio>
@@ -119,7 +121,8 @@ class Ros2NodeTemplate extends Ros2Template {
 		  «ENDIF»
 		  «IF !m.outputs.empty»
 
-		  	// Output ports: set them; they are published after each activation (or call publish_outputs()).
+		  	// Output ports: set them; they are published after each activation (or call publish_outputs()), a copy of
+		  	// each value, which the port keeps. To hand a message over without a copy, send it (send_<port>, below).
 		  	«FOR p : m.outputs»
 		  		«p.rosType» «p.outName»;
 		  	«ENDFOR»
@@ -142,23 +145,42 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	/** Called on each message at «doc(p.name)», before the node reacts («p.inName» holds it too). */
 		  	virtual void «p.onName»(const «p.rosType»& message) { (void)message; }
 		  «ENDFOR»
+		  «FOR p : m.outputs»
+		  	/**
+		  	 * Publishes `message` (not null) at output port «doc(p.name)» now, handed to the middleware without a copy: the
+		  	 * subscriptions of the same container get this very object (intra-process communication). An inhibitor active
+		  	 * now«IF m.managed», or the node not active,«ENDIF» drops it, as it would the port's value. The port's value
+		  	 * («p.outName») is left as it is, and the publish_outputs() that ends this activation skips the port, so that no
+		  	 * older value follows the message; the next activation publishes the port's value again unless it sends too.
+		  	 */
+		  	void «p.sendName»(std::unique_ptr<«p.rosType»> message) {
+		  	  «IF m.managed»
+		  	  	«managed.inactiveReturn»
+		  	  «ENDIF»
+		  	  «p.sentName»_ = true;
+		  	  «IF p.inhibitors.empty»
+		  	  	«p.pubName»_->publish(std::move(message));
+		  	  «ELSE»
+		  	  	if («unblocked(p)») {
+		  	  	  «p.pubName»_->publish(std::move(message));
+		  	  	}
+		  	  «ENDIF»
+		  	}
+		  «ENDFOR»
 		  /**
-		   * Publishes every output port (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF»): a copy
-		   * of the port's value, which it keeps, handed to the middleware as a unique message that the
-		   * subscriptions of the same container then share without copying it again (intra-process communication).
+		   * Publishes every output port (unless an inhibitor blocks it«IF m.managed», or the node is not active«ENDIF», or the
+		   * port's send method sent a message since the last call): a copy of the port's value, which it keeps, handed
+		   * to the middleware as a unique message that the subscriptions of the same container then share without
+		   * copying it again (intra-process communication).
 		   */
 		  virtual void publish_outputs() {
 		    «IF m.managed»
 		    	«managed.inactiveReturn»
 		    «ENDIF»
 		    «FOR p : m.outputs»
-		    	«IF p.inhibitors.empty»
-		    		«p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
-		    	«ELSE»
-		    		if («FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR») {
-		    		  «p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
-		    		}
-		    	«ENDIF»
+		    	if (!«p.sentName»_.exchange(false)«IF !p.inhibitors.empty» && «unblocked(p)»«ENDIF») {
+		    	  «p.pubName»_->publish(std::make_unique<«p.rosType»>(«p.outName»));
+		    	}
 		    «ENDFOR»
 		  }
 		  «IF m.managed»
@@ -254,6 +276,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		  «ENDIF»
 		  «FOR p : m.outputs»
 		  	«IF m.managed»rclcpp_lifecycle::LifecyclePublisher«ELSE»rclcpp::Publisher«ENDIF»<«p.rosType»>::SharedPtr «p.pubName»_;
+		  	std::atomic<bool> «p.sentName»_{false};
 		  «ENDFOR»
 		  «FOR p : m.inputs»
 		  	rclcpp::Subscription<«p.rosType»>::SharedPtr «p.subName»_;
@@ -360,6 +383,9 @@ class Ros2NodeTemplate extends Ros2Template {
 		«ENDFOR»
 	'''
 
+
+	/** Whether no inhibitor of an output port is active now (a C++ condition). */
+	def private unblocked(PlannedPort p) '''«FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR»'''
 
 	/** What the analysis says of a module's reactions' response time, for a comment. */
 	def private boundComment(Reaction x) {

@@ -117,7 +117,11 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		(a copy of `out_<port>`, which keeps its value); in `«pkg».launch.py` the nodes of a container use
 		intra-process communication, so the subscriptions in that process share the published message
 		instead of copying or serializing it. Intra-process communication needs a `keep_last` history:
-		keep it when overriding a topic's QoS, or use the processes launch file.
+		keep it when overriding a topic's QoS, or use the processes launch file. To publish without the
+		copy of `out_<port>`, an action or handler sends a message of its own with
+		`send_<port>(std::make_unique<T>(...))`: it is published at once and handed over as it is (the
+		subscriptions of the container get that very object), an inhibitor drops it as it would the
+		port's value, and the publish that ends the activation skips that port (`out_<port>` is left as it was).
 		«IF rosNames.containers.exists[processor !== null]»
 
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,

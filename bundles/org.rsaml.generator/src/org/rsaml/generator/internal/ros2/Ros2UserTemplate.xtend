@@ -25,7 +25,7 @@ class Ros2UserTemplate extends Ros2Template {
 		this.rosNames = context.rosNames
 		this.code = new UserCode(context.names, "Node for module",
 			"creates the publishers, subscriptions and timers; implement the actions and\n// message handlers here.",
-			"Inputs: in_<port> is the latest message, shared and not copied (a ConstSharedPtr: keep it to keep\nthe message; null until the first arrives); on_<port> gets each one as a const reference.\nOutputs: set out_<port>; it is published after each activation of the node.",
+			"Inputs: in_<port> is the latest message, shared and not copied (a ConstSharedPtr: keep it to keep\nthe message; null until the first arrives); on_<port> gets each one as a const reference.\nOutputs: set out_<port>; a copy of it is published after each activation of the node. Or hand a\nmessage over without a copy: send_<port>(std::make_unique<T>(...)) publishes it at once.",
 			"message", [rosType])
 	}
 
