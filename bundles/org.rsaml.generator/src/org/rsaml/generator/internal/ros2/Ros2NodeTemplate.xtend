@@ -152,8 +152,12 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	 * now«IF m.managed», or the node not active,«ENDIF» drops it, as it would the port's value. The port's value
 		  	 * («p.outName») is left as it is, and the publish_outputs() that ends this activation skips the port, so that no
 		  	 * older value follows the message; the next activation publishes the port's value again unless it sends too.
+		  	 * Call it from the node's actions, functions or input handlers, whose activation ends with that publish.
 		  	 */
 		  	void «p.sendName»(std::unique_ptr<«p.rosType»> message) {
+		  	  if (!message) {
+		  	    throw std::invalid_argument("node «m.rosNode»: «p.sendName» was given no message (a null pointer)");
+		  	  }
 		  	  «IF m.managed»
 		  	  	«managed.inactiveReturn»
 		  	  «ENDIF»
@@ -175,7 +179,12 @@ class Ros2NodeTemplate extends Ros2Template {
 		   */
 		  virtual void publish_outputs() {
 		    «IF m.managed»
-		    	«managed.inactiveReturn»
+		    	if (!this->rsaml_active()) {
+		    	  «FOR p : m.outputs»
+		    	  	«p.sentName»_ = false;  // a message sent before the node stopped being active is not followed by the port's value later
+		    	  «ENDFOR»
+		    	  return;  // not active
+		    	}
 		    «ENDIF»
 		    «FOR p : m.outputs»
 		    	if (!«p.sentName»_.exchange(false)«IF !p.inhibitors.empty» && «unblocked(p)»«ENDIF») {
