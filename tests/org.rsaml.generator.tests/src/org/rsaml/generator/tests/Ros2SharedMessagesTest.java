@@ -7,7 +7,6 @@ package org.rsaml.generator.tests;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -44,13 +43,13 @@ class Ros2SharedMessagesTest {
         String name = "resources/ros2-shared-messages.rsaml";
         String out = Ros2LaunchTest.run(Ros2Test.model(name), name, tmp, src -> {
             Path pkg = src.resolve("shared_messages/src");
-            replace(pkg.resolve("high/Producer.cpp"), "void Producer::compute() {}", "void Producer::compute() { out_value.data += 1.0; }");
+            Tools.replace(pkg.resolve("high/Producer.cpp"), "void Producer::compute() {}", "void Producer::compute() { out_value.data += 1.0; }");
             for (String module : List.of("left", "right")) {
                 String cls = Character.toUpperCase(module.charAt(0)) + module.substring(1);
                 Path cpp = pkg.resolve("low/" + cls + ".cpp");
-                replace(cpp, "{ (void)message; }", "{\n  std::printf(\"shared " + module + " %.0f %p\\n\", message.data, static_cast<const void*>(&message));\n"
+                Tools.replace(cpp, "{ (void)message; }", "{\n  std::printf(\"shared " + module + " %.0f %p\\n\", message.data, static_cast<const void*>(&message));\n"
                         + "  std::fflush(stdout);\n}");
-                replace(cpp, "#include \"low/" + cls + ".hpp\"", "#include \"low/" + cls + ".hpp\"\n\n#include <cstdio>");
+                Tools.replace(cpp, "#include \"low/" + cls + ".hpp\"", "#include \"low/" + cls + ".hpp\"\n\n#include <cstdio>");
             }
         });
         Map<String, Map<String, String>> seen = new TreeMap<>();
@@ -65,11 +64,5 @@ class Ros2SharedMessagesTest {
             Map<String, String> at = seen.get(value);
             assertEquals(at.get("left"), at.get("right"), "message " + value + " was copied for each subscriber of the container: " + at);
         }
-    }
-
-    private static void replace(Path file, String what, String with) throws java.io.IOException {
-        String text = Files.readString(file);
-        assertTrue(text.contains(what), file + " does not contain " + what + ":\n" + text);
-        Files.writeString(file, text.replace(what, with));
     }
 }
