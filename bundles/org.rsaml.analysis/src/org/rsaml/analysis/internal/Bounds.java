@@ -24,20 +24,31 @@ public final class Bounds {
     /** Beyond this distance from a bound, a sum in floating point of at most {@link #EXACT_LIMIT} terms is on the side it says. */
     private static final double DECIDED = 1e-9;
 
-    /** Liu and Layland's bound as the result writes it, for the common numbers of tasks. */
+    /**
+     * Liu and Layland's bound as the result writes it, for the common numbers of tasks, each made when first asked for
+     * (formatting all of them up front cost every start of a validation some milliseconds).
+     */
     private static final String[] LIMITS = new String[EXACT_LIMIT + 1];
-
-    static {
-        for (int n = 1; n < LIMITS.length; n++) {
-            LIMITS[n] = limit(n * (Math.pow(2, 1.0 / n) - 1));
-        }
-    }
 
     private Bounds() {
     }
 
     private static String limit(double ll) {
         return String.format(Locale.ROOT, "U <= %.4f", ll);
+    }
+
+    /** {@link #limit(double)} of {@code ll}, Liu and Layland's bound for {@code n} tasks, kept for the common {@code n}. */
+    private static String limit(int n, double ll) {
+        if (n >= LIMITS.length) {
+            return limit(ll);
+        }
+        String text = LIMITS[n];
+        if (text == null) {
+            // Threads that race here make the same text; a String is safe to share without a lock.
+            text = limit(ll);
+            LIMITS[n] = text;
+        }
+        return text;
     }
 
     private static double logProduct(List<Task> tasks) {
@@ -58,7 +69,7 @@ public final class Bounds {
         String why = rateMonotonicImplicit(tasks);
         int n = tasks.size();
         double ll = n * (Math.pow(2, 1.0 / n) - 1);
-        String llLimit = n < LIMITS.length ? LIMITS[n] : limit(ll);
+        String llLimit = limit(n, ll);
         if (why != null) {
             checks.add(new BoundCheck("Liu & Layland", true, llLimit, false, false, why));
             checks.add(new BoundCheck("hyperbolic", true, "prod(U_i + 1) <= 2", false, false, why));
