@@ -12,9 +12,12 @@ import java.util.Map;
 
 import org.eclipse.emf.common.util.BasicDiagnostic;
 import org.eclipse.emf.common.util.Diagnostic;
+import org.eclipse.emf.common.util.DiagnosticChain;
+import org.eclipse.emf.ecore.EDataType;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.EValidator;
+import org.eclipse.emf.ecore.EcorePackage;
 import org.eclipse.emf.ecore.impl.EValidatorRegistryImpl;
 import org.eclipse.emf.ecore.util.Diagnostician;
 import org.eclipse.emf.ecore.util.EObjectValidator;
@@ -175,6 +178,20 @@ public final class RsamlModelValidator {
             @Override
             public String getFeatureLabel(EStructuralFeature feature) {
                 return RuleEValidator.LABELS.getFeatureLabel(feature);
+            }
+
+            /**
+             * A value of one of Ecore's own data types (EString, EInt, EDouble, EBoolean: the types of RsaML's
+             * attributes that are not RsaML's) is valid when it is an instance of the type: EMF's validator for Ecore
+             * checks no more for any of them. Answered here, so that a validation does not set up that validator,
+             * whose first use builds the XML Schema types' regular expressions (some milliseconds of every run).
+             */
+            @Override
+            public boolean validate(EDataType eDataType, Object value, DiagnosticChain diagnostics, Map<Object, Object> context) {
+                if (eDataType.getEPackage() == EcorePackage.eINSTANCE && eDataType.isInstance(value)) {
+                    return true;
+                }
+                return super.validate(eDataType, value, diagnostics, context);
             }
         };
         Map<Object, Object> context = diagnostician.createDefaultContext();

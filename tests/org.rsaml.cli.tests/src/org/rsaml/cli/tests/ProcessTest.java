@@ -115,6 +115,11 @@ class ProcessTest {
         assertFalse(loaded.contains(" java.sql.") || loaded.contains(" java.time.format."),
                 () -> "no java.sql or java.time.format class is loaded when a command runs:\n"
                         + loaded.lines().filter(l -> l.contains(" java.sql.") || l.contains(" java.time.format.")).limit(5).toList());
+        // Nor is EMF's validator for Ecore's own data types, whose set-up builds the XML Schema types' regular
+        // expressions: RsaML's attributes of those types are checked without it (RsamlModelValidator).
+        assertFalse(loaded.contains(" org.eclipse.emf.ecore.util.EcoreValidator "),
+                () -> "EMF's validator for Ecore is not set up when a command runs:\n"
+                        + loaded.lines().filter(l -> l.contains(" org.eclipse.emf.ecore.xml.type.")).limit(5).toList());
 
         // The jar is replaced where it was, its old modification time put back (a copy that keeps times, a restored
         // cache): its status-change time differs, so the stamp no longer fits and the class data is made again.
