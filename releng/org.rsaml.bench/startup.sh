@@ -9,7 +9,9 @@
 # e.g. RSAML_BENCH_JDKS=/usr/lib/jvm/temurin-25-jdk-amd64 (./rsaml then uses that JDK's AOT cache).
 # RSAML_BENCH_BASELINE: another tree with its jar built (e.g. a copy of main before a change, made by
 # git worktree add and ./rsaml --version there): its ./rsaml validate runs beside this tree's, on each JDK, in the
-# same hyperfine run, so that before and after are measured side by side.
+# same hyperfine run, so that before and after are measured side by side; then the two again, with java -version,
+# in interleaved rounds (hyperfine runs one command's runs after the other's, so a burst of load from elsewhere
+# lands on one row; in rounds that each run the three in a new order it lands on all alike).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 runs="${1:-20}"
@@ -58,3 +60,41 @@ for r in results:
 PY
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
 rm -f "$out"
+[ -n "$baseline" ] || exit 0
+echo "Interleaved: $runs rounds of java -version, the baseline's and this tree's ./rsaml validate, per JDK"
+python3 - "$runs" "$model" "$baseline" ${RSAML_BENCH_JDKS:-} <<'PY'
+import os, random, statistics, subprocess, sys, time
+runs, model, baseline, jdks = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4:]
+
+def run(command, env):
+    start = time.perf_counter()
+    process = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    usage = os.wait4(process.pid, 0)[2]
+    return time.perf_counter() - start, usage.ru_utime + usage.ru_stime   # wall, CPU (user + system)
+
+print("| JDK | command | median (wall) | ÷ java -version | CPU (user + system, mean) | ÷ java -version | load before → after |")
+print("|---|---|---:|---:|---:|---:|---|")
+for jdk in [None] + jdks:
+    env = dict(os.environ)
+    env.pop("JAVA_HOME", None)
+    if jdk:
+        env["JAVA_HOME"] = jdk
+    commands = {"java -version": [os.path.join(jdk, "bin", "java") if jdk else "java", "-version"],
+                "baseline: ./rsaml validate": [os.path.join(baseline, "rsaml"), "validate", model],
+                "./rsaml validate": ["./rsaml", "validate", model]}
+    times = {name: [] for name in commands}
+    for name, command in commands.items():
+        run(command, env)   # a warm-up run each
+    load = open("/proc/loadavg").read().split()[0]
+    for _ in range(runs):
+        names = list(commands)
+        random.shuffle(names)
+        for name in names:
+            times[name].append(run(commands[name], env))
+    load += " → " + open("/proc/loadavg").read().split()[0]
+    wall = {name: statistics.median(w for w, _ in t) for name, t in times.items()}
+    cpu = {name: statistics.mean(c for _, c in t) for name, t in times.items()}
+    for name in commands:
+        print(f"| {os.path.basename(jdk) if jdk else 'java on the PATH'} | {name} | {wall[name] * 1000:,.0f} ms "
+              f"| {wall[name] / wall['java -version']:.1f}× | {cpu[name] * 1000:,.0f} ms | {cpu[name] / cpu['java -version']:.1f}× | {load} |")
+PY
