@@ -27,6 +27,15 @@ Nanos stall_since(Clock::time_point locked, Nanos cpu, Nanos waited);
 /** Consumes CPU time on the calling thread: busy work standing in for user code. */
 void consume(Nanos amount);
 
+/**
+ * How many times the kernel has signalled (SIGXCPU, SCHED_FLAG_DL_OVERRUN) that the calling deadline thread's runtime
+ * ran out; 0 on a thread that is not one.
+ */
+unsigned long deadline_overruns();
+
+/** Installs the handler that counts those signals, and blocks them on the calling thread (and the threads it starts). */
+void count_deadline_overruns();
+
 /** A duration as the trace says it: 1.250 ms. */
 std::string millis(Nanos t);
 

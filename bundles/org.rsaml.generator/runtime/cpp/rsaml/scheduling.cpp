@@ -3,8 +3,9 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 // Where and how each thread runs: cores claimed by processors, real-time priorities, and
-// SCHED_DEADLINE for the releases of an EDF processor.
+// SCHED_DEADLINE for the releases of an EDF processor (docs/timing.md, "EDF").
 #include <algorithm>
+#include <csignal>
 #include <set>
 #include <string>
 
@@ -17,6 +18,10 @@
 #include <pthread.h>
 #include <sched.h>
 #define RSAML_HAS_PTHREAD 1
+#endif
+#if defined(__linux__)
+#include <sys/syscall.h>
+#include <unistd.h>
 #endif
 
 namespace rsaml {
@@ -154,11 +159,9 @@ void System::schedule_self(Release& r) {
   if (!options_.realtime) {
     r.sched = "default";
   } else if (r.policy == Policy::Deadline) {
-    // EDF: SCHED_DEADLINE with runtime = modeled cost, deadline and period as modeled. The kernel
-    // admits a deadline thread only where it may run on every CPU of its root domain, so one pinned
-    // to its processor's core is unpinned first.
-    std::string refused;
-    std::string where;
+    // EDF: SCHED_DEADLINE, asked for at the first release (become_deadline), so that the kernel's periods are the
+    // release's. The kernel admits a deadline thread only where it may run on every CPU of its root domain, so one
+    // pinned to its processor's core is unpinned first. Until then the thread waits at its rank.
 #if defined(__linux__)
     if (r.module->core() >= 0 && !all_cores_.empty()) {
       cpu_set_t set;
@@ -167,33 +170,103 @@ void System::schedule_self(Release& r) {
         CPU_SET(cpu, &set);
       }
       pthread_setaffinity_np(self, sizeof(set), &set);
-      where = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->cpu()) +
-              " alone (the kernel admits a deadline thread only on all CPUs of its root domain)";
+      r.unpinned = " on cores " + core_list(all_cores_) + ", not core " + std::to_string(r.module->cpu()) +
+                   " alone (the kernel admits a deadline thread only on all CPUs of its root domain)";
     }
 #endif
-    refused = rsaml_realtime::request_deadline(r.bounds.cost.count(), r.bounds.deadline.count(), r.period.count());
-    if (refused.empty()) {
-      r.sched = "SCHED_DEADLINE runtime " + millis(r.bounds.cost) + " deadline " + millis(r.bounds.deadline) + " period " +
-                millis(r.period) + where + " (kernel: " + rsaml_realtime::kernel_policy() + ")";
-    }
-#if defined(__linux__)
-    if (!refused.empty() && !where.empty() && r.module->cpu() < CPU_SETSIZE) {
-      cpu_set_t set;
-      CPU_ZERO(&set);
-      CPU_SET(r.module->cpu(), &set);
-      pthread_setaffinity_np(self, sizeof(set), &set);  // back on its core, as traced
-    }
-#endif
-    if (r.sched.empty()) {
-      r.sched = (apply_priority(self, Policy::Fifo, r.rank) ? "SCHED_FIFO rank " + std::to_string(r.rank) : std::string("default")) +
-                " instead of EDF: " + refused;
-    }
+    r.sched = apply_priority(self, Policy::Fifo, r.rank) ? "SCHED_FIFO rank " + std::to_string(r.rank) : std::string("default");
+    r.deadline_wanted = true;
+    return;  // said at the first release
   } else if (apply_priority(self, r.policy, r.rank)) {
     r.sched = std::string(r.policy == Policy::RoundRobin ? "SCHED_RR" : "SCHED_FIFO") + " rank " + std::to_string(r.rank);
   } else {
     r.sched = "default";
   }
   Trace::line("sched " + r.label + " " + r.sched);
+}
+
+namespace {
+
+// The kernel's SIGXCPU for a deadline thread whose runtime ran out (SCHED_FLAG_DL_OVERRUN), counted on the thread
+// that takes it: only deadline threads leave it unblocked.
+thread_local volatile std::sig_atomic_t overruns_signalled = 0;
+
+#if defined(__linux__)
+void on_overrun(int) { overruns_signalled = overruns_signalled + 1; }
+#endif
+
+}  // namespace
+
+unsigned long internal::deadline_overruns() { return static_cast<unsigned long>(overruns_signalled); }
+
+void internal::count_deadline_overruns() {
+#if defined(__linux__)
+  struct sigaction action {};
+  action.sa_handler = on_overrun;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGXCPU, &action, nullptr);
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGXCPU);
+  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+#endif
+}
+
+bool System::become_deadline(Release& r, Clock::time_point release_at) {
+  // SCHED_DEADLINE with runtime = modeled cost, deadline and period as modeled, asked for now: a thread that never was
+  // a deadline thread gets its first period from this moment, and ending each job with sched_yield() keeps the
+  // kernel's later periods on this grid. Reclaiming (SCHED_FLAG_RECLAIM) lets a job run past its runtime on
+  // bandwidth no deadline thread reserved, so that time the platform takes while charging the job (the hypervisor,
+  // interrupts) does not throttle it to its next period; the kernel signals a runtime that ran out all the same.
+  const Clock::time_point asked = Clock::now();
+  const std::int64_t cost = r.bounds.cost.count();
+  const std::int64_t deadline = r.bounds.deadline.count();
+  const std::int64_t period = r.period.count();
+  std::string refused = rsaml_realtime::request_deadline(cost, deadline, period, rsaml_realtime::kFlagReclaim | rsaml_realtime::kFlagOverrun);
+  std::string how = ", reclaiming";
+  if (!refused.empty()) {
+    const std::string with_flags = refused;
+    refused = rsaml_realtime::request_deadline(cost, deadline, period);
+    how = " (without reclaiming: " + with_flags + ")";
+  }
+  const std::string fallback = r.sched;
+  if (refused.empty()) {
+#if defined(__linux__)
+    r.tid = static_cast<long>(syscall(SYS_gettid));
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGXCPU);
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+#endif
+    r.sched = "SCHED_DEADLINE runtime " + millis(r.bounds.cost) + " deadline " + millis(r.bounds.deadline) + " period " +
+              millis(r.period) + how + ", its periods from its first release (asked " +
+              millis(std::chrono::duration_cast<Nanos>(asked - release_at)) + " after it)" + r.unpinned +
+              " (kernel: " + rsaml_realtime::kernel_policy() + ")";
+  } else {
+#if defined(__linux__)
+    if (!r.unpinned.empty() && r.module->cpu() < CPU_SETSIZE) {
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      CPU_SET(r.module->cpu(), &set);
+      pthread_setaffinity_np(pthread_self(), sizeof(set), &set);  // back on its core, as traced
+    }
+#endif
+    r.sched = fallback + " instead of EDF: " + refused;
+  }
+  Trace::line("sched " + r.label + " " + r.sched);
+  return refused.empty();
+}
+
+void System::let_deadline_threads_go() {
+#if defined(__linux__)
+  for (auto& release : releases_) {
+    // stopping_ is set: a thread seen waiting here starts no job when it resumes (run_release)
+    if (release->tid != 0 && release->yielding.load()) {
+      sched_param param{};
+      sched_setscheduler(static_cast<pid_t>(release->tid), SCHED_OTHER, &param);
+    }
+  }
+#endif
 }
 
 std::string System::schedule_worker(const std::string& module) {

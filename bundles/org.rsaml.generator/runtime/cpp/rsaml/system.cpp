@@ -8,6 +8,10 @@
 #include <algorithm>
 #include <csignal>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 #include "rsaml/internal.hpp"
 #include "rsaml/trace.hpp"
 
@@ -38,8 +42,16 @@ void System::add(Module& module) { modules_.push_back(&module); }
 
 void System::every(Module& module, std::string label, Nanos period, Nanos offset, Policy policy, int rank,
                    JobBounds bounds, std::function<void()> body) {
-  releases_.push_back(std::unique_ptr<Release>(new Release{&module, std::move(label), period, offset, policy, rank, bounds,
-                                                           std::move(body), std::thread(), std::string(), JobStats()}));
+  std::unique_ptr<Release> release(new Release());
+  release->module = &module;
+  release->label = std::move(label);
+  release->period = period;
+  release->offset = offset;
+  release->policy = policy;
+  release->rank = rank;
+  release->bounds = bounds;
+  release->body = std::move(body);
+  releases_.push_back(std::move(release));
 }
 
 Reactions& System::reactions(Module& module, std::string label, JobBounds bounds) {
@@ -58,7 +70,24 @@ void System::run_release(Release& release) {
     next = epoch_ + release.offset;
   }
   const Nanos busy = busy_work(release.bounds.cost);
-  // Releases stay on the grid epoch + offset + k * period, however long one of them takes.
+  // EDF: a deadline thread from its first release on (become_deadline), whose grid then starts where the kernel's
+  // first period does. It ends each job with sched_yield(), which gives up the rest of the period's runtime until the
+  // kernel's next period, its next release: it resumes there with a fresh runtime, so the kernel's periods stay the
+  // releases, and a thread that never sleeps meets none of the kernel's wake-up rules (docs/timing.md, "EDF").
+  bool deadline = false;
+  if (release.deadline_wanted) {
+    if (!sleep_until(next)) {
+      return;
+    }
+    const Clock::time_point asked = Clock::now();
+    deadline = become_deadline(release, next);
+    if (deadline) {
+      next = asked;
+    }
+  }
+  unsigned long overruns = internal::deadline_overruns();
+  // Releases stay on the grid epoch + offset + k * period, however long one of them takes (a deadline thread's grid
+  // from its first period); a job never starts before its release.
   while (sleep_until(next)) {
     const Clock::time_point started = Clock::now();
     const Nanos cpu = thread_cpu_time();
@@ -68,6 +97,24 @@ void System::run_release(Release& release) {
     const Nanos used = thread_cpu_time() - cpu;
     job_done(release, next, Clock::now(), used, stall);
     next += release.period;
+    if (deadline) {
+      const unsigned long now_overruns = internal::deadline_overruns();
+      if (now_overruns != overruns) {
+        Trace::report("throttled " + release.label + " job " + std::to_string(release.stats.jobs) + ": the kernel signalled " +
+                      std::to_string(now_overruns - overruns) + " time(s) that its runtime ran out");
+        overruns = now_overruns;
+      }
+      // the next period, unless the job ended past its next release (then the next job starts at once)
+      if (Clock::now() < next) {
+        release.yielding.store(true);
+        if (!stopping_.load()) {
+#if defined(__linux__)
+          sched_yield();
+#endif
+        }
+        release.yielding.store(false);
+      }
+    }
   }
 }
 
@@ -84,6 +131,9 @@ int System::run(const Options& options) {
   const std::uint64_t start_wave = new_wave();
   for (Module* module : modules_) {
     module->start_step(start_wave);
+  }
+  if (std::any_of(releases_.begin(), releases_.end(), [](const std::unique_ptr<Release>& r) { return r->policy == Policy::Deadline; })) {
+    internal::count_deadline_overruns();  // before any thread starts: only the deadline threads take the signal
   }
   claim_cores();
   for (Module* module : modules_) {
@@ -113,6 +163,7 @@ int System::run(const Options& options) {
     std::this_thread::sleep_until(std::min(deadline, now + std::chrono::milliseconds(20)));
   }
   stopping_ = true;
+  let_deadline_threads_go();
   for (auto& release : releases_) {
     if (release->thread.joinable()) {
       release->thread.join();

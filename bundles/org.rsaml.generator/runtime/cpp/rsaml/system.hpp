@@ -77,21 +77,37 @@ class System {
 
  private:
   struct Release {
-    Module* module;
+    Module* module = nullptr;
     std::string label;
-    Nanos period;
-    Nanos offset;
-    Policy policy;
-    int rank;
-    JobBounds bounds;
+    Nanos period{0};
+    Nanos offset{0};
+    Policy policy = Policy::Fifo;
+    int rank = 0;
+    JobBounds bounds{};
     std::function<void()> body;
     std::thread thread;
     std::string sched;  // the scheduling it got, as the trace says it
     JobStats stats;
+    // EDF: SCHED_DEADLINE asked for at the first release (become_deadline); where, said in the trace
+    bool deadline_wanted = false;
+    std::string unpinned;
+    long tid = 0;                     // the thread's id, once a deadline thread
+    std::atomic<bool> yielding{false};  // a deadline thread waiting in sched_yield() for its next period
   };
   void run_release(Release& release);
-  /** Gives the calling release thread its core and its scheduling; says which in the trace. */
+  /**
+   * Gives the calling release thread its core and its scheduling; says which in the trace (for a release of an EDF
+   * processor, at its first release: become_deadline).
+   */
   void schedule_self(Release& release);
+  /**
+   * At the first release of a release of an EDF processor: puts the calling thread under SCHED_DEADLINE, so that the
+   * kernel's first period begins at this release and its later periods are the release's next ones; says so in the
+   * trace. False (the thread left at its real-time rank, on its core, and the trace saying why) when the kernel refuses.
+   */
+  bool become_deadline(Release& release, Clock::time_point release_at);
+  /** At the stop: the deadline threads waiting for their next period (sched_yield) are let go at once. */
+  void let_deadline_threads_go();
   /** Measures one job: its response (release to completion) and execution (thread CPU) time. */
   void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall);
   void print_summary();

@@ -25,6 +25,12 @@ namespace {
 #if defined(__linux__)
 // sched_setattr and sched_getattr as system calls: glibc has no wrapper before 2.41.
 constexpr unsigned kSchedDeadline = 6;
+#endif
+/** SCHED_FLAG_RECLAIM: a deadline thread may run past its runtime on bandwidth no deadline thread reserved (GRUB). */
+constexpr std::uint64_t kFlagReclaim = 0x02;
+/** SCHED_FLAG_DL_OVERRUN: the kernel sends SIGXCPU to a deadline thread whose runtime ran out. */
+constexpr std::uint64_t kFlagOverrun = 0x04;
+#if defined(__linux__)
 struct SchedAttr {
   std::uint32_t size;
   std::uint32_t sched_policy;
@@ -45,7 +51,7 @@ inline std::string kernel_ms(std::uint64_t ns) {
 
 /**
  * The calling thread's policy as the kernel reports it (sched_getattr), with the runtime, deadline
- * and period it holds for a SCHED_DEADLINE thread.
+ * and period it holds for a SCHED_DEADLINE thread, and its flags reclaim and dl-overrun where set.
  */
 inline std::string kernel_policy() {
 #if defined(__linux__)
@@ -59,7 +65,8 @@ inline std::string kernel_policy() {
     case SCHED_RR: return "SCHED_RR";
     case kSchedDeadline:
       return "SCHED_DEADLINE runtime " + kernel_ms(attr.sched_runtime) + " deadline " + kernel_ms(attr.sched_deadline) + " period " +
-             kernel_ms(attr.sched_period);
+             kernel_ms(attr.sched_period) + ((attr.sched_flags & kFlagReclaim) != 0 ? " reclaim" : "") +
+             ((attr.sched_flags & kFlagOverrun) != 0 ? " dl-overrun" : "");
     default: return "policy " + std::to_string(attr.sched_policy);
   }
 #else
@@ -69,11 +76,12 @@ inline std::string kernel_policy() {
 
 /**
  * Puts the calling thread under SCHED_DEADLINE with runtime = the modeled execution time, and the
- * modeled deadline and period (nanoseconds). Returns why not when it cannot ("" when granted). The
- * kernel admits a deadline thread only where it may run on every CPU of its root domain: the caller
- * unpins the thread first.
+ * modeled deadline and period (nanoseconds), with the kernel's `flags` (kFlagReclaim, kFlagOverrun).
+ * Returns why not when it cannot ("" when granted). The kernel admits a deadline thread only where it
+ * may run on every CPU of its root domain: the caller unpins the thread first. The kernel's first
+ * period begins now when the thread was never a deadline thread (or its last deadline has passed).
  */
-inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline, std::int64_t period) {
+inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline, std::int64_t period, std::uint64_t flags = 0) {
 #if defined(__linux__)
   if (runtime < 1024) {
     return "the model gives it no execution time (SCHED_DEADLINE needs a runtime of 1 us or more)";
@@ -87,6 +95,7 @@ inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline,
   attr.sched_runtime = static_cast<std::uint64_t>(runtime);
   attr.sched_deadline = static_cast<std::uint64_t>(deadline);
   attr.sched_period = static_cast<std::uint64_t>(period);
+  attr.sched_flags = flags;
   if (syscall(SYS_sched_setattr, 0, &attr, 0) != 0) {
     return std::string("the kernel refused SCHED_DEADLINE: ") + std::strerror(errno);
   }
@@ -95,6 +104,7 @@ inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline,
   (void)runtime;
   (void)deadline;
   (void)period;
+  (void)flags;
   return "SCHED_DEADLINE is Linux's";
 #endif
 }

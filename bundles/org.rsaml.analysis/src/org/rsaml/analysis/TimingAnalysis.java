@@ -279,21 +279,22 @@ public final class TimingAnalysis {
                         + " the verdict holds when the program runs with real-time priorities (not with --no-realtime)");
             } else if (policy == SchedulingPolicy.EDF) {
                 notes.add("scheduled by deadline: the generated C++ runtime runs each timed release under SCHED_DEADLINE"
-                        + " (runtime = its execution duration, its deadline and period) where the kernel permits it, and its"
-                        + " trace says when not; there the verdict is for a platform scheduling by deadline, which Linux is only"
-                        + " in part: it keeps periods of its own for a deadline thread, not the runtime's releases, and jobs"
-                        + " within their execution duration were seen throttled to their next period, some past their deadlines."
-                        + " On ROS 2 the nodes' releases ask for the same, and the verdict is not claimed there: jobs were seen"
-                        + " to end past their deadlines the same way (docs/timing.md, EDF)");
+                        + " (runtime = its execution duration, its deadline and period, reclaiming bandwidth no deadline thread"
+                        + " reserved) where the kernel permits it, and its trace says when not; each release thread becomes a"
+                        + " deadline thread at its first release and ends every job by yielding the rest of its runtime, so the"
+                        + " kernel's periods are its releases, and there the verdict is claimed: every job was measured within"
+                        + " its deadline, the platform's delays aside (docs/timing.md, EDF). On ROS 2 the nodes' releases ask for"
+                        + " the same without that, and the verdict is not claimed there: Linux keeps periods of its own for their"
+                        + " threads, and jobs within their execution duration were seen throttled to their next period, past"
+                        + " their deadlines (docs/timing.md, EDF)");
                 List<String> constrained = tasks.stream().filter(t -> !t.kind().equals("reaction") && t.task().deadline() < t.task().period())
                         .map(t -> t.task().name()).toList();
                 if (!constrained.isEmpty()) {
                     notes.add(String.join(", ", constrained) + (constrained.size() == 1 ? " has a deadline" : " have deadlines")
-                            + " shorter than the period: under SCHED_DEADLINE Linux starts such a thread's jobs at the periods it keeps"
-                            + " for the thread (from the moment it became a deadline thread), not at the runtime's releases, and"
-                            + " holds a job woken between those back to the next one; measured on the C++ runtime, every job was"
-                            + " held back and some missed deadlines this analysis proves, so neither runtime runs them as analysed"
-                            + " (docs/timing.md, EDF)");
+                            + " shorter than the period: on ROS 2, under SCHED_DEADLINE Linux starts such a thread's jobs at the"
+                            + " periods it keeps for the thread (from the moment it became a deadline thread), not at the releases,"
+                            + " and holds a job woken between those back to the next one, so ROS 2 does not run them as analysed; the"
+                            + " C++ runtime does, its periods being the releases (docs/timing.md, EDF)");
                 }
                 if (element != null && element.getCore() >= 0) {
                     notes.add("core " + element.getCore() + " does not hold EDF: Linux admits a SCHED_DEADLINE thread only on every CPU of its"

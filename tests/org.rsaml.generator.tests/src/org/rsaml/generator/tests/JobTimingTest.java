@@ -237,28 +237,34 @@ class JobTimingTest {
 
     /**
      * An EDF processor runs its releases under SCHED_DEADLINE (runtime = modeled cost, deadline,
-     * period), as the kernel reports it back; the set (A: T 5, C 2; B: T 7, C 4) is feasible under EDF
-     * only (rate monotonic would miss B). Where the kernel refuses, the trace says so and what the
-     * release got instead.
+     * period), as the kernel reports it back, each a deadline thread from its first release, so that
+     * the kernel's periods are its releases; and every job is held to EDF's bound (its deadline) with
+     * the platform's loss ({@link CppJobCheck}). Two sets, each feasible under EDF only: A (T 5, C 2) and
+     * B (T 7, C 4), which rate monotonic would miss; and with deadlines shorter than periods, A (T 5, D 4,
+     * C 2) and B (T 8, D 6, C 3.5), which deadline monotonic would miss. Where the kernel refuses, the
+     * trace says so and what the release got instead.
      */
-    @Test
-    void anEdfProcessorRunsUnderSchedDeadline(@TempDir Path tmp) throws Exception {
-        String layers = module("a", 5, 2, "EDF") + module("b", 7, 4, "EDF");
+    @ParameterizedTest
+    @ValueSource(booleans = { false, true })
+    void anEdfProcessorRunsUnderSchedDeadline(boolean constrained, @TempDir Path tmp) throws Exception {
+        double[][] set = constrained ? new double[][] { { 5, 4, 2 }, { 8, 6, 3.5 } } : new double[][] { { 5, 5, 2 }, { 7, 7, 4 } };
+        String layers = module("a", (long) set[0][0], (long) set[0][1], set[0][2], "EDF") + module("b", (long) set[1][0], (long) set[1][1], set[1][2], "EDF");
         String processors = "  <processors name=\"edf\" schedPolicy=\"EDF\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='a']"
                 + " //@layers[name='tasks']/@modules[name='b']\"/>\n";
         Path out = tmp.resolve("project");
-        Architecture arch = writeAndGenerate(tmp, "edf", layers, processors, out, false);
+        String what = constrained ? "edf-constrained" : "edf";
+        Architecture arch = writeAndGenerate(tmp, what, layers, processors, out, false);
         assertEquals(Verdict.MEETS, TimingAnalysis.analyse(arch).verdict(), "EDF schedules A and B");
-        Map<String, JobSummary> run = CppJobCheck.runAndCheck(arch, out, "edf");
+        Map<String, JobSummary> run = CppJobCheck.runAndCheck(arch, out, what);
         for (JobSummary s : run.values()) {
-            long period = s.label().equals("tasks/a.f") ? 5 : 7;
-            long cost = s.label().equals("tasks/a.f") ? 2 : 4;
-            String granted = String.format(Locale.ROOT, "SCHED_DEADLINE runtime %d.000 ms deadline %d.000 ms period %d.000 ms", cost,
-                    period, period);
+            double[] t = s.label().equals("tasks/a.f") ? set[0] : set[1];
+            String granted = "SCHED_DEADLINE runtime " + ms(Math.round(t[2] * 1e6)) + " deadline " + ms(Math.round(t[1] * 1e6)) + " period "
+                    + ms(Math.round(t[0] * 1e6));
             if (s.sched().startsWith("SCHED_DEADLINE")) {
-                assertTrue(s.sched().startsWith(granted) && s.sched().endsWith("(kernel: " + granted + ")"),
-                        "the kernel's policy, runtime, deadline and period (sched_getattr) for " + s.label() + ": " + s.sched());
-                System.out.println("JobTimingTest edf: SCHED_DEADLINE in force for " + s.label() + " (" + s.sched() + ")");
+                assertTrue(s.sched().startsWith(granted) && s.sched().contains(", its periods from its first release (asked ")
+                        && s.sched().contains("(kernel: " + granted), "the kernel's policy, runtime, deadline and period (sched_getattr) for "
+                                + s.label() + ", a deadline thread from its first release: " + s.sched());
+                System.out.println("JobTimingTest " + what + ": SCHED_DEADLINE in force for " + s.label() + " (" + s.sched() + ")");
             } else {
                 assertTrue(s.sched().matches("(SCHED_FIFO rank \\d+|default) instead of EDF: .+"), "the fallback, said: " + s.sched());
                 System.out.println("JobTimingTest: SCHED_DEADLINE not granted here (" + s.sched() + "): checked the fallback and its report");
@@ -306,8 +312,13 @@ class JobTimingTest {
     }
 
     static String module(String name, long period, double cost, String policy) {
+        return module(name, period, period, cost, policy);
+    }
+
+    /** A periodic module of one function, its deadline (delay) given. */
+    static String module(String name, long period, long delay, double cost, String policy) {
         String timing = String.format(Locale.ROOT, "timeUnit=\"ms\" type=\"realTime\" period=\"%d.0\" delay=\"%d.0\" execDuration=\"%s\""
-                + " execType=\"periodic\"", period, period, cost);
+                + " execType=\"periodic\"", period, delay, cost);
         return "    <modules name=\"" + name + "\" " + timing + ">\n      <functions name=\"f\" " + timing + " schedPolicy=\"" + policy
                 + "\"/>\n    </modules>\n";
     }
