@@ -67,10 +67,14 @@ import os, random, statistics, subprocess, sys, time
 runs, model, baseline, jdks = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4:]
 
 def run(command, env):
-    start = time.perf_counter()
-    process = subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    usage = os.wait4(process.pid, 0)[2]
-    return time.perf_counter() - start, usage.ru_utime + usage.ru_stime   # wall, CPU (user + system)
+    """Wall and CPU time (user + system) of one run, and what it did: its exit status and output."""
+    with open(os.devnull, "w") as null:
+        start = time.perf_counter()
+        process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=null)
+        output = process.stdout.read()
+        status, usage = os.wait4(process.pid, 0)[1:]
+        wall = time.perf_counter() - start
+    return (wall, usage.ru_utime + usage.ru_stime), (os.waitstatus_to_exitcode(status), output)
 
 print("| JDK | command | median (wall) | ÷ java -version | CPU (user + system, mean) | ÷ java -version | load before → after |")
 print("|---|---|---:|---:|---:|---:|---|")
@@ -83,14 +87,17 @@ for jdk in [None] + jdks:
                 "baseline: ./rsaml validate": [os.path.join(baseline, "rsaml"), "validate", model],
                 "./rsaml validate": ["./rsaml", "validate", model]}
     times = {name: [] for name in commands}
-    for name, command in commands.items():
-        run(command, env)   # a warm-up run each
+    expected = {name: run(command, env)[1] for name, command in commands.items()}   # a warm-up run each
     load = open("/proc/loadavg").read().split()[0]
     for _ in range(runs):
         names = list(commands)
         random.shuffle(names)
         for name in names:
-            times[name].append(run(commands[name], env))
+            measured, outcome = run(commands[name], env)
+            if outcome != expected[name]:
+                sys.exit(f"startup.sh: '{name}' ({jdk or 'java on the PATH'}) exited {outcome[0]} with other output "
+                         f"than its warm-up run (exit {expected[name][0]}): a timed run must do what the warm-up did")
+            times[name].append(measured)
     load += " → " + open("/proc/loadavg").read().split()[0]
     wall = {name: statistics.median(w for w, _ in t) for name, t in times.items()}
     cpu = {name: statistics.mean(c for _, c in t) for name, t in times.items()}
