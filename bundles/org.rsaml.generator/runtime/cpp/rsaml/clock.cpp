@@ -7,6 +7,10 @@
 #include <ctime>
 #include <thread>
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#endif
+
 #include "rsaml/internal.hpp"
 #include "rsaml/jobs.hpp"
 #include "rsaml/system.hpp"
@@ -22,6 +26,16 @@ Nanos internal::thread_cpu_time() {
   }
 #endif
   return std::chrono::duration_cast<Nanos>(Clock::now().time_since_epoch());
+}
+
+long internal::thread_switches() {
+#if defined(__linux__)
+  rusage usage{};
+  if (getrusage(RUSAGE_THREAD, &usage) == 0) {
+    return usage.ru_nvcsw + usage.ru_nivcsw;
+  }
+#endif
+  return 0;
 }
 
 Nanos internal::stall_since(Clock::time_point locked, Nanos cpu, Nanos waited) {

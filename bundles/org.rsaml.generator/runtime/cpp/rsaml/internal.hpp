@@ -24,6 +24,9 @@ Nanos thread_cpu_time();
  */
 Nanos stall_since(Clock::time_point locked, Nanos cpu, Nanos waited);
 
+/** The calling thread's context switches so far, voluntary and involuntary (0 where the platform does not say). */
+long thread_switches();
+
 /** Consumes CPU time on the calling thread: busy work standing in for user code. */
 void consume(Nanos amount);
 

@@ -4,7 +4,10 @@
  */
 // Each job measured against its bounds, misses and overruns said as they happen, and the summary of the run.
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "rsaml/internal.hpp"
 #include "rsaml/jobs.hpp"
@@ -19,8 +22,9 @@ namespace {
 
 // Counts one job (of a timed release or a reaction) that started its response at `from`: its
 // response, execution time and stall, and a miss or an overrun as it happens.
+// A deadline thread's job (`detail`: where it started, its CPU time and context switches) is listed with them.
 void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, Clock::time_point from,
-                Clock::time_point done, Nanos cpu, Nanos stall) {
+                Clock::time_point done, Nanos cpu, Nanos stall, const std::array<std::int64_t, 3>* detail = nullptr) {
   if (s.jobs++ == 0) {
     s.first_release = from;
     s.listed.reserve(rsaml_jobs::LISTED);
@@ -31,9 +35,16 @@ void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, 
   s.worst_execution = std::max(s.worst_execution, cpu);
   s.worst_stall = std::max(s.worst_stall, stall);
   // the steady clock is CLOCK_MONOTONIC (libstdc++ and libc++ on Linux), the platform monitor's clock
+  const std::size_t listed = s.listed.size();
+  const std::array<std::int64_t, 2> last = listed > 0 ? s.listed.back() : std::array<std::int64_t, 2>{0, 0};
   rsaml_jobs::record_instant(std::chrono::duration_cast<Nanos>(from.time_since_epoch()).count(),
                              std::chrono::duration_cast<Nanos>(done.time_since_epoch()).count(), bounds.response.count(), s.worst_job,
                              s.over_bound, s.listed);
+  if (detail != nullptr && s.listed.size() > listed) {
+    s.details.push_back(*detail);  // listed: appended, or (the worst of the rest) put in the last place
+  } else if (detail != nullptr && listed > 0 && s.listed.back() != last && !s.details.empty()) {
+    s.details.back() = *detail;
+  }
   if (bounds.deadline.count() > 0 && response > bounds.deadline) {
     ++s.misses;
     Trace::report("miss " + label + " job " + std::to_string(s.jobs) + " response " + millis(response) + " > deadline " +
@@ -54,8 +65,15 @@ void System::reaction_done(Reactions& r, Clock::time_point arrived, Clock::time_
   record_job(r.stats, r.label, r.bounds, arrived, done, cpu, stall);
 }
 
-void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall) {
-  record_job(r.stats, r.label, r.bounds, released, done, cpu, stall);
+void System::job_done(Release& r, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall,
+                      const Clock::time_point* started, long switches) {
+  if (started == nullptr) {
+    record_job(r.stats, r.label, r.bounds, released, done, cpu, stall);
+    return;
+  }
+  const std::array<std::int64_t, 3> detail{std::chrono::duration_cast<Nanos>(started->time_since_epoch()).count(), cpu.count(),
+                                           static_cast<std::int64_t>(switches)};
+  record_job(r.stats, r.label, r.bounds, released, done, cpu, stall, &detail);
 }
 
 namespace {
@@ -80,8 +98,12 @@ void summary(Clock::time_point start, const std::string& label, const JobStats& 
   o.worst_job = s.worst_job;
   o.over_bound = s.over_bound;
   o.listed = s.listed;
-  for (const std::string& line : rsaml_jobs::over_bound_lines(o)) {
-    Trace::report(line);
+  const std::vector<std::string> lines = rsaml_jobs::over_bound_lines(o);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    // a deadline thread's job also says where it started, its CPU time and its context switches (docs/timing.md)
+    Trace::report(s.details.size() != lines.size() ? lines[i]
+                                                   : lines[i] + " started " + std::to_string(s.details[i][0]) + " ns cpu " +
+                                                         std::to_string(s.details[i][1]) + " ns switches " + std::to_string(s.details[i][2]));
   }
   Trace::report(rsaml_jobs::line(o));
 }

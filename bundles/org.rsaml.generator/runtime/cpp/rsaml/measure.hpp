@@ -38,6 +38,8 @@ struct JobStats {
   std::array<std::int64_t, 2> worst_job{0, 0};
   std::uint64_t over_bound = 0;
   std::vector<std::array<std::int64_t, 2>> listed;
+  // A deadline thread's (EDF): for each listed job, where it started (CLOCK_MONOTONIC), its CPU time and its context switches (ns, ns, count)
+  std::vector<std::array<std::int64_t, 3>> details;
 };
 
 }  // namespace rsaml

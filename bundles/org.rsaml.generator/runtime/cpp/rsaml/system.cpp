@@ -91,11 +91,16 @@ void System::run_release(Release& release) {
   while (sleep_until(next)) {
     const Clock::time_point started = Clock::now();
     const Nanos cpu = thread_cpu_time();
+    const long switches = deadline ? internal::thread_switches() : 0;
     release.stats.worst_start_latency =
         std::max(release.stats.worst_start_latency, std::chrono::duration_cast<Nanos>(started - next));
     const Nanos stall = release.module->timed_release(release.label, next, release.body, busy);
     const Nanos used = thread_cpu_time() - cpu;
-    job_done(release, next, Clock::now(), used, stall);
+    if (deadline) {
+      job_done(release, next, Clock::now(), used, stall, &started, internal::thread_switches() - switches);
+    } else {
+      job_done(release, next, Clock::now(), used, stall);
+    }
     next += release.period;
     if (deadline) {
       const unsigned long now_overruns = internal::deadline_overruns();

@@ -108,8 +108,12 @@ class System {
   bool become_deadline(Release& release, Clock::time_point release_at);
   /** At the stop: the deadline threads waiting for their next period (sched_yield) are let go at once. */
   void let_deadline_threads_go();
-  /** Measures one job: its response (release to completion) and execution (thread CPU) time. */
-  void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall);
+  /**
+   * Measures one job: its response (release to completion) and execution (thread CPU) time; a deadline thread's job
+   * also where it started and its context switches, listed with it where it is over its bound.
+   */
+  void job_done(Release& release, Clock::time_point released, Clock::time_point done, Nanos cpu, Nanos stall,
+                const Clock::time_point* started = nullptr, long switches = 0);
   void print_summary();
 
   /**

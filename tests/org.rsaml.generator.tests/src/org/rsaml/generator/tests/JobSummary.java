@@ -24,7 +24,8 @@ import java.util.regex.Pattern;
  * jobs ran, on CLOCK_MONOTONIC (the platform monitor's clock): {@code worstJob} the worst job's release
  * and completion (null without a job), {@code overBound} how many jobs exceeded the plain bound the
  * program was given, and {@code overBoundJobs} those of them the program listed ({@code over-bound}
- * lines; the worst always among them), each {release, completion}.
+ * lines; the worst always among them), each {release, completion}, a deadline thread's {release, completion, start,
+ * CPU time, context switches}.
  */
 record JobSummary(String label, long jobs, long firstNs, long lastNs, long misses, long overruns, long worstNs, String bound,
         long deadlineNs, long executionNs, long modeledNs, long latencyNs, long stallNs, long[] worstJob, long overBound,
@@ -35,8 +36,12 @@ record JobSummary(String label, long jobs, long firstNs, long lastNs, long misse
             + " worst-execution ([0-9.]+) ms modeled ([0-9.]+) ms worst-start-latency ([0-9.]+) ms worst-stall ([0-9.]+) ms"
             + " worst-job (none|(\\d+)\\.\\.(\\d+) ns) over-bound (\\d+) listed (\\d+) sched (.*)");
 
-    /** A job over the plain bound: "over-bound <label> job <release>..<completion> ns", on CLOCK_MONOTONIC. */
-    private static final Pattern OVER = Pattern.compile("over-bound (\\S+(?: \\(reaction\\))?) job (\\d+)\\.\\.(\\d+) ns");
+    /**
+     * A job over the plain bound: "over-bound <label> job <release>..<completion> ns", on CLOCK_MONOTONIC; a deadline
+     * thread's (the C++ runtime's EDF releases) also "started <instant> ns cpu <CPU time> ns switches <context switches>".
+     */
+    private static final Pattern OVER = Pattern.compile("over-bound (\\S+(?: \\(reaction\\))?) job (\\d+)\\.\\.(\\d+) ns"
+            + "(?: started (\\d+) ns cpu (\\d+) ns switches (\\d+))?");
 
     /** The jobs over the plain bound the program did not list (beyond its room for them), which only the worst response speaks for. */
     long unlisted() {
@@ -69,7 +74,10 @@ record JobSummary(String label, long jobs, long firstNs, long lastNs, long misse
             if (line.startsWith("over-bound ")) {
                 Matcher m = OVER.matcher(line);
                 assertTrue(m.matches(), "an over-bound line the test cannot read: " + line);
-                over.computeIfAbsent(m.group(1), k -> new ArrayList<>()).add(new long[] {Long.parseLong(m.group(2)), Long.parseLong(m.group(3))});
+                over.computeIfAbsent(m.group(1), k -> new ArrayList<>()).add(m.group(4) == null
+                        ? new long[] {Long.parseLong(m.group(2)), Long.parseLong(m.group(3))}
+                        : new long[] {Long.parseLong(m.group(2)), Long.parseLong(m.group(3)), Long.parseLong(m.group(4)), Long.parseLong(m.group(5)),
+                                Long.parseLong(m.group(6))});
             }
         }
         for (String raw : output.split("\n")) {

@@ -102,6 +102,10 @@ final class PlatformCheck {
     /** The CPU of a SCHED_DEADLINE thread, which the kernel runs on any: its loss is the time every CPU was taken at once. */
     static final int EVERY_CPU = -2;
 
+    /** A SCHED_DEADLINE job's loss ({@link Platform#lossOfDeadlineJob}), the job never switched out; or switched out. */
+    static final int DEADLINE_RUN = -3;
+    static final int DEADLINE_SWITCHED = -4;
+
     /** The name of the task that stands for what the platform took, in the analysis run again. */
     private static final String PLATFORM_TASK = "the platform (as measured)";
 
@@ -197,6 +201,10 @@ final class PlatformCheck {
         @Override
         public String toString() {
             return JobTimingTest.ms(ns) + " lost on " + (cpu == EVERY_CPU ? "every CPU at once (a SCHED_DEADLINE thread, which may run on any)"
+                    : cpu == DEADLINE_RUN ? "every CPU at once until its start, then its CPU while it ran, never switched out (a SCHED_DEADLINE"
+                            + " thread: its wall time less its CPU time)"
+                    : cpu == DEADLINE_SWITCHED ? "every CPU at once until its start, then, switched out while it ran, at most every CPU at once"
+                            + " (a SCHED_DEADLINE thread)"
                     : cpu < 0 ? "the worst CPU (the thread is not pinned)" : "CPU " + cpu)
                     + (windowAtNs < 0 ? " in a window of " + JobTimingTest.ms(windowNs)
                             : " from " + JobTimingTest.ms(windowAtNs).replace(" ms", "") + " to " + JobTimingTest.ms(windowAtNs + windowNs) + " into the run")
@@ -345,6 +353,29 @@ final class PlatformCheck {
                 }
             }
             return worst != null ? worst : new Loss(cpu, from - this.fromNs, window, 0, 0, 0);
+        }
+
+        /**
+         * The loss of one job of a SCHED_DEADLINE release whose program listed where it started, its CPU time and its
+         * context switches, in its window from {@code fromNs} to its completion {@code doneNs}: until its start, the time
+         * every CPU was taken at once (a ready deadline job waits only while every CPU runs something else, and where the
+         * model's deadline threads are no more than the CPUs one of those is the platform's); from its start, the time it
+         * did not run (its wall time less its CPU time), which, where it was never switched out, is what its CPU took from
+         * it (an interrupt, the hypervisor), and else at most the time every CPU was taken at once (a throttled job leaves
+         * its CPU to others, which the monitor sees). Where the deadline threads outnumber the CPUs, {@link #lossIn}.
+         */
+        Loss lossOfDeadlineJob(long fromNs, long startNs, long doneNs, long cpuNs, long switches) {
+            if (aboveMonitor.isEmpty() || aboveMonitor.size() > cpus.size()) {
+                return lossIn(EVERY_CPU, fromNs, doneNs);
+            }
+            long from = Math.max(fromNs, this.fromNs);
+            long to = Math.max(from, Math.min(doneNs, this.toNs));
+            long start = Math.max(from, Math.min(startNs, to));
+            CpuRecords every = everyCpu();
+            long off = Math.max(0, doneNs - startNs - cpuNs);
+            long ns = every.coveredIn(from, start) + (switches == 0 ? off : Math.min(off, every.coveredIn(start, to)));
+            Loss any = lossIn(-1, fromNs, doneNs);
+            return new Loss(switches == 0 ? DEADLINE_RUN : DEADLINE_SWITCHED, from - this.fromNs, to - from, ns, any.longestNs(), any.longestAtNs());
         }
 
         /**
@@ -629,6 +660,16 @@ final class PlatformCheck {
             return with(platform.lossIn(cpu, Math.min(doneNs - windowNs, releaseNs), doneNs), releaseNs, doneNs - releaseNs, false);
         }
 
+        /**
+         * A SCHED_DEADLINE job released at {@code releaseNs}, started at {@code startNs} and done at {@code doneNs}
+         * (CLOCK_MONOTONIC), of {@code cpuNs} CPU time and {@code switches} context switches, with its loss
+         * ({@link Platform#lossOfDeadlineJob}).
+         */
+        JobCheck atDeadlineJob(long releaseNs, long doneNs, long startNs, long cpuNs, long switches) {
+            return with(platform.lossOfDeadlineJob(Math.min(doneNs - windowNs, releaseNs), startNs, doneNs, cpuNs, switches), releaseNs,
+                    doneNs - releaseNs, false);
+        }
+
         /** A job of {@code responseNs} somewhere in the run, with the most the platform lost in any window as long as its window. */
         JobCheck anywhere(long responseNs) {
             return with(platform.loss(cpu, windowNs), -1, responseNs, true);
@@ -731,7 +772,8 @@ final class PlatformCheck {
                     List<JobCheck> jobs = new ArrayList<>();
                     if (s != null) {
                         for (long[] job : s.overBoundJobs()) {
-                            jobs.add(check.at(job[0], job[1]));
+                            jobs.add(cpu == EVERY_CPU && job.length == 5 ? check.atDeadlineJob(job[0], job[1], job[2], job[3], job[4])
+                                    : check.at(job[0], job[1]));
                         }
                         // the jobs over the bound the program did not list: the worst response speaks for them
                         if (s.unlisted() > 0 || s.overBound() == 0 && s.worstNs() > bound) {

@@ -378,6 +378,38 @@ class PlatformCheckTest {
     }
 
     /**
+     * A deadline job the platform delayed on its own CPU while it ran (the hypervisor took that CPU: the other one was
+     * free, so the time every CPU was taken at once misses it) is charged that delay when it was never switched out (its
+     * wall time less its CPU time); the same response of a job switched out (as a throttled one is, its CPU free) is not.
+     */
+    @Test
+    void aDeadlineJobIsChargedWhatItsOwnCpuTookWhileItRan() {
+        Map<String, JobSummary> edf = JobSummary.of(summary("tasks/a.f", 2.5, 5.0, 2.0, 2.0, 0.05, 0.005,
+                "SCHED_DEADLINE runtime 2.000 ms deadline 5.000 ms period 5.000 ms, reclaiming (kernel: SCHED_DEADLINE runtime 2.000 ms"
+                        + " deadline 5.000 ms period 5.000 ms reclaim dl-overrun)"));
+        // CPU 1 alone taken 3 ms from 50 ms into the run; the job released at 48, started at 48.05, done at 53.4 ms, 2 ms of CPU time
+        PlatformCheck.Platform p = platform(100, 20_000, new long[] {1, 50_000_000, 3_000_000}).withDeadlineThreads(edf);
+        long release = RUN_START + 48_000_000;
+        long start = release + 50_000;
+        long done = RUN_START + 53_400_000;
+        long from = release - 1_000_000;
+        PlatformCheck.Loss ran = p.lossOfDeadlineJob(from, start, done, 2_000_000, 0);
+        long everyCpu = p.lossIn(PlatformCheck.EVERY_CPU, from, done).ns();
+        assertTrue(everyCpu < 500_000, "every CPU at once misses the delay of the job's own CPU: " + everyCpu);
+        assertTrue(ran.ns() >= 3_350_000 && ran.ns() <= 3_350_000 + 200_000, "never switched out, the job is charged its wall time less its CPU"
+                + " time since its start (3.35 ms), and the wake-ups of both CPUs at once before it: " + ran);
+        assertTrue(ran.toString().contains("never switched out"), "said: " + ran);
+        PlatformCheck.Loss switched = p.lossOfDeadlineJob(from, start, done, 2_000_000, 1);
+        assertEquals(everyCpu, switched.ns(), "switched out (as a throttled job is), at most the time every CPU was taken at once: " + switched);
+        // and where both CPUs were taken while it waited, that wait is the platform's
+        PlatformCheck.Platform both = platform(100, 20_000, new long[] {0, 48_100_000, 2_000_000}, new long[] {1, 48_100_000, 2_000_000})
+                .withDeadlineThreads(edf);
+        PlatformCheck.Loss waited = both.lossOfDeadlineJob(from, release + 2_200_000, done, 2_000_000, 0);
+        assertTrue(waited.ns() >= 2_000_000 + 1_200_000, "the 2 ms both CPUs were taken before it started, and its 1.2 ms off its CPU after: "
+                + waited);
+    }
+
+    /**
      * The monitor run for real around a C++ program, with a synthetic platform hiccup: each of its threads busy-loops 3 ms every
      * 100 ms at its top priority, on every CPU. One release, 2 ms every 5 ms on core 1 (bound 2 ms): nearly every hiccup falls
      * into or just before a job. The bound holds with the loss the monitor measured, and would not have held without it.
