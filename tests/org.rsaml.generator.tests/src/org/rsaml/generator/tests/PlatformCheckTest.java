@@ -4,6 +4,7 @@
  */
 package org.rsaml.generator.tests;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -401,6 +402,11 @@ class PlatformCheckTest {
         assertTrue(ran.toString().contains("never switched out"), "said: " + ran);
         PlatformCheck.Loss switched = p.lossOfDeadlineJob(from, start, done, 2_000_000, 1);
         assertEquals(everyCpu, switched.ns(), "switched out (as a throttled job is), at most the time every CPU was taken at once: " + switched);
+        // as the C++ runtime lists such a job, and as the check reads it
+        String listed = summary("tasks/a.f", 5.4, 5.0, 2.0, 2.0, 0.05, 0.005, "SCHED_DEADLINE runtime 2.000 ms deadline 5.000 ms period 5.000 ms",
+                new long[] {release, done}).replace(done + " ns\n", done + " ns started " + start + " ns cpu 2000000 ns switches 0\n");
+        assertArrayEquals(new long[] {release, done, start, 2_000_000, 0}, JobSummary.of(listed).get("tasks/a.f").overBoundJobs().get(0),
+                "the job's start, CPU time and switches read from its over-bound line: " + listed);
         // and where both CPUs were taken while it waited, that wait is the platform's
         PlatformCheck.Platform both = platform(100, 20_000, new long[] {0, 48_100_000, 2_000_000}, new long[] {1, 48_100_000, 2_000_000})
                 .withDeadlineThreads(edf);
