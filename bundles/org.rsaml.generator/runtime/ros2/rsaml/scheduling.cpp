@@ -83,6 +83,12 @@ void place(Release& release, int core) {
     }
     trace("cpu " + release.label + " core " + std::to_string(core) + (pinned ? "" : " not available: default"));
   }
+  if (!release.realtime) {
+    release.sched = "default (aperiodic reactions)";
+    trace("sched " + release.label + " default: it serves aperiodic reactions, whose load the model does not bound, below every"
+          " real-time thread");
+    return;
+  }
   const int policy = release.round_robin ? SCHED_RR : SCHED_FIFO;
   const int low = sched_get_priority_min(policy);
   const int high = sched_get_priority_max(policy);
@@ -107,6 +113,24 @@ void place(Release& release, int core) {
 }
 
 }  // namespace
+
+#if defined(__unix__) || defined(__APPLE__)
+NodeLock::NodeLock() {
+  pthread_mutexattr_t attributes;
+  pthread_mutexattr_init(&attributes);
+  pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);  // where refused, a plain mutex
+  pthread_mutex_init(&mutex_, &attributes);
+  pthread_mutexattr_destroy(&attributes);
+}
+NodeLock::~NodeLock() { pthread_mutex_destroy(&mutex_); }
+void NodeLock::lock() { pthread_mutex_lock(&mutex_); }
+void NodeLock::unlock() { pthread_mutex_unlock(&mutex_); }
+#else
+NodeLock::NodeLock() = default;
+NodeLock::~NodeLock() = default;
+void NodeLock::lock() { mutex_.lock(); }
+void NodeLock::unlock() { mutex_.unlock(); }
+#endif
 
 void trace(const std::string& text) {
   const double at = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - trace_start).count();
@@ -303,6 +327,11 @@ rclcpp::CallbackGroup::SharedPtr Schedule::rsaml_data_group() {
   return data_->group;
 }
 
+void Schedule::rsaml_data_unbounded() {
+  rsaml_data_group();
+  data_->realtime = false;
+}
+
 void Schedule::busy(std::int64_t cpu_ns) const {
   const std::int64_t until = thread_cpu_ns() + cpu_ns;
   while (thread_cpu_ns() < until) {
@@ -360,7 +389,7 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
   Release& r = releases_[release];
   Measured measured{};
   {
-    std::lock_guard<std::mutex> lock(activation_);
+    std::lock_guard<NodeLock> lock(activation_);
     measured = run_measured(r.cost_ns, body);
   }
   record_job(r, released, clock_->now(), (called - released).nanoseconds(), measured);
@@ -379,7 +408,7 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
 void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
   const rclcpp::Time arrived = clock_->now();
   {
-    std::lock_guard<std::mutex> lock(activation_);
+    std::lock_guard<NodeLock> lock(activation_);
     arrived_ = arrived;
     handled_ = clock_->now();
     body();

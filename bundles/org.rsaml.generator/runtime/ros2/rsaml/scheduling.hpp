@@ -24,6 +24,10 @@
 #include <thread>
 #include <vector>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <pthread.h>
+#endif
+
 #include <rclcpp/rclcpp.hpp>
 #include <rclcpp/version.h>
 
@@ -90,6 +94,7 @@ struct Release : Jobs {
   int rank = 1;
   bool round_robin = false;
   bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
+  bool realtime = true;  // false: the data thread of aperiodic reactions, at the default priority
   std::int64_t period_ns = 0;
   rclcpp::CallbackGroup::SharedPtr group;
   // The executor's own work for a job: its thread's CPU time from the end of one job to the start of the next.
@@ -97,6 +102,29 @@ struct Release : Jobs {
   std::uint64_t executor_jobs = 0;
   std::int64_t executor_worst_ns = 0;
   std::int64_t executor_total_ns = 0;
+};
+
+/**
+ * The node's lock (a node is a lock group of the analysis), with priority inheritance where POSIX threads
+ * offer it: a thread that holds it runs at the priority of the highest thread waiting for it, so that a
+ * release at its real-time priority waits for a data thread at the default priority only as long as that
+ * thread needs the lock, not while other threads of the default priority run (a priority inversion).
+ */
+class NodeLock {
+ public:
+  NodeLock();
+  ~NodeLock();
+  NodeLock(const NodeLock&) = delete;
+  NodeLock& operator=(const NodeLock&) = delete;
+  void lock();
+  void unlock();
+
+ private:
+#if defined(__unix__) || defined(__APPLE__)
+  pthread_mutex_t mutex_;
+#else
+  std::mutex mutex_;
+#endif
 };
 
 /** Messages received at one entry port. */
@@ -192,6 +220,16 @@ class Schedule {
    * constructor, so that the thread exists whenever the subscriptions are created.
    */
   rclcpp::CallbackGroup::SharedPtr rsaml_data_group();
+  /**
+   * Serves the node's data at the default priority (SCHED_OTHER), below every real-time thread, pinned
+   * to the node's core all the same (`sched <module> worker default: it serves aperiodic reactions ...`):
+   * a node whose reactions are aperiodic calls it in its constructor. The model bounds neither their
+   * arrivals nor their load, and the analysis excludes them; at a real-time priority, a node sent more
+   * than it can react to would take the real-time time of its CPUs, which Linux's real-time throttling
+   * (sched_rt_runtime_us) then takes back from every real-time thread, the releases the analysis proved
+   * included (docs/timing.md, "ROS 2").
+   */
+  void rsaml_data_unbounded();
 
   /**
    * Runs one job of a release under the node's lock and measures it: `released` is its release
@@ -242,7 +280,7 @@ class Schedule {
   int core_;
   double simulated_load_;
   rclcpp::Time started_;
-  std::mutex activation_;
+  NodeLock activation_;
   std::mutex stats_;
   // Set under stats_ when the summary is written: a job done after it is neither counted nor said, so
   // that the summary's misses and the miss lines are the same jobs.

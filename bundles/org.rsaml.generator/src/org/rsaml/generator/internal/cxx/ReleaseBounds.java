@@ -75,9 +75,19 @@ public final class ReleaseBounds {
 
     /** The bound of a reacting module's reactions, from the arrival that starts one to its completion. */
     public Bound of(Reaction r) {
-        Bound b = bound(results.getOrDefault(r.module().module(), Map.of()).get("reaction"));
-        return r.minIntervalNs() == 0 && b.responseNs() < 0
-                ? new Bound(-1, "aperiodic: the model bounds neither its arrivals nor its load") : b;
+        return aperiodic(r) ? new Bound(-1, "aperiodic: the model bounds neither its arrivals nor its load") : analysed(r);
+    }
+
+    /**
+     * Whether a module's reactions are aperiodic: not sporadic, without a bound from the analysis, which excludes
+     * them (their arrivals and their load are not bounded by the model).
+     */
+    public boolean aperiodic(Reaction r) {
+        return r.minIntervalNs() == 0 && analysed(r).responseNs() < 0;
+    }
+
+    private Bound analysed(Reaction r) {
+        return bound(results.getOrDefault(r.module().module(), Map.of()).get("reaction"));
     }
 
     private Bound bound(TaskResult t) {

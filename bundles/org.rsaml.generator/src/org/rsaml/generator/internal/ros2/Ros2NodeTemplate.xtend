@@ -109,6 +109,11 @@ class Ros2NodeTemplate extends Ros2Template {
 		    	// reactions: from the arrival that starts one to its completion, due within «m.reaction.deadlineNs» ns (0: none),
 		    	// modeled to take «m.reaction.costNs» ns; «boundComment(m.reaction)».
 		    	this->rsaml_measure_reactions(«str(m.reaction.label)», «m.reaction.deadlineNs», «m.reaction.costNs», «context.bounds.of(m.reaction).responseNs»);
+		    	«IF context.bounds.aperiodic(m.reaction)»
+		    		// aperiodic reactions, which the analysis excludes: the node's data at the default priority, below every
+		    		// real-time thread, so that more data than the node can react to takes no real-time time from the releases
+		    		this->rsaml_data_unbounded();
+		    	«ENDIF»
 		    «ENDIF»
 		  }
 		  «IF !m.inputs.empty»
