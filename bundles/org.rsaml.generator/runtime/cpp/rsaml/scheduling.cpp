@@ -203,6 +203,7 @@ void internal::count_deadline_overruns() {
 #if defined(__linux__)
   struct sigaction action {};
   action.sa_handler = on_overrun;
+  action.sa_flags = SA_RESTART;  // a write of the trace that the signal interrupts goes on, no line lost
   sigemptyset(&action.sa_mask);
   sigaction(SIGXCPU, &action, nullptr);
   sigset_t set;
@@ -261,7 +262,8 @@ void System::let_deadline_threads_go() {
 #if defined(__linux__)
   for (auto& release : releases_) {
     // stopping_ is set: a thread seen waiting here starts no job when it resumes (run_release)
-    if (release->tid != 0 && release->yielding.load()) {
+    // yielding first: its store follows the thread's write of tid, so tid is read only once it is written
+    if (release->yielding.load() && release->tid != 0) {
       sched_param param{};
       sched_setscheduler(static_cast<pid_t>(release->tid), SCHED_OTHER, &param);
     }

@@ -282,8 +282,9 @@ public final class TimingAnalysis {
                         + " (runtime = its execution duration, its deadline and period, reclaiming bandwidth no deadline thread"
                         + " reserved) where the kernel permits it, and its trace says when not; each release thread becomes a"
                         + " deadline thread at its first release and ends every job by yielding the rest of its runtime, so the"
-                        + " kernel's periods are its releases, and there the verdict is claimed: every job was measured within"
-                        + " its deadline, the platform's delays aside (docs/timing.md, EDF). On ROS 2 the nodes' releases ask for"
+                        + " kernel's periods are its releases, and there the verdict is claimed for the program granted that,"
+                        + " within the limits docs/timing.md (EDF) states: what was measured, on how many CPUs, and a clock that"
+                        + " a time service slews. On ROS 2 the nodes' releases ask for"
                         + " the same without that, and the verdict is not claimed there: Linux keeps periods of its own for their"
                         + " threads, and jobs within their execution duration were seen throttled to their next period, past"
                         + " their deadlines (docs/timing.md, EDF)");
