@@ -5,14 +5,18 @@
 package org.rsaml.generator.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -22,6 +26,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
+import org.rsaml.generator.internal.Names;
+import org.rsaml.validation.ModelLoader;
 
 /**
  * An output port's send method ({@code send_<port>}) in the generated ROS 2 nodes: the architect's code publishes a
@@ -74,11 +80,27 @@ class Ros2SendTest {
                         assertTrue(send.contains("if (" + skip.group(2) + ") {"), base + ": send_" + port + " is not blocked by the"
                                 + " inhibitors that block the port's value (" + skip.group(2) + "):\n" + send);
                     }
+                    int refused = send.indexOf("if (!message) {\n");
+                    assertTrue(refused >= 0 && send.indexOf("throw std::invalid_argument(\"node ", refused) > refused
+                            && send.contains("send_" + port + " was given no message (a null pointer)\");")
+                            && refused < send.indexOf("sent_" + port + "_ = true;"), base + ": send_" + port + " does not refuse a null"
+                            + " message first, with an exception naming the node and the method:\n" + send);
                     if (publishOutputs.contains("rsaml_active()")) {
                         managed++;
-                        assertTrue(send.indexOf("if (!this->rsaml_active()) {") >= 0
-                                && send.indexOf("if (!this->rsaml_active()) {") < send.indexOf("->publish("), base + ": send_" + port
-                                + " of a managed node publishes while the node is not active:\n" + send);
+                        // The mark is set under the lock on_deactivate forgets the marks under, once the node is no longer active.
+                        int locked = send.indexOf("std::lock_guard<std::mutex> lock(sending_);");
+                        int checked = send.indexOf("if (!this->rsaml_active()) {");
+                        assertTrue(locked > refused && checked > locked && send.indexOf("sent_" + port + "_ = true;") > checked
+                                && checked < send.indexOf("->publish("), base + ": send_" + port + " of a managed node does not check the"
+                                + " node active and mark the port under the lock sending_ before it publishes:\n" + send);
+                        String deactivate = section(text, "CallbackReturn on_deactivate(const rclcpp_lifecycle::State& state) override {");
+                        int lock = deactivate.indexOf("std::lock_guard<std::mutex> lock(sending_);");
+                        int inactive = deactivate.indexOf("this->rsaml_state(false, \"inactive\");");
+                        int forgot = deactivate.indexOf("sent_" + port + "_ = false;");
+                        assertTrue(lock >= 0 && inactive > lock && forgot > inactive && !deactivate.substring(lock, forgot).contains("}"),
+                                base + ": on_deactivate does not forget a send of port " + port + " (sent_" + port + "_ = false) under the"
+                                        + " lock sending_, after the node stopped being active:\n" + deactivate);
+                        assertTrue(text.contains("std::mutex sending_;"), base + ": no lock sending_");
                     }
                     assertTrue(text.contains("std::atomic<bool> sent_" + port + "_{false};"), base + ": no mark of port " + port + " sent");
                 }
@@ -86,6 +108,61 @@ class Ros2SendTest {
         }
         assertTrue(ports > 0 && inhibited > 0 && managed > 0, "the models have output ports (" + ports + "), inhibited ones (" + inhibited
                 + ") and ones of managed nodes (" + managed + ")");
+    }
+
+    /**
+     * What the doc comment of a send method says of the publish that skips the port after a send is what that node does:
+     * a node that reacts to data publishes at the end of the reaction that follows an input handler; a node that does not
+     * (a periodic node: its input handlers run on each arrival, with no publish after them) publishes a send from an input
+     * handler at once and skips the port at the end of its next release; a managed node forgets a send on deactivation.
+     * Subsumption-brooks has periodic nodes with input and output ports, ros2-lifecycle managed ones. No ROS 2 needed.
+     */
+    @Test
+    void theSendMethodSaysWhichPublishFollowsAnInputHandler(@TempDir Path tmp) throws Exception {
+        int periodic = 0;
+        int reacting = 0;
+        int managed = 0;
+        for (Path model : List.of(Tools.example("subsumption-brooks.rsaml"), Tools.resource("ros2-lifecycle.rsaml"))) {
+            Path out = tmp.resolve(model.getFileName().toString());
+            new RsamlGenerator().generate(model, Target.ROS2, out, false);
+            List<Path> bases;
+            try (Stream<Path> s = Files.walk(out)) {
+                bases = s.filter(f -> f.toString().endsWith("Base.hpp") && f.toString().contains("/gen/")).sorted().toList();
+            }
+            for (Path base : bases) {
+                String text = Files.readString(base);
+                boolean inputs = text.contains("ConstSharedPtr& message, bool replacing) {");
+                boolean reacts = text.contains("this->rsaml_run_reaction(");
+                boolean isManaged = text.contains("CallbackReturn on_deactivate(");
+                Matcher o = OUTPUT.matcher(text);
+                while (o.find()) {
+                    String port = o.group(2);
+                    int send = text.indexOf("void send_" + port + "(");
+                    String doc = text.substring(text.lastIndexOf("/**", send), send).replaceAll("\\s*\\n\\s*\\*/?", " ").replaceAll("\\s+", " ");
+                    String said = base + ": the doc comment of send_" + port + ":\n" + doc;
+                    assertFalse(doc.contains("whose activation ends with that publish"), said);
+                    if (inputs && reacts) {
+                        reacting++;
+                        assertTrue(doc.contains("An input handler is followed by the node's reaction, which ends with that publish"), said);
+                    } else if (inputs) {
+                        periodic++;
+                        assertTrue(doc.contains("The input handlers run on each arrival and no publish follows them (the node does not"
+                                + " react to data): a send from one is published at once, and the publish that ends the node's next"
+                                + " release skips the port."), said);
+                        assertFalse(doc.contains("reaction"), said);
+                    }
+                    if (isManaged) {
+                        managed++;
+                        assertTrue(doc.contains("Deactivating the node forgets a send that publish has not yet followed: the first"
+                                + " publish after the node is activated again publishes the port's value."), said);
+                    } else {
+                        assertFalse(doc.contains("Deactivating"), said);
+                    }
+                }
+            }
+        }
+        assertTrue(periodic > 0 && reacting > 0 && managed > 0, "the models have output ports of nodes with input handlers that no"
+                + " publish follows (" + periodic + "), of nodes that react to data (" + reacting + ") and of managed nodes (" + managed + ")");
     }
 
     private static final Pattern SENT = Pattern.compile("producer sent (\\d+) (0x[0-9a-f]+)");
@@ -167,6 +244,197 @@ class Ros2SendTest {
                     + " sent also published the port's older value): " + values);
             long even = values.stream().filter(v -> Long.parseLong(v) % 2 == 0).count();
             assertTrue(even >= 25, e.getKey() + " got the values set to out_value too (published as a copy): " + even);
+        }
+    }
+
+    private static final Pattern LIDAR_SET = Pattern.compile("lidar set (\\d+)");
+
+    /**
+     * On a real ROS 2 ({@link Ros2Jazzy}), the managed lidar and mapper of resources/ros2-lifecycle.rsaml, each in its
+     * process, brought to active by the package's lifecycle manager. The lidar's code (written here) sets out_scan to the
+     * number of each release and, in its on_deactivate, sends a message (-1) before the generated deactivation runs: a send
+     * no publish of the ports has followed when the node stops being active. The lidar is deactivated and activated again
+     * ({@code ros2 lifecycle set}): the mapper got the message sent, and the first release after the activation publishes
+     * the port's value (the mapper gets its number), the send forgotten. Then the lidar, started again with LIDAR_SEND_NULL
+     * set, sends a null message in its first release: its process says so in one line (an error in the node's code, naming
+     * the send method) and aborts, neither status 0 nor 2.
+     */
+    @Test
+    void aManagedNodeForgetsASendOnDeactivationAndRefusesANullOne(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        long started = System.nanoTime();
+        Path model = Ros2Test.model("resources/ros2-lifecycle.rsaml");
+        String pkg = Names.snake(ModelLoader.load(model, "ros2-lifecycle.rsaml").architecture().getName());
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        Path code = src.resolve(pkg + "/src");
+        Path lidarCpp = code.resolve("perception/Lidar.cpp");
+        Matcher action = Pattern.compile("void Lidar::(\\w+)\\(\\) \\{\\}").matcher(Files.readString(lidarCpp));
+        assertTrue(action.find(), "the lidar's action as generated: " + lidarCpp);
+        Tools.replace(lidarCpp, action.group(), "void Lidar::" + action.group(1) + "() {\n"
+                + "  static long count = 0;\n"
+                + "  ++count;\n"
+                + "  if (std::getenv(\"LIDAR_SEND_NULL\")) {\n"
+                + "    send_scan(nullptr);\n"
+                + "  }\n"
+                + "  out_scan.data = static_cast<double>(count);\n"
+                + "  std::printf(\"lidar set %ld\\n\", count);\n"
+                + "  std::fflush(stdout);\n"
+                + "}");
+        Tools.replace(lidarCpp, "#include \"perception/Lidar.hpp\"", "#include \"perception/Lidar.hpp\"\n\n#include <cstdio>\n#include <cstdlib>");
+        Tools.replace(code.resolve("perception/Lidar.hpp"), "  using LidarBase::LidarBase;\n", """
+                  using LidarBase::LidarBase;
+
+                  CallbackReturn on_deactivate(const rclcpp_lifecycle::State& state) override {
+                    auto message = std::make_unique<std_msgs::msg::Float64>();
+                    message->data = -1.0;
+                    std::printf("lidar sent -1\\n");
+                    std::fflush(stdout);
+                    send_scan(std::move(message));
+                    return LidarBase::on_deactivate(state);
+                  }
+                """);
+        Path mapperCpp = code.resolve("mapping/Mapper.cpp");
+        Tools.replace(mapperCpp, "{ (void)message; }", "{\n  std::printf(\"mapper got %.0f\\n\", message.data);\n  std::fflush(stdout);\n}");
+        Tools.replace(mapperCpp, "#include \"mapping/Mapper.hpp\"", "#include \"mapping/Mapper.hpp\"\n\n#include <cstdio>");
+        Path install = Ros2Jazzy.colconBuild(src, tmp);
+        Map<String, String> nodes = Ros2Test.nodes(src.resolve(pkg));
+        String lidar = nodes.get("perception/lidar");
+        String mapper = nodes.get("mapping/mapper");
+        int domain = 1 + (int) ((ProcessHandle.current().pid() + 30) % 100);
+        String lidarOut;
+        String mapperOut;
+        int reactivated;
+        try (Node lidarNode = Node.start(tmp, install, domain, pkg, lidar, "", "send-lidar");
+                Node mapperNode = Node.start(tmp, install, domain, pkg, mapper, "", "send-mapper");
+                Node manager = Node.start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
+                        + mapper + "]", "", "send-manager")) {
+            manager.await(mapper + " is active", 1);
+            mapperNode.await("mapper got 3", 1);
+            lifecycle(tmp, install, domain, lidar, "deactivate");
+            lidarNode.await("state perception/lidar inactive", 2);
+            Thread.sleep(300); // no release runs while inactive
+            lifecycle(tmp, install, domain, lidar, "activate");
+            lidarNode.await("state perception/lidar active", 2);
+            String o = lidarNode.output();
+            // configured (inactive), activated, deactivated (inactive again), activated again
+            int configured = o.indexOf("state perception/lidar inactive");
+            reactivated = o.indexOf("state perception/lidar active", o.indexOf("state perception/lidar inactive", configured + 1));
+            assertTrue(configured >= 0 && reactivated > configured, "the lidar was configured, activated, deactivated and activated again:\n"
+                    + Tools.last(o, 4000));
+            lidarNode.awaitAfter(LIDAR_SET, reactivated, 3);
+            Thread.sleep(300); // the last scans reach the mapper
+            lidarNode.signal();
+            mapperNode.signal();
+            manager.signal();
+            lidarOut = lidarNode.exited();
+            mapperOut = mapperNode.exited();
+            manager.exited();
+        }
+        Matcher first = LIDAR_SET.matcher(lidarOut);
+        assertTrue(first.find(reactivated), "the lidar ran after its activation:\n" + Tools.last(lidarOut, 4000));
+        String firstAfter = first.group(1);
+        String said = "the lidar said:\n" + Tools.last(lidarOut, 3000) + "\nthe mapper said:\n" + Tools.last(mapperOut, 3000);
+        assertTrue(lidarOut.contains("lidar sent -1") && mapperOut.contains("mapper got -1\n"), "the message the lidar sent before it was"
+                + " deactivated reached the mapper; " + said);
+        List<String> got = mapperOut.lines().filter(l -> l.startsWith("mapper got ")).map(l -> l.substring("mapper got ".length())).toList();
+        assertTrue(got.contains(firstAfter), "the first release of the lidar after it was activated again (" + firstAfter + ") published"
+                + " the port's value: the send before the deactivation was forgotten; the mapper got " + got + "; " + said);
+        Tools.took("Ros2SendTest", "a send forgotten on deactivation", started);
+
+        // A null message: one line, and the program aborts.
+        long nullStarted = System.nanoTime();
+        try (Node lidarNode = Node.start(tmp, install, domain, pkg, lidar, "export LIDAR_SEND_NULL=1; ", "null-lidar");
+                Node manager = Node.start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
+                        "", "null-manager")) {
+            boolean ended = lidarNode.process.waitFor(120, TimeUnit.SECONDS);
+            String out = lidarNode.output();
+            String nullSaid = lidar + " given a null message to send said:\n" + Tools.last(out, 4000);
+            assertTrue(ended, "still running 120 s after it was started; " + nullSaid + "\nthe lifecycle manager said:\n"
+                    + Tools.last(manager.output(), 2000));
+            int exit = lidarNode.process.exitValue();
+            assertTrue(exit != 0 && exit != 2, () -> "exited with " + exit + ", not as a failed program (neither 0 nor 2); " + nullSaid);
+            List<String> lines = out.lines().filter(l -> l.startsWith(lidar + ": ")).toList();
+            assertEquals(1, lines.size(), () -> "one line of the program, not " + lines.size() + "; " + nullSaid);
+            assertTrue(lines.get(0).startsWith(lidar + ": uncaught std::invalid_argument: node ") && lines.get(0).contains(
+                    ": send_scan was given no message (a null pointer); an error in the node's code"), () -> "the line names the exception,"
+                            + " the node and its send method, as an error of the node's code; " + nullSaid);
+            assertFalse(out.contains("lidar set 1"), () -> "the release that sent null went on; " + nullSaid);
+        } // the lifecycle manager, whose node is gone, is killed
+        Tools.took("Ros2SendTest", "a null message refused", nullStarted);
+    }
+
+    /** Asks ROS 2 to take the managed node {@code node} through {@code transition} (up to 5 times, a second apart: discovery). */
+    private static void lifecycle(Path tmp, Path install, int domain, String node, String transition) throws Exception {
+        Tools.Result r = null;
+        for (int attempt = 1; attempt <= 5 && (r == null || r.exit() != 0); attempt++) {
+            if (attempt > 1) {
+                Thread.sleep(1000);
+            }
+            r = Tools.run(tmp, 60, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + domain
+                    + "; ros2 lifecycle set --no-daemon /" + node + " " + transition, install).toArray(String[]::new));
+        }
+        assertEquals(0, r.exit(), "ros2 lifecycle set /" + node + " " + transition + " said:\n" + r.output());
+    }
+
+    /** A process of an installed executable of the package (with its arguments), its output in a log; killed when closed. */
+    private record Node(Process process, Path log) implements AutoCloseable {
+        static Node start(Path tmp, Path install, int domain, String pkg, String executable, String setup, String name) throws Exception {
+            Path log = tmp.resolve(name + ".log");
+            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash(setup + "exec \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\""
+                    + executable, install)).directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+            Ros2Jazzy.isolate(pb.environment(), domain);
+            return new Node(pb.start(), log);
+        }
+
+        String output() throws java.io.IOException {
+            return Files.readString(log, StandardCharsets.UTF_8);
+        }
+
+        /** Waits (at most 120 s) until the output says {@code text} {@code times} times. */
+        void await(String text, int times) throws Exception {
+            awaitAfter(Pattern.compile(Pattern.quote(text)), 0, times);
+        }
+
+        /** Waits (at most 120 s) until the output matches {@code pattern} {@code times} times after {@code from}. */
+        void awaitAfter(Pattern pattern, int from, int times) throws Exception {
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+            while (true) {
+                String o = output();
+                Matcher m = pattern.matcher(o);
+                int found = 0;
+                int at = Math.max(from, 0);
+                while (at <= o.length() && m.find(at)) {
+                    found++;
+                    at = m.end();
+                }
+                if (found >= times) {
+                    return;
+                }
+                if (!process.isAlive() || System.nanoTime() > until) {
+                    fail(log.getFileName() + ": did not say '" + pattern + "' " + times + " times within 120 s:\n" + Tools.last(o, 4000));
+                }
+                Thread.sleep(200);
+            }
+        }
+
+        void signal() throws Exception {
+            Tools.ok(log.getParent(), 10, "kill", "-INT", Long.toString(process.pid()));
+        }
+
+        /** Its output once it exited (it must within 30 s). */
+        String exited() throws Exception {
+            boolean exited = process.waitFor(30, TimeUnit.SECONDS);
+            String out = output();
+            assertTrue(exited, () -> log.getFileName() + ": still running 30 s after SIGINT:\n" + Tools.last(out, 4000));
+            return out;
+        }
+
+        @Override
+        public void close() {
+            process.descendants().forEach(ProcessHandle::destroyForcibly);
+            process.destroyForcibly();
         }
     }
 

@@ -5,6 +5,7 @@
 package org.rsaml.generator.internal.ros2
 
 import org.rsaml.analysis.plan.PlannedModule
+import org.rsaml.analysis.plan.PlannedPort
 import org.rsaml.generator.internal.cxx.CxxNames
 
 /**
@@ -54,6 +55,23 @@ class Ros2ManagedNodeTemplate extends Ros2Template {
 		«FOR l : context.linksOf(m)»
 			std::size_t link_«l.stem»_port_;
 		«ENDFOR»
+		«IF !m.outputs.empty»
+			// held while a send marks its port (markSent) and while on_deactivate forgets the marks
+			std::mutex sending_;
+		«ENDIF»
+	'''
+
+	/**
+	 * In a send method: marks the port sent, or returns when the node is not active. Under the lock on_deactivate
+	 * forgets the marks under once the node is no longer active, so that no mark set by a send that found the node
+	 * active outlives a deactivation, whatever thread sends (a release's, the data arrivals').
+	 */
+	def markSent(PlannedPort p) '''
+		{
+		  std::lock_guard<std::mutex> lock(sending_);
+		  «inactiveReturn»
+		  «p.sentName»_ = true;
+		}
 	'''
 
 	/** A managed node drops what arrives while it is not active. */
@@ -85,7 +103,19 @@ class Ros2ManagedNodeTemplate extends Ros2Template {
 
 		  CallbackReturn on_deactivate(const rclcpp_lifecycle::State& state) override {
 		    (void)state;
-		    this->rsaml_state(false, "inactive");
+		    «IF m.outputs.empty»
+		    	this->rsaml_state(false, "inactive");
+		    «ELSE»
+		    	{
+		    	  // A send that no publish of the ports has followed yet is forgotten (a periodic node's input handler sends
+		    	  // and its next release's publish skips the port): the first publish after activation publishes every port.
+		    	  std::lock_guard<std::mutex> lock(sending_);
+		    	  this->rsaml_state(false, "inactive");
+		    	  «FOR p : m.outputs»
+		    	  	«p.sentName»_ = false;
+		    	  «ENDFOR»
+		    	}
+		    «ENDIF»
 		    rsaml_stop_timers();
 		    «FOR p : m.outputs»
 		    	«p.pubName»_->on_deactivate();

@@ -59,6 +59,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		#include <cstdint>
 		#include <cstdio>
 		#include <memory>
+		#include <mutex>
 		#include <optional>
 		#include <stdexcept>
 		#include <string>
@@ -151,22 +152,16 @@ class Ros2NodeTemplate extends Ros2Template {
 		  	virtual void «p.onName»(const «p.rosType»& message) { (void)message; }
 		  «ENDFOR»
 		  «FOR p : m.outputs»
-		  	/**
-		  	 * Publishes `message` (not null) at output port «doc(p.name)» now, handed to the middleware without a copy: the
-		  	 * subscriptions of the same container get this very object (intra-process communication). An inhibitor active
-		  	 * now«IF m.managed», or the node not active,«ENDIF» drops it, as it would the port's value. The port's value
-		  	 * («p.outName») is left as it is, and the publish_outputs() that ends this activation skips the port, so that no
-		  	 * older value follows the message; the next activation publishes the port's value again unless it sends too.
-		  	 * Call it from the node's actions, functions or input handlers, whose activation ends with that publish.
-		  	 */
+		  	«sendDoc(m, p)»
 		  	void «p.sendName»(std::unique_ptr<«p.rosType»> message) {
 		  	  if (!message) {
 		  	    throw std::invalid_argument("node «m.rosNode»: «p.sendName» was given no message (a null pointer)");
 		  	  }
 		  	  «IF m.managed»
-		  	  	«managed.inactiveReturn»
+		  	  	«managed.markSent(p)»
+		  	  «ELSE»
+		  	  	«p.sentName»_ = true;
 		  	  «ENDIF»
-		  	  «p.sentName»_ = true;
 		  	  «IF p.inhibitors.empty»
 		  	  	«p.pubName»_->publish(std::move(message));
 		  	  «ELSE»
@@ -184,12 +179,7 @@ class Ros2NodeTemplate extends Ros2Template {
 		   */
 		  virtual void publish_outputs() {
 		    «IF m.managed»
-		    	if (!this->rsaml_active()) {
-		    	  «FOR p : m.outputs»
-		    	  	«p.sentName»_ = false;  // a message sent before the node stopped being active is not followed by the port's value later
-		    	  «ENDFOR»
-		    	  return;  // not active
-		    	}
+		    	«managed.inactiveReturn»
 		    «ENDIF»
 		    «FOR p : m.outputs»
 		    	if (!«p.sentName»_.exchange(false)«IF !p.inhibitors.empty» && «unblocked(p)»«ENDIF») {
@@ -397,6 +387,35 @@ class Ros2NodeTemplate extends Ros2Template {
 		«ENDFOR»
 	'''
 
+
+	/**
+	 * The doc comment of an output port's send method: what the next publish of the ports does after a send, and
+	 * where that publish comes for this node (a release's end, a reaction's end; not after a periodic node's input
+	 * handlers, which no publish follows).
+	 */
+	def private sendDoc(PlannedModule m, PlannedPort p) '''
+		/**
+		 * Publishes `message` (not null) at output port «doc(p.name)» now, handed to the middleware without a copy: the
+		 * subscriptions of the same container get this very object (intra-process communication). An inhibitor active
+		 * now«IF m.managed», or the node not active,«ENDIF» drops it, as it would the port's value. The port's value
+		 * («p.outName») is left as it is, and the next publish of the ports (publish_outputs()) skips the port, so that no
+		 * older value follows the message; the publishes after it publish the port's value again unless the node sends again.
+		«IF !m.releases.empty»
+			 * Each release of the node (its timers running its actions or functions) ends with that publish.
+		«ENDIF»
+		«IF m.reactive»
+			 * An input handler is followed by the node's reaction, which ends with that publish«IF m.reactionIntervalNs > 0» (a reaction not yet
+			 * due does not run, nor publish: then it is the next reaction's or release's)«ENDIF».
+		«ELSEIF !m.inputs.empty»
+			 * The input handlers run on each arrival and no publish follows them (the node does not react to data): a send
+			 * from one is published at once, and the publish that ends the node's next release skips the port.
+		«ENDIF»
+		«IF m.managed»
+			 * Deactivating the node forgets a send that publish has not yet followed: the first publish after the node is
+			 * activated again publishes the port's value.
+		«ENDIF»
+		 */
+	'''
 
 	/** Whether no inhibitor of an output port is active now (a C++ condition). */
 	def private unblocked(PlannedPort p) '''«FOR l : p.inhibitors SEPARATOR ' && '»!active(link_«l.stem»_until_)«ENDFOR»'''
