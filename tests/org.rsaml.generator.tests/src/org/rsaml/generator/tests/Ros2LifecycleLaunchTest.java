@@ -154,37 +154,37 @@ class Ros2LifecycleLaunchTest {
         String lidar = b.nodes().get("perception/lidar");
         String mapper = b.nodes().get("mapping/mapper");
         String orphans = " --ros-args -r __ns:=/orphaned";
-        try (Started orphan = start(b.install(), pkg, lidar + orphans, "orphaned-node");
-                Started orphanManager = start(b.install(), pkg, pkg + "_lifecycle_manager" + orphans + " -p node_names:=[" + lidar + "]",
+        try (Ros2Process orphan = start(b.install(), pkg, lidar + orphans, "orphaned-node");
+                Ros2Process orphanManager = start(b.install(), pkg, pkg + "_lifecycle_manager" + orphans + " -p node_names:=[" + lidar + "]",
                         "orphaned-node-manager");
-                Started node = start(b.install(), pkg, lidar + " " + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(2),
+                Ros2Process node = start(b.install(), pkg, lidar + " " + Ros2Shutdown.GRACE_OPTION + "=" + Ros2Shutdown.graceMs(2),
                         "lost-node");
-                Started lost = start(b.install(), pkg, mapper, "lost-node-mapper");
-                Started manager = start(b.install(), pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
+                Ros2Process lost = start(b.install(), pkg, mapper, "lost-node-mapper");
+                Ros2Process manager = start(b.install(), pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
                         + mapper + "] -p node_deadline_ms:=" + Ros2Shutdown.NODE_DEADLINE_MS, "lost-node-manager")) {
             // The lifecycle manager killed: the node's process, on SIGINT, serves it a while, says it is left active and exits.
             orphan.await("state perception/lidar active");
-            orphanManager.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            orphanManager.process().destroyForcibly().waitFor(10, TimeUnit.SECONDS);
             orphan.signal();
             // The process of the node brought down first killed.
             manager.await(mapper + " is active");
-            lost.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            lost.process().destroyForcibly().waitFor(10, TimeUnit.SECONDS);
             node.signal();
             manager.signal();
             String left = orphan.exited();
             assertTrue(left.contains("state perception/lidar active at exit: no lifecycle manager deactivated it"),
                     "a node left active says so at exit:\n" + Tools.last(left, 4000));
-            assertEquals(0, orphan.process.exitValue(), () -> "the node's process exits cleanly:\n" + Tools.last(left, 4000));
+            assertEquals(0, orphan.process().exitValue(), () -> "the node's process exits cleanly:\n" + Tools.last(left, 4000));
             String out = manager.exited();
             int gone = out.indexOf(mapper + " did not say its state in time: it was not deactivated and cleaned up");
             assertTrue(gone >= 0, "the lifecycle manager says which node it could not bring down:\n" + Tools.last(out, 4000));
             assertTrue(out.indexOf(lidar + " is unconfigured", gone) > gone, "after waiting out the lost node's deadline, the"
                     + " lifecycle manager still brings the other node down:\n" + Tools.last(out, 4000));
-            assertEquals(1, manager.process.exitValue(), () -> "the lifecycle manager fails:\n" + Tools.last(out, 4000));
+            assertEquals(1, manager.process().exitValue(), () -> "the lifecycle manager fails:\n" + Tools.last(out, 4000));
             String served = node.exited();
             assertTrue(served.contains("state perception/lidar unconfigured") && !served.contains("no lifecycle manager deactivated it"),
                     "the other node's process served it until it was cleaned up:\n" + Tools.last(served, 4000));
-            assertEquals(0, node.process.exitValue(), () -> "the other node's process exits cleanly:\n" + Tools.last(served, 4000));
+            assertEquals(0, node.process().exitValue(), () -> "the other node's process exits cleanly:\n" + Tools.last(served, 4000));
         }
         took("a side gone", started);
     }
@@ -224,7 +224,7 @@ class Ros2LifecycleLaunchTest {
         assertWrong(b, manager, manager + " --ros-args -p node_names:=[perception/1idar]", "parameter node_names: 'perception/1idar' is not"
                 + " the name of a node", "-p node_names:=");
         // A component with a wrong parameter: the container does not load it, says why, and stays.
-        try (Started running = start(b.install(), pkg, container + " --ros-args -r __node:=wrong_parameters_container",
+        try (Ros2Process running = start(b.install(), pkg, container + " --ros-args -r __node:=wrong_parameters_container",
                 "wrong-parameters-container")) {
             String load = "ros2 component load --no-daemon /wrong_parameters_container " + pkg + " " + plugin(b)
                     + " -p rsaml.simulated_load:=3.0";
@@ -238,9 +238,9 @@ class Ros2LifecycleLaunchTest {
             assertTrue(loaded.exit() != 0 && loaded.output().contains("Component constructor threw an exception: node /" + lidar
                     + ": parameter rsaml.simulated_load is 3: it must be a fraction from 0 to 1"), () -> "the container refuses the"
                     + " component and says why: " + said);
-            assertTrue(running.process.isAlive(), () -> "the container stays: " + said);
+            assertTrue(running.process().isAlive(), () -> "the container stays: " + said);
             String out = running.stop();
-            assertEquals(0, running.process.exitValue(), () -> "the container exits cleanly:\n" + Tools.last(out, 4000));
+            assertEquals(0, running.process().exitValue(), () -> "the container exits cleanly:\n" + Tools.last(out, 4000));
         }
         took("wrong arguments and parameters", started);
     }
@@ -412,52 +412,7 @@ class Ros2LifecycleLaunchTest {
         }
     }
 
-    /** A process of an installed executable of the package (with its arguments), its output in a log; killed when closed. */
-    private record Started(Process process, Path log) implements AutoCloseable {
-        /** Waits (at most 120 s) until the output says {@code text}. */
-        void await(String text) throws Exception {
-            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-            while (!Files.readString(log, StandardCharsets.UTF_8).contains(text)) {
-                String o = Files.readString(log, StandardCharsets.UTF_8);
-                if (!process.isAlive() || System.nanoTime() > until) {
-                    fail(log.getFileName() + ": did not say '" + text + "' within 120 s:\n" + Tools.last(o, 4000));
-                }
-                Thread.sleep(200);
-            }
-        }
-
-        /** SIGINT, then its output once it exited (it must within 30 s). */
-        String stop() throws Exception {
-            signal();
-            return exited();
-        }
-
-        /** Sends it SIGINT. */
-        void signal() throws Exception {
-            Tools.ok(log.getParent(), 10, "kill", "-INT", Long.toString(process.pid()));
-        }
-
-        /** Its output once it exited (it must within 30 s). */
-        String exited() throws Exception {
-            boolean exited = process.waitFor(30, TimeUnit.SECONDS);
-            String out = Files.readString(log, StandardCharsets.UTF_8);
-            assertTrue(exited, () -> log.getFileName() + ": still running 30 s after SIGINT:\n" + Tools.last(out, 4000));
-            return out;
-        }
-
-        @Override
-        public void close() {
-            process.descendants().forEach(ProcessHandle::destroyForcibly);
-            process.destroyForcibly();
-        }
-    }
-
-    private static Started start(Path install, String pkg, String executable, String name) throws Exception {
-        Path log = tmp.resolve(name + ".log");
-        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\"" + executable,
-                install))
-                .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
-        Ros2Jazzy.isolate(pb.environment(), DOMAIN);
-        return new Started(pb.start(), log);
+    private static Ros2Process start(Path install, String pkg, String executable, String name) throws Exception {
+        return Ros2Process.start(tmp, install, DOMAIN, pkg, executable, "", name);
     }
 }

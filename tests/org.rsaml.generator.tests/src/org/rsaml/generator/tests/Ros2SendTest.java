@@ -306,9 +306,9 @@ class Ros2SendTest {
         String lidarOut;
         String mapperOut;
         int reactivated;
-        try (Node lidarNode = Node.start(tmp, install, domain, pkg, lidar, "", "send-lidar");
-                Node mapperNode = Node.start(tmp, install, domain, pkg, mapper, "", "send-mapper");
-                Node manager = Node.start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
+        try (Ros2Process lidarNode = Ros2Process.start(tmp, install, domain, pkg, lidar, "", "send-lidar");
+                Ros2Process mapperNode = Ros2Process.start(tmp, install, domain, pkg, mapper, "", "send-mapper");
+                Ros2Process manager = Ros2Process.start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + ","
                         + mapper + "]", "", "send-manager")) {
             manager.await(mapper + " is active", 1);
             mapperNode.await("mapper got 3", 1);
@@ -345,15 +345,15 @@ class Ros2SendTest {
 
         // A null message: one line, and the program aborts.
         long nullStarted = System.nanoTime();
-        try (Node lidarNode = Node.start(tmp, install, domain, pkg, lidar, "export LIDAR_SEND_NULL=1; ", "null-lidar");
-                Node manager = Node.start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
+        try (Ros2Process lidarNode = Ros2Process.start(tmp, install, domain, pkg, lidar, "export LIDAR_SEND_NULL=1; ", "null-lidar");
+                Ros2Process manager = Ros2Process.start(tmp, install, domain, pkg, pkg + "_lifecycle_manager --ros-args -p node_names:=[" + lidar + "]",
                         "", "null-manager")) {
-            boolean ended = lidarNode.process.waitFor(120, TimeUnit.SECONDS);
+            boolean ended = lidarNode.process().waitFor(120, TimeUnit.SECONDS);
             String out = lidarNode.output();
             String nullSaid = lidar + " given a null message to send said:\n" + Tools.last(out, 4000);
             assertTrue(ended, "still running 120 s after it was started; " + nullSaid + "\nthe lifecycle manager said:\n"
                     + Tools.last(manager.output(), 2000));
-            int exit = lidarNode.process.exitValue();
+            int exit = lidarNode.process().exitValue();
             assertTrue(exit != 0 && exit != 2, () -> "exited with " + exit + ", not as a failed program (neither 0 nor 2); " + nullSaid);
             List<String> lines = out.lines().filter(l -> l.startsWith(lidar + ": ")).toList();
             assertEquals(1, lines.size(), () -> "one line of the program, not " + lines.size() + "; " + nullSaid);
@@ -376,66 +376,6 @@ class Ros2SendTest {
                     + "; ros2 lifecycle set --no-daemon /" + node + " " + transition, install).toArray(String[]::new));
         }
         assertEquals(0, r.exit(), "ros2 lifecycle set /" + node + " " + transition + " said:\n" + r.output());
-    }
-
-    /** A process of an installed executable of the package (with its arguments), its output in a log; killed when closed. */
-    private record Node(Process process, Path log) implements AutoCloseable {
-        static Node start(Path tmp, Path install, int domain, String pkg, String executable, String setup, String name) throws Exception {
-            Path log = tmp.resolve(name + ".log");
-            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash(setup + "exec \"$(ros2 pkg prefix " + pkg + ")/lib/" + pkg + "/\""
-                    + executable, install)).directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
-            Ros2Jazzy.isolate(pb.environment(), domain);
-            return new Node(pb.start(), log);
-        }
-
-        String output() throws java.io.IOException {
-            return Files.readString(log, StandardCharsets.UTF_8);
-        }
-
-        /** Waits (at most 120 s) until the output says {@code text} {@code times} times. */
-        void await(String text, int times) throws Exception {
-            awaitAfter(Pattern.compile(Pattern.quote(text)), 0, times);
-        }
-
-        /** Waits (at most 120 s) until the output matches {@code pattern} {@code times} times after {@code from}. */
-        void awaitAfter(Pattern pattern, int from, int times) throws Exception {
-            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-            while (true) {
-                String o = output();
-                Matcher m = pattern.matcher(o);
-                int found = 0;
-                int at = Math.max(from, 0);
-                while (at <= o.length() && m.find(at)) {
-                    found++;
-                    at = m.end();
-                }
-                if (found >= times) {
-                    return;
-                }
-                if (!process.isAlive() || System.nanoTime() > until) {
-                    fail(log.getFileName() + ": did not say '" + pattern + "' " + times + " times within 120 s:\n" + Tools.last(o, 4000));
-                }
-                Thread.sleep(200);
-            }
-        }
-
-        void signal() throws Exception {
-            Tools.ok(log.getParent(), 10, "kill", "-INT", Long.toString(process.pid()));
-        }
-
-        /** Its output once it exited (it must within 30 s). */
-        String exited() throws Exception {
-            boolean exited = process.waitFor(30, TimeUnit.SECONDS);
-            String out = output();
-            assertTrue(exited, () -> log.getFileName() + ": still running 30 s after SIGINT:\n" + Tools.last(out, 4000));
-            return out;
-        }
-
-        @Override
-        public void close() {
-            process.descendants().forEach(ProcessHandle::destroyForcibly);
-            process.destroyForcibly();
-        }
     }
 
     /** The body of the method (or block) that {@code opening} opens, to its closing brace at the same indentation. */
