@@ -52,11 +52,7 @@ class Ros2SendTest {
         int managed = 0;
         for (Path model : List.of(Tools.example("subsumption-brooks.rsaml"), Tools.resource("ros2-lifecycle.rsaml"))) {
             Path out = tmp.resolve(model.getFileName().toString());
-            new RsamlGenerator().generate(model, Target.ROS2, out, false);
-            List<Path> bases;
-            try (Stream<Path> s = Files.walk(out)) {
-                bases = s.filter(f -> f.toString().endsWith("Base.hpp") && f.toString().contains("/gen/")).sorted().toList();
-            }
+            List<Path> bases = generatedBases(model, out);
             assertTrue(!bases.isEmpty(), "no node base classes under " + out);
             for (Path base : bases) {
                 String text = Files.readString(base);
@@ -124,11 +120,7 @@ class Ros2SendTest {
         int managed = 0;
         for (Path model : List.of(Tools.example("subsumption-brooks.rsaml"), Tools.resource("ros2-lifecycle.rsaml"))) {
             Path out = tmp.resolve(model.getFileName().toString());
-            new RsamlGenerator().generate(model, Target.ROS2, out, false);
-            List<Path> bases;
-            try (Stream<Path> s = Files.walk(out)) {
-                bases = s.filter(f -> f.toString().endsWith("Base.hpp") && f.toString().contains("/gen/")).sorted().toList();
-            }
+            List<Path> bases = generatedBases(model, out);
             for (Path base : bases) {
                 String text = Files.readString(base);
                 boolean inputs = text.contains("ConstSharedPtr& message, bool replacing) {");
@@ -376,6 +368,14 @@ class Ros2SendTest {
                     + "; ros2 lifecycle set --no-daemon /" + node + " " + transition, install).toArray(String[]::new));
         }
         assertEquals(0, r.exit(), "ros2 lifecycle set /" + node + " " + transition + " said:\n" + r.output());
+    }
+
+    /** The node base classes (generated, under gen/) of the model's ROS 2 packages, generated into {@code out}. */
+    private static List<Path> generatedBases(Path model, Path out) throws Exception {
+        new RsamlGenerator().generate(model, Target.ROS2, out, false);
+        try (Stream<Path> s = Files.walk(out)) {
+            return s.filter(f -> f.toString().endsWith("Base.hpp") && f.toString().contains("/gen/")).sorted().toList();
+        }
     }
 
     /** The body of the method (or block) that {@code opening} opens, to its closing brace at the same indentation. */
