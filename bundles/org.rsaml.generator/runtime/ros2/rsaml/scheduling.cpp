@@ -296,6 +296,12 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
   }
   const std::int64_t dropped = (until - first + period_ns - 1) / period_ns;  // first + k * period < until
   const std::int64_t last = first + (dropped - 1) * period_ns;
+  // The late release and its call placed on CLOCK_MONOTONIC, the platform monitor's clock (the node's clock may be
+  // the system's), so that a check can hold the late call against what the platform took at that moment.
+  const std::int64_t now_monotonic = rsaml_jobs::monotonic_ns();
+  const rclcpp::Time now = clock_->now();
+  const std::int64_t expected_monotonic = now_monotonic - (now - expected).nanoseconds();
+  const std::int64_t called_monotonic = now_monotonic - (now - called).nanoseconds();
   Release& r = releases_[release];
   // counted and said under one lock, before the summary or not at all
   std::lock_guard<std::mutex> lock(stats_);
@@ -307,7 +313,9 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
   r.last_release_ns = last;
   trace("miss " + r.label + " released " + ms(first) + (dropped > 1 ? ".." + ms(last) : std::string()) + " ms not run (" +
         std::to_string(dropped) + (dropped > 1 ? " releases" : " release") + "): ROS 2's timer dropped " +
-        (dropped > 1 ? "them" : "it") + ", as its previous release was called " + ms((called - expected).nanoseconds()) + " ms late");
+        (dropped > 1 ? "them" : "it") + ", as its previous release was called " + ms((called - expected).nanoseconds()) +
+        " ms late (on CLOCK_MONOTONIC: released " + std::to_string(expected_monotonic) + " ns, called " +
+        std::to_string(called_monotonic) + " ns)");
 }
 
 std::size_t Schedule::rsaml_add_arrivals(const std::string& port) {

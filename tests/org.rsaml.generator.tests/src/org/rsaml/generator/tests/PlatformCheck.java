@@ -524,19 +524,29 @@ final class PlatformCheck {
      * One job's check: released at {@code releaseNs} (CLOCK_MONOTONIC; -1 for the check that stands for the jobs the
      * program did not list, {@code unlisted}), its response {@code responseNs}, and its bound with the platform as
      * measured ({@code boundNs}, -1: none, {@code why} says why), from the loss it took ({@code loss}: in the job's own
-     * window, or for the unlisted jobs the most in any window as long) and how ({@code how}).
+     * window, or for the unlisted jobs the most in any window as long) and how ({@code how}). {@code lossUnbounds}: there
+     * is no bound only because of what the platform took (the same check with no loss finds one): no response can
+     * contradict the analysis then, and the job cannot be judged, which is said ({@link #describe}), not a failure.
      */
-    record JobCheck(long releaseNs, long responseNs, long boundNs, Loss loss, String how, String why, boolean unlisted) {
+    record JobCheck(long releaseNs, long responseNs, long boundNs, Loss loss, String how, String why, boolean unlisted, boolean lossUnbounds) {
+        /** Within its bound with the platform as measured. */
         boolean passes() {
             return boundNs >= 0 && responseNs <= boundNs;
+        }
+
+        /** Whether the job shows the analysis wrong: past its bound with the platform as measured, or with no bound the platform's loss explains. */
+        boolean contradicts() {
+            return !passes() && !(boundNs < 0 && lossUnbounds);
         }
 
         /** For a message: the job, its response, its bound with the loss it took and how. */
         String describe(long runStartNs) {
             return (unlisted ? "the jobs over it that the program did not list, by the worst response "
                     : "the job released " + JobTimingTest.ms(releaseNs - runStartNs) + " into the run, response ")
-                    + JobTimingTest.ms(responseNs) + (passes() ? " within" : " exceeds") + " its bound with the platform as measured: "
-                    + (boundNs < 0 ? "no bound (" + why + ")" : JobTimingTest.ms(boundNs)) + ", by " + how;
+                    + JobTimingTest.ms(responseNs) + (passes() ? " within" : contradicts() ? " exceeds" : " not judged by")
+                    + " its bound with the platform as measured: " + (boundNs < 0 ? "no bound (" + why + (lossUnbounds
+                            ? "; with no loss there is one: what the platform took leaves nothing to contradict" : "") + ")"
+                            : JobTimingTest.ms(boundNs)) + ", by " + how;
         }
     }
 
@@ -547,18 +557,24 @@ final class PlatformCheck {
      * or not checked at all ({@code unchecked} says why).
      */
     record Bound(long analysedNs, long windowNs, List<JobCheck> jobs, String unchecked, TaskCheck task) {
-        /** The job that decides: the first that fails, else the one closest to its bound; null when no job exceeded the analysed bound. */
+        /**
+         * The job that decides: the first that contradicts the analysis, else the one closest to its bound, else one
+         * that cannot be judged; null when no job exceeded the analysed bound.
+         */
         JobCheck decisive() {
             JobCheck closest = null;
+            JobCheck unjudged = null;
             for (JobCheck j : jobs) {
-                if (!j.passes()) {
+                if (j.contradicts()) {
                     return j;
                 }
-                if (closest == null || j.boundNs() - j.responseNs() < closest.boundNs() - closest.responseNs()) {
+                if (!j.passes()) {
+                    unjudged = unjudged == null ? j : unjudged;
+                } else if (closest == null || j.boundNs() - j.responseNs() < closest.boundNs() - closest.responseNs()) {
                     closest = j;
                 }
             }
-            return closest;
+            return closest != null ? closest : unjudged;
         }
     }
 
@@ -696,11 +712,11 @@ final class PlatformCheck {
                 String how = "the analysis run again with " + loss + window + " taken from the processor above every rank, "
                         + JobTimingTest.ms(bookkeepingNs) + " of bookkeeping added to every job" + othersSaid;
                 if (r.isPresent() && r.getAsLong() <= limit) {
-                    return new JobCheck(releaseNs, responseNs, r.getAsLong(), loss, how, null, unlisted);
+                    return new JobCheck(releaseNs, responseNs, r.getAsLong(), loss, how, null, unlisted, false);
                 }
                 if (!bookkeepingOverloads()) {
                     return new JobCheck(releaseNs, responseNs, -1, loss, how, "the analysis finds no response within " + UNBOUNDED_DEADLINES
-                            + " times the deadline: the platform left too little of the CPU", unlisted);
+                            + " times the deadline: the platform left too little of the CPU", unlisted, loss.ns() > 0 && boundedWithoutLoss());
                 }
             }
             long sum = bound + bookkeepingNs + others.totalNs() + loss.ns();
@@ -710,7 +726,18 @@ final class PlatformCheck {
                     + (reanalysable ? " (the analysis run again with " + JobTimingTest.ms(bookkeepingNs)
                             + " of bookkeeping on every job finds no bound: the processor is overloaded with it)" : "");
             return sum > limit ? new JobCheck(releaseNs, responseNs, -1, loss, how, "the platform left too little of the CPU: no bound within "
-                    + UNBOUNDED_DEADLINES + " times the deadline", unlisted) : new JobCheck(releaseNs, responseNs, sum, loss, how, null, unlisted);
+                    + UNBOUNDED_DEADLINES + " times the deadline", unlisted, loss.ns() > 0 && boundedWithoutLoss())
+                    : new JobCheck(releaseNs, responseNs, sum, loss, how, null, unlisted, false);
+        }
+
+        private Boolean boundedWithoutLoss;
+
+        /** Whether this task has a bound when the platform takes nothing (its bookkeeping and the others' time still counted). */
+        private boolean boundedWithoutLoss() {
+            if (boundedWithoutLoss == null) {
+                boundedWithoutLoss = with(Loss.NONE, -1, 0, true).boundNs() >= 0;
+            }
+            return boundedWithoutLoss;
         }
 
         /** Whether the processor's tasks, each with the bookkeeping added to its cost, need more than the whole processor. */
@@ -794,10 +821,13 @@ final class PlatformCheck {
             return b == null ? "no bound by the analysis" : b.unchecked();
         }
 
-        /** Whether every job of {@code label} the run reported over its analysed bound is within its bound with the platform as measured. */
+        /**
+         * Whether no job of {@code label} the run reported over its analysed bound contradicts the analysis: each within its
+         * bound with the platform as measured, or without one only because of what the platform took ({@link JobCheck#contradicts}).
+         */
         boolean admits(String label) {
             Bound b = bounds.get(label);
-            return b != null && b.unchecked() == null && b.jobs().stream().allMatch(JobCheck::passes);
+            return b != null && b.unchecked() == null && b.jobs().stream().noneMatch(JobCheck::contradicts);
         }
 
         /** The check of a job of {@code label} released at {@code releaseNs} and done at {@code doneNs} (CLOCK_MONOTONIC), whether the run had it or not. */
@@ -818,7 +848,7 @@ final class PlatformCheck {
             if (d == null) {
                 return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + ", which no job exceeded";
             }
-            long failing = b.jobs().stream().filter(j -> !j.passes()).count();
+            long failing = b.jobs().stream().filter(JobCheck::contradicts).count();
             return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + "; " + b.jobs().stream().filter(j -> !j.unlisted()).count()
                     + " jobs over it listed" + (b.jobs().stream().anyMatch(JobCheck::unlisted) ? " and more not listed" : "")
                     + ", each held to its bound with the platform's loss in its own window; " + (failing > 0 ? failing + " fail, the first: "
