@@ -164,8 +164,10 @@ class Ros2LaunchTest {
                 "the analysis: A meets, B and C miss");
 
         // the analysis's misses are error findings: generated anyway, as an architect would to see them
+        long before = System.nanoTime(); // CLOCK_MONOTONIC, as the nodes' instants
         String out = run(model, "overloaded.rsaml", tmp, src -> {
         }, true);
+        long after = System.nanoTime();
         Map<String, JobSummary> observed = JobSummary.of(out);
         Map<String, Missed> missed = Missed.of(out);
         JobSummary b = observed.get("tasks/b.f");
@@ -179,6 +181,11 @@ class Ros2LaunchTest {
                 + " deadline 4 ms), was not observed on ROS 2: " + b + "\n" + Tools.last(out, 4000));
         assertTrue(missed.getOrDefault("tasks/c.f", Missed.NONE).dropped() > 0, "C's releases, due while A's 4 ms jobs run above it"
                 + " (period 3 ms), were not dropped by ROS 2's timer and counted as misses: " + c + "\n" + Tools.last(out, 4000));
+        // each drop said with the late call that made the timer drop it, on the monitor's clock: a period or more after its release
+        List<long[]> calls = missed.get("tasks/c.f").lateCalls();
+        assertTrue(!calls.isEmpty() && calls.stream().allMatch(x -> x[1] - x[0] >= 3_000_000 && x[0] > before && x[1] < after),
+                "C's drops, each with the release before them and its call a period or more later, during the launch: "
+                        + calls.stream().map(x -> x[0] + ".." + x[1]).limit(5).toList());
         // A, at the top rank, meets: run() held its every miss (a job past its deadline, a release dropped after a late
         // call) to its bound with the platform's loss at that moment (contradictions), and failed on any that exceeds it
         Missed a = missed.getOrDefault("tasks/a.f", Missed.NONE);
