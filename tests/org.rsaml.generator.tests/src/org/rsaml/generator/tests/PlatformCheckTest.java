@@ -337,10 +337,8 @@ class PlatformCheckTest {
                 PlatformCheck.Platform.parse(text, RUN_START, RUN_START + 1_000_000).notMeasured(), "a monitor without its priority measures nothing");
     }
 
-    @Test
-    void whereTheBookkeepingOnEveryJobOverloadsTheProcessorThePlainSumIsTakenAndSaid(@TempDir Path tmp) throws Exception {
-        // Ros2LaunchTest's overloaded processor: A (T 10, C 5), B (T 13, D 4, C 2.5), C (T 3, C 0.625): 0.9 of the CPU, 1.05 with
-        // 0.3 ms more a job, where the analysis bounds nothing; C's bound is then its analysed bound plus the bookkeeping and the loss.
+    /** The analysis of Ros2LaunchTest's overloaded processor (A, B and C on core 1), written to {@code tmp}. */
+    private static org.rsaml.analysis.ArchitectureTiming overloaded(Path tmp) throws Exception {
         String modules = JobTimingTest.module("a", 10, 5, "RM") + JobTimingTest.module("b", 13, 2.5, "RM").replace("delay=\"13.0\"", "delay=\"4.0\"")
                 + JobTimingTest.module("c", 3, 0.625, "FIFO");
         Path model = tmp.resolve("overloaded.rsaml");
@@ -348,6 +346,14 @@ class PlatformCheckTest {
                 + "//@layers[name='tasks']/@modules[name='a'] //@layers[name='tasks']/@modules[name='b'] //@layers[name='tasks']/@modules[name='c']\"/>\n"));
         org.rsaml.analysis.ArchitectureTiming timing = org.rsaml.analysis.TimingAnalysis.analyse(
                 org.rsaml.validation.ModelLoader.load(model, "overloaded.rsaml").architecture());
+        return timing;
+    }
+
+    @Test
+    void whereTheBookkeepingOnEveryJobOverloadsTheProcessorThePlainSumIsTakenAndSaid(@TempDir Path tmp) throws Exception {
+        // Ros2LaunchTest's overloaded processor: A (T 10, C 5), B (T 13, D 4, C 2.5), C (T 3, C 0.625): 0.9 of the CPU, 1.05 with
+        // 0.3 ms more a job, where the analysis bounds nothing; C's bound is then its analysed bound plus the bookkeeping and the loss.
+        org.rsaml.analysis.ArchitectureTiming timing = overloaded(tmp);
         PlatformCheck.Allowance a = PlatformCheck.Allowance.of(platform(100, 20_000), OtherRealtime.Use.NONE, timing, Map.of(), label -> 1,
                 PlatformCheck.BOOKKEEPING_NS);
         long[] j = job(50, 3);
@@ -364,13 +370,7 @@ class PlatformCheckTest {
         // The same processor in a CI run of 15 s: with the bookkeeping its level's busy period has no end within the run, so a
         // job's window is the whole run and what the platform took in it, more than C's bound allows; without that loss the
         // plain sum bounds it. No response can contradict the analysis then: the job is said not judged, not failed.
-        String modules = JobTimingTest.module("a", 10, 5, "RM") + JobTimingTest.module("b", 13, 2.5, "RM").replace("delay=\"13.0\"", "delay=\"4.0\"")
-                + JobTimingTest.module("c", 3, 0.625, "FIFO");
-        Path model = tmp.resolve("overloaded.rsaml");
-        Files.writeString(model, JobTimingTest.modelText("overloaded", modules, "  <processors name=\"cpu1\" core=\"1\" modules=\""
-                + "//@layers[name='tasks']/@modules[name='a'] //@layers[name='tasks']/@modules[name='b'] //@layers[name='tasks']/@modules[name='c']\"/>\n"));
-        org.rsaml.analysis.ArchitectureTiming timing = org.rsaml.analysis.TimingAnalysis.analyse(
-                org.rsaml.validation.ModelLoader.load(model, "overloaded.rsaml").architecture());
+        org.rsaml.analysis.ArchitectureTiming timing = overloaded(tmp);
         Map<String, JobSummary> run = JobSummary.of(summary("tasks/c.f", 40, 1.2, 0.62, 0.625, 39, 0.01, "SCHED_FIFO rank 1", job(14_500, 40)));
         PlatformCheck.Allowance ci = PlatformCheck.Allowance.of(platform(15_000, 25_000), OtherRealtime.Use.NONE, timing, run, label -> 1,
                 PlatformCheck.BOOKKEEPING_NS + PlatformCheck.ROS2_EXECUTOR_NS);
