@@ -322,20 +322,26 @@ public final class TimingAnalysis {
 
     /**
      * The tasks that aperiodic work can delay without bound lose their verdict: under fixed priorities
-     * those analysed at priority 0 (reactions, and releases sharing a lock with one); under any other
-     * policy all of them. A proven miss stays a miss.
+     * those analysed at priority 0 (reactions, and releases sharing a lock with one, the module's own
+     * aperiodic reaction included: it holds the module's lock at priority 0, where aperiodic work can
+     * keep it from running); under any other policy all of them. A proven miss stays a miss.
      */
     private static ProcessorResult withoutLevelZero(ProcessorResult r, SchedulingPolicy policy, List<Exclusion> aperiodic) {
         String who = String.join(", ", aperiodic.stream().map(Exclusion::label).toList());
+        // the lock groups of the modules whose reaction is aperiodic: a module's tasks are grouped by its qualified name
+        Set<String> lockedWith = new HashSet<>(aperiodic.stream().map(Exclusion::label).toList());
         List<TaskResult> tasks = new ArrayList<>();
         Verdict verdict = Verdict.MEETS;
         int[] effective = org.rsaml.analysis.internal.ResponseTimes.effectivePriorities(r.tasks().stream().map(TaskResult::task).toList());
         for (int i = 0; i < r.tasks().size(); i++) {
             TaskResult t = r.tasks().get(i);
-            boolean exposed = policy != SchedulingPolicy.FIXED_PRIORITY || effective[i] <= 0;
+            boolean locked = lockedWith.contains(t.task().group());
+            boolean exposed = policy != SchedulingPolicy.FIXED_PRIORITY || effective[i] <= 0 || locked;
             if (exposed && t.verdict() == Verdict.MEETS) {
-                t = new TaskResult(t.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED,
-                        "not analysed: aperiodic reactions on this processor (" + who + ") can delay it without bound", null);
+                t = new TaskResult(t.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED, locked
+                        ? "not analysed: it waits for its module's lock while the module's aperiodic reaction, which the analysis"
+                                + " excludes, holds it, and no such wait is counted (aperiodic reactions on this processor: " + who + ")"
+                        : "not analysed: aperiodic reactions on this processor (" + who + ") can delay it without bound", null);
             }
             verdict = verdict.and(t.verdict());
             tasks.add(t);

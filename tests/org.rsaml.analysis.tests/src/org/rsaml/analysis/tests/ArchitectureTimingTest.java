@@ -104,6 +104,27 @@ class ArchitectureTimingTest {
         assertTrue(timing.excluded().get(0).reason().contains("execType sporadic"), timing.excluded().get(0).reason());
     }
 
+    /**
+     * Experiment 1: m01's periodic function shares its module's lock with m01's aperiodic reaction, which holds it below
+     * the real-time ranks: the function's wait for the lock has no bound, so it is not analysed (it was once given a
+     * bound that counted no such wait, and on ROS 2 its jobs responded past it); the releases of modules without an
+     * aperiodic reaction keep their verdicts.
+     */
+    @Test
+    void aReleaseSharingItsLockWithAnAperiodicReactionIsNotAnalysed() throws Exception {
+        ArchitectureTiming timing = TimingAnalysis.analyse(example("exp1-hybrid.rsaml"));
+        java.util.Set<String> aperiodic = new java.util.HashSet<>(timing.excluded().stream().map(x -> x.label()).toList());
+        assertTrue(aperiodic.contains("functional/m01"), "m01 reacts aperiodically: " + aperiodic);
+        TaskResult f0 = timing.processors().stream().flatMap(p -> p.result().tasks().stream())
+                .filter(t -> t.task().name().equals("functional/m01.f0_m01")).findFirst().orElseThrow();
+        assertEquals(Verdict.NOT_ANALYSED, f0.verdict(), "m01's function waits for the lock m01's aperiodic reaction holds");
+        assertTrue(f0.explanation().startsWith("not analysed: it waits for its module's lock while the module's aperiodic reaction, which the analysis excludes, holds it"),
+                f0.explanation());
+        long kept = timing.processors().stream().flatMap(p -> p.result().tasks().stream())
+                .filter(t -> !aperiodic.contains(t.task().group()) && t.task().priority() > 0 && t.verdict() == Verdict.MEETS).count();
+        assertTrue(kept > 0, "the real-time releases of modules without an aperiodic reaction keep their verdicts");
+    }
+
     @Test
     void aModuleOnTwoProcessorsIsRefused() throws Exception {
         Architecture a = example("mobile-base-latency.rsaml");

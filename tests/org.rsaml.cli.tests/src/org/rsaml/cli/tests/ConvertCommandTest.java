@@ -43,15 +43,15 @@ class ConvertCommandTest {
 
     @Test
     void aFolderOfTextualModelsIsValidatedAndConvertedBack() throws Exception {
-        assertEquals(0, Cli.run("convert", "examples/exp1-hybrid.rsaml", temp.resolve("models/exp1.rsa").toString()).code(), "convert writes the textual model");
+        assertEquals(0, Cli.run("convert", "examples/exp3-task-interpreter.rsaml", temp.resolve("models/exp3.rsa").toString()).code(), "convert writes the textual model");
         Cli.Result folder = Cli.runIn(temp, "validate", "models");
         assertEquals(0, folder.code(), folder.toString());
-        assertTrue(folder.out().contains("models/exp1.rsa: no findings"), "the .rsa file is found in the folder:\n" + folder);
+        assertTrue(folder.out().contains("models/exp3.rsa: no findings"), "the .rsa file is found in the folder:\n" + folder);
 
-        Cli.Result back = Cli.runIn(temp, "convert", "models/exp1.rsa", "exp1.rsaml");
+        Cli.Result back = Cli.runIn(temp, "convert", "models/exp3.rsa", "exp3.rsaml");
         assertEquals(0, back.code(), back.toString());
-        assertEquals("wrote exp1.rsaml\n", back.out(), back.toString());
-        Cli.Result again = Cli.runIn(temp, "validate", "exp1.rsaml");
+        assertEquals("wrote exp3.rsaml\n", back.out(), back.toString());
+        Cli.Result again = Cli.runIn(temp, "validate", "exp3.rsaml");
         assertEquals(0, again.code(), again.toString());
     }
 

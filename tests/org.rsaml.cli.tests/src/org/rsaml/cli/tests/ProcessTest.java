@@ -34,7 +34,7 @@ class ProcessTest {
 
     @Test
     void runnableJarExitCodes() throws Exception {
-        assertEquals(0, Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/exp1-hybrid.rsaml")).code(), "the runnable jar exits 0 on a clean model");
+        assertEquals(0, Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "examples/exp3-task-interpreter.rsaml")).code(), "the runnable jar exits 0 on a clean model");
         Cli.Result usage = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "--format"));
         assertEquals(2, usage.code(), usage::toString);
         Cli.Result missing = Cli.process(Cli.ROOT, Cli.java(List.of(), "validate", "nowhere.rsaml"));

@@ -41,8 +41,8 @@ class FindingsTest {
 
     @Test
     void aCleanModelHasNoDecoration() throws Exception {
-        Examples.Drawn drawn = Examples.draw("exp1-hybrid.rsaml", DiagramView.ARCHITECTURE);
-        assertEquals(List.of(), drawn.findings(), "experiment 1 has no finding");
+        Examples.Drawn drawn = Examples.draw("exp3-task-interpreter.rsaml", DiagramView.ARCHITECTURE);
+        assertEquals(List.of(), drawn.findings(), "experiment 3 has no finding");
         SvgDocument svg = new SvgDocument(drawn.svg());
         assertTrue(svg.shapes.values().stream().noneMatch(s -> s.classes().contains("error") || !s.badges().isEmpty()),
                 "no shape is marked or badged");

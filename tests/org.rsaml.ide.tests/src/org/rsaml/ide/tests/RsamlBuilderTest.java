@@ -62,7 +62,10 @@ class RsamlBuilderTest {
 
     private static final IWorkspace WORKSPACE = ResourcesPlugin.getWorkspace();
 
-    /** Experiment 2's five defects as (rule, line, severity), sorted by rule, from the expectations the model states. */
+    /**
+     * Experiment 2's five defects and its timing warning as (rule, line, severity), sorted by rule, from the expectations the
+     * model states.
+     */
     private static final List<String> EXPERIMENT_TWO = experimentTwo();
     /** The module of exp2's budget defect, which the test fixes. */
     private static final String BUDGET = "hybridMobileRobotWithDefects/control/resourceChecker";
@@ -146,7 +149,7 @@ class RsamlBuilderTest {
         String message = (String) markers(file).get(0).getAttribute(IMarker.MESSAGE);
         assertTrue(message.startsWith("RSA-00: malformed XML: ") && message.contains("layers"), message);
 
-        file.setContents(Files.newInputStream(TestRepository.example("exp1-hybrid.rsaml")), IResource.FORCE, null);
+        file.setContents(Files.newInputStream(TestRepository.example("exp3-task-interpreter.rsaml")), IResource.FORCE, null);
         project.build(IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
         assertEquals(List.of(), summaries(file), "the repaired file's marker is gone");
     }
@@ -291,7 +294,7 @@ class RsamlBuilderTest {
     @Test
     void aCleanExampleGetsNoMarker() throws Exception {
         RsamlProjects.addNature(project, null);
-        IFile clean = copy(TestRepository.example("exp1-hybrid.rsaml"), "exp1-hybrid.rsaml");
+        IFile clean = copy(TestRepository.example("exp3-task-interpreter.rsaml"), "exp3-task-interpreter.rsaml");
         IFile defective = copy(TestRepository.example("exp2-defects.rsaml"), "exp2-defects.rsaml");
         project.build(IncrementalProjectBuilder.FULL_BUILD, null);
 
@@ -430,7 +433,7 @@ class RsamlBuilderTest {
         try {
             List<String> expected = new ArrayList<>(ExpectedFinding.of(TestRepository.example("exp2-defects.rsaml")).stream()
                     .map(f -> f.ruleId() + " line " + f.line() + " " + f.severity()).toList());
-            assertEquals(5, expected.size(), "exp2-defects.rsaml states the paper's five defects");
+            assertEquals(5, expected.stream().filter(f -> f.endsWith(" error")).count(), "exp2-defects.rsaml states the paper's five defects");
             expected.sort(null);
             return expected;
         } catch (IOException e) {

@@ -159,7 +159,10 @@ class ReportFormatsInOsgiTest {
         List<Path> exp2 = List.of(Path.of(EXP2));
         assertEquals(1, ModelBatch.validate(root, exp2, Severity.ERROR).exitCode(), "errors fail the run");
         assertEquals(0, ModelBatch.validate(root, exp2, null).exitCode(), "findings never fail the run when told so");
-        assertEquals(0, ModelBatch.validate(root, List.of(Path.of("examples/exp1-hybrid.rsaml")), Severity.INFO).exitCode(),
+        assertEquals(0, ModelBatch.validate(root, List.of(Path.of("examples/exp3-task-interpreter.rsaml")), Severity.INFO).exitCode(),
                 "a clean model passes at any threshold");
+        List<Path> exp1 = List.of(Path.of("examples/exp1-hybrid.rsaml"));
+        assertEquals(0, ModelBatch.validate(root, exp1, Severity.ERROR).exitCode(), "experiment 1's one warning (RSA-24) passes by default");
+        assertEquals(1, ModelBatch.validate(root, exp1, Severity.WARNING).exitCode(), "and fails the run at the warning threshold");
     }
 }
