@@ -4,6 +4,9 @@
 # (Debian package hyperfine). Run from anywhere; the jar is built first if it is missing. Prints wall and
 # CPU times, each with its ratio to java -version's of the same JDK (on a shared machine the CPU ratio is the
 # steadier one), and the load average before and after.
+# The rows marked "resident process" run ./rsaml with RSAML_DAEMON=1, served by a resident process started before
+# the runs (./rsaml daemon start) and stopped after: their CPU is the client's process alone; the resident process's
+# own CPU per command, read from /proc before and after the runs, is printed below the table.
 # Usage: releng/org.rsaml.bench/startup.sh [runs]
 # RSAML_BENCH_JDKS: more JDKs (their homes, separated by spaces) to run ./rsaml with beside the java on the PATH,
 # e.g. RSAML_BENCH_JDKS=/usr/lib/jvm/temurin-25-jdk-amd64 (./rsaml then uses that JDK's AOT cache).
@@ -27,8 +30,21 @@ if [ -n "$baseline" ]; then
   baseline="$(cd "$baseline" && pwd)"
   "$baseline/rsaml" validate "$model" >/dev/null || true
 fi
+# resident JDK_HOME: starts the resident process of that JDK (or of the java on the PATH) and prints its process id.
+resident() {
+  local status
+  status="$(env ${1:+JAVA_HOME=$1} ./rsaml daemon start)"
+  [[ "$status" =~ resident\ process\ ([0-9]+)\ running ]] || { echo "startup.sh: no resident process: $status" >&2; exit 2; }
+  echo "${BASH_REMATCH[1]}"
+}
+# cpu PID: the process's CPU time so far (user + system), in clock ticks.
+cpu() { awk '{ print $14 + $15 }' "/proc/$1/stat"; }
+pid="$(resident '')"   # an assignment: a failed start stops the script (set -e)
+residents=("$pid")
+trap 'for jdk in "" ${RSAML_BENCH_JDKS:-}; do env ${jdk:+JAVA_HOME=$jdk} ./rsaml daemon stop >/dev/null || true; done' EXIT
 commands=(-n 'java -version (the floor)' 'java -version'
   -n './rsaml validate' "./rsaml validate $model"
+  -n './rsaml validate, resident process' "env RSAML_DAEMON=1 ./rsaml validate $model"
   -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model"
   -n './rsaml --version' './rsaml --version')
 [ -z "$baseline" ] || commands+=(-n 'baseline: ./rsaml validate' "$baseline/rsaml validate $model")
@@ -36,7 +52,10 @@ for jdk in ${RSAML_BENCH_JDKS:-}; do
   JAVA_HOME="$jdk" ./rsaml validate "$model" >/dev/null || true
   v="$(sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$jdk/release" 2>/dev/null)"
   commands+=(-n "java -version (the floor), Java ${v:-?}" "$jdk/bin/java -version"
-    -n "./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk ./rsaml validate $model")
+    -n "./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk ./rsaml validate $model"
+    -n "./rsaml validate, resident process, Java ${v:-?}" "env JAVA_HOME=$jdk RSAML_DAEMON=1 ./rsaml validate $model")
+  pid="$(resident "$jdk")"
+  residents+=("$pid")
   if [ -n "$baseline" ]; then
     JAVA_HOME="$jdk" "$baseline/rsaml" validate "$model" >/dev/null || true
     commands+=(-n "baseline: ./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk $baseline/rsaml validate $model")
@@ -44,10 +63,14 @@ for jdk in ${RSAML_BENCH_JDKS:-}; do
 done
 out="$(mktemp)"
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
+before=(); for pid in "${residents[@]}"; do before+=("$(cpu "$pid")"); done
 hyperfine -N -i --warmup 3 --runs "$runs" --export-json "$out" "${commands[@]}"
-python3 - "$out" <<'PY'
+served=""
+for i in "${!residents[@]}"; do served+=" $(( $(cpu "${residents[$i]}") - ${before[$i]} ))"; done
+python3 - "$out" "$((runs + 3))" "$(getconf CLK_TCK)" $served <<'PY'
 import json, sys
 results = json.load(open(sys.argv[1]))["results"]
+commands, tick, served = int(sys.argv[2]), int(sys.argv[3]), [int(t) for t in sys.argv[4:]]
 print("| command | median (wall) | ÷ java -version | CPU (user + system, mean) | ÷ java -version | mean ± σ | min | max |")
 print("|---|---:|---:|---:|---:|---:|---:|---:|")
 for r in results:
@@ -57,6 +80,10 @@ for r in results:
     cpu = r["user"] + r["system"]
     print(f"| {r['command']} | {ms(r['median'])} | {r['median'] / floor:.1f}× | {ms(cpu)} | {cpu / cpu_floor:.1f}× "
           f"| {ms(r['mean'])} ± {r['stddev'] * 1000:,.0f} | {ms(r['min'])} | {ms(r['max'])} |")
+    if "resident process" in r["command"]:
+        server = served.pop(0) / tick / commands   # the resident process's CPU per command, not in the row
+        print(f"| … its resident process's own CPU per command (not in the row above), and the two together "
+              f"| | | {ms(server)} | {server / cpu_floor:.1f}× | {ms(cpu + server)}: {(cpu + server) / cpu_floor:.1f}× | | |")
 PY
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
 rm -f "$out"

@@ -172,14 +172,15 @@ class ProcessTest {
                 () -> "the JVM's refusal of the class data is shown, not hidden:\n" + refused);
     }
 
-    /** The launcher, the jar with its class data and one example, copied to {@code tree} with their files' times. */
-    private static Path copyTree(Path tree) throws Exception {
+    /** The launcher, the jar with its class data, the resident process's client and one example, copied to {@code tree} with their files' times. */
+    static Path copyTree(Path tree) throws Exception {
         Path target = Files.createDirectories(tree.resolve("cli/org.rsaml.cli/target"));
         Files.createDirectories(tree.resolve("examples"));
         Files.copy(Cli.ROOT.resolve("rsaml"), tree.resolve("rsaml"), StandardCopyOption.COPY_ATTRIBUTES);
         Files.copy(Cli.ROOT.resolve("examples/exp2-defects.rsaml"), tree.resolve("examples/exp2-defects.rsaml"));
         Path built = Cli.ROOT.resolve("cli/org.rsaml.cli/target");
-        for (String name : List.of("rsaml.jar", "rsaml.jsa", "rsaml.jsa.stamp", "rsaml.aot", "rsaml.aot.stamp")) {
+        for (String name : List.of("rsaml.jar", "rsaml.jsa", "rsaml.jsa.stamp", "rsaml.aot", "rsaml.aot.stamp",
+                "rsaml-client.jar")) {
             if (Files.exists(built.resolve(name))) {
                 Files.copy(built.resolve(name), target.resolve(name), StandardCopyOption.COPY_ATTRIBUTES);
             }

@@ -93,21 +93,29 @@ public final class RsamlCli implements Runnable {
     }
 
     public static void main(String[] args) {
-        // A process of its own (the launcher, the runnable jar, the language server): Guice, which builds the text
-        // syntax's objects, does so by reflection rather than by generating classes, which needs sun.misc.Unsafe and
-        // on JDK 24 and later prints warnings about it that a user can do nothing about. A value given with -D stays.
-        if (System.getProperty(GUICE_CLASS_GENERATION) == null) {
-            System.setProperty(GUICE_CLASS_GENERATION, "DISABLED");
-        }
-        if (System.getProperty(PICOCLI_CONVERTER_EXCLUDES) == null) {
-            System.setProperty(PICOCLI_CONVERTER_EXCLUDES, ".*");
-        }
+        setUpProcess();
         PrintWriter out = new PrintWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), true);
         PrintWriter err = new PrintWriter(new OutputStreamWriter(System.err, StandardCharsets.UTF_8), true);
         int code = run(Path.of("").toAbsolutePath(), args, out, err);
         out.flush();
         err.flush();
         System.exit(code);
+    }
+
+    /**
+     * Sets what a process running {@code rsaml}'s commands needs, once, before the first (the launcher's JVM, the
+     * runnable jar, the language server, the resident process): Guice, which builds the text syntax's objects, does so
+     * by reflection rather than by generating classes, which needs sun.misc.Unsafe and on JDK 24 and later prints
+     * warnings about it that a user can do nothing about; picocli looks up none of its reflective converters. A value
+     * given with -D stays.
+     */
+    public static void setUpProcess() {
+        if (System.getProperty(GUICE_CLASS_GENERATION) == null) {
+            System.setProperty(GUICE_CLASS_GENERATION, "DISABLED");
+        }
+        if (System.getProperty(PICOCLI_CONVERTER_EXCLUDES) == null) {
+            System.setProperty(PICOCLI_CONVERTER_EXCLUDES, ".*");
+        }
     }
 
     /** Runs {@code rsaml} in this JVM, relative paths resolved against {@code workingDirectory}. */

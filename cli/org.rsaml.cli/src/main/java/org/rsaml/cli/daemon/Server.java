@@ -1,0 +1,349 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli.daemon;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.net.StandardProtocolFamily;
+import java.net.UnixDomainSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
+import java.time.Instant;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+import org.rsaml.cli.RsamlCli;
+import org.rsaml.report.ExitCodes;
+
+/**
+ * RsaML's resident process: runs {@code rsaml}'s command lines, sent by {@link Client}, one after the other in one JVM,
+ * so that a command does not pay for the JVM's and EMF's start. Each command runs through {@link RsamlCli#run} as in a
+ * JVM of its own, in the client's working directory, its standard output and error (also what a library prints on
+ * {@code System.out} or {@code System.err} during the command) sent back as it is written, then its exit code. Commands
+ * never overlap: {@code System.out} and EMF's registries are the process's.
+ *
+ * <p>The process listens on a Unix domain socket in a folder of this user's that no one else can enter. It declines
+ * the language server (which talks on standard input), answers a command sent with other settings than its own (another
+ * jar, a rebuilt one, another JDK, JVM options, locale or umask) by stopping, stops when its client goes away during a
+ * command (as a JVM of its own stops on Ctrl-C), and after {@link #IDLE} without a command.
+ *
+ * <p>Usage: {@code Server SOCKET SETTINGS}.
+ */
+public final class Server {
+
+    /** How long the process waits for a command before it stops. */
+    static final Duration IDLE = Duration.ofHours(3);
+
+    private final Path socket;
+    private final String settings;
+    private final PrintStream log;
+    private final Instant started = Instant.now();
+    private long commands;
+    /** When the last command ended; null while one runs. */
+    private Instant idleSince = Instant.now();
+
+    private Server(Path socket, String settings, PrintStream log) {
+        this.socket = socket;
+        this.settings = settings;
+        this.log = log;
+    }
+
+    public static void main(String[] args) throws IOException, InterruptedException {
+        if (args.length != 2) {
+            System.err.println("usage: Server SOCKET SETTINGS");
+            System.exit(ExitCodes.INPUT_ERROR);
+        }
+        Path socket = Path.of(args[0]).toAbsolutePath();
+        Path folder = socket.getParent();
+        if (!Files.isDirectory(folder)) {
+            Files.createDirectories(folder, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
+        }
+        if (!Client.ownFolder(folder)) {
+            System.err.println("rsaml: not started: " + folder + " must be a folder of this user's that no one else can enter");
+            System.exit(ExitCodes.INPUT_ERROR);
+        }
+        RsamlCli.setUpProcess();
+        Server server = new Server(socket, args[1], System.err);
+        // One process per socket: the lock is held for the process's life; a process still stopping is waited for.
+        try (FileChannel lockFile = FileChannel.open(folder.resolve(socket.getFileName() + ".lock"), StandardOpenOption.CREATE,
+                StandardOpenOption.WRITE)) {
+            FileLock lock = null;
+            for (int i = 0; i < 50 && lock == null; i++) {
+                lock = lockFile.tryLock();
+                if (lock == null) {
+                    Thread.sleep(100);
+                }
+            }
+            if (lock == null) {
+                server.log.println("rsaml: another resident process serves " + socket);
+                return;
+            }
+            server.serve();
+        }
+    }
+
+    private void serve() throws IOException {
+        Files.deleteIfExists(socket);
+        try (ServerSocketChannel listener = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
+            listener.bind(UnixDomainSocketAddress.of(socket));
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                try {
+                    Files.deleteIfExists(socket);
+                } catch (IOException e) {
+                    // the next process deletes it
+                }
+            }));
+            Thread idle = new Thread(this::stopWhenIdle, "rsaml idle check");
+            idle.setDaemon(true);
+            idle.start();
+            log.println("rsaml: resident process " + ProcessHandle.current().pid() + " listening on " + socket);
+            while (true) {
+                try (SocketChannel channel = listener.accept()) {
+                    if (!serve(channel)) {
+                        return;
+                    }
+                } catch (IOException e) {
+                    log.println("rsaml: a command's connection failed: " + e);
+                }
+            }
+        } finally {
+            Files.deleteIfExists(socket);
+            log.println("rsaml: resident process stopped");
+        }
+    }
+
+    private void stopWhenIdle() {
+        while (true) {
+            try {
+                Thread.sleep(60_000);
+            } catch (InterruptedException e) {
+                return;
+            }
+            synchronized (this) {
+                if (idleSince != null && Duration.between(idleSince, Instant.now()).compareTo(IDLE) > 0) {
+                    log.println("rsaml: resident process stops after " + IDLE.toHours() + " hours without a command");
+                    System.exit(0);
+                }
+            }
+        }
+    }
+
+    /** Answers one request; false when the process is to stop. */
+    private boolean serve(SocketChannel channel) throws IOException {
+        ByteBuffer head = read(channel, 12);
+        if (head.getInt() != Client.MAGIC) {
+            return true;
+        }
+        int request = head.getInt();
+        int count = head.getInt();
+        if (count < 2 || count > 1_000_000) {
+            return true;
+        }
+        String[] strings = new String[count];
+        for (int i = 0; i < count; i++) {
+            int length = read(channel, 4).getInt();
+            strings[i] = StandardCharsets.UTF_8.decode(read(channel, length)).toString();
+        }
+        Frames frames = new Frames(channel);
+        if (request == Client.STOP) {
+            frames.send(Client.ACCEPTED, new byte[0]);
+            frames.exit(ExitCodes.OK);
+            log.println("rsaml: resident process stopped on request");
+            return false;
+        }
+        if (request == Client.STATUS) {
+            frames.send(Client.ACCEPTED, new byte[0]);
+            String status;
+            synchronized (this) {
+                status = "rsaml: resident process " + ProcessHandle.current().pid() + " running since " + started + ", "
+                        + commands + " commands run, listening on " + socket + "\n";
+            }
+            if (!strings[0].equals(settings)) {
+                status += "rsaml: it was started with other settings than this command's (another jar, JDK, JVM options,"
+                        + " locale or umask): the next command replaces it\n";
+            }
+            frames.send(Client.OUT, status.getBytes(StandardCharsets.UTF_8));
+            frames.exit(ExitCodes.OK);
+            return true;
+        }
+        if (!strings[0].equals(settings)) {
+            // Another jar (a rebuilt one), JDK or setting: the launcher starts a process for it.
+            frames.send(Client.STALE, new byte[0]);
+            frames.flush();
+            log.println("rsaml: resident process stops: a command came with other settings (a rebuilt jar, another JDK,"
+                    + " other JVM options, locale or umask)");
+            return false;
+        }
+        String[] args = Arrays.copyOfRange(strings, 2, count);
+        // The language server talks on this process's standard input and output: it runs in a JVM of its own.
+        if (request != Client.RUN || List.of(args).contains("language-server")) {
+            frames.send(Client.DECLINED, new byte[0]);
+            frames.flush();
+            return true;
+        }
+        frames.send(Client.ACCEPTED, new byte[0]);
+        frames.exit(run(channel, frames, Path.of(strings[1]), args));
+        return true;
+    }
+
+    /** Runs one command line as a JVM of its own would, its output sent as frames. */
+    private int run(SocketChannel channel, Frames frames, Path workingDirectory, String[] args) {
+        synchronized (this) {
+            idleSince = null;
+            commands++;
+        }
+        OutputStream out = frames.stream(Client.OUT);
+        OutputStream err = frames.stream(Client.ERR);
+        PrintStream systemOut = System.out;
+        PrintStream systemErr = System.err;
+        AtomicBoolean running = new AtomicBoolean(true);
+        Thread watch = new Thread(() -> stopWhenGone(channel, running), "rsaml client watch");
+        watch.setDaemon(true);
+        PrintWriter outWriter = new PrintWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), true);
+        PrintWriter errWriter = new PrintWriter(new OutputStreamWriter(err, StandardCharsets.UTF_8), true);
+        try {
+            System.setOut(new PrintStream(out, true));
+            System.setErr(new PrintStream(err, true));
+            watch.start();
+            return RsamlCli.run(workingDirectory, args, outWriter, errWriter);
+        } catch (RuntimeException | Error e) {
+            // RsamlCli.run reports every failure of a command itself: this is the last resort.
+            errWriter.println("rsaml: internal error: " + e);
+            log.println("rsaml: internal error in a command:");
+            e.printStackTrace(log);
+            return ExitCodes.INPUT_ERROR;
+        } finally {
+            outWriter.flush();
+            errWriter.flush();
+            System.out.flush();
+            System.err.flush();
+            System.setOut(systemOut);
+            System.setErr(systemErr);
+            running.set(false);
+            synchronized (this) {
+                idleSince = Instant.now();
+            }
+        }
+    }
+
+    /** Stops the process when the client goes away while its command runs (as Ctrl-C stops a JVM of its own). */
+    private void stopWhenGone(SocketChannel channel, AtomicBoolean running) {
+        ByteBuffer buffer = ByteBuffer.allocate(1);
+        try {
+            while (channel.read(buffer) >= 0) {
+                buffer.clear();
+            }
+        } catch (IOException e) {
+            // closed: the command ended, or the client went away
+        }
+        if (running.get()) {
+            log.println("rsaml: resident process stops: its client went away during a command");
+            System.exit(130);
+        }
+    }
+
+    private static ByteBuffer read(SocketChannel channel, int length) throws IOException {
+        if (length < 0 || length > 64 << 20) {
+            throw new IOException("malformed request");
+        }
+        ByteBuffer buffer = ByteBuffer.allocate(length);
+        while (buffer.hasRemaining()) {
+            if (channel.read(buffer) < 0) {
+                throw new IOException("the request ended early");
+            }
+        }
+        return buffer.flip();
+    }
+
+    /** The replies to one request, written in the order the command wrote them, buffered until flushed. */
+    private static final class Frames {
+        private final SocketChannel channel;
+        private final ByteBuffer buffer = ByteBuffer.allocate(1 << 16);
+        private boolean broken;
+
+        Frames(SocketChannel channel) {
+            this.channel = channel;
+        }
+
+        synchronized void send(byte type, byte[] data) throws IOException {
+            send(type, data, 0, data.length);
+        }
+
+        synchronized void send(byte type, byte[] data, int offset, int length) throws IOException {
+            if (buffer.remaining() < 5 + length) {
+                flush();
+            }
+            if (buffer.remaining() < 5 + length) {
+                write(ByteBuffer.allocate(5).put(type).putInt(length).flip());
+                write(ByteBuffer.wrap(data, offset, length));
+            } else {
+                buffer.put(type).putInt(length).put(data, offset, length);
+            }
+        }
+
+        synchronized void exit(int code) throws IOException {
+            if (buffer.remaining() < 9) {
+                flush();
+            }
+            buffer.put(Client.EXIT).putInt(4).putInt(code);
+            flush();
+        }
+
+        synchronized void flush() throws IOException {
+            buffer.flip();
+            try {
+                write(buffer);
+            } finally {
+                buffer.clear();
+            }
+        }
+
+        private void write(ByteBuffer data) throws IOException {
+            if (broken) {
+                return; // the client is gone: the command ends as with a closed standard output
+            }
+            try {
+                while (data.hasRemaining()) {
+                    channel.write(data);
+                }
+            } catch (IOException e) {
+                broken = true;
+                throw e;
+            }
+        }
+
+        OutputStream stream(byte type) {
+            return new OutputStream() {
+                @Override
+                public void write(int b) throws IOException {
+                    write(new byte[] { (byte) b }, 0, 1);
+                }
+
+                @Override
+                public void write(byte[] b, int off, int len) throws IOException {
+                    send(type, b, off, len);
+                }
+
+                @Override
+                public void flush() throws IOException {
+                    Frames.this.flush();
+                }
+            };
+        }
+    }
+}

@@ -1,0 +1,250 @@
+/*
+ * Copyright (c) 2026 RsaML contributors.
+ * SPDX-License-Identifier: EPL-2.0
+ */
+package org.rsaml.cli.tests;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.FileTime;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The resident process ({@code RSAML_DAEMON=1}, {@code rsaml daemon start|stop|status}), through the launcher as users
+ * call it: a command it serves prints, writes and exits exactly as the same command in a JVM of its own; a model
+ * changed on disk is read anew; a command no process serves runs in a JVM of its own, unchanged.
+ */
+class DaemonTest {
+
+    /** The commands compared, run from a working directory holding copies of the models (relative paths). */
+    private static final List<List<String>> COMMANDS = List.of(
+            List.of("validate", "exp2-defects.rsaml"),
+            List.of("validate", "--format", "json", "exp2-defects.rsaml"),
+            List.of("validate", "--format", "sarif", "--output", "junit=reports/exp2.xml", "exp2-defects.rsaml"),
+            List.of("validate", "--quiet", "--fail-on", "warning", "."),
+            List.of("validate", "malformed.rsaml", "exp1-hybrid.rsaml"),
+            List.of("validate", "nowhere.rsaml"),
+            List.of("analyze", "exp1-hybrid.rsaml"),
+            List.of("analyze", "--format", "json", "--timeline", "timelines", "mobile-base-latency-missed.rsaml"),
+            List.of("generate", "--target", "cpp", "--output", "generated", "exp1-hybrid.rsaml"),
+            List.of("generate", "--target", "ros2", "--output", "refused", "exp2-defects.rsaml"),
+            List.of("valdate", "exp1-hybrid.rsaml"),
+            List.of("validate", "--fromat", "json", "exp1-hybrid.rsaml"),
+            List.of("--help"),
+            List.of("validate", "--help"),
+            List.of("rules"),
+            List.of("--version"));
+
+    @Test
+    void servedCommandsPrintWriteAndExitAsInAJvmOfTheirOwn(@TempDir Path dir) throws Exception {
+        withResident(dir, true, (runtime, work) -> {
+            int served = served(runtime, work);
+            for (List<String> command : COMMANDS) {
+                Cli.Result own = launcher(runtime, work, false, command.toArray(String[]::new));
+                Map<String, String> ownFiles = takeFiles(work);
+                Cli.Result resident = launcher(runtime, work, true, command.toArray(String[]::new));
+                Map<String, String> residentFiles = takeFiles(work);
+                assertEquals(own.toString(), resident.toString(), () -> "rsaml " + String.join(" ", command));
+                assertEquals(ownFiles, residentFiles, () -> "the files written by rsaml " + String.join(" ", command));
+                assertEquals(++served, served(runtime, work), () -> "the resident process ran rsaml " + String.join(" ", command));
+            }
+        });
+    }
+
+    @Test
+    void aModelChangedOnDiskIsReadAnew(@TempDir Path dir) throws Exception {
+        withResident(dir, true, (runtime, work) -> {
+            int served = served(runtime, work);
+            Cli.Result before = launcher(runtime, work, true, "validate", "exp2-defects.rsaml");
+            assertEquals(1, before.code(), before::toString);
+            // Experiment 2 with its defects replaced by a clean model, in place, with the same name.
+            Files.copy(work.resolve("exp1-hybrid.rsaml"), work.resolve("exp2-defects.rsaml"), StandardCopyOption.REPLACE_EXISTING);
+            Cli.Result after = launcher(runtime, work, true, "validate", "exp2-defects.rsaml");
+            Cli.Result own = launcher(runtime, work, false, "validate", "exp2-defects.rsaml");
+            assertEquals(own.toString(), after.toString(), "the changed file as a JVM of its own reads it");
+            assertEquals(0, after.code(), after::toString);
+            assertNotEquals(before.out(), after.out());
+            assertEquals(served + 2, served(runtime, work), "both runs were served by the resident process");
+        });
+    }
+
+    @Test
+    void withoutAResidentProcessTheCommandRunsInAJvmOfItsOwnAndOneIsStartedForTheNext(@TempDir Path dir) throws Exception {
+        withResident(dir, false, (runtime, work) -> {
+            Cli.Result own = launcher(runtime, work, false, "validate", "--format", "json", "exp2-defects.rsaml");
+            Cli.Result fallback = launcher(runtime, work, true, "validate", "--format", "json", "exp2-defects.rsaml");
+            assertEquals(own.toString(), fallback.toString(), "no resident process yet: the same run");
+            Cli.Result status = awaitRunning(runtime, work);
+            assertTrue(status.out().contains("rsaml: resident process "), status::toString);
+            Cli.Result served = launcher(runtime, work, true, "validate", "--format", "json", "exp2-defects.rsaml");
+            assertEquals(own.toString(), served.toString());
+        });
+        Cli.Result stopped = launcher(dir.resolve("run"), dir.resolve("work"), false, "daemon", "status");
+        assertEquals(1, stopped.code(), stopped::toString);
+        assertEquals("rsaml: no resident process running (RSAML_DAEMON=1 or 'rsaml daemon start' starts one)\n", stopped.out());
+    }
+
+    @Test
+    void aRebuiltJarIsNotServedByTheProcessOfTheOldOneWhichStops(@TempDir Path dir) throws Exception {
+        Path tree = ProcessTest.copyTree(dir.resolve("tree"));
+        Path runtime = runtime(dir);
+        try {
+            assertEquals(0, launcher(tree, runtime, tree, false, "daemon", "start").code());
+            long old = pid(launcher(tree, runtime, tree, false, "daemon", "status"));
+            Cli.Result served = launcher(tree, runtime, tree, true, "validate", "examples/exp2-defects.rsaml");
+            assertEquals(1, served.code(), served::toString);
+            // As a build rewrites the jar: a new modification (and status-change) time.
+            Path jar = tree.resolve("cli/org.rsaml.cli/target/rsaml.jar");
+            Files.setLastModifiedTime(jar, FileTime.fromMillis(Files.getLastModifiedTime(jar).toMillis() + 2000));
+            Cli.Result rebuilt = launcher(tree, runtime, tree, true, "validate", "examples/exp2-defects.rsaml");
+            assertEquals(served.toString(), rebuilt.toString(), "the command ran, in a JVM of its own");
+            String log = Files.readString(runtime.resolve("rsaml").resolve(socketName(runtime) + ".log"));
+            assertTrue(log.contains("resident process stops: a command came with other settings"), log);
+            long now = pid(awaitRunning(tree, runtime, tree));
+            assertNotEquals(old, now, "a new resident process for the rebuilt jar");
+            assertTrue(ProcessHandle.of(old).map(p -> !p.isAlive()).orElse(true), "the old process stopped");
+        } finally {
+            launcher(tree, runtime, tree, false, "daemon", "stop");
+        }
+    }
+
+    @Test
+    void theLanguageServerAndUnknownVerbsAreNotSent(@TempDir Path dir) throws Exception {
+        withResident(dir, true, (runtime, work) -> {
+            Cli.Result usage = launcher(runtime, work, false, "daemon", "restart");
+            assertEquals("usage: rsaml daemon start|stop|status (the resident process that RSAML_DAEMON=1 uses)\n", usage.err());
+            assertEquals(2, usage.code(), usage::toString);
+            int served = served(runtime, work);
+            Cli.Result help = launcher(runtime, work, true, "language-server", "--help");
+            assertEquals(launcher(runtime, work, false, "language-server", "--help").toString(), help.toString());
+            assertEquals(served, served(runtime, work), "declined: the language server talks on standard input");
+        });
+    }
+
+    /** What a test does with a runtime folder and a working directory of models. */
+    private interface WithResident {
+        void run(Path runtime, Path work) throws Exception;
+    }
+
+    /** Runs {@code test} in {@code dir}, a resident process started first if asked, and stopped after in any case. */
+    private static void withResident(Path dir, boolean start, WithResident test) throws Exception {
+        Path work = models(dir);
+        Path runtime = runtime(dir);
+        try {
+            if (start) {
+                Cli.Result started = launcher(runtime, work, false, "daemon", "start");
+                assertEquals(0, started.code(), started::toString);
+            }
+            test.run(runtime, work);
+        } finally {
+            stop(runtime, work);
+        }
+    }
+
+    /** A working directory with copies of the examples and of some bad inputs. */
+    private static Path models(Path dir) throws IOException {
+        Path work = Files.createDirectories(dir.resolve("work"));
+        for (String example : List.of("exp1-hybrid.rsaml", "exp2-defects.rsaml", "mobile-base-latency-missed.rsaml")) {
+            Files.copy(Cli.ROOT.resolve("examples").resolve(example), work.resolve(example));
+        }
+        Files.copy(Cli.INPUTS.resolve("malformed.rsaml"), work.resolve("malformed.rsaml"));
+        return work;
+    }
+
+    /** The user's runtime folder of these tests (XDG_RUNTIME_DIR): their resident processes' sockets are there. */
+    private static Path runtime(Path dir) throws IOException {
+        return Files.createDirectory(dir.resolve("run"), PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
+    }
+
+    private static Cli.Result launcher(Path runtime, Path work, boolean daemon, String... args) throws Exception {
+        return launcher(Cli.ROOT, runtime, work, daemon, args);
+    }
+
+    /** {@code tree/rsaml args...} in {@code work}, with or without {@code RSAML_DAEMON=1}. */
+    private static Cli.Result launcher(Path tree, Path runtime, Path work, boolean daemon, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of("env", "-u", "RSAML_DAEMON", "XDG_RUNTIME_DIR=" + runtime));
+        if (daemon) {
+            command.add("RSAML_DAEMON=1");
+        }
+        command.add(tree.resolve("rsaml").toString());
+        command.addAll(List.of(args));
+        return Cli.process(work, command);
+    }
+
+    /** How many commands the resident process has run. */
+    private static int served(Path runtime, Path work) throws Exception {
+        Cli.Result status = launcher(runtime, work, false, "daemon", "status");
+        Matcher m = Pattern.compile(", (\\d+) commands run,").matcher(status.out());
+        assertTrue(m.find(), status::toString);
+        return Integer.parseInt(m.group(1));
+    }
+
+    private static long pid(Cli.Result status) {
+        Matcher m = Pattern.compile("resident process (\\d+) running").matcher(status.out());
+        assertTrue(m.find(), status::toString);
+        return Long.parseLong(m.group(1));
+    }
+
+    private static Cli.Result awaitRunning(Path runtime, Path work) throws Exception {
+        return awaitRunning(Cli.ROOT, runtime, work);
+    }
+
+    private static Cli.Result awaitRunning(Path tree, Path runtime, Path work) throws Exception {
+        Cli.Result status = null;
+        for (int i = 0; i < 120; i++) {
+            status = launcher(tree, runtime, work, false, "daemon", "status");
+            if (status.code() == 0) {
+                return status;
+            }
+            Thread.sleep(250);
+        }
+        throw new AssertionError("no resident process started for the next command: " + status);
+    }
+
+    private static String socketName(Path runtime) throws IOException {
+        try (Stream<Path> files = Files.list(runtime.resolve("rsaml"))) {
+            return files.map(p -> p.getFileName().toString()).filter(n -> n.endsWith(".sock")).findFirst().orElseThrow();
+        }
+    }
+
+    private static void stop(Path runtime, Path work) throws Exception {
+        launcher(runtime, work, false, "daemon", "stop");
+    }
+
+    /** The files a command wrote below {@code work} (besides the models), by relative path; then deleted. */
+    private static Map<String, String> takeFiles(Path work) throws IOException {
+        Map<String, String> files = new TreeMap<>();
+        List<Path> written;
+        try (Stream<Path> all = Files.walk(work)) {
+            // Everything but the models at the top: the commands write into folders of their own.
+            written = all.filter(p -> !p.equals(work) && (Files.isDirectory(p) || !p.getParent().equals(work)))
+                    .sorted((a, b) -> b.getNameCount() - a.getNameCount()).toList();
+        }
+        for (Path p : written) {
+            if (Files.isRegularFile(p)) {
+                // A JUnit report's times are the one thing that differs between two runs of the same command.
+                files.put(work.relativize(p).toString(), Files.readString(p).replaceAll(" time=\"[0-9.]+\"", " time=\"…\""));
+            }
+        }
+        for (Path p : written) {
+            Files.delete(p);
+        }
+        return files;
+    }
+}
