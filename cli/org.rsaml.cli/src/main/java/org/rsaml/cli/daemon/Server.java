@@ -100,7 +100,13 @@ public final class Server {
     private void serve() throws IOException {
         Files.deleteIfExists(socket);
         try (ServerSocketChannel listener = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
-            listener.bind(UnixDomainSocketAddress.of(socket));
+            try {
+                listener.bind(UnixDomainSocketAddress.of(socket));
+            } catch (IOException e) {
+                // E.g. a path longer than the system allows (108 bytes on Linux): commands run in JVMs of their own.
+                log.println("rsaml: the resident process cannot listen on " + socket + ": " + e.getMessage());
+                return;
+            }
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 try {
                     Files.deleteIfExists(socket);
