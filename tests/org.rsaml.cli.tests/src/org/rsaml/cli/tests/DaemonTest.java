@@ -137,6 +137,24 @@ class DaemonTest {
         });
     }
 
+    @Test
+    void aSocketFolderOthersCanEnterIsNotUsed(@TempDir Path dir) throws Exception {
+        withResident(dir, false, (runtime, work) -> {
+            Path sockets = Files.createDirectory(runtime.resolve("rsaml"));
+            Files.setPosixFilePermissions(sockets, PosixFilePermissions.fromString("rwxr-xr-x"));
+            Cli.Result own = launcher(runtime, work, false, "validate", "exp2-defects.rsaml");
+            Cli.Result refused = launcher(runtime, work, true, "validate", "exp2-defects.rsaml");
+            assertEquals(own.code(), refused.code(), refused::toString);
+            assertEquals(own.out(), refused.out());
+            assertEquals("rsaml: RSAML_DAEMON=1 not in effect: " + sockets + " is not a folder of this user's that only this"
+                    + " user can enter\n", refused.err());
+            Thread.sleep(1000); // what a process started in the background would have written by now
+            try (Stream<Path> files = Files.list(sockets)) {
+                assertEquals(List.of(), files.toList(), "nothing written into the folder, no resident process started");
+            }
+        });
+    }
+
     /** What a test does with a runtime folder and a working directory of models. */
     private interface WithResident {
         void run(Path runtime, Path work) throws Exception;

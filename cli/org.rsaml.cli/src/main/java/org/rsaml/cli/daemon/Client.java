@@ -16,8 +16,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFileAttributes;
-import java.nio.file.attribute.PosixFilePermission;
+import java.util.Map;
 
 /**
  * The client of RsaML's resident process ({@link Server}): sends one command line, with its working directory, to the
@@ -84,22 +83,20 @@ public final class Client {
         }
     }
 
-    /** Whether {@code folder} is a real folder (no link) of this user's that no one else can read, write or enter. */
+    /**
+     * Whether {@code folder} is a real folder (no link) of this process's user (by user id, as the system knows it:
+     * the owner of {@code /proc/self}, also without a name in the user database) that no one else can read, write or
+     * enter.
+     */
     static boolean ownFolder(Path folder) {
         try {
-            PosixFileAttributes attributes = Files.readAttributes(folder, PosixFileAttributes.class, LinkOption.NOFOLLOW_LINKS);
-            if (!attributes.isDirectory() || !attributes.owner().getName().equals(System.getProperty("user.name"))) {
+            if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
                 return false;
             }
-            // A loop, not a lambda: a lambda costs the client's JVM its bootstrap on every start.
-            for (PosixFilePermission permission : attributes.permissions()) {
-                if (permission != PosixFilePermission.OWNER_READ && permission != PosixFilePermission.OWNER_WRITE
-                        && permission != PosixFilePermission.OWNER_EXECUTE) {
-                    return false;
-                }
-            }
-            return true;
-        } catch (IOException | UnsupportedOperationException | NullPointerException e) {
+            Map<String, Object> attributes = Files.readAttributes(folder, "unix:uid,mode", LinkOption.NOFOLLOW_LINKS);
+            return ((Integer) attributes.get("mode") & 077) == 0
+                    && attributes.get("uid").equals(Files.getAttribute(Path.of("/proc/self"), "unix:uid"));
+        } catch (IOException | UnsupportedOperationException | IllegalArgumentException | ClassCastException | NullPointerException e) {
             return false;
         }
     }

@@ -54,6 +54,8 @@ public final class Server {
     private final PrintStream log;
     private final Instant started = Instant.now();
     private long commands;
+    /** Whether the socket is this process's to delete (false once serve has ended and deleted it). */
+    private volatile boolean listening = true;
     /** When the last command ended; null while one runs. */
     private Instant idleSince = Instant.now();
 
@@ -107,9 +109,13 @@ public final class Server {
                 log.println("rsaml: the resident process cannot listen on " + socket + ": " + e.getMessage());
                 return;
             }
+            // Stopped by System.exit (idle, its client gone): the socket goes while this process still holds the lock, so
+            // never one a successor has bound since. Stopped otherwise, serve's end deletes it, also holding the lock.
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 try {
-                    Files.deleteIfExists(socket);
+                    if (listening) {
+                        Files.deleteIfExists(socket);
+                    }
                 } catch (IOException e) {
                     // the next process deletes it
                 }
@@ -128,6 +134,7 @@ public final class Server {
                 }
             }
         } finally {
+            listening = false;
             Files.deleteIfExists(socket);
             log.println("rsaml: resident process stopped");
         }
