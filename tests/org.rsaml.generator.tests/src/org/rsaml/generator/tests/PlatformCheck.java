@@ -849,10 +849,13 @@ final class PlatformCheck {
                 return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + ", which no job exceeded";
             }
             long failing = b.jobs().stream().filter(JobCheck::contradicts).count();
+            long unjudged = b.jobs().stream().filter(j -> !j.passes() && !j.contradicts()).count();
             return "analysed bound " + JobTimingTest.ms(b.analysedNs()) + "; " + b.jobs().stream().filter(j -> !j.unlisted()).count()
                     + " jobs over it listed" + (b.jobs().stream().anyMatch(JobCheck::unlisted) ? " and more not listed" : "")
-                    + ", each held to its bound with the platform's loss in its own window; " + (failing > 0 ? failing + " fail, the first: "
-                            : "the closest: ") + d.describe(platform.fromNs());
+                    + ", each held to its bound with the platform's loss in its own window"
+                    + (unjudged > 0 ? " (" + unjudged + (unjudged == b.jobs().size() ? ", all of them," : "") + " not judged: no bound with"
+                            + " the platform's loss in their window, one without it)" : "")
+                    + "; " + (failing > 0 ? failing + " fail, the first: " : "the closest: ") + d.describe(platform.fromNs());
         }
 
         /** The releases whose jobs over the bound were more than their program lists, checked in part by the worst window of the run. */

@@ -50,7 +50,8 @@ import org.rsaml.validation.ModelLoader;
  * at every connected entry port at the rate their publisher is released; every node reports the
  * timing analysis's bound of each release (written into it by the generator); where the system
  * grants real-time priorities, the run does not contradict the analysis ({@link #contradictions}): no
- * release of a task the analysis says meets its deadline is dropped by ROS 2's timer, and each release's
+ * release of a task the analysis says meets its deadline is dropped by ROS 2's timer unless the late call
+ * that made the timer drop it is within the task's bound with the platform's loss, and each release's
  * worst observed response (release to completion,
  * measured by the node on its clock), and each reaction's (from the arrival its node's data thread takes
  * to completion), is within its bound with the platform as measured during the launch ({@link PlatformCheck}: the
@@ -144,7 +145,7 @@ class Ros2LaunchTest {
      * C (T 3, C 0.625, FIFO) at rank 1 below both, whose job waits for A's, longer than its period, so
      * ROS 2's timer drops C's releases that fall due meanwhile. The periods' phases drift through each
      * other (13 against 10), so B's misses do not depend on when the nodes started. A meets, and is
-     * held to that: no miss, its bound. B's and C's misses are reported, not contradictions, and must be
+     * held to that: its bound, each miss (a stall of the platform's) within it with the platform's loss. B's and C's misses are reported, not contradictions, and must be
      * seen where the releases got their real-time priorities: B past its deadline, C dropped.
      */
     @Test
@@ -165,8 +166,9 @@ class Ros2LaunchTest {
 
         // the analysis's misses are error findings: generated anyway, as an architect would to see them
         long before = System.nanoTime(); // CLOCK_MONOTONIC, as the nodes' instants
+        java.util.Set<String> held = new java.util.TreeSet<>();
         String out = run(model, "overloaded.rsaml", tmp, src -> {
-        }, true);
+        }, true, held);
         long after = System.nanoTime();
         Map<String, JobSummary> observed = JobSummary.of(out);
         Map<String, Missed> missed = Missed.of(out);
@@ -186,10 +188,11 @@ class Ros2LaunchTest {
         assertTrue(!calls.isEmpty() && calls.stream().allMatch(x -> x[1] - x[0] >= 3_000_000 && x[0] > before && x[1] < after),
                 "C's drops, each with the release before them and its call a period or more later, during the launch: "
                         + calls.stream().map(x -> x[0] + ".." + x[1]).limit(5).toList());
-        // A, at the top rank, meets: run() held its every miss (a job past its deadline, a release dropped after a late
-        // call) to its bound with the platform's loss at that moment (contradictions), and failed on any that exceeds it
-        Missed a = missed.getOrDefault("tasks/a.f", Missed.NONE);
-        assertEquals(observed.get("tasks/a.f").misses(), a.late() + a.dropped(), "A's misses, each said: " + observed.get("tasks/a.f"));
+        // A, at the top rank, meets: where run() held it to the analysis, each of its misses (a job past its deadline, a
+        // release dropped after a late call) was held to its bound with the platform's loss at that moment and failed if
+        // past it; where it could not (no measured platform), A may miss nothing
+        assertTrue(held.contains("tasks/a.f") || observed.get("tasks/a.f").misses() == 0, "A, at the top rank, meets: neither held to"
+                + " its bound with the platform as measured nor without a miss: " + observed.get("tasks/a.f") + "; held: " + held);
     }
 
     /** The architect's code written into the generated packages (under src/) before they are built. */
@@ -207,6 +210,11 @@ class Ros2LaunchTest {
      * the analysis says is missed) is generated anyway, as {@code rsaml generate --force} does.
      */
     static String run(Path model, String name, Path tmp, UserCode code, boolean force) throws Exception {
+        return run(model, name, tmp, code, force, new java.util.TreeSet<>());
+    }
+
+    /** As {@link #run(Path, String, Path, UserCode, boolean)}, adding to {@code held} the releases it held to the analysis. */
+    static String run(Path model, String name, Path tmp, UserCode code, boolean force, java.util.Set<String> held) throws Exception {
         Architecture arch = ModelLoader.load(model, name).architecture();
         String pkg = Names.snake(arch.getName());
         Path src = tmp.resolve("src");
@@ -452,6 +460,7 @@ class Ros2LaunchTest {
             assertTrue(contradictions.isEmpty(), name + " on ROS 2 contradicts the timing analysis:\n  " + String.join("\n  ", contradictions)
                     + "\n" + report);
             report.append("  checked against the analysis: ").append(checked.stream().map(Release::label).toList()).append('\n');
+            checked.forEach(r -> held.add(r.label()));
             report.append("  reactions checked against the bound: ").append(reacting.stream().map(Reaction::label).toList()).append('\n');
         }
         // Each node measures its reactions to data as the C++ program does: from the arrival that
