@@ -5,6 +5,7 @@
 package org.rsaml.generator.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -89,6 +90,8 @@ record JobSummary(String label, long jobs, long firstNs, long lastNs, long misse
                 boolean released = m.group(4) != null;
                 List<long[]> listed = List.copyOf(over.getOrDefault(m.group(1), List.of()));
                 assertEquals(Long.parseLong(m.group(19)), listed.size(), "as many over-bound lines of " + m.group(1) + " as its summary lists: " + line);
+                // one summary per label: a second (a node started twice) would add its miss lines to the other's summary
+                assertFalse(all.containsKey(m.group(1)), "two summaries of " + m.group(1) + " (a node started twice?): " + line);
                 all.put(m.group(1), new JobSummary(m.group(1), Long.parseLong(m.group(2)), released ? ns(m.group(4)) : -1,
                         released ? ns(m.group(5)) : -1, Long.parseLong(m.group(6)), Long.parseLong(m.group(7)), ns(m.group(8)), m.group(9),
                         m.group(10).equals("none") ? 0 : ns(m.group(10).replace(" ms", "")), ns(m.group(11)), ns(m.group(12)),
