@@ -78,7 +78,8 @@ void System::job_done(Release& r, Clock::time_point released, Clock::time_point 
 
 namespace {
 
-// The summary line of one release's (or module's reactions') jobs, through the writer the ROS 2 nodes share.
+// The summary line of one release's (or module's reactions') jobs, through the writer the ROS 2 nodes share; the run's
+// closing lines, which wait for room in the trace's queue rather than be dropped.
 void summary(Clock::time_point start, const std::string& label, const JobStats& s, const JobBounds& b, const std::string& sched) {
   rsaml_jobs::Observed o;
   o.label = label;
@@ -101,11 +102,11 @@ void summary(Clock::time_point start, const std::string& label, const JobStats& 
   const std::vector<std::string> lines = rsaml_jobs::over_bound_lines(o);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     // a deadline thread's job also says where it started, its CPU time and its context switches (docs/timing.md)
-    Trace::report(s.details.size() != lines.size() ? lines[i]
-                                                   : lines[i] + " started " + std::to_string(s.details[i][0]) + " ns cpu " +
-                                                         std::to_string(s.details[i][1]) + " ns switches " + std::to_string(s.details[i][2]));
+    Trace::closing(s.details.size() != lines.size() ? lines[i]
+                                                    : lines[i] + " started " + std::to_string(s.details[i][0]) + " ns cpu " +
+                                                          std::to_string(s.details[i][1]) + " ns switches " + std::to_string(s.details[i][2]));
   }
-  Trace::report(rsaml_jobs::line(o));
+  Trace::closing(rsaml_jobs::line(o));
 }
 
 }  // namespace
@@ -117,6 +118,7 @@ void System::print_summary() {
   for (auto& reactions : reactions_) {
     summary(start_, reactions->label, reactions->stats, reactions->bounds, reactions->sched);
   }
+  Trace::closing_dropped();
 }
 
 }  // namespace rsaml

@@ -203,7 +203,7 @@ void internal::count_deadline_overruns() {
 #if defined(__linux__)
   struct sigaction action {};
   action.sa_handler = on_overrun;
-  action.sa_flags = SA_RESTART;  // a write of the trace that the signal interrupts goes on, no line lost
+  action.sa_flags = SA_RESTART;  // a system call the signal interrupts goes on where the kernel can restart it
   sigemptyset(&action.sa_mask);
   sigaction(SIGXCPU, &action, nullptr);
   sigset_t set;

@@ -2,22 +2,27 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-// The run's trace on standard output, and durations as it says them.
+// The run's trace on standard output, through a queue and its writer thread (rsaml/tracequeue.hpp), and durations as it
+// says them.
 #include "rsaml/trace.hpp"
 
 #include <atomic>
 #include <cstdio>
-#include <mutex>
 
 #include "rsaml/internal.hpp"
+#include "rsaml/tracequeue.hpp"
 
 namespace rsaml {
 
 namespace {
 
-std::mutex trace_mutex;
 std::atomic<bool> trace_enabled{true};
-Clock::time_point trace_start = Clock::now();
+
+/** The run's one queue; made by the first line, or by configure() at the start of the run, before any release thread. */
+rsaml_trace::TraceQueue& queue() {
+  static rsaml_trace::TraceQueue lines;
+  return lines;
+}
 
 }  // namespace
 
@@ -28,31 +33,24 @@ std::string internal::millis(Nanos t) {
 }
 
 void Trace::configure(bool enabled, Clock::time_point start) {
-  std::lock_guard<std::mutex> lock(trace_mutex);
   trace_enabled = enabled;
-  trace_start = start;
+  queue().start_at(start);
 }
 
 bool Trace::enabled() { return trace_enabled; }
 
 void Trace::line(const std::string& text) {
-  std::lock_guard<std::mutex> lock(trace_mutex);
-  if (!trace_enabled) {
-    return;
+  if (trace_enabled) {
+    queue().post(text);
   }
-  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - trace_start).count();
-  std::fprintf(stdout, "[%10.3f ms] %s\n", ms, text.c_str());
 }
 
-void Trace::report(const std::string& text) {
-  std::lock_guard<std::mutex> lock(trace_mutex);
-  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - trace_start).count();
-  std::fprintf(stdout, "[%10.3f ms] %s\n", ms, text.c_str());
-}
+void Trace::report(const std::string& text) { queue().post(text); }
 
-void Trace::flush() {
-  std::lock_guard<std::mutex> lock(trace_mutex);
-  std::fflush(stdout);
-}
+void Trace::closing(const std::string& text) { queue().post_waiting(text); }
+
+void Trace::closing_dropped() { queue().post_dropped_in_all(); }
+
+void Trace::flush() { queue().flush(); }
 
 }  // namespace rsaml

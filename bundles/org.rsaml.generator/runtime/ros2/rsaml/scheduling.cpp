@@ -5,6 +5,7 @@
 #include "rsaml/scheduling.hpp"
 #include "rsaml/jobs.hpp"
 #include "rsaml/realtime.hpp"
+#include "rsaml/tracequeue.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -28,8 +29,15 @@ namespace rsaml_ros2 {
 
 namespace {
 
-const std::chrono::steady_clock::time_point trace_start = std::chrono::steady_clock::now();
-std::mutex trace_mutex;
+/**
+ * The process's trace (this package's copy of it): a queue a writer thread writes out (rsaml/tracequeue.hpp), so that
+ * no thread that traces, a release under the node's statistics lock included, ever waits for standard output. Made by
+ * init(), or by the first node, on the thread that makes the nodes; stamps from when it is made.
+ */
+rsaml_trace::TraceQueue& trace_queue() {
+  static rsaml_trace::TraceQueue lines;
+  return lines;
+}
 std::mutex registry_mutex;
 std::unordered_map<const rclcpp::node_interfaces::NodeBaseInterface*, Schedule*> registry;
 std::atomic<int> stop_signals{0};
@@ -132,12 +140,7 @@ void NodeLock::lock() { mutex_.lock(); }
 void NodeLock::unlock() { mutex_.unlock(); }
 #endif
 
-void trace(const std::string& text) {
-  const double at = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - trace_start).count();
-  std::lock_guard<std::mutex> lock(trace_mutex);
-  std::fprintf(stdout, "[%10.3f ms] %s\n", at, text.c_str());
-  std::fflush(stdout);
-}
+void trace(const std::string& text) { trace_queue().post(text); }
 
 void init(int argc, char** argv) {
   const std::string option = GRACE_OPTION;
@@ -159,6 +162,8 @@ void init(int argc, char** argv) {
       shutdown_grace = std::chrono::milliseconds(grace);
     }
   }
+  trace_queue();  // its writer made here, at the default priority, before any release thread
+  usage_detail::before_abort() = [] { trace_queue().flush(); };  // the lines before an uncaught exception not lost
   rclcpp::init(argc, argv, rclcpp::InitOptions(), rclcpp::SignalHandlerOptions::None);
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
@@ -198,6 +203,7 @@ Schedule::Schedule(rclcpp::node_interfaces::NodeBaseInterface::SharedPtr base,
                      " (launch argument simulated_load:=, or -p rsaml.simulated_load:=0.5)");
   }
   started_ = clock_->now();
+  trace_queue();  // in a container not of this package, made by the thread that loads the node
   std::lock_guard<std::mutex> lock(registry_mutex);
   registry[base_.get()] = this;
 }
@@ -207,50 +213,61 @@ Schedule::~Schedule() {
     std::lock_guard<std::mutex> lock(registry_mutex);
     registry.erase(base_.get());
   }
-  std::lock_guard<std::mutex> lock(stats_);
-  summarized_ = true;
-  // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp), after the lines of the jobs over the plain bound.
-  auto summary = [](const Jobs& r) {
-    rsaml_jobs::Observed o;
-    o.label = r.label;
-    o.jobs = r.jobs;
-    o.first_release_ns = r.first_release_ns;
-    o.last_release_ns = r.last_release_ns;
-    o.misses = r.misses;
-    o.overruns = r.overruns;
-    o.worst_response_ns = r.worst_response_ns;
-    o.bound_ns = r.bound_ns;
-    o.deadline_ns = r.deadline_ns;
-    o.worst_execution_ns = r.worst_execution_ns;
-    o.modeled_ns = r.cost_ns;
-    o.worst_start_latency_ns = r.worst_latency_ns;
-    o.worst_stall_ns = r.worst_stall_ns;
-    o.sched = r.sched;
-    o.worst_job = r.worst_job;
-    o.over_bound = r.over_bound;
-    o.listed = r.listed;
-    for (const std::string& line : rsaml_jobs::over_bound_lines(o)) {
-      trace(line);
+  // The summary's lines made under stats_ (no job is counted or said after it: summarized_), written after it is let
+  // go, each waiting for room in the trace's queue rather than dropped: behind every miss line of a job it counts.
+  std::vector<std::string> lines;
+  {
+    std::lock_guard<std::mutex> lock(stats_);
+    summarized_ = true;
+    // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp), after the lines of the jobs over the plain bound.
+    auto summary = [&lines](const Jobs& r) {
+      rsaml_jobs::Observed o;
+      o.label = r.label;
+      o.jobs = r.jobs;
+      o.first_release_ns = r.first_release_ns;
+      o.last_release_ns = r.last_release_ns;
+      o.misses = r.misses;
+      o.overruns = r.overruns;
+      o.worst_response_ns = r.worst_response_ns;
+      o.bound_ns = r.bound_ns;
+      o.deadline_ns = r.deadline_ns;
+      o.worst_execution_ns = r.worst_execution_ns;
+      o.modeled_ns = r.cost_ns;
+      o.worst_start_latency_ns = r.worst_latency_ns;
+      o.worst_stall_ns = r.worst_stall_ns;
+      o.sched = r.sched;
+      o.worst_job = r.worst_job;
+      o.over_bound = r.over_bound;
+      o.listed = r.listed;
+      for (std::string& line : rsaml_jobs::over_bound_lines(o)) {
+        lines.push_back(std::move(line));
+      }
+      lines.push_back(rsaml_jobs::line(o));
+    };
+    for (const Release& r : releases_) {
+      summary(r);
+      if (r.executor_jobs > 0) {
+        lines.push_back("executor " + r.label + " jobs " + std::to_string(r.executor_jobs) + " worst " + ms(r.executor_worst_ns) +
+                        " ms mean " + ms(r.executor_total_ns / static_cast<std::int64_t>(r.executor_jobs)) +
+                        " ms (its thread's CPU time between two jobs)");
+      }
     }
-    trace(rsaml_jobs::line(o));
-  };
-  for (const Release& r : releases_) {
-    summary(r);
-    if (r.executor_jobs > 0) {
-      trace("executor " + r.label + " jobs " + std::to_string(r.executor_jobs) + " worst " + ms(r.executor_worst_ns) + " ms mean " +
-            ms(r.executor_total_ns / static_cast<std::int64_t>(r.executor_jobs)) + " ms (its thread's CPU time between two jobs)");
+    if (reactions_) {
+      if (data_) {  // the scheduling of the thread that ran them (its executor is stopped by now)
+        reactions_->sched = data_->sched.empty() ? "default (never scheduled)" : data_->sched;
+      }
+      summary(*reactions_);
+    }
+    for (const Arrivals& a : arrivals_) {
+      lines.push_back("summary " + module_ + ":" + a.port + " messages " + std::to_string(a.messages) + " received " +
+                      (a.messages > 0 ? ms(a.first_ns) + ".." + ms(a.last_ns) : std::string("none")) + " ms");
     }
   }
-  if (reactions_) {
-    if (data_) {  // the scheduling of the thread that ran them (its executor is stopped by now)
-      reactions_->sched = data_->sched.empty() ? "default (never scheduled)" : data_->sched;
-    }
-    summary(*reactions_);
+  for (const std::string& line : lines) {
+    trace_queue().post_waiting(line);
   }
-  for (const Arrivals& a : arrivals_) {
-    trace("summary " + module_ + ":" + a.port + " messages " + std::to_string(a.messages) + " received " +
-          (a.messages > 0 ? ms(a.first_ns) + ".." + ms(a.last_ns) : std::string("none")) + " ms");
-  }
+  trace_queue().post_dropped_in_all();
+  trace_queue().flush();
 }
 
 Schedule* Schedule::rsaml_of(const rclcpp::node_interfaces::NodeBaseInterface* base) {

@@ -35,7 +35,12 @@
 
 namespace rsaml_ros2 {
 
-/** Prints one trace line, "[   12.345 ms] text", ms since the process started; flushed at once. */
+/**
+ * Queues one trace line, "[   12.345 ms] text", ms since the process started, for the process's trace writer, a
+ * thread of the default priority that writes it out at once (rsaml/tracequeue.hpp): the caller never waits for
+ * standard output, a slow or full pipe stalls only the writer. A line that finds the queue full is dropped and the
+ * writer says how many ("trace dropped N lines ..."), as does each node's summary ("... in all").
+ */
 void trace(const std::string& text);
 
 /**

@@ -46,6 +46,12 @@ inline std::string& program() {
   return name;
 }
 
+/** What the program writes out before it aborts on an uncaught exception (init() sets it: the trace's queue); null: nothing. */
+inline void (*&before_abort())() {
+  static void (*write_out)() = nullptr;
+  return write_out;
+}
+
 /** The type of an exception as the code names it (std::invalid_argument), where the compiler tells it. */
 inline std::string type_name(const std::type_info& type) {
 #if defined(__GNUG__)
@@ -81,6 +87,9 @@ inline std::string type_name(const std::type_info& type) {
       what = "uncaught exception of a type that is not a std::exception";
 #endif
     }
+  }
+  if (before_abort() != nullptr) {
+    before_abort()();
   }
   std::fprintf(stderr, "%s: %s; an error in the node's code (or in a library it calls), not a wrong argument or parameter:"
                " the program aborts\n", program().c_str(), what.c_str());

@@ -32,9 +32,16 @@ class CppRuntimeTest {
         return Tools.root().resolve("bundles/org.rsaml.generator/runtime/cpp");
     }
 
-    /** What the C++ runtime shares with the ROS 2 nodes (SCHED_DEADLINE). */
+    /** What the C++ runtime shares with the ROS 2 nodes (SCHED_DEADLINE, the summary line, the trace's queue). */
     static Path shared() {
         return Tools.root().resolve("bundles/org.rsaml.generator/runtime/cxx");
+    }
+
+    /** The shared files, as the bundle holds them: runtime/cxx/rsaml/*, sorted. */
+    static List<String> sharedFiles() throws IOException {
+        try (Stream<Path> files = Files.list(shared().resolve("rsaml"))) {
+            return files.map(f -> f.getFileName().toString()).sorted().toList();
+        }
     }
 
     /** The runtime's files, as the bundle holds them: runtime/cpp/rsaml/*, sorted. */
@@ -70,7 +77,7 @@ class CppRuntimeTest {
             carried = generated.map(f -> f.getFileName().toString()).collect(Collectors.toCollection(TreeSet::new));
         }
         Set<String> expected = new TreeSet<>(files());
-        expected.addAll(List.of("realtime.hpp", "jobs.hpp"));
+        expected.addAll(sharedFiles());
         assertEquals(expected, carried, "gen/rsaml/ holds every file of the bundle's runtime and nothing else");
         for (String file : files()) {
             String generated = Files.readString(tmp.resolve("gen/rsaml/" + file));
@@ -79,7 +86,7 @@ class CppRuntimeTest {
             assertEquals(Files.readString(runtime().resolve("rsaml/" + file)), generated.substring(banner.length()),
                     file + " is the bundle's file");
         }
-        for (String file : List.of("realtime.hpp", "jobs.hpp")) {
+        for (String file : sharedFiles()) {
             String generated = Files.readString(tmp.resolve("gen/rsaml/" + file));
             assertEquals(Files.readString(shared().resolve("rsaml/" + file)), generated.substring(generated.indexOf('\n') + 1),
                     file + ": the runtime shared with the ROS 2 nodes");

@@ -73,7 +73,7 @@ class NamesTest {
         new RsamlGenerator().generate(Tools.resource("names-hostile.rsaml"), Target.CPP, out, false);
         Set<String> gen = Tools.snapshot(out).keySet();
         Set<String> expected = new TreeSet<>(Set.of(".rsaml-generated", "CMakeLists.txt", "GENERATED.md", "README.md", "gen/Architecture.cpp",
-                "gen/Architecture.hpp", "gen/main.cpp", "gen/messages.hpp", "gen/rsaml/realtime.hpp", "gen/rsaml/jobs.hpp",
+                "gen/Architecture.hpp", "gen/main.cpp", "gen/messages.hpp", "gen/rsaml/realtime.hpp", "gen/rsaml/jobs.hpp", "gen/rsaml/tracequeue.hpp",
                 "gen/class_/None_Base.cpp", "gen/class_/None_Base.hpp", "gen/class_/MotorLeftBase.cpp", "gen/class_/MotorLeftBase.hpp",
                 "gen/class_/MotorLeft_2Base.cpp", "gen/class_/MotorLeft_2Base.hpp", "gen/my_layer/FooBase.cpp", "gen/my_layer/FooBase.hpp",
                 "gen/my_layer/Foo_2Base.cpp", "gen/my_layer/Foo_2Base.hpp", "gen/my_layer_2/XBase.cpp", "gen/my_layer_2/XBase.hpp",

@@ -72,11 +72,11 @@ class Ros2RuntimeTest {
         if (!managed) {
             expected.removeIf(f -> f.startsWith("lifecycle"));
         }
-        expected.addAll(List.of("realtime.hpp", "jobs.hpp"));
+        expected.addAll(CppRuntimeTest.sharedFiles());
         assertEquals(expected, carried, pkg.getFileName() + "/gen/rsaml/ holds every file of the bundle's ROS 2 runtime and nothing else");
         String cmake = Files.readString(pkg.resolve("CMakeLists.txt"));
         for (String file : carried) {
-            if (file.equals("realtime.hpp") || file.equals("jobs.hpp")) {
+            if (CppRuntimeTest.sharedFiles().contains(file)) {
                 continue; // shared with the C++ runtime: CppRuntimeTest
             }
             String generated = Files.readString(pkg.resolve("gen/rsaml/" + file));

@@ -38,9 +38,10 @@ class CppTarget implements TargetGenerator {
 
 	/**
 	 * The headers in runtime/cxx/rsaml/ of this bundle that the C++ runtime and the ROS 2 nodes share (EDF's
-	 * SCHED_DEADLINE, the job summary line's writer): every C++ project and ROS 2 runtime package carries them in gen/rsaml/.
+	 * SCHED_DEADLINE, the job summary line's writer, the trace's queue and its writer thread): every C++ project and ROS 2
+	 * runtime package carries them in gen/rsaml/.
 	 */
-	public static val List<String> SHARED_RUNTIME_HEADERS = #["realtime.hpp", "jobs.hpp"]
+	public static val List<String> SHARED_RUNTIME_HEADERS = #["realtime.hpp", "jobs.hpp", "tracequeue.hpp"]
 
 	/** The C++ runtime's sources in runtime/cpp/rsaml/ of this bundle, one per concern; each project's CMake build compiles them. */
 	public static val List<String> RUNTIME_SOURCES = #["options.cpp", "clock.cpp", "trace.cpp", "measure.cpp", "module.cpp", "system.cpp",
