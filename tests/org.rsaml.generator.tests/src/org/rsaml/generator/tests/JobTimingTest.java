@@ -171,15 +171,8 @@ class JobTimingTest {
      */
     @Test
     void aSporadicReactionIsMeasuredAgainstItsBound(@TempDir Path tmp) throws Exception {
-        String layers = module("producer", 10, 2, "RM").replace("    </modules>",
-                "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\" dataType=\"numeric\"/>\n    </modules>")
-                + "    <modules name=\"consumer\" timeUnit=\"ms\" type=\"realTime\" period=\"20.0\" delay=\"20.0\" execDuration=\"3.0\""
-                + " execType=\"sporadic\">\n      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\" dataType=\"numeric\"/>\n    </modules>\n";
-        String processors = "  <processors name=\"cpu1\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='producer']"
-                + " //@layers[name='tasks']/@modules[name='consumer']\"/>\n  <connections source=\"//@layers[name='tasks']/@modules[name='producer']/@ports[name='out']\""
-                + " target=\"//@layers[name='tasks']/@modules[name='consumer']/@ports[name='in']\"/>\n";
         Path out = tmp.resolve("project");
-        Architecture arch = writeAndGenerate(tmp, "sporadic", layers, processors, out, false);
+        Architecture arch = writeAndGenerate(tmp, "sporadic", producerAndConsumer(10, 2, "20.0", "20.0", "3.0"), PRODUCER_AND_CONSUMER, out, false);
         Map<String, Long> bounds = bounds(TimingAnalysis.analyse(arch));
         assertEquals(5_000_000L, bounds.get("tasks/consumer (reaction)"), "the analysis's bound of the reaction: " + bounds);
         Map<String, JobSummary> run = CppJobCheck.runAndCheck(arch, out, "sporadic");
@@ -310,6 +303,23 @@ class JobTimingTest {
                     "on one CPU, the board's CPU 1 is not there, said plainly: " + board);
         }
     }
+
+    /**
+     * A producer (a module of one function, rate monotonic, period and cost given, with an output port "out") and a
+     * sporadic consumer of it (an entry port "in"; its minimum interval, delay and execution time in ms given).
+     */
+    static String producerAndConsumer(long period, double cost, String consumerPeriod, String consumerDelay, String consumerCost) {
+        return module("producer", period, cost, "RM").replace("    </modules>",
+                "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\" dataType=\"numeric\"/>\n    </modules>")
+                + "    <modules name=\"consumer\" timeUnit=\"ms\" type=\"realTime\" period=\"" + consumerPeriod + "\" delay=\"" + consumerDelay
+                + "\" execDuration=\"" + consumerCost + "\" execType=\"sporadic\">\n      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\""
+                + " dataType=\"numeric\"/>\n    </modules>\n";
+    }
+
+    /** The producer and the consumer of {@link #producerAndConsumer} on core 1, the producer's "out" connected to the consumer's "in". */
+    static final String PRODUCER_AND_CONSUMER = "  <processors name=\"cpu1\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='producer']"
+            + " //@layers[name='tasks']/@modules[name='consumer']\"/>\n  <connections source=\"//@layers[name='tasks']/@modules[name='producer']/@ports[name='out']\""
+            + " target=\"//@layers[name='tasks']/@modules[name='consumer']/@ports[name='in']\"/>\n";
 
     static String module(String name, long period, double cost, String policy) {
         return module(name, period, period, cost, policy);

@@ -46,15 +46,9 @@ class TraceStallTest {
 
     @Test
     void aStalledOutputDoesNotStallTheReleases(@TempDir Path tmp) throws Exception {
-        String layers = JobTimingTest.module("producer", 1, 0.2, "RM").replace("    </modules>",
-                "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\" dataType=\"numeric\"/>\n    </modules>")
-                + "    <modules name=\"consumer\" timeUnit=\"ms\" type=\"realTime\" period=\"1.0\" delay=\"5.0\" execDuration=\"0.1\""
-                + " execType=\"sporadic\">\n      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\" dataType=\"numeric\"/>\n    </modules>\n";
-        String processors = "  <processors name=\"cpu1\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='producer']"
-                + " //@layers[name='tasks']/@modules[name='consumer']\"/>\n  <connections source=\"//@layers[name='tasks']/@modules[name='producer']/@ports[name='out']\""
-                + " target=\"//@layers[name='tasks']/@modules[name='consumer']/@ports[name='in']\"/>\n";
         Path model = tmp.resolve("stall.rsaml");
-        Files.writeString(model, JobTimingTest.modelText("stall", layers, processors));
+        Files.writeString(model, JobTimingTest.modelText("stall", JobTimingTest.producerAndConsumer(1, 0.2, "1.0", "5.0", "0.1"),
+                JobTimingTest.PRODUCER_AND_CONSUMER));
         Path project = tmp.resolve("project");
         new RsamlGenerator().generate(model, Target.CPP, project, false);
         Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
