@@ -125,7 +125,7 @@ class DaemonTest {
     }
 
     @Test
-    void theLanguageServerAndUnknownVerbsAreNotSent(@TempDir Path dir) throws Exception {
+    void theLanguageServerArgumentFilesAndUnknownVerbsAreNotSent(@TempDir Path dir) throws Exception {
         withResident(dir, true, (runtime, work) -> {
             Cli.Result usage = launcher(runtime, work, false, "daemon", "restart");
             assertEquals("usage: rsaml daemon start|stop|status (the resident process that RSAML_DAEMON=1 uses)\n", usage.err());
@@ -133,7 +133,13 @@ class DaemonTest {
             int served = served(runtime, work);
             Cli.Result help = launcher(runtime, work, true, "language-server", "--help");
             assertEquals(launcher(runtime, work, false, "language-server", "--help").toString(), help.toString());
-            assertEquals(served, served(runtime, work), "declined: the language server talks on standard input");
+            // picocli reads an argument file from the process's working directory.
+            Files.writeString(work.resolve("arguments.txt"), "validate\nexp2-defects.rsaml\n");
+            Cli.Result file = launcher(runtime, work, true, "@arguments.txt");
+            assertEquals(launcher(runtime, work, false, "@arguments.txt").toString(), file.toString());
+            assertEquals(1, file.code(), file::toString);
+            assertEquals(served, served(runtime, work), "declined: the language server talks on standard input, @FILE is"
+                    + " read from the process's working directory");
         });
     }
 

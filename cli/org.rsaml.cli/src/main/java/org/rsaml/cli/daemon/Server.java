@@ -203,8 +203,10 @@ public final class Server {
             return false;
         }
         String[] args = Arrays.copyOfRange(strings, 2, count);
-        // The language server talks on this process's standard input and output: it runs in a JVM of its own.
-        if (request != Client.RUN || List.of(args).contains("language-server")) {
+        // The language server talks on this process's standard input and output, and picocli reads an argument file
+        // (@FILE) from the process's working directory: these run in a JVM of their own.
+        if (request != Client.RUN || List.of(args).contains("language-server")
+                || Arrays.stream(args).anyMatch(arg -> arg.startsWith("@"))) {
             frames.send(Client.DECLINED, new byte[0]);
             frames.flush();
             return true;
