@@ -23,8 +23,6 @@
 #include <utility>
 #include <vector>
 
-#include "rsaml/realtime.hpp"
-
 #if defined(__unix__) || defined(__APPLE__)
 #include <pthread.h>
 #include <sched.h>
@@ -45,7 +43,11 @@ class TraceQueue {
   TraceQueue() {
     lines_.resize(QUEUE_LINES);
 #if defined(__unix__) || defined(__APPLE__)
-    rsaml_realtime::init_inheriting_mutex(&mutex_, false);  // where priority inheritance is refused, a plain mutex
+    pthread_mutexattr_t attributes;
+    pthread_mutexattr_init(&attributes);
+    pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);  // where refused, a plain mutex
+    pthread_mutex_init(&mutex_, &attributes);
+    pthread_mutexattr_destroy(&attributes);
     pthread_cond_init(&wake_, nullptr);
     pthread_cond_init(&written_, nullptr);
 #endif

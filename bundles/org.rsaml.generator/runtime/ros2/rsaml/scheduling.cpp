@@ -57,10 +57,21 @@ std::int64_t thread_cpu_ns() {
   return static_cast<std::int64_t>(t.tv_sec) * 1000000000LL + t.tv_nsec;
 }
 
+/** The calling thread under `release`'s fixed priority (SCHED_FIFO or SCHED_RR at its rank); 0 or the error. */
+int fixed_priority(const Release& release) {
+  const int policy = release.round_robin ? SCHED_RR : SCHED_FIFO;
+  const int low = sched_get_priority_min(policy);
+  const int high = sched_get_priority_max(policy);
+  sched_param param{};
+  param.sched_priority = std::min(low + release.rank, high);
+  return low < 0 || high < low ? EINVAL : pthread_setschedparam(pthread_self(), policy, &param);
+}
+
 /**
- * Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority, or
- * SCHED_DEADLINE for a release of an EDF processor (unpinned: the kernel admits a deadline thread
- * only on every CPU of its root domain); says which in the trace.
+ * Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority; a
+ * release of an EDF processor is left on every CPU the process may use (the kernel admits a deadline
+ * thread only on every CPU of its root domain) and waits for its first release at its rank, where it
+ * asks for SCHED_DEADLINE (Schedule::rsaml_start_deadline). Says which in the trace.
  */
 void place(Release& release, int core) {
 #if defined(__linux__)
@@ -70,16 +81,8 @@ void place(Release& release, int core) {
     // every CPU the process's main thread may use
     const bool unpinned = core >= 0 && sched_getaffinity(getpid(), sizeof all, &all) == 0 &&
                           pthread_setaffinity_np(pthread_self(), sizeof all, &all) == 0;
-    const std::string refused = rsaml_realtime::request_deadline(release.cost_ns, release.deadline_ns, release.period_ns);
-    if (refused.empty()) {
-      release.sched = "SCHED_DEADLINE runtime " + ms(release.cost_ns) + " ms deadline " + ms(release.deadline_ns) + " ms period " +
-                      ms(release.period_ns) + " ms" + (unpinned ? " on every core, not core " + std::to_string(core) + " alone" : "") +
-                      " (kernel: " + rsaml_realtime::kernel_policy() + ")";
-      trace("sched " + release.label + " " + release.sched);
-      return;
-    }
-    release.edf = false;  // a fixed-priority release at its rank, below, which its sched line says
-    release.sched = "instead of EDF: " + refused;
+    release.unpinned = unpinned ? " on every core, not core " + std::to_string(core) + " alone" : "";
+    core = -1;
   }
   if (core >= 0) {
     cpu_set_t set;
@@ -97,12 +100,7 @@ void place(Release& release, int core) {
           " real-time thread");
     return;
   }
-  const int policy = release.round_robin ? SCHED_RR : SCHED_FIFO;
-  const int low = sched_get_priority_min(policy);
-  const int high = sched_get_priority_max(policy);
-  sched_param param{};
-  param.sched_priority = std::min(low + release.rank, high);
-  const int error = low < 0 || high < low ? EINVAL : pthread_setschedparam(pthread_self(), policy, &param);
+  const int error = fixed_priority(release);
   const std::string instead = release.sched.empty() ? "" : " " + release.sched;
   if (error == 0) {
     release.sched = std::string(release.round_robin ? "SCHED_RR" : "SCHED_FIFO") + " rank " + std::to_string(release.rank) + instead;
@@ -124,7 +122,11 @@ void place(Release& release, int core) {
 
 #if defined(__unix__) || defined(__APPLE__)
 NodeLock::NodeLock() {
-  rsaml_realtime::init_inheriting_mutex(&mutex_, false);  // where priority inheritance is refused, a plain mutex
+  pthread_mutexattr_t attributes;
+  pthread_mutexattr_init(&attributes);
+  pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);  // where refused, a plain mutex
+  pthread_mutex_init(&mutex_, &attributes);
+  pthread_mutexattr_destroy(&attributes);
 }
 NodeLock::~NodeLock() { pthread_mutex_destroy(&mutex_); }
 void NodeLock::lock() { pthread_mutex_lock(&mutex_); }
@@ -329,6 +331,64 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
         (dropped > 1 ? "them" : "it") + ", as its previous release was called " + ms((called - expected).nanoseconds()) +
         " ms late (on CLOCK_MONOTONIC: released " + std::to_string(expected_monotonic) + " ns, called " +
         std::to_string(called_monotonic) + " ns)");
+}
+
+bool Schedule::rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& timer, rclcpp::Time& released) {
+  Release& r = releases_[release];
+#if defined(__linux__)
+  // A deadline thread asking again with the same parameters keeps its old periods (a managed node activated
+  // again): it leaves SCHED_DEADLINE first, so that its first period begins now.
+  if (sched_getscheduler(0) == static_cast<int>(rsaml_realtime::kSchedDeadline)) {
+    fixed_priority(r);
+  }
+  const rclcpp::Time asked = clock_->now();
+  std::string refused = rsaml_realtime::request_deadline(r.cost_ns, r.deadline_ns, r.period_ns, rsaml_realtime::kFlagReclaim);
+  std::string how = ", reclaiming";
+  if (!refused.empty()) {
+    const std::string with_flag = refused;
+    refused = rsaml_realtime::request_deadline(r.cost_ns, r.deadline_ns, r.period_ns);
+    how = " (without reclaiming: " + with_flag + ")";
+  }
+  std::string sched;
+  if (refused.empty()) {
+    // The kernel's first period began as it granted the request: the timer is moved onto the same grid, its next call
+    // one period from now, and this job is released where that grid puts it. Each job then ends with sched_yield(),
+    // which gives up the rest of its runtime until the kernel's next period, so the kernel's periods stay the releases.
+    timer.reset();
+    const std::int64_t until = std::max<std::int64_t>(0, timer.time_until_trigger().count());
+    released = clock_->now() + rclcpp::Duration::from_nanoseconds(until - r.period_ns);
+    sched = "SCHED_DEADLINE runtime " + ms(r.cost_ns) + " ms deadline " + ms(r.deadline_ns) + " ms period " + ms(r.period_ns) + " ms" +
+            how + ", its periods and its timer's from its first release (asked " +
+            ms(std::max<std::int64_t>(0, (released - asked).nanoseconds())) + " ms before it)" + r.unpinned + " (kernel: " +
+            rsaml_realtime::kernel_policy() + ")";
+  } else {
+    const int error = fixed_priority(r);
+    sched = (error == 0 ? std::string(r.round_robin ? "SCHED_RR" : "SCHED_FIFO") + " rank " + std::to_string(r.rank) : "default") +
+            " instead of EDF: " + refused;
+  }
+  {
+    std::lock_guard<std::mutex> lock(stats_);
+    r.sched = sched;
+    r.deadline_thread = refused.empty();
+  }
+  trace("sched " + r.label + " " + sched);
+  return refused.empty();
+#else
+  (void)timer;
+  (void)released;
+  (void)r;
+  return false;
+#endif
+}
+
+void Schedule::rsaml_end_job(std::size_t release) {
+#if defined(__linux__)
+  if (releases_[release].deadline_thread) {
+    sched_yield();  // the rest of its runtime given up: it runs again at the kernel's next period, its next release
+  }
+#else
+  (void)release;
+#endif
 }
 
 std::size_t Schedule::rsaml_add_arrivals(const std::string& port) {

@@ -99,6 +99,8 @@ struct Release : Jobs {
   int rank = 1;
   bool round_robin = false;
   bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
+  bool deadline_thread = false;  // its thread under SCHED_DEADLINE (its executor thread's own, from its timer's first call)
+  std::string unpinned;          // an EDF release's thread left on every core: said in its sched line
   bool realtime = true;  // false: the data thread of aperiodic reactions, at the default priority
   std::int64_t period_ns = 0;
   rclcpp::CallbackGroup::SharedPtr group;
@@ -190,13 +192,24 @@ class Schedule {
   template <typename BodyT>
   rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {
 #if RCLCPP_VERSION_GTE(28, 0, 0)
-    return rclcpp::create_timer(
+    // The timer itself, for its first call on an EDF release's thread (rsaml_start_deadline moves it onto the kernel's periods).
+    auto self = std::make_shared<TimerOf>();
+    auto timer = rclcpp::create_timer(
         base_, timers_, clock_, rclcpp::Duration::from_nanoseconds(period_ns),
-        [this, release, period_ns, body](const rclcpp::TimerInfo& info) {
-          this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
-          this->rsaml_count_dropped(release, period_ns, info.expected_call_time, info.actual_call_time);
+        [this, release, period_ns, body, self](const rclcpp::TimerInfo& info) {
+          rclcpp::TimerBase::SharedPtr me;
+          rclcpp::Time released = info.expected_call_time;
+          if (releases_[release].edf && self->first(me) && this->rsaml_start_deadline(release, *me, released)) {
+            this->rsaml_run_job(release, released, released, body);
+          } else {
+            this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
+            this->rsaml_count_dropped(release, period_ns, info.expected_call_time, info.actual_call_time);
+          }
+          this->rsaml_end_job(release);
         },
         releases_[release].group);
+    self->set(timer);
+    return timer;
 #else
     return rclcpp::create_timer(
         base_, timers_, clock_, rclcpp::Duration::from_nanoseconds(period_ns),
@@ -216,6 +229,40 @@ class Schedule {
    * backlog run back to back at real-time priority would hold the CPU for as long again.)
    */
   void rsaml_count_dropped(std::size_t release, std::int64_t period_ns, const rclcpp::Time& expected, const rclcpp::Time& called);
+  /**
+   * An EDF release's timer, at its first call, on the release's own executor thread: asks for SCHED_DEADLINE
+   * (runtime = the modeled cost, the modeled deadline and period, reclaiming unreserved bandwidth), whose first
+   * period begins there, and moves the timer onto the kernel's periods (its next call one period on); `released`
+   * becomes this job's release on that grid. Where the kernel refuses, the thread stays at the release's rank and
+   * its sched line says `instead of EDF` and why (false). A managed node's timers are made anew on activation, and
+   * their first call does the same again.
+   */
+  bool rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& timer, rclcpp::Time& released);
+  /** After each job of a release: a deadline thread gives up the rest of its runtime (sched_yield) until its next period. */
+  void rsaml_end_job(std::size_t release);
+  /** A timer as its own callback sees it: set once created, taken on its first call only. */
+  class TimerOf {
+   public:
+    void set(const rclcpp::TimerBase::SharedPtr& timer) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      timer_ = timer;
+    }
+    /** True on the first call (with the timer in `timer`), false after. */
+    bool first(rclcpp::TimerBase::SharedPtr& timer) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (called_) {
+        return false;
+      }
+      called_ = true;
+      timer = timer_.lock();
+      return timer != nullptr;
+    }
+
+   private:
+    std::mutex mutex_;
+    rclcpp::TimerBase::WeakPtr timer_;
+    bool called_ = false;
+  };
   std::size_t rsaml_add_arrivals(const std::string& port);
   /**
    * The callback group of every subscription of the node (entry ports, link triggers): served by an

@@ -33,12 +33,11 @@ import org.rsaml.model.support.RsamlTimes;
  * <ul>
  * <li>every timed release is a periodic task: its period, deadline = delay (the period when none),
  * cost = execution duration, priority = the rank the runtime gives its thread;</li>
- * <li>the releases and the reaction of one module share the module's lock, so they form one lock group
- * (the lock inherits priority on both runtimes; the analysis does not count that, an upper bound);</li>
+ * <li>the releases and the reaction of one module share the module's lock (no priority
+ * inheritance), so they form one lock group;</li>
  * <li>a sporadic module's reaction is a sporadic task at priority 0, below every real-time rank (it
  * runs on the module's worker thread, at the lowest real-time priority); an aperiodic reaction has
- * no bound on its arrivals and is excluded, said so (its worker runs at the default priority, below every
- * real-time thread), and the work at its level and its own module's releases are not analysed.</li>
+ * no bound on its arrivals and is excluded, said so, and the work at its level is not analysed.</li>
  * </ul>
  */
 public final class TimingAnalysis {
@@ -285,18 +284,18 @@ public final class TimingAnalysis {
                         + " deadline thread at its first release and ends every job by yielding the rest of its runtime, so the"
                         + " kernel's periods are its releases, and there the verdict is claimed for the program granted that,"
                         + " within the limits docs/timing.md (EDF) states: what was measured, on how many CPUs, and a clock that"
-                        + " a time service slews. On ROS 2 the nodes' releases ask for"
-                        + " the same without that, and the verdict is not claimed there: Linux keeps periods of its own for their"
-                        + " threads, and jobs within their execution duration were seen throttled to their next period, past"
-                        + " their deadlines (docs/timing.md, EDF)");
+                        + " a time service slews. The ROS 2 nodes do the same on each release's own executor thread: at its"
+                        + " timer's first call the thread becomes a deadline thread and the timer is moved onto the kernel's"
+                        + " periods, and every job ends by yielding; there the verdict is claimed as on the C++ runtime, for"
+                        + " deadlines equal to periods (docs/timing.md, EDF)");
                 List<String> constrained = tasks.stream().filter(t -> !t.kind().equals("reaction") && t.task().deadline() < t.task().period())
                         .map(t -> t.task().name()).toList();
                 if (!constrained.isEmpty()) {
                     notes.add(String.join(", ", constrained) + (constrained.size() == 1 ? " has a deadline" : " have deadlines")
-                            + " shorter than the period: on ROS 2, under SCHED_DEADLINE Linux starts such a thread's jobs at the"
-                            + " periods it keeps for the thread (from the moment it became a deadline thread), not at the releases,"
-                            + " and holds a job woken between those back to the next one, so ROS 2 does not run them as analysed; the"
-                            + " C++ runtime does, its periods being the releases (docs/timing.md, EDF)");
+                            + " shorter than the period: on ROS 2 the verdict is not claimed for such a release: its executor thread"
+                            + " resumes at the kernel's period and wakes again for the timer a few microseconds into it, which Linux's"
+                            + " wake-up rule for such deadlines answers by shortening the runtime it grants, not measured there; the"
+                            + " C++ runtime's release thread does not wait again and is held to the deadline (docs/timing.md, EDF)");
                 }
                 if (element != null && element.getCore() >= 0) {
                     notes.add("core " + element.getCore() + " does not hold EDF: Linux admits a SCHED_DEADLINE thread only on every CPU of its"

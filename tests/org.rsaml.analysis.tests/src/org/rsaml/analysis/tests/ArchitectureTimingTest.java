@@ -148,7 +148,8 @@ class ArchitectureTimingTest {
         assertTrue(core1.notes().get(0).contains("the generated C++ runtime runs each timed release under SCHED_DEADLINE")
                 && core1.notes().get(0).contains("becomes a deadline thread at its first release")
                 && core1.notes().get(0).contains("the kernel's periods are its releases, and there the verdict is claimed")
-                && core1.notes().get(0).contains("On ROS 2") && core1.notes().get(0).contains("the verdict is not claimed there"),
+                && core1.notes().get(0).contains("The ROS 2 nodes do the same on each release's own executor thread")
+                && core1.notes().get(0).contains("there the verdict is claimed as on the C++ runtime, for deadlines equal to periods"),
                 "how the runtimes schedule it, and what is claimed on each: "
                 + core1.notes().get(0));
         assertTrue(core1.notes().get(1).startsWith("core 1 does not hold EDF:") && core1.notes().get(1).contains("on ROS 2, whose launch pins"
@@ -161,9 +162,9 @@ class ArchitectureTimingTest {
 
     /**
      * Deadlines shorter than periods on an EDF processor: the set meets them under EDF, and the notes say
-     * that on ROS 2, under SCHED_DEADLINE, Linux starts such jobs at its own periods for the thread, not at
-     * the releases, so ROS 2 does not run them as analysed, while the C++ runtime does; implicit deadlines
-     * get no such note.
+     * that on ROS 2 the verdict is not claimed for them (the executor thread wakes again a few microseconds into
+     * the kernel's period, which Linux answers by shortening the runtime), while the C++ runtime holds them to
+     * it; implicit deadlines get no such note.
      */
     @Test
     void anEdfProcessorSaysWhereDeadlinesShorterThanPeriodsAreNotRunAsAnalysed() throws Exception {
@@ -171,9 +172,9 @@ class ArchitectureTimingTest {
         assertEquals(Verdict.MEETS, edf.result().verdict(), "A (T 5, D 4, C 2) and B (T 8, D 6, C 3.5) meet their deadlines under EDF");
         List<String> said = edf.notes().stream().filter(n -> n.contains("shorter than the period")).toList();
         assertEquals(1, said.size(), "one note on the constrained deadlines: " + edf.notes());
-        assertTrue(said.get(0).startsWith("l/a.fa, l/b.fb have deadlines shorter than the period: on ROS 2, under SCHED_DEADLINE Linux"
-                + " starts such a thread's jobs at the periods it keeps for the thread") && said.get(0).contains("so ROS 2 does not run them as"
-                + " analysed; the C++ runtime does"), "names the tasks and says which runtime runs them as analysed: " + said.get(0));
+        assertTrue(said.get(0).startsWith("l/a.fa, l/b.fb have deadlines shorter than the period: on ROS 2 the verdict is not claimed for"
+                + " such a release") && said.get(0).contains("the C++ runtime's release thread does not wait again and is held to the deadline"),
+                "names the tasks and says on which runtime the verdict is claimed: " + said.get(0));
         Architecture implicit = example("mobile-base-latency.rsaml");
         implicit.getProcessors().get(1).setSchedPolicy(org.rsaml.model.SchedulingPolicy.EDF);
         for (ProcessorTiming p : TimingAnalysis.analyse(implicit).processors()) {
