@@ -9,6 +9,7 @@
 
 #include "rsaml/internal.hpp"
 #include "rsaml/ports.hpp"
+#include "rsaml/realtime.hpp"
 #include "rsaml/system.hpp"
 #include "rsaml/trace.hpp"
 
@@ -30,6 +31,18 @@ Link::Link(std::string name, Nanos duration)
 void Link::trigger() { until_.store((Clock::now() + duration_).time_since_epoch().count()); }
 
 bool Link::active() const { return Clock::now().time_since_epoch().count() < until_.load(); }
+
+#if defined(__unix__) || defined(__APPLE__)
+ModuleLock::ModuleLock() : protocol_(rsaml_realtime::init_inheriting_mutex(&mutex_, true)) {}
+ModuleLock::~ModuleLock() { pthread_mutex_destroy(&mutex_); }
+void ModuleLock::lock() { pthread_mutex_lock(&mutex_); }
+void ModuleLock::unlock() { pthread_mutex_unlock(&mutex_); }
+#else
+ModuleLock::ModuleLock() : protocol_("without priority inheritance: not supported on this platform") {}
+ModuleLock::~ModuleLock() = default;
+void ModuleLock::lock() { mutex_.lock(); }
+void ModuleLock::unlock() { mutex_.unlock(); }
+#endif
 
 Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
     : module(module), wave(wave), timed(timed), release(release), lock(module.mutex_), previous_(current_activation) {
@@ -83,7 +96,8 @@ void Module::stop_worker() {
 }
 
 void Module::run_worker() {
-  const std::string sched = system_.schedule_worker(name_);
+  Trace::line("lock " + name_ + " " + mutex_.protocol());
+  const std::string sched = system_.schedule_worker(name_, unbounded_data_);
   if (reactions_) {
     reactions_->sched = sched;
   }

@@ -19,6 +19,10 @@
 #include "rsaml/clock.hpp"
 #include "rsaml/measure.hpp"
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <pthread.h>
+#endif
+
 namespace rsaml {
 
 class System;
@@ -31,6 +35,33 @@ struct Reactions {
   JobBounds bounds;
   std::string sched;  // the scheduling the worker got, as the trace says it
   JobStats stats;
+};
+
+/**
+ * A module's lock (a module is a lock group of the analysis), held while any of its activations runs:
+ * recursive, and with priority inheritance where POSIX threads offer it (PTHREAD_PRIO_INHERIT), as a
+ * ROS 2 node's lock is: a thread holding it runs at the priority of the highest thread waiting for it,
+ * so that a release waits for a worker of a lower or the default priority only as long as that worker
+ * needs the lock, not while other threads run (docs/timing.md, "Module lock").
+ */
+class ModuleLock {
+ public:
+  ModuleLock();
+  ~ModuleLock();
+  ModuleLock(const ModuleLock&) = delete;
+  ModuleLock& operator=(const ModuleLock&) = delete;
+  void lock();
+  void unlock();
+  /** "PTHREAD_PRIO_INHERIT", or what the lock is instead and why. */
+  const std::string& protocol() const { return protocol_; }
+
+ private:
+#if defined(__unix__) || defined(__APPLE__)
+  pthread_mutex_t mutex_;
+#else
+  std::recursive_mutex mutex_;
+#endif
+  std::string protocol_;
 };
 
 /**
@@ -50,7 +81,7 @@ class Activation {
   const std::uint64_t wave;
   const bool timed;
   const Clock::time_point release;
-  std::unique_lock<std::recursive_mutex> lock;
+  std::unique_lock<ModuleLock> lock;
   /** How long the lock was given up to wait for actions' start dates (not the job's stall). */
   Nanos waited{0};
 
@@ -89,6 +120,16 @@ class Module {
    * each from the arrival that starts it to its completion, against bounds.
    */
   void measure_reactions(std::string label, JobBounds bounds);
+  /**
+   * Serves the module's data at the default priority (SCHED_OTHER), below every real-time thread, pinned to
+   * the module's core all the same (`sched <module> worker default: it serves aperiodic reactions ...`): a module
+   * whose reactions are aperiodic calls it in its constructor. The model bounds neither their arrivals nor their
+   * load, and the analysis excludes them; at a real-time priority, a module offered more data than it can react
+   * to would keep its worker always ready and take the real-time time of its CPU, which Linux's real-time
+   * throttling (sched_rt_runtime_us) then takes back from every real-time thread there, the releases the
+   * analysis proved included (docs/timing.md, "What is excluded, and said so").
+   */
+  void serve_data_unbounded() { unbounded_data_ = true; }
   /**
    * A reaction to the data that has arrived: runs body (the step functions and the sending of the
    * outputs) when begin_reaction() lets it, after the busy work, and measures it.
@@ -136,7 +177,7 @@ class Module {
   int core_;
   std::string host_;
   int cpu_;
-  std::recursive_mutex mutex_;
+  ModuleLock mutex_;
   std::mutex mail_mutex_;
   std::condition_variable mail_cv_;
   std::deque<Mail> mail_;
@@ -148,6 +189,7 @@ class Module {
   Clock::time_point last_reaction_{};
   bool reacted_ = false;
   Reactions* reactions_ = nullptr;  // owned by the system; null when not measured
+  bool unbounded_data_ = false;  // its worker serves aperiodic reactions at the default priority
 };
 
 }  // namespace rsaml

@@ -271,12 +271,24 @@ void System::let_deadline_threads_go() {
 #endif
 }
 
-std::string System::schedule_worker(const std::string& module) {
+std::string System::schedule_worker(const std::string& module, bool unbounded) {
 #ifdef RSAML_HAS_PTHREAD
   const std::thread::native_handle_type self = pthread_self();
 #else
   const std::thread::native_handle_type self{};
 #endif
+  if (unbounded) {
+    // Aperiodic reactions, which the analysis excludes: at the default priority, below every real-time thread, so
+    // that more data than the module can react to takes no real-time time from the releases (the thread is made
+    // SCHED_OTHER whatever the thread that started it ran at; lowering a thread's priority is always permitted).
+#ifdef RSAML_HAS_PTHREAD
+    sched_param param{};
+    pthread_setschedparam(self, SCHED_OTHER, &param);
+#endif
+    Trace::line("sched " + module + " worker default: it serves aperiodic reactions, whose load the model does not bound,"
+                " below every real-time thread");
+    return "default (aperiodic reactions)";
+  }
   // Priority 0 of the analysis: the lowest real-time priority, below every release (rank 1 and up).
   const std::string sched = options_.realtime && apply_priority(self, Policy::Fifo, 0) ? "SCHED_FIFO rank 0" : "default";
   Trace::line("sched " + module + " worker " + sched);

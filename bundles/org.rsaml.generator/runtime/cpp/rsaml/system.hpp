@@ -60,9 +60,11 @@ class System {
   void place(std::thread::native_handle_type thread, const std::string& label, const Module& module);
   /**
    * Gives the calling worker thread of a module priority 0 of the analysis, below every release:
-   * SCHED_FIFO at the lowest real-time priority where permitted. Says which in the trace.
+   * SCHED_FIFO at the lowest real-time priority where permitted; or, for a module whose reactions are
+   * aperiodic (unbounded), the default priority (SCHED_OTHER), below every real-time thread. Says which
+   * in the trace.
    */
-  std::string schedule_worker(const std::string& module);
+  std::string schedule_worker(const std::string& module, bool unbounded);
   /** The record of a module's measured reactions (see Module::measure_reactions). */
   Reactions& reactions(Module& module, std::string label, JobBounds bounds);
   /** Measures one reaction, as job_done does a release's job. */

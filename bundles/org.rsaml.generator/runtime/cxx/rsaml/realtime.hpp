@@ -2,8 +2,9 @@
  * Copyright (c) 2026 RsaML contributors.
  * SPDX-License-Identifier: EPL-2.0
  */
-// EDF for the releases of an EDF processor: Linux's SCHED_DEADLINE, shared by the C++ runtime and
-// the ROS 2 nodes (docs/timing.md, "EDF"). Internal linkage, so that two generated libraries in one
+// EDF for the releases of an EDF processor: Linux's SCHED_DEADLINE, and the locks with priority
+// inheritance (a module's, a node's, the trace queue's), shared by the C++ runtime and the ROS 2 nodes (docs/timing.md, "EDF", "Module
+// lock"). Internal linkage, so that two generated libraries in one
 // process (ROS 2 components) never mix their copies.
 #pragma once
 
@@ -11,12 +12,16 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <cstdlib>
 #include <string>
 
 #if defined(__linux__)
 #include <sched.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+#endif
+#if defined(__unix__) || defined(__APPLE__)
+#include <pthread.h>
 #endif
 
 namespace rsaml_realtime {
@@ -108,6 +113,40 @@ inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline,
   return "SCHED_DEADLINE is Linux's";
 #endif
 }
+
+#if defined(__unix__) || defined(__APPLE__)
+/**
+ * Initialises a lock the real-time threads share with others (a module's, a node's, the trace queue's): a mutex
+ * with priority inheritance (PTHREAD_PRIO_INHERIT), so that a thread holding it runs at the priority of the
+ * highest thread waiting for it, and a release at its real-time priority waits for a thread of a lower or the
+ * default priority only as long as that thread needs the lock, not while other threads run (a priority
+ * inversion); recursive where its owner takes it again (a module's activations). Where the platform refuses
+ * priority inheritance, a plain mutex. Returns "PTHREAD_PRIO_INHERIT", or what the mutex is instead and why.
+ */
+inline std::string init_inheriting_mutex(pthread_mutex_t* mutex, bool recursive) {
+  pthread_mutexattr_t attributes;
+  pthread_mutexattr_init(&attributes);
+  if (recursive) {
+    pthread_mutexattr_settype(&attributes, PTHREAD_MUTEX_RECURSIVE);
+  }
+  const int refused = pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);
+  int error = pthread_mutex_init(mutex, &attributes);
+  std::string protocol = "PTHREAD_PRIO_INHERIT";
+  if (refused != 0 || error != 0) {
+    protocol = std::string("without priority inheritance: ") + std::strerror(refused != 0 ? refused : error);
+    if (error != 0) {
+      pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_NONE);
+      error = pthread_mutex_init(mutex, &attributes);
+    }
+  }
+  pthread_mutexattr_destroy(&attributes);
+  if (error != 0) {
+    std::fprintf(stderr, "rsaml: cannot create a lock: %s\n", std::strerror(error));
+    std::abort();
+  }
+  return protocol;
+}
+#endif
 
 }  // namespace
 }  // namespace rsaml_realtime

@@ -23,6 +23,8 @@
 #include <utility>
 #include <vector>
 
+#include "rsaml/realtime.hpp"
+
 #if defined(__unix__) || defined(__APPLE__)
 #include <pthread.h>
 #include <sched.h>
@@ -43,11 +45,7 @@ class TraceQueue {
   TraceQueue() {
     lines_.resize(QUEUE_LINES);
 #if defined(__unix__) || defined(__APPLE__)
-    pthread_mutexattr_t attributes;
-    pthread_mutexattr_init(&attributes);
-    pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);  // where refused, a plain mutex
-    pthread_mutex_init(&mutex_, &attributes);
-    pthread_mutexattr_destroy(&attributes);
+    rsaml_realtime::init_inheriting_mutex(&mutex_, false);  // where priority inheritance is refused, a plain mutex
     pthread_cond_init(&wake_, nullptr);
     pthread_cond_init(&written_, nullptr);
 #endif

@@ -122,11 +122,7 @@ void place(Release& release, int core) {
 
 #if defined(__unix__) || defined(__APPLE__)
 NodeLock::NodeLock() {
-  pthread_mutexattr_t attributes;
-  pthread_mutexattr_init(&attributes);
-  pthread_mutexattr_setprotocol(&attributes, PTHREAD_PRIO_INHERIT);  // where refused, a plain mutex
-  pthread_mutex_init(&mutex_, &attributes);
-  pthread_mutexattr_destroy(&attributes);
+  rsaml_realtime::init_inheriting_mutex(&mutex_, false);  // where priority inheritance is refused, a plain mutex
 }
 NodeLock::~NodeLock() { pthread_mutex_destroy(&mutex_); }
 void NodeLock::lock() { pthread_mutex_lock(&mutex_); }

@@ -33,11 +33,12 @@ import org.rsaml.model.support.RsamlTimes;
  * <ul>
  * <li>every timed release is a periodic task: its period, deadline = delay (the period when none),
  * cost = execution duration, priority = the rank the runtime gives its thread;</li>
- * <li>the releases and the reaction of one module share the module's lock (no priority
- * inheritance), so they form one lock group;</li>
+ * <li>the releases and the reaction of one module share the module's lock, so they form one lock group
+ * (the lock inherits priority on both runtimes; the analysis does not count that, an upper bound);</li>
  * <li>a sporadic module's reaction is a sporadic task at priority 0, below every real-time rank (it
  * runs on the module's worker thread, at the lowest real-time priority); an aperiodic reaction has
- * no bound on its arrivals and is excluded, said so, and the work at its level is not analysed.</li>
+ * no bound on its arrivals and is excluded, said so (its worker runs at the default priority, below every
+ * real-time thread), and the work at its level and its own module's releases are not analysed.</li>
  * </ul>
  */
 public final class TimingAnalysis {

@@ -121,12 +121,17 @@ final class CppJobCheck {
      * hiccup) around the program; what the run saw and the allowance it was checked with.
      */
     static Run run(Architecture arch, Path project, String what, String... monitorOptions) throws Exception {
+        return run(arch, project, what, RUN_MS, monitorOptions);
+    }
+
+    /** As {@link #run(Architecture, Path, String, String...)}, the program run for {@code runMs} milliseconds. */
+    static Run run(Architecture arch, Path project, String what, long runMs, String... monitorOptions) throws Exception {
         Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
         String output;
         OtherRealtime.Use others;
         PlatformCheck.Platform platform;
         try (OtherRealtime.Watch watch = new OtherRealtime.Watch(); PlatformCheck.Monitor monitor = PlatformCheck.Monitor.start(monitorOptions)) {
-            output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(RUN_MS), "--quiet", "--busy-work", "100");
+            output = Tools.ok(project, 60, exe.toString(), "--run-for-ms", Long.toString(runMs), "--quiet", "--busy-work", "100");
             platform = monitor.stop();
             others = watch.stop();
         }
@@ -160,10 +165,10 @@ final class CppJobCheck {
             assertEquals(r.deadlineNs(), s.deadlineNs(), what + ": the modeled deadline: " + s);
             assertEquals(r.costNs(), s.modeledNs(), what + ": the modeled execution time: " + s);
             // about one a period; the releases go on until the threads see the stop (within 20 ms, later on a loaded machine)
-            long expected = (RUN_MS * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
-            long most = ((RUN_MS + 500) * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
+            long expected = (runMs * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
+            long most = ((runMs + 500) * 1_000_000 - r.offsetNs()) / r.periodNs() + 1;
             assertTrue(s.jobs() >= Math.max(1, expected / 2) && s.jobs() <= most,
-                    what + ": " + s.jobs() + " jobs of " + r.label() + " in " + RUN_MS + " ms, expected about " + expected);
+                    what + ": " + s.jobs() + " jobs of " + r.label() + " in " + runMs + " ms, expected about " + expected);
             assertTrue(s.executionNs() >= r.costNs() * 9 / 10, what + ": the busy work consumed the modeled time: " + s);
             assertEquals((s.jobs() - 1) * r.periodNs(), s.lastNs() - s.firstNs(), 2_000,
                     what + ": the jobs of " + r.label() + " released on its grid, one every period, none skipped: " + s);

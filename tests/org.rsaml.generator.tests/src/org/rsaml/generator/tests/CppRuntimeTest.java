@@ -18,8 +18,10 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.analysis.TimingAnalysis;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
+import org.rsaml.validation.ModelLoader;
 
 /**
  * The C++ runtime is fixed text: the files runtime/cpp/rsaml/* of the generator bundle. Each
@@ -97,5 +99,51 @@ class CppRuntimeTest {
                 assertTrue(cmake.contains("gen/rsaml/" + file), "the build compiles the runtime's " + file + ":\n" + cmake);
             }
         }
+    }
+    /**
+     * A module whose reactions are aperiodic, which the analysis excludes, has its worker (a ROS 2 node its data thread)
+     * at the default priority, below every real-time thread, on both targets: exactly the modules the analysis lists as
+     * excluded, the C++ module base calling {@code serve_data_unbounded()} after measuring its reactions as the ROS 2
+     * node calls {@code rsaml_data_unbounded()}; sporadic reactions (ros2-reaction.rsaml's) stay at priority 0. The
+     * runtime's worker then says so ({@code JobTimingTest}).
+     */
+    @Test
+    void aperiodicReactionsAreServedAtTheDefaultPriorityOnBothTargets(@TempDir Path tmp) throws Exception {
+        for (String name : List.of("exp1-hybrid.rsaml", "subsumption-brooks.rsaml", "resources/ros2-reaction.rsaml")) {
+            Path model = Ros2Test.model(name);
+            Set<String> excluded = TimingAnalysis.analyse(ModelLoader.load(model, name).architecture()).excluded().stream()
+                    .map(x -> x.label()).collect(Collectors.toCollection(TreeSet::new));
+            Set<String> cpp = unbounded(tmp.resolve("cpp-" + name.replace('/', '_')), model, Target.CPP, ".cpp",
+                    "::rsaml::Module::serve_data_unbounded();");
+            Set<String> ros2 = unbounded(tmp.resolve("ros2-" + name.replace('/', '_')), model, Target.ROS2, ".hpp",
+                    "this->rsaml_data_unbounded();");
+            assertEquals(excluded, cpp, name + ": the C++ modules whose worker serves data at the default priority");
+            assertEquals(excluded, ros2, name + ": the ROS 2 nodes whose data thread does");
+            if (name.contains("ros2-reaction")) {
+                assertEquals(Set.of(), cpp, name + ": sporadic reactions, which the analysis bounds, stay at priority 0");
+            } else {
+                assertTrue(!cpp.isEmpty(), name + " has aperiodic reactions");
+            }
+        }
+    }
+
+    /** The reacting modules of the generated bases whose constructor makes the call, by the label of their reactions. */
+    private static Set<String> unbounded(Path out, Path model, Target target, String suffix, String call) throws Exception {
+        new RsamlGenerator().generate(model, target, out, true);
+        java.util.regex.Pattern reactions = java.util.regex.Pattern.compile("measure_reactions\\(\"([^\"]+) \\(reaction\\)\"");
+        Set<String> found = new TreeSet<>();
+        try (Stream<Path> files = Files.walk(out)) {
+            for (Path f : files.filter(p -> p.toString().endsWith("Base" + suffix) && p.toString().contains("/gen/")).toList()) {
+                String text = Files.readString(f);
+                java.util.regex.Matcher m = reactions.matcher(text);
+                int calls = text.split(java.util.regex.Pattern.quote(call), -1).length - 1;
+                assertTrue(calls <= 1, f + ": the call at most once");
+                if (calls == 1) {
+                    assertTrue(m.find() && text.indexOf(call) > m.start(), f + ": the call after the reactions are measured:\n" + text);
+                    found.add(m.group(1));
+                }
+            }
+        }
+        return found;
     }
 }

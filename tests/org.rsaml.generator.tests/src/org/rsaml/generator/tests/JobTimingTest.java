@@ -190,6 +190,52 @@ class JobTimingTest {
     }
 
     /**
+     * A module whose reactions are aperiodic, offered more data than it can react to, takes no real-time time from the
+     * releases on its core: a producer (T 2, C 0.2) sends every 2 ms to a consumer that takes 5 ms a reaction (2.5 CPUs of
+     * work offered, so its worker is always ready), beside A (T 10, C 2), all on core 1, for 2.5 s (past the kernel's
+     * real-time period of 1 s, whose 95 % a real-time worker always ready would use up, after which the kernel would
+     * hold every real-time thread of the core, the releases included, for the rest of the second). The consumer's
+     * worker serves it at the default priority (its trace and summary say so) and its lock inherits priority; the
+     * releases, whose analysis the consumer does not touch, keep their bounds ({@link CppJobCheck}), and the consumer
+     * reacts in the time they leave.
+     */
+    @Test
+    void anAperiodicReactionOfferedTooMuchDataLeavesTheReleasesTheirBounds(@TempDir Path tmp) throws Exception {
+        // the consumer aperiodic: no period, 5 ms a reaction
+        String layers = producer(2, 0.2) + "    <modules name=\"consumer\" timeUnit=\"ms\" execDuration=\"5.0\">\n"
+                + "      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\" dataType=\"numeric\"/>\n    </modules>\n" + module("a", 10, 2, "RM");
+        String processors = PRODUCER_AND_CONSUMER.replace("@modules[name='consumer']\"/>",
+                "@modules[name='consumer'] //@layers[name='tasks']/@modules[name='a']\"/>");
+        Path out = tmp.resolve("project");
+        Architecture arch = writeAndGenerate(tmp, "flooded", layers, processors, out, false);
+        ArchitectureTiming timing = TimingAnalysis.analyse(arch);
+        assertEquals(List.of("tasks/consumer"), timing.excluded().stream().map(x -> x.label()).toList(), "the consumer's reactions are aperiodic");
+        Map<String, Long> bounds = bounds(timing);
+        assertTrue(bounds.containsKey("tasks/producer.f") && bounds.containsKey("tasks/a.f"), "the releases keep their bounds: " + bounds);
+
+        // the program's own words: the consumer's worker at the default priority, every module's lock inheriting priority
+        String traced = Tools.ok(out, 60, Tools.cmakeBuild(out, CppExamplesTest.executableName(out)).toString(), "--run-for-ms", "200");
+        RunTrace trace = new RunTrace(traced);
+        assertEquals(1, trace.matching("sched tasks/consumer worker default: it serves aperiodic reactions, whose load the model does not"
+                + " bound, below every real-time thread").size(), "the consumer's worker at the default priority:\n" + Tools.last(traced, 3000));
+        for (String module : List.of("tasks/producer", "tasks/consumer", "tasks/a")) {
+            assertEquals(1, trace.matching("lock " + module + " PTHREAD_PRIO_INHERIT").size(),
+                    module + "'s lock inherits priority:\n" + Tools.last(traced, 3000));
+        }
+        assertTrue(trace.matching("sched tasks/producer worker ").stream().noneMatch(l -> l.contains("aperiodic")),
+                "a module that does not react keeps its worker at priority 0: " + trace.matching("sched tasks/producer worker "));
+
+        Map<String, JobSummary> run = CppJobCheck.run(arch, out, "flooded", 2500).summaries();
+        JobSummary consumer = run.get("tasks/consumer (reaction)");
+        assertEquals("default (aperiodic reactions)", consumer.sched(), "the consumer's summary says where it ran: " + consumer);
+        JobSummary producer = run.get("tasks/producer.f");
+        // the consumer reacts in what the releases leave of the core (70 %), 5 ms a reaction: far fewer than the messages sent
+        assertTrue(consumer.jobs() > 0 && consumer.jobs() * 5 < 2500, "the consumer reacted, but to no more than the core could take: " + consumer);
+        // offered 2.5 CPUs of reactions, it takes at most the core: more than twice as many messages as reactions
+        assertTrue(producer.jobs() > 2 * consumer.jobs(), "more messages were sent than the consumer could react to: " + producer + ", " + consumer);
+    }
+
+    /**
      * A processor the analysis proves overloaded: A (T 10, C 5) and B (T 14, C 6) under rate
      * monotonic; B's worst response is 16 ms, past its 14 ms deadline. Run as modeled, the program
      * reports B's misses (under real-time scheduling; A, above it, meets); with --busy-work 150 every
@@ -309,11 +355,15 @@ class JobTimingTest {
      * sporadic consumer of it (an entry port "in"; its minimum interval, delay and execution time in ms given).
      */
     static String producerAndConsumer(long period, double cost, String consumerPeriod, String consumerDelay, String consumerCost) {
+        return producer(period, cost) + "    <modules name=\"consumer\" timeUnit=\"ms\" type=\"realTime\" period=\"" + consumerPeriod
+                + "\" delay=\"" + consumerDelay + "\" execDuration=\"" + consumerCost + "\" execType=\"sporadic\">\n"
+                + "      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\" dataType=\"numeric\"/>\n    </modules>\n";
+    }
+
+    /** A periodic producer (rate monotonic) with an output port "out", sent after each of its jobs. */
+    static String producer(long period, double cost) {
         return module("producer", period, cost, "RM").replace("    </modules>",
-                "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\" dataType=\"numeric\"/>\n    </modules>")
-                + "    <modules name=\"consumer\" timeUnit=\"ms\" type=\"realTime\" period=\"" + consumerPeriod + "\" delay=\"" + consumerDelay
-                + "\" execDuration=\"" + consumerCost + "\" execType=\"sporadic\">\n      <ports xsi:type=\"rsaml:EntryPort\" name=\"in\""
-                + " dataType=\"numeric\"/>\n    </modules>\n";
+                "      <ports xsi:type=\"rsaml:OutputPort\" name=\"out\" dataType=\"numeric\"/>\n    </modules>");
     }
 
     /** The producer and the consumer of {@link #producerAndConsumer} on core 1, the producer's "out" connected to the consumer's "in". */

@@ -49,6 +49,11 @@ class CppModuleTemplate extends CppTemplate {
 		// reactions: from the arrival that starts one to its completion, due within «x.deadlineNs» ns (0: none),
 		// modeled to take «x.costNs» ns; «boundComment(bounds.of(x))».
 		::rsaml::Module::measure_reactions(«str(x.label)», «jobBounds(x.deadlineNs, x.costNs, bounds.of(x))»);
+		«IF bounds.aperiodic(x)»
+			// aperiodic reactions, which the analysis excludes: the module's data at the default priority, below every
+			// real-time thread, so that more data than the module can react to takes no real-time time from the releases
+			::rsaml::Module::serve_data_unbounded();
+		«ENDIF»
 	'''
 
 	def private boundComment(Release r) {
