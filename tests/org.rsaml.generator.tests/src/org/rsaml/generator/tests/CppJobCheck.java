@@ -139,6 +139,7 @@ final class CppJobCheck {
         ExecutionPlan plan = ExecutionPlan.of(arch);
         Map<String, Long> bounds = JobTimingTest.bounds(TimingAnalysis.analyse(arch));
         RunTrace trace = new RunTrace(output);
+        RunTrace.assertNoneDropped(what, output);
         List<String> labels = new ArrayList<>(plan.releases().stream().map(Release::label).toList());
         plan.reactions().forEach(x -> labels.add(x.label()));
         assertEquals(labels.stream().sorted().toList(), summaries.keySet().stream().sorted().toList(),

@@ -280,6 +280,7 @@ class JobTimingTest {
         for (JobSummary s : over.values()) {
             assertTrue(s.jobs() > 0, "no job of " + s.label() + " completed:\n" + doubled);
             assertEquals(s.jobs(), s.overruns(), "every job used half as much again as its modeled time: " + s);
+            RunTrace.assertNoneDropped("the doubled run", doubled);
             assertEquals(s.overruns(), new RunTrace(doubled).matching("overrun " + s.label() + " job ").size(),
                     "an overrun line per overrun of " + s.label());
         }

@@ -429,6 +429,16 @@ class PlatformCheckTest {
     }
 
     @Test
+    void aRunWhoseTraceDroppedLinesIsNotCountedLineByLine() {
+        String ok = "[  1200.000 ms] summary tasks/a.f jobs 100 ...\n";
+        RunTrace.assertNoneDropped("a run", ok);
+        String dropped = ok + "[  1201.000 ms] trace dropped 12 lines in all: its queue was full, standard output not read in time\n";
+        AssertionError said = org.junit.jupiter.api.Assertions.assertThrows(AssertionError.class, () -> RunTrace.assertNoneDropped("a run", dropped));
+        assertTrue(said.getMessage().startsWith("a run: the program's output was not read in time, so its miss and overrun lines cannot be"
+                + " counted against its summary: trace dropped 12 lines in all"), said.getMessage());
+    }
+
+    @Test
     void theModelsDeadlineThreadsAboveTheMonitorAreNotThePlatforms() {
         // an EDF release under SCHED_DEADLINE runs above the monitor: its 2 ms every 5 ms is taken out of what the monitor lost
         PlatformCheck.Platform p = platform(100, 20_000, new long[] {1, 50_000_000, 3_000_000});

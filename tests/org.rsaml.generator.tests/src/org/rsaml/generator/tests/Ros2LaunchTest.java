@@ -337,6 +337,7 @@ class Ros2LaunchTest {
         // Every release at its modeled period: its jobs (the releases ROS 2's timer dropped counted among
         // them) on the grid for the whole run, each miss said on a line of its own.
         Map<String, Missed> missed = Missed.of(out);
+        RunTrace.assertNoneDropped(name + " on ROS 2", out);
         StringBuilder report = new StringBuilder(name + ": observed on ROS 2 (simulated load " + LOAD + ")\n");
         for (PlannedModule pm : plan.modules()) {
             for (Release r : pm.releases()) {

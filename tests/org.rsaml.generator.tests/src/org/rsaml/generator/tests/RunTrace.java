@@ -25,6 +25,21 @@ final class RunTrace {
     final List<Double> times = new ArrayList<>();
     final String output;
 
+    private static final Pattern DROPPED = Pattern.compile("\\] (trace dropped \\d+ lines in all[^\\n]*)");
+
+    /**
+     * Fails, saying why, when the program's trace queue dropped lines (its output was not read in time: the
+     * runtimes say so after the summary, docs/timing.md, "The trace"): its miss and overrun lines then cannot be
+     * counted against its summary. Called before any such count.
+     */
+    static void assertNoneDropped(String what, String output) {
+        Matcher m = DROPPED.matcher(output);
+        if (m.find()) {
+            fail(what + ": the program's output was not read in time, so its miss and overrun lines cannot be counted against"
+                    + " its summary: " + m.group(1));
+        }
+    }
+
     RunTrace(String output) {
         this.output = output;
         for (String raw : output.split("\n")) {
