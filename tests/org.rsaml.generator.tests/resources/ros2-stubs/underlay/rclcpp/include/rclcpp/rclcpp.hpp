@@ -157,8 +157,11 @@ struct TimerInfo {
 class TimerBase {
  public:
   using SharedPtr = std::shared_ptr<TimerBase>;
+  using WeakPtr = std::weak_ptr<TimerBase>;
   virtual ~TimerBase() = default;
   void cancel() {}
+  void reset() {}
+  std::chrono::nanoseconds time_until_trigger() { return std::chrono::nanoseconds(0); }
 };
 
 // rclcpp/node_interfaces/node_base_interface.hpp, node_timers_interface.hpp
