@@ -36,7 +36,7 @@
 namespace rsaml_ros2 {
 
 /**
- * Queues one trace line, "[   12.345 ms] text", ms since the process started, for the process's trace writer, a
+ * Queues one trace line, "[   12.345 ms] text", ms since the trace queue was made (the program's start), for the trace writer of the runtime package, a
  * thread of the default priority that writes it out at once (rsaml/tracequeue.hpp): the caller never waits for
  * standard output, a slow or full pipe stalls only the writer. A line that finds the queue full is dropped and the
  * writer says how many ("trace dropped N lines ..."), as does each node's summary ("... in all").
@@ -247,20 +247,23 @@ class Schedule {
       std::lock_guard<std::mutex> lock(mutex_);
       timer_ = timer;
     }
-    /** True on the first call (with the timer in `timer`), false after. */
+    /**
+     * True on the first call that finds the timer set (with it in `timer`), false before and after: a call that
+     * comes before its maker has set it (the maker preempted for a period) leaves the first call to the next one.
+     */
     bool first(rclcpp::TimerBase::SharedPtr& timer) {
       std::lock_guard<std::mutex> lock(mutex_);
       if (called_) {
         return false;
       }
-      called_ = true;
       timer = timer_.lock();
-      return timer != nullptr;
+      called_ = timer != nullptr;
+      return called_;
     }
 
    private:
     std::mutex mutex_;
-    rclcpp::TimerBase::WeakPtr timer_;
+    std::weak_ptr<rclcpp::TimerBase> timer_;
     bool called_ = false;
   };
   std::size_t rsaml_add_arrivals(const std::string& port);

@@ -232,12 +232,30 @@ class JobTimingTest {
         if (flooded.allowance() != null) {
             // The kernel's throttling, which an always-ready real-time worker would bring about, holds every real-time thread
             // of the core for the last 50 ms of each second, the platform monitor's too: CppJobCheck's allowance would count
-            // that hold as the platform's loss and excuse the releases. So the monitor's own longest delay on core 1 (its CPU
-            // here) is held to half of it: a worker at the default priority leaves the real-time threads the core.
+            // that hold as the platform's loss and excuse the releases. So the monitor's delays of 25 ms or more on core 1
+            // (its CPU here) are counted, those of that CPU alone (throttling is the CPU's; a stall of the whole machine,
+            // which the other CPU's monitor shares, is not): two in the run of 2.5 s would be the throttle's, once a second.
             int cpu = OneMachineCpus.of(arch).values().iterator().next();
-            PlatformCheck.Loss loss = flooded.allowance().platform().loss(cpu, 10_000_000L);
-            assertTrue(loss.longestNs() < 25_000_000L, "no real-time throttling on CPU " + cpu + " (a hold of 50 ms each second): the"
-                    + " platform monitor's longest delay there " + ms(loss.longestNs()) + " at " + ms(loss.longestAtNs()) + " into the run");
+            PlatformCheck.Platform platform = flooded.allowance().platform();
+            List<String> holds = new java.util.ArrayList<>();
+            List<String> shared = new java.util.ArrayList<>();
+            for (PlatformCheck.CpuRecords c : platform.cpus()) {
+                for (int i = 0; c.cpu() == cpu && i < c.starts().length; i++) {
+                    long from = c.starts()[i];
+                    long length = c.ends()[i] - from;
+                    if (length < 25_000_000L) {
+                        continue;
+                    }
+                    boolean everyCpu = platform.cpus().stream().filter(o -> o.cpu() != cpu)
+                            .allMatch(o -> platform.lossIn(o.cpu(), from, from + length).ns() >= length / 2);
+                    (everyCpu ? shared : holds).add(ms(length) + " at " + ms(from - platform.fromNs()) + " into the run");
+                }
+            }
+            assertTrue(holds.size() < 2, "real-time throttling on CPU " + cpu + " (a hold of 50 ms each second): the platform monitor's"
+                    + " delays there, the other CPUs running: " + holds + (shared.isEmpty() ? "" : "; stalls of every CPU, not counted: " + shared));
+            if (!shared.isEmpty()) {
+                System.out.println("JobTimingTest flooded: stalls of every CPU at once, not throttling: " + shared);
+            }
         }
         JobSummary consumer = run.get("tasks/consumer (reaction)");
         assertEquals("default (aperiodic reactions)", consumer.sched(), "the consumer's summary says where it ran: " + consumer);
