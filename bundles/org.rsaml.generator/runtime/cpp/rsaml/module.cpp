@@ -37,11 +37,33 @@ ModuleLock::ModuleLock() : protocol_(rsaml_realtime::init_inheriting_mutex(&mute
 ModuleLock::~ModuleLock() { pthread_mutex_destroy(&mutex_); }
 void ModuleLock::lock() { pthread_mutex_lock(&mutex_); }
 void ModuleLock::unlock() { pthread_mutex_unlock(&mutex_); }
+MailLock::MailLock() {
+  rsaml_realtime::init_inheriting_mutex(&mutex_, false);
+  pthread_cond_init(&ready_, nullptr);
+}
+MailLock::~MailLock() {
+  pthread_cond_destroy(&ready_);
+  pthread_mutex_destroy(&mutex_);
+}
+void MailLock::lock() { pthread_mutex_lock(&mutex_); }
+void MailLock::unlock() { pthread_mutex_unlock(&mutex_); }
+void MailLock::wait() { pthread_cond_wait(&ready_, &mutex_); }
+void MailLock::notify() { pthread_cond_signal(&ready_); }
 #else
 ModuleLock::ModuleLock() : protocol_("without priority inheritance: not supported on this platform") {}
 ModuleLock::~ModuleLock() = default;
 void ModuleLock::lock() { mutex_.lock(); }
 void ModuleLock::unlock() { mutex_.unlock(); }
+MailLock::MailLock() = default;
+MailLock::~MailLock() = default;
+void MailLock::lock() { mutex_.lock(); }
+void MailLock::unlock() { mutex_.unlock(); }
+void MailLock::wait() {
+  std::unique_lock<std::mutex> held(mutex_, std::adopt_lock);
+  ready_.wait(held);
+  held.release();
+}
+void MailLock::notify() { ready_.notify_one(); }
 #endif
 
 Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
@@ -68,13 +90,13 @@ Module::~Module() { stop_worker(); }
 
 void Module::post(std::uint64_t wave, std::function<void()> work) {
   {
-    std::lock_guard<std::mutex> lock(mail_mutex_);
+    std::lock_guard<MailLock> lock(mail_mutex_);
     if (stopping_) {
       return;
     }
     mail_.push_back(Mail{wave, Clock::now(), std::move(work)});
   }
-  mail_cv_.notify_one();
+  mail_mutex_.notify();
 }
 
 void Module::start_worker() {
@@ -86,10 +108,10 @@ void Module::start_worker() {
 
 void Module::stop_worker() {
   {
-    std::lock_guard<std::mutex> lock(mail_mutex_);
+    std::lock_guard<MailLock> lock(mail_mutex_);
     stopping_ = true;
   }
-  mail_cv_.notify_all();
+  mail_mutex_.notify();  // its one worker
   if (worker_.joinable()) {
     worker_.join();
   }
@@ -104,8 +126,10 @@ void Module::run_worker() {
   for (;;) {
     Mail mail;
     {
-      std::unique_lock<std::mutex> lock(mail_mutex_);
-      mail_cv_.wait(lock, [this] { return stopping_ || !mail_.empty(); });
+      std::lock_guard<MailLock> lock(mail_mutex_);
+      while (!stopping_ && mail_.empty()) {
+        mail_mutex_.wait();
+      }
       if (stopping_) {
         return;
       }

@@ -65,6 +65,34 @@ class ModuleLock {
 };
 
 /**
+ * A module's mailbox lock, which the releases that send to the module share with its worker: with priority
+ * inheritance where POSIX threads offer it, as the module's lock, so that a release waits for a worker of the
+ * default priority (a module whose reactions are aperiodic) only as long as the worker needs it for a push or a
+ * pop, not while other threads run on its core; and the mailbox's condition, waited on under it.
+ */
+class MailLock {
+ public:
+  MailLock();
+  ~MailLock();
+  MailLock(const MailLock&) = delete;
+  MailLock& operator=(const MailLock&) = delete;
+  void lock();
+  void unlock();
+  /** Waits, holding the lock, until notified (or woken spuriously); holds it again on return. */
+  void wait();
+  void notify();
+
+ private:
+#if defined(__unix__) || defined(__APPLE__)
+  pthread_mutex_t mutex_;
+  pthread_cond_t ready_;
+#else
+  std::mutex mutex_;
+  std::condition_variable ready_;
+#endif
+};
+
+/**
  * The work a module is doing, on the current thread: the module's lock is held, and data sent
  * belongs to the activation's wave (a timed release or the start starts a wave; data carries it on,
  * and a module reacts at most once per wave, so cycles of reacting modules end).
@@ -178,8 +206,7 @@ class Module {
   std::string host_;
   int cpu_;
   ModuleLock mutex_;
-  std::mutex mail_mutex_;
-  std::condition_variable mail_cv_;
+  MailLock mail_mutex_;
   std::deque<Mail> mail_;
   bool stopping_ = false;
   std::thread worker_;
