@@ -140,6 +140,8 @@ class TreeEditorTest {
         Workbench.page().showView(IPageLayout.ID_PROBLEM_VIEW);
         Workbench.page().activate(editor);
         Workbench.expandTreesStartingWith(editor.getSite().getShell(), "Errors (");
+        // the editor is active again once the workbench has handled its activation (its current viewer set then)
+        Workbench.waitUntil("the editor's tree, the editor active again", () -> editor.getViewer() != null);
         TreeViewer viewer = (TreeViewer) editor.getViewer();
         viewer.expandToLevel(root, 2);
         editor.setSelectionToViewer(List.of(root.getLayers().get(1).getModules().get(1)));
