@@ -126,6 +126,14 @@ final class CppJobCheck {
 
     /** As {@link #run(Architecture, Path, String, String...)}, the program run for {@code runMs} milliseconds. */
     static Run run(Architecture arch, Path project, String what, long runMs, String... monitorOptions) throws Exception {
+        return run(arch, project, what, runMs, true, monitorOptions);
+    }
+
+    /**
+     * As {@link #run(Architecture, Path, String, long, String...)}; without {@code holdToBounds}, each release's check
+     * against its bound with the platform's loss is reported, not asserted (the caller asserts what its run shows).
+     */
+    static Run run(Architecture arch, Path project, String what, long runMs, boolean holdToBounds, String... monitorOptions) throws Exception {
         Path exe = Tools.cmakeBuild(project, CppExamplesTest.executableName(project));
         String output;
         OtherRealtime.Use others;
@@ -221,8 +229,13 @@ final class CppJobCheck {
                             + allowance.explain(c.label()));
                 }
             }
-            assertTrue(contradictions.isEmpty(), what + " contradicts the timing analysis:\n  " + String.join("\n  ", contradictions)
-                    + "\n  " + allowance + "\n" + Tools.last(output, 3000));
+            if (holdToBounds) {
+                assertTrue(contradictions.isEmpty(), what + " contradicts the timing analysis:\n  " + String.join("\n  ", contradictions)
+                        + "\n  " + allowance + "\n" + Tools.last(output, 3000));
+            } else if (!contradictions.isEmpty()) {
+                System.out.println("JobTimingTest " + what + ": past the bound with the platform's loss (reported, not asserted here): "
+                        + contradictions);
+            }
         }
         if (!unchecked.isEmpty()) {
             System.out.println("JobTimingTest " + what + ": not scheduled as analysed on this machine: " + unchecked
