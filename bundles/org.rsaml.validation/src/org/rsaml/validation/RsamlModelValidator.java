@@ -9,10 +9,12 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CancellationException;
 
 import org.eclipse.emf.common.util.BasicDiagnostic;
 import org.eclipse.emf.common.util.Diagnostic;
 import org.eclipse.emf.common.util.DiagnosticChain;
+import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EDataType;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EStructuralFeature;
@@ -28,6 +30,7 @@ import org.rsaml.analysis.plan.UnplannableException;
 import org.rsaml.model.Architecture;
 import org.rsaml.model.RsamlPackage;
 import org.rsaml.model.resource.SourceLocation;
+import org.rsaml.model.support.Interruptions;
 import org.rsaml.model.support.RsamlLabels;
 import org.rsaml.validation.internal.OclRules;
 import org.rsaml.validation.internal.RuleEValidator;
@@ -192,6 +195,23 @@ public final class RsamlModelValidator {
                     return true;
                 }
                 return super.validate(eDataType, value, diagnostics, context);
+            }
+
+            /** A command stopped (its thread interrupted) ends its validation here, before each element. */
+            @Override
+            public boolean validate(EClass eClass, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {
+                Interruptions.check();
+                return super.validate(eClass, eObject, diagnostics, context);
+            }
+
+            /** EMF reports what a check of an element throws as that element's error; a stopped command ends instead. */
+            @Override
+            protected boolean handleThrowable(EClass eClass, EObject eObject, DiagnosticChain diagnostics,
+                    Map<Object, Object> context, Throwable throwable) {
+                if (throwable instanceof CancellationException stopped) {
+                    throw stopped;
+                }
+                return super.handleThrowable(eClass, eObject, diagnostics, context, throwable);
             }
         };
         Map<Object, Object> context = diagnostician.createDefaultContext();

@@ -20,6 +20,7 @@ import java.util.Map;
 import java.util.stream.Stream;
 
 import org.rsaml.generator.GenerationException;
+import org.rsaml.model.support.Interruptions;
 
 /**
  * Changes an output directory all at once or not at all: the new files are written into a temporary directory beside
@@ -69,6 +70,7 @@ final class DirectoryTransaction {
                 Files.createDirectories(p.getParent());
                 Files.write(p, e.getValue());
             }
+            Interruptions.checkWrite(); // a command stopped while it wrote: the output directory stays as it was
             if (!Files.exists(dir)) {
                 moveDirectory(staged, dir);
                 return;

@@ -23,6 +23,7 @@ import org.eclipse.emf.ecore.xmi.UnresolvedReferenceException;
 import org.eclipse.emf.ecore.xmi.XMIException;
 import org.eclipse.emf.ecore.xmi.XMLHelper;
 import org.eclipse.emf.ecore.xmi.impl.SAXXMIHandler;
+import org.rsaml.model.support.Interruptions;
 import org.xml.sax.Attributes;
 import org.xml.sax.SAXException;
 import org.xml.sax.ext.Locator2;
@@ -133,6 +134,7 @@ final class LocatingHandler extends SAXXMIHandler {
                     + " levels deep here; RsaML reads models up to that depth", getLocation(), tagLine, tagColumn));
             throw new SAXException("nested too deep");
         }
+        Interruptions.check();
         if ((++elements & 0xfff) == 0 && HeapWatch.nearlyExhausted()) {
             // Give up now, as the JVM would later, instead of letting the collector thrash for minutes first.
             throw new OutOfMemoryError("the heap is nearly full right after a collection");
@@ -359,6 +361,8 @@ final class LocatingHandler extends SAXXMIHandler {
 
     @Override
     public void error(XMIException e) {
+        // EMF reports a reference it failed to resolve here and goes on with the next: a stopped command ends instead.
+        Interruptions.check();
         if (e instanceof ClassNotFoundException c && c.getFactory() == null && unknownNamespace) {
             return;
         }

@@ -23,6 +23,7 @@ import org.eclipse.emf.ecore.xmi.XMLResource;
 import org.eclipse.emf.ecore.xmi.XMLSave;
 import org.eclipse.emf.ecore.xmi.impl.XMILoadImpl;
 import org.rsaml.model.Architecture;
+import org.rsaml.model.support.Interruptions;
 import org.rsaml.model.util.RsamlResourceImpl;
 import org.xml.sax.helpers.DefaultHandler;
 
@@ -257,6 +258,7 @@ public class RsamlResource extends RsamlResourceImpl implements LocatingResource
 
     @Override
     protected EObject getEObject(List<String> uriFragmentPath) {
+        Interruptions.check();
         int size = uriFragmentPath.size();
         EObject eObject = getEObjectForURIFragmentRootSegment(size == 0 ? "" : uriFragmentPath.get(0));
         for (int i = 1; i < size && eObject != null; ++i) {

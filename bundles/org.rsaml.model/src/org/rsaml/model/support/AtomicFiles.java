@@ -54,6 +54,7 @@ public final class AtomicFiles {
      * @throws FileSystemException with the reason {@code it is a directory} when a directory is where the file goes
      */
     public static void write(Path file, Content content) throws IOException {
+        Interruptions.checkWrite();
         Path target = file.toAbsolutePath();
         Files.createDirectories(target.getParent());
         target = throughLinks(target);
@@ -87,6 +88,7 @@ public final class AtomicFiles {
             if (permissions != null) {
                 Files.setPosixFilePermissions(temp, permissions);
             }
+            Interruptions.checkWrite(); // a command stopped while it wrote: the old file stays
             try {
                 Files.move(temp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {

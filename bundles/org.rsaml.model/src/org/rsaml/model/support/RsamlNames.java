@@ -143,6 +143,7 @@ public final class RsamlNames {
          * @param affixes alternating prefix and suffix strings; {@code ""} for none
          */
         public String allocate(String preferred, String... affixes) {
+            Interruptions.check(); // one name per element of an architecture-wide table: a stopped command ends here
             String[] pairs = affixes.length == 0 || (affixes.length == 1 && affixes[0].isEmpty()) ? new String[] { "", "" } : affixes;
             if (pairs.length % 2 != 0) {
                 pairs = java.util.Arrays.copyOf(pairs, pairs.length + 1);

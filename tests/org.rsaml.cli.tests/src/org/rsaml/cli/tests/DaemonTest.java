@@ -18,12 +18,15 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.cli.daemon.Server;
+import org.rsaml.tests.support.ChainModels;
 
 /**
  * The resident process ({@code RSAML_DAEMON=1}, {@code rsaml daemon start|stop|status}), through the launcher as users
@@ -159,6 +162,101 @@ class DaemonTest {
                 assertEquals(List.of(), files.toList(), "nothing written into the folder, no resident process started");
             }
         });
+    }
+
+    /**
+     * A command whose client goes away while it runs (the client killed, or stopped by Ctrl-C's signal) is stopped: the
+     * resident process stops working on it within a moment, writes none of its report files, and serves the next command
+     * as a JVM of its own would.
+     */
+    @Test
+    void aCommandWhoseClientGoesAwayIsStoppedAndTheProcessServesTheNext(@TempDir Path dir) throws Exception {
+        withResident(dir, true, (runtime, work) -> {
+            // Some 35 MB: seconds of reading and validating, also in a resident process with its code compiled.
+            ChainModels.write(work.resolve("chain.rsaml"), 100_000, false);
+            long pid = pid(launcher(runtime, work, false, "daemon", "status"));
+            int served = served(runtime, work);
+            Path log = runtime.resolve("rsaml").resolve(socketName(runtime) + ".log");
+            int stopped = 0;
+            for (String signal : List.of("KILL", "INT")) {
+                List<String> command = new ArrayList<>(List.of("env", "-u", "RSAML_DAEMON", "XDG_RUNTIME_DIR=" + runtime,
+                        "RSAML_DAEMON=1", Cli.ROOT.resolve("rsaml").toString(), "validate", "--output", "json=reports/chain.json",
+                        "chain.rsaml"));
+                Process launcher = new ProcessBuilder(command).directory(work.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                        .redirectError(ProcessBuilder.Redirect.DISCARD).start();
+                try {
+                    ProcessHandle client = awaitClient(launcher);
+                    // The resident process is at work on the command: a second of its CPU since the command was sent.
+                    long cpu = cpu(pid);
+                    for (int i = 0; i < 600 && cpu(pid) < cpu + 1_000; i++) {
+                        assertTrue(launcher.isAlive(), "the command ended before its client could be stopped: make the model larger");
+                        Thread.sleep(50);
+                    }
+                    Process kill = new ProcessBuilder("kill", "-" + signal, Long.toString(client.pid())).start();
+                    assertEquals(0, kill.waitFor());
+                    assertTrue(launcher.waitFor(30, TimeUnit.SECONDS), "the launcher ends with its client");
+                } finally {
+                    launcher.destroyForcibly();
+                }
+                stopped++;
+                String text = "";
+                for (int i = 0; i < 100 && count(text, "after its client went away") < stopped; i++) {
+                    Thread.sleep(100);
+                    text = Files.readString(log);
+                }
+                String said = text;
+                Matcher m = Pattern.compile("command (\\d+) stopped (\\d+) ms after its client went away").matcher(said);
+                long ms = -1;
+                while (m.find()) {
+                    ms = Long.parseLong(m.group(2));
+                }
+                assertEquals(stopped, count(said, "after its client went away"), () -> "SIG" + signal + ": " + said);
+                assertTrue(ms >= 0 && ms < Server.STOPPING.toMillis(), () -> "SIG" + signal + ": " + said);
+                assertTrue(ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false), () -> "the process goes on: " + said);
+                // Nothing of the stopped command's: no report, no temporary file beside one.
+                assertEquals(Map.of(), takeFiles(work), "SIG" + signal);
+                // Idle again: no more CPU spent on a command that nobody waits for.
+                long idle = cpu(pid);
+                Thread.sleep(1000);
+                assertTrue(cpu(pid) - idle < 300, () -> "SIG" + signal + ": the process still works: " + said);
+            }
+            Files.delete(work.resolve("chain.rsaml"));
+            // The next command: served by the same process, as a JVM of its own runs it.
+            Cli.Result own = launcher(runtime, work, false, "validate", "--format", "json", "exp2-defects.rsaml");
+            Cli.Result next = launcher(runtime, work, true, "validate", "--format", "json", "exp2-defects.rsaml");
+            assertEquals(own.toString(), next.toString());
+            assertEquals(served + 3, served(runtime, work), "the two stopped commands and the next, all by one process");
+            assertEquals(pid, pid(launcher(runtime, work, false, "daemon", "status")));
+        });
+    }
+
+    /** The client's JVM, once the launcher has started it. */
+    private static ProcessHandle awaitClient(Process launcher) throws InterruptedException {
+        for (int i = 0; i < 600; i++) {
+            var client = launcher.descendants().filter(p -> p.info().commandLine().orElse("").contains("org.rsaml.cli.daemon.Client"))
+                    .findFirst();
+            if (client.isPresent()) {
+                return client.get();
+            }
+            assertTrue(launcher.isAlive(), "the launcher ended before its client started");
+            Thread.sleep(50);
+        }
+        throw new AssertionError("the launcher started no client");
+    }
+
+    /** The CPU time (user and system) of process {@code pid} so far, in milliseconds. */
+    private static long cpu(long pid) throws IOException {
+        String[] fields = Files.readString(Path.of("/proc", Long.toString(pid), "stat")).replaceFirst(".*\\) ", "").split(" ");
+        // After the name: state is field 3 of stat, utime 14 and stime 15, in clock ticks (100 a second on Linux).
+        return (Long.parseLong(fields[11]) + Long.parseLong(fields[12])) * 10;
+    }
+
+    private static int count(String text, String part) {
+        int n = 0;
+        for (int at = text.indexOf(part); at >= 0; at = text.indexOf(part, at + 1)) {
+            n++;
+        }
+        return n;
     }
 
     /** What a test does with a runtime folder and a working directory of models. */

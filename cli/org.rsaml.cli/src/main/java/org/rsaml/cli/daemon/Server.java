@@ -25,7 +25,6 @@ import java.time.Duration;
 import java.time.Instant;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicBoolean;
 
 import org.rsaml.cli.RsamlCli;
 import org.rsaml.report.ExitCodes;
@@ -39,8 +38,11 @@ import org.rsaml.report.ExitCodes;
  *
  * <p>The process listens on a Unix domain socket in a folder of this user's that no one else can enter. It declines
  * the language server (which talks on standard input), answers a command sent with other settings than its own (another
- * jar, a rebuilt one, another JDK, JVM options, locale or umask) by stopping, stops when its client goes away during a
- * command (as a JVM of its own stops on Ctrl-C), and after {@link #IDLE} without a command.
+ * jar, a rebuilt one, another JDK, JVM options, locale or umask) by stopping, and stops after {@link #IDLE} without a
+ * command. A command whose client goes away (killed, Ctrl-C) is stopped, as a JVM of its own would be: its thread is
+ * interrupted, which ends its file input and output at once and which the loader, the validation and the report files
+ * check, so that it writes nothing more; then the process serves the next command. A command not stopped within
+ * {@link #STOPPING} stops the process instead.
  *
  * <p>Usage: {@code Server SOCKET SETTINGS}.
  */
@@ -48,6 +50,9 @@ public final class Server {
 
     /** How long the process waits for a command before it stops. */
     static final Duration IDLE = Duration.ofHours(3);
+
+    /** How long a command whose client went away may take to stop before the process stops instead. */
+    public static final Duration STOPPING = Duration.ofSeconds(2);
 
     private final Path socket;
     private final String settings;
@@ -212,22 +217,39 @@ public final class Server {
             return true;
         }
         frames.send(Client.ACCEPTED, new byte[0]);
-        frames.exit(run(channel, frames, Path.of(strings[1]), args));
+        Command command = new Command(channel, Thread.currentThread());
+        int code = run(command, frames, Path.of(strings[1]), args);
+        if (command.abandoned == null) {
+            frames.exit(code);
+        }
         return true;
     }
 
+    /** One command run for a client: whether it still runs, and when its client went away (null while it is there). */
+    private static final class Command {
+        final SocketChannel channel;
+        final Thread thread;
+        boolean running = true;
+        volatile Instant abandoned;
+
+        Command(SocketChannel channel, Thread thread) {
+            this.channel = channel;
+            this.thread = thread;
+        }
+    }
+
     /** Runs one command line as a JVM of its own would, its output sent as frames. */
-    private int run(SocketChannel channel, Frames frames, Path workingDirectory, String[] args) {
+    private int run(Command command, Frames frames, Path workingDirectory, String[] args) {
+        long number;
         synchronized (this) {
             idleSince = null;
-            commands++;
+            number = ++commands;
         }
         OutputStream out = frames.stream(Client.OUT);
         OutputStream err = frames.stream(Client.ERR);
         PrintStream systemOut = System.out;
         PrintStream systemErr = System.err;
-        AtomicBoolean running = new AtomicBoolean(true);
-        Thread watch = new Thread(() -> stopWhenGone(channel, running), "rsaml client watch");
+        Thread watch = new Thread(() -> stopWhenGone(command, number), "rsaml client watch");
         watch.setDaemon(true);
         PrintWriter outWriter = new PrintWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), true);
         PrintWriter errWriter = new PrintWriter(new OutputStreamWriter(err, StandardCharsets.UTF_8), true);
@@ -249,26 +271,57 @@ public final class Server {
             System.err.flush();
             System.setOut(systemOut);
             System.setErr(systemErr);
-            running.set(false);
+            Instant abandoned;
+            synchronized (command) {
+                command.running = false;
+                abandoned = command.abandoned;
+                command.notifyAll();
+            }
+            // No interrupt comes after this: the next accept must not see one (it would close the listening socket).
+            Thread.interrupted();
+            if (abandoned != null) {
+                log.println("rsaml: command " + number + " stopped " + Duration.between(abandoned, Instant.now()).toMillis()
+                        + " ms after its client went away");
+            }
             synchronized (this) {
                 idleSince = Instant.now();
             }
         }
     }
 
-    /** Stops the process when the client goes away while its command runs (as Ctrl-C stops a JVM of its own). */
-    private void stopWhenGone(SocketChannel channel, AtomicBoolean running) {
+    /**
+     * Stops the command when its client goes away while it runs (as Ctrl-C stops a JVM of its own): interrupts its
+     * thread, and stops the process if the command has not ended within {@link #STOPPING}.
+     */
+    private void stopWhenGone(Command command, long number) {
         ByteBuffer buffer = ByteBuffer.allocate(1);
         try {
-            while (channel.read(buffer) >= 0) {
+            while (command.channel.read(buffer) >= 0) {
                 buffer.clear();
             }
         } catch (IOException e) {
             // closed: the command ended, or the client went away
         }
-        if (running.get()) {
-            log.println("rsaml: resident process stops: its client went away during a command");
-            System.exit(130);
+        synchronized (command) {
+            if (!command.running) {
+                return;
+            }
+            command.abandoned = Instant.now();
+            log.println("rsaml: the client of command " + number + " went away while it ran: the command is stopped");
+            command.thread.interrupt();
+            long deadline = System.nanoTime() + STOPPING.toNanos();
+            try {
+                for (long left = STOPPING.toNanos(); command.running && left > 0; left = deadline - System.nanoTime()) {
+                    command.wait(left / 1_000_000 + 1);
+                }
+            } catch (InterruptedException e) {
+                // not interrupted by anyone: stop as if the time were up
+            }
+            if (command.running) {
+                log.println("rsaml: resident process stops: command " + number + " did not stop within "
+                        + STOPPING.toSeconds() + " s of its client going away");
+                System.exit(130);
+            }
         }
     }
 
