@@ -19,7 +19,6 @@ import org.rsaml.analysis.plan.Reaction;
 import org.rsaml.analysis.plan.Release;
 import org.rsaml.generator.internal.cxx.OneMachineCpus;
 import org.rsaml.model.Architecture;
-import org.rsaml.model.support.RsamlLabels;
 
 /**
  * Runs a generated C++ program as {@link JobTimingTest} does (with {@code --busy-work 100}, for
@@ -30,60 +29,13 @@ import org.rsaml.model.support.RsamlLabels;
  * overrun; and, for the releases scheduled as analysed with a CPU of their own, the worst observed
  * response within its bound computed again with the platform's loss, which the platform monitor,
  * run around the program, measured on every CPU, as {@link PlatformCheck#boundCheck} decides (said on
- * standard output where not).
+ * standard output where not); a CPU of their own as {@link PlatformCheck#notApart} decides.
  */
 final class CppJobCheck {
     private CppJobCheck() {
     }
 
     static final long RUN_MS = 700;
-
-    /**
-     * Null when the release's threads have a CPU to themselves on this machine, as the analysis
-     * assumes: its processor's core has a CPU here and no other thread of the program strays onto it
-     * (the runtime confines the threads without a core to the cores no processor claims), or it has
-     * no core and those unclaimed cores are exactly one. Else why not. The cores of processors on
-     * other hosts have CPUs of their own in the program ({@link OneMachineCpus}).
-     */
-    static String notApart(Architecture arch, org.rsaml.model.Module module) {
-        int cores = Runtime.getRuntime().availableProcessors();
-        Map<org.rsaml.model.Processor, Integer> cpus = OneMachineCpus.of(arch);
-        boolean coreless = false;
-        java.util.Set<String> corelessHosts = new java.util.TreeSet<>();
-        for (org.rsaml.model.Layer layer : arch.getLayers()) {
-            for (org.rsaml.model.Module m : layer.getModules()) {
-                org.rsaml.model.Processor p = processor(arch, m);
-                if (p == null || p.getCore() < 0) {
-                    coreless = true;
-                    corelessHosts.add(RsamlLabels.host(p));
-                } else {
-                    int cpu = cpus.get(p);
-                    if (cpu >= cores) {
-                        return "processor " + p.getName() + "'s core " + p.getCore() + (cpu == p.getCore() ? "" : " (CPU " + cpu + " here)")
-                                + " is not among this machine's " + cores + ", so its threads run anywhere";
-                    }
-                }
-            }
-        }
-        if (corelessHosts.size() > 1) {
-            return "the modules without a core of hosts " + corelessHosts + " share the unclaimed cores";
-        }
-        int unclaimed = cores - new java.util.HashSet<>(cpus.values()).size();
-        org.rsaml.model.Processor p = processor(arch, module);
-        for (org.rsaml.model.Processor q : arch.getProcessors()) {
-            if (q != p && q.isSetSchedPolicy() && q.getSchedPolicy() == org.rsaml.model.SchedulingPolicy.EDF && !q.getModules().isEmpty()) {
-                return "the deadline threads of EDF processor " + q.getName() + " run on every core";
-            }
-        }
-        if (p != null && p.getCore() >= 0) {
-            return coreless && unclaimed == 0 ? "no core is left for the modules without one, so they run on every core" : null;
-        }
-        return unclaimed == 1 ? null : "it has no core of its own and shares " + unclaimed + " cores";
-    }
-
-    private static org.rsaml.model.Processor processor(Architecture arch, org.rsaml.model.Module m) {
-        return arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst().orElse(null);
-    }
 
     /** A bound to check once the run's allowance is known. */
     private record Bounded(String label, org.rsaml.model.Module module, JobSummary summary, long bound) {
@@ -95,7 +47,7 @@ final class CppJobCheck {
         if (bound == null) {
             return;
         }
-        String apart = notApart(arch, module);
+        String apart = PlatformCheck.notApart(arch, module, PlatformCheck.Placement.CPP);
         PlatformCheck.requireRealtime("JobTimingTest", label, s.sched());
         if (!s.asAnalysed() || apart != null) {
             unchecked.add(label + " (" + (apart != null ? apart : s.sched()) + ")");
@@ -201,7 +153,7 @@ final class CppJobCheck {
             Map<org.rsaml.model.Processor, Integer> cpus = OneMachineCpus.of(arch);
             Map<String, Integer> cpuOf = new java.util.HashMap<>();
             for (Bounded c : checks) {
-                org.rsaml.model.Processor p = processor(arch, c.module());
+                org.rsaml.model.Processor p = PlatformCheck.processorOf(arch, c.module());
                 if (p != null && p.getCore() >= 0 && cpus.get(p) < Runtime.getRuntime().availableProcessors()) {
                     cpuOf.put(c.label(), cpus.get(p));
                 }

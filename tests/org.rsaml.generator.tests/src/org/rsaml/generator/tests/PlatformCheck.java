@@ -29,7 +29,13 @@ import org.rsaml.analysis.ProcessorTiming;
 import org.rsaml.analysis.SchedulabilityAnalysis;
 import org.rsaml.analysis.Task;
 import org.rsaml.analysis.TaskResult;
+import org.rsaml.generator.internal.cxx.OneMachineCpus;
+import org.rsaml.model.Architecture;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.Processor;
 import org.rsaml.model.SchedulingPolicy;
+import org.rsaml.model.support.RsamlLabels;
 
 /**
  * What the observed-versus-bound checks of {@link JobTimingTest} (C++) and {@link Ros2LaunchTest}
@@ -979,6 +985,89 @@ final class PlatformCheck {
             return false;
         }
         return true;
+    }
+
+    /** Where a target runs the threads of a processor that the model gives no CPU of its own (docs/timing.md, "Other machines"). */
+    enum Placement {
+        /**
+         * The C++ program: a processor's core pins its threads ({@link OneMachineCpus}); the threads of the modules without
+         * one are kept to the cores no processor claims; every EDF release is left on every core (the kernel admits a
+         * deadline thread only there).
+         */
+        CPP,
+        /**
+         * A ROS 2 launch without host:=: a processor's core pins its processes with taskset ({@link OneMachineCpus}), its
+         * EDF releases included; the processes of the modules without a core are not confined, their threads run on every CPU.
+         */
+        ROS2
+    }
+
+    /** As {@link #notApart(Architecture, Module, Placement, int)} on this machine's CPUs. */
+    static String notApart(Architecture arch, Module module, Placement target) {
+        return notApart(arch, module, target, Runtime.getRuntime().availableProcessors());
+    }
+
+    /**
+     * Null when the threads of {@code module}'s releases and reactions have a CPU to themselves on a machine of
+     * {@code cpus} CPUs under {@code target}, as the analysis of their processor assumes; else why not, for the report of
+     * the releases whose bounds a test leaves unchecked. Not apart: the threads of a processor whose core the machine
+     * lacks run anywhere, so no processor's do; the modules without a core of several hosts share CPUs the analysis counts
+     * apart; the deadline threads of another EDF processor run on every core. A processor with a core (on its CPU
+     * here) is apart unless threads of the modules without one may run there (C++: no core left unclaimed for them; ROS 2:
+     * any). A module without a core is apart when its threads get exactly one CPU that no other processor's use (C++: one
+     * unclaimed core), or, on ROS 2, when its processor is an EDF one, whose deadline threads run on every CPU above every
+     * fixed-priority thread.
+     */
+    static String notApart(Architecture arch, Module module, Placement target, int cpus) {
+        Map<Processor, Integer> cpuOf = OneMachineCpus.of(arch);
+        boolean coreless = false;
+        Set<String> corelessHosts = new java.util.TreeSet<>();
+        for (Layer layer : arch.getLayers()) {
+            for (Module m : layer.getModules()) {
+                Processor p = processorOf(arch, m);
+                if (p == null || p.getCore() < 0) {
+                    coreless = true;
+                    corelessHosts.add(RsamlLabels.host(p).isEmpty() ? "main" : RsamlLabels.host(p));
+                } else {
+                    int cpu = cpuOf.get(p);
+                    if (cpu >= cpus) {
+                        return "processor " + p.getName() + "'s core " + p.getCore() + (cpu == p.getCore() ? "" : " (CPU " + cpu + " here)")
+                                + " is not among this machine's " + cpus + ", so its threads run anywhere";
+                    }
+                }
+            }
+        }
+        if (corelessHosts.size() > 1) {
+            return "the modules without a core of hosts " + corelessHosts + " share CPUs the analysis counts apart";
+        }
+        Processor p = processorOf(arch, module);
+        boolean edf = p != null && p.isSetSchedPolicy() && p.getSchedPolicy() == SchedulingPolicy.EDF;
+        for (Processor q : arch.getProcessors()) {
+            if (q != p && q.isSetSchedPolicy() && q.getSchedPolicy() == SchedulingPolicy.EDF && !q.getModules().isEmpty()
+                    && (target == Placement.CPP || q.getCore() < 0)) {
+                return "the deadline threads of EDF processor " + q.getName() + " run on every core";
+            }
+        }
+        int unclaimed = cpus - new HashSet<>(cpuOf.values()).size();
+        if (p != null && p.getCore() >= 0) {
+            if (target == Placement.ROS2) {
+                return coreless ? "the threads of the modules without a core run on every CPU on ROS 2, this one's included" : null;
+            }
+            return coreless && unclaimed == 0 ? "no core is left for the modules without one, so they run on every core" : null;
+        }
+        if (target == Placement.ROS2) {
+            if (edf) {
+                return null;
+            }
+            return cpus == 1 && cpuOf.isEmpty() ? null : "it has no core of its own: on ROS 2 its threads run on every CPU (" + cpus + ")"
+                    + (cpuOf.isEmpty() ? "" : ", the pinned processors' included");
+        }
+        return unclaimed == 1 ? null : "it has no core of its own and shares " + unclaimed + " cores";
+    }
+
+    /** The processor that runs {@code m}, or null (the modules no processor names). */
+    static Processor processorOf(Architecture arch, Module m) {
+        return arch.getProcessors().stream().filter(q -> q.getModules().contains(m)).findFirst().orElse(null);
     }
 
     private static final AtomicBoolean SAID = new AtomicBoolean();

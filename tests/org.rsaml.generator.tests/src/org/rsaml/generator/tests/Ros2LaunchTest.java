@@ -49,7 +49,9 @@ import org.rsaml.validation.ModelLoader;
  * doubled in config/&lt;pkg&gt;.params.yaml before the build), with no job skipped (judged by the nodes' own release times); messages arrive
  * at every connected entry port at the rate their publisher is released; every node reports the
  * timing analysis's bound of each release (written into it by the generator); where the system
- * grants real-time priorities, the run does not contradict the analysis ({@link #contradictions}): no
+ * grants real-time priorities, to the releases whose threads have a CPU to themselves as the launch places them
+ * ({@link PlatformCheck#notApart}; the others are reported with the reason), the run does not contradict the analysis
+ * ({@link #contradictions}): no
  * release of a task the analysis says meets its deadline is dropped by ROS 2's timer unless the late call
  * that made the timer drop it is within the task's bound with the platform's loss, and each release's
  * worst observed response (release to completion,
@@ -416,7 +418,7 @@ class Ros2LaunchTest {
                 unchecked.add(r.label() + " (EDF on ROS 2 with a deadline shorter than its period: its bound not claimed there)");
                 continue;
             }
-            if (PlatformCheck.scheduledAsAnalysed("Ros2LaunchTest " + name, r.label(), o, unchecked)) {
+            if (PlatformCheck.scheduledAsAnalysed("Ros2LaunchTest " + name, r.label(), o, unchecked) && apart(arch, r.module().module(), r.label(), unchecked)) {
                 checked.add(r);
             }
         }
@@ -428,7 +430,7 @@ class Ros2LaunchTest {
             if (o == null || bounds.getOrDefault(x.label(), -1L) < 0) {
                 continue;
             }
-            if (PlatformCheck.scheduledAsAnalysed("Ros2LaunchTest " + name, x.label(), o, unchecked)) {
+            if (PlatformCheck.scheduledAsAnalysed("Ros2LaunchTest " + name, x.label(), o, unchecked) && apart(arch, x.module().module(), x.label(), unchecked)) {
                 reacting.add(x);
             }
         }
@@ -509,6 +511,19 @@ class Ros2LaunchTest {
         }
         System.out.print(report);
         return out;
+    }
+
+    /**
+     * Whether the threads of {@code module} have a CPU to themselves on this machine as the launch places them
+     * ({@link PlatformCheck#notApart}); where not, {@code label} is noted in {@code unchecked} with the reason: its bound
+     * is not the analysis's claim there, and it is reported, not held.
+     */
+    static boolean apart(Architecture arch, org.rsaml.model.Module module, String label, List<String> unchecked) {
+        String why = PlatformCheck.notApart(arch, module, PlatformCheck.Placement.ROS2);
+        if (why != null) {
+            unchecked.add(label + " (" + why + ")");
+        }
+        return why == null;
     }
 
     /**
@@ -598,7 +613,7 @@ class Ros2LaunchTest {
         }
         for (long[] call : x.lateCalls()) {
             PlatformCheck.JobCheck late = allowance.at(label, call[0], call[1]);
-            String how = "the release before them called late: " + late.describe(allowance.platform().fromNs()).replaceFirst(", response ", ", called after ");
+            String how = "the release before them called late: " + lateCall(late, allowance);
             if (late.contradicts()) {
                 found.add(said + "; " + how);
                 return;
@@ -608,7 +623,12 @@ class Ros2LaunchTest {
                 .max(java.util.Comparator.comparingLong(PlatformCheck.JobCheck::responseNs)).orElseThrow();
         report.append("  ").append(label).append(": ").append(x.dropped()).append(" releases dropped by ROS 2's timer after ")
                 .append(x.lateCalls().size()).append(" late calls, each within the bound with the platform as measured; the latest: ")
-                .append(latest.describe(allowance.platform().fromNs()).replaceFirst(", response ", ", called after ")).append('\n');
+                .append(lateCall(latest, allowance)).append('\n');
+    }
+
+    /** A late call held to the task's bound, said as a call: its latency from the release where a job's check says its response. */
+    private static String lateCall(PlatformCheck.JobCheck call, PlatformCheck.Allowance allowance) {
+        return call.describe(allowance.platform().fromNs()).replaceFirst(", response ", ", called after ");
     }
 
     /**
