@@ -252,7 +252,7 @@ class Ros2LaunchTest {
         Map<String, String> nodes = Ros2Test.nodes(src);
         Path log = tmp.resolve("launch.log");
         int domain = 1 + (int) (ProcessHandle.current().pid() % 100);
-        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + pkg + ".launch.py simulated_load:=" + LOAD + remaps, install))
+        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash(Ros2Jazzy.launch(pkg + " " + pkg + ".launch.py simulated_load:=" + LOAD + remaps), install))
                 .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         Ros2Jazzy.isolate(pb.environment(), domain);
         OtherRealtime.Watch watch = new OtherRealtime.Watch();

@@ -61,7 +61,7 @@ class Ros2LifecycleLaunchTest {
         for (String file : List.of(pkg + ".launch.py", pkg + "_processes.launch.py")) {
             long started = System.nanoTime();
             Path log = tmp.resolve(file + ".log");
-            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec ros2 launch " + pkg + " " + file, install))
+            ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash(Ros2Jazzy.launch(pkg + " " + file), install))
                     .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
             Ros2Jazzy.isolate(pb.environment(), DOMAIN);
             Process launch = pb.start();
