@@ -11,6 +11,7 @@
 
 #include "rsaml/internal.hpp"
 #include "rsaml/jobs.hpp"
+#include "rsaml/module.hpp"
 #include "rsaml/system.hpp"
 #include "rsaml/trace.hpp"
 
@@ -26,8 +27,7 @@ namespace {
 void record_job(JobStats& s, const std::string& label, const JobBounds& bounds, Clock::time_point from,
                 Clock::time_point done, Nanos cpu, Nanos stall, const std::array<std::int64_t, 3>* detail = nullptr) {
   if (s.jobs++ == 0) {
-    s.first_release = from;
-    s.listed.reserve(rsaml_jobs::LISTED);
+    s.first_release = from;  // listed's and details' room taken when the release was made (System::every, System::reactions)
   }
   s.last_release = from;
   const Nanos response = std::chrono::duration_cast<Nanos>(done - from);
@@ -117,6 +117,13 @@ void System::print_summary() {
   }
   for (auto& reactions : reactions_) {
     summary(start_, reactions->label, reactions->stats, reactions->bounds, reactions->sched);
+  }
+  for (Module* module : modules_) {
+    const std::uint64_t dropped = module->mail_dropped();
+    if (dropped > 0) {
+      Trace::closing("mailbox " + module->name() + " dropped " + std::to_string(dropped) + " messages in all: its " +
+                     std::to_string(MAILBOX_SLOTS) + " slots were taken, its worker behind the senders");
+    }
   }
   Trace::closing_dropped();
 }

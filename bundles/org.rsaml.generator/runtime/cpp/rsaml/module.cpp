@@ -88,15 +88,9 @@ Module::Module(System& system, std::string name, int core, std::string host, int
 
 Module::~Module() { stop_worker(); }
 
-void Module::post(std::uint64_t wave, std::function<void()> work) {
-  {
-    std::lock_guard<MailLock> lock(mail_mutex_);
-    if (stopping_) {
-      return;
-    }
-    mail_.push_back(Mail{wave, Clock::now(), std::move(work)});
-  }
-  mail_mutex_.notify();
+std::uint64_t Module::mail_dropped() {
+  std::lock_guard<MailLock> lock(mail_mutex_);
+  return mail_dropped_;
 }
 
 void Module::start_worker() {
@@ -125,26 +119,53 @@ void Module::run_worker() {
   }
   for (;;) {
     Mail mail;
+    std::size_t slot;
+    std::uint64_t dropped;
+    std::uint64_t unsaid;
     {
       std::lock_guard<MailLock> lock(mail_mutex_);
-      while (!stopping_ && mail_.empty()) {
+      while (!stopping_ && mail_count_ == 0) {
         mail_mutex_.wait();
       }
       if (stopping_) {
         return;
       }
-      mail = std::move(mail_.front());
-      mail_.pop_front();
+      slot = mail_head_;  // the message keeps its slot (and its data its port's) until it is handled
+      mail = mail_[slot];
+      dropped = mail_dropped_;
+      unsaid = dropped - mail_said_;
+      mail_said_ = dropped;
     }
-    // A reaction's job is released by the arrival of the data that starts it.
-    Activation activation(*this, mail.wave, false, mail.arrived);
-    mail.work();
+    if (unsaid > 0) {
+      // said here, by the worker (of the default priority when its reactions are aperiodic), never by a sender
+      Trace::report("mailbox " + name_ + " dropped " + std::to_string(unsaid) + " messages: its " + std::to_string(MAILBOX_SLOTS) +
+                    " slots were taken (" + std::to_string(dropped) + " in all)");
+    }
+    {
+      // A reaction's job is released by the arrival of the data that starts it.
+      Activation activation(*this, mail.wave, false, mail.arrived);
+      mail.target->receive(slot, mail);
+    }
+    {
+      std::lock_guard<MailLock> lock(mail_mutex_);
+      mail_head_ = (mail_head_ + 1) % MAILBOX_SLOTS;
+      --mail_count_;
+    }
   }
+}
+
+bool Module::first_in_wave(std::uint64_t wave) {
+  std::uint64_t& seen = waves_[wave % WAVES];
+  if (seen == wave) {
+    return false;
+  }
+  seen = wave;
+  return true;
 }
 
 void Module::start_step(std::uint64_t wave) {
   Activation activation(*this, wave, false, Clock::now());
-  waves_.insert(wave);
+  first_in_wave(wave);
   trace("start " + name_);
   on_start();
   publish_outputs();
@@ -155,7 +176,7 @@ Nanos Module::timed_release(const std::string& label, Clock::time_point release,
   Activation activation(*this, system_.new_wave(), true, release);
   const Clock::time_point locked = Clock::now();
   const Nanos cpu = thread_cpu_time();
-  waves_.insert(activation.wave);
+  first_in_wave(activation.wave);
   trace("release " + label);
   if (busy.count() > 0) {
     consume(busy);
@@ -184,11 +205,8 @@ void Module::run_action(const char* label, Nanos offset, const std::function<voi
 bool Module::begin_reaction(Nanos min_interval) {
   Activation* activation = Activation::current();
   if (activation) {
-    if (!waves_.insert(activation->wave).second) {
+    if (!first_in_wave(activation->wave)) {
       return false;
-    }
-    while (waves_.size() > 1024) {
-      waves_.erase(waves_.begin());
     }
   }
   // Arrivals, not the worker's start times, are at least min_interval apart: the sporadic task the

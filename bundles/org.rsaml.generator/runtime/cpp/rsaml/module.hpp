@@ -5,12 +5,12 @@
 // The base of every generated module class: its activations, its worker thread, its reactions.
 #pragma once
 
+#include <array>
 #include <condition_variable>
+#include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <mutex>
-#include <set>
 #include <string>
 #include <thread>
 #include <utility>
@@ -27,6 +27,35 @@ namespace rsaml {
 
 class System;
 class Module;
+class Link;
+class MailTarget;
+
+/**
+ * How many messages a module's mailbox holds: slots made with the module (and, for each entry port, as many values of
+ * its type), filled by the senders and emptied by the module's worker without allocating. A message that finds them
+ * all taken is dropped and counted (docs/timing.md, "Memory between threads").
+ */
+constexpr std::size_t MAILBOX_SLOTS = 64;
+
+/** A message in a module's mailbox: plain values (its data is in its entry port's slot of the same index). */
+struct Mail {
+  MailTarget* target = nullptr;  // the entry port it arrived on
+  std::uint64_t wave = 0;
+  Clock::time_point arrived{};
+  const std::string* from = nullptr;  // the sending port's name
+  std::uint64_t sequence = 0;         // the sending port's count
+  Link* replacing = nullptr;          // the suppressor it was sent by, if any
+};
+
+/** An entry port as its module's mailbox sees it: what the worker calls with a message and its slot. */
+class MailTarget {
+ public:
+  /** On the module's worker, its lock held: handles the message whose data is in the port's slot `slot`. */
+  virtual void receive(std::size_t slot, const Mail& mail) = 0;
+
+ protected:
+  ~MailTarget() = default;
+};
 
 /** A module's reactions and what its worker thread observed of them. */
 struct Reactions {
@@ -139,7 +168,18 @@ class Module {
   int cpu() const { return cpu_; }
 
   // Used by the runtime and the generated code.
-  void post(std::uint64_t wave, std::function<void()> work);
+  /**
+   * Puts a message into the mailbox, for the worker: under the mailbox's lock, calls fill(slot) with the slot it takes
+   * (fill copies the data into its entry port's slot of that index), or, when every slot is taken, drops the message,
+   * counts it and calls fill(MAILBOX_SLOTS) (the port's latest value is still updated). Allocates nothing; the worker
+   * says the drops (a line when it next takes a message, and the summary).
+   */
+  template <class Fill>
+  void post(Mail mail, Fill&& fill);
+  /** The mailbox's lock: also guards the entry ports' latest values, which the senders set and the activations take. */
+  MailLock& mailbox_lock() { return mail_mutex_; }
+  /** Messages dropped so far, every slot of the mailbox taken. */
+  std::uint64_t mail_dropped();
   void start_worker();
   void stop_worker();
   void start_step(std::uint64_t wave);
@@ -193,12 +233,11 @@ class Module {
 
  private:
   friend class Activation;
-  struct Mail {
-    std::uint64_t wave;
-    Clock::time_point arrived;
-    std::function<void()> work;
-  };
   void run_worker();
+  /** Whether the wave is new to the module (then noted): under its lock. */
+  bool first_in_wave(std::uint64_t wave);
+  /** How many waves the module remembers: those of the last WAVES waves of the system (a wave's number modulo WAVES). */
+  static constexpr std::size_t WAVES = 1024;
 
   System& system_;
   std::string name_;
@@ -207,10 +246,16 @@ class Module {
   int cpu_;
   ModuleLock mutex_;
   MailLock mail_mutex_;
-  std::deque<Mail> mail_;
+  // The mailbox: a ring of MAILBOX_SLOTS messages, mail_count_ of them from mail_head_ on (the first, while the worker
+  // handles it, still holds its slot); under mail_mutex_.
+  std::array<Mail, MAILBOX_SLOTS> mail_{};
+  std::size_t mail_head_ = 0;
+  std::size_t mail_count_ = 0;
+  std::uint64_t mail_dropped_ = 0;  // in all
+  std::uint64_t mail_said_ = 0;     // of them, said by the worker
   bool stopping_ = false;
   std::thread worker_;
-  std::set<std::uint64_t> waves_;
+  std::array<std::uint64_t, WAVES> waves_{};  // the waves the module took part in, each at its number modulo WAVES; 0: none
   std::vector<std::function<void()>> latches_;
   int depth_ = 0;
   Clock::time_point last_reaction_{};
@@ -218,5 +263,26 @@ class Module {
   Reactions* reactions_ = nullptr;  // owned by the system; null when not measured
   bool unbounded_data_ = false;  // its worker serves aperiodic reactions at the default priority
 };
+
+template <class Fill>
+void Module::post(Mail mail, Fill&& fill) {
+  {
+    std::lock_guard<MailLock> lock(mail_mutex_);
+    if (stopping_) {
+      return;
+    }
+    if (mail_count_ == MAILBOX_SLOTS) {
+      ++mail_dropped_;
+      fill(MAILBOX_SLOTS);
+      return;
+    }
+    const std::size_t slot = (mail_head_ + mail_count_) % MAILBOX_SLOTS;
+    fill(slot);
+    mail.arrived = Clock::now();
+    mail_[slot] = mail;
+    ++mail_count_;
+  }
+  mail_mutex_.notify();
+}
 
 }  // namespace rsaml

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <mutex>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -100,11 +100,11 @@ class Output {
  * the timing analysis assumes); the handler runs on the owning module's thread.
  */
 template <class T>
-class Input {
+class Input final : public MailTarget {
  public:
   using Handler = std::function<void(const T&)>;
   Input(Module& owner, const std::string& port, Handler handler)
-      : owner_(owner), name_(owner.name() + "." + port), handler_(std::move(handler)) {
+      : owner_(owner), name_(owner.name() + "." + port), handler_(std::move(handler)), slots_(new T[MAILBOX_SLOTS]()) {
     owner_.add_input([this] { latch(); });
   }
   Input(const Input&) = delete;
@@ -126,26 +126,41 @@ class Input {
     return nullptr;
   }
 
+  /**
+   * On the sender's thread: the data becomes the port's latest value, and a message for the owner's worker, copied
+   * (assigned) into the port's slot of the mailbox slot it takes, both under the owner's mailbox lock. Nothing is
+   * allocated here but what T's copy assignment allocates, and nothing the worker allocated is freed here.
+   */
   void deliver(const T& data, const std::string* from, std::uint64_t sequence, std::uint64_t wave, Link* replacing) {
-    {
-      std::lock_guard<std::mutex> lock(pending_mutex_);
+    Mail mail;
+    mail.target = this;
+    mail.wave = wave;
+    mail.from = from;
+    mail.sequence = sequence;
+    mail.replacing = replacing;
+    owner_.post(mail, [this, &data](std::size_t slot) {
       pending_ = data;
       fresh_ = true;
-    }
-    owner_.post(wave, [this, data, from, sequence, replacing] {
-      ++received_;
-      if (Trace::enabled()) {
-        Trace::line("recv " + name_ + " <- " + *from + " #" + std::to_string(sequence) +
-                    (replacing ? " by " + replacing->name() : std::string()));
+      if (slot < MAILBOX_SLOTS) {
+        slots_[slot] = data;
       }
-      handler_(data);
     });
+  }
+
+  /** On the owner's worker: the message's data, in its slot, to the handler (not copied). */
+  void receive(std::size_t slot, const Mail& mail) override {
+    ++received_;
+    if (Trace::enabled()) {
+      Trace::line("recv " + name_ + " <- " + *mail.from + " #" + std::to_string(mail.sequence) +
+                  (mail.replacing ? " by " + mail.replacing->name() : std::string()));
+    }
+    handler_(slots_[slot]);
   }
 
  private:
   /** Called with the owner's lock held, when one of its activations starts. */
   void latch() {
-    std::lock_guard<std::mutex> lock(pending_mutex_);
+    std::lock_guard<MailLock> lock(owner_.mailbox_lock());
     if (fresh_) {
       value_ = pending_;
       fresh_ = false;
@@ -156,9 +171,9 @@ class Input {
   std::string name_;
   Handler handler_;
   std::vector<Link*> suppressors_;
+  std::unique_ptr<T[]> slots_;  // MAILBOX_SLOTS values, made with the port: a message's data, at its mailbox slot's index
   T value_{};
-  std::mutex pending_mutex_;
-  T pending_{};
+  T pending_{};  // the latest value sent, under the owner's mailbox lock
   bool fresh_ = false;
   std::uint64_t received_ = 0;
 };

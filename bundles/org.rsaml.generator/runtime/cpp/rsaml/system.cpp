@@ -13,6 +13,7 @@
 #endif
 
 #include "rsaml/internal.hpp"
+#include "rsaml/jobs.hpp"
 #include "rsaml/trace.hpp"
 
 namespace rsaml {
@@ -24,6 +25,13 @@ namespace {
 volatile std::sig_atomic_t interrupted = 0;
 
 void on_signal(int) { interrupted = 1; }
+
+// The room of the jobs a release (or reactions) may list, taken here, by the thread that makes the system and frees it:
+// the thread that measures the jobs, real-time or not, never allocates it (docs/timing.md, "Memory between threads").
+void reserve(JobStats& stats) {
+  stats.listed.reserve(rsaml_jobs::LISTED);
+  stats.details.reserve(rsaml_jobs::LISTED);
+}
 
 }  // namespace
 
@@ -51,11 +59,13 @@ void System::every(Module& module, std::string label, Nanos period, Nanos offset
   release->rank = rank;
   release->bounds = bounds;
   release->body = std::move(body);
+  reserve(release->stats);
   releases_.push_back(std::move(release));
 }
 
 Reactions& System::reactions(Module& module, std::string label, JobBounds bounds) {
   reactions_.push_back(std::unique_ptr<Reactions>(new Reactions{&module, std::move(label), bounds, std::string(), JobStats()}));
+  reserve(reactions_.back()->stats);
   return *reactions_.back();
 }
 

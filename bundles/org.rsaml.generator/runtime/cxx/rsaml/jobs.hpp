@@ -41,7 +41,8 @@ constexpr std::size_t LISTED = 1024;
  * and each job whose response exceeds the analysis's plain bound `bound_ns` (negative: none; a job
  * within it needs no allowance), counted in `over_bound` and listed in `listed`, the first LISTED - 1
  * of them and, in the last place, the worst of the rest, so that the worst is always listed. The
- * caller holds its statistics' lock, and reserves `listed`'s room (LISTED) at its first job. Plain
+ * caller holds its statistics' lock, and reserves `listed`'s room (LISTED) before its first job
+ * (the C++ runtime when it makes the release, on the thread that frees it). Plain
  * types only, so that each runtime keeps them in its own statistics.
  */
 inline void record_instant(std::int64_t release_ns, std::int64_t done_ns, std::int64_t bound_ns, Instant& worst, std::uint64_t& over_bound,

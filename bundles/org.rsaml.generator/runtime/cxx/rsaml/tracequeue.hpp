@@ -3,14 +3,17 @@
  * SPDX-License-Identifier: EPL-2.0
  */
 // The trace's way to standard output, shared by the C++ runtime and the ROS 2 nodes (docs/timing.md,
-// "The trace"): a thread that traces, a real-time release included, only stamps its line and appends
-// it to a bounded queue, under a lock held for that alone (with priority inheritance where POSIX
-// threads offer it); a writer thread of the default priority writes the queue out. A slow or full
-// pipe then stalls the writer only, never a release or a thread that waits for a lock a release
-// holds. A line that finds the queue full is dropped and counted, and the writer says how many in a
-// line of its own; flush() waits until every line queued so far is written. Internal linkage, so
-// that two generated libraries in one process (ROS 2 components) never mix their copies: each
-// runtime keeps one TraceQueue, in one source file.
+// "The trace"): a thread that traces, a real-time release included, only stamps its line and copies
+// it into a bounded ring of bytes, under a lock held for that alone (with priority inheritance where
+// POSIX threads offer it); a writer thread of the default priority writes the ring out. A slow or
+// full pipe then stalls the writer only, never a release or a thread that waits for a lock a release
+// holds. The ring is part of the queue (static storage, as each runtime keeps its queue): no line
+// takes heap memory, and the writer frees nothing a thread that traces allocated, so that no
+// real-time thread shares the allocator's locks with it (docs/timing.md, "Memory between threads").
+// A line that finds the ring full is dropped and counted, and the writer says how many in a line
+// of its own; flush() waits until every line queued so far is written. Internal linkage, so that
+// two generated libraries in one process (ROS 2 components) never mix their copies: each runtime
+// keeps one TraceQueue, in one source file, as a function's static.
 #pragma once
 
 #include <atomic>
@@ -18,10 +21,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <thread>
-#include <utility>
-#include <vector>
 
 #include "rsaml/realtime.hpp"
 
@@ -40,10 +42,15 @@ namespace {
 /** How many lines the queue holds: about 4 s of a busy program's trace, 8 s of stalled output at 1 000 lines a second. */
 constexpr std::size_t QUEUE_LINES = 8192;
 
+/** How many bytes the queue's lines take at most (1 MiB, 128 a line on average), stamps and newlines included. */
+constexpr std::size_t QUEUE_BYTES = QUEUE_LINES * 128;
+
+/** The longest line queued: a longer one is cut there (no line of the runtimes comes near). */
+constexpr std::size_t LINE_BYTES = 16384;
+
 class TraceQueue {
  public:
   TraceQueue() {
-    lines_.resize(QUEUE_LINES);
 #if defined(__unix__) || defined(__APPLE__)
     rsaml_realtime::init_inheriting_mutex(&mutex_, false);  // where priority inheritance is refused, a plain mutex
     pthread_cond_init(&wake_, nullptr);
@@ -113,30 +120,45 @@ class TraceQueue {
 
  private:
   void append(const std::string& text, bool waiting) {
+    const std::size_t length = text.size() < LINE_BYTES ? text.size() : LINE_BYTES;
     lock();
-    while (waiting && count_ >= QUEUE_LINES) {
+    const bool was_empty = lines_ == 0 && dropped_ == said_dropped_;  // else the writer is awake, or woken already
+    for (;;) {
+      // stamped under the lock: the queue's order is the stamps' order
+      const auto now = std::chrono::steady_clock::now();
+      char stamp[40];
+      const int printed = std::snprintf(stamp, sizeof stamp, "[%10.3f ms] ", since_start(now));
+      const std::size_t stamp_length = printed > 0 ? static_cast<std::size_t>(printed) : 0;
+      const std::size_t need = stamp_length + length + 1;
+      if (lines_ < QUEUE_LINES && used_ + need <= QUEUE_BYTES) {
+        // copied into the ring, behind the lines the writer may be writing out now (it owns [head_, head_ + used_))
+        copy_in(stamp, stamp_length);
+        copy_in(text.data(), length);
+        copy_in("\n", 1);
+        ++lines_;
+        ++queued_;
+        break;
+      }
+      if (!waiting) {
+        ++dropped_;
+        last_drop_ = now;
+        break;
+      }
       wait(written_);
-    }
-    // stamped under the lock: the queue's order is the stamps' order
-    const auto now = std::chrono::steady_clock::now();
-    char stamp[40];
-    const int stamp_length = std::snprintf(stamp, sizeof stamp, "[%10.3f ms] ", since_start(now));
-    const bool was_empty = count_ == 0 && dropped_ == said_dropped_;  // else the writer is awake, or woken already
-    if (count_ < QUEUE_LINES) {
-      // into a slot's own storage, which the writer hands back unfreed: no memory allocated (nor freed by the writer,
-      // whose allocator's locks the caller would then share) once the slot has held a line as long
-      std::string& slot = lines_[count_++];
-      slot.assign(stamp, static_cast<std::size_t>(stamp_length > 0 ? stamp_length : 0));
-      slot.append(text);
-      ++queued_;
-    } else {
-      ++dropped_;
-      last_drop_ = now;
     }
     unlock();
     if (was_empty) {
       notify(wake_);
     }
+  }
+
+  /** Appends bytes at the ring's end (the lock held, the room checked). */
+  void copy_in(const char* bytes, std::size_t length) {
+    const std::size_t at = static_cast<std::size_t>((head_ + used_) % QUEUE_BYTES);
+    const std::size_t first = length < QUEUE_BYTES - at ? length : QUEUE_BYTES - at;
+    std::memcpy(ring_ + at, bytes, first);
+    std::memcpy(ring_, bytes + first, length - first);
+    used_ += length;
   }
 
   double since_start(std::chrono::steady_clock::time_point at) const {
@@ -155,43 +177,47 @@ class TraceQueue {
       pthread_setaffinity_np(pthread_self(), sizeof all, &all);
     }
 #endif
-    std::vector<std::string> batch(QUEUE_LINES);
     for (;;) {
       lock();
-      while (count_ == 0 && dropped_ == said_dropped_ && !stopping_) {
+      while (lines_ == 0 && dropped_ == said_dropped_ && !stopping_) {
         wait(wake_);
       }
       const bool last = stopping_;
-      batch.swap(lines_);
-      const std::size_t count = count_;
-      count_ = 0;
-      // Dropped while the queue was full, so after every line of the batch and before any line queued from now on.
+      // The lines queued so far, [head_, head_ + bytes): the threads that trace append behind them, never into them,
+      // until they are written and handed back below.
+      const std::uint64_t head = head_;
+      const std::size_t bytes = used_;
+      const std::size_t count = lines_;
+      // Dropped while the ring was full, so after every line taken now and before any line queued from now on.
       const std::uint64_t dropped = dropped_;
       const std::uint64_t unsaid = dropped - said_dropped_;
       const double dropped_at = since_start(last_drop_);
       unlock();
-      notify(written_);  // room for a waiting post
 #if defined(__unix__) || defined(__APPLE__)
       flockfile(stdout);  // whole lines, among the other writers of the process's standard output
 #endif
-      for (std::size_t i = 0; i < count; ++i) {
-        std::fputs(batch[i].c_str(), stdout);
-        std::fputc('\n', stdout);
-      }
+      const std::size_t at = static_cast<std::size_t>(head % QUEUE_BYTES);
+      const std::size_t first = bytes < QUEUE_BYTES - at ? bytes : QUEUE_BYTES - at;
+      std::fwrite(ring_ + at, 1, first, stdout);
+      std::fwrite(ring_, 1, bytes - first, stdout);
       if (unsaid > 0) {
         std::fprintf(stdout,
-                     "[%10.3f ms] trace dropped %llu lines: its queue of %zu lines was full, standard output not read in time"
-                     " (%llu in all)\n",
-                     dropped_at, static_cast<unsigned long long>(unsaid), QUEUE_LINES, static_cast<unsigned long long>(dropped));
+                     "[%10.3f ms] trace dropped %llu lines: its queue of %zu lines (%zu KiB) was full, standard output not read"
+                     " in time (%llu in all)\n",
+                     dropped_at, static_cast<unsigned long long>(unsaid), QUEUE_LINES, QUEUE_BYTES / 1024,
+                     static_cast<unsigned long long>(dropped));
       }
       std::fflush(stdout);
 #if defined(__unix__) || defined(__APPLE__)
       funlockfile(stdout);
 #endif
       lock();
+      head_ += bytes;  // room again for the threads that trace
+      used_ -= bytes;
+      lines_ -= count;
       written_count_ += count;
       said_dropped_ = dropped;
-      const bool done = last && count_ == 0 && dropped_ == said_dropped_;
+      const bool done = last && lines_ == 0 && dropped_ == said_dropped_;
       unlock();
       notify(written_);
       if (done) {
@@ -219,8 +245,10 @@ class TraceQueue {
 #endif
   std::atomic<std::int64_t> start_ns_{
       std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count()};
-  std::vector<std::string> lines_;  // QUEUE_LINES slots, the first count_ of them queued
-  std::size_t count_ = 0;
+  char ring_[QUEUE_BYTES];            // the lines queued, [head_, head_ + used_) modulo its size, each ending in a newline
+  std::uint64_t head_ = 0;           // where the first line queued starts (counted from the start, not wrapped)
+  std::size_t used_ = 0;             // bytes queued
+  std::size_t lines_ = 0;            // lines queued
   std::chrono::steady_clock::time_point last_drop_;  // the last line dropped
   std::uint64_t queued_ = 0;         // lines queued since the start
   std::uint64_t written_count_ = 0;  // of them, written and flushed

@@ -127,6 +127,46 @@ class CppRuntimeTest {
         }
     }
 
+    /**
+     * No heap memory crosses between a sender and a module's worker of the default priority (docs/timing.md, "Memory
+     * between threads"): resources/cpp-heap/heap_between_threads.cpp, built with the runtime's sources, tags each block
+     * operator new hands out with the thread that allocated it, sends numbers and text (longer than a small-string
+     * buffer) to a module whose worker serves its data at the default priority, paced and then faster than the worker
+     * (the mailbox full), and counts, once every mailbox slot has held a message: the blocks a thread frees that another
+     * allocated (none, traced or not: before the mailbox's slots, each message's closure and queue node, allocated by
+     * the sender and freed by the worker, made thousands) and, without the trace, the blocks the sender allocates (none).
+     */
+    @Test
+    void aSendTakesNoHeapMemoryAcrossThreads(@TempDir Path tmp) throws Exception {
+        List<String> command = new java.util.ArrayList<>(List.of("g++", "-std=c++17", "-O2", "-Wall", "-Wextra", "-Werror", "-pthread",
+                "-I" + runtime(), "-I" + shared(), "-o", tmp.resolve("check").toString()));
+        for (String file : files()) {
+            if (file.endsWith(".cpp")) {
+                command.add(runtime().resolve("rsaml/" + file).toString());
+            }
+        }
+        command.add(Path.of("resources/cpp-heap/heap_between_threads.cpp").toAbsolutePath().toString());
+        Tools.ok(tmp, 300, command.toArray(String[]::new));
+        java.util.regex.Pattern counts = java.util.regex.Pattern
+                .compile("(?m)^sender-allocations (\\d+) crossed-frees (\\d+) handled (\\d+) dropped (\\d+)$");
+        for (String mode : List.of("quiet", "traced")) {
+            String output = Tools.ok(tmp, 120, tmp.resolve("check").toString(), mode);
+            java.util.regex.Matcher m = counts.matcher(output);
+            assertTrue(m.find(), mode + ": the check's counts:\n" + Tools.last(output, 2000));
+            long allocations = Long.parseLong(m.group(1));
+            long crossed = Long.parseLong(m.group(2));
+            long handled = Long.parseLong(m.group(3));
+            long dropped = Long.parseLong(m.group(4));
+            assertTrue(handled > 4000, mode + ": the worker handled the paced messages: " + m.group());
+            assertTrue(dropped > 0 && output.contains("mailbox check/sink dropped "),
+                    mode + ": the flood filled the mailbox, and the worker said what it dropped: " + m.group());
+            assertEquals(0, crossed, mode + ": blocks freed by a thread that did not allocate them: " + m.group());
+            if (mode.equals("quiet")) {
+                assertEquals(0, allocations, mode + ": blocks the sender allocated in the steady state: " + m.group());
+            }
+        }
+    }
+
     /** The reacting modules of the generated bases whose constructor makes the call, by the label of their reactions. */
     private static Set<String> unbounded(Path out, Path model, Target target, String suffix, String call) throws Exception {
         new RsamlGenerator().generate(model, target, out, true);

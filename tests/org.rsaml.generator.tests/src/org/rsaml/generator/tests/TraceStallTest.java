@@ -40,8 +40,8 @@ class TraceStallTest {
     static final long RUN_MS = 5000;
     static final long STALL_MS = 4000;
 
-    private static final Pattern DROPPED = Pattern.compile("trace dropped (\\d+) lines: its queue of (\\d+) lines was full, standard output"
-            + " not read in time \\((\\d+) in all\\)");
+    private static final Pattern DROPPED = Pattern.compile("trace dropped (\\d+) lines: its queue of (\\d+) lines \\((\\d+) KiB\\) was"
+            + " full, standard output not read in time \\((\\d+) in all\\)");
     private static final Pattern IN_ALL = Pattern.compile("trace dropped (\\d+) lines in all: .*");
 
     @Test
@@ -77,7 +77,7 @@ class TraceStallTest {
             Matcher m = DROPPED.matcher(line);
             if (m.matches()) {
                 dropped += Long.parseLong(m.group(1));
-                assertEquals(dropped, Long.parseLong(m.group(3)), "each drop line counts the lines dropped so far: " + line);
+                assertEquals(dropped, Long.parseLong(m.group(4)), "each drop line counts the lines dropped so far: " + line);
             }
             Matcher all = IN_ALL.matcher(line);
             if (all.matches()) {
