@@ -132,13 +132,7 @@ class Input final : public MailTarget {
    * allocated here but what T's copy assignment allocates, and nothing the worker allocated is freed here.
    */
   void deliver(const T& data, const std::string* from, std::uint64_t sequence, std::uint64_t wave, Link* replacing) {
-    Mail mail;
-    mail.target = this;
-    mail.wave = wave;
-    mail.from = from;
-    mail.sequence = sequence;
-    mail.replacing = replacing;
-    owner_.post(mail, [this, &data](std::size_t slot) {
+    owner_.post(Mail{this, wave, Clock::time_point{}, from, sequence, replacing}, [this, &data](std::size_t slot) {
       pending_ = data;
       fresh_ = true;
       if (slot < MAILBOX_SLOTS) {
