@@ -122,7 +122,7 @@ class TraceQueue {
   void append(const std::string& text, bool waiting) {
     const std::size_t length = text.size() < LINE_BYTES ? text.size() : LINE_BYTES;
     lock();
-    const bool was_empty = lines_ == 0 && dropped_ == said_dropped_;  // else the writer is awake, or woken already
+    bool was_empty;  // taken when the line is appended or dropped: else the writer is awake, or woken already
     for (;;) {
       // stamped under the lock: the queue's order is the stamps' order
       const auto now = std::chrono::steady_clock::now();
@@ -130,6 +130,7 @@ class TraceQueue {
       const int printed = std::snprintf(stamp, sizeof stamp, "[%10.3f ms] ", since_start(now));
       const std::size_t stamp_length = printed > 0 ? static_cast<std::size_t>(printed) : 0;
       const std::size_t need = stamp_length + length + 1;
+      was_empty = lines_ == 0 && dropped_ == said_dropped_;  // after any wait below: the writer may have emptied it meanwhile
       if (lines_ < QUEUE_LINES && used_ + need <= QUEUE_BYTES) {
         // copied into the ring, behind the lines the writer may be writing out now (it owns [head_, head_ + used_))
         copy_in(stamp, stamp_length);

@@ -112,6 +112,15 @@ final class CppJobCheck {
             }
             assertEquals(s.misses(), trace.matching("miss " + x.label() + " job ").size(), what + ": a line per miss of " + x.label());
             assertEquals(s.overruns(), trace.matching("overrun " + x.label() + " job ").size(), what + ": a line per overrun of " + x.label());
+            if (bound != null) {
+                // a message its full mailbox dropped is a job of the bounded reactions never released nor measured
+                java.util.regex.Matcher dropped = java.util.regex.Pattern.compile("mailbox " + java.util.regex.Pattern.quote(x.module().qualifiedName())
+                        + " dropped (\\d+) messages in all").matcher(output);
+                if (dropped.find()) {
+                    org.junit.jupiter.api.Assertions.fail(what + ": " + x.label() + ": " + dropped.group(1)
+                            + " messages dropped, the worker behind: jobs not measured\n" + Tools.last(output, 3000));
+                }
+            }
             toCheck(arch, x.module().module(), x.label(), s, bound, checks, unchecked);
         }
         for (Release r : plan.releases()) {

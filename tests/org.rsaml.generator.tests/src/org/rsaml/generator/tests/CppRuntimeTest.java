@@ -129,7 +129,7 @@ class CppRuntimeTest {
 
     /**
      * No heap memory crosses between a sender and a module's worker of the default priority (docs/timing.md, "Memory
-     * between threads"): resources/cpp-heap/heap_between_threads.cpp, built with the runtime's sources, tags each block
+     * between threads"): resources/cpp-checks/heap_between_threads.cpp, built with the runtime's sources, tags each block
      * operator new hands out with the thread that allocated it, sends numbers and text (longer than a small-string
      * buffer) to a module whose worker serves its data at the default priority, paced and then faster than the worker
      * (the mailbox full), and counts, once every mailbox slot has held a message: the blocks a thread frees that another
@@ -145,7 +145,7 @@ class CppRuntimeTest {
                 command.add(runtime().resolve("rsaml/" + file).toString());
             }
         }
-        command.add(Path.of("resources/cpp-heap/heap_between_threads.cpp").toAbsolutePath().toString());
+        command.add(Path.of("resources/cpp-checks/heap_between_threads.cpp").toAbsolutePath().toString());
         Tools.ok(tmp, 300, command.toArray(String[]::new));
         java.util.regex.Pattern counts = java.util.regex.Pattern
                 .compile("(?m)^sender-allocations (\\d+) crossed-frees (\\d+) handled (\\d+) dropped (\\d+)$");
@@ -163,6 +163,37 @@ class CppRuntimeTest {
             assertEquals(0, crossed, mode + ": blocks freed by a thread that did not allocate them: " + m.group());
             if (mode.equals("quiet")) {
                 assertEquals(0, allocations, mode + ": blocks the sender allocated in the steady state: " + m.group());
+            }
+        }
+    }
+
+    /**
+     * The trace's queue ends a run whose output is read late (docs/timing.md, "The trace"): resources/cpp-checks/
+     * trace_flush.cpp posts 20,000 lines, then a closing line that waits for room, then flushes; the test reads nothing
+     * for 1 s (the pipe and the queue fill, lines are dropped), then everything, and the program must end, three times
+     * in a row (a closing line appended after its wait without waking the writer left flush() waiting for ever, two runs
+     * of three).
+     */
+    @Test
+    void aTraceReadLateIsFlushedAndTheProgramEnds(@TempDir Path tmp) throws Exception {
+        Path exe = tmp.resolve("trace-flush");
+        Tools.ok(tmp, 300, "g++", "-std=c++17", "-O2", "-Wall", "-Wextra", "-Werror", "-pthread", "-I" + shared(), "-o", exe.toString(),
+                Path.of("resources/cpp-checks/trace_flush.cpp").toAbsolutePath().toString());
+        for (int run = 1; run <= 3; run++) {
+            Process p = new ProcessBuilder(exe.toString()).redirectError(tmp.resolve("stderr").toFile()).start();
+            try {
+                Thread.sleep(1000);  // nobody reads: the pipe fills, then the queue
+                String output;
+                try (java.io.InputStream in = p.getInputStream()) {
+                    output = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+                }
+                assertTrue(p.waitFor(30, java.util.concurrent.TimeUnit.SECONDS), "run " + run + ": the program ends once its output is read");
+                assertEquals(0, p.exitValue(), "run " + run + ": the program's status");
+                assertEquals("flushed\n", Files.readString(tmp.resolve("stderr")), "run " + run + ": flush() returned");
+                assertTrue(output.contains("] closing line\n") && output.contains("] trace dropped "),
+                        "run " + run + ": the closing line written, and the drops said:\n" + Tools.last(output, 1000));
+            } finally {
+                p.destroyForcibly();
             }
         }
     }
