@@ -183,11 +183,16 @@ class CppRuntimeTest {
             Process p = new ProcessBuilder(exe.toString()).redirectError(tmp.resolve("stderr").toFile()).start();
             try {
                 Thread.sleep(1000);  // nobody reads: the pipe fills, then the queue
-                String output;
-                try (java.io.InputStream in = p.getInputStream()) {
-                    output = new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-                }
+                // read on another thread, so that a program that never ends fails the wait below (and is destroyed)
+                java.util.concurrent.CompletableFuture<String> read = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+                    try (java.io.InputStream in = p.getInputStream()) {
+                        return new String(in.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+                    } catch (IOException e) {
+                        throw new java.io.UncheckedIOException(e);
+                    }
+                });
                 assertTrue(p.waitFor(30, java.util.concurrent.TimeUnit.SECONDS), "run " + run + ": the program ends once its output is read");
+                String output = read.get(30, java.util.concurrent.TimeUnit.SECONDS);
                 assertEquals(0, p.exitValue(), "run " + run + ": the program's status");
                 assertEquals("flushed\n", Files.readString(tmp.resolve("stderr")), "run " + run + ": flush() returned");
                 assertTrue(output.contains("] closing line\n") && output.contains("] trace dropped "),
