@@ -211,7 +211,7 @@ Schedule::~Schedule() {
   // go, each waiting for room in the trace's queue rather than dropped: behind every miss line of a job it counts.
   std::vector<std::string> lines;
   {
-    std::lock_guard<std::mutex> lock(stats_);
+    std::lock_guard<NodeLock> lock(stats_);
     summarized_ = true;
     // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp), after the lines of the jobs over the plain bound.
     auto summary = [&lines](const Jobs& r) {
@@ -314,19 +314,20 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
   const std::int64_t expected_monotonic = now_monotonic - (now - expected).nanoseconds();
   const std::int64_t called_monotonic = now_monotonic - (now - called).nanoseconds();
   Release& r = releases_[release];
+  const std::string line = "miss " + r.label + " released " + ms(first) + (dropped > 1 ? ".." + ms(last) : std::string()) +
+                           " ms not run (" + std::to_string(dropped) + (dropped > 1 ? " releases" : " release") +
+                           "): ROS 2's timer dropped " + (dropped > 1 ? "them" : "it") + ", as its previous release was called " +
+                           ms((called - expected).nanoseconds()) + " ms late (on CLOCK_MONOTONIC: released " +
+                           std::to_string(expected_monotonic) + " ns, called " + std::to_string(called_monotonic) + " ns)";
   // counted and said under one lock, before the summary or not at all
-  std::lock_guard<std::mutex> lock(stats_);
+  std::lock_guard<NodeLock> lock(stats_);
   if (summarized_) {
     return;
   }
   r.jobs += static_cast<std::uint64_t>(dropped);
   r.misses += static_cast<std::uint64_t>(dropped);
   r.last_release_ns = last;
-  trace("miss " + r.label + " released " + ms(first) + (dropped > 1 ? ".." + ms(last) : std::string()) + " ms not run (" +
-        std::to_string(dropped) + (dropped > 1 ? " releases" : " release") + "): ROS 2's timer dropped " +
-        (dropped > 1 ? "them" : "it") + ", as its previous release was called " + ms((called - expected).nanoseconds()) +
-        " ms late (on CLOCK_MONOTONIC: released " + std::to_string(expected_monotonic) + " ns, called " +
-        std::to_string(called_monotonic) + " ns)");
+  trace(line);
 }
 
 bool Schedule::rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& timer, rclcpp::Time& released) {
@@ -363,7 +364,7 @@ bool Schedule::rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& time
             " instead of EDF: " + refused;
   }
   {
-    std::lock_guard<std::mutex> lock(stats_);
+    std::lock_guard<NodeLock> lock(stats_);
     r.sched = sched;
     r.deadline_thread = refused.empty();
   }
@@ -434,8 +435,17 @@ void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::T
   const std::int64_t execution_ns = measured.execution_ns;
   const std::int64_t response = (done - released).nanoseconds();
   const std::int64_t at = (released - started_).nanoseconds();
+  // Its miss and overrun lines made before the lock, which is held only to count the job and queue them.
+  const bool missed = r.deadline_ns > 0 && response > r.deadline_ns;
+  const bool overran = r.cost_ns > 0 && execution_ns > r.cost_ns;
+  const std::string miss_line =
+      missed ? "miss " + r.label + " released " + ms(at) + " ms response " + ms(response) + " ms deadline " + ms(r.deadline_ns) + " ms"
+             : std::string();
+  const std::string overrun_line =
+      overran ? "overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms"
+              : std::string();
   // Counted and said under one lock: a job done after the summary is neither (the summary's misses are the miss lines).
-  std::lock_guard<std::mutex> lock(stats_);
+  std::lock_guard<NodeLock> lock(stats_);
   if (summarized_) {
     return;
   }
@@ -450,13 +460,13 @@ void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::T
   r.worst_stall_ns = std::max(r.worst_stall_ns, measured.stall_ns);
   // the node's clock may be the system's: the release placed on CLOCK_MONOTONIC by its response
   rsaml_jobs::record_instant(done_monotonic - response, done_monotonic, r.bound_ns, r.worst_job, r.over_bound, r.listed);
-  if (r.deadline_ns > 0 && response > r.deadline_ns) {
+  if (missed) {
     ++r.misses;
-    trace("miss " + r.label + " released " + ms(at) + " ms response " + ms(response) + " ms deadline " + ms(r.deadline_ns) + " ms");
+    trace(miss_line);
   }
-  if (r.cost_ns > 0 && execution_ns > r.cost_ns) {
+  if (overran) {
     ++r.overruns;
-    trace("overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms");
+    trace(overrun_line);
   }
 }
 
@@ -472,7 +482,7 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
   record_job(r, released, clock_->now(), (called - released).nanoseconds(), measured);
   // The executor's own CPU time since the previous job ended (waking, taking the timer, dispatching), measured, not modeled.
   const std::int64_t ended_cpu = thread_cpu_ns();
-  std::lock_guard<std::mutex> lock(stats_);
+  std::lock_guard<NodeLock> lock(stats_);
   if (r.job_end_cpu_ns >= 0) {
     const std::int64_t executor = started_cpu - r.job_end_cpu_ns;
     ++r.executor_jobs;
@@ -491,7 +501,7 @@ void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& 
     body();
   }
   const std::int64_t at = (arrived - started_).nanoseconds();
-  std::lock_guard<std::mutex> lock(stats_);
+  std::lock_guard<NodeLock> lock(stats_);
   Arrivals& a = arrivals_[port];
   ++a.messages;
   if (a.first_ns < 0) {

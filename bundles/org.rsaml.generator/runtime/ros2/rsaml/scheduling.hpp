@@ -336,7 +336,10 @@ class Schedule {
   double simulated_load_;
   rclcpp::Time started_;
   NodeLock activation_;
-  std::mutex stats_;
+  // The node's statistics, taken by its release threads and its data thread (priority 0, or the default priority for
+  // aperiodic reactions): with priority inheritance, as the node's lock, so that a release never waits for a preempted
+  // lower thread that holds it; held only to count a job and queue its lines, which are made before it is taken.
+  NodeLock stats_;
   // Set under stats_ when the summary is written: a job done after it is neither counted nor said, so
   // that the summary's misses and the miss lines are the same jobs.
   bool summarized_ = false;
