@@ -109,7 +109,7 @@ class CppModuleTemplate extends CppTemplate {
 		  	«ENDFOR»
 		  «ENDFOR»
 		  «FOR p : m.inputs»
-		  	/** Called on each arrival at «doc(p.name)», before the module reacts. */
+		  	/** Called on each arrival at «doc(p.name)» that the module's mailbox takes, before the module reacts (a message that finds every slot of the mailbox taken, `rsaml::MAILBOX_SLOTS`, is dropped and said in the trace: docs/timing.md, "Memory between threads"). */
 		  	virtual void «p.onName»(const «p.cppType»& value);
 		  «ENDFOR»
 		  void publish_outputs() override;
