@@ -296,11 +296,18 @@ class JobTimingTest {
                 .findFirst().orElseThrow();
         assertEquals(Verdict.MISSES, b.verdict(), "the analysis predicts B's miss: " + b.explanation());
 
-        Map<String, JobSummary> asModeled = CppJobCheck.runAndCheck(arch, out, "overloaded");
+        CppJobCheck.Run run = CppJobCheck.run(arch, out, "overloaded");
+        Map<String, JobSummary> asModeled = run.summaries();
         JobSummary sb = asModeled.get("tasks/b.f");
         if (sb.asAnalysed()) {
             assertTrue(sb.misses() > 0, "B's miss, predicted by the analysis, was not observed: " + sb);
-            assertEquals(0, asModeled.get("tasks/a.f").misses(), "A has the higher priority and meets: " + asModeled.get("tasks/a.f"));
+            // A has the higher priority and meets: where the run held it to the analysis (the platform measured), each of its
+            // jobs past its bound, a miss included, was held there to its bound with the platform's loss at that moment and
+            // failed if past it (a stall of every CPU can make A miss); where it could not, A may miss nothing
+            JobSummary sa = asModeled.get("tasks/a.f");
+            boolean held = run.allowance() != null && sa.asAnalysed() && run.allowance().unchecked("tasks/a.f") == null;
+            assertTrue(held || sa.misses() == 0, "A has the higher priority and meets: neither held to its bound with the platform"
+                    + " as measured nor without a miss: " + sa + "; platform: " + run.allowance());
         }
 
         String doubled = Tools.ok(out, 60, Tools.cmakeBuild(out, CppExamplesTest.executableName(out)).toString(), "--run-for-ms",
