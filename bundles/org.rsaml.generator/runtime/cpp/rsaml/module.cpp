@@ -33,37 +33,24 @@ void Link::trigger() { until_.store((Clock::now() + duration_).time_since_epoch(
 bool Link::active() const { return Clock::now().time_since_epoch().count() < until_.load(); }
 
 #if defined(__unix__) || defined(__APPLE__)
-ModuleLock::ModuleLock() : protocol_(rsaml_realtime::init_inheriting_mutex(&mutex_, true)) {}
-ModuleLock::~ModuleLock() { pthread_mutex_destroy(&mutex_); }
-void ModuleLock::lock() { pthread_mutex_lock(&mutex_); }
-void ModuleLock::unlock() { pthread_mutex_unlock(&mutex_); }
-MailLock::MailLock() {
-  rsaml_realtime::init_inheriting_mutex(&mutex_, false);
+InheritingLock::InheritingLock(bool recursive) : protocol_(rsaml_realtime::init_inheriting_mutex(&mutex_, recursive)) {
   pthread_cond_init(&ready_, nullptr);
 }
-MailLock::~MailLock() {
+InheritingLock::~InheritingLock() {
   pthread_cond_destroy(&ready_);
   pthread_mutex_destroy(&mutex_);
 }
-void MailLock::lock() { pthread_mutex_lock(&mutex_); }
-void MailLock::unlock() { pthread_mutex_unlock(&mutex_); }
-void MailLock::wait() { pthread_cond_wait(&ready_, &mutex_); }
-void MailLock::notify() { pthread_cond_signal(&ready_); }
+void InheritingLock::lock() { pthread_mutex_lock(&mutex_); }
+void InheritingLock::unlock() { pthread_mutex_unlock(&mutex_); }
+void InheritingLock::wait() { pthread_cond_wait(&ready_, &mutex_); }
+void InheritingLock::notify() { pthread_cond_signal(&ready_); }
 #else
-ModuleLock::ModuleLock() : protocol_("without priority inheritance: not supported on this platform") {}
-ModuleLock::~ModuleLock() = default;
-void ModuleLock::lock() { mutex_.lock(); }
-void ModuleLock::unlock() { mutex_.unlock(); }
-MailLock::MailLock() = default;
-MailLock::~MailLock() = default;
-void MailLock::lock() { mutex_.lock(); }
-void MailLock::unlock() { mutex_.unlock(); }
-void MailLock::wait() {
-  std::unique_lock<std::mutex> held(mutex_, std::adopt_lock);
-  ready_.wait(held);
-  held.release();
-}
-void MailLock::notify() { ready_.notify_one(); }
+InheritingLock::InheritingLock(bool) : protocol_("without priority inheritance: not supported on this platform") {}
+InheritingLock::~InheritingLock() = default;
+void InheritingLock::lock() { mutex_.lock(); }
+void InheritingLock::unlock() { mutex_.unlock(); }
+void InheritingLock::wait() { ready_.wait(mutex_); }
+void InheritingLock::notify() { ready_.notify_one(); }
 #endif
 
 Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
@@ -89,7 +76,7 @@ Module::Module(System& system, std::string name, int core, std::string host, int
 Module::~Module() { stop_worker(); }
 
 std::uint64_t Module::mail_dropped() {
-  std::lock_guard<MailLock> lock(mail_mutex_);
+  std::lock_guard<InheritingLock> lock(mail_mutex_);
   return mail_dropped_;
 }
 
@@ -102,7 +89,7 @@ void Module::start_worker() {
 
 void Module::stop_worker() {
   {
-    std::lock_guard<MailLock> lock(mail_mutex_);
+    std::lock_guard<InheritingLock> lock(mail_mutex_);
     stopping_ = true;
   }
   mail_mutex_.notify();  // its one worker
@@ -123,7 +110,7 @@ void Module::run_worker() {
     std::uint64_t dropped;
     std::uint64_t unsaid;
     {
-      std::lock_guard<MailLock> lock(mail_mutex_);
+      std::lock_guard<InheritingLock> lock(mail_mutex_);
       while (!stopping_ && mail_count_ == 0) {
         mail_mutex_.wait();
       }
@@ -147,7 +134,7 @@ void Module::run_worker() {
       mail.target->receive(slot, mail);
     }
     {
-      std::lock_guard<MailLock> lock(mail_mutex_);
+      std::lock_guard<InheritingLock> lock(mail_mutex_);
       mail_head_ = (mail_head_ + 1) % MAILBOX_SLOTS;
       --mail_count_;
     }

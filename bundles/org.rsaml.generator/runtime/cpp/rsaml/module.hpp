@@ -67,58 +67,36 @@ struct Reactions {
 };
 
 /**
- * A module's lock (a module is a lock group of the analysis), held while any of its activations runs:
- * recursive, and with priority inheritance where POSIX threads offer it (PTHREAD_PRIO_INHERIT), as a
- * ROS 2 node's lock is: a thread holding it runs at the priority of the highest thread waiting for it,
- * so that a release waits for a worker of a lower or the default priority only as long as that worker
- * needs the lock, not while other threads run (docs/timing.md, "Module lock").
+ * A lock with priority inheritance where POSIX threads offer it (PTHREAD_PRIO_INHERIT), as a ROS 2 node's lock is: a
+ * thread holding it runs at the priority of the highest thread waiting for it, so that a release waits for a worker of a
+ * lower or the default priority only as long as that worker needs the lock, not while other threads run; and a
+ * condition, waited on under it. A module has two: its lock (a module is a lock group of the analysis), recursive,
+ * held while any of its activations runs (docs/timing.md, "Module lock"); and its mailbox's, which the releases that
+ * send to the module share with its worker for a push or a pop, the worker waiting on its condition.
  */
-class ModuleLock {
+class InheritingLock {
  public:
-  ModuleLock();
-  ~ModuleLock();
-  ModuleLock(const ModuleLock&) = delete;
-  ModuleLock& operator=(const ModuleLock&) = delete;
+  explicit InheritingLock(bool recursive);
+  ~InheritingLock();
+  InheritingLock(const InheritingLock&) = delete;
+  InheritingLock& operator=(const InheritingLock&) = delete;
   void lock();
   void unlock();
+  /** Waits, holding the lock (once), until notified (or woken spuriously); holds it again on return. */
+  void wait();
+  void notify();
   /** "PTHREAD_PRIO_INHERIT", or what the lock is instead and why. */
   const std::string& protocol() const { return protocol_; }
 
  private:
 #if defined(__unix__) || defined(__APPLE__)
   pthread_mutex_t mutex_;
-#else
-  std::recursive_mutex mutex_;
-#endif
-  std::string protocol_;
-};
-
-/**
- * A module's mailbox lock, which the releases that send to the module share with its worker: with priority
- * inheritance where POSIX threads offer it, as the module's lock, so that a release waits for a worker of the
- * default priority (a module whose reactions are aperiodic) only as long as the worker needs it for a push or a
- * pop, not while other threads run on its core; and the mailbox's condition, waited on under it.
- */
-class MailLock {
- public:
-  MailLock();
-  ~MailLock();
-  MailLock(const MailLock&) = delete;
-  MailLock& operator=(const MailLock&) = delete;
-  void lock();
-  void unlock();
-  /** Waits, holding the lock, until notified (or woken spuriously); holds it again on return. */
-  void wait();
-  void notify();
-
- private:
-#if defined(__unix__) || defined(__APPLE__)
-  pthread_mutex_t mutex_;
   pthread_cond_t ready_;
 #else
-  std::mutex mutex_;
-  std::condition_variable ready_;
+  std::recursive_mutex mutex_;
+  std::condition_variable_any ready_;
 #endif
+  std::string protocol_;
 };
 
 /**
@@ -138,7 +116,7 @@ class Activation {
   const std::uint64_t wave;
   const bool timed;
   const Clock::time_point release;
-  std::unique_lock<ModuleLock> lock;
+  std::unique_lock<InheritingLock> lock;
   /** How long the lock was given up to wait for actions' start dates (not the job's stall). */
   Nanos waited{0};
 
@@ -177,7 +155,7 @@ class Module {
   template <class Fill>
   void post(Mail mail, Fill&& fill);
   /** The mailbox's lock: also guards the entry ports' latest values, which the senders set and the activations take. */
-  MailLock& mailbox_lock() { return mail_mutex_; }
+  InheritingLock& mailbox_lock() { return mail_mutex_; }
   /** Messages dropped so far, every slot of the mailbox taken. */
   std::uint64_t mail_dropped();
   void start_worker();
@@ -244,8 +222,8 @@ class Module {
   int core_;
   std::string host_;
   int cpu_;
-  ModuleLock mutex_;
-  MailLock mail_mutex_;
+  InheritingLock mutex_{true};
+  InheritingLock mail_mutex_{false};
   // The mailbox: a ring of MAILBOX_SLOTS messages, mail_count_ of them from mail_head_ on (the first, while the worker
   // handles it, still holds its slot); under mail_mutex_.
   std::array<Mail, MAILBOX_SLOTS> mail_{};
@@ -267,7 +245,7 @@ class Module {
 template <class Fill>
 void Module::post(Mail mail, Fill&& fill) {
   {
-    std::lock_guard<MailLock> lock(mail_mutex_);
+    std::lock_guard<InheritingLock> lock(mail_mutex_);
     if (stopping_) {
       return;
     }

@@ -154,7 +154,7 @@ class Input final : public MailTarget {
  private:
   /** Called with the owner's lock held, when one of its activations starts. */
   void latch() {
-    std::lock_guard<MailLock> lock(owner_.mailbox_lock());
+    std::lock_guard<InheritingLock> lock(owner_.mailbox_lock());
     if (fresh_) {
       value_ = pending_;
       fresh_ = false;
