@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -100,7 +101,8 @@ class DaemonTest {
         });
         Cli.Result stopped = launcher(dir.resolve("run"), dir.resolve("work"), false, "daemon", "status");
         assertEquals(1, stopped.code(), stopped::toString);
-        assertEquals("rsaml: no resident process running (RSAML_DAEMON=1 or 'rsaml daemon start' starts one)\n", stopped.out());
+        assertEquals("rsaml: no resident process running (a command at a terminal, RSAML_DAEMON=1 or 'rsaml daemon start' starts one)\n",
+                stopped.out());
     }
 
     @Test
@@ -131,7 +133,8 @@ class DaemonTest {
     void theLanguageServerArgumentFilesAndUnknownVerbsAreNotSent(@TempDir Path dir) throws Exception {
         withResident(dir, true, (runtime, work) -> {
             Cli.Result usage = launcher(runtime, work, false, "daemon", "restart");
-            assertEquals("usage: rsaml daemon start|stop|status (the resident process that RSAML_DAEMON=1 uses)\n", usage.err());
+            assertEquals("usage: rsaml daemon start|stop|status (the resident process that commands at a terminal and RSAML_DAEMON=1 use)\n",
+                    usage.err());
             assertEquals(2, usage.code(), usage::toString);
             int served = served(runtime, work);
             Cli.Result help = launcher(runtime, work, true, "language-server", "--help");
@@ -215,10 +218,15 @@ class DaemonTest {
                 assertTrue(ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false), () -> "the process goes on: " + said);
                 // Nothing of the stopped command's: no report, no temporary file beside one.
                 assertEquals(Map.of(), takeFiles(work), "SIG" + signal);
-                // Idle again: no more CPU spent on a command that nobody waits for.
-                long idle = cpu(pid);
-                Thread.sleep(1000);
-                assertTrue(cpu(pid) - idle < 300, () -> "SIG" + signal + ": the process still works: " + said);
+                // Idle again: no more CPU spent on a command that nobody waits for. The JIT may still finish compiling
+                // what the command ran hot for a moment: a quiet second within the next five, not a busy one each.
+                boolean quiet = false;
+                for (int second = 0; second < 5 && !quiet; second++) {
+                    long idle = cpu(pid);
+                    Thread.sleep(1000);
+                    quiet = cpu(pid) - idle < 300;
+                }
+                assertTrue(quiet, () -> "SIG" + signal + ": the process still works: " + said);
             }
             Files.delete(work.resolve("chain.rsaml"));
             // The next command: served by the same process, as a JVM of its own runs it.
@@ -228,6 +236,168 @@ class DaemonTest {
             assertEquals(served + 3, served(runtime, work), "the two stopped commands and the next, all by one process");
             assertEquals(pid, pid(launcher(runtime, work, false, "daemon", "status")));
         });
+    }
+
+    /** The variables by which the launcher knows it runs in CI: none of them is set for a command typed at a terminal. */
+    private static final List<String> CI = List.of("CI", "GITHUB_ACTIONS", "GITLAB_CI", "JENKINS_URL", "BUILDKITE", "TF_BUILD",
+            "CIRCLECI", "TRAVIS", "TEAMCITY_VERSION", "BITBUCKET_BUILD_NUMBER", "CODEBUILD_BUILD_ID", "DRONE", "APPVEYOR",
+            "SEMAPHORE", "BUILD_BUILDID");
+
+    /** The line said, once per user, when a resident process is first started by default. */
+    private static final String NOTICE = "rsaml: a resident process now keeps RsaML loaded for quicker commands at this terminal"
+            + " (RSAML_DAEMON=0 turns it off; 'rsaml daemon stop' stops it; said once)\n";
+
+    /**
+     * Without RSAML_DAEMON, a resident process is used only for commands typed at a terminal (standard input and error
+     * terminals) outside CI: a script's run, or one in CI even at a terminal, runs in a JVM of its own and starts none;
+     * the first process started by default says so once, on standard error, and never again for this user; it stops
+     * after 30 minutes unused and has a bounded heap (a process started on request: 3 hours, the JDK's default heap).
+     */
+    @Test
+    void byDefaultOnlyACommandAtATerminalOutsideCiUsesOneWhichIsSaidOnce(@TempDir Path dir) throws Exception {
+        withResident(dir, false, (runtime, work) -> {
+            Path state = dir.resolve("state");
+            Cli.Result own = launcher(runtime, work, false, "validate", "exp2-defects.rsaml");
+            assertEquals("", own.err(), own::toString);
+            // A script's run: standard input and error are pipes.
+            Cli.Result script = Cli.process(work, defaults(runtime, state, List.of(), "validate", "exp2-defects.rsaml"));
+            assertEquals(own.toString(), script.toString());
+            for (String ci : List.of("CI=true", "GITHUB_ACTIONS=true", "RSAML_DAEMON=0")) {
+                Cli.Result atTerminal = terminal(work, defaults(runtime, state, List.of(ci), "validate", "exp2-defects.rsaml"));
+                assertEquals(new Cli.Result(own.code(), own.out(), "").toString(), atTerminal.toString(), ci);
+            }
+            Thread.sleep(2000); // what a process started in the background would have made by now
+            assertTrue(!Files.exists(runtime.resolve("rsaml")), "no resident process, no socket folder");
+            assertEquals(1, launcher(runtime, work, false, "daemon", "status").code());
+            assertTrue(!Files.exists(state), "nothing said, nothing remembered");
+
+            // Typed at a terminal, outside CI: the command runs in a JVM of its own and starts one for the next, saying so.
+            Cli.Result first = terminal(work, defaults(runtime, state, List.of(), "validate", "exp2-defects.rsaml"));
+            assertEquals(new Cli.Result(own.code(), NOTICE + own.out(), "").toString(), first.toString());
+            Cli.Result status = awaitRunning(runtime, work);
+            assertTrue(status.out().contains("\nrsaml: started by default for a terminal (RSAML_DAEMON=0 turns that off); stops"
+                    + " after 30 minutes without a command; heap at most "), status::toString);
+            assertTrue(heap(status) <= 1024, status::toString);
+            int served = served(runtime, work);
+            Cli.Result next = terminal(work, defaults(runtime, state, List.of(), "validate", "exp2-defects.rsaml"));
+            assertEquals(new Cli.Result(own.code(), own.out(), "").toString(), next.toString(), "served, nothing said");
+            assertEquals(served + 1, served(runtime, work));
+            // Stopped, the next command at a terminal starts another: the notice is not said again.
+            stop(runtime, work);
+            Cli.Result again = terminal(work, defaults(runtime, state, List.of(), "validate", "exp2-defects.rsaml"));
+            assertEquals(new Cli.Result(own.code(), own.out(), "").toString(), again.toString(), "said once");
+            awaitRunning(runtime, work);
+            stop(runtime, work);
+            // Started on request: the longer idle time and the JDK's default heap (a quarter of this machine's memory).
+            assertEquals(0, launcher(runtime, work, false, "daemon", "start").code());
+            Cli.Result requested = launcher(runtime, work, false, "daemon", "status");
+            assertTrue(requested.out().contains("\nrsaml: started on request; stops after 3 hours without a command; heap at most "),
+                    requested::toString);
+            long memory = ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getTotalMemorySize();
+            if (memory >= 8L << 30) {
+                assertTrue(heap(requested) > 1024, requested::toString);
+            }
+        });
+    }
+
+    /**
+     * A process started by default stops after its idle time (here a few seconds) without a command; its heap is
+     * bounded unless RSAML_JAVA_OPTS says otherwise.
+     */
+    @Test
+    void aProcessStartedByDefaultStopsWhenIdleAndRsamlJavaOptsSetsItsHeap(@TempDir Path dir) throws Exception {
+        withResident(dir, false, (runtime, work) -> {
+            Path state = dir.resolve("state");
+            List<String> settings = List.of("RSAML_DAEMON_IDLE=6", "RSAML_JAVA_OPTS=-Xmx1500m");
+            Cli.Result first = terminal(work, defaults(runtime, state, settings, "validate", "exp2-defects.rsaml"));
+            assertEquals(1, first.code(), first::toString);
+            Cli.Result status = awaitRunning(runtime, work);
+            assertTrue(status.out().contains("started by default for a terminal (RSAML_DAEMON=0 turns that off); stops after 6"
+                    + " seconds without a command; heap at most "), status::toString);
+            assertTrue(heap(status) > 1024, () -> "RSAML_JAVA_OPTS's heap, not the default bound: " + status);
+            Path log = runtime.resolve("rsaml").resolve(socketName(runtime) + ".log");
+            long pid = pid(status);
+            for (int i = 0; i < 120 && ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false); i++) {
+                Thread.sleep(250);
+            }
+            String said = Files.readString(log);
+            assertTrue(said.contains("rsaml: resident process stops after 6 seconds without a command"), said);
+            assertTrue(ProcessHandle.of(pid).map(p -> !p.isAlive()).orElse(true), said);
+        });
+    }
+
+    /**
+     * A command the resident process cannot serve as a JVM of its own would (here one that needs more than its small
+     * heap) runs in a JVM of its own instead: the same output, files and exit code, nothing of the first attempt.
+     */
+    @Test
+    void aCommandTooLargeForTheProcesssHeapRunsInAJvmOfItsOwnWithTheSameResult(@TempDir Path dir) throws Exception {
+        Path work = models(dir);
+        Path runtime = runtime(dir);
+        // As text, some 450 KB: within a sixteenth of the heap, so sent, but more than 32 MB of heap to load and check.
+        ChainModels.write(work.resolve("chain.rsaml"), 4000, false);
+        assertEquals(0, launcher(runtime, work, false, "convert", "chain.rsaml", "chain.rsa").code());
+        Files.delete(work.resolve("chain.rsaml"));
+        try {
+            Cli.Result started = Cli.process(work, List.of("env", "-u", "RSAML_DAEMON", "XDG_RUNTIME_DIR=" + runtime,
+                    "RSAML_DAEMON_HEAP=24m", Cli.ROOT.resolve("rsaml").toString(), "daemon", "start"));
+            assertEquals(0, started.code(), started::toString);
+            long pid = pid(launcher(runtime, work, false, "daemon", "status"));
+            Cli.Result own = launcher(runtime, work, false, "validate", "--output", "json=reports/chain.json", "chain.rsa");
+            Map<String, String> ownFiles = takeFiles(work);
+            assertEquals(0, own.code(), own::toString);
+            Cli.Result resident = launcher(runtime, work, true, "validate", "--output", "json=reports/chain.json", "chain.rsa");
+            assertEquals(own.toString(), resident.toString());
+            assertEquals(ownFiles, takeFiles(work));
+            String log = Files.readString(runtime.resolve("rsaml").resolve(socketName(runtime) + ".log"));
+            // Either the process found the command near its heap's limit, or the JVM's own OutOfMemoryError ended it.
+            boolean near = log.contains("rsaml: command 2 came near this process's heap limit (");
+            boolean ended = log.contains("OutOfMemoryError") && ProcessHandle.of(pid).map(p -> !p.isAlive()).orElse(true);
+            assertTrue(near || ended, log);
+            // A command that fits is still served (by a new process, if the error ended the first).
+            awaitRunning(runtime, work);
+            Cli.Result small = launcher(runtime, work, false, "validate", "exp2-defects.rsaml");
+            int served = served(runtime, work);
+            assertEquals(small.toString(), launcher(runtime, work, true, "validate", "exp2-defects.rsaml").toString());
+            assertEquals(served + 1, served(runtime, work));
+        } finally {
+            stop(runtime, work);
+        }
+    }
+
+    /** {@code rsaml args...} as run without RSAML_DAEMON, outside CI, with the given extra variables. */
+    private static List<String> defaults(Path runtime, Path state, List<String> variables, String... args) {
+        List<String> command = new ArrayList<>(List.of("env", "-u", "RSAML_DAEMON", "-u", "RSAML_DAEMON_IDLE", "-u",
+                "RSAML_DAEMON_HEAP", "-u", "RSAML_JAVA_OPTS"));
+        for (String name : CI) {
+            command.addAll(List.of("-u", name));
+        }
+        command.addAll(List.of("XDG_RUNTIME_DIR=" + runtime, "XDG_STATE_HOME=" + state));
+        command.addAll(variables);
+        command.add(Cli.ROOT.resolve("rsaml").toString());
+        command.addAll(List.of(args));
+        return command;
+    }
+
+    /**
+     * {@code command} with a terminal for its standard input, output and error (util-linux {@code script}), as typed at
+     * one: what it wrote on either, in the order written, is the result's output.
+     */
+    private static Cli.Result terminal(Path work, List<String> command) throws Exception {
+        StringBuilder line = new StringBuilder("exec");
+        for (String word : command) {
+            line.append(" '").append(word.replace("'", "'\\''")).append('\'');
+        }
+        Cli.Result result = Cli.process(work, List.of("script", "--quiet", "--return", "--command", line.toString(), "/dev/null"));
+        assertEquals("", result.err(), result::toString);
+        return new Cli.Result(result.code(), result.out().replace("\r\n", "\n"), "");
+    }
+
+    /** The heap a resident process's status names, in MiB. */
+    private static long heap(Cli.Result status) {
+        Matcher m = Pattern.compile("heap at most (\\d+) MiB").matcher(status.out());
+        assertTrue(m.find(), status::toString);
+        return Long.parseLong(m.group(1));
     }
 
     /** The client's JVM, once the launcher has started it. */

@@ -16,6 +16,8 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -26,15 +28,24 @@ import java.util.Map;
  *
  * <p>When no resident process serves the command (none listening, one started for another jar, JDK or settings, a
  * folder that is not this user's alone, or a command it does not run), the client writes nothing and exits with
- * {@link #NOT_SERVED}: the launcher then runs the command in a JVM of its own, as without the resident process.
+ * {@link #NOT_SERVED}: the launcher then runs the command in a JVM of its own, as without the resident process. What a
+ * command writes is held until its exit code comes, so that a command the resident process could not finish as a JVM
+ * of its own would (it came near the heap's limit, or the process is gone) is also not served, nothing of it written.
  *
  * <p>Usage: {@code Client SOCKET SETTINGS run|status|stop [ARGUMENTS...]}, where SETTINGS names what the launcher
  * would start the resident process with (the jar, the JDK, the JVM options, the locale and umask).
  */
 public final class Client {
 
-    /** The exit code of a command the resident process did not run; never one of {@code rsaml}'s own. */
+    /** The exit code of a command no resident process ran (none serves it); never one of {@code rsaml}'s own. */
     public static final int NOT_SERVED = 75;
+
+    /**
+     * The exit code of a command that the running resident process sent back to run in a JVM of its own (the language
+     * server, an argument file, inputs large for its heap, a command that came near its heap's limit): a process
+     * serves, so none is to be started.
+     */
+    public static final int DECLINED_HERE = 76;
 
     /** The first bytes of every request: the protocol's version. */
     static final int MAGIC = 0x52534d02;
@@ -51,6 +62,8 @@ public final class Client {
     static final byte OUT = 'O';
     static final byte ERR = 'E';
     static final byte EXIT = 'X';
+    /** The command is to run in a JVM of its own instead (its output, held by the client, is dropped). */
+    static final byte RETRY = 'R';
 
     private Client() {
     }
@@ -123,61 +136,63 @@ public final class Client {
         }
     }
 
-    /** Copies the replies to this process's output until the command's exit code. */
+    /**
+     * Holds the replies until the command's exit code, then copies them to this process's output in the order they
+     * were written; {@link #NOT_SERVED}, nothing written, when the resident process asks for the command to run
+     * elsewhere or is gone before the exit code.
+     */
     private static int receive(SocketChannel channel) throws IOException {
         ByteBuffer header = ByteBuffer.allocate(5);
-        if (!read(channel, header) || header.get(0) != ACCEPTED) {
-            return NOT_SERVED; // declined, stale, or gone: nothing was written
+        if (!read(channel, header)) {
+            return NOT_SERVED; // gone: nothing was written
         }
-        OutputStream out = new FileOutputStream(FileDescriptor.out);
-        OutputStream err = new FileOutputStream(FileDescriptor.err);
-        boolean outOpen = true;
-        boolean errOpen = true;
-        ByteBuffer body = ByteBuffer.allocate(65536);
+        if (header.get(0) != ACCEPTED) {
+            return header.get(0) == DECLINED ? DECLINED_HERE : NOT_SERVED; // declined, or stale (the process stops)
+        }
+        List<byte[]> held = new ArrayList<>();
+        List<Byte> types = new ArrayList<>();
         while (true) {
             header.clear();
             if (!read(channel, header)) {
-                break;
+                return NOT_SERVED; // the resident process is gone: the command runs in a JVM of its own
             }
             byte type = header.get(0);
             int length = header.getInt(1);
+            if (type == RETRY) {
+                return DECLINED_HERE;
+            }
             if (length < 0) {
-                break;
+                return NOT_SERVED;
             }
-            if (body.capacity() < length) {
-                body = ByteBuffer.allocate(length);
-            }
-            body.clear().limit(length);
+            ByteBuffer body = ByteBuffer.allocate(length);
             if (!read(channel, body)) {
-                break;
+                return NOT_SERVED;
             }
             if (type == EXIT && length == 4) {
+                OutputStream out = new FileOutputStream(FileDescriptor.out);
+                OutputStream err = new FileOutputStream(FileDescriptor.err);
+                boolean outOpen = true;
+                boolean errOpen = true;
+                for (int i = 0; i < held.size(); i++) {
+                    // As a JVM of its own does, a closed standard output or error is not the command's failure.
+                    if (types.get(i) == OUT && outOpen) {
+                        outOpen = write(out, held.get(i));
+                    } else if (types.get(i) == ERR && errOpen) {
+                        errOpen = write(err, held.get(i));
+                    }
+                }
                 return body.getInt(0);
             }
-            // As a JVM of its own does, a closed standard output or error is not the command's failure.
-            if (type == OUT && outOpen) {
-                outOpen = write(out, body, length);
-            } else if (type == ERR && errOpen) {
-                errOpen = write(err, body, length);
+            if (type == OUT || type == ERR) {
+                held.add(body.array());
+                types.add(type);
             }
         }
-        byte[] message = ("rsaml: the resident process stopped during the command (its log is " + log(channel)
-                + "); run it again, or without RSAML_DAEMON\n").getBytes(StandardCharsets.UTF_8);
-        write(err, ByteBuffer.wrap(message), message.length);
-        return 2;
     }
 
-    private static String log(SocketChannel channel) {
+    private static boolean write(OutputStream stream, byte[] data) {
         try {
-            return channel.getRemoteAddress() + ".log";
-        } catch (IOException e) {
-            return "beside its socket";
-        }
-    }
-
-    private static boolean write(OutputStream stream, ByteBuffer body, int length) {
-        try {
-            stream.write(body.array(), 0, length);
+            stream.write(data);
             return true;
         } catch (IOException e) {
             return false;

@@ -38,8 +38,16 @@ import org.rsaml.report.ExitCodes;
  *
  * <p>The process listens on a Unix domain socket in a folder of this user's that no one else can enter. It declines
  * the language server (which talks on standard input), answers a command sent with other settings than its own (another
- * jar, a rebuilt one, another JDK, JVM options, locale or umask) by stopping, and stops after {@link #IDLE} without a
- * command. A command whose client goes away (killed, Ctrl-C) is stopped, as a JVM of its own would be: its thread is
+ * jar, a rebuilt one, another JDK, JVM options, locale or umask) by stopping, and stops after its idle time without a
+ * command (system property {@code rsaml.daemon.idle}, in seconds; {@link #IDLE} when not given).
+ *
+ * <p>A command it cannot serve as a JVM of its own would is sent back to run in one (the client then writes nothing
+ * of it): one whose named inputs are larger than a sixteenth of this process's heap (a process started by default has
+ * a bounded heap, a JVM of its own the JDK's default), and one that came near the heap's limit (its long-lived part at
+ * least 95 % full after a collection, where the loader gives up on a model, or an {@link OutOfMemoryError}; the
+ * launcher also starts this process with {@code -XX:+ExitOnOutOfMemoryError}, so that an error the JVM throws ends it,
+ * and the command, whose client sees it gone, runs in a JVM of its own). Report files are written whole or not at all,
+ * so such a command leaves nothing partial; the JVM of its own writes them anew. A command whose client goes away (killed, Ctrl-C) is stopped, as a JVM of its own would be: its thread is
  * interrupted, which ends its file input and output at once and which the loader, the validation and the report files
  * check, so that it writes nothing more; then the process serves the next command. A command not stopped within
  * {@link #STOPPING} stops the process instead.
@@ -48,8 +56,11 @@ import org.rsaml.report.ExitCodes;
  */
 public final class Server {
 
-    /** How long the process waits for a command before it stops. */
+    /** How long the process waits for a command before it stops, unless told otherwise ({@code rsaml.daemon.idle}). */
     static final Duration IDLE = Duration.ofHours(3);
+
+    /** How a process started by default, for a terminal, says so: the value of system property {@code rsaml.daemon.started}. */
+    static final String BY_DEFAULT = "default";
 
     /** How long a command whose client went away may take to stop before the process stops instead. */
     public static final Duration STOPPING = Duration.ofSeconds(2);
@@ -58,6 +69,8 @@ public final class Server {
     private final String settings;
     private final PrintStream log;
     private final Instant started = Instant.now();
+    private final Duration idle;
+    private final boolean byDefault;
     private long commands;
     /** Whether the socket is this process's to delete (false once serve has ended and deleted it). */
     private volatile boolean listening = true;
@@ -68,8 +81,31 @@ public final class Server {
         this.socket = socket;
         this.settings = settings;
         this.log = log;
+        this.idle = idleTime(System.getProperty("rsaml.daemon.idle"));
+        this.byDefault = BY_DEFAULT.equals(System.getProperty("rsaml.daemon.started"));
     }
 
+    /** The idle time in whole seconds, {@link #IDLE} when not given or not a positive number. */
+    static Duration idleTime(String seconds) {
+        try {
+            long value = seconds == null ? 0 : Long.parseLong(seconds.trim());
+            return value > 0 ? Duration.ofSeconds(value) : IDLE;
+        } catch (NumberFormatException e) {
+            return IDLE;
+        }
+    }
+
+    /** A duration as a person says it: "3 hours", "30 minutes", "5 seconds". */
+    static String spoken(Duration d) {
+        long s = d.toSeconds();
+        if (s % 3600 == 0) {
+            return s / 3600 + (s == 3600 ? " hour" : " hours");
+        }
+        if (s % 60 == 0) {
+            return s / 60 + (s == 60 ? " minute" : " minutes");
+        }
+        return s + (s == 1 ? " second" : " seconds");
+    }
     public static void main(String[] args) throws IOException, InterruptedException {
         if (args.length != 2) {
             System.err.println("usage: Server SOCKET SETTINGS");
@@ -128,7 +164,8 @@ public final class Server {
             Thread idle = new Thread(this::stopWhenIdle, "rsaml idle check");
             idle.setDaemon(true);
             idle.start();
-            log.println("rsaml: resident process " + ProcessHandle.current().pid() + " listening on " + socket);
+            HeapLimit.watch();
+            log.println("rsaml: resident process " + ProcessHandle.current().pid() + " listening on " + socket + ", " + how());
             while (true) {
                 try (SocketChannel channel = listener.accept()) {
                     if (!serve(channel)) {
@@ -145,16 +182,24 @@ public final class Server {
         }
     }
 
+    /** How this process was started: by default or on request, its idle time, its heap. */
+    private String how() {
+        return (byDefault ? "started by default for a terminal (RSAML_DAEMON=0 turns that off)" : "started on request")
+                + "; stops after " + spoken(idle) + " without a command; heap at most "
+                + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB";
+    }
+
     private void stopWhenIdle() {
+        long check = Math.max(1_000, Math.min(60_000, idle.toMillis() / 4));
         while (true) {
             try {
-                Thread.sleep(60_000);
+                Thread.sleep(check);
             } catch (InterruptedException e) {
                 return;
             }
             synchronized (this) {
-                if (idleSince != null && Duration.between(idleSince, Instant.now()).compareTo(IDLE) > 0) {
-                    log.println("rsaml: resident process stops after " + IDLE.toHours() + " hours without a command");
+                if (idleSince != null && Duration.between(idleSince, Instant.now()).compareTo(idle) >= 0) {
+                    log.println("rsaml: resident process stops after " + spoken(idle) + " without a command");
                     System.exit(0);
                 }
             }
@@ -189,7 +234,7 @@ public final class Server {
             String status;
             synchronized (this) {
                 status = "rsaml: resident process " + ProcessHandle.current().pid() + " running since " + started + ", "
-                        + commands + " commands run, listening on " + socket + "\n";
+                        + commands + " commands run, listening on " + socket + "\nrsaml: " + how() + "\n";
             }
             if (!strings[0].equals(settings)) {
                 status += "rsaml: it was started with other settings than this command's (another jar, JDK, JVM options,"
@@ -210,17 +255,30 @@ public final class Server {
         String[] args = Arrays.copyOfRange(strings, 2, count);
         // The language server talks on this process's standard input and output, and picocli reads an argument file
         // (@FILE) from the process's working directory: these run in a JVM of their own.
+        // Inputs large for this process's heap run in a JVM of their own, with the JDK's default heap.
+        Path workingDirectory = Path.of(strings[1]);
         if (request != Client.RUN || List.of(args).contains("language-server")
-                || Arrays.stream(args).anyMatch(arg -> arg.startsWith("@"))) {
+                || Arrays.stream(args).anyMatch(arg -> arg.startsWith("@"))
+                || HeapLimit.inputsLarger(workingDirectory, args, Runtime.getRuntime().maxMemory() / 16)) {
             frames.send(Client.DECLINED, new byte[0]);
             frames.flush();
             return true;
         }
         frames.send(Client.ACCEPTED, new byte[0]);
         Command command = new Command(channel, Thread.currentThread());
-        int code = run(command, frames, Path.of(strings[1]), args);
+        long near = HeapLimit.count();
+        int code = run(command, frames, workingDirectory, args);
         if (command.abandoned == null) {
-            frames.exit(code);
+            if (code == OUT_OF_MEMORY || HeapLimit.count() != near) {
+                log.println("rsaml: command " + commands + " came near this process's heap limit ("
+                        + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB): it runs again in a JVM of its own");
+                frames.send(Client.RETRY, new byte[0]);
+                frames.flush();
+                // What the command left is garbage: the next one starts from a collected heap.
+                System.gc();
+            } else {
+                frames.exit(code);
+            }
         }
         return true;
     }
@@ -237,6 +295,9 @@ public final class Server {
             this.thread = thread;
         }
     }
+
+    /** What {@link #run} returns for a command that ended in an {@link OutOfMemoryError}: never an exit code of rsaml's. */
+    private static final int OUT_OF_MEMORY = -1;
 
     /** Runs one command line as a JVM of its own would, its output sent as frames. */
     private int run(Command command, Frames frames, Path workingDirectory, String[] args) {
@@ -258,6 +319,8 @@ public final class Server {
             System.setErr(new PrintStream(err, true));
             watch.start();
             return RsamlCli.run(workingDirectory, args, outWriter, errWriter);
+        } catch (OutOfMemoryError e) {
+            return OUT_OF_MEMORY;
         } catch (RuntimeException | Error e) {
             // RsamlCli.run reports every failure of a command itself: this is the last resort.
             errWriter.println("rsaml: internal error: " + e);
