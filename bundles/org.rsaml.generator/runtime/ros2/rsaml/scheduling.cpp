@@ -22,6 +22,7 @@
 #if defined(__linux__)
 #include <pthread.h>
 #include <sched.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 #endif
 
@@ -71,7 +72,7 @@ int fixed_priority(const Release& release) {
  * Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority; a
  * release of an EDF processor is left on every CPU the process may use (the kernel admits a deadline
  * thread only on every CPU of its root domain) and waits for its first release at its rank, where it
- * asks for SCHED_DEADLINE (Schedule::rsaml_start_deadline). Says which in the trace.
+ * asks for SCHED_DEADLINE (Schedule::rsaml_run_deadline). Says which in the trace.
  */
 void place(Release& release, int core) {
 #if defined(__linux__)
@@ -285,7 +286,7 @@ std::vector<std::string> Schedule::rsaml_configured() {
 
 std::size_t Schedule::rsaml_add_release(const std::string& label, int rank, bool round_robin, std::int64_t deadline_ns,
                                         std::int64_t cost_ns, std::int64_t period_ns, std::int64_t bound_ns, bool edf) {
-  Release r;
+  Release& r = releases_.emplace_back();  // in place: a release's thread state (atomics) never moves
   r.label = label;
   r.rank = rank;
   r.round_robin = round_robin;
@@ -295,7 +296,6 @@ std::size_t Schedule::rsaml_add_release(const std::string& label, int rank, bool
   r.cost_ns = cost_ns;
   r.bound_ns = bound_ns;
   r.group = base_->create_callback_group(rclcpp::CallbackGroupType::MutuallyExclusive, false);
-  releases_.push_back(std::move(r));
   return releases_.size() - 1;
 }
 
@@ -330,11 +330,12 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
   trace(line);
 }
 
-bool Schedule::rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& timer, rclcpp::Time& released) {
+bool Schedule::rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer, const rclcpp::Time& called,
+                                  const std::function<void()>& body) {
   Release& r = releases_[release];
 #if defined(__linux__)
-  // A deadline thread asking again with the same parameters keeps its old periods (a managed node activated
-  // again): it leaves SCHED_DEADLINE first, so that its first period begins now.
+  // A thread still under SCHED_DEADLINE asking again with the same parameters would keep its old periods: it leaves
+  // SCHED_DEADLINE first, so that its first period begins now (the loop below leaves it when it ends).
   if (sched_getscheduler(0) == static_cast<int>(rsaml_realtime::kSchedDeadline)) {
     fixed_priority(r);
   }
@@ -348,15 +349,9 @@ bool Schedule::rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& time
   }
   std::string sched;
   if (refused.empty()) {
-    // The kernel's first period began as it granted the request: the timer is moved onto the same grid, its next call
-    // one period from now, and this job is released where that grid puts it. Each job then ends with sched_yield(),
-    // which gives up the rest of its runtime until the kernel's next period, so the kernel's periods stay the releases.
-    timer.reset();
-    const std::int64_t until = std::max<std::int64_t>(0, timer.time_until_trigger().count());
-    released = clock_->now() + rclcpp::Duration::from_nanoseconds(until - r.period_ns);
     sched = "SCHED_DEADLINE runtime " + ms(r.cost_ns) + " ms deadline " + ms(r.deadline_ns) + " ms period " + ms(r.period_ns) + " ms" +
-            how + ", its periods and its timer's from its first release (asked " +
-            ms(std::max<std::int64_t>(0, (released - asked).nanoseconds())) + " ms before it)" + r.unpinned + " (kernel: " +
+            how + ", its periods from its first release (asked " + ms(std::max<std::int64_t>(0, (asked - called).nanoseconds())) +
+            " ms after it), each job released by the kernel's next period, not by the timer" + r.unpinned + " (kernel: " +
             rsaml_realtime::kernel_policy() + ")";
   } else {
     const int error = fixed_priority(r);
@@ -366,25 +361,59 @@ bool Schedule::rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& time
   {
     std::lock_guard<NodeLock> lock(stats_);
     r.sched = sched;
-    r.deadline_thread = refused.empty();
   }
   trace("sched " + r.label + " " + sched);
-  return refused.empty();
+  if (!refused.empty()) {
+    return false;
+  }
+  r.deadline_tid.store(static_cast<long>(syscall(SYS_gettid)));
+  // Its releases counted from the request, as the C++ runtime's: the kernel's first period began as it granted it (at or a
+  // few microseconds after `asked`), so a response counted from there is never short; every period one more.
+  const rclcpp::Duration period = rclcpp::Duration::from_nanoseconds(r.period_ns);
+  rclcpp::Time released = asked;
+  while (!stopping_.load() && !timer.is_canceled() && rclcpp::ok()) {
+    rsaml_run_job(release, released, clock_->now(), body);
+    released = released + period;
+    // the kernel's next period, unless the job ended past its next release (then the next job starts at once)
+    if (clock_->now() < released) {
+      r.yielding.store(true);
+      if (!stopping_.load()) {
+        sched_yield();  // the rest of its runtime given up: it runs again at the kernel's next period, its next release
+      }
+      r.yielding.store(false);
+    }
+  }
+  // Back at its rank (the kernel's bandwidth given back); a stopped release's timer is cancelled, so that its executor
+  // calls it no more.
+  r.deadline_tid.store(0);
+  fixed_priority(r);
+  if (!timer.is_canceled()) {
+    timer.cancel();
+  }
+  return true;
 #else
   (void)timer;
-  (void)released;
-  (void)r;
+  (void)called;
+  (void)body;
+  {
+    std::lock_guard<NodeLock> lock(stats_);
+    r.sched += " instead of EDF: SCHED_DEADLINE is Linux's";
+  }
   return false;
 #endif
 }
 
-void Schedule::rsaml_end_job(std::size_t release) {
+void Schedule::rsaml_stop_releases() {
+  stopping_.store(true);
 #if defined(__linux__)
-  if (releases_[release].deadline_thread) {
-    sched_yield();  // the rest of its runtime given up: it runs again at the kernel's next period, its next release
+  for (Release& r : releases_) {
+    // stopping_ is set: a thread seen waiting here starts no job when it resumes; its tid is set before it yields
+    const long tid = r.deadline_tid.load();
+    if (r.yielding.load() && tid != 0) {
+      sched_param param{};
+      sched_setscheduler(static_cast<pid_t>(tid), SCHED_OTHER, &param);
+    }
   }
-#else
-  (void)release;
 #endif
 }
 
@@ -533,6 +562,7 @@ void Schedule::rsaml_run_reaction(const std::function<void()>& body) {
 Scheduler::~Scheduler() { stop(); }
 
 void Scheduler::add(Schedule& node) {
+  nodes_.push_back(&node);
   for (Release& r : node.rsaml_releases()) {
     serve(r, node);
   }
@@ -556,6 +586,10 @@ void Scheduler::serve(Release& jobs, Schedule& node) {
 }
 
 void Scheduler::stop() {
+  for (Schedule* node : nodes_) {
+    node->rsaml_stop_releases();  // the EDF release loops, which never return to their executors, end first
+  }
+  nodes_.clear();
   for (auto& w : workers_) {
     while (!w->executor->is_spinning() && rclcpp::ok()) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));

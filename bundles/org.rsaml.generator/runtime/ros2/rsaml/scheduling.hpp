@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -99,7 +100,8 @@ struct Release : Jobs {
   int rank = 1;
   bool round_robin = false;
   bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
-  bool deadline_thread = false;  // its thread under SCHED_DEADLINE (its executor thread's own, from its timer's first call)
+  std::atomic<long> deadline_tid{0};  // its thread's id while it runs as a deadline thread (rsaml_run_deadline), else 0
+  std::atomic<bool> yielding{false};  // a deadline thread waiting in sched_yield() for its next period
   std::string unpinned;          // an EDF release's thread left on every core: said in its sched line
   bool realtime = true;  // false: the data thread of aperiodic reactions, at the default priority
   std::int64_t period_ns = 0;
@@ -173,6 +175,12 @@ class Schedule {
   /** The node's data arrivals as the executor thread that serves them sees them (rank 0), or null when it has none. */
   Release* rsaml_data() { return data_.get(); }
   const rclcpp::node_interfaces::NodeBaseInterface::SharedPtr& rsaml_base() const { return base_; }
+  /**
+   * Stops the node's EDF release loops (rsaml_run_deadline), before its executor threads are stopped: a loop starts
+   * no job after it, and a deadline thread waiting for its next period is let go at once (made a normal thread), so
+   * that the process stops without waiting a period.
+   */
+  void rsaml_stop_releases();
 
  protected:
   /**
@@ -192,20 +200,17 @@ class Schedule {
   template <typename BodyT>
   rclcpp::TimerBase::SharedPtr rsaml_add_timer(std::size_t release, std::int64_t period_ns, BodyT body) {
 #if RCLCPP_VERSION_GTE(28, 0, 0)
-    // The timer itself, for its first call on an EDF release's thread (rsaml_start_deadline moves it onto the kernel's periods).
+    // The timer itself, for its first call on an EDF release's thread (rsaml_run_deadline runs the release from there).
     auto self = std::make_shared<TimerOf>();
     auto timer = rclcpp::create_timer(
         base_, timers_, clock_, rclcpp::Duration::from_nanoseconds(period_ns),
         [this, release, period_ns, body, self](const rclcpp::TimerInfo& info) {
           rclcpp::TimerBase::SharedPtr me;
-          rclcpp::Time released = info.expected_call_time;
-          if (releases_[release].edf && self->first(me) && this->rsaml_start_deadline(release, *me, released)) {
-            this->rsaml_run_job(release, released, released, body);
-          } else {
-            this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
-            this->rsaml_count_dropped(release, period_ns, info.expected_call_time, info.actual_call_time);
+          if (releases_[release].edf && self->first(me) && this->rsaml_run_deadline(release, *me, info.expected_call_time, body)) {
+            return;  // the release ran as a deadline thread until its timer was cancelled or the node stopped
           }
-          this->rsaml_end_job(release);
+          this->rsaml_run_job(release, info.expected_call_time, info.actual_call_time, body);
+          this->rsaml_count_dropped(release, period_ns, info.expected_call_time, info.actual_call_time);
         },
         releases_[release].group);
     self->set(timer);
@@ -230,16 +235,20 @@ class Schedule {
    */
   void rsaml_count_dropped(std::size_t release, std::int64_t period_ns, const rclcpp::Time& expected, const rclcpp::Time& called);
   /**
-   * An EDF release's timer, at its first call, on the release's own executor thread: asks for SCHED_DEADLINE
-   * (runtime = the modeled cost, the modeled deadline and period, reclaiming unreserved bandwidth), whose first
-   * period begins there, and moves the timer onto the kernel's periods (its next call one period on); `released`
-   * becomes this job's release on that grid. Where the kernel refuses, the thread stays at the release's rank and
-   * its sched line says `instead of EDF` and why (false). A managed node's timers are made anew on activation, and
-   * their first call does the same again.
+   * An EDF release, from its timer's first call (`called`, its expected call time), on the release's own executor
+   * thread: asks for SCHED_DEADLINE (runtime = the modeled cost, the modeled deadline and period, reclaiming
+   * unreserved bandwidth), whose first period begins there, and then runs the release's jobs in a loop, as the C++
+   * runtime's release thread does: each job ends with sched_yield(), which gives up the rest of its runtime until the
+   * kernel's next period, its next release; a job that ends past its next release starts the next one at once. The
+   * thread never goes back to wait for its timer, so it never sleeps between jobs and no wake-up rule of the kernel
+   * (for deadlines shorter than periods, the runtime it would shorten) applies. Its jobs are released on the
+   * kernel's grid from the request (its sched line says how long after `called` it asked). The loop ends when the timer is cancelled (a
+   * managed node deactivated: a job in progress finishes, none starts) or the node's releases stop
+   * (rsaml_stop_releases); the thread then leaves SCHED_DEADLINE for its rank, and a managed node activated again
+   * asks anew at its new timer's first call. Where the kernel refuses, the thread stays at the release's rank, its
+   * sched line says `instead of EDF` and why, and its timer releases its jobs (false).
    */
-  bool rsaml_start_deadline(std::size_t release, rclcpp::TimerBase& timer, rclcpp::Time& released);
-  /** After each job of a release: a deadline thread gives up the rest of its runtime (sched_yield) until its next period. */
-  void rsaml_end_job(std::size_t release);
+  bool rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer, const rclcpp::Time& called, const std::function<void()>& body);
   /** A timer as its own callback sees it: set once created, taken on its first call only. */
   class TimerOf {
    public:
@@ -343,6 +352,7 @@ class Schedule {
   // Set under stats_ when the summary is written: a job done after it is neither counted nor said, so
   // that the summary's misses and the miss lines are the same jobs.
   bool summarized_ = false;
+  std::atomic<bool> stopping_{false};  // set by rsaml_stop_releases(): the EDF release loops end
   std::deque<Release> releases_;
   std::deque<Arrivals> arrivals_;
   std::unique_ptr<Jobs> reactions_;  // null when the node does not react to data
@@ -381,6 +391,7 @@ class Scheduler {
     std::thread thread;
   };
   void serve(Release& jobs, Schedule& node);
+  std::vector<Schedule*> nodes_;
   std::vector<std::unique_ptr<Worker>> workers_;
 };
 

@@ -286,18 +286,9 @@ public final class TimingAnalysis {
                         + " kernel's periods are its releases, and there the verdict is claimed for the program granted that,"
                         + " within the limits docs/timing.md (EDF) states: what was measured, on how many CPUs, and a clock that"
                         + " a time service slews. The ROS 2 nodes do the same on each release's own executor thread: at its"
-                        + " timer's first call the thread becomes a deadline thread and the timer is moved onto the kernel's"
-                        + " periods, and every job ends by yielding; there the verdict is claimed as on the C++ runtime, for"
-                        + " deadlines equal to periods (docs/timing.md, EDF)");
-                List<String> constrained = tasks.stream().filter(t -> !t.kind().equals("reaction") && t.task().deadline() < t.task().period())
-                        .map(t -> t.task().name()).toList();
-                if (!constrained.isEmpty()) {
-                    notes.add(String.join(", ", constrained) + (constrained.size() == 1 ? " has a deadline" : " have deadlines")
-                            + " shorter than the period: on ROS 2 the verdict is not claimed for such a release: its executor thread"
-                            + " resumes at the kernel's period and wakes again for the timer a few microseconds into it, which Linux's"
-                            + " wake-up rule for such deadlines answers by shortening the runtime it grants, not measured there; the"
-                            + " C++ runtime's release thread does not wait again and is held to the deadline (docs/timing.md, EDF)");
-                }
+                        + " timer's first call the thread becomes a deadline thread and runs the release's jobs from there, every"
+                        + " job ending by yielding, without waiting for the timer again; there the verdict is claimed as on the"
+                        + " C++ runtime, deadlines shorter than periods included (docs/timing.md, EDF)");
                 if (element != null && element.getCore() >= 0) {
                     notes.add("core " + element.getCore() + " does not hold EDF: Linux admits a SCHED_DEADLINE thread only on every CPU of its"
                             + " root domain, so the C++ runtime runs this processor's releases on every core of the machine (not core "
