@@ -5,8 +5,11 @@
 # CPU times, each with its ratio to java -version's of the same JDK (on a shared machine the CPU ratio is the
 # steadier one), and the load average before and after.
 # The rows marked "resident process" run ./rsaml with RSAML_DAEMON=1, served by a resident process started before
-# the runs (./rsaml daemon start) and stopped after: their CPU is the client's process alone; the resident process's
-# own CPU per command, read from /proc before and after the runs, is printed below the table.
+# the runs (./rsaml daemon start, with the heap of one started by default: RSAML_DAEMON_HEAP=1g) and stopped after:
+# their CPU is the client's process alone; the resident process's own CPU per command, read from /proc before and
+# after the runs, is printed below each. The rows marked "at a terminal" run under util-linux script, which gives
+# the command a terminal as when typed: there ./rsaml uses the resident process by default, and with CI=true a JVM
+# of its own; their floor is java -version under script too (script's own cost is in both).
 # Usage: releng/org.rsaml.bench/startup.sh [runs]
 # RSAML_BENCH_JDKS: more JDKs (their homes, separated by spaces) to run ./rsaml with beside the java on the PATH,
 # e.g. RSAML_BENCH_JDKS=/usr/lib/jvm/temurin-25-jdk-amd64 (./rsaml then uses that JDK's AOT cache).
@@ -33,7 +36,7 @@ fi
 # resident JDK_HOME: starts the resident process of that JDK (or of the java on the PATH) and prints its process id.
 resident() {
   local status
-  status="$(env ${1:+JAVA_HOME=$1} ./rsaml daemon start)"
+  status="$(env ${1:+JAVA_HOME=$1} RSAML_DAEMON_HEAP=1g ./rsaml daemon start)"
   [[ "$status" =~ resident\ process\ ([0-9]+)\ running ]] || { echo "startup.sh: no resident process: $status" >&2; exit 2; }
   echo "${BASH_REMATCH[1]}"
 }
@@ -48,6 +51,14 @@ commands=(-n 'java -version (the floor)' 'java -version'
   -n 'java -jar rsaml.jar validate (no tuning)' "java -jar cli/org.rsaml.cli/target/rsaml.jar validate $model"
   -n './rsaml --version' './rsaml --version')
 [ -z "$baseline" ] || commands+=(-n 'baseline: ./rsaml validate' "$baseline/rsaml validate $model")
+# terminal [JDK_HOME] [SUFFIX]: the rows at a terminal, after the others of their JDK (their own floor first).
+terminal() {
+  local env="env${1:+ JAVA_HOME=$1}"
+  commands+=(-n "java -version at a terminal (the floor of the terminal rows)$2" "script -qec '${1:+$1/bin/}java -version' /dev/null"
+    -n "./rsaml validate at a terminal (by default: resident process)$2" "script -qec '$env ./rsaml validate $model' /dev/null"
+    -n "./rsaml validate at a terminal, CI=true (a JVM of its own)$2" "script -qec '$env CI=true ./rsaml validate $model' /dev/null")
+}
+terminal "" ""
 for jdk in ${RSAML_BENCH_JDKS:-}; do
   JAVA_HOME="$jdk" ./rsaml validate "$model" >/dev/null || true
   v="$(sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$jdk/release" 2>/dev/null)"
@@ -60,6 +71,7 @@ for jdk in ${RSAML_BENCH_JDKS:-}; do
     JAVA_HOME="$jdk" "$baseline/rsaml" validate "$model" >/dev/null || true
     commands+=(-n "baseline: ./rsaml validate, Java ${v:-?}" "env JAVA_HOME=$jdk $baseline/rsaml validate $model")
   fi
+  terminal "$jdk" ", Java ${v:-?}"
 done
 out="$(mktemp)"
 echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo '?')"
@@ -71,6 +83,10 @@ python3 - "$out" "$((runs + 3))" "$(getconf CLK_TCK)" $served <<'PY'
 import json, sys
 results = json.load(open(sys.argv[1]))["results"]
 commands, tick, served = int(sys.argv[2]), int(sys.argv[3]), [int(t) for t in sys.argv[4:]]
+# Each JDK's resident process serves two rows (RSAML_DAEMON=1, and at a terminal by default): its CPU is shared out.
+rows = sum("resident process" in r["command"] for r in results)
+per = rows // max(len(served), 1) or 1
+seen = 0
 print("| command | median (wall) | ÷ java -version | CPU (user + system, mean) | ÷ java -version | mean ± σ | min | max |")
 print("|---|---:|---:|---:|---:|---:|---:|---:|")
 for r in results:
@@ -81,7 +97,8 @@ for r in results:
     print(f"| {r['command']} | {ms(r['median'])} | {r['median'] / floor:.1f}× | {ms(cpu)} | {cpu / cpu_floor:.1f}× "
           f"| {ms(r['mean'])} ± {r['stddev'] * 1000:,.0f} | {ms(r['min'])} | {ms(r['max'])} |")
     if "resident process" in r["command"]:
-        server = served.pop(0) / tick / commands   # the resident process's CPU per command, not in the row
+        server = served[seen // per] / tick / (commands * per)   # the resident process's CPU per command, not in the row
+        seen += 1
         print(f"| … its resident process's own CPU per command (not in the row above), and the two together "
               f"| | | {ms(server)} | {server / cpu_floor:.1f}× | {ms(cpu + server)}: {(cpu + server) / cpu_floor:.1f}× | | |")
 PY
