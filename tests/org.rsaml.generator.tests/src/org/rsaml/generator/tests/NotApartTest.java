@@ -21,7 +21,8 @@ import org.rsaml.validation.ModelLoader;
  * {@link PlatformCheck#notApart}, the one rule by which {@link JobTimingTest} (C++) and {@link Ros2LaunchTest} (ROS 2)
  * leave a release's bound unchecked because its threads do not have a CPU to themselves on the machine, as each target
  * places them: a core the machine lacks, the modules without a core of several hosts, EDF deadline threads on every
- * core, the modules without a core (kept to the unclaimed cores by the C++ program, on every CPU on ROS 2).
+ * core, the modules without a core (kept to the cores no processor claims by both: the C++ program's threads, the ROS 2
+ * launch's processes), two processors without a core.
  */
 class NotApartTest {
 
@@ -85,27 +86,41 @@ class NotApartTest {
     }
 
     @Test
-    void theModulesWithoutACoreShareTheUnclaimedCoresInCppButEveryCpuOnRos2(@TempDir Path tmp) throws Exception {
-        // a pinned to core 1, b and c on no processor
+    void theModulesWithoutACoreHaveTheCoresNoProcessorClaimsOnBothTargets(@TempDir Path tmp) throws Exception {
+        // a pinned to core 1, b and c on no processor: on both targets kept off core 1 (C++: their threads; ROS 2: their
+        // container's taskset), so each processor has CPUs no other's threads use
         Architecture arch = model(tmp, THREE, processor("cpu1", "core=\"1\"", "a"));
-        // C++: b and c kept on the one unclaimed core, a alone on core 1
-        assertNull(PlatformCheck.notApart(arch, module(arch, "a"), CPP, 2));
-        assertNull(PlatformCheck.notApart(arch, module(arch, "b"), CPP, 2));
-        assertEquals("it has no core of its own and shares 2 cores", PlatformCheck.notApart(arch, module(arch, "b"), CPP, 3));
         Architecture claimed = model(tmp, THREE, processor("cpu0", "core=\"0\"", "a") + processor("cpu1", "core=\"1\"", "b"));
-        assertEquals("no core is left for the modules without one, so they run on every core", PlatformCheck.notApart(claimed, module(claimed, "a"), CPP, 2));
-        assertNull(PlatformCheck.notApart(claimed, module(claimed, "a"), CPP, 3));
-        // ROS 2: their processes are not confined, so they share core 1 with a
-        assertEquals("the threads of the modules without a core run on every CPU on ROS 2, this one's included",
-                PlatformCheck.notApart(arch, module(arch, "a"), ROS2, 2));
-        assertEquals("it has no core of its own: on ROS 2 its threads run on every CPU (2), the pinned processors' included",
-                PlatformCheck.notApart(arch, module(arch, "b"), ROS2, 2));
-        // no processor at all: one CPU is the analysis's own, two are not
         Architecture none = model(tmp, TWO, "");
-        assertNull(PlatformCheck.notApart(none, module(none, "a"), ROS2, 1));
-        assertNull(PlatformCheck.notApart(none, module(none, "a"), CPP, 1));
-        assertEquals("it has no core of its own: on ROS 2 its threads run on every CPU (2)", PlatformCheck.notApart(none, module(none, "a"), ROS2, 2));
-        assertEquals("it has no core of its own and shares 2 cores", PlatformCheck.notApart(none, module(none, "a"), CPP, 2));
+        for (PlatformCheck.Placement target : PlatformCheck.Placement.values()) {
+            assertNull(PlatformCheck.notApart(arch, module(arch, "a"), target, 2), target.name());
+            assertNull(PlatformCheck.notApart(arch, module(arch, "b"), target, 2), target.name());
+            // b and c on the two cores left of three
+            assertNull(PlatformCheck.notApart(arch, module(arch, "b"), target, 3), target.name());
+            // every core claimed: c runs on every one, a's and b's included
+            assertEquals("no core is left for the modules without one, so they run on every core", PlatformCheck.notApart(claimed, module(claimed, "a"),
+                    target, 2), target.name());
+            assertEquals("it has no core of its own and no core is left for it, so it runs on every core, the processors' included",
+                    PlatformCheck.notApart(claimed, module(claimed, "c"), target, 2), target.name());
+            assertNull(PlatformCheck.notApart(claimed, module(claimed, "a"), target, 3), target.name());
+            assertNull(PlatformCheck.notApart(claimed, module(claimed, "c"), target, 3), target.name());
+            // no processor at all: the 'default' processor's threads alone on every CPU
+            assertNull(PlatformCheck.notApart(none, module(none, "a"), target, 1), target.name());
+            assertNull(PlatformCheck.notApart(none, module(none, "a"), target, 2), target.name());
+        }
+    }
+
+    @Test
+    void twoProcessorsWithoutACoreShareTheCoresLeft(@TempDir Path tmp) throws Exception {
+        // a pinned to core 1, b on a processor without a core, c on none ('default'): b and c on the same CPUs
+        Architecture arch = model(tmp, THREE, processor("cpu1", "core=\"1\"", "a") + processor("free", "", "b"));
+        for (PlatformCheck.Placement target : PlatformCheck.Placement.values()) {
+            assertNull(PlatformCheck.notApart(arch, module(arch, "a"), target, 3), target.name());
+            for (String m : new String[] {"b", "c"}) {
+                assertEquals("it has no core of its own and shares the CPUs no processor claims with the modules of processors [default, free],"
+                        + " which have none either", PlatformCheck.notApart(arch, module(arch, m), target, 3), target + " " + m);
+            }
+        }
     }
 
     @Test

@@ -990,14 +990,16 @@ final class PlatformCheck {
     /** Where a target runs the threads of a processor that the model gives no CPU of its own (docs/timing.md, "Other machines"). */
     enum Placement {
         /**
-         * The C++ program: a processor's core pins its threads ({@link OneMachineCpus}); the threads of the modules without
-         * one are kept to the cores no processor claims; every EDF release is left on every core (the kernel admits a
-         * deadline thread only there).
+         * The C++ program: a processor's core pins its threads ({@link OneMachineCpus}); where some processor claims a core,
+         * the threads of the modules without one are kept to the cores no processor claims; every EDF release of a
+         * processor with a core is left on every core (the kernel admits a deadline thread only there).
          */
         CPP,
         /**
          * A ROS 2 launch without host:=: a processor's core pins its processes with taskset ({@link OneMachineCpus}), its
-         * EDF releases included; the processes of the modules without a core are not confined, their threads run on every CPU.
+         * EDF releases included; where some processor claims a core, the processes of the processors without one are kept
+         * to the CPUs no processor claims by the same rule ({@link OneMachineCpus#claimed}), but for an EDF processor's,
+         * which run on every CPU (the kernel admits their deadline threads only there).
          */
         ROS2
     }
@@ -1008,26 +1010,26 @@ final class PlatformCheck {
     }
 
     /**
-     * Null when the threads of {@code module}'s releases and reactions have a CPU to themselves on a machine of
-     * {@code cpus} CPUs under {@code target}, as the analysis of their processor assumes; else why not, for the report of
-     * the releases whose bounds a test leaves unchecked. Not apart: the threads of a processor whose core the machine
-     * lacks run anywhere, so no processor's do; the modules without a core of several hosts share CPUs the analysis counts
-     * apart; the deadline threads of another EDF processor run on every core. A processor with a core (on its CPU
-     * here) is apart unless threads of the modules without one may run there (C++: no core left unclaimed for them; ROS 2:
-     * any). A module without a core is apart when its threads get exactly one CPU that no other processor's use (C++: one
-     * unclaimed core), or, on ROS 2, when its processor is an EDF one, whose deadline threads run on every CPU above every
-     * fixed-priority thread.
+     * Null when the threads of {@code module}'s releases and reactions have CPUs that no other processor's threads use on
+     * a machine of {@code cpus} CPUs under {@code target}, as the analysis of their processor assumes (a processor with a
+     * core: that CPU alone; the one processor without a core: the CPUs no processor claims, one or more); else why not,
+     * for the report of the releases whose bounds a test leaves unchecked. Not apart: the threads of a processor whose core
+     * the machine lacks run anywhere, so no processor's do; the modules without a core of several hosts, or of two
+     * processors (the 'default' one counted), share the CPUs left; the deadline threads of another EDF processor run on
+     * every CPU it may use (C++: all, for a processor with a core too; ROS 2: a processor without a core); where every CPU
+     * is claimed, the modules without a core run on every one, the claimed ones included. A processor without a core is
+     * apart on ROS 2 as an EDF processor, whose deadline threads run on every CPU above every fixed-priority thread.
      */
     static String notApart(Architecture arch, Module module, Placement target, int cpus) {
         Map<Processor, Integer> cpuOf = OneMachineCpus.of(arch);
-        boolean coreless = false;
         Set<String> corelessHosts = new java.util.TreeSet<>();
+        Set<String> corelessProcessors = new java.util.TreeSet<>(); // with modules, 'default' for the modules no processor names
         for (Layer layer : arch.getLayers()) {
             for (Module m : layer.getModules()) {
                 Processor p = processorOf(arch, m);
                 if (p == null || p.getCore() < 0) {
-                    coreless = true;
                     corelessHosts.add(RsamlLabels.host(p).isEmpty() ? "main" : RsamlLabels.host(p));
+                    corelessProcessors.add(p == null ? "default" : p.getName());
                 } else {
                     int cpu = cpuOf.get(p);
                     if (cpu >= cpus) {
@@ -1048,21 +1050,23 @@ final class PlatformCheck {
                 return "the deadline threads of EDF processor " + q.getName() + " run on every core";
             }
         }
-        int unclaimed = cpus - new HashSet<>(cpuOf.values()).size();
+        int claimed = new HashSet<>(cpuOf.values()).size();
+        int unclaimed = cpus - claimed;
+        boolean coreless = !corelessProcessors.isEmpty();
         if (p != null && p.getCore() >= 0) {
-            if (target == Placement.ROS2) {
-                return coreless ? "the threads of the modules without a core run on every CPU on ROS 2, this one's included" : null;
-            }
             return coreless && unclaimed == 0 ? "no core is left for the modules without one, so they run on every core" : null;
         }
-        if (target == Placement.ROS2) {
-            if (edf) {
-                return null;
-            }
-            return cpus == 1 && cpuOf.isEmpty() ? null : "it has no core of its own: on ROS 2 its threads run on every CPU (" + cpus + ")"
-                    + (cpuOf.isEmpty() ? "" : ", the pinned processors' included");
+        if (target == Placement.ROS2 && edf) {
+            return null;
         }
-        return unclaimed == 1 ? null : "it has no core of its own and shares " + unclaimed + " cores";
+        if (corelessProcessors.size() > 1) {
+            return "it has no core of its own and shares the CPUs no processor claims with the modules of processors "
+                    + corelessProcessors + ", which have none either";
+        }
+        if (claimed > 0 && unclaimed == 0) {
+            return "it has no core of its own and no core is left for it, so it runs on every core, the processors' included";
+        }
+        return null;
     }
 
     /** The processor that runs {@code m}, or null (the modules no processor names). */

@@ -24,7 +24,7 @@ import org.rsaml.validation.ModelLoader;
 /**
  * What the generated ROS 2 packages' launch files and build do on a real ROS 2 ({@link Ros2Jazzy}),
  * apart from running a system ({@link Ros2LaunchTest}): host:= starts only one host's containers or
- * nodes, the launch prefixes pin each to its CPU, an invalid parameters file is refused with its
+ * nodes, the launch prefixes pin each to its CPU (those of a processor without a core to the CPUs no processor claims), an invalid parameters file is refused with its
  * line, and the package's own launch test passes under colcon test where ROS 2 has launch_testing.
  */
 class Ros2LaunchFilesTest {
@@ -192,6 +192,93 @@ class Ros2LaunchFilesTest {
                 + "_processes.launch.py") + "' '' '" + params + "'").toArray(String[]::new));
         assertTrue(processes.contains("navigation_obstacle_detector 1") && processes.contains("control_velocity_controller 0"),
                 "without host:=, the board's nodes on CPU 1, the main host's on CPU 0:\n" + processes);
+    }
+
+    /**
+     * The processes of a processor without a core, placed as the C++ program places the threads of its modules: on the
+     * CPUs no processor claims (OneMachineCpus.claimed), saying so; where every CPU is claimed, where the operating system
+     * puts them, saying that. mobile-base-latency with its navigation processor's core taken away: its container (and,
+     * in the other launch file, each of its nodes' processes) runs on the CPUs this machine leaves beside core 0. ROS 2's
+     * launch evaluates the prefixes, which are run and print the CPUs each process may use.
+     */
+    @Test
+    void theProcessesOfAProcessorWithoutACoreRunOnTheCpusNoProcessorClaims(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        String allowed = Tools.ok(tmp, 60, "sh", "-c", "grep Cpus_allowed_list /proc/self/status").strip().replaceFirst(".*\\s", "");
+        java.util.TreeSet<Integer> cpus = cpuSet(allowed);
+        Assumptions.assumeTrue(cpus.size() >= 2 && cpus.contains(0), "one CPU, or no CPU 0: no CPU left beside core 0 (" + allowed + ")");
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        String nav = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
+        assertTrue(text.contains(nav), "the example has the navigation processor on core 1");
+        Path model = tmp.resolve("coreless.rsaml");
+        Files.writeString(model, text.replace(nav, "<processors name=\"core1\" description=\"Navigation, on no core of its own.\""));
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        String pkg = Names.snake(ModelLoader.load(model, "coreless.rsaml").architecture().getName());
+        Path script = tmp.resolve("pinned.py");
+        Files.writeString(script, PINNED);
+        String params = src.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
+        cpus.remove(0);
+        String left = cpuList(cpus);
+        String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py") + "' '' '"
+                + params + "'").toArray(String[]::new));
+        List<String> lines = out.lines().filter(l -> l.startsWith(pkg + "_")).map(String::strip).sorted().toList();
+        assertEquals(pkg + "_core0_container 0\n" + pkg + "_core1_container " + left + " RsaML: cpu " + pkg + "_core1_container cores " + left
+                + " unclaimed", String.join("\n", lines), "core 0's container on CPU 0, the other on the CPUs left, saying so:\n" + out);
+        String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
+                + "_processes.launch.py") + "' '' '" + params + "'").toArray(String[]::new));
+        assertTrue(processes.contains("navigation_path_planner " + left + " RsaML: cpu navigation_path_planner cores " + left + " unclaimed")
+                && processes.contains("control_velocity_controller 0"), "the navigation nodes on the CPUs left beside core 0:\n" + processes);
+        if (!allowed.equals("0-1")) {
+            return; // every CPU claimed: shown on two CPUs
+        }
+        // every CPU claimed (core 0 and core 1), the path planner on no processor: where the operating system puts it, said
+        String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']";
+        assertTrue(text.contains(planner + "\"/>"), "the path planner is on core 1");
+        Path claimed = tmp.resolve("claimed.rsaml");
+        Files.writeString(claimed, text.replace(planner + "\"/>", "\"/>"));
+        Path src2 = tmp.resolve("src2");
+        new RsamlGenerator().generate(claimed, Target.ROS2, src2, false);
+        String params2 = src2.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
+        String every = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src2.resolve(pkg + "/launch/" + pkg + ".launch.py") + "' '' '"
+                + params2 + "'").toArray(String[]::new));
+        assertTrue(every.contains(pkg + "_container 0-1 RsaML: cpu " + pkg + "_container no unclaimed core: default (the processors claim CPUs 0-1: it runs"
+                + " on them)"), "the modules no processor names on every CPU, saying so:\n" + every);
+    }
+
+    /** CPUs as Linux lists them ("0-3,6"). */
+    private static java.util.TreeSet<Integer> cpuSet(String list) {
+        java.util.TreeSet<Integer> cpus = new java.util.TreeSet<>();
+        for (String part : list.split(",")) {
+            String[] ends = part.split("-");
+            for (int c = Integer.parseInt(ends[0]); c <= Integer.parseInt(ends[ends.length - 1]); c++) {
+                cpus.add(c);
+            }
+        }
+        return cpus;
+    }
+
+    /** CPUs as taskset and Linux list them: 0-3,6. */
+    private static String cpuList(java.util.SortedSet<Integer> cpus) {
+        StringBuilder out = new StringBuilder();
+        Integer from = null;
+        Integer to = null;
+        for (int c : cpus) {
+            if (to != null && c == to + 1) {
+                to = c;
+                continue;
+            }
+            if (from != null) {
+                out.append(out.length() == 0 ? "" : ",").append(from.equals(to) ? "" + from : from + "-" + to);
+            }
+            from = c;
+            to = c;
+        }
+        if (from != null) {
+            out.append(out.length() == 0 ? "" : ",").append(from.equals(to) ? "" + from : from + "-" + to);
+        }
+        return out.toString();
     }
 
     /**

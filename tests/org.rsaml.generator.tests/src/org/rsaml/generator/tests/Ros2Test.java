@@ -330,7 +330,9 @@ class Ros2Test {
      * The model's deployment in the launch files: the nodes of the modules one processor runs share
      * a container of their own, the modules no processor names share the package's container, and
      * the processes of a processor with a core (its container, or its nodes' processes) start under
-     * taskset on that core; nothing else is pinned.
+     * taskset on that core; where some processor claims a core, those of the modules without one (but an
+     * EDF processor's) start under taskset on the CPUs no processor claims ({@link OneMachineCpus#claimed}, the
+     * C++ program's rule); nothing else is confined.
      */
     private static void assertDeployed(Architecture arch, String pkg, Path root, String composed, String processes) throws Exception {
         Map<String, String> containerOf = new TreeMap<>();
@@ -350,6 +352,7 @@ class Ros2Test {
         Map<Object, String> containerOfProcessor = new HashMap<>();
         Map<String, Object> processorOfContainer = new TreeMap<>();
         Set<String> pinned = new TreeSet<>();
+        java.util.SortedSet<Integer> claimed = org.rsaml.generator.internal.cxx.OneMachineCpus.claimed(arch).get("");
         for (Layer layer : arch.getLayers()) {
             for (Module m : layer.getModules()) {
                 String node = nodesByModule.get(key(m));
@@ -369,6 +372,15 @@ class Ros2Test {
                     for (String process : List.of(c, node)) {
                         assertNotNull(prefixes.get(process), "process " + process + " of processor " + processor.getName() + " is not pinned");
                         assertRunsOn(root, prefixes.get(process), processor.getCore());
+                        pinned.add(process);
+                    }
+                }
+                boolean edf = processor != null && processor.isSetSchedPolicy() && processor.getSchedPolicy() == org.rsaml.model.SchedulingPolicy.EDF;
+                if ((processor == null || processor.getCore() < 0) && !edf && !claimed.isEmpty()) {
+                    for (String process : List.of(c, node)) {
+                        assertNotNull(prefixes.get(process), "process " + process + " of a module without a core is not kept off the claimed CPUs "
+                                + claimed);
+                        assertRunsOff(root, prefixes.get(process), claimed, process);
                         pinned.add(process);
                     }
                 }
@@ -395,6 +407,28 @@ class Ros2Test {
         } else {
             assertEquals(everywhere, where, ran);
             assertTrue(ran.contains("RsaML: CPU core " + core + " not available: python3 runs unpinned"), ran);
+        }
+    }
+
+    /**
+     * Runs a command under the launch prefix of process {@code process} of a processor without a core and checks where
+     * it runs: on the CPUs this machine gives it that {@code claimed} leaves, saying so; where it leaves none, where it
+     * would have run anyway, saying that.
+     */
+    private static void assertRunsOff(Path dir, String prefix, java.util.SortedSet<Integer> claimed, String process) throws Exception {
+        String everywhere = Tools.ok(dir, 60, "python3", "-c", AFFINITY).strip();
+        List<Integer> left = java.util.Arrays.stream(everywhere.replaceAll("[\\[\\] ]", "").split(",")).map(Integer::valueOf)
+                .filter(c -> !claimed.contains(c)).toList();
+        String ran = Tools.ok(dir, 60, "python3", "-c", "import shlex, subprocess, sys\n"
+                + "sys.exit(subprocess.call(shlex.split(sys.argv[1]) + sys.argv[2:]))", prefix, "python3", "-c", AFFINITY).strip();
+        List<String> lines = ran.lines().toList();
+        String where = lines.get(lines.size() - 1);
+        if (left.isEmpty()) {
+            assertEquals(everywhere, where, ran);
+            assertTrue(ran.contains("RsaML: cpu " + process + " no unclaimed core: default"), ran);
+        } else {
+            assertEquals(left.toString(), where, ran);
+            assertTrue(ran.matches("(?s).*RsaML: cpu " + java.util.regex.Pattern.quote(process) + " cores [0-9,-]+ unclaimed\\b.*"), ran);
         }
     }
 

@@ -44,7 +44,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 			# analysis's real-time priority, each node's data arrivals on one at priority 0 of the analysis; see the README):
 			«IF rosNames.containers.exists[processor !== null]»
 				# one container (one process) per processor of the model's deployment, pinned with taskset to
-				# the processor's core where the model names one«IF rosNames.containers.exists[processor === null]», and one for the modules no processor names«ENDIF».
+				# the processor's core where the model names one«IF rosNames.containers.exists[processor === null]», and one for the modules no processor names«ENDIF»«IF unclaimedUsed»;
+				# the processes of the processors without a core on the CPUs no processor claims, as the C++ program's threads«ENDIF».
 			«ELSE»
 				# all in one process.
 			«ENDIF»
@@ -53,13 +54,16 @@ class Ros2LaunchTemplate extends Ros2Template {
 			# «pkg»_processes.launch.py starts a process per node instead. Arguments:
 		«ELSE»
 			# Starts every module of the architecture as a node in a process of its own«IF rosNames.containers.exists[core >= 0]», pinned with
-			# taskset to the core of its processor where the model names one«ENDIF». Arguments:
+			# taskset to the core of its processor where the model names one«IF unclaimedUsed» (else on the CPUs no processor claims)«ENDIF»«ENDIF». Arguments:
 		«ENDIF»
 		# namespace:=NS (all nodes and topics under NS), use_sim_time:=true, simulated_load:=0.9 (every
 		# timed job busy-works 90 % of its modeled execution time)«IF hosted», host:=NAME (only the nodes of
 		# the processors on host NAME; main: those without a host; empty, the default: every node)«ENDIF»«IF !rosNames.topicArguments.empty»;
 		# for each topic the model names, «rosNames.topicArguments.values.head»:=NAME and the like (the topic takes that name)«ENDIF»;
 		# params_file:=PATH (the nodes' parameters; default: config/«pkg».params.yaml of this package).
+		«IF unclaimedUsed»
+			import os
+		«ENDIF»
 		import re
 
 		import yaml
@@ -166,8 +170,48 @@ class Ros2LaunchTemplate extends Ros2Template {
 		    return of
 
 
+		«IF unclaimedUsed»
+			# The CPUs the processors with a core claim, by the host argument ('': one machine starts every host, each host's
+			# cores on CPUs of their own, as the C++ program; a host's name: its cores). As the C++ program keeps the threads of
+			# the modules without a core off them, the processes of the processors without a core run on the CPUs left.
+			CLAIMED = {«FOR e : OneMachineCpus.claimed(plan.architecture).entrySet.filter[hosted || key.empty] SEPARATOR ", "»«py(e.key)»: [«FOR c : e.value SEPARATOR ", "»«c»«ENDFOR»]«ENDFOR»}
+
+
+			def cpu_list(cpus):
+			    """CPUs as a short list, as taskset takes them: 0-3,6."""
+			    runs = []
+			    for cpu in sorted(cpus):
+			        if runs and runs[-1][1] == cpu - 1:
+			            runs[-1][1] = cpu
+			        else:
+			            runs.append([cpu, cpu])
+			    return ','.join(str(a) if a == b else '%d-%d' % (a, b) for a, b in runs)
+
+
+			def unclaimed(name, host):
+			    """The launch prefix of process `name`, of a processor without a core: as the C++ program places the threads of
+			    the modules without a core, it runs on the CPUs this launch may use that no processor claims (taskset, every thread
+			    it starts included) and says so; where no processor claims a CPU, where the operating system puts it (no prefix);
+			    where every CPU is claimed, the same, and it says so: then it shares the processors' cores, whose verdicts do not
+			    hold."""
+			    claimed = set(CLAIMED.get(host, ()))
+			    if not claimed:
+			        return None
+			    cpus = set(os.sched_getaffinity(0)) - claimed
+			    if not cpus:
+			        return ("sh -c 'echo \"RsaML: cpu %s no unclaimed core: default (the processors claim CPUs %s: it runs on them)\" >&2; "
+			                "exec \"$0\" \"$@\"'" % (name, cpu_list(claimed)))
+			    return ("sh -c 'if taskset -c {cpus} true 2>/dev/null; then echo \"RsaML: cpu {name} cores {cpus} unclaimed\" >&2; "
+			            "exec taskset -c {cpus} \"$0\" \"$@\"; fi; echo \"RsaML: cpu {name} cores {cpus} unclaimed not available: default\" >&2; "
+			            "exec \"$0\" \"$@\"'").format(name=name, cpus=cpu_list(cpus))
+
+
+		«ENDIF»
 		def launch_setup(context):
 		    namespace = LaunchConfiguration('namespace')
+		    «IF unclaimedUsed»
+		    	host = «IF hosted»LaunchConfiguration('host').perform(context)«ELSE»''«ENDIF»
+		    «ENDIF»
 		    topics = {«FOR t : rosNames.topicArguments.entrySet SEPARATOR ", "»«py(t.key)»: LaunchConfiguration(«py(t.value)»).perform(context)«ENDFOR»}
 		    values = node_parameters(LaunchConfiguration('params_file').perform(context), namespace.perform(context), topics)
 		    parameters = {'use_sim_time': LaunchConfiguration('use_sim_time'),
@@ -187,7 +231,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		ComposableNodeContainer(
 		        		    name=«py(c.name)», namespace=namespace, package=«py(context.packages.runtime)»,
 		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«shutdown(c)»«IF c.core >= 0»
-		        		    prefix=«prefix(c.processor, c.core)»,«ENDIF»«IF hosted»
+		        		    prefix=«prefix(c.processor, c.core)»,«ELSEIF unclaimedUsed && confined(c.processor)»
+		        		    prefix=unclaimed(«py(c.name)», host),«ENDIF»«IF hosted»
 		        		    condition=«onHost(c.processor)»,«ENDIF»
 		        		    composable_node_descriptions=[
 		        		        «FOR m : c.modules»
@@ -201,7 +246,8 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	«FOR m : plan.modules»
 		        		Node(package=«py(context.nodePackage(m))», executable=«py(m.executable)», name=«py(m.rosNode)»,
 		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.managed»,«shutdown(container(m)).replaceFirst(",$", "")»«ENDIF»«IF m.core >= 0»,
-		        		     prefix=«prefix(m.processor, m.core)»«ENDIF»«IF hosted»,
+		        		     prefix=«prefix(m.processor, m.core)»«ELSEIF unclaimedUsed && confined(m.processor)»,
+		        		     prefix=unclaimed(«py(m.rosNode)», host)«ENDIF»«IF hosted»,
 		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
 		        «ENDIF»
@@ -262,6 +308,25 @@ class Ros2LaunchTemplate extends Ros2Template {
 	/** Every node takes the remappings of the topics the model names, if it names any. */
 	def private remap() {
 		if (rosNames.topicArguments.empty) "" else ", remappings=remappings"
+	}
+
+	/**
+	 * Whether the launch places the processes of processors without a core on the CPUs no processor claims: some
+	 * processor claims a core, and some process has none of its own (its processor's threads are confined as the C++
+	 * program's are, {@link #confined}).
+	 */
+	def private unclaimedUsed() {
+		OneMachineCpus.claimed(plan.architecture).values.exists[!empty]
+			&& rosNames.containers.exists[core < 0 && confined(processor)]
+	}
+
+	/**
+	 * Whether a process of processor p (null: the modules no processor names), without a core, is kept to the CPUs no
+	 * processor claims. Not an EDF processor's: the kernel admits a deadline thread only where it may run on every CPU of
+	 * its root domain, so its process runs on every CPU, its deadline threads above every fixed-priority thread.
+	 */
+	def private confined(org.rsaml.model.Processor p) {
+		p === null || !(p.isSetSchedPolicy && p.schedPolicy == org.rsaml.model.SchedulingPolicy.EDF)
 	}
 
 	/** Whether some processor is on another host: then the launch files take the argument host. */
