@@ -127,7 +127,10 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		The model's deployment is kept: «pkg».launch.py starts one component container per processor,
 		«FOR c : rosNames.containers SEPARATOR ", "»`«c.name»` («IF c.processor === null»the modules no processor names«ELSE»processor '«doc(c.processor.name)»'«IF c.core >= 0», core «c.core»«ENDIF»«ENDIF»)«ENDFOR».
 		Processes of a processor with a core are started under `taskset -c CORE` (util-linux), in both
-		launch files; on a machine without that core they start unpinned and say so.
+		launch files; on a machine without that core they start unpinned and say so.«IF rosNames.containers.exists[core >= 0] && rosNames.containers.exists[core < 0]»
+		Those of the modules without a core (but an EDF processor's, whose deadline threads the kernel admits only on
+		every CPU) run on the CPUs no processor claims, as the C++ program's threads of those modules, and say so
+		(`cpu <process> cores 1 unclaimed`, or `no unclaimed core` when every CPU is claimed).«ENDIF»
 		«ENDIF»
 
 		The nodes are scheduled as `rsaml analyze` assumes: in the container `«rosNames.containerExecutable»`
