@@ -169,27 +169,16 @@ class Ros2LaunchFilesTest {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
         Assumptions.assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "one CPU: no second CPU to pin to");
-        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
-        String nav = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
-        assertTrue(text.contains(nav), "the example has the navigation processor on core 1");
-        Path model = tmp.resolve("two-hosts.rsaml");
-        Files.writeString(model, text.replace(nav, "<processors name=\"core1\" description=\"Core 0 of the board.\" core=\"0\" host=\"nav-board\""));
-        Path src = tmp.resolve("src");
-        new RsamlGenerator().generate(model, Target.ROS2, src, false);
-        String pkg = Names.snake(ModelLoader.load(model, "two-hosts.rsaml").architecture().getName());
-        Path script = tmp.resolve("pinned.py");
-        Files.writeString(script, PINNED);
-        String params = src.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
+        Pinned run = Pinned.of(tmp, "two-hosts", "<processors name=\"core1\" description=\"Core 0 of the board.\" core=\"0\" host=\"nav-board\"");
+        String pkg = run.pkg();
         Map<String, String> expected = Map.of("", pkg + "_core0_container 0\n" + pkg + "_core1_container 1", "nav-board",
                 pkg + "_core1_container 0");
         for (Map.Entry<String, String> e : expected.entrySet()) {
-            String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py")
-                    + "' '" + e.getKey() + "' '" + params + "'").toArray(String[]::new));
+            String out = run.cpus(".launch.py", e.getKey());
             List<String> lines = out.lines().filter(l -> l.startsWith(pkg + "_")).map(String::strip).sorted().toList();
             assertEquals(e.getValue(), String.join("\n", lines), "host:=" + e.getKey() + ": each container and the CPU it is pinned to:\n" + out);
         }
-        String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
-                + "_processes.launch.py") + "' '' '" + params + "'").toArray(String[]::new));
+        String processes = run.cpus("_processes.launch.py", "");
         assertTrue(processes.contains("navigation_obstacle_detector 1") && processes.contains("control_velocity_controller 0"),
                 "without host:=, the board's nodes on CPU 1, the main host's on CPU 0:\n" + processes);
     }
@@ -208,43 +197,55 @@ class Ros2LaunchFilesTest {
         String allowed = Tools.ok(tmp, 60, "sh", "-c", "grep Cpus_allowed_list /proc/self/status").strip().replaceFirst(".*\\s", "");
         java.util.TreeSet<Integer> cpus = cpuSet(allowed);
         Assumptions.assumeTrue(cpus.size() >= 2 && cpus.contains(0), "one CPU, or no CPU 0: no CPU left beside core 0 (" + allowed + ")");
-        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
-        String nav = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
-        assertTrue(text.contains(nav), "the example has the navigation processor on core 1");
-        Path model = tmp.resolve("coreless.rsaml");
-        Files.writeString(model, text.replace(nav, "<processors name=\"core1\" description=\"Navigation, on no core of its own.\""));
-        Path src = tmp.resolve("src");
-        new RsamlGenerator().generate(model, Target.ROS2, src, false);
-        String pkg = Names.snake(ModelLoader.load(model, "coreless.rsaml").architecture().getName());
-        Path script = tmp.resolve("pinned.py");
-        Files.writeString(script, PINNED);
-        String params = src.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
+        Pinned run = Pinned.of(tmp, "coreless", "<processors name=\"core1\" description=\"Navigation, on no core of its own.\"");
+        String pkg = run.pkg();
         cpus.remove(0);
         String left = cpuList(cpus);
-        String out = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + ".launch.py") + "' '' '"
-                + params + "'").toArray(String[]::new));
+        String out = run.cpus(".launch.py", "");
         List<String> lines = out.lines().filter(l -> l.startsWith(pkg + "_")).map(String::strip).sorted().toList();
         assertEquals(pkg + "_core0_container 0\n" + pkg + "_core1_container " + left + " RsaML: cpu " + pkg + "_core1_container cores " + left
                 + " unclaimed", String.join("\n", lines), "core 0's container on CPU 0, the other on the CPUs left, saying so:\n" + out);
-        String processes = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg
-                + "_processes.launch.py") + "' '' '" + params + "'").toArray(String[]::new));
+        String processes = run.cpus("_processes.launch.py", "");
         assertTrue(processes.contains("navigation_path_planner " + left + " RsaML: cpu navigation_path_planner cores " + left + " unclaimed")
                 && processes.contains("control_velocity_controller 0"), "the navigation nodes on the CPUs left beside core 0:\n" + processes);
         if (!allowed.equals("0-1")) {
             return; // every CPU claimed: shown on two CPUs
         }
         // every CPU claimed (core 0 and core 1), the path planner on no processor: where the operating system puts it, said
-        String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']";
-        assertTrue(text.contains(planner + "\"/>"), "the path planner is on core 1");
-        Path claimed = tmp.resolve("claimed.rsaml");
-        Files.writeString(claimed, text.replace(planner + "\"/>", "\"/>"));
-        Path src2 = tmp.resolve("src2");
-        new RsamlGenerator().generate(claimed, Target.ROS2, src2, false);
-        String params2 = src2.resolve(pkg + "/config/" + pkg + ".params.yaml").toString();
-        String every = Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src2.resolve(pkg + "/launch/" + pkg + ".launch.py") + "' '' '"
-                + params2 + "'").toArray(String[]::new));
+        String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']\"/>";
+        String every = Pinned.of(tmp, "claimed", planner, "\"/>").cpus(".launch.py", "");
         assertTrue(every.contains(pkg + "_container 0-1 RsaML: cpu " + pkg + "_container no unclaimed core: default (the processors claim CPUs 0-1: it runs"
                 + " on them)"), "the modules no processor names on every CPU, saying so:\n" + every);
+    }
+
+    /**
+     * The ROS 2 package of mobile-base-latency with {@code from} replaced by {@code to} (by default, its navigation processor
+     * on core 1 by {@code to}), generated under tmp/name, and the script that runs its launch prefixes ({@link #PINNED}).
+     */
+    private record Pinned(Path tmp, Path src, String pkg, Path script) {
+        private static final String NAV = "<processors name=\"core1\" description=\"CPU core 1: navigation.\" core=\"1\"";
+
+        static Pinned of(Path tmp, String name, String to) throws Exception {
+            return of(tmp, name, NAV, to);
+        }
+
+        static Pinned of(Path tmp, String name, String from, String to) throws Exception {
+            String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+            assertTrue(text.contains(from), "the example has " + from);
+            Path model = tmp.resolve(name + ".rsaml");
+            Files.writeString(model, text.replace(from, to));
+            Path src = tmp.resolve(name);
+            new RsamlGenerator().generate(model, Target.ROS2, src, false);
+            Path script = tmp.resolve("pinned.py");
+            Files.writeString(script, PINNED);
+            return new Pinned(tmp, src, Names.snake(ModelLoader.load(model, name + ".rsaml").architecture().getName()), script);
+        }
+
+        /** What the prefixes of launch file {@code <pkg><file>} print for host:=HOST: "process cpus [what it said]" a line. */
+        String cpus(String file, String host) throws Exception {
+            return Tools.ok(tmp, 120, Ros2Jazzy.bash("python3 '" + script + "' '" + src.resolve(pkg + "/launch/" + pkg + file) + "' '" + host + "' '"
+                    + src.resolve(pkg + "/config/" + pkg + ".params.yaml") + "'").toArray(String[]::new));
+        }
     }
 
     /** CPUs as Linux lists them ("0-3,6"). */
