@@ -8,11 +8,24 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
 import java.lang.management.MemoryUsage;
+import java.util.concurrent.atomic.AtomicLong;
 
 /** Tells the loader to give up on a model that does not fit in the heap, before the collector thrashes. */
-final class HeapWatch {
+public final class HeapWatch {
+
+    /** How many times this JVM's loader was told to give up. */
+    private static final AtomicLong GIVEN_UP = new AtomicLong();
 
     private HeapWatch() {
+    }
+
+    /**
+     * How many times so far, in this JVM, the loader gave up on a model as too large for the heap: a command during
+     * which this grew had a result that depends on the heap's size (the resident process has it run again in a JVM of
+     * its own).
+     */
+    public static long givenUp() {
+        return GIVEN_UP.get();
     }
 
     /**
@@ -28,6 +41,7 @@ final class HeapWatch {
                 MemoryUsage afterCollection = pool.getCollectionUsage();
                 long max = pool.getUsage().getMax();
                 if (afterCollection != null && max > 0 && afterCollection.getUsed() > max / 20 * 19) {
+                    GIVEN_UP.incrementAndGet();
                     return true;
                 }
             }

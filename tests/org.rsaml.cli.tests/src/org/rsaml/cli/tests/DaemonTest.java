@@ -351,7 +351,7 @@ class DaemonTest {
             assertEquals(ownFiles, takeFiles(work));
             String log = Files.readString(runtime.resolve("rsaml").resolve(socketName(runtime) + ".log"));
             // Either the process found the command near its heap's limit, or the JVM's own OutOfMemoryError ended it.
-            boolean near = log.contains("rsaml: command 2 came near this process's heap limit (");
+            boolean near = log.contains("rsaml: command 2 found this process's heap too small (");
             boolean ended = log.contains("OutOfMemoryError") && ProcessHandle.of(pid).map(p -> !p.isAlive()).orElse(true);
             assertTrue(near || ended, log);
             // A command that fits is still served (by a new process, if the error ended the first).
@@ -360,6 +360,24 @@ class DaemonTest {
             int served = served(runtime, work);
             assertEquals(small.toString(), launcher(runtime, work, true, "validate", "exp2-defects.rsaml").toString());
             assertEquals(served + 1, served(runtime, work));
+
+            // A generation that runs out of the small heap half-way: run again in a JVM of its own, it writes and counts
+            // every file as it would have alone (none found already written by the first attempt).
+            stop(runtime, work);
+            assertEquals(0, Cli.process(work, List.of("env", "-u", "RSAML_DAEMON", "XDG_RUNTIME_DIR=" + runtime,
+                    "RSAML_DAEMON_HEAP=32m", Cli.ROOT.resolve("rsaml").toString(), "daemon", "start")).code());
+            long generating = pid(launcher(runtime, work, false, "daemon", "status"));
+            ChainModels.write(work.resolve("chain.rsaml"), 4000, false);
+            Cli.Result ownGeneration = launcher(runtime, work, false, "generate", "--target", "cpp", "--output", "generated", "chain.rsaml");
+            assertTrue(ownGeneration.out().contains(" written, 0 unchanged, 0 of yours kept"), ownGeneration::toString);
+            Map<String, String> generated = takeFiles(work);
+            Cli.Result residentGeneration = launcher(runtime, work, true, "generate", "--target", "cpp", "--output", "generated",
+                    "chain.rsaml");
+            assertEquals(ownGeneration.toString(), residentGeneration.toString());
+            assertEquals(generated, takeFiles(work));
+            String after = Files.readString(runtime.resolve("rsaml").resolve(socketName(runtime) + ".log"));
+            assertTrue(after.contains("found this process's heap too small") || after.contains("OutOfMemoryError")
+                    && ProcessHandle.of(generating).map(p -> !p.isAlive()).orElse(true), after);
         } finally {
             stop(runtime, work);
         }

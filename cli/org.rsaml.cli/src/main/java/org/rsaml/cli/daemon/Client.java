@@ -30,7 +30,7 @@ import java.util.Map;
  * folder that is not this user's alone, or a command it does not run), the client writes nothing and exits with
  * {@link #NOT_SERVED}: the launcher then runs the command in a JVM of its own, as without the resident process. What a
  * command writes is held until its exit code comes, so that a command the resident process could not finish as a JVM
- * of its own would (it came near the heap's limit, or the process is gone) is also not served, nothing of it written.
+ * of its own would (its heap was too small for it, or the process is gone) is also not served, nothing of it written.
  *
  * <p>Usage: {@code Client SOCKET SETTINGS run|status|stop [ARGUMENTS...]}, where SETTINGS names what the launcher
  * would start the resident process with (the jar, the JDK, the JVM options, the locale and umask).
@@ -42,7 +42,7 @@ public final class Client {
 
     /**
      * The exit code of a command that the running resident process sent back to run in a JVM of its own (the language
-     * server, an argument file, inputs large for its heap, a command that came near its heap's limit): a process
+     * server, an argument file, inputs large for its heap, a model the loader gave up on for its heap): a process
      * serves, so none is to be started.
      */
     public static final int DECLINED_HERE = 76;

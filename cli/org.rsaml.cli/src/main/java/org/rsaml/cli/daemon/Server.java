@@ -27,6 +27,7 @@ import java.util.Arrays;
 import java.util.List;
 
 import org.rsaml.cli.RsamlCli;
+import org.rsaml.model.resource.HeapWatch;
 import org.rsaml.report.ExitCodes;
 
 /**
@@ -41,13 +42,14 @@ import org.rsaml.report.ExitCodes;
  * jar, a rebuilt one, another JDK, JVM options, locale or umask) by stopping, and stops after its idle time without a
  * command (system property {@code rsaml.daemon.idle}, in seconds; {@link #IDLE} when not given).
  *
- * <p>A command it cannot serve as a JVM of its own would is sent back to run in one (the client then writes nothing
- * of it): one whose named inputs are larger than a sixteenth of this process's heap (a process started by default has
- * a bounded heap, a JVM of its own the JDK's default), and one that came near the heap's limit (its long-lived part at
- * least 95 % full after a collection, where the loader gives up on a model, or an {@link OutOfMemoryError}; the
- * launcher also starts this process with {@code -XX:+ExitOnOutOfMemoryError}, so that an error the JVM throws ends it,
- * and the command, whose client sees it gone, runs in a JVM of its own). Report files are written whole or not at all,
- * so such a command leaves nothing partial; the JVM of its own writes them anew. A command whose client goes away (killed, Ctrl-C) is stopped, as a JVM of its own would be: its thread is
+ * <p>A command whose result depends on this process's heap, which a JVM of its own would not share (a process started
+ * by default has a bounded heap, a JVM of its own the JDK's default), is sent back to run in one (the client then
+ * writes nothing of it): one whose named inputs are larger than a sixteenth of the heap, before it runs; one during
+ * which the loader gave up on a model as too large for the heap ({@link HeapWatch#givenUp}); one that ran out of memory
+ * (the launcher starts this process with {@code -XX:+ExitOnOutOfMemoryError}, so that the JVM's error ends it, and the
+ * command, whose client sees it gone, runs in a JVM of its own). A command that completed otherwise keeps its result,
+ * also after collections near the heap's limit: running it again would find its own files written. Report files are
+ * written whole or not at all, so a command sent back leaves nothing partial; the JVM of its own writes them anew. A command whose client goes away (killed, Ctrl-C) is stopped, as a JVM of its own would be: its thread is
  * interrupted, which ends its file input and output at once and which the loader, the validation and the report files
  * check, so that it writes nothing more; then the process serves the next command. A command not stopped within
  * {@link #STOPPING} stops the process instead.
@@ -164,7 +166,6 @@ public final class Server {
             Thread idle = new Thread(this::stopWhenIdle, "rsaml idle check");
             idle.setDaemon(true);
             idle.start();
-            HeapLimit.watch();
             log.println("rsaml: resident process " + ProcessHandle.current().pid() + " listening on " + socket + ", " + how());
             while (true) {
                 try (SocketChannel channel = listener.accept()) {
@@ -259,18 +260,18 @@ public final class Server {
         Path workingDirectory = Path.of(strings[1]);
         if (request != Client.RUN || List.of(args).contains("language-server")
                 || Arrays.stream(args).anyMatch(arg -> arg.startsWith("@"))
-                || HeapLimit.inputsLarger(workingDirectory, args, Runtime.getRuntime().maxMemory() / 16)) {
+                || Inputs.larger(workingDirectory, args, Runtime.getRuntime().maxMemory() / 16)) {
             frames.send(Client.DECLINED, new byte[0]);
             frames.flush();
             return true;
         }
         frames.send(Client.ACCEPTED, new byte[0]);
         Command command = new Command(channel, Thread.currentThread());
-        long near = HeapLimit.count();
+        long givenUp = HeapWatch.givenUp();
         int code = run(command, frames, workingDirectory, args);
         if (command.abandoned == null) {
-            if (code == OUT_OF_MEMORY || HeapLimit.count() != near) {
-                log.println("rsaml: command " + commands + " came near this process's heap limit ("
+            if (code == OUT_OF_MEMORY || HeapWatch.givenUp() != givenUp) {
+                log.println("rsaml: command " + commands + " found this process's heap too small ("
                         + Runtime.getRuntime().maxMemory() / (1024 * 1024) + " MiB): it runs again in a JVM of its own");
                 frames.send(Client.RETRY, new byte[0]);
                 frames.flush();

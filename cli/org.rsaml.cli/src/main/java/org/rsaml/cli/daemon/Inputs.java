@@ -6,9 +6,6 @@ package org.rsaml.cli.daemon;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.lang.management.ManagementFactory;
-import java.lang.management.MemoryPoolMXBean;
-import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.LinkOption;
@@ -17,45 +14,10 @@ import java.nio.file.attribute.BasicFileAttributes;
 import java.util.Iterator;
 import java.util.stream.Stream;
 
-/**
- * What tells the resident process that a command may not have run as in a JVM of its own, whose heap is the JDK's
- * default: its inputs are large for this process's heap, or it came near the heap's limit.
- */
-final class HeapLimit {
+/** The size of a command's inputs, for the resident process to send large ones to a JVM of their own. */
+final class Inputs {
 
-    private HeapLimit() {
-    }
-
-    /**
-     * Counts, from now on, every collection after which a long-lived heap pool (the old generation, or the whole heap
-     * where the collector has none) is at least 95 % full: the point where the loader gives up on a model as too
-     * large for the heap. Young pools (eden, survivor) are routinely full after a minor collection and are not counted.
-     */
-    static void watch() {
-        for (MemoryPoolMXBean pool : longLived()) {
-            long max = pool.getUsage().getMax();
-            if (max > 0) {
-                pool.setCollectionUsageThreshold(max / 20 * 19);
-            }
-        }
-    }
-
-    /** How many collections so far left a long-lived pool at or above its threshold (set by {@link #watch}). */
-    static long count() {
-        long n = 0;
-        for (MemoryPoolMXBean pool : longLived()) {
-            if (pool.getCollectionUsageThreshold() > 0) {
-                n += pool.getCollectionUsageThresholdCount();
-            }
-        }
-        return n;
-    }
-
-    private static Iterable<MemoryPoolMXBean> longLived() {
-        return ManagementFactory.getMemoryPoolMXBeans().stream()
-                .filter(pool -> pool.getType() == MemoryType.HEAP && pool.isCollectionUsageThresholdSupported())
-                .filter(pool -> !pool.getName().matches(".*(Eden|Survivor|Young|Nursery).*"))
-                .toList();
+    private Inputs() {
     }
 
     /**
@@ -63,7 +25,7 @@ final class HeapLimit {
      * name, are together larger than {@code limit} bytes; arguments that name nothing (options, formats) count nothing.
      * Links are not followed below a folder, as validation does not follow them.
      */
-    static boolean inputsLarger(Path workingDirectory, String[] args, long limit) {
+    static boolean larger(Path workingDirectory, String[] args, long limit) {
         long total = 0;
         for (String arg : args) {
             if (arg.startsWith("-")) {
