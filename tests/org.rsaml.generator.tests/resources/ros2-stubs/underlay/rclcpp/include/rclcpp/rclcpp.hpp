@@ -53,6 +53,7 @@ class Time {
       : ns_(nanoseconds), type_(clock_type) {}
   std::int64_t nanoseconds() const { return ns_; }
   rcl_clock_type_t get_clock_type() const { return type_; }
+  bool ros_time_is_active() { return false; }
   Time operator+(const Duration& rhs) const { return Time(ns_ + rhs.nanoseconds(), type_); }
   Duration operator-(const Time& rhs) const { return Duration::from_nanoseconds(ns_ - rhs.ns_); }
   bool operator<(const Time& rhs) const { return ns_ < rhs.ns_; }
@@ -70,6 +71,7 @@ class Clock {
   explicit Clock(rcl_clock_type_t clock_type = RCL_SYSTEM_TIME) : type_(clock_type) {}
   Time now() const { return Time(0, type_); }
   rcl_clock_type_t get_clock_type() const { return type_; }
+  bool ros_time_is_active() { return false; }
 
  private:
   rcl_clock_type_t type_;
@@ -159,9 +161,13 @@ class TimerBase {
   using SharedPtr = std::shared_ptr<TimerBase>;
   using WeakPtr = std::weak_ptr<TimerBase>;
   virtual ~TimerBase() = default;
-  void cancel() {}
-  void reset() {}
+  void cancel() { canceled_ = true; }
+  bool is_canceled() { return canceled_; }
+  void reset() { canceled_ = false; }
   std::chrono::nanoseconds time_until_trigger() { return std::chrono::nanoseconds(0); }
+
+ private:
+  bool canceled_ = false;
 };
 
 // rclcpp/node_interfaces/node_base_interface.hpp, node_timers_interface.hpp
