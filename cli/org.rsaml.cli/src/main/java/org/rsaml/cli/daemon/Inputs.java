@@ -8,11 +8,10 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.attribute.BasicFileAttributes;
-import java.util.Iterator;
-import java.util.stream.Stream;
+
+import org.rsaml.model.resource.ModelFormats;
+import org.rsaml.report.ModelFiles;
 
 /** The size of a command's inputs, for the resident process to send large ones to a JVM of their own. */
 final class Inputs {
@@ -21,9 +20,10 @@ final class Inputs {
     }
 
     /**
-     * Whether the files that {@code args} name (relative to {@code workingDirectory}), and those below the folders they
-     * name, are together larger than {@code limit} bytes; arguments that name nothing (options, formats) count nothing.
-     * Links are not followed below a folder, as validation does not follow them.
+     * Whether the models that {@code args} name (relative to {@code workingDirectory}), and those a command finds below
+     * the folders they name ({@link ModelFiles#modelsUnder}: model files only, hidden folders skipped), are together
+     * larger than {@code limit} bytes. Arguments that are not models (options, formats, report files, output folders'
+     * other files, a checkout's history) count nothing.
      */
     static boolean larger(Path workingDirectory, String[] args, long limit) {
         long total = 0;
@@ -31,28 +31,17 @@ final class Inputs {
             if (arg.startsWith("-")) {
                 continue;
             }
-            Path path;
             try {
-                path = workingDirectory.resolve(arg);
-            } catch (InvalidPathException e) {
-                continue;
-            }
-            try {
-                BasicFileAttributes attributes = Files.readAttributes(path, BasicFileAttributes.class);
-                if (attributes.isRegularFile()) {
-                    total += attributes.size();
-                } else if (attributes.isDirectory()) {
-                    try (Stream<Path> files = Files.walk(path)) {
-                        for (Iterator<Path> it = files.iterator(); it.hasNext() && total <= limit;) {
-                            Path file = it.next();
-                            if (Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS)) {
-                                total += Files.size(file);
-                            }
-                        }
+                Path path = workingDirectory.resolve(arg);
+                if (Files.isDirectory(path)) {
+                    for (Path model : ModelFiles.modelsUnder(path)) {
+                        total += Files.size(model);
                     }
+                } else if (ModelFormats.isModelFile(path.getFileName().toString()) && Files.isRegularFile(path)) {
+                    total += Files.size(path);
                 }
-            } catch (IOException | UncheckedIOException | SecurityException e) {
-                // Unreadable: the command says so, wherever it runs.
+            } catch (IOException | UncheckedIOException | InvalidPathException | SecurityException | NullPointerException e) {
+                // Unreadable, or no file name: the command says so, wherever it runs.
             }
             if (total > limit) {
                 return true;

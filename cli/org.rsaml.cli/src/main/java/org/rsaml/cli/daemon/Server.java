@@ -44,7 +44,7 @@ import org.rsaml.report.ExitCodes;
  *
  * <p>A command whose result depends on this process's heap, which a JVM of its own would not share (a process started
  * by default has a bounded heap, a JVM of its own the JDK's default), is sent back to run in one (the client then
- * writes nothing of it): one whose named inputs are larger than a sixteenth of the heap, before it runs; one during
+ * writes nothing of it): one whose models are larger than a sixteenth of the heap ({@link Inputs}), before it runs; one during
  * which the loader gave up on a model as too large for the heap ({@link HeapWatch#givenUp}); one that ran out of memory
  * (the launcher starts this process with {@code -XX:+ExitOnOutOfMemoryError}, so that the JVM's error ends it, and the
  * command, whose client sees it gone, runs in a JVM of its own). A command that completed otherwise keeps its result,
