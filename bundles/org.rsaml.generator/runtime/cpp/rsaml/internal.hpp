@@ -6,6 +6,7 @@
 // work, durations as the trace says them. Not included by rsaml/runtime.hpp.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "rsaml/clock.hpp"
@@ -38,6 +39,13 @@ unsigned long deadline_overruns();
 
 /** Installs the handler that counts those signals, and blocks them on the calling thread (and the threads it starts). */
 void count_deadline_overruns();
+
+/**
+ * The line that says a module's full mailbox dropped messages, worded here once: `dropped` of them since it last said so
+ * (`in_all` so far), said by its worker when it takes its next message; or, `closing`, all of them (`in_all`), said
+ * after the summary.
+ */
+std::string mailbox_dropped(const std::string& module, std::uint64_t dropped, std::uint64_t in_all, bool closing);
 
 /** A duration as the trace says it: 1.250 ms. */
 std::string millis(Nanos t);

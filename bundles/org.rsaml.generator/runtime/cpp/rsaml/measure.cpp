@@ -121,8 +121,7 @@ void System::print_summary() {
   for (Module* module : modules_) {
     const std::uint64_t dropped = module->mail_dropped();
     if (dropped > 0) {
-      Trace::closing("mailbox " + module->name() + " dropped " + std::to_string(dropped) + " messages in all: its " +
-                     std::to_string(MAILBOX_SLOTS) + " slots were taken, its worker behind the senders");
+      Trace::closing(internal::mailbox_dropped(module->name(), dropped, dropped, true));
     }
   }
   Trace::closing_dropped();

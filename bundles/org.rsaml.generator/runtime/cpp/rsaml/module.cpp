@@ -32,27 +32,6 @@ void Link::trigger() { until_.store((Clock::now() + duration_).time_since_epoch(
 
 bool Link::active() const { return Clock::now().time_since_epoch().count() < until_.load(); }
 
-#if defined(__unix__) || defined(__APPLE__)
-InheritingLock::InheritingLock(bool recursive) : protocol_(rsaml_realtime::init_inheriting_mutex(&mutex_, recursive)) {
-  pthread_cond_init(&ready_, nullptr);
-}
-InheritingLock::~InheritingLock() {
-  pthread_cond_destroy(&ready_);
-  pthread_mutex_destroy(&mutex_);
-}
-void InheritingLock::lock() { pthread_mutex_lock(&mutex_); }
-void InheritingLock::unlock() { pthread_mutex_unlock(&mutex_); }
-void InheritingLock::wait() { pthread_cond_wait(&ready_, &mutex_); }
-void InheritingLock::notify() { pthread_cond_signal(&ready_); }
-#else
-InheritingLock::InheritingLock(bool) : protocol_("without priority inheritance: not supported on this platform") {}
-InheritingLock::~InheritingLock() = default;
-void InheritingLock::lock() { mutex_.lock(); }
-void InheritingLock::unlock() { mutex_.unlock(); }
-void InheritingLock::wait() { ready_.wait(mutex_); }
-void InheritingLock::notify() { ready_.notify_one(); }
-#endif
-
 Activation::Activation(Module& module, std::uint64_t wave, bool timed, Clock::time_point release)
     : module(module), wave(wave), timed(timed), release(release), lock(module.mutex_), previous_(current_activation) {
   current_activation = this;
@@ -125,8 +104,7 @@ void Module::run_worker() {
     }
     if (unsaid > 0) {
       // said here, by the worker (of the default priority when its reactions are aperiodic), never by a sender
-      Trace::report("mailbox " + name_ + " dropped " + std::to_string(unsaid) + " messages: its " + std::to_string(MAILBOX_SLOTS) +
-                    " slots were taken (" + std::to_string(dropped) + " in all)");
+      Trace::report(internal::mailbox_dropped(name_, unsaid, dropped, false));
     }
     {
       // A reaction's job is released by the arrival of the data that starts it.
@@ -148,6 +126,13 @@ bool Module::first_in_wave(std::uint64_t wave) {
   }
   seen = wave;
   return true;
+}
+
+std::string internal::mailbox_dropped(const std::string& module, std::uint64_t dropped, std::uint64_t in_all, bool closing) {
+  const std::string slots = "its " + std::to_string(MAILBOX_SLOTS) + " slots were taken";
+  return "mailbox " + module + " dropped " +
+         (closing ? std::to_string(in_all) + " messages in all: " + slots + ", its worker behind the senders"
+                  : std::to_string(dropped) + " messages: " + slots + " (" + std::to_string(in_all) + " in all)");
 }
 
 void Module::start_step(std::uint64_t wave) {

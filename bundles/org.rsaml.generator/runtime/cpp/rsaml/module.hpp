@@ -6,7 +6,6 @@
 #pragma once
 
 #include <array>
-#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -18,10 +17,7 @@
 
 #include "rsaml/clock.hpp"
 #include "rsaml/measure.hpp"
-
-#if defined(__unix__) || defined(__APPLE__)
-#include <pthread.h>
-#endif
+#include "rsaml/realtime.hpp"
 
 namespace rsaml {
 
@@ -67,37 +63,11 @@ struct Reactions {
 };
 
 /**
- * A lock with priority inheritance where POSIX threads offer it (PTHREAD_PRIO_INHERIT), as a ROS 2 node's lock is: a
- * thread holding it runs at the priority of the highest thread waiting for it, so that a release waits for a worker of a
- * lower or the default priority only as long as that worker needs the lock, not while other threads run; and a
- * condition, waited on under it. A module has two: its lock (a module is a lock group of the analysis), recursive,
- * held while any of its activations runs (docs/timing.md, "Module lock"); and its mailbox's, which the releases that
- * send to the module share with its worker for a push or a pop, the worker waiting on its condition.
+ * A module's two locks (rsaml/realtime.hpp, the lock class the ROS 2 nodes use too): its lock, recursive, held while any
+ * of its activations runs, and its mailbox's, shared by the releases that send to it and its worker, which waits on its
+ * condition.
  */
-class InheritingLock {
- public:
-  explicit InheritingLock(bool recursive);
-  ~InheritingLock();
-  InheritingLock(const InheritingLock&) = delete;
-  InheritingLock& operator=(const InheritingLock&) = delete;
-  void lock();
-  void unlock();
-  /** Waits, holding the lock (once), until notified (or woken spuriously); holds it again on return. */
-  void wait();
-  void notify();
-  /** "PTHREAD_PRIO_INHERIT", or what the lock is instead and why. */
-  const std::string& protocol() const { return protocol_; }
-
- private:
-#if defined(__unix__) || defined(__APPLE__)
-  pthread_mutex_t mutex_;
-  pthread_cond_t ready_;
-#else
-  std::recursive_mutex mutex_;
-  std::condition_variable_any ready_;
-#endif
-  std::string protocol_;
-};
+using rsaml_realtime::InheritingLock;
 
 /**
  * The work a module is doing, on the current thread: the module's lock is held, and data sent

@@ -4,8 +4,10 @@
  */
 // EDF for the releases of an EDF processor: Linux's SCHED_DEADLINE, and the locks with priority
 // inheritance (a module's, a node's, the trace queue's), shared by the C++ runtime and the ROS 2 nodes (docs/timing.md, "EDF", "Module
-// lock"). Internal linkage, so that two generated libraries in one
-// process (ROS 2 components) never mix their copies.
+// lock"). The SCHED_DEADLINE calls have internal linkage, so that two generated libraries in one process (ROS 2
+// components) never mix their copies; the lock class, InheritingLock, is a member of classes of external linkage (a C++
+// module, a ROS 2 node's schedule) and so has external linkage too, as they do: its functions are inline, the same in
+// every library one RsaML generates.
 #pragma once
 
 #include <cerrno>
@@ -14,6 +16,11 @@
 #include <cstring>
 #include <cstdlib>
 #include <string>
+
+#if !defined(__unix__) && !defined(__APPLE__)
+#include <condition_variable>
+#include <mutex>
+#endif
 
 #if defined(__linux__)
 #include <sched.h>
@@ -114,6 +121,11 @@ inline std::string request_deadline(std::int64_t runtime, std::int64_t deadline,
 #endif
 }
 
+}  // namespace
+}  // namespace rsaml_realtime
+
+namespace rsaml_realtime {
+
 #if defined(__unix__) || defined(__APPLE__)
 /**
  * Initialises a lock the real-time threads share with others (a module's, a node's, the trace queue's): a mutex
@@ -148,5 +160,57 @@ inline std::string init_inheriting_mutex(pthread_mutex_t* mutex, bool recursive)
 }
 #endif
 
-}  // namespace
+
+/**
+ * A lock with priority inheritance where POSIX threads offer it (init_inheriting_mutex): a thread holding it runs at the
+ * priority of the highest thread waiting for it, so that a release waits for a thread of a lower or the default priority
+ * only as long as that thread needs the lock, not while other threads run; and a condition, waited on under it. The one
+ * lock class of both runtimes: a C++ module has two, its lock (a module is a lock group of the analysis), recursive, held
+ * while any of its activations runs (docs/timing.md, "Module lock"), and its mailbox's, which the releases that send to
+ * the module share with its worker for a push or a pop, the worker waiting on its condition; a ROS 2 node has two, its
+ * lock (its activations') and its statistics' (rsaml/scheduling.hpp).
+ */
+class InheritingLock {
+ public:
+  /** A recursive lock may be taken again by the thread that holds it (a module's activations). */
+  explicit InheritingLock(bool recursive = false)
+#if defined(__unix__) || defined(__APPLE__)
+      : protocol_(init_inheriting_mutex(&mutex_, recursive)) {
+    pthread_cond_init(&ready_, nullptr);
+  }
+  ~InheritingLock() {
+    pthread_cond_destroy(&ready_);
+    pthread_mutex_destroy(&mutex_);
+  }
+  void lock() { pthread_mutex_lock(&mutex_); }
+  void unlock() { pthread_mutex_unlock(&mutex_); }
+  /** Waits, holding the lock (once), until notified (or woken spuriously); holds it again on return. */
+  void wait() { pthread_cond_wait(&ready_, &mutex_); }
+  /** Wakes one thread waiting on the condition. */
+  void notify() { pthread_cond_signal(&ready_); }
+#else
+      : protocol_("without priority inheritance: not supported on this platform") {
+    (void)recursive;  // std::recursive_mutex: recursive or not
+  }
+  void lock() { mutex_.lock(); }
+  void unlock() { mutex_.unlock(); }
+  void wait() { ready_.wait(mutex_); }
+  void notify() { ready_.notify_one(); }
+#endif
+  InheritingLock(const InheritingLock&) = delete;
+  InheritingLock& operator=(const InheritingLock&) = delete;
+  /** "PTHREAD_PRIO_INHERIT", or what the lock is instead and why. */
+  const std::string& protocol() const { return protocol_; }
+
+ private:
+#if defined(__unix__) || defined(__APPLE__)
+  pthread_mutex_t mutex_;
+  pthread_cond_t ready_;
+#else
+  std::recursive_mutex mutex_;
+  std::condition_variable_any ready_;
+#endif
+  std::string protocol_;
+};
+
 }  // namespace rsaml_realtime

@@ -121,20 +121,6 @@ void place(Release& release, int core) {
 
 }  // namespace
 
-#if defined(__unix__) || defined(__APPLE__)
-NodeLock::NodeLock() {
-  rsaml_realtime::init_inheriting_mutex(&mutex_, false);  // where priority inheritance is refused, a plain mutex
-}
-NodeLock::~NodeLock() { pthread_mutex_destroy(&mutex_); }
-void NodeLock::lock() { pthread_mutex_lock(&mutex_); }
-void NodeLock::unlock() { pthread_mutex_unlock(&mutex_); }
-#else
-NodeLock::NodeLock() = default;
-NodeLock::~NodeLock() = default;
-void NodeLock::lock() { mutex_.lock(); }
-void NodeLock::unlock() { mutex_.unlock(); }
-#endif
-
 void trace(const std::string& text) { trace_queue().post(text); }
 
 void init(int argc, char** argv) {
@@ -212,7 +198,7 @@ Schedule::~Schedule() {
   // go, each waiting for room in the trace's queue rather than dropped: behind every miss line of a job it counts.
   std::vector<std::string> lines;
   {
-    std::lock_guard<NodeLock> lock(stats_);
+    std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
     summarized_ = true;
     // The summary line, written by the C++ runtime's writer (rsaml/jobs.hpp), after the lines of the jobs over the plain bound.
     auto summary = [&lines](const Jobs& r) {
@@ -320,7 +306,7 @@ void Schedule::rsaml_count_dropped(std::size_t release, std::int64_t period_ns, 
                            ms((called - expected).nanoseconds()) + " ms late (on CLOCK_MONOTONIC: released " +
                            std::to_string(expected_monotonic) + " ns, called " + std::to_string(called_monotonic) + " ns)";
   // counted and said under one lock, before the summary or not at all
-  std::lock_guard<NodeLock> lock(stats_);
+  std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
   if (summarized_) {
     return;
   }
@@ -359,7 +345,7 @@ bool Schedule::rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer,
             " instead of EDF: " + refused;
   }
   {
-    std::lock_guard<NodeLock> lock(stats_);
+    std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
     r.sched = sched;
   }
   trace("sched " + r.label + " " + sched);
@@ -396,7 +382,7 @@ bool Schedule::rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer,
   (void)called;
   (void)body;
   {
-    std::lock_guard<NodeLock> lock(stats_);
+    std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
     r.sched += " instead of EDF: SCHED_DEADLINE is Linux's";
   }
   return false;
@@ -474,7 +460,7 @@ void Schedule::record_job(Jobs& r, const rclcpp::Time& released, const rclcpp::T
       overran ? "overrun " + r.label + " released " + ms(at) + " ms execution " + ms(execution_ns) + " ms modeled " + ms(r.cost_ns) + " ms"
               : std::string();
   // Counted and said under one lock: a job done after the summary is neither (the summary's misses are the miss lines).
-  std::lock_guard<NodeLock> lock(stats_);
+  std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
   if (summarized_) {
     return;
   }
@@ -505,13 +491,13 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
   Release& r = releases_[release];
   Measured measured{};
   {
-    std::lock_guard<NodeLock> lock(activation_);
+    std::lock_guard<rsaml_realtime::InheritingLock> lock(activation_);
     measured = run_measured(r.cost_ns, body);
   }
   record_job(r, released, clock_->now(), (called - released).nanoseconds(), measured);
   // The executor's own CPU time since the previous job ended (waking, taking the timer, dispatching), measured, not modeled.
   const std::int64_t ended_cpu = thread_cpu_ns();
-  std::lock_guard<NodeLock> lock(stats_);
+  std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
   if (r.job_end_cpu_ns >= 0) {
     const std::int64_t executor = started_cpu - r.job_end_cpu_ns;
     ++r.executor_jobs;
@@ -524,13 +510,13 @@ void Schedule::rsaml_run_job(std::size_t release, const rclcpp::Time& released, 
 void Schedule::rsaml_run_arrival(std::size_t port, const std::function<void()>& body) {
   const rclcpp::Time arrived = clock_->now();
   {
-    std::lock_guard<NodeLock> lock(activation_);
+    std::lock_guard<rsaml_realtime::InheritingLock> lock(activation_);
     arrived_ = arrived;
     handled_ = clock_->now();
     body();
   }
   const std::int64_t at = (arrived - started_).nanoseconds();
-  std::lock_guard<NodeLock> lock(stats_);
+  std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);
   Arrivals& a = arrivals_[port];
   ++a.messages;
   if (a.first_ns < 0) {

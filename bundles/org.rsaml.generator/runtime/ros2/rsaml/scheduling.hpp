@@ -25,13 +25,10 @@
 #include <thread>
 #include <vector>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <pthread.h>
-#endif
-
 #include <rclcpp/rclcpp.hpp>
 #include <rclcpp/version.h>
 
+#include "rsaml/realtime.hpp"
 #include "rsaml/usage.hpp"
 
 namespace rsaml_ros2 {
@@ -111,29 +108,6 @@ struct Release : Jobs {
   std::uint64_t executor_jobs = 0;
   std::int64_t executor_worst_ns = 0;
   std::int64_t executor_total_ns = 0;
-};
-
-/**
- * The node's lock (a node is a lock group of the analysis), with priority inheritance where POSIX threads
- * offer it: a thread that holds it runs at the priority of the highest thread waiting for it, so that a
- * release at its real-time priority waits for a data thread at the default priority only as long as that
- * thread needs the lock, not while other threads of the default priority run (a priority inversion).
- */
-class NodeLock {
- public:
-  NodeLock();
-  ~NodeLock();
-  NodeLock(const NodeLock&) = delete;
-  NodeLock& operator=(const NodeLock&) = delete;
-  void lock();
-  void unlock();
-
- private:
-#if defined(__unix__) || defined(__APPLE__)
-  pthread_mutex_t mutex_;
-#else
-  std::mutex mutex_;
-#endif
 };
 
 /** Messages received at one entry port. */
@@ -344,11 +318,14 @@ class Schedule {
   int core_;
   double simulated_load_;
   rclcpp::Time started_;
-  NodeLock activation_;
+  // The node's lock (a node is a lock group of the analysis), with priority inheritance where POSIX threads offer it
+  // (rsaml/realtime.hpp, the C++ runtime's module lock class): a release at its real-time priority waits for a data
+  // thread of priority 0 or the default priority only as long as that thread needs the lock (no priority inversion).
+  rsaml_realtime::InheritingLock activation_;
   // The node's statistics, taken by its release threads and its data thread (priority 0, or the default priority for
   // aperiodic reactions): with priority inheritance, as the node's lock, so that a release never waits for a preempted
   // lower thread that holds it; held only to count a job and queue its lines, which are made before it is taken.
-  NodeLock stats_;
+  rsaml_realtime::InheritingLock stats_;
   // Set under stats_ when the summary is written: a job done after it is neither counted nor said, so
   // that the summary's misses and the miss lines are the same jobs.
   bool summarized_ = false;
