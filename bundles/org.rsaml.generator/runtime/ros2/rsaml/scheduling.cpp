@@ -354,14 +354,19 @@ bool Schedule::rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer,
   }
   r.deadline_tid.store(static_cast<long>(syscall(SYS_gettid)));
   // Its releases counted from the request, as the C++ runtime's: the kernel's first period began as it granted it (at or a
-  // few microseconds after `asked`), so a response counted from there is never short; every period one more.
+  // few microseconds after `asked`), so a response counted from there is never short; every period one more. Whether a
+  // job ended before its next release is decided on CLOCK_MONOTONIC, as the kernel's periods run: the node's clock (the
+  // system's, or a simulated one) may step or stand still, and a loop deciding on it would then run a backlog of jobs
+  // back to back, or yield past a late job. The releases are measured on the node's clock, as every other job's.
   const rclcpp::Duration period = rclcpp::Duration::from_nanoseconds(r.period_ns);
   rclcpp::Time released = asked;
+  std::int64_t released_monotonic = rsaml_jobs::monotonic_ns() - (clock_->now() - asked).nanoseconds();
   while (!stopping_.load() && !timer.is_canceled() && rclcpp::ok()) {
     rsaml_run_job(release, released, clock_->now(), body);
     released = released + period;
+    released_monotonic += r.period_ns;
     // the kernel's next period, unless the job ended past its next release (then the next job starts at once)
-    if (clock_->now() < released) {
+    if (rsaml_jobs::monotonic_ns() < released_monotonic) {
       r.yielding.store(true);
       if (!stopping_.load()) {
         sched_yield();  // the rest of its runtime given up: it runs again at the kernel's next period, its next release
