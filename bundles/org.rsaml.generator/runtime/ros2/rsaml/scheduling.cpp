@@ -326,9 +326,13 @@ bool Schedule::rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer,
     fixed_priority(r);
   }
   const rclcpp::Time asked = clock_->now();
-  std::string refused = rsaml_realtime::request_deadline(r.cost_ns, r.deadline_ns, r.period_ns, rsaml_realtime::kFlagReclaim);
+  // Under simulated time (use_sim_time) the timer releases the jobs at the simulation's rate, while the kernel's periods
+  // are the machine's: the release stays at its rank, timer-driven, as every other node follows the simulation.
+  const bool simulated = clock_->get_clock_type() == RCL_ROS_TIME && clock_->ros_time_is_active();
+  std::string refused = simulated ? "simulated time (use_sim_time) releases its jobs, while SCHED_DEADLINE's periods are the machine's"
+                                  : rsaml_realtime::request_deadline(r.cost_ns, r.deadline_ns, r.period_ns, rsaml_realtime::kFlagReclaim);
   std::string how = ", reclaiming";
-  if (!refused.empty()) {
+  if (!refused.empty() && !simulated) {
     const std::string with_flag = refused;
     refused = rsaml_realtime::request_deadline(r.cost_ns, r.deadline_ns, r.period_ns);
     how = " (without reclaiming: " + with_flag + ")";
