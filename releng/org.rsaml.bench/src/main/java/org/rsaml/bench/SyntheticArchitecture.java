@@ -32,8 +32,9 @@ import org.rsaml.model.util.RsamlResourceFactoryImpl;
  * The layered architecture every benchmark measures: 4 layers; per module an entry and an output
  * port, and a connection from each module's output port to the next module's entry port. What a
  * module holds besides its ports is the benchmark's {@link Shape}: {@link #of} gives the validation,
- * generation and diagram benchmarks a periodic RM function of 3 actions with start dates and an
- * aperiodic function of 2 actions (11 elements a module), clean or with a few defects for validation
+ * generation and diagram benchmarks a periodic RM function of 3 actions with start dates and a
+ * function of 2 actions run on each arrival of data, the module sporadic (data at most every 100 ms,
+ * so that its reaction is analysed too) (11 elements a module), clean or with a few defects for validation
  * to find (about 1% of modules over their layer's budget, RSA-08, and 1% of connections between
  * ports of different data types, RSA-02); {@code TimingBench} gives real-time periodic modules.
  */
@@ -64,6 +65,10 @@ final class SyntheticArchitecture {
     static Architecture of(int modules, boolean defects) {
         return build("synthetic", ArchitectureCategory.HIERARCHICAL, modules, (m, i, n) -> {
             m.setExecDuration(defects && i % 97 == 5 ? 7.5 : 2.0);
+            // The module reacts to its data at most every 100 ms (sporadic), so that its reaction is analysed
+            // and does not take the analysis of its periodic function with it (RSA-24)
+            m.setExecType(ExecutionType.SPORADIC);
+            m.setPeriod(100);
             if (defects && i % 101 == 7) {
                 ((EntryPort) m.getPorts().get(0)).setDataType(DataType.BOOLEAN);
             }
