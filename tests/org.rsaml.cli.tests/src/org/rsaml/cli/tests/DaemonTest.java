@@ -301,6 +301,36 @@ class DaemonTest {
     }
 
     /**
+     * A wrong setting of the resident process (RSAML_DAEMON, RSAML_DAEMON_IDLE, RSAML_DAEMON_HEAP) is said, naming the
+     * variable and how to set it, and the command does not run; no process is started, nothing is remembered as said.
+     */
+    @Test
+    void aWrongResidentProcessSettingIsSaidAndNothingRuns(@TempDir Path dir) throws Exception {
+        withResident(dir, false, (runtime, work) -> {
+            Path state = dir.resolve("state");
+            Map<String, String> wrong = Map.of(
+                    "RSAML_DAEMON_IDLE=30m", "rsaml: RSAML_DAEMON_IDLE='30m' is not a whole number of seconds",
+                    "RSAML_DAEMON_HEAP=lots", "rsaml: RSAML_DAEMON_HEAP='lots' is not a heap size as -Xmx takes it",
+                    "RSAML_DAEMON=yes", "rsaml: RSAML_DAEMON='yes' is neither 0 (never the resident process) nor 1 (always)");
+            for (Map.Entry<String, String> setting : wrong.entrySet()) {
+                List<String> command = defaults(runtime, state, List.of(setting.getKey()), "validate", "--output",
+                        "json=report.json", "exp2-defects.rsaml");
+                Cli.Result piped = Cli.process(work, command);
+                assertEquals(2, piped.code(), piped::toString);
+                assertEquals("", piped.out(), piped::toString);
+                assertTrue(piped.err().startsWith(setting.getValue()) && piped.err().lines().count() == 1, piped::toString);
+                Cli.Result typed = terminal(work, command);
+                assertEquals(2, typed.code(), typed::toString);
+                assertTrue(typed.out().strip().startsWith(setting.getValue()), typed::toString);
+                assertTrue(!Files.exists(work.resolve("report.json")), "the command did not run: " + setting.getKey());
+            }
+            Thread.sleep(2000); // what a process started in the background would have made by now
+            assertTrue(!Files.exists(runtime.resolve("rsaml")), "no resident process, no socket folder");
+            assertTrue(!Files.exists(state), "nothing said, nothing remembered");
+        });
+    }
+
+    /**
      * A process started by default stops after its idle time (here a few seconds) without a command; its heap is
      * bounded unless RSAML_JAVA_OPTS says otherwise.
      */
@@ -317,6 +347,11 @@ class DaemonTest {
             assertTrue(heap(status) > 1024, () -> "RSAML_JAVA_OPTS's heap, not the default bound: " + status);
             Path log = runtime.resolve("rsaml").resolve(socketName(runtime) + ".log");
             long pid = pid(status);
+            // Started from a terminal, it does not keep the start's ignored SIGHUP and SIGINT: either stops it, as any JVM.
+            Matcher ignored = Pattern.compile("(?m)^SigIgn:\\s*([0-9a-f]+)$")
+                    .matcher(Files.readString(Path.of("/proc/" + pid + "/status")));
+            assertTrue(ignored.find(), "the process's signal dispositions");
+            assertEquals(0, Long.parseLong(ignored.group(1), 16) & 0b11, "SIGHUP and SIGINT ignored by the resident process");
             for (int i = 0; i < 120 && ProcessHandle.of(pid).map(ProcessHandle::isAlive).orElse(false); i++) {
                 Thread.sleep(250);
             }
@@ -533,8 +568,22 @@ class DaemonTest {
         }
     }
 
+    /**
+     * Stops the test's resident process, and any process still starting for it (a test that failed before its process
+     * was listening would otherwise leave it running, unreachable once its folder is deleted).
+     */
     private static void stop(Path runtime, Path work) throws Exception {
         launcher(runtime, work, false, "daemon", "stop");
+        String folder = runtime.toString();
+        for (int i = 0; i < 10; i++) {
+            List<ProcessHandle> left = ProcessHandle.allProcesses()
+                    .filter(p -> p.info().commandLine().map(line -> line.contains(folder)).orElse(false)).toList();
+            left.forEach(ProcessHandle::destroyForcibly);
+            for (ProcessHandle p : left) {
+                p.onExit().get(10, TimeUnit.SECONDS);
+            }
+            Thread.sleep(100);
+        }
     }
 
     /** The files a command wrote below {@code work} (besides the models), by relative path; then deleted. */
