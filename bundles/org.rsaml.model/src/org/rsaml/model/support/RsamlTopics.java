@@ -14,6 +14,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 import java.util.regex.Pattern;
 
 import org.rsaml.model.Architecture;
@@ -106,11 +107,20 @@ public final class RsamlTopics {
      * to check every port, take {@link #table} once and ask it.
      */
     public static String problem(Port port) {
+        return problem(port, RsamlTopics::table);
+    }
+
+    /**
+     * As {@link #problem(Port)}, with the table of the port's architecture from {@code tables} (one
+     * kept for a whole validation), asked for only when the answer needs it: a port that names no topic
+     * and whose default topic is short has none, without reading the architecture.
+     */
+    public static String problem(Port port, Function<Architecture, Table> tables) {
         if (named(port) == null && !mayHaveLongDefault(port)) {
             return null;
         }
         Architecture architecture = architecture(port);
-        return architecture == null ? new Table(List.of(connected(port)), null).problem(port) : table(architecture).problem(port);
+        return architecture == null ? new Table(List.of(connected(port)), null).problem(port) : tables.apply(architecture).problem(port);
     }
 
     /**

@@ -243,17 +243,20 @@ public class RuleEValidator extends EObjectValidator {
     /** RSA-28's constraint, as named in rsaml.ecore. */
     private static final String TOPICS = "RSA28_topicNameUsable";
 
-    /** What makes the topic a port names unusable ({@code Port.topicProblem()}), from its architecture's table, read once per validation. */
+    /**
+     * What makes the topic a port names unusable ({@code Port.topicProblem()}), from its architecture's table, read once per
+     * validation and only if a port needs it (one that names a topic, or whose default topic may be too long).
+     */
     private static String topicProblem(Map<Object, Object> context, Port port) {
-        Architecture architecture = port.getModule() == null || port.getModule().getLayer() == null ? null
-                : port.getModule().getLayer().getArchitecture();
-        if (context == null || architecture == null) {
+        if (context == null) {
             return port.topicProblem();
         }
-        @SuppressWarnings("unchecked")
-        Map<Architecture, RsamlTopics.Table> tables = (Map<Architecture, RsamlTopics.Table>) context.computeIfAbsent(RsamlTopics.Table.class,
-                k -> new IdentityHashMap<Architecture, RsamlTopics.Table>());
-        return tables.computeIfAbsent(architecture, RsamlTopics::table).problem(port);
+        return RsamlTopics.problem(port, architecture -> {
+            @SuppressWarnings("unchecked")
+            Map<Architecture, RsamlTopics.Table> tables = (Map<Architecture, RsamlTopics.Table>) context.computeIfAbsent(RsamlTopics.Table.class,
+                    k -> new IdentityHashMap<Architecture, RsamlTopics.Table>());
+            return tables.computeIfAbsent(architecture, RsamlTopics::table);
+        });
     }
 
     private boolean check(Invariant invariant, EObject eObject, DiagnosticChain diagnostics, Map<Object, Object> context) {

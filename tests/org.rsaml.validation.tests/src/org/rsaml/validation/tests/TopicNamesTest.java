@@ -5,13 +5,26 @@
 package org.rsaml.validation.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.TreeMap;
 
+import org.eclipse.emf.common.util.Diagnostic;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.rsaml.model.Layer;
+import org.rsaml.model.Module;
+import org.rsaml.model.Port;
+import org.rsaml.model.support.RsamlTopics;
+import org.rsaml.validation.LoadedModel;
+import org.rsaml.validation.ModelLoader;
+import org.rsaml.validation.Rule;
 import org.rsaml.validation.RsamlModelValidator;
 
 /** RSA-28 (ROS 2 topic names) on the whole architecture: each port's topic checked against a table read once. */
@@ -140,5 +153,95 @@ class TopicNamesTest {
                 + " ROS 2 takes (RMW_TOPIC_MAX_NAME_LENGTH): name a shorter topic (topic) or shorten the layer's, module's or port's name"), found,
                 "a default topic of 248 characters is a finding once, on its publisher (not on the entry port connected to it); one of 247"
                 + " is taken, and a port that names a short topic has no default");
+    }
+
+    @Test
+    void theValidationFindsWhatTheWholeTableFindsThoughItReadsTheTableOnlyForPortsThatNeedIt(@TempDir Path tmp) throws Exception {
+        // Names near ROS 2's limit (full name "/" + layer + "/" + node + "/" + port of at most 247 characters), clashing ones
+        // (renamed with a suffix _2, _3 in the generated code), unnamed ones, layers named as the generator's folders, ports naming
+        // topics or not, connected or not: a port that names no topic and whose default is short is answered without the table.
+        Random random = new Random(24);
+        int found = 0;
+        for (int round = 0; round < 60; round++) {
+            Path file = tmp.resolve("random" + round + ".rsaml");
+            Files.writeString(file, randomModel(random));
+            LoadedModel model = ModelLoader.load(file, file.getFileName().toString());
+            Map<String, String> validation = new TreeMap<>();
+            // by element (the positions of the findings: their names do not tell the ports apart)
+            for (Diagnostic d : RsamlModelValidator.diagnose(model.architecture()).getChildren()) {
+                if (((Rule) d.getData().get(1)).id().equals("RSA-28")) {
+                    validation.put(where((Port) d.getData().get(0)), (String) d.getData().get(2));
+                }
+            }
+            RsamlTopics.Table table = RsamlTopics.table(model.architecture());
+            Map<String, String> wholeTable = new TreeMap<>();
+            for (Layer l : model.architecture().getLayers()) {
+                for (Module m : l.getModules()) {
+                    for (Port p : m.getPorts()) {
+                        String problem = table.problem(p);
+                        if (problem != null) {
+                            wholeTable.put(where(p), problem);
+                        }
+                    }
+                }
+            }
+            assertEquals(wholeTable.keySet(), validation.keySet(), "round " + round + ": the ports with an RSA-28 finding");
+            for (Map.Entry<String, String> e : wholeTable.entrySet()) {
+                assertTrue(validation.get(e.getKey()).endsWith(e.getValue()), "round " + round + ": " + validation.get(e.getKey()));
+            }
+            found += validation.size();
+        }
+        assertTrue(found > 20, "the random models have findings to compare: " + found);
+    }
+
+    /** Where a port is, by index (the names are long): layer/module/port. */
+    private static String where(Port p) {
+        Module m = p.getModule();
+        Layer l = m.getLayer();
+        return l.getArchitecture().getLayers().indexOf(l) + "/" + l.getModules().indexOf(m) + "/" + m.getPorts().indexOf(p);
+    }
+
+    /** A model of two layers and a few modules with names near the limit, clashing, unnamed; topics named or not; a few connections. */
+    private static String randomModel(Random random) {
+        String[] layerNames = { "base", "src", "msg", null, "l".repeat(4) };
+        StringBuilder b = new StringBuilder("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<rsaml:Architecture xmi:version=\"2.0\""
+                + " xmlns:xmi=\"http://www.omg.org/XMI\" xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\""
+                + " xmlns:rsaml=\"http://www.rsaml.org/rsaml/1.0\" name=\"robot\" declaredLayers=\"2\">\n");
+        List<String> outputs = new ArrayList<>();
+        List<String> entries = new ArrayList<>();
+        for (int l = 0; l < 2; l++) {
+            String layer = layerNames[random.nextInt(layerNames.length)];
+            b.append("  <layers").append(layer == null ? "" : " name=\"" + layer + "\"").append(" level=\"").append(l).append("\">\n");
+            int modules = 2 + random.nextInt(6);
+            for (int m = 0; m < modules; m++) {
+                String module = switch (random.nextInt(4)) {
+                    case 0 -> null;
+                    case 1 -> "n".repeat(236 + random.nextInt(4));
+                    default -> "n".repeat(230 + random.nextInt(12));
+                };
+                b.append("    <modules").append(module == null ? "" : " name=\"" + module + "\"").append(" execType=\"periodic\" period=\"100.0\">");
+                int ports = 1 + random.nextInt(3);
+                for (int p = 0; p < ports; p++) {
+                    boolean output = random.nextBoolean();
+                    String port = random.nextInt(5) == 0 ? null : random.nextBoolean() ? "o" : "class";
+                    String topic = switch (random.nextInt(6)) {
+                        case 0 -> "t" + random.nextInt(3);
+                        case 1 -> "base/" + "n".repeat(236) + "/o";
+                        default -> null;
+                    };
+                    b.append("<ports xsi:type=\"rsaml:").append(output ? "OutputPort" : "EntryPort").append('"')
+                            .append(port == null ? "" : " name=\"" + port + "\"").append(" dataType=\"numeric\"")
+                            .append(topic == null ? "" : " topic=\"" + topic + "\"").append("/>");
+                    (output ? outputs : entries).add("//@layers." + l + "/@modules." + m + "/@ports." + p);
+                }
+                b.append("</modules>\n");
+            }
+            b.append("  </layers>\n");
+        }
+        for (int c = 0; c < 3 && !outputs.isEmpty() && !entries.isEmpty(); c++) {
+            b.append("  <connections source=\"").append(outputs.get(random.nextInt(outputs.size()))).append("\" target=\"")
+                    .append(entries.get(random.nextInt(entries.size()))).append("\"/>\n");
+        }
+        return b.append("</rsaml:Architecture>\n").toString();
     }
 }
