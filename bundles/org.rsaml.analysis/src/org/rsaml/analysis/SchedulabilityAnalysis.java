@@ -141,7 +141,7 @@ public final class SchedulabilityAnalysis {
                 fifo = true;
             }
         }
-        byIndex[first] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation(),
+        byIndex[first] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r::explanation,
                 MissWitnesses.schedule(scope, t, effective, r.witness().job(), preemptive, fifo));
     }
 
@@ -159,7 +159,7 @@ public final class SchedulabilityAnalysis {
         for (int k = 0; k < level.size(); k++) {
             int i = level.get(k);
             TaskResult r = results[k];
-            byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), r.explanation()
+            byIndex[i] = new TaskResult(r.task(), r.responseTime(), r.verdict(), () -> r.explanation()
                     + " (first in, first out among the tasks of its priority, the highest: nothing interrupts it once started)",
                     r.witness());
         }
@@ -258,7 +258,7 @@ public final class SchedulabilityAnalysis {
             }
             TaskResult r = byIndex[i];
             byIndex[i] = r.verdict() == Verdict.MISSES
-                    ? new TaskResult(r.task(), OptionalLong.empty(), Verdict.MISSES, r.explanation()
+                    ? new TaskResult(r.task(), OptionalLong.empty(), Verdict.MISSES, () -> r.explanation()
                             + " (at least; tasks that wait for their lock groups can delay it further)", null)
                     : new TaskResult(r.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + who
                             + " can be late waiting for its lock group, and then run its late jobs back to back", null);

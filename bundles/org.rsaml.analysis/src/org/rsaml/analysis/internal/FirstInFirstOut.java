@@ -56,7 +56,7 @@ public final class FirstInFirstOut {
                 listed.put(t.name(), 1L);
             }
             Witness w = new Witness(task.name(), 0, 0, worst, List.of(), listed, null, false, delaying.size() - listed.size());
-            return new TaskResult(task, r.responseTime(), r.verdict(), r.explanation(), w);
+            return new TaskResult(task, r.responseTime(), r.verdict(), r::explanation, w);
         } catch (ArithmeticException e) {
             return ResponseTimes.notAnalysed(task, new Arith.TooLarge().getMessage());
         }
@@ -117,7 +117,7 @@ public final class FirstInFirstOut {
             }
             int others = delaying.size() - (task.cost() > 0 ? 1 : 0);
             Witness w = new Witness(task.name(), 0, 0, sum, List.of(), listed, null, false, others - listed.size());
-            out[i] = new TaskResult(task, r.responseTime(), r.verdict(), r.explanation(), w);
+            out[i] = new TaskResult(task, r.responseTime(), r.verdict(), r::explanation, w);
         }
         return out;
     }

@@ -41,18 +41,17 @@ public final class MissWitnesses {
      * period; on a miss, with the witness {@code summary} gives (asked for only then).
      */
     static TaskResult result(Task task, long worst, long job, Supplier<Witness> summary) {
-        String where = job == 0 ? "its first job after the critical instant"
-                : "job " + (job + 1) + " of its busy period (an earlier job delays it)";
-        if (worst <= task.deadline()) {
-            return new TaskResult(task, OptionalLong.of(worst), Verdict.MEETS,
-                    "worst-case response time " + RsamlTimes.text(worst) + " (" + where + ") within its deadline of "
-                            + RsamlTimes.text(task.deadline()),
-                    null);
-        }
-        return new TaskResult(task, OptionalLong.of(worst), Verdict.MISSES,
-                "worst-case response time " + RsamlTimes.text(worst) + " (" + where + ") exceeds its deadline of "
-                        + RsamlTimes.text(task.deadline()) + " by " + RsamlTimes.text(worst - task.deadline()),
-                summary.get());
+        boolean meets = worst <= task.deadline();
+        // worded when first asked for: most verdicts of a large architecture are never read
+        return new TaskResult(task, OptionalLong.of(worst), meets ? Verdict.MEETS : Verdict.MISSES, () -> {
+            String where = job == 0 ? "its first job after the critical instant"
+                    : "job " + (job + 1) + " of its busy period (an earlier job delays it)";
+            return meets
+                    ? "worst-case response time " + RsamlTimes.text(worst) + " (" + where + ") within its deadline of "
+                            + RsamlTimes.text(task.deadline())
+                    : "worst-case response time " + RsamlTimes.text(worst) + " (" + where + ") exceeds its deadline of "
+                            + RsamlTimes.text(task.deadline()) + " by " + RsamlTimes.text(worst - task.deadline());
+        }, meets ? null : summary.get());
     }
 
     /**

@@ -152,9 +152,8 @@ public final class Preemptive {
             long worstResponse = worst;
             long job = worstJob;
             TaskResult r = MissWitnesses.result(analysed, worst, worstJob, () -> summary.of(worstResponse, job));
-            String lock = analysed == task ? ""
-                    : " (waiting for its lock group '" + task.group() + "', as if at priority " + effective + ")";
-            return new TaskResult(task, r.responseTime(), r.verdict(), r.explanation() + lock, r.witness());
+            return analysed == task ? r : new TaskResult(task, r.responseTime(), r.verdict(), () -> r.explanation()
+                    + " (waiting for its lock group '" + task.group() + "', as if at priority " + effective + ")", r.witness());
         } catch (ArithmeticException e) {
             return ResponseTimes.notAnalysed(task, new Arith.TooLarge().getMessage());
         }
