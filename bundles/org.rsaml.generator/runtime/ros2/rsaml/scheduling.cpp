@@ -68,32 +68,63 @@ int fixed_priority(const Release& release) {
   return low < 0 || high < low ? EINVAL : pthread_setschedparam(pthread_self(), policy, &param);
 }
 
+#if defined(__linux__)
 /**
- * Pins the calling thread to `core` (when >= 0) and gives it the release's real-time priority; a
- * release of an EDF processor is left on every CPU the process may use (the kernel admits a deadline
- * thread only on every CPU of its root domain) and waits for its first release at its rank, where it
- * asks for SCHED_DEADLINE (Schedule::rsaml_run_deadline). Says which in the trace.
+ * The CPU of the node's core in this process: the one the launch placed the process on (RSAML_CPU, which its prefix
+ * sets with the process's taskset: on one machine that runs every host, another host's core is on a CPU of its own,
+ * OneMachineCpus), so that the node's threads stay where the launch put the process; else (started otherwise, e.g.
+ * by ros2 run) the core itself.
+ */
+int cpu_of(int core) {
+  const char* placed = core >= 0 ? std::getenv("RSAML_CPU") : nullptr;
+  if (placed != nullptr && *placed != '\0') {
+    char* end = nullptr;
+    const long cpu = std::strtol(placed, &end, 10);
+    if (*end == '\0' && cpu >= 0 && cpu < CPU_SETSIZE) {
+      return static_cast<int>(cpu);
+    }
+  }
+  return core;
+}
+
+/** The calling thread on `cpu` alone; false where the machine has no such CPU (or refuses). */
+bool pin(int cpu) {
+  if (cpu < 0 || cpu >= CPU_SETSIZE) {
+    return false;
+  }
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  return pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0;
+}
+#endif
+
+/**
+ * Pins the calling thread to the CPU of `core` (when >= 0: cpu_of) and gives it the release's real-time priority; a
+ * release of an EDF processor is then given every CPU the process may use (the kernel admits a deadline thread only on
+ * every CPU of its root domain) and waits for its first release at its rank, where it asks for SCHED_DEADLINE
+ * (Schedule::rsaml_run_deadline), which puts it back on its CPU where the kernel refuses. Says which in the trace.
  */
 void place(Release& release, int core) {
 #if defined(__linux__)
-  if (release.edf) {
+  release.cpu = cpu_of(core);
+  if (core >= 0) {
+    const bool pinned = pin(release.cpu);
+    trace("cpu " + release.label + " core " + std::to_string(core) +
+          (release.cpu == core ? "" : " on CPU " + std::to_string(release.cpu) + " (where the launch placed its process)") +
+          (pinned ? "" : " not available: default"));
+    if (!pinned) {
+      release.cpu = -1;
+    }
+  }
+  if (release.edf && release.cpu >= 0) {
     cpu_set_t all;
     CPU_ZERO(&all);
-    // every CPU the process's main thread may use
-    const bool unpinned = core >= 0 && sched_getaffinity(getpid(), sizeof all, &all) == 0 &&
-                          pthread_setaffinity_np(pthread_self(), sizeof all, &all) == 0;
-    release.unpinned = unpinned ? " on every core, not core " + std::to_string(core) + " alone" : "";
-    core = -1;
-  }
-  if (core >= 0) {
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    bool pinned = false;
-    if (core < CPU_SETSIZE) {
-      CPU_SET(core, &set);
-      pinned = pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0;
+    // every CPU the process's main thread may use: more than its core's, unless the process was placed there alone
+    if (sched_getaffinity(getpid(), sizeof all, &all) == 0 && CPU_COUNT(&all) > 1 &&
+        pthread_setaffinity_np(pthread_self(), sizeof all, &all) == 0) {
+      release.unpinned = " on every CPU of its process, not CPU " + std::to_string(release.cpu) + " alone";
     }
-    trace("cpu " + release.label + " core " + std::to_string(core) + (pinned ? "" : " not available: default"));
   }
   if (!release.realtime) {
     release.sched = "default (aperiodic reactions)";
@@ -347,6 +378,12 @@ bool Schedule::rsaml_run_deadline(std::size_t release, rclcpp::TimerBase& timer,
     const int error = fixed_priority(r);
     sched = (error == 0 ? std::string(r.round_robin ? "SCHED_RR" : "SCHED_FIFO") + " rank " + std::to_string(r.rank) : "default") +
             " instead of EDF: " + refused;
+    if (!r.unpinned.empty()) {
+      // back on its CPU, as its cpu line says (the C++ runtime's fallback does the same)
+      sched += pin(r.cpu) ? ", back on CPU " + std::to_string(r.cpu) + " alone" : ", left on every CPU of its process (CPU " +
+                                                                                      std::to_string(r.cpu) + " refused)";
+      r.unpinned.clear();
+    }
   }
   {
     std::lock_guard<rsaml_realtime::InheritingLock> lock(stats_);

@@ -99,7 +99,8 @@ struct Release : Jobs {
   bool edf = false;  // a release of an EDF processor: SCHED_DEADLINE where the kernel permits it
   std::atomic<long> deadline_tid{0};  // its thread's id while it runs as a deadline thread (rsaml_run_deadline), else 0
   std::atomic<bool> yielding{false};  // a deadline thread waiting in sched_yield() for its next period
-  std::string unpinned;          // an EDF release's thread left on every core: said in its sched line
+  std::string unpinned;          // an EDF release's thread given every CPU of its process: said in its sched line
+  int cpu = -1;                  // the CPU its thread is pinned to (place), -1 where none
   bool realtime = true;  // false: the data thread of aperiodic reactions, at the default priority
   std::int64_t period_ns = 0;
   rclcpp::CallbackGroup::SharedPtr group;

@@ -297,6 +297,18 @@ public final class TimingAnalysis {
                             + " and they run under SCHED_FIFO at their ranks (the trace says 'instead of EDF'): on neither runtime does this"
                             + " processor run as analysed, unless the machine gives core " + element.getCore() + " a root domain of its own"
                             + " (an exclusive cpuset partition)");
+                } else if (element != null && element.eContainer() instanceof org.rsaml.model.Architecture arch) {
+                    List<String> cored = arch.getProcessors().stream().filter(q -> q.getCore() >= 0 && !q.getModules().isEmpty())
+                            .map(org.rsaml.model.Processor::getName).toList();
+                    if (!cored.isEmpty()) {
+                        notes.add("no core of its own beside processors with cores (" + String.join(", ", cored) + "): both runtimes keep"
+                                + " its releases to the CPUs no processor claims, so that those cores stay theirs, and there Linux refuses"
+                                + " SCHED_DEADLINE (it admits a deadline thread only on every CPU of its root domain): they run under"
+                                + " SCHED_FIFO at their ranks (the trace says 'instead of EDF'), and the verdict is not claimed for this"
+                                + " processor where it runs on a machine with them (the C++ program; a ROS 2 launch without host:=, or with"
+                                + " host:= naming its host when one of them is on it), unless the machine gives those CPUs a root domain of their own (an exclusive"
+                                + " cpuset partition); docs/timing.md, EDF beside processors with cores");
+                    }
                 }
             } else {
                 notes.add("the processor is declared " + element.getSchedPolicy().getLiteral() + ": the verdict is for a platform"

@@ -358,7 +358,7 @@ final class PathSearch {
     }
 
     private static String hostName(String host) {
-        return host.isEmpty() ? "main" : "'" + host + "'";
+        return host.isEmpty() ? RsamlLabels.MAIN_HOST : "'" + host + "'";
     }
 
     private static String processorName(org.rsaml.model.Processor p) {

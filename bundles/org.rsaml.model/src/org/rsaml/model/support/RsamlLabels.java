@@ -65,6 +65,18 @@ public final class RsamlLabels {
     }
 
     /**
+     * The name of the main host (the processors without a host, and the default processor) wherever a host is named: a
+     * ROS 2 launch's {@code host:=} value that starts them, and the messages and notes that name hosts.
+     */
+    public static final String MAIN_HOST = "main";
+
+    /** The name of the machine a processor is on: its {@link #host}, or {@link #MAIN_HOST} for the main host. */
+    public static String hostName(Processor processor) {
+        String host = host(processor);
+        return host.isEmpty() ? MAIN_HOST : host;
+    }
+
+    /**
      * The element's path from the architecture down, by names:
      * {@code architecture/decisionLayer/proceduralExec/e0}.
      */

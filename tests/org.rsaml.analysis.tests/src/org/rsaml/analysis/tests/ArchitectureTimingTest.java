@@ -161,6 +161,25 @@ class ArchitectureTimingTest {
     }
 
     /**
+     * An EDF processor without a core beside a processor with one: both runtimes keep it to the CPUs no processor claims,
+     * where the kernel refuses SCHED_DEADLINE, so its notes say the verdict is not claimed there (docs/timing.md, "EDF
+     * beside processors with cores"); alone on its machine, they say nothing of it.
+     */
+    @Test
+    void anEdfProcessorWithoutACoreBesideOneWithACoreSaysItsVerdictIsNotClaimedThere() throws Exception {
+        Architecture a = example("mobile-base-latency.rsaml");
+        a.getProcessors().get(1).setSchedPolicy(org.rsaml.model.SchedulingPolicy.EDF);
+        a.getProcessors().get(1).setCore(-1);
+        List<String> notes = TimingAnalysis.analyse(a).processors().get(1).notes();
+        String beside = notes.stream().filter(n -> n.startsWith("no core of its own beside processors with cores (core0)")).findFirst().orElse(null);
+        assertTrue(beside != null && beside.contains("both runtimes keep its releases to the CPUs no processor claims") && beside.contains(
+                "they run under SCHED_FIFO at their ranks (the trace says 'instead of EDF'), and the verdict is not claimed"), "what runs, said: " + notes);
+        a.getProcessors().get(0).setCore(-1);
+        assertTrue(TimingAnalysis.analyse(a).processors().get(1).notes().stream().noneMatch(n -> n.startsWith("no core of its own")),
+                "no processor claims a core: nothing to say");
+    }
+
+    /**
      * Deadlines shorter than periods on an EDF processor: the set meets them under EDF, and the verdict is claimed on
      * both runtimes, as for deadlines equal to periods (each release's thread never waits for its timer again): no note
      * sets them apart.

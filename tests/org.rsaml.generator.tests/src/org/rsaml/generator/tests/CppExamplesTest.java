@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -136,15 +137,7 @@ class CppExamplesTest {
 
     @Test
     void aModuleNoProcessorNamesStaysOffTheClaimedCores(@TempDir Path tmp) throws Exception {
-        Path model = tmp.resolve("one-unallocated.rsaml");
-        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
-        String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']";
-        assertTrue(text.contains(planner), "the example deploys the path planner on a processor");
-        Files.writeString(model, text.replace(planner, ""));
-        Path out = tmp.resolve("project");
-        new RsamlGenerator().generate(model, Target.CPP, out, false);
-        Path exe = Tools.cmakeBuild(out, executableName(out));
-        RunTrace trace = new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", "200"));
+        RunTrace trace = runVariant(tmp, "one-unallocated", " //@layers[name='navigation']/@modules[name='pathPlanner']", "", 200);
         // cores 0 and 1 are the processors'; the planner gets the others, or says there are none
         List<String> planned = threadsOf(trace, "cpu ", "navigation/pathPlanner");
         assertEquals(threadsOf(trace, "sched ", "navigation/pathPlanner").size(), planned.size(), trace.output);
@@ -163,6 +156,44 @@ class CppExamplesTest {
         List<String> detector = threadsOf(trace, "cpu ", "navigation/obstacleDetector");
         assertFalse(detector.isEmpty(), trace.output);
         assertTrue(detector.stream().allMatch(l -> l.matches(".* core 1( not available: default)?")), detector::toString);
+    }
+
+    /**
+     * An EDF processor without a core beside processors with cores (docs/timing.md, "EDF beside processors with cores"):
+     * its threads are kept to the cores no processor claims, as every module's without a core, so the processors' cores
+     * stay theirs; there the kernel refuses its releases SCHED_DEADLINE (it admits a deadline thread only on every CPU of
+     * its root domain), and they run at their ranks, saying 'instead of EDF'. mobile-base-latency with its navigation
+     * processor made EDF and given no core, beside the control processor on core 0.
+     */
+    @Test
+    void anEdfProcessorWithoutACoreBesideACoreStaysOffItAndSaysItRunsInsteadOfEdf(@TempDir Path tmp) throws Exception {
+        Assumptions.assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "one CPU: no core left beside core 0");
+        RunTrace trace = runVariant(tmp, "edf-coreless", "description=\"CPU core 1: navigation.\" core=\"1\"",
+                "description=\"Navigation, EDF on no core.\" schedPolicy=\"EDF\"", 300);
+        for (String module : List.of("navigation/obstacleDetector", "navigation/pathPlanner")) {
+            List<String> placed = threadsOf(trace, "cpu ", module);
+            assertFalse(placed.isEmpty(), trace.output);
+            assertTrue(placed.stream().allMatch(l -> l.matches("cpu " + module + "(\\.\\w+)? cores [0-9,-]+ unclaimed") && !l.matches(".* cores (0|0-.*|0,.*) .*")),
+                    "the EDF processor's threads off core 0: " + placed);
+        }
+        List<String> releases = trace.matching("sched navigation/pathPlanner.plan");
+        assertEquals(1, releases.size(), trace.output);
+        assertTrue(releases.get(0).matches("sched navigation/pathPlanner\\.plan (SCHED_FIFO rank \\d+|default) instead of EDF: .+"),
+                "refused SCHED_DEADLINE on the cores left, it says it runs at its rank instead: " + releases.get(0));
+        assertEquals(List.of("cpu control/velocityController core 0"), trace.matching("cpu control/velocityController core"),
+                "the controller keeps core 0");
+    }
+
+    /** mobile-base-latency with {@code from} replaced by {@code to}, generated, built and run for {@code ms}: its trace. */
+    private static RunTrace runVariant(Path tmp, String name, String from, String to, int ms) throws Exception {
+        Path model = tmp.resolve(name + ".rsaml");
+        String text = Files.readString(Tools.example("mobile-base-latency.rsaml"));
+        assertTrue(text.contains(from), "the example has " + from);
+        Files.writeString(model, text.replace(from, to));
+        Path out = tmp.resolve("project");
+        new RsamlGenerator().generate(model, Target.CPP, out, false);
+        Path exe = Tools.cmakeBuild(out, executableName(out));
+        return new RunTrace(Tools.ok(out, 60, exe.toString(), "--run-for-ms", Integer.toString(ms)));
     }
 
     /** The trace lines of a kind ('cpu ', 'sched ') about a module's threads: its worker's and its releases'. */

@@ -987,19 +987,23 @@ final class PlatformCheck {
         return true;
     }
 
-    /** Where a target runs the threads of a processor that the model gives no CPU of its own (docs/timing.md, "Other machines"). */
+    /**
+     * Where a target runs the threads of a processor that the model gives no CPU of its own (docs/timing.md, "Other
+     * machines"). Both keep the threads (C++) or processes (ROS 2) of the processors without a core, an EDF processor's
+     * included, to the CPUs no processor claims where some processor claims a core, by one rule
+     * ({@link OneMachineCpus#claimed}): an EDF processor without a core beside processors with cores is refused
+     * SCHED_DEADLINE there and runs at its ranks, saying 'instead of EDF', so that the processors' cores stay theirs
+     * (docs/timing.md, "EDF beside processors with cores"). They differ for an EDF processor with a core.
+     */
     enum Placement {
         /**
-         * The C++ program: a processor's core pins its threads ({@link OneMachineCpus}); where some processor claims a core,
-         * the threads of the modules without one are kept to the cores no processor claims; every EDF release of a
-         * processor with a core is left on every core (the kernel admits a deadline thread only there).
+         * The C++ program: a processor's core pins its threads ({@link OneMachineCpus}), but for an EDF processor's
+         * releases, left on every core (the kernel admits a deadline thread only there).
          */
         CPP,
         /**
          * A ROS 2 launch without host:=: a processor's core pins its processes with taskset ({@link OneMachineCpus}), its
-         * EDF releases included; where some processor claims a core, the processes of the processors without one are kept
-         * to the CPUs no processor claims by the same rule ({@link OneMachineCpus#claimed}), but for an EDF processor's,
-         * which run on every CPU (the kernel admits their deadline threads only there).
+         * EDF releases included (the kernel then refuses them SCHED_DEADLINE: they run at their ranks, 'instead of EDF').
          */
         ROS2
     }
@@ -1016,9 +1020,9 @@ final class PlatformCheck {
      * for the report of the releases whose bounds a test leaves unchecked. Not apart: the threads of a processor whose core
      * the machine lacks run anywhere, so no processor's do; the modules without a core of several hosts, or of two
      * processors (the 'default' one counted), share the CPUs left; the deadline threads of another EDF processor run on
-     * every CPU it may use (C++: all, for a processor with a core too; ROS 2: a processor without a core); where every CPU
-     * is claimed, the modules without a core run on every one, the claimed ones included. A processor without a core is
-     * apart on ROS 2 as an EDF processor, whose deadline threads run on every CPU above every fixed-priority thread.
+     * every CPU (C++: one with a core; both targets: one without a core where no processor claims a core, while beside
+     * processors with cores it is kept to the CPUs they leave, refused SCHED_DEADLINE there); where every CPU is claimed,
+     * the modules without a core run on every one, the claimed ones included.
      */
     static String notApart(Architecture arch, Module module, Placement target, int cpus) {
         Map<Processor, Integer> cpuOf = OneMachineCpus.of(arch);
@@ -1028,7 +1032,7 @@ final class PlatformCheck {
             for (Module m : layer.getModules()) {
                 Processor p = processorOf(arch, m);
                 if (p == null || p.getCore() < 0) {
-                    corelessHosts.add(RsamlLabels.host(p).isEmpty() ? "main" : RsamlLabels.host(p));
+                    corelessHosts.add(RsamlLabels.hostName(p));
                     corelessProcessors.add(p == null ? "default" : p.getName());
                 } else {
                     int cpu = cpuOf.get(p);
@@ -1043,21 +1047,17 @@ final class PlatformCheck {
             return "the modules without a core of hosts " + corelessHosts + " share CPUs the analysis counts apart";
         }
         Processor p = processorOf(arch, module);
-        boolean edf = p != null && p.isSetSchedPolicy() && p.getSchedPolicy() == SchedulingPolicy.EDF;
+        int claimed = new HashSet<>(cpuOf.values()).size();
         for (Processor q : arch.getProcessors()) {
             if (q != p && q.isSetSchedPolicy() && q.getSchedPolicy() == SchedulingPolicy.EDF && !q.getModules().isEmpty()
-                    && (target == Placement.CPP || q.getCore() < 0)) {
+                    && (q.getCore() >= 0 ? target == Placement.CPP : claimed == 0)) {
                 return "the deadline threads of EDF processor " + q.getName() + " run on every core";
             }
         }
-        int claimed = new HashSet<>(cpuOf.values()).size();
         int unclaimed = cpus - claimed;
         boolean coreless = !corelessProcessors.isEmpty();
         if (p != null && p.getCore() >= 0) {
             return coreless && unclaimed == 0 ? "no core is left for the modules without one, so they run on every core" : null;
-        }
-        if (target == Placement.ROS2 && edf) {
-            return null;
         }
         if (corelessProcessors.size() > 1) {
             return "it has no core of its own and shares the CPUs no processor claims with the modules of processors "

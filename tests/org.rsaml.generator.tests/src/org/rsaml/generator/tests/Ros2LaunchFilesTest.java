@@ -16,6 +16,8 @@ import java.util.Map;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.rsaml.generator.RsamlGenerator;
 import org.rsaml.generator.Target;
 import org.rsaml.generator.internal.Names;
@@ -127,8 +129,10 @@ class Ros2LaunchFilesTest {
                 if type(e).__name__ in ('Node', 'ComposableNodeContainer') and (e.condition is None or e.condition.evaluate(context)):
                     name = perform_substitutions(context, normalize_to_list_of_substitutions(e._Node__node_name))
                     prefix = shlex.split(perform_substitutions(context, e.process_description.prefix))
-                    out = subprocess.run(prefix + ['sh', '-c', 'grep Cpus_allowed_list /proc/self/status'], capture_output=True, text=True)
-                    print(name, out.stdout.split()[-1], out.stderr.strip())
+                    out = subprocess.run(prefix + ['sh', '-c', 'grep Cpus_allowed_list /proc/self/status; echo "${RSAML_CPU:--}"'],
+                                         capture_output=True, text=True)
+                    print(name, out.stdout.split()[-2], out.stderr.strip())
+                    print('placed', name, out.stdout.split()[-1])
             """;
 
     /**
@@ -181,6 +185,11 @@ class Ros2LaunchFilesTest {
         String processes = run.cpus("_processes.launch.py", "");
         assertTrue(processes.contains("navigation_obstacle_detector 1") && processes.contains("control_velocity_controller 0"),
                 "without host:=, the board's nodes on CPU 1, the main host's on CPU 0:\n" + processes);
+        // each process is told the CPU it was placed on (RSAML_CPU), where its nodes pin their threads, not the model's core
+        assertTrue(processes.contains("placed navigation_obstacle_detector 1") && processes.contains("placed control_velocity_controller 0"),
+                "the processes told their CPUs:\n" + processes);
+        String board = run.cpus(".launch.py", "nav-board");
+        assertTrue(board.contains("placed " + pkg + "_core1_container 0"), "host:=nav-board: the board's container told its core 0:\n" + board);
     }
 
     /**
@@ -188,16 +197,20 @@ class Ros2LaunchFilesTest {
      * CPUs no processor claims (OneMachineCpus.claimed), saying so; where every CPU is claimed, where the operating system
      * puts them, saying that. mobile-base-latency with its navigation processor's core taken away: its container (and,
      * in the other launch file, each of its nodes' processes) runs on the CPUs this machine leaves beside core 0. ROS 2's
-     * launch evaluates the prefixes, which are run and print the CPUs each process may use.
+     * launch evaluates the prefixes, which are run and print the CPUs each process may use. The same when that processor is
+     * an EDF one (docs/timing.md, "EDF beside processors with cores"): placed by the same rule, so that core 0 stays the
+     * control processor's, where the kernel refuses its releases SCHED_DEADLINE, which they say ('instead of EDF':
+     * CppExamplesTest shows the C++ program's, Ros2LaunchTest a launch's).
      */
-    @Test
-    void theProcessesOfAProcessorWithoutACoreRunOnTheCpusNoProcessorClaims(@TempDir Path tmp) throws Exception {
+    @ParameterizedTest(name = "policy ''{0}''")
+    @ValueSource(strings = {"", " schedPolicy=\"EDF\""})
+    void theProcessesOfAProcessorWithoutACoreRunOnTheCpusNoProcessorClaims(String policy, @TempDir Path tmp) throws Exception {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
         String allowed = Tools.ok(tmp, 60, "sh", "-c", "grep Cpus_allowed_list /proc/self/status").strip().replaceFirst(".*\\s", "");
         java.util.TreeSet<Integer> cpus = cpuSet(allowed);
         Assumptions.assumeTrue(cpus.size() >= 2 && cpus.contains(0), "one CPU, or no CPU 0: no CPU left beside core 0 (" + allowed + ")");
-        Pinned run = Pinned.of(tmp, "coreless", "<processors name=\"core1\" description=\"Navigation, on no core of its own.\"");
+        Pinned run = Pinned.of(tmp, "coreless", "<processors name=\"core1\" description=\"Navigation, on no core of its own.\"" + policy);
         String pkg = run.pkg();
         cpus.remove(0);
         String left = cpuList(cpus);
@@ -208,8 +221,8 @@ class Ros2LaunchFilesTest {
         String processes = run.cpus("_processes.launch.py", "");
         assertTrue(processes.contains("navigation_path_planner " + left + " RsaML: cpu navigation_path_planner cores " + left + " unclaimed")
                 && processes.contains("control_velocity_controller 0"), "the navigation nodes on the CPUs left beside core 0:\n" + processes);
-        if (!allowed.equals("0-1")) {
-            return; // every CPU claimed: shown on two CPUs
+        if (!allowed.equals("0-1") || !policy.isEmpty()) {
+            return; // every CPU claimed: shown on two CPUs, once
         }
         // every CPU claimed (core 0 and core 1), the path planner on no processor: where the operating system puts it, said
         String planner = " //@layers[name='navigation']/@modules[name='pathPlanner']\"/>";

@@ -73,11 +73,15 @@ import org.rsaml.validation.ModelLoader;
  * release under SCHED_DEADLINE with the kernel's runtime, deadline and period, or the kernel's refusal and the
  * fallback, and the test says which it saw), and one seeded random task set (two processors of rate-monotonic
  * tasks, as {@link JobTimingTest} runs on the C++ runtime), a chain of two reactions sharing a core with a timed
- * release (ros2-reaction.rsaml), and, always, a processor the analysis says misses, whose
+ * release (ros2-reaction.rsaml), a processor pinned to a core beside an EDF processor without one (ros2-mixed-placement.rsaml:
+ * the EDF one kept to the CPUs left, where the kernel refuses it SCHED_DEADLINE, docs/timing.md "EDF beside processors with
+ * cores"), and, always, a processor the analysis says misses, whose
  * predicted misses must show ({@link #anOverloadedProcessorMissesAsPredicted}); {@code -Drsaml.ros2.examples=all} runs every example
  * without errors as well,
  * {@code -Drsaml.ros2.examples=mobile-base-latency.rsaml,resources/inhibitor-window.rsaml} only
- * those, and {@code -Drsaml.ros2.seeds=1,2,3} other random sets.
+ * those ({@code resources/ros2-two-hosts.rsaml}: two hosts' core 0 on one machine, each node's threads on the CPU the launch
+ * gave its process), and {@code -Drsaml.ros2.seeds=1,2,3} other random sets. Every run checks that each release's thread is
+ * pinned where the launch placed its process (OneMachineCpus), as its cpu line says.
  */
 class Ros2LaunchTest {
 
@@ -104,7 +108,8 @@ class Ros2LaunchTest {
             return java.util.Arrays.stream(chosen.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toList();
         }
         List<String> models = new ArrayList<>(List.of("mobile-base-latency.rsaml", "resources/ros2-preemption.rsaml", "resources/inhibitor-window.rsaml",
-                "resources/ros2-edf.rsaml", "resources/ros2-edf-constrained.rsaml", "resources/ros2-reaction.rsaml"));
+                "resources/ros2-edf.rsaml", "resources/ros2-edf-constrained.rsaml", "resources/ros2-reaction.rsaml",
+                "resources/ros2-mixed-placement.rsaml"));
         if ("all".equals(chosen)) {
             for (String e : Tools.cleanExamples()) {
                 if (!models.contains(e)) {
@@ -330,6 +335,17 @@ class Ros2LaunchTest {
                 () -> "not every container exited cleanly on SIGINT:\n" + Tools.last(trace, 6000));
 
         Map<String, JobSummary> observed = JobSummary.of(out);
+        // Each release's thread where the launch placed its process (OneMachineCpus: without host:=, another host's core on a
+        // CPU of its own), not on the model's core, as its cpu line says; a machine without that CPU says 'not available'.
+        Map<String, Integer> placed = PlatformCheck.cpus(out);
+        for (Release r : plan.releases()) {
+            org.rsaml.model.Processor p = PlatformCheck.processorOf(arch, r.module().module());
+            int cpu = org.rsaml.generator.internal.cxx.OneMachineCpus.cpu(p);
+            if (cpu >= 0 && cpu < Runtime.getRuntime().availableProcessors()) {
+                assertEquals(Integer.valueOf(cpu), placed.get(r.label()), r.label() + ": pinned where the launch placed its process (CPU " + cpu
+                        + "), its cpu line: " + out.lines().filter(l -> l.contains("] cpu " + r.label() + " ")).toList());
+            }
+        }
         Map<String, double[]> ports = new TreeMap<>();
         Matcher m = PORT.matcher(out);
         while (m.find()) {

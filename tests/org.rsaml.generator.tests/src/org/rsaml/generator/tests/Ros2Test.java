@@ -330,8 +330,8 @@ class Ros2Test {
      * The model's deployment in the launch files: the nodes of the modules one processor runs share
      * a container of their own, the modules no processor names share the package's container, and
      * the processes of a processor with a core (its container, or its nodes' processes) start under
-     * taskset on that core; where some processor claims a core, those of the modules without one (but an
-     * EDF processor's) start under taskset on the CPUs no processor claims ({@link OneMachineCpus#claimed}, the
+     * taskset on that core; where some processor claims a core, those of the modules without one (an EDF
+     * processor's too) start under taskset on the CPUs no processor claims ({@link OneMachineCpus#claimed}, the
      * C++ program's rule); nothing else is confined.
      */
     private static void assertDeployed(Architecture arch, String pkg, Path root, String composed, String processes) throws Exception {
@@ -375,8 +375,7 @@ class Ros2Test {
                         pinned.add(process);
                     }
                 }
-                boolean edf = processor != null && processor.isSetSchedPolicy() && processor.getSchedPolicy() == org.rsaml.model.SchedulingPolicy.EDF;
-                if ((processor == null || processor.getCore() < 0) && !edf && !claimed.isEmpty()) {
+                if ((processor == null || processor.getCore() < 0) && !claimed.isEmpty()) {
                     for (String process : List.of(c, node)) {
                         assertNotNull(prefixes.get(process), "process " + process + " of a module without a core is not kept off the claimed CPUs "
                                 + claimed);

@@ -68,7 +68,7 @@ public final class OneMachineCpus {
     /**
      * The CPUs the processors with a core (and modules) claim, by where the system is started: {@code ""}, one machine
      * runs every host (the C++ program, a ROS 2 launch without {@code host:=}): the CPUs {@link #of} gives; a host's name
-     * ({@code main} for the processors without one), only that host's processors run: their cores. The threads of the
+     * ({@link RsamlLabels#MAIN_HOST} for the processors without one), only that host's processors run: their cores. The threads of the
      * modules without a core are kept off them, on the CPUs left, when some CPU is claimed (docs/timing.md, "One CPU per
      * processor"): the C++ runtime (System::claim_cores, from each module's CPU, which {@link #cpu} gives) and the ROS 2
      * launch (the taskset of the processes of the processors without a core) alike.
@@ -77,8 +77,7 @@ public final class OneMachineCpus {
         Map<String, SortedSet<Integer>> claimed = new TreeMap<>();
         claimed.put("", new TreeSet<>(of(arch).values()));
         for (Processor p : arch.getProcessors()) {
-            String host = RsamlLabels.host(p).isEmpty() ? "main" : RsamlLabels.host(p);
-            SortedSet<Integer> cores = claimed.computeIfAbsent(host, h -> new TreeSet<>());
+            SortedSet<Integer> cores = claimed.computeIfAbsent(RsamlLabels.hostName(p), h -> new TreeSet<>());
             if (p.getCore() >= 0 && !p.getModules().isEmpty()) {
                 cores.add(p.getCore());
             }

@@ -231,7 +231,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        		ComposableNodeContainer(
 		        		    name=«py(c.name)», namespace=namespace, package=«py(context.packages.runtime)»,
 		        		    executable=«py(rosNames.containerExecutable)», output='screen', parameters=[parameters],«shutdown(c)»«IF c.core >= 0»
-		        		    prefix=«prefix(c.processor, c.core)»,«ELSEIF unclaimedUsed && confined(c.processor)»
+		        		    prefix=«prefix(c.processor, c.core)»,«ELSEIF unclaimedUsed»
 		        		    prefix=unclaimed(«py(c.name)», host),«ENDIF»«IF hosted»
 		        		    condition=«onHost(c.processor)»,«ENDIF»
 		        		    composable_node_descriptions=[
@@ -246,7 +246,7 @@ class Ros2LaunchTemplate extends Ros2Template {
 		        	«FOR m : plan.modules»
 		        		Node(package=«py(context.nodePackage(m))», executable=«py(m.executable)», name=«py(m.rosNode)»,
 		        		     namespace=namespace, parameters=[values(«py(m.rosNode)»), parameters]«remap», output='screen'«IF m.managed»,«shutdown(container(m)).replaceFirst(",$", "")»«ENDIF»«IF m.core >= 0»,
-		        		     prefix=«prefix(m.processor, m.core)»«ELSEIF unclaimedUsed && confined(m.processor)»,
+		        		     prefix=«prefix(m.processor, m.core)»«ELSEIF unclaimedUsed»,
 		        		     prefix=unclaimed(«py(m.rosNode)», host)«ENDIF»«IF hosted»,
 		        		     condition=«onHost(m.processor)»«ENDIF»),
 		        	«ENDFOR»
@@ -312,21 +312,12 @@ class Ros2LaunchTemplate extends Ros2Template {
 
 	/**
 	 * Whether the launch places the processes of processors without a core on the CPUs no processor claims: some
-	 * processor claims a core, and some process has none of its own (its processor's threads are confined as the C++
-	 * program's are, {@link #confined}).
+	 * processor claims a core, and some process has none of its own. Every such process is, an EDF processor's too, as
+	 * the C++ program confines those modules' threads ({@link OneMachineCpus#claimed}, docs/timing.md, "EDF beside
+	 * processors with cores"): there the kernel refuses SCHED_DEADLINE, and the releases run at their ranks, saying so.
 	 */
 	def private unclaimedUsed() {
-		OneMachineCpus.claimed(plan.architecture).values.exists[!empty]
-			&& rosNames.containers.exists[core < 0 && confined(processor)]
-	}
-
-	/**
-	 * Whether a process of processor p (null: the modules no processor names), without a core, is kept to the CPUs no
-	 * processor claims. Not an EDF processor's: the kernel admits a deadline thread only where it may run on every CPU of
-	 * its root domain, so its process runs on every CPU, its deadline threads above every fixed-priority thread.
-	 */
-	def private confined(org.rsaml.model.Processor p) {
-		p === null || !(p.isSetSchedPolicy && p.schedPolicy == org.rsaml.model.SchedulingPolicy.EDF)
+		OneMachineCpus.claimed(plan.architecture).values.exists[!empty] && rosNames.containers.exists[core < 0]
 	}
 
 	/** Whether some processor is on another host: then the launch files take the argument host. */
@@ -336,32 +327,33 @@ class Ros2LaunchTemplate extends Ros2Template {
 
 	/** The condition that starts what runs on processor p's host (main: no host) when host:= names it or is empty. */
 	def private onHost(org.rsaml.model.Processor p) {
-		val host = RsamlLabels.host(p)
-		"IfCondition(PythonExpression([\"'\", LaunchConfiguration('host'), " + py("' in ('', " + py(if (host.empty) "main" else host) + ")") + "]))"
+		"IfCondition(PythonExpression([\"'\", LaunchConfiguration('host'), " + py("' in ('', " + py(RsamlLabels.hostName(p)) + ")") + "]))"
 	}
 
 	/**
 	 * The launch prefix of a process of processor p, on its core: without host:= one machine starts
 	 * every host's processes, and another host's core that the analysis counts apart from this one's
 	 * is pinned to a CPU of its own there (OneMachineCpus, as the C++ program does); with host:=, to
-	 * its core. The shell gets "host=" and the argument's value as "$0".
+	 * its core; the process is told which (RSAML_CPU), and its nodes' threads stay there. The shell gets "host=" and
+	 * the argument's value as "$0".
 	 */
 	def private prefix(org.rsaml.model.Processor p, int core) {
 		val cpu = OneMachineCpus.cpu(p)
 		if (!hosted || cpu < 0 || cpu == core) return py(taskset(core))
 		"[" + py("sh -c 'case \"$0\" in host=) c=" + cpu + ";; *) c=" + core + ";; esac; "
-			+ "if taskset -c $c true 2>/dev/null; then exec taskset -c $c \"$@\"; fi; "
+			+ "if taskset -c $c true 2>/dev/null; then export RSAML_CPU=$c; exec taskset -c $c \"$@\"; fi; "
 			+ "echo \"RsaML: CPU core $c not available: $1 runs unpinned\" >&2; exec \"$@\"' host=") + ", LaunchConfiguration('host')]"
 	}
 
 	/**
 	 * The launch prefix that pins a process (and every thread it starts) to one CPU core with
-	 * util-linux's taskset; on a machine without that core the process starts unpinned and says so,
+	 * util-linux's taskset, telling the process which (RSAML_CPU: its nodes pin their threads there, not
+	 * to the model's core); on a machine without that core the process starts unpinned and says so,
 	 * as the C++ runtime does, instead of failing to start. Launch splits it as a shell would, and
 	 * the shell gets the node's command line as "$0" "$@".
 	 */
 	def private taskset(int core) {
-		"sh -c 'if taskset -c " + core + " true 2>/dev/null; then exec taskset -c " + core + " \"$0\" \"$@\"; fi; "
+		"sh -c 'if taskset -c " + core + " true 2>/dev/null; then export RSAML_CPU=" + core + "; exec taskset -c " + core + " \"$0\" \"$@\"; fi; "
 			+ "echo \"RsaML: CPU core " + core + " not available: $0 runs unpinned\" >&2; exec \"$0\" \"$@\"'"
 	}
 }

@@ -128,9 +128,10 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		«FOR c : rosNames.containers SEPARATOR ", "»`«c.name»` («IF c.processor === null»the modules no processor names«ELSE»processor '«doc(c.processor.name)»'«IF c.core >= 0», core «c.core»«ENDIF»«ENDIF»)«ENDFOR».
 		Processes of a processor with a core are started under `taskset -c CORE` (util-linux), in both
 		launch files; on a machine without that core they start unpinned and say so.«IF rosNames.containers.exists[core >= 0] && rosNames.containers.exists[core < 0]»
-		Those of the modules without a core (but an EDF processor's, whose deadline threads the kernel admits only on
-		every CPU) run on the CPUs no processor claims, as the C++ program's threads of those modules, and say so
-		(`cpu <process> cores 1 unclaimed`, or `no unclaimed core` when every CPU is claimed).«ENDIF»
+		Those of the modules without a core run on the CPUs no processor claims, as the C++ program's threads of those
+		modules, and say so (`cpu <process> cores 1 unclaimed`, or `no unclaimed core` when every CPU is claimed); an EDF
+		processor's among them too, where the kernel refuses its releases `SCHED_DEADLINE` (it admits a deadline thread
+		only on every CPU), so that they run at their ranks and say `instead of EDF`.«ENDIF»
 		«ENDIF»
 
 		The nodes are scheduled as `rsaml analyze` assumes: in the container `«rosNames.containerExecutable»`
