@@ -6,12 +6,18 @@ package org.rsaml.generator.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
@@ -229,6 +235,71 @@ class Ros2LaunchFilesTest {
         String every = Pinned.of(tmp, "claimed", planner, "\"/>").cpus(".launch.py", "");
         assertTrue(every.contains(pkg + "_container 0-1 RsaML: cpu " + pkg + "_container no unclaimed core: default (the processors claim CPUs 0-1: it runs"
                 + " on them)"), "the modules no processor names on every CPU, saying so:\n" + every);
+    }
+
+    /**
+     * A release of an EDF processor with a core that the kernel refuses SCHED_DEADLINE is put back on its core, as the C++
+     * runtime's is (docs/timing.md, "What the generators make of it"). Its thread is pinned to the core, then given every CPU
+     * of its process for the request; a node started outside the launch (as ros2 run starts it, on every CPU) without
+     * CAP_SYS_NICE is refused, and its release's thread must end on its core alone again, as its cpu line says: read
+     * from /proc, the threads of the process allowed on CPU 1 alone are the release's (and no other thread is pinned).
+     */
+    @Test
+    void aReleaseRefusedSchedDeadlineIsPutBackOnItsCore(@TempDir Path tmp) throws Exception {
+        String missing = Ros2Jazzy.missing();
+        Assumptions.assumeTrue(missing == null, missing);
+        Assumptions.assumeTrue(Runtime.getRuntime().availableProcessors() >= 2, "one CPU: no core 1 to put the thread back on");
+        Path model = tmp.resolve("refused.rsaml");
+        Files.writeString(model, JobTimingTest.modelText("refusedEdf", JobTimingTest.module("a", 10, 1, "EDF"),
+                "  <processors name=\"edf\" schedPolicy=\"EDF\" core=\"1\" modules=\"//@layers[name='tasks']/@modules[name='a']\"/>\n"));
+        String pkg = Names.snake(ModelLoader.load(model, "refused.rsaml").architecture().getName());
+        Path src = tmp.resolve("src");
+        new RsamlGenerator().generate(model, Target.ROS2, src, false);
+        Matcher exe = Pattern.compile("executable='(\\w+)'").matcher(Files.readString(src.resolve(pkg + "/launch/" + pkg + "_processes.launch.py")));
+        assertTrue(exe.find(), "the processes launch file starts the node's executable");
+        Path install = Ros2Jazzy.colconBuild(src, tmp);
+        Path log = tmp.resolve("node.log");
+        // as ros2 run starts it (no taskset, every CPU), without CAP_SYS_NICE: SCHED_DEADLINE is refused (EPERM)
+        ProcessBuilder pb = new ProcessBuilder(Ros2Jazzy.bash("exec setpriv --inh-caps=-sys_nice --bounding-set=-sys_nice '"
+                + install.resolve(pkg + "/lib/" + pkg + "/" + exe.group(1)) + "' --ros-args -p rsaml.simulated_load:=0.0", install))
+                .directory(tmp.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
+        Ros2Jazzy.isolate(pb.environment(), 1 + (int) (ProcessHandle.current().pid() % 100));
+        pb.environment().remove("RSAML_CPU");
+        Process node = pb.start();
+        String out = "";
+        Map<String, String> allowed = new TreeMap<>();
+        try {
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (!(out = Files.readString(log, StandardCharsets.UTF_8)).contains("sched tasks/a.f ") || !out.contains(" instead of EDF")) {
+                if (!node.isAlive() || System.nanoTime() > until) {
+                    fail("the node did not say how its EDF release runs within 60 s:\n" + Tools.last(out, 4000));
+                }
+                Thread.sleep(100);
+            }
+            try (java.util.stream.Stream<Path> tasks = Files.list(Path.of("/proc/" + node.pid() + "/task"))) {
+                for (Path t : tasks.toList()) {
+                    String status = Files.readString(t.resolve("status"));
+                    Matcher m = Pattern.compile("Cpus_allowed_list:\\s*(\\S+)").matcher(status);
+                    allowed.put(t.getFileName().toString(), m.find() ? m.group(1) : "?");
+                }
+            }
+        } finally {
+            Tools.ok(tmp, 10, "kill", "-INT", Long.toString(node.pid()));
+            if (!node.waitFor(30, TimeUnit.SECONDS)) {
+                node.destroyForcibly();
+            }
+        }
+        String said = out;
+        // its placing (at the default priority: no CAP_SYS_NICE, no rtprio limit), then the refusal, said
+        List<String> sched = out.lines().filter(l -> l.contains("] sched tasks/a.f ")).toList();
+        assertTrue(out.lines().anyMatch(l -> l.endsWith("] cpu tasks/a.f core 1")), "the release pinned to core 1 first:\n" + said);
+        assertTrue(!sched.isEmpty() && sched.get(sched.size() - 1).matches(
+                ".*sched tasks/a\\.f (SCHED_FIFO rank \\d+|default) instead of EDF: .+, back on CPU 1 alone"),
+                "refused SCHED_DEADLINE, it says it is back on CPU 1: " + sched + "\n" + Tools.last(said, 3000));
+        String process = allowed.get(Long.toString(node.pid())); // the main thread's: every CPU the process may use
+        assertTrue(process != null && !process.equals("1") && allowed.containsValue("1") && allowed.values().stream().allMatch(
+                c -> c.equals("1") || c.equals(process)), "the release's thread back on CPU 1 alone, the process's other threads where"
+                + " the process may run (" + process + "): " + allowed);
     }
 
     /**
