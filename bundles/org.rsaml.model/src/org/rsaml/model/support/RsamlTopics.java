@@ -133,8 +133,16 @@ public final class RsamlTopics {
         if (m == null || m.getLayer() == null) {
             return false;
         }
-        int length = 3 + RsamlNames.snake(String.valueOf(m.getLayer().getName())).length() + RsamlNames.snake(String.valueOf(m.getName())).length()
-                + RsamlNames.snake(String.valueOf(port.getName())).length();
+        String layer = String.valueOf(m.getLayer().getName());
+        String module = String.valueOf(m.getName());
+        String name = String.valueOf(port.getName());
+        // A name in snake case is at most 2 n + 9 characters long (an underscore between words of its n letters and
+        // digits, or "unnamed"; an "n" before a leading digit, an "_" after a reserved word): short names end here,
+        // without being put in snake case, as they would below.
+        if (3 + 2 * (layer.length() + module.length() + name.length()) + 3 * 9 + 3 * 12 <= MAX_FULL_NAME) {
+            return false;
+        }
+        int length = 3 + RsamlNames.snake(layer).length() + RsamlNames.snake(module).length() + RsamlNames.snake(name).length();
         return length + 3 * 12 > MAX_FULL_NAME;
     }
 

@@ -6,6 +6,7 @@ package org.rsaml.validation.internal;
 
 import java.util.Collection;
 import java.util.HashSet;
+import java.util.Objects;
 import java.util.Set;
 
 /**
@@ -216,14 +217,37 @@ public final class CompiledOcl {
 
     /** {@code isUnique}: false at the first value seen before ({@code null} is a value). */
     public static <T> Boolean isUnique(Collection<? extends T> collection, Body<T, ?> body) {
+        Collection<? extends T> elements = source(collection);
+        if (elements.size() <= SMALL) {
+            // most collections of a model are a few elements (or none): compared pairwise, without a set
+            Object[] seen = new Object[elements.size()];
+            int n = 0;
+            for (T element : elements) {
+                Object v = comparable(body.apply(element));
+                for (int i = 0; i < n; i++) {
+                    if (Objects.equals(seen[i], v)) {
+                        return Boolean.FALSE;
+                    }
+                }
+                seen[n++] = v;
+            }
+            return Boolean.TRUE;
+        }
         Set<Object> seen = new HashSet<>();
-        for (T element : source(collection)) {
-            Object v = body.apply(element);
-            if (!seen.add(v instanceof Number n ? (integral(n) ? (Object) n.longValue() : (Object) n.doubleValue()) : v)) {
+        for (T element : elements) {
+            if (!seen.add(comparable(body.apply(element)))) {
                 return Boolean.FALSE;
             }
         }
         return Boolean.TRUE;
+    }
+
+    /** Up to how many elements {@link #isUnique} compares pairwise. */
+    private static final int SMALL = 8;
+
+    /** A value as {@code isUnique} compares it: an integral number as a long, any other number as a double, anything else itself. */
+    private static Object comparable(Object v) {
+        return v instanceof Number n ? (integral(n) ? (Object) n.longValue() : (Object) n.doubleValue()) : v;
     }
 
     /** {@code let v = init in body}. */

@@ -21,6 +21,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.rsaml.model.Layer;
 import org.rsaml.model.Module;
 import org.rsaml.model.Port;
+import org.rsaml.model.support.RsamlNames;
 import org.rsaml.model.support.RsamlTopics;
 import org.rsaml.validation.LoadedModel;
 import org.rsaml.validation.ModelLoader;
@@ -194,6 +195,24 @@ class TopicNamesTest {
         assertTrue(found > 20, "the random models have findings to compare: " + found);
     }
 
+    @Test
+    void aNameInSnakeCaseIsAtMostTwiceAsLongPlusNine() {
+        // the bound by which RSA-28 leaves out the ports whose default topic is short without putting their names in snake case
+        Random random = new Random(28);
+        String letters = "aZ09_ -é.xY";
+        List<String> names = new ArrayList<>(List.of("", "class", "CON", "9", "_", "aB".repeat(40), "A1b2C3"));
+        for (int i = 0; i < 20_000; i++) {
+            StringBuilder b = new StringBuilder();
+            for (int k = random.nextInt(12); k > 0; k--) {
+                b.append(letters.charAt(random.nextInt(letters.length())));
+            }
+            names.add(b.toString());
+        }
+        for (String name : names) {
+            assertTrue(RsamlNames.snake(name).length() <= 2 * name.length() + 9, name + " -> " + RsamlNames.snake(name));
+        }
+    }
+
     /** Where a port is, by index (the names are long): layer/module/port. */
     private static String where(Port p) {
         Module m = p.getModule();
@@ -214,9 +233,10 @@ class TopicNamesTest {
             b.append("  <layers").append(layer == null ? "" : " name=\"" + layer + "\"").append(" level=\"").append(l).append("\">\n");
             int modules = 2 + random.nextInt(6);
             for (int m = 0; m < modules; m++) {
-                String module = switch (random.nextInt(4)) {
+                String module = switch (random.nextInt(5)) {
                     case 0 -> null;
                     case 1 -> "n".repeat(236 + random.nextInt(4));
+                    case 2 -> "aB".repeat(56 + random.nextInt(8)); // a_b_a_b...: snake case nearly doubles it
                     default -> "n".repeat(230 + random.nextInt(12));
                 };
                 b.append("    <modules").append(module == null ? "" : " name=\"" + module + "\"").append(" execType=\"periodic\" period=\"100.0\">");
