@@ -47,7 +47,9 @@ import org.rsaml.model.support.RsamlLabels;
  * under {@code SCHED_FIFO} at the highest priority, above every thread of the model, waking every
  * millisecond and recording how late it ran. What it records is time its CPU did not run the model
  * (the kernel, the hypervisor, another program, the monitor itself), and nothing the model does can
- * make it late. Each job the program reports over its analysed bound (on CLOCK_MONOTONIC) is then held to
+ * make it late. Between those wake-ups a spinner per CPU under {@code SCHED_IDLE}, below every thread,
+ * records the gaps in its own run that no thread ran in (the platform's, merged into its CPU's records);
+ * it takes no CPU time the model wants, and sees nothing of what is taken from a running thread of the model. Each job the program reports over its analysed bound (on CLOCK_MONOTONIC) is then held to
  * its bound computed again with the loss in that job's own window ({@link TaskCheck}: from where its level's
  * busy period may have begun to its completion, {@link Platform#lossIn}): on a fixed-priority processor by the
  * analysis itself, that loss a job above every rank released with it, so that a delay that pulls one more
@@ -119,12 +121,18 @@ final class PlatformCheck {
     static final long UNBOUNDED_DEADLINES = 100;
 
     /**
-     * One CPU's records of the {@link Monitor}: the intervals from each activation's nominal wake-up
-     * (a late one's: from the previous record's end, {@link Platform#LATE_NS}) to the end of its record,
-     * within the run, sorted and disjoint (the monitor's next wake-up is always past its last record's
-     * end); {@code sched} what its thread got.
+     * One CPU's records of the {@link Monitor}, within the run, sorted and disjoint: the intervals from each of its waker's
+     * nominal wake-ups (a late one's: from the previous record's end, {@link Platform#LATE_NS}) to the end of its record,
+     * merged with the gaps its spinner saw between the wake-ups; {@code sched} what its waker got. {@code spinner}: what
+     * its spinner got, how much CPU time it ran ({@code spunNs}: the time it watched) and the gaps it recorded in the run
+     * ({@code gaps}, {@code gapNs} in all); {@code spinner} null where the monitor ran none ({@code --no-spin}).
      */
-    record CpuRecords(int cpu, String sched, boolean overflow, long[] starts, long[] ends) {
+    record CpuRecords(int cpu, String sched, boolean overflow, long[] starts, long[] ends, String spinner, boolean gapOverflow, long spunNs,
+            int gaps, long gapNs) {
+        CpuRecords(int cpu, String sched, boolean overflow, long[] starts, long[] ends) {
+            this(cpu, sched, overflow, starts, ends, null, false, 0, 0, 0);
+        }
+
         /** The most time these intervals cover in any window of {@code windowNs}: a window starting where one starts (two pointers). */
         long maxCovered(long windowNs) {
             long best = 0;
@@ -226,20 +234,23 @@ final class PlatformCheck {
      * SCHED_FIFO priority), as (runtime, period) pairs: their work, which the kernel holds to its runtime
      * a period, is taken out of the loss, so that a late EDF job never counts as the platform's.
      */
-    record Platform(int priority, int minPriority, List<CpuRecords> cpus, long fromNs, long toNs, List<long[]> aboveMonitor) {
+    record Platform(int priority, int minPriority, List<CpuRecords> cpus, long fromNs, long toNs, List<long[]> aboveMonitor,
+            List<CpuRecords> wakeUps) {
         private static final Pattern HEADER = Pattern.compile("rsaml-platform-monitor period (\\d+) ns priority (\\d+) min (\\d+) memory (.*)");
         private static final Pattern CPU = Pattern.compile("cpu (\\d+) records (\\d+)( overflow)? sched (.*)");
+        private static final Pattern SPIN = Pattern.compile("spin (\\d+) gaps (\\d+)( overflow)? over (\\d+) ns ran (\\d+) ns waits (read|unread) sched (.*)");
 
         /**
          * A record longer than this was a late wake-up: something held the CPU at the moment the monitor was due, and it
-         * may have taken the CPU at any time after the monitor's previous record ended (the monitor sleeps in between and
-         * sees nothing), so the record counts from there. The usual record takes 10 to 50 us.
+         * may have taken the CPU at any time after the monitor's previous record ended (the waker sleeps in between, and
+         * its spinner sees nothing while a thread of the model runs), so the record counts from there. The usual record takes 10 to 50 us.
          */
         static final long LATE_NS = 100_000;
 
         /**
          * Reads the monitor's file, keeping what falls between {@code fromNs} and {@code toNs}; a late record
-         * ({@link #LATE_NS}) counts from the end of the CPU's previous record.
+         * ({@link #LATE_NS}) counts from the end of the CPU's previous record; the spinner's gaps ({@code gap CPU FROM TO})
+         * are merged into their CPU's records.
          */
         static Platform parse(String text, long fromNs, long toNs) {
             String[] lines = text.split("\n");
@@ -248,6 +259,8 @@ final class PlatformCheck {
             Map<Integer, String> sched = new TreeMap<>();
             Map<Integer, Boolean> overflow = new TreeMap<>();
             Map<Integer, List<long[]>> intervals = new TreeMap<>();
+            Map<Integer, Matcher> spinners = new TreeMap<>();
+            Map<Integer, List<long[]>> gaps = new TreeMap<>();
             for (int i = 1; i < lines.length; i++) {
                 Matcher c = CPU.matcher(lines[i]);
                 if (c.matches()) {
@@ -257,10 +270,25 @@ final class PlatformCheck {
                     intervals.put(cpu, new ArrayList<>());
                     continue;
                 }
+                Matcher spin = SPIN.matcher(lines[i]);
+                if (spin.matches()) {
+                    spinners.put(Integer.parseInt(spin.group(1)), spin);
+                    gaps.put(Integer.parseInt(spin.group(1)), new ArrayList<>());
+                    continue;
+                }
                 String[] f = lines[i].split(" ");
+                if (f[0].equals("gap")) {
+                    long from = Math.max(fromNs, Long.parseLong(f[2]));
+                    long to = Math.min(toNs, Long.parseLong(f[3]));
+                    if (to > from) {
+                        gaps.get(Integer.parseInt(f[1])).add(new long[] {from, to});
+                    }
+                    continue;
+                }
                 intervals.get(Integer.parseInt(f[0])).add(new long[] {Long.parseLong(f[1]), Long.parseLong(f[2])});
             }
             List<CpuRecords> cpus = new ArrayList<>();
+            List<CpuRecords> wakeUps = new ArrayList<>();
             intervals.forEach((cpu, records) -> {
                 records.sort(java.util.Comparator.comparingLong(x -> x[0]));
                 List<long[]> list = new ArrayList<>();
@@ -275,10 +303,42 @@ final class PlatformCheck {
                         list.add(new long[] {start, end});
                     }
                 }
-                cpus.add(new CpuRecords(cpu, sched.get(cpu), overflow.get(cpu), list.stream().mapToLong(x -> x[0]).toArray(),
+                wakeUps.add(new CpuRecords(cpu, sched.get(cpu), overflow.get(cpu), list.stream().mapToLong(x -> x[0]).toArray(),
                         list.stream().mapToLong(x -> x[1]).toArray()));
+                Matcher spin = spinners.get(cpu);
+                if (spin == null) {
+                    cpus.add(wakeUps.get(wakeUps.size() - 1));
+                    return;
+                }
+                List<long[]> seen = gaps.get(cpu);
+                List<long[]> merged = new ArrayList<>();
+                List<long[]> all = new ArrayList<>(list);
+                all.addAll(seen);
+                all.sort(java.util.Comparator.comparingLong(x -> x[0]));
+                for (long[] r : all) { // the waker's records and the spinner's gaps, overlapping ones joined
+                    long[] last = merged.isEmpty() ? null : merged.get(merged.size() - 1);
+                    if (last != null && r[0] <= last[1]) {
+                        last[1] = Math.max(last[1], r[1]);
+                    } else {
+                        merged.add(new long[] {r[0], r[1]});
+                    }
+                }
+                cpus.add(new CpuRecords(cpu, sched.get(cpu), overflow.get(cpu), merged.stream().mapToLong(x -> x[0]).toArray(),
+                        merged.stream().mapToLong(x -> x[1]).toArray(), spin.group(7), spin.group(3) != null, Long.parseLong(spin.group(5)),
+                        seen.size(), seen.stream().mapToLong(x -> x[1] - x[0]).sum()));
             });
-            return new Platform(Integer.parseInt(h.group(2)), Integer.parseInt(h.group(3)), List.copyOf(cpus), fromNs, toNs, List.of());
+            return new Platform(Integer.parseInt(h.group(2)), Integer.parseInt(h.group(3)), List.copyOf(cpus), fromNs, toNs, List.of(),
+                    List.copyOf(wakeUps));
+        }
+
+        /** This platform as its waker threads alone recorded it, without its spinners' gaps: what the check counted before them. */
+        Platform wakeUpsOnly() {
+            return new Platform(priority, minPriority, wakeUps, fromNs, toNs, aboveMonitor, wakeUps);
+        }
+
+        /** Whether the monitor's spinners watched between the wake-ups. */
+        boolean spun() {
+            return cpus.stream().anyMatch(c -> c.spinner() != null);
         }
 
         /** This platform, with the model's threads that run above the monitor (SCHED_DEADLINE, from the run's summaries) taken out of its loss. */
@@ -290,7 +350,7 @@ final class PlatformCheck {
                     above.add(new long[] {Math.round(Double.parseDouble(m.group(1)) * 1e6), Math.round(Double.parseDouble(m.group(2)) * 1e6)});
                 }
             }
-            return new Platform(priority, minPriority, cpus, fromNs, toNs, List.copyOf(above));
+            return new Platform(priority, minPriority, cpus, fromNs, toNs, List.copyOf(above), wakeUps);
         }
 
         private static final Pattern DEADLINE = Pattern.compile("^SCHED_DEADLINE runtime ([0-9.]+) ms deadline [0-9.]+ ms period ([0-9.]+) ms");
@@ -301,8 +361,11 @@ final class PlatformCheck {
                 if (!c.sched().startsWith("SCHED_FIFO")) {
                     return "the platform monitor got no real-time scheduling on CPU " + c.cpu() + " (" + c.sched() + ")";
                 }
-                if (c.overflow()) {
+                if (c.overflow() || c.gapOverflow()) {
                     return "the platform monitor ran out of room for its records on CPU " + c.cpu();
+                }
+                if (c.spinner() != null && !c.spinner().equals("SCHED_IDLE")) {
+                    return "the platform monitor's spinner got no SCHED_IDLE on CPU " + c.cpu() + " (" + c.spinner() + ")";
                 }
             }
             return cpus.isEmpty() ? "the platform monitor measured no CPU" : null;
@@ -431,14 +494,18 @@ final class PlatformCheck {
         @Override
         public String toString() {
             List<String> each = new ArrayList<>();
-            for (CpuRecords c : cpus) {
+            for (int i = 0; i < cpus.size(); i++) {
+                CpuRecords c = cpus.get(i);
+                CpuRecords w = wakeUps.get(i);
                 int l = c.longest();
-                each.add(String.format(Locale.ROOT, "CPU %d: %d wake-ups, longest delay %s at %s, %s in its worst 10 ms", c.cpu(), c.starts().length,
+                each.add(String.format(Locale.ROOT, "CPU %d: %d wake-ups%s, longest delay %s at %s, %s in its worst 10 ms", c.cpu(), w.starts().length,
+                        c.spinner() == null ? "" : String.format(Locale.ROOT, " and %d gaps between them (%s in all; the spinner ran %s)", c.gaps(),
+                                JobTimingTest.ms(c.gapNs()), JobTimingTest.ms(c.spunNs())),
                         JobTimingTest.ms(l < 0 ? 0 : c.ends()[l] - c.starts()[l]), JobTimingTest.ms(l < 0 ? 0 : c.starts()[l] - fromNs),
                         JobTimingTest.ms(c.maxCovered(10_000_000))));
             }
-            return "the platform monitor (SCHED_FIFO " + priority + ", every 1 ms on every CPU, during the run of "
-                    + JobTimingTest.ms(toNs - fromNs) + "): " + String.join("; ", each);
+            return "the platform monitor (SCHED_FIFO " + priority + ", every 1 ms on every CPU" + (spun() ? ", and SCHED_IDLE between" : "")
+                    + ", during the run of " + JobTimingTest.ms(toNs - fromNs) + "): " + String.join("; ", each);
         }
     }
 
@@ -761,7 +828,7 @@ final class PlatformCheck {
      * real-time threads, the bookkeeping stated for each job, and each task's jobs checked against the
      * bound computed again with them ({@link #of}).
      */
-    record Allowance(Platform platform, OtherRealtime.Use others, long bookkeepingNs, Map<String, Bound> bounds) {
+    record Allowance(Platform platform, OtherRealtime.Use others, long bookkeepingNs, Map<String, Bound> bounds, List<String> heldByGaps) {
 
         /**
          * Each bounded task's check, by task name (the release's or reaction's label): each of its jobs that the
@@ -816,7 +883,18 @@ final class PlatformCheck {
                     bounds.put(t.task().name(), new Bound(bound, check.windowNs, List.copyOf(jobs), null, check));
                 }
             }
-            return new Allowance(platform, others, bookkeepingNs, Map.copyOf(bounds));
+            // the releases that hold only with the gaps the spinners saw between the wake-ups: said, to show what they count
+            List<String> heldByGaps = new ArrayList<>();
+            if (platform.spun()) {
+                Allowance wakeUps = of(platform.wakeUpsOnly(), others, timing, summaries, cpuOf, bookkeepingNs);
+                bounds.forEach((label, b) -> {
+                    if (b.unchecked() == null && b.jobs().stream().noneMatch(JobCheck::contradicts) && !wakeUps.admits(label)) {
+                        heldByGaps.add(label);
+                    }
+                });
+                heldByGaps.sort(null);
+            }
+            return new Allowance(platform, others, bookkeepingNs, Map.copyOf(bounds), List.copyOf(heldByGaps));
         }
 
         private static final Pattern RANK = Pattern.compile("^SCHED_(?:FIFO|RR) rank (\\d+)");
@@ -877,7 +955,8 @@ final class PlatformCheck {
                     + JobTimingTest.ms(bookkeepingNs) + " stated for bookkeeping; " + (unlisted.isEmpty()
                             ? "every job over its bound checked in its own window"
                             : unlisted.size() + " releases with more jobs over the bound than listed, those checked by the run's worst window: "
-                                    + unlisted);
+                                    + unlisted)
+                    + (heldByGaps.isEmpty() ? "" : "; held only with the gaps between the monitor's wake-ups: " + heldByGaps);
         }
     }
 

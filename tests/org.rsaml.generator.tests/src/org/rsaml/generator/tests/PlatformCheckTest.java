@@ -245,6 +245,64 @@ class PlatformCheckTest {
                 "the unlisted jobs, by the worst response, against the worst window of the run: " + rest.explain(PRODUCER));
     }
 
+    /**
+     * The monitor's file for a run of {@code runMs} on CPUs 0 and 1, each waker's record taking 0.02 ms every millisecond,
+     * with each CPU's spinner (under {@code spinner}) and the gaps it saw, given as {cpu, at (ns into the run), length}.
+     */
+    private static String withGaps(long runMs, String spinner, long[]... gaps) {
+        StringBuilder text = new StringBuilder("rsaml-platform-monitor period 1000000 ns priority 99 min 1 memory locked\n");
+        StringBuilder records = new StringBuilder();
+        for (int cpu = 0; cpu < 2; cpu++) {
+            final int c = cpu;
+            long[][] mine = java.util.Arrays.stream(gaps).filter(g -> g[0] == c).toArray(long[][]::new);
+            text.append("cpu ").append(cpu).append(" records ").append(runMs).append(" sched SCHED_FIFO 99\n").append("spin ").append(cpu)
+                    .append(" gaps ").append(mine.length).append(" over 2000 ns ran ").append(runMs * 900_000).append(" ns waits read sched ").append(spinner)
+                    .append('\n');
+            for (long nominal = RUN_START; nominal < RUN_START + runMs * 1_000_000; nominal += 1_000_000) {
+                records.append(cpu).append(' ').append(nominal).append(' ').append(nominal + 20_000).append('\n');
+            }
+            for (long[] g : mine) {
+                records.append("gap ").append(cpu).append(' ').append(RUN_START + g[1]).append(' ').append(RUN_START + g[1] + g[2]).append('\n');
+            }
+        }
+        return text.append(records).toString();
+    }
+
+    @Test
+    void theGapsTheSpinnerSawBetweenTheWakeUpsAreThePlatformsLossToo() throws Exception {
+        // An overrun of the kind the waker alone could not explain: the producer (bound 2 ms, alone, not pinned) responds in
+        // 2.45 ms, about 0.1 ms past its bound with the bookkeeping and the waker's records, which show only their usual 0.02 ms.
+        // Between two wake-ups, its CPU was taken from it (an interrupt, the hypervisor) for 0.1 ms and five times 0.01 ms.
+        org.rsaml.analysis.ArchitectureTiming timing = sharedMessages();
+        Map<String, JobSummary> run = JobSummary.of(summary(PRODUCER, 2.45, 2.0, 1.9, 2.0, 0.05, 0.005, "SCHED_FIFO rank 2", job(300.2, 2.45)));
+        long[][] gaps = { {1, 300_400_000, 100_000}, {1, 300_600_000, 10_000}, {1, 301_100_000, 10_000}, {1, 301_300_000, 10_000},
+                {1, 301_500_000, 10_000}, {1, 302_100_000, 10_000} };
+        PlatformCheck.Platform p = PlatformCheck.Platform.parse(withGaps(1000, "SCHED_IDLE", gaps), RUN_START, RUN_START + 1_000_000_000L);
+        assertEquals(null, p.notMeasured(), "wakers at SCHED_FIFO 99, spinners at SCHED_IDLE: measured");
+        assertEquals(150_000 + 2 * 20_000, p.lossIn(1, RUN_START + 300_100_000, RUN_START + 302_650_000).ns(),
+                "the job's window holds the gaps and the wake-ups: " + p.lossIn(1, RUN_START + 300_100_000, RUN_START + 302_650_000));
+        assertEquals(2 * 20_000, p.wakeUpsOnly().lossIn(1, RUN_START + 300_100_000, RUN_START + 302_650_000).ns(),
+                "the waker alone saw its own records only");
+        PlatformCheck.Allowance a = PlatformCheck.Allowance.of(p, OtherRealtime.Use.NONE, timing, run, label -> -1, PlatformCheck.BOOKKEEPING_NS);
+        assertTrue(a.admits(PRODUCER), "within its bound with the gaps in its window: " + a.explain(PRODUCER));
+        assertEquals(List.of(PRODUCER), a.heldByGaps(), "and held only with them, said: " + a);
+        assertTrue(a.toString().contains("6 gaps between them (0.150 ms in all; the spinner ran 900.000 ms)")
+                && a.toString().contains("held only with the gaps between the monitor's wake-ups: [" + PRODUCER + "]"), "the summary says them: " + a);
+        assertFalse(PlatformCheck.Allowance.of(p.wakeUpsOnly(), OtherRealtime.Use.NONE, timing, run, label -> -1, PlatformCheck.BOOKKEEPING_NS)
+                .admits(PRODUCER), "the waker alone does not explain it");
+        // The same gaps a second away from the job are not in its window: it fails.
+        Map<String, JobSummary> far = JobSummary.of(summary(PRODUCER, 2.45, 2.0, 1.9, 2.0, 0.05, 0.005, "SCHED_FIFO rank 2", job(700.2, 2.45)));
+        assertFalse(PlatformCheck.Allowance.of(p, OtherRealtime.Use.NONE, timing, far, label -> -1, PlatformCheck.BOOKKEEPING_NS).admits(PRODUCER),
+                "gaps at another moment do not excuse the job");
+        // A gap that overlaps a waker's record is counted once.
+        PlatformCheck.Platform overlap = PlatformCheck.Platform.parse(withGaps(10, "SCHED_IDLE", new long[] {0, 4_010_000, 30_000}), RUN_START,
+                RUN_START + 10_000_000);
+        assertEquals(40_000, overlap.lossIn(0, RUN_START + 4_000_000, RUN_START + 4_500_000).ns(), "4.00 to 4.04 ms, once");
+        // A spinner that did not get SCHED_IDLE on its CPU (or was not pinned) measured nothing of it: the run is not checked.
+        assertEquals("the platform monitor's spinner got no SCHED_IDLE on CPU 0 (default: not pinned (Invalid argument))",
+                PlatformCheck.Platform.parse(withGaps(10, "default: not pinned (Invalid argument)"), RUN_START, RUN_START + 10_000_000).notMeasured());
+    }
+
     @Test
     void aDelayThatBeganBetweenTwoWakeUpsIsCountedWhole() throws Exception {
         // The same failure, as the monitor would really have recorded it had the CPU been taken from 3209.1 ms to 3211.4 ms
