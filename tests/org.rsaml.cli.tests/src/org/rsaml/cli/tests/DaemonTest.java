@@ -418,6 +418,57 @@ class DaemonTest {
         }
     }
 
+    /**
+     * Only model files count toward the size above which the resident process sends a command to a JVM of its own (a
+     * sixteenth of its heap): a folder's large log and its hidden folders do not, nor a large file named that is not a
+     * model, and the command is served; a model larger than that, named or found in a folder, is not, and runs in a JVM of
+     * its own with the same result.
+     */
+    @Test
+    void onlyModelFilesCountTowardTheSizeTheResidentProcessServes(@TempDir Path dir) throws Exception {
+        Path work = models(dir);
+        Path runtime = runtime(dir);
+        // A valid model of some 6 MB: experiment 1 with a long comment, quick to read and check.
+        String hybrid = Files.readString(work.resolve("exp1-hybrid.rsaml"));
+        int afterDeclaration = hybrid.indexOf("?>") + 2;
+        String padded = hybrid.substring(0, afterDeclaration) + "\n<!-- " + "padding ".repeat(750_000) + "-->" + hybrid.substring(afterDeclaration);
+        Path small = Files.createDirectories(work.resolve("small"));
+        Files.copy(work.resolve("exp1-hybrid.rsaml"), small.resolve("exp1-hybrid.rsaml"));
+        Files.writeString(small.resolve("run.log"), "x".repeat(8_000_000));
+        Files.createDirectories(small.resolve(".history"));
+        Files.writeString(small.resolve(".history").resolve("old.rsaml"), padded);
+        Path large = Files.createDirectories(work.resolve("large"));
+        Files.writeString(large.resolve("padded.rsaml"), padded);
+        try {
+            // 64 MiB of heap: a sixteenth is 4 MiB, below the padded model's 6 MB and above every model that is not padded.
+            Cli.Result started = Cli.process(work, List.of("env", "-u", "RSAML_DAEMON", "XDG_RUNTIME_DIR=" + runtime,
+                    "RSAML_DAEMON_HEAP=64m", Cli.ROOT.resolve("rsaml").toString(), "daemon", "start"));
+            assertEquals(0, started.code(), started::toString);
+            assertTrue(heap(launcher(runtime, work, false, "daemon", "status")) <= 64);
+            List<List<String>> served = List.of(List.of("validate", "small"),
+                    List.of("validate", "small/run.log"));
+            List<List<String>> declined = List.of(List.of("validate", "large/padded.rsaml"), List.of("validate", "large"),
+                    List.of("validate", "small", "large"));
+            for (List<String> command : served) {
+                int before = served(runtime, work);
+                Cli.Result own = launcher(runtime, work, false, command.toArray(String[]::new));
+                Cli.Result resident = launcher(runtime, work, true, command.toArray(String[]::new));
+                assertEquals(own.toString(), resident.toString(), () -> "rsaml " + String.join(" ", command));
+                assertEquals(before + 1, served(runtime, work), () -> "served: rsaml " + String.join(" ", command));
+            }
+            for (List<String> command : declined) {
+                int before = served(runtime, work);
+                Cli.Result own = launcher(runtime, work, false, command.toArray(String[]::new));
+                Cli.Result resident = launcher(runtime, work, true, command.toArray(String[]::new));
+                assertEquals(own.toString(), resident.toString(), () -> "rsaml " + String.join(" ", command));
+                assertEquals(0, own.code(), own::toString);
+                assertEquals(before, served(runtime, work), () -> "run in a JVM of its own: rsaml " + String.join(" ", command));
+            }
+        } finally {
+            stop(runtime, work);
+        }
+    }
+
     /** {@code rsaml args...} as run without RSAML_DAEMON, outside CI, with the given extra variables. */
     private static List<String> defaults(Path runtime, Path state, List<String> variables, String... args) {
         List<String> command = new ArrayList<>(List.of("env", "-u", "RSAML_DAEMON", "-u", "RSAML_DAEMON_IDLE", "-u",
