@@ -106,7 +106,12 @@ public final class TimingAnalysis {
             }
             ProcessorTiming p = g.analyse(plan);
             String why = shared.get(g);
-            processors.add(why == null ? p : new ProcessorTiming(p.name(), p.element(), sharing(p.result(), why), p.sources(), p.notes()));
+            String unscheduled = why == null ? notByDeadline(g, groups.values()) : null;
+            processors.add(why != null ? new ProcessorTiming(p.name(), p.element(), sharing(p.result(), why, "the processor shares its CPUs"),
+                    p.sources(), p.notes())
+                    : unscheduled != null ? new ProcessorTiming(p.name(), p.element(), sharing(p.result(), unscheduled,
+                            "the processor is not scheduled by deadline"), p.sources(), p.notes())
+                    : p);
         }
         List<LatencyResult> latencies = Latencies.analyse(plan, architecture.getLatencyRequirements(), processors, listPaths);
         return new ArchitectureTiming(RsamlLabels.name(architecture), processors, excluded, latencies);
@@ -165,13 +170,40 @@ public final class TimingAnalysis {
         return shared;
     }
 
+    /**
+     * Why an EDF processor without a core is not scheduled by deadline where it runs, or null: beside processors with cores
+     * on its host, both runtimes keep its threads to the CPUs no processor claims (docs/timing.md, "EDF beside processors
+     * with cores"), where Linux, its deadline admission control on as by default, refuses SCHED_DEADLINE (it admits a
+     * deadline thread only on every CPU of its root domain), so they run under SCHED_FIFO at one rank, which its analysis
+     * by processor demand does not describe.
+     */
+    private static String notByDeadline(Group g, java.util.Collection<Group> groups) {
+        if (g.element == null || g.element.getCore() >= 0 || g.modules == 0 || policy(g.element) != SchedulingPolicy.EDF) {
+            return null;
+        }
+        List<String> cored = groups.stream().filter(o -> o.modules > 0 && o.element != null && o.element.getCore() >= 0
+                && RsamlLabels.host(o.element).equals(RsamlLabels.host(g.element))).map(o -> o.name).toList();
+        if (cored.isEmpty()) {
+            return null;
+        }
+        return "EDF processor '" + g.name + "' has no core of its own beside " + (cored.size() == 1 ? "processor " : "processors ")
+                + (cored.size() == 1 ? "'" + cored.get(0) + "'" : names(cored)) + " with " + (cored.size() == 1 ? "a core" : "cores")
+                + ", so both runtimes keep its releases to the CPUs no processor claims, where Linux (its deadline admission"
+                + " control on, as by default: sched_rt_runtime_us not -1) refuses them SCHED_DEADLINE, and they run under"
+                + " SCHED_FIFO at one rank, first in first out, not by deadline (the trace says 'instead of EDF'): give its"
+                + " functions fixed priorities (RM, DM), or put it on a host of its own";
+    }
+
     private static String names(List<String> names) {
         List<String> quoted = names.stream().map(n -> "'" + n + "'").toList();
         return String.join(", ", quoted.subList(0, quoted.size() - 1)) + " and " + quoted.get(quoted.size() - 1);
     }
 
-    /** No verdict holds for a processor whose CPUs other processors' threads share: each task says why. */
-    private static ProcessorResult sharing(ProcessorResult r, String why) {
+    /**
+     * No verdict holds for a processor whose CPUs other processors' threads share, or that is not scheduled as analysed:
+     * each task says why, and each sufficient bound says it does not apply ({@code what}).
+     */
+    private static ProcessorResult sharing(ProcessorResult r, String why, String what) {
         List<TaskResult> tasks = new ArrayList<>();
         for (TaskResult t : r.tasks()) {
             tasks.add(new TaskResult(t.task(), OptionalLong.empty(), Verdict.NOT_ANALYSED, "not analysed: " + why, null));
@@ -179,7 +211,7 @@ public final class TimingAnalysis {
         List<BoundCheck> bounds = new ArrayList<>();
         for (BoundCheck b : r.bounds()) {
             bounds.add(b.sufficient() && b.applicable()
-                    ? new BoundCheck(b.name(), true, b.limit(), false, false, "not applicable: the processor shares its CPUs")
+                    ? new BoundCheck(b.name(), true, b.limit(), false, false, "not applicable: " + what)
                     : b);
         }
         return new ProcessorResult(r.processor(), r.policy(), tasks, r.utilisation(), bounds,
@@ -291,24 +323,12 @@ public final class TimingAnalysis {
                         + " C++ runtime, deadlines shorter than periods included (docs/timing.md, EDF)");
                 if (element != null && element.getCore() >= 0) {
                     notes.add("core " + element.getCore() + " does not hold EDF: Linux admits a SCHED_DEADLINE thread only on every CPU of its"
-                            + " root domain, so the C++ runtime runs this processor's releases on every core of the machine (not core "
+                            + " root domain (its deadline admission control on, as by default), so the C++ runtime runs this processor's releases on every core of the machine (not core "
                             + element.getCore() + " alone, and ahead of every other processor's threads there), and on ROS 2, whose launch"
                             + " pins the processor's container to core " + element.getCore() + " (taskset), the kernel refuses SCHED_DEADLINE"
                             + " and they run under SCHED_FIFO at their ranks (the trace says 'instead of EDF'): on neither runtime does this"
                             + " processor run as analysed, unless the machine gives core " + element.getCore() + " a root domain of its own"
                             + " (an exclusive cpuset partition)");
-                } else if (element != null && element.eContainer() instanceof org.rsaml.model.Architecture arch) {
-                    List<String> cored = arch.getProcessors().stream().filter(q -> q.getCore() >= 0 && !q.getModules().isEmpty())
-                            .map(org.rsaml.model.Processor::getName).toList();
-                    if (!cored.isEmpty()) {
-                        notes.add("no core of its own beside processors with cores (" + String.join(", ", cored) + "): both runtimes keep"
-                                + " its releases to the CPUs no processor claims, so that those cores stay theirs, and there Linux refuses"
-                                + " SCHED_DEADLINE (it admits a deadline thread only on every CPU of its root domain): they run under"
-                                + " SCHED_FIFO at their ranks (the trace says 'instead of EDF'), and the verdict is not claimed for this"
-                                + " processor where it runs on a machine with them (the C++ program; a ROS 2 launch without host:=, or with"
-                                + " host:= naming its host when one of them is on it), unless the machine gives those CPUs a root domain of their own (an exclusive"
-                                + " cpuset partition); docs/timing.md, EDF beside processors with cores");
-                    }
                 }
             } else {
                 notes.add("the processor is declared " + element.getSchedPolicy().getLiteral() + ": the verdict is for a platform"

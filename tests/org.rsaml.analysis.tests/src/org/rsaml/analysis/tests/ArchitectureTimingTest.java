@@ -161,22 +161,29 @@ class ArchitectureTimingTest {
     }
 
     /**
-     * An EDF processor without a core beside a processor with one: both runtimes keep it to the CPUs no processor claims,
-     * where the kernel refuses SCHED_DEADLINE, so its notes say the verdict is not claimed there (docs/timing.md, "EDF
-     * beside processors with cores"); alone on its machine, they say nothing of it.
+     * An EDF processor without a core beside a processor with one on its host: both runtimes keep it to the CPUs no
+     * processor claims, where the kernel refuses SCHED_DEADLINE and its releases run first in first out at one rank, so
+     * its tasks are not analysed (RSA-24), saying why and what to do (docs/timing.md, "EDF beside processors with cores");
+     * the processor with a core keeps its verdict; on a host without a processor with a core, it keeps EDF's.
      */
     @Test
-    void anEdfProcessorWithoutACoreBesideOneWithACoreSaysItsVerdictIsNotClaimedThere() throws Exception {
+    void anEdfProcessorWithoutACoreBesideOneWithACoreIsNotAnalysed() throws Exception {
         Architecture a = example("mobile-base-latency.rsaml");
         a.getProcessors().get(1).setSchedPolicy(org.rsaml.model.SchedulingPolicy.EDF);
         a.getProcessors().get(1).setCore(-1);
-        List<String> notes = TimingAnalysis.analyse(a).processors().get(1).notes();
-        String beside = notes.stream().filter(n -> n.startsWith("no core of its own beside processors with cores (core0)")).findFirst().orElse(null);
-        assertTrue(beside != null && beside.contains("both runtimes keep its releases to the CPUs no processor claims") && beside.contains(
-                "they run under SCHED_FIFO at their ranks (the trace says 'instead of EDF'), and the verdict is not claimed"), "what runs, said: " + notes);
-        a.getProcessors().get(0).setCore(-1);
-        assertTrue(TimingAnalysis.analyse(a).processors().get(1).notes().stream().noneMatch(n -> n.startsWith("no core of its own")),
-                "no processor claims a core: nothing to say");
+        ArchitectureTiming timing = TimingAnalysis.analyse(a);
+        ProcessorTiming nav = timing.processors().get(1);
+        assertEquals(Verdict.NOT_ANALYSED, nav.result().verdict(), nav.result().toString());
+        assertTrue(nav.result().tasks().stream().allMatch(t -> t.verdict() == Verdict.NOT_ANALYSED && t.explanation().equals("not analysed: EDF"
+                + " processor 'core1' has no core of its own beside processor 'core0' with a core, so both runtimes keep its releases to the"
+                + " CPUs no processor claims, where Linux (its deadline admission control on, as by default: sched_rt_runtime_us not -1)"
+                + " refuses them SCHED_DEADLINE, and they run under SCHED_FIFO at one rank, first in first out, not by deadline (the trace"
+                + " says 'instead of EDF'): give its functions fixed priorities (RM, DM), or put it on a host of its own")),
+                "each task says why: " + nav.result().tasks());
+        assertEquals(Verdict.MEETS, timing.processors().get(0).result().verdict(), "core0 keeps its core and its verdict");
+        // on a host of its own, without a processor with a core beside it, it is scheduled by deadline and analysed so
+        a.getProcessors().get(1).setHost("nav-board");
+        assertEquals(Verdict.MEETS, TimingAnalysis.analyse(a).processors().get(1).result().verdict(), "on a host of its own");
     }
 
     /**

@@ -130,8 +130,9 @@ class Ros2ReadmeTemplate extends Ros2Template {
 		launch files; on a machine without that core they start unpinned and say so.«IF rosNames.containers.exists[core >= 0] && rosNames.containers.exists[core < 0]»
 		Those of the modules without a core run on the CPUs no processor claims, as the C++ program's threads of those
 		modules, and say so (`cpu <process> cores 1 unclaimed`, or `no unclaimed core` when every CPU is claimed); an EDF
-		processor's among them too, where the kernel refuses its releases `SCHED_DEADLINE` (it admits a deadline thread
-		only on every CPU), so that they run at their ranks and say `instead of EDF`.«ENDIF»
+		processor's among them too, where the kernel, its deadline admission control on as by default, refuses its releases
+		`SCHED_DEADLINE` (it admits a deadline thread only on every CPU), so that they run at their ranks and say
+		`instead of EDF` (and `rsaml analyze` says its tasks are not analysed).«ENDIF»
 		«ENDIF»
 
 		The nodes are scheduled as `rsaml analyze` assumes: in the container `«rosNames.containerExecutable»`
