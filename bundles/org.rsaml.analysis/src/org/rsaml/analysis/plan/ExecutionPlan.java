@@ -88,7 +88,19 @@ public final class ExecutionPlan {
      *                              a period below 1 ns, or longer than {@link #MAX_TIME_NS})
      */
     public static ExecutionPlan of(Architecture architecture) throws UnplannableException {
-        return Planner.plan(architecture);
+        return Planner.plan(architecture, true);
+    }
+
+    /**
+     * The plan of an architecture's releases and reactions alone, as {@link #of} plans them (the same layers, modules,
+     * releases, reactions and ranks, refused where it is refused), without what connects the modules: no ports, flows,
+     * links, message types or the warnings about them. What the timing analysis reads of an architecture without
+     * latency requirements, without a pass over every port and connection.
+     *
+     * @throws UnplannableException where {@link #of} throws it
+     */
+    public static ExecutionPlan releasesOf(Architecture architecture) throws UnplannableException {
+        return Planner.plan(architecture, false);
     }
 
     public Architecture architecture() {

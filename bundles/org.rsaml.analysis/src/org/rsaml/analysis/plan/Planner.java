@@ -46,9 +46,13 @@ final class Planner {
 
     private final ExecutionPlan plan;
 
-    private Planner(Architecture architecture) {
+    /** Whether the plan holds the ports, flows, links and message types (see {@link ExecutionPlan#releasesOf}). */
+    private final boolean connected;
+
+    private Planner(Architecture architecture, boolean connected) {
+        this.connected = connected;
         int ports = 0;
-        for (Layer layer : architecture.getLayers()) {
+        for (Layer layer : connected ? architecture.getLayers() : List.<Layer>of()) {
             for (Module module : layer.getModules()) {
                 ports += module.getPorts().size();
             }
@@ -56,8 +60,8 @@ final class Planner {
         this.plan = new ExecutionPlan(architecture, ports);
     }
 
-    static ExecutionPlan plan(Architecture architecture) throws UnplannableException {
-        Planner planner = new Planner(architecture);
+    static ExecutionPlan plan(Architecture architecture, boolean connected) throws UnplannableException {
+        Planner planner = new Planner(architecture, connected);
         planner.build(architecture);
         return planner.plan;
     }
@@ -89,7 +93,7 @@ final class Planner {
                 }
             }
         }
-        for (PlannedModule m : plan.modules) {
+        for (PlannedModule m : connected ? plan.modules : List.<PlannedModule>of()) {
             for (Port p : m.module.getPorts()) {
                 PlannedPort pp = new PlannedPort(plan, m, p);
                 m.ports.add(pp);
@@ -100,18 +104,43 @@ final class Planner {
         for (PlannedModule m : plan.modules) {
             analyse(m);
         }
-        for (Connection c : architecture.getConnections()) {
+        for (Connection c : connected ? architecture.getConnections() : List.<Connection>of()) {
             addFlow(c);
         }
         for (PlannedModule m : plan.modules) {
             for (Inhibitor i : m.module.getInhibitors()) {
-                addLink(m, i, i.getTarget());
+                if (connected) {
+                    addLink(m, i, i.getTarget());
+                } else {
+                    checkLink(byModule, m, i, i.getTarget());
+                }
             }
             for (Suppressor s : m.module.getSuppressors()) {
-                addLink(m, s, s.getTarget());
+                if (connected) {
+                    addLink(m, s, s.getTarget());
+                } else {
+                    checkLink(byModule, m, s, s.getTarget());
+                }
             }
         }
         assignRanks();
+    }
+
+    /**
+     * Without the ports: the one check {@link #addLink} makes that can refuse the plan, of the link's duration where
+     * addLink reads it (both its ports planned), so that a plan without connections is refused where the whole one is.
+     */
+    private static void checkLink(Map<Module, PlannedModule> planned, PlannedModule owner, SubsumptionLink link, Port targetPort)
+            throws UnplannableException {
+        if (plannedPort(planned, targetPort) && plannedPort(planned, link.getTrigger())) {
+            PlanTimes.checked(link.getDuration(), link, "duration", owner.qualifiedName + "." + org.rsaml.model.support.RsamlLabels.name(link),
+                    false);
+        }
+    }
+
+    /** Whether the whole plan holds the port: a port of a planned module (its container). */
+    private static boolean plannedPort(Map<Module, PlannedModule> planned, Port port) {
+        return port != null && port.getModule() != null && planned.containsKey(port.getModule());
     }
 
     private void analyse(PlannedModule m) throws UnplannableException {

@@ -147,7 +147,8 @@ class CompiledInvariantsTest {
         report(differences, compared, 2_000);
     }
 
-    private static List<Path> models() throws Exception {
+    /** Every example and every fixture of the rules and the timing rules. */
+    static List<Path> models() throws Exception {
         List<Path> files = new ArrayList<>();
         for (Path folder : List.of(TestRepository.root().resolve("examples"),
                 TestRepository.root().resolve("tests/org.rsaml.validation.tests/resources/rules"),
