@@ -75,10 +75,22 @@ public final class ExecutionPlan {
     final Map<Port, PlannedPort> ports;
 
     /** An empty plan, filled by the {@link Planner}, for about {@code ports} ports (its map sized once). */
-    ExecutionPlan(Architecture architecture, int ports) {
+    ExecutionPlan(Architecture architecture, int ports, boolean connected) {
         this.architecture = architecture;
         this.name = RsamlLabels.name(architecture);
         this.ports = new IdentityHashMap<>(ports);
+        this.connected = connected;
+    }
+
+    /** Whether the plan holds what connects the modules: false for a plan of releases alone ({@link #releasesOf}). */
+    final boolean connected;
+
+    /** Refuses to answer what a plan of releases alone does not hold (rather than answer "nothing"). */
+    void requireConnected() {
+        if (!connected) {
+            throw new IllegalStateException("a plan of releases alone (ExecutionPlan.releasesOf) holds no ports, flows or links:"
+                    + " ExecutionPlan.of plans them");
+        }
     }
 
     /**
@@ -94,8 +106,9 @@ public final class ExecutionPlan {
     /**
      * The plan of an architecture's releases and reactions alone, as {@link #of} plans them (the same layers, modules,
      * releases, reactions and ranks, refused where it is refused), without what connects the modules: no ports, flows,
-     * links, message types or the warnings about them. What the timing analysis reads of an architecture without
-     * latency requirements, without a pass over every port and connection.
+     * links, message types or the warnings about them (asking it for them, or a module for its ports, is an
+     * {@link IllegalStateException}). What the timing analysis reads of an architecture without latency requirements,
+     * without a pass over every port and connection.
      *
      * @throws UnplannableException where {@link #of} throws it
      */
@@ -138,26 +151,31 @@ public final class ExecutionPlan {
 
     /** The connections that carry data (those that cannot are left out, with a warning). */
     public List<Flow> flows() {
+        requireConnected();
         return Collections.unmodifiableList(flows);
     }
 
     /** Inhibitors and suppressors that can act (the others are left out, with a warning). */
     public List<LinkPlan> links() {
+        requireConnected();
         return Collections.unmodifiableList(links);
     }
 
     /** Structured message type names as written on the ports, first use first. */
     public List<String> messageTypes() {
+        requireConnected();
         return List.copyOf(messageTypes);
     }
 
     /** Model elements that cannot execute as modeled. */
     public List<String> warnings() {
+        requireConnected();
         return Collections.unmodifiableList(warnings);
     }
 
     /** The plan of a port, or null when the port is not in a module of a layer. */
     public PlannedPort port(Port port) {
+        requireConnected();
         return port == null ? null : ports.get(port);
     }
 
@@ -166,6 +184,7 @@ public final class ExecutionPlan {
      * order. Where data carries no wave (see {@link Reaction}), a message would go round for ever.
      */
     public List<List<PlannedModule>> reactiveCycles() {
+        requireConnected();
         return ReactiveCycles.of(this);
     }
 

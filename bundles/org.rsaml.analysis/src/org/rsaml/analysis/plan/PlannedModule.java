@@ -76,14 +76,17 @@ public final class PlannedModule {
     }
 
     public List<PlannedPort> ports() {
+        plan.requireConnected();
         return Collections.unmodifiableList(ports);
     }
 
     public List<PlannedPort> inputs() {
+        plan.requireConnected();
         return Collections.unmodifiableList(inputs);
     }
 
     public List<PlannedPort> outputs() {
+        plan.requireConnected();
         return Collections.unmodifiableList(outputs);
     }
 

@@ -57,7 +57,7 @@ final class Planner {
                 ports += module.getPorts().size();
             }
         }
-        this.plan = new ExecutionPlan(architecture, ports);
+        this.plan = new ExecutionPlan(architecture, ports, connected);
     }
 
     static ExecutionPlan plan(Architecture architecture, boolean connected) throws UnplannableException {
@@ -133,9 +133,18 @@ final class Planner {
     private static void checkLink(Map<Module, PlannedModule> planned, PlannedModule owner, SubsumptionLink link, Port targetPort)
             throws UnplannableException {
         if (plannedPort(planned, targetPort) && plannedPort(planned, link.getTrigger())) {
-            PlanTimes.checked(link.getDuration(), link, "duration", owner.qualifiedName + "." + org.rsaml.model.support.RsamlLabels.name(link),
-                    false);
+            duration(link, label(owner, link));
         }
+    }
+
+    /** A link's label, {@code layer/module.link}. */
+    private static String label(PlannedModule owner, SubsumptionLink link) {
+        return owner.qualifiedName + "." + org.rsaml.model.support.RsamlLabels.name(link);
+    }
+
+    /** A link's duration in nanoseconds, as the plan reads it (the one way a link refuses a plan). */
+    private static long duration(SubsumptionLink link, String label) throws UnplannableException {
+        return PlanTimes.checked(link.getDuration(), link, "duration", label, false);
     }
 
     /** Whether the whole plan holds the port: a port of a planned module (its container). */
@@ -256,7 +265,7 @@ final class Planner {
     private void addLink(PlannedModule owner, SubsumptionLink link, Port targetPort) throws UnplannableException {
         boolean inhibitor = link instanceof Inhibitor;
         String kind = inhibitor ? "inhibitor" : "suppressor";
-        String label = owner.qualifiedName + "." + org.rsaml.model.support.RsamlLabels.name(link);
+        String label = label(owner, link);
         PlannedPort trigger = plan.port(link.getTrigger());
         PlannedPort target = plan.port(targetPort);
         if (target == null) {
@@ -267,8 +276,7 @@ final class Planner {
             plan.warnings.add(PlanWarnings.linkWithoutTrigger(kind, label));
             return;
         }
-        LinkPlan lp = new LinkPlan(link, inhibitor, owner, label, trigger, target,
-                PlanTimes.checked(link.getDuration(), link, "duration", label, false));
+        LinkPlan lp = new LinkPlan(link, inhibitor, owner, label, trigger, target, duration(link, label));
         if (!inhibitor && !lp.deliversData) {
             plan.warnings.add(PlanWarnings.suppressorWithoutData(label, trigger, target));
         }

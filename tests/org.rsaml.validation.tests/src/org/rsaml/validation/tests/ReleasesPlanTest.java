@@ -5,6 +5,7 @@
 package org.rsaml.validation.tests;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -34,7 +35,8 @@ import org.rsaml.validation.ModelLoader;
  * The plan the timing analysis reads of an architecture without latency requirements
  * ({@link ExecutionPlan#releasesOf}: no ports, flows or links) is the whole plan's ({@link ExecutionPlan#of}) as far as
  * the analysis reads it, its modules, releases, reactions and ranks, and is refused where the whole plan is, with the
- * same words: on every example and fixture, mutated examples and seeded random models.
+ * same words, and it refuses to tell the connections it does not hold: on every example and fixture, mutated examples
+ * and seeded random models.
  */
 class ReleasesPlanTest {
 
@@ -86,7 +88,15 @@ class ReleasesPlanTest {
             whole = "refused: " + e.getMessage();
         }
         try {
-            releases = describe(ExecutionPlan.releasesOf(architecture));
+            ExecutionPlan plan = ExecutionPlan.releasesOf(architecture);
+            releases = describe(plan);
+            // what it does not hold it refuses to tell, rather than answer "no connections"
+            assertThrows(IllegalStateException.class, plan::flows, where);
+            assertThrows(IllegalStateException.class, plan::links, where);
+            assertThrows(IllegalStateException.class, plan::reactiveCycles, where);
+            for (PlannedModule m : plan.modules()) {
+                assertThrows(IllegalStateException.class, m::inputs, where);
+            }
         } catch (UnplannableException e) {
             releases = "refused: " + e.getMessage();
         }
