@@ -22,12 +22,7 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.rsaml.generator.RsamlGenerator;
-import org.rsaml.generator.Target;
-import org.rsaml.generator.internal.Names;
 import org.rsaml.generator.internal.ros2.Ros2Shutdown;
-import org.rsaml.model.Architecture;
-import org.rsaml.validation.ModelLoader;
 
 /**
  * Managed (rclcpp_lifecycle) nodes of a generated package on a real ROS 2 ({@link Ros2Jazzy}), with
@@ -52,7 +47,7 @@ class Ros2LifecycleLaunchTest {
      */
     @Test
     void bothLaunchFilesBringTheManagedNodesToActive() throws Exception {
-        Built b = built();
+        Ros2Package b = built();
         Path src = b.src();
         Path install = b.install();
         String pkg = b.pkg();
@@ -148,7 +143,7 @@ class Ros2LifecycleLaunchTest {
      */
     @Test
     void aManagedNodeOrItsManagerGoneIsSaidAndNothingWaitsLong() throws Exception {
-        Built b = built();
+        Ros2Package b = built();
         long started = System.nanoTime();
         String pkg = b.pkg();
         String lidar = b.nodes().get("perception/lidar");
@@ -198,7 +193,7 @@ class Ros2LifecycleLaunchTest {
      */
     @Test
     void aWrongArgumentOrParameterEndsTheProgramWithOneLine() throws Exception {
-        Built b = built();
+        Ros2Package b = built();
         long started = System.nanoTime();
         String pkg = b.pkg();
         String lidar = b.nodes().get("perception/lidar");
@@ -254,7 +249,7 @@ class Ros2LifecycleLaunchTest {
      */
     @Test
     void anExceptionOfTheNodesOwnCodeIsNotTakenForAWrongArgument() throws Exception {
-        Built b = built();
+        Ros2Package b = built();
         long started = System.nanoTime();
         String lidar = b.nodes().get("perception/lidar");
         Tools.Result r = run(b, "export " + CALIBRATION + "=fine; ", lidar);
@@ -273,7 +268,7 @@ class Ros2LifecycleLaunchTest {
      * Runs an executable of the package with a wrong argument or parameter: it must exit with 2 within 30 s, saying
      * "PROGRAM: ..." with {@code wrong} and {@code fix} in one line, and nothing else.
      */
-    private static void assertWrong(Built b, String program, String command, String wrong, String fix) throws Exception {
+    private static void assertWrong(Ros2Package b, String program, String command, String wrong, String fix) throws Exception {
         Tools.Result r = run(b, "", command);
         String said = command + " said:\n" + Tools.last(r.output(), 4000);
         assertFalse(r.output().contains("terminate called"), () -> "std::terminate: " + said);
@@ -286,13 +281,13 @@ class Ros2LifecycleLaunchTest {
     }
 
     /** Runs an installed executable of the package (with its arguments) after {@code setup} (shell commands), at most 30 s. */
-    private static Tools.Result run(Built b, String setup, String command) throws Exception {
+    private static Tools.Result run(Ros2Package b, String setup, String command) throws Exception {
         return Tools.run(tmp, 30, Ros2Jazzy.bash("export ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST ROS_DOMAIN_ID=" + DOMAIN + "; " + setup
                 + "\"$(ros2 pkg prefix " + b.pkg() + ")/lib/" + b.pkg() + "/\"" + command, b.install()).toArray(String[]::new));
     }
 
     /** The rclcpp component of the lidar node, as its registration names it. */
-    private static String plugin(Built b) throws Exception {
+    private static String plugin(Ros2Package b) throws Exception {
         Path registration = b.src().resolve(b.pkg() + "/gen/perception/LidarComponent.cpp");
         Matcher m = Pattern.compile("RCLCPP_COMPONENTS_REGISTER_NODE\\(([\\w:]+)\\)").matcher(Files.readString(registration));
         assertTrue(m.find(), "the lidar node is registered as a component: " + registration);
@@ -300,7 +295,7 @@ class Ros2LifecycleLaunchTest {
     }
 
     /** The generated base class of the lidar node. */
-    private static String lidarBase(Built b) throws Exception {
+    private static String lidarBase(Ros2Package b) throws Exception {
         try (java.util.stream.Stream<Path> s = Files.walk(b.src().resolve(b.pkg() + "/gen"))) {
             for (Path p : s.filter(f -> f.toString().endsWith("Base.hpp")).toList()) {
                 String text = Files.readString(p, StandardCharsets.UTF_8);
@@ -318,27 +313,18 @@ class Ros2LifecycleLaunchTest {
     /** ROS 2's domain of this test's processes, apart from other tests' on the machine. */
     private static final int DOMAIN = 1 + (int) ((ProcessHandle.current().pid() + 50) % 100);
 
-    /** The package of resources/ros2-lifecycle.rsaml, generated and built with colcon once for every test of the class. */
-    private record Built(Path src, Path install, String pkg, Map<String, String> nodes) {
-    }
+    private static Ros2Package built;
 
-    private static Built built;
-
-    /** The built package; the test is skipped, saying why, when there is no ROS 2 ({@link Ros2Jazzy#missing()}). */
-    private static synchronized Built built() throws Exception {
+    /**
+     * The package of resources/ros2-lifecycle.rsaml, generated (the lidar's class {@link #calibrated}) and built with colcon
+     * once for every test of the class; the test is skipped, saying why, when there is no ROS 2 ({@link Ros2Jazzy#missing()}).
+     */
+    private static synchronized Ros2Package built() throws Exception {
         String missing = Ros2Jazzy.missing();
         Assumptions.assumeTrue(missing == null, missing);
         if (built == null) {
-            long started = System.nanoTime();
-            Path model = Ros2Test.model("resources/ros2-lifecycle.rsaml");
-            Architecture arch = ModelLoader.load(model, "ros2-lifecycle.rsaml").architecture();
-            String pkg = Names.snake(arch.getName());
-            Path src = tmp.resolve("src");
-            new RsamlGenerator().generate(model, Target.ROS2, src, false);
-            calibrated(src.resolve(pkg + "/src/perception/Lidar.hpp"));
-            Path install = Ros2Jazzy.colconBuild(src, tmp);
-            built = new Built(src, install, pkg, Ros2Test.nodes(src.resolve(pkg)));
-            took("generated and built", started);
+            built = Ros2Package.of("resources/ros2-lifecycle.rsaml", tmp, "Ros2LifecycleLaunchTest",
+                    folder -> calibrated(folder.resolve("src/perception/Lidar.hpp")));
         }
         return built;
     }
