@@ -52,7 +52,8 @@ class Ros2ManagedEdfTest {
         try (Ros2Process p = Ros2Process.start(tmp, b.install(), DOMAIN, b.pkg(), node, "", "managed-edf")) {
             transition(b, node, 1, "configure");
             transition(b, node, 3, "activate");
-            p.await("sched " + A + ".f SCHED_DEADLINE");
+            p.awaitAfter(Pattern.compile("sched " + Pattern.quote(A) + "\\.f (SCHED_DEADLINE|[^\\n]*instead of EDF)"), 0, 1);
+            grantedOrSaid(edf(lines(p.output(), "sched " + A + ".f ")).get(0));
             Thread.sleep(1500);
             transition(b, node, 4, "deactivate");
             p.await("state " + A + " inactive", 2);
@@ -121,8 +122,11 @@ class Ros2ManagedEdfTest {
         String shown = Tools.last(out, 5000);
         List<String> sched = edf(lines(out, "sched " + S + ".f "));
         assertEquals(1, sched.size(), "one sched line of EDF's, after the rank its thread starts at:\n" + shown);
-        assertTrue(sched.get(0).contains("instead of EDF: simulated time (use_sim_time) releases its jobs, while SCHED_DEADLINE's periods are"
-                + " the machine's") && sched.get(0).contains(" rank "), "at its rank instead of EDF, saying why: " + sched.get(0));
+        String how = sched.get(0).substring(("sched " + S + ".f ").length());
+        // at its rank where real-time priorities are granted; without them (no CAP_SYS_NICE) at the default, failing only where CI requires them
+        PlatformCheck.requireRealtime("Ros2ManagedEdfTest", S + ".f", how);
+        assertTrue(how.contains("instead of EDF: simulated time (use_sim_time) releases its jobs, while SCHED_DEADLINE's periods are"
+                + " the machine's") && (how.contains(" rank ") || how.startsWith("default")), "at its rank instead of EDF, saying why: " + sched.get(0));
         JobSummary summary = JobSummary.of(out).get(S + ".f");
         assertTrue(summary != null && summary.sched().contains("instead of EDF: simulated time"), "its summary says so: " + summary + "\n" + shown);
         // at the simulation's rate: 20 ms of simulated time every 40 ms of the machine's
@@ -142,6 +146,23 @@ class Ros2ManagedEdfTest {
             "def tick():", "    t[0] += 2500000", "    m = Clock()", "    m.clock.sec = t[0] // 1000000000",
             "    m.clock.nanosec = t[0] % 1000000000", "    pub.publish(m)",
             "n.create_timer(0.005, tick)", "rclpy.spin(n)");
+
+    /**
+     * The release loop this test is about runs only where the kernel grants {@code SCHED_DEADLINE} (CAP_SYS_NICE, the
+     * test's JVM allowed on every CPU, the kernel's deadline admission control with room): where it refused, the test
+     * fails under RSAML_TIMING_BOUNDS=required (CI demands the check) and otherwise is skipped, saying what the node said.
+     */
+    private static void grantedOrSaid(String sched) {
+        if (!sched.contains("instead of EDF")) {
+            return;
+        }
+        String why = A + ".f: the kernel refused SCHED_DEADLINE here (" + sched + "), so the EDF release loop whose deactivation this"
+                + " test checks never runs: run the tests as root or with CAP_SYS_NICE, on every CPU";
+        if (PlatformCheck.required()) {
+            fail("RSAML_TIMING_BOUNDS=required (CI) demands the check: " + why);
+        }
+        Assumptions.abort(why);
+    }
 
     /** The lines of {@code out} (the trace's text after its time) that begin with {@code prefix}. */
     private static List<String> lines(String out, String prefix) {
