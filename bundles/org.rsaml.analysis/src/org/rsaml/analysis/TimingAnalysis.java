@@ -108,12 +108,12 @@ public final class TimingAnalysis {
             }
             ProcessorTiming p = g.analyse(plan);
             String why = shared.get(g);
-            String unscheduled = why == null ? notByDeadline(g, groups.values()) : null;
-            processors.add(why != null ? new ProcessorTiming(p.name(), p.element(), sharing(p.result(), why, "the processor shares its CPUs"),
-                    p.sources(), p.notes())
-                    : unscheduled != null ? new ProcessorTiming(p.name(), p.element(), sharing(p.result(), unscheduled,
-                            "the processor is not scheduled by deadline"), p.sources(), p.notes())
-                    : p);
+            String what = "the processor shares its CPUs";
+            if (why == null) {
+                why = notByDeadline(g, groups.values());
+                what = "the processor is not scheduled by deadline";
+            }
+            processors.add(why == null ? p : new ProcessorTiming(p.name(), p.element(), sharing(p.result(), why, what), p.sources(), p.notes()));
         }
         List<LatencyResult> latencies = Latencies.analyse(plan, architecture.getLatencyRequirements(), processors, listPaths);
         return new ArchitectureTiming(RsamlLabels.name(architecture), processors, excluded, latencies);
